@@ -1,0 +1,45 @@
+//! The extern "C" edge: every `gl*` and `OSMesa*` entry point.
+//!
+//! An entry point validates nothing itself beyond turning C pointers into safe Rust values; it
+//! forwards to the current [`Context`], which validates, records GL errors and changes state.
+//! No panic crosses this edge ([`with_context`] and [`guard`] catch them), and a call made
+//! with no current context does nothing and returns a neutral value.
+//!
+//! cbindgen reads these files to generate `include/GL/tessera.h`, so entry points are written
+//! out literally (no macro-generated functions).
+
+// Entry points keep the C names of the GL headers, parameters included.
+#![allow(non_snake_case)]
+
+pub mod enums;
+pub mod gl_buffers;
+pub mod gl_pixels;
+pub mod gl_state;
+pub mod osmesa;
+pub mod procs;
+pub mod types;
+
+use crate::context::{current, Context};
+use std::panic::{catch_unwind, AssertUnwindSafe};
+
+/// Runs `f` on the calling thread's current context; returns `default` when there is none or
+/// when `f` panics (the panic is reported on stderr and becomes an ignored call).
+pub(crate) fn with_context<R: Copy>(default: R, f: impl FnOnce(&mut Context) -> R) -> R {
+    guard(default, || current::with_current(f).unwrap_or(default))
+}
+
+/// Runs `f` with panics caught; returns `default` if it panicked.
+pub(crate) fn guard<R>(default: R, f: impl FnOnce() -> R) -> R {
+    match catch_unwind(AssertUnwindSafe(f)) {
+        Ok(value) => value,
+        Err(payload) => {
+            let message = payload
+                .downcast_ref::<&str>()
+                .map(|s| s.to_string())
+                .or_else(|| payload.downcast_ref::<String>().cloned())
+                .unwrap_or_else(|| "unknown panic".to_string());
+            eprintln!("tessera: internal error caught at the API edge: {message}");
+            default
+        }
+    }
+}

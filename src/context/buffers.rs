@@ -1,0 +1,305 @@
+//! Draw and read buffer selection, clears, write masks, scissor, viewport and depth range.
+//!
+//! GL names color buffers with enums that may denote several buffers at once (GL_FRONT is
+//! front-left and front-right); [`slots_of`] expands them to the framebuffer's
+//! [`ColorSlot`]s and everything else works on slots.
+use super::state::{MAX_DRAW_BUFFERS, MAX_VIEWPORT_DIM};
+use super::Context;
+use crate::api::enums::*;
+use crate::api::types::GLenum;
+use crate::framebuffer::{ColorSlot, FramebufferConfig, Rect};
+
+/// Aux buffer enums accepted as names (GL_AUX0..GL_AUX3); existence is checked separately.
+const MAX_AUX_ENUMS: u32 = 4;
+
+/// The slots an enum names, before filtering by what exists; `None` if not a buffer enum.
+fn named_slots(buffer: GLenum) -> Option<Vec<ColorSlot>> {
+    use ColorSlot::*;
+    Some(match buffer {
+        GL_NONE => vec![],
+        GL_FRONT_LEFT => vec![FrontLeft],
+        GL_FRONT_RIGHT => vec![FrontRight],
+        GL_BACK_LEFT => vec![BackLeft],
+        GL_BACK_RIGHT => vec![BackRight],
+        GL_FRONT => vec![FrontLeft, FrontRight],
+        GL_BACK => vec![BackLeft, BackRight],
+        GL_LEFT => vec![FrontLeft, BackLeft],
+        GL_RIGHT => vec![FrontRight, BackRight],
+        GL_FRONT_AND_BACK => vec![FrontLeft, FrontRight, BackLeft, BackRight],
+        b if (GL_AUX0..GL_AUX0 + MAX_AUX_ENUMS).contains(&b) => vec![Aux((b - GL_AUX0) as u8)],
+        _ => return None,
+    })
+}
+
+/// The existing slots `buffer` names in a framebuffer of `config`; `None` if not a buffer enum.
+pub fn slots_of(config: &FramebufferConfig, buffer: GLenum) -> Option<Vec<ColorSlot>> {
+    let existing = config.color_slots();
+    named_slots(buffer).map(|slots| slots.into_iter().filter(|s| existing.contains(s)).collect())
+}
+
+/// The single slot a read buffer enum selects (GL_FRONT reads front-left, ...).
+pub fn read_slot(config: &FramebufferConfig, buffer: GLenum) -> Option<ColorSlot> {
+    slots_of(config, buffer)?.first().copied()
+}
+
+/// Whether `buffer` may be one entry of glDrawBuffers (a single buffer name).
+fn is_single_buffer_name(buffer: GLenum) -> bool {
+    matches!(buffer, GL_NONE | GL_FRONT_LEFT | GL_FRONT_RIGHT | GL_BACK_LEFT | GL_BACK_RIGHT)
+        || (GL_AUX0..GL_AUX0 + MAX_AUX_ENUMS).contains(&buffer)
+}
+
+impl Context {
+    /// glDrawBuffer.
+    pub fn draw_buffer(&mut self, buffer: GLenum) {
+        if !self.check_outside_begin_end() {
+            return;
+        }
+        let Some(slots) = slots_of(&self.config.visual, buffer) else {
+            return self.error(GL_INVALID_ENUM);
+        };
+        if buffer != GL_NONE && slots.is_empty() {
+            return self.error(GL_INVALID_OPERATION);
+        }
+        let mut draw_buffers = [GL_NONE; MAX_DRAW_BUFFERS];
+        draw_buffers[0] = buffer;
+        self.state.color.draw_buffers = draw_buffers;
+    }
+
+    /// glDrawBuffers.
+    pub fn draw_buffers(&mut self, buffers: &[GLenum]) {
+        if !self.check_outside_begin_end() {
+            return;
+        }
+        if buffers.len() > MAX_DRAW_BUFFERS {
+            return self.error(GL_INVALID_VALUE);
+        }
+        for (i, &b) in buffers.iter().enumerate() {
+            if named_slots(b).is_none() {
+                return self.error(GL_INVALID_ENUM);
+            }
+            if !is_single_buffer_name(b) {
+                return self.error(GL_INVALID_OPERATION);
+            }
+            if b != GL_NONE {
+                if slots_of(&self.config.visual, b).is_none_or(|s| s.is_empty()) {
+                    return self.error(GL_INVALID_OPERATION);
+                }
+                if buffers[..i].contains(&b) {
+                    return self.error(GL_INVALID_OPERATION);
+                }
+            }
+        }
+        let mut draw_buffers = [GL_NONE; MAX_DRAW_BUFFERS];
+        draw_buffers[..buffers.len()].copy_from_slice(buffers);
+        self.state.color.draw_buffers = draw_buffers;
+    }
+
+    /// glReadBuffer.
+    pub fn read_buffer(&mut self, buffer: GLenum) {
+        if !self.check_outside_begin_end() {
+            return;
+        }
+        if buffer == GL_FRONT_AND_BACK || named_slots(buffer).is_none() {
+            return self.error(GL_INVALID_ENUM);
+        }
+        if buffer != GL_NONE && read_slot(&self.config.visual, buffer).is_none() {
+            return self.error(GL_INVALID_OPERATION);
+        }
+        self.state.pixel_mode.read_buffer = buffer;
+    }
+
+    /// The slot glReadPixels/glAccum read from, if the read buffer names an existing one.
+    pub fn current_read_slot(&self) -> Option<ColorSlot> {
+        read_slot(&self.config.visual, self.state.pixel_mode.read_buffer)
+    }
+
+    /// Every (slot, draw buffer index) a fragment or clear writes to.
+    pub fn draw_targets(&self) -> Vec<(ColorSlot, usize)> {
+        let mut targets = Vec::new();
+        for (index, &buffer) in self.state.color.draw_buffers.iter().enumerate() {
+            for slot in slots_of(&self.config.visual, buffer).unwrap_or_default() {
+                targets.push((slot, index));
+            }
+        }
+        targets
+    }
+
+    /// The rectangle clears and fragments are confined to: the framebuffer, cut by the
+    /// scissor box when the scissor test is on.
+    pub fn clip_rect(&self, bounds: Rect) -> Rect {
+        if self.state.scissor.test {
+            let [x, y, w, h] = self.state.scissor.rect;
+            bounds.intersect(Rect::from_xywh(x, y, w, h))
+        } else {
+            bounds
+        }
+    }
+
+    /// glClear.
+    pub fn clear(&mut self, mask: u32) {
+        if !self.check_outside_begin_end() {
+            return;
+        }
+        let known = GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT;
+        if mask & !known != 0 {
+            return self.error(GL_INVALID_VALUE);
+        }
+        let targets = self.draw_targets();
+        let color = &self.state.color;
+        let clamp_float = color.clamp_fragment_color == GL_TRUE as GLenum;
+        let clear_color = color.clear_color;
+        let color_masks = color.color_mask;
+        let depth = (self.state.depth.write_mask, self.state.depth.clear);
+        let stencil = (self.state.stencil.front.write_mask, self.state.stencil.clear);
+        let accum_clear = self.state.accum.clear;
+        let clip = |bounds: Rect| self.clip_rect(bounds);
+        let _ = self.with_framebuffer(|fb| {
+            let rect = clip(fb.bounds());
+            if rect.is_empty() {
+                return;
+            }
+            if mask & GL_COLOR_BUFFER_BIT != 0 {
+                for &(slot, index) in &targets {
+                    if let Some(buffer) = fb.color_mut(slot) {
+                        let value = if clamp_float || !buffer.format().is_float() {
+                            clear_color.map(|c| c.clamp(0.0, 1.0))
+                        } else {
+                            clear_color
+                        };
+                        buffer.clear(rect, value, color_masks[index]);
+                    }
+                }
+            }
+            if mask & GL_DEPTH_BUFFER_BIT != 0 && depth.0 {
+                fb.depth_stencil_mut().clear_depth(rect, depth.1);
+            }
+            if mask & GL_STENCIL_BUFFER_BIT != 0 {
+                fb.depth_stencil_mut().clear_stencil(rect, stencil.1 as u8, stencil.0 as u8);
+            }
+            if mask & GL_ACCUM_BUFFER_BIT != 0 {
+                if let Some(accum) = fb.accum_mut() {
+                    super::accum::clear(accum, rect, accum_clear);
+                }
+            }
+        });
+    }
+
+    /// glColorMask (all draw buffers) or glColorMaski (`index`).
+    pub fn color_mask(&mut self, index: Option<u32>, mask: [bool; 4]) {
+        if !self.check_outside_begin_end() {
+            return;
+        }
+        match index {
+            None => self.state.color.color_mask = [mask; MAX_DRAW_BUFFERS],
+            Some(i) => match self.state.color.color_mask.get_mut(i as usize) {
+                Some(m) => *m = mask,
+                None => self.error(GL_INVALID_VALUE),
+            },
+        }
+    }
+
+    /// glScissor.
+    pub fn scissor(&mut self, x: i32, y: i32, width: i32, height: i32) {
+        if !self.check_outside_begin_end() {
+            return;
+        }
+        if width < 0 || height < 0 {
+            return self.error(GL_INVALID_VALUE);
+        }
+        self.state.scissor.rect = [x, y, width, height];
+    }
+
+    /// glViewport: negative sizes are GL_INVALID_VALUE; sizes clamp to the maximum.
+    pub fn viewport(&mut self, x: i32, y: i32, width: i32, height: i32) {
+        if !self.check_outside_begin_end() {
+            return;
+        }
+        if width < 0 || height < 0 {
+            return self.error(GL_INVALID_VALUE);
+        }
+        self.state.viewport.rect = [x, y, width.min(MAX_VIEWPORT_DIM), height.min(MAX_VIEWPORT_DIM)];
+    }
+
+    /// glDepthRange: both values clamp to [0, 1].
+    pub fn depth_range(&mut self, near: f64, far: f64) {
+        if !self.check_outside_begin_end() {
+            return;
+        }
+        self.state.viewport.depth_range = [clamp01(near), clamp01(far)];
+    }
+
+    /// glClearColor (values are kept unclamped: float buffers may store them as given).
+    pub fn clear_color(&mut self, rgba: [f32; 4]) {
+        if self.check_outside_begin_end() {
+            self.state.color.clear_color = rgba;
+        }
+    }
+
+    /// glClearDepth: clamped to [0, 1].
+    pub fn clear_depth(&mut self, depth: f64) {
+        if self.check_outside_begin_end() {
+            self.state.depth.clear = clamp01(depth);
+        }
+    }
+
+    /// glClearStencil.
+    pub fn clear_stencil(&mut self, value: i32) {
+        if self.check_outside_begin_end() {
+            self.state.stencil.clear = value;
+        }
+    }
+
+    /// glClearAccum: clamped to [-1, 1].
+    pub fn clear_accum(&mut self, rgba: [f32; 4]) {
+        if self.check_outside_begin_end() {
+            self.state.accum.clear = rgba.map(|c| if c.is_nan() { 0.0 } else { c.clamp(-1.0, 1.0) });
+        }
+    }
+
+    /// glClearIndex (color-index state; kept for glGet and attribute stacks).
+    pub fn clear_index(&mut self, index: f32) {
+        if self.check_outside_begin_end() {
+            self.state.color.clear_index = index;
+        }
+    }
+
+    /// glIndexMask.
+    pub fn index_mask(&mut self, mask: u32) {
+        if self.check_outside_begin_end() {
+            self.state.color.index_mask = mask;
+        }
+    }
+
+    /// glDepthMask.
+    pub fn depth_mask(&mut self, on: bool) {
+        if self.check_outside_begin_end() {
+            self.state.depth.write_mask = on;
+        }
+    }
+
+    /// glStencilMask (`face` GL_FRONT_AND_BACK) and glStencilMaskSeparate.
+    pub fn stencil_mask(&mut self, face: GLenum, mask: u32) {
+        if !self.check_outside_begin_end() {
+            return;
+        }
+        let stencil = &mut self.state.stencil;
+        match face {
+            GL_FRONT => stencil.front.write_mask = mask,
+            GL_BACK => stencil.back.write_mask = mask,
+            GL_FRONT_AND_BACK => {
+                stencil.front.write_mask = mask;
+                stencil.back.write_mask = mask;
+            }
+            _ => self.error(GL_INVALID_ENUM),
+        }
+    }
+}
+
+/// Clamps to [0, 1]; NaN becomes 0.
+fn clamp01(v: f64) -> f64 {
+    if v > 0.0 {
+        v.min(1.0)
+    } else {
+        0.0
+    }
+}

@@ -1,0 +1,130 @@
+//! The GL state machine: typed state, the sticky error flag, attribute stacks, glGet*, and the
+//! binding to a drawable.
+//!
+//! Every GL command arrives here already translated to Rust values by `api`; the methods in
+//! this module and its children validate arguments exactly as the GL 2.1 compatibility
+//! specification says, record the specified error and change nothing when invalid, and
+//! otherwise change state or hand work to the framebuffer.
+
+pub mod accum;
+pub mod attrib;
+pub mod buffers;
+pub mod capabilities;
+pub mod current;
+pub mod get;
+pub mod hints;
+pub mod read_pixels;
+pub mod state;
+pub mod strings;
+
+use crate::api::enums::*;
+use crate::api::types::GLenum;
+use crate::framebuffer::{Drawable, Framebuffer, FramebufferConfig};
+use state::{PixelStoreState, State};
+use std::sync::{Arc, Mutex};
+
+/// What the window system asked for when the context was created.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ContextConfig {
+    /// The layers of the drawables this context renders to.
+    pub visual: FramebufferConfig,
+}
+
+/// One GL context.
+pub struct Context {
+    pub state: State,
+    pub pixel_store: PixelStoreState,
+    config: ContextConfig,
+    error: GLenum,
+    attrib_stack: Vec<attrib::SavedAttribs>,
+    client_attrib_stack: Vec<attrib::SavedClientAttribs>,
+    /// Between glBegin and glEnd, where most commands are GL_INVALID_OPERATION.
+    pub inside_begin_end: bool,
+    drawable: Option<Arc<Mutex<Drawable>>>,
+    /// Viewport and scissor are initialised to the drawable's size at the first bind only.
+    bound_once: bool,
+}
+
+impl Context {
+    pub fn new(config: ContextConfig) -> Context {
+        let buffer = if config.visual.double_buffered { GL_BACK } else { GL_FRONT };
+        Context {
+            state: State::new(buffer),
+            pixel_store: PixelStoreState::default(),
+            config,
+            error: GL_NO_ERROR,
+            attrib_stack: Vec::new(),
+            client_attrib_stack: Vec::new(),
+            inside_begin_end: false,
+            drawable: None,
+            bound_once: false,
+        }
+    }
+
+    pub fn config(&self) -> &ContextConfig {
+        &self.config
+    }
+
+    /// Records `error` unless an earlier error is still unread (GL's sticky error flag).
+    pub fn error(&mut self, error: GLenum) {
+        if self.error == GL_NO_ERROR {
+            self.error = error;
+        }
+    }
+
+    /// glGetError: returns and clears the recorded error.
+    pub fn take_error(&mut self) -> GLenum {
+        std::mem::replace(&mut self.error, GL_NO_ERROR)
+    }
+
+    /// For commands that are illegal between glBegin and glEnd: records
+    /// GL_INVALID_OPERATION and returns false when inside.
+    pub fn check_outside_begin_end(&mut self) -> bool {
+        if self.inside_begin_end {
+            self.error(GL_INVALID_OPERATION);
+            false
+        } else {
+            true
+        }
+    }
+
+    /// Binds the drawable this context renders to (None: unbind). At the first bind the
+    /// viewport and scissor box become the drawable's size.
+    pub fn bind_drawable(&mut self, drawable: Option<Arc<Mutex<Drawable>>>) {
+        if let Some(d) = &drawable {
+            self.config.visual = *d.lock().unwrap_or_else(|p| p.into_inner()).framebuffer.config();
+            if !self.bound_once {
+                let guard = d.lock().unwrap_or_else(|p| p.into_inner());
+                let (w, h) = (guard.framebuffer.width() as i32, guard.framebuffer.height() as i32);
+                drop(guard);
+                self.state.viewport.rect = [0, 0, w, h];
+                self.state.scissor.rect = [0, 0, w, h];
+                self.bound_once = true;
+            }
+        }
+        self.drawable = drawable;
+    }
+
+    pub fn drawable(&self) -> Option<&Arc<Mutex<Drawable>>> {
+        self.drawable.as_ref()
+    }
+
+    /// Runs `f` on the bound framebuffer; `None` when no drawable is bound.
+    pub fn with_framebuffer<R>(&self, f: impl FnOnce(&mut Framebuffer) -> R) -> Option<R> {
+        let drawable = self.drawable.as_ref()?;
+        let mut guard = drawable.lock().unwrap_or_else(|p| p.into_inner());
+        Some(f(&mut guard.framebuffer))
+    }
+
+    /// glFlush: completes pending rendering and presents the drawable.
+    pub fn flush(&mut self) {
+        if let Some(drawable) = &self.drawable {
+            drawable.lock().unwrap_or_else(|p| p.into_inner()).present();
+        }
+    }
+
+    /// glFinish: as glFlush, and returns only when rendering is complete.
+    pub fn finish(&mut self) {
+        self.flush();
+    }
+}

@@ -1,0 +1,417 @@
+//! The typed GL state, grouped as glPushAttrib groups it.
+//!
+//! Each struct is one attribute group (or the part of it that exists so far), so that
+//! glPushAttrib saves a group by cloning its struct. Defaults are the GL 2.1 initial values.
+//! Enums are stored as the `GLenum` the API received only after validation; where the value
+//! set is small and closed, a Rust enum is used instead.
+use crate::api::enums::*;
+use crate::api::types::GLenum;
+
+/// The most draw buffers a fragment can be written to at once (GL_MAX_DRAW_BUFFERS).
+pub const MAX_DRAW_BUFFERS: usize = 8;
+/// Depth of the attribute stacks (GL_MAX_ATTRIB_STACK_DEPTH and the client one).
+pub const MAX_ATTRIB_STACK_DEPTH: usize = 16;
+/// User clip planes (GL_MAX_CLIP_PLANES).
+pub const MAX_CLIP_PLANES: usize = 6;
+/// Fixed-function lights (GL_MAX_LIGHTS).
+pub const MAX_LIGHTS: usize = 8;
+/// Texture units with fixed-function state (GL_MAX_TEXTURE_UNITS).
+pub const MAX_TEXTURE_UNITS: usize = 4;
+/// Largest viewport and renderbuffer side (GL_MAX_VIEWPORT_DIMS, OSMESA_MAX_WIDTH).
+pub const MAX_VIEWPORT_DIM: i32 = 16384;
+
+/// A comparison function for alpha, depth and stencil tests.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum CompareFunc {
+    Never,
+    Less,
+    Equal,
+    LessEqual,
+    Greater,
+    NotEqual,
+    GreaterEqual,
+    Always,
+}
+
+impl CompareFunc {
+    pub fn from_gl(e: GLenum) -> Option<Self> {
+        Some(match e {
+            GL_NEVER => Self::Never,
+            GL_LESS => Self::Less,
+            GL_EQUAL => Self::Equal,
+            GL_LEQUAL => Self::LessEqual,
+            GL_GREATER => Self::Greater,
+            GL_NOTEQUAL => Self::NotEqual,
+            GL_GEQUAL => Self::GreaterEqual,
+            GL_ALWAYS => Self::Always,
+            _ => return None,
+        })
+    }
+
+    pub fn to_gl(self) -> GLenum {
+        match self {
+            Self::Never => GL_NEVER,
+            Self::Less => GL_LESS,
+            Self::Equal => GL_EQUAL,
+            Self::LessEqual => GL_LEQUAL,
+            Self::Greater => GL_GREATER,
+            Self::NotEqual => GL_NOTEQUAL,
+            Self::GreaterEqual => GL_GEQUAL,
+            Self::Always => GL_ALWAYS,
+        }
+    }
+}
+
+/// GL_COLOR_BUFFER_BIT: alpha test, blending, dithering, logic op, draw buffers, clear color
+/// and color masks.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ColorBufferState {
+    pub alpha_test: bool,
+    pub alpha_func: CompareFunc,
+    pub alpha_ref: f32,
+    /// GL_BLEND per draw buffer (glEnablei); glEnable sets all.
+    pub blend: [bool; MAX_DRAW_BUFFERS],
+    pub blend_src_rgb: [GLenum; MAX_DRAW_BUFFERS],
+    pub blend_dst_rgb: [GLenum; MAX_DRAW_BUFFERS],
+    pub blend_src_alpha: [GLenum; MAX_DRAW_BUFFERS],
+    pub blend_dst_alpha: [GLenum; MAX_DRAW_BUFFERS],
+    pub blend_equation_rgb: [GLenum; MAX_DRAW_BUFFERS],
+    pub blend_equation_alpha: [GLenum; MAX_DRAW_BUFFERS],
+    pub blend_color: [f32; 4],
+    pub dither: bool,
+    pub color_logic_op: bool,
+    pub index_logic_op: bool,
+    pub logic_op: GLenum,
+    /// The draw buffer of each fragment output (GL_DRAW_BUFFERi), GL_NONE when unused.
+    pub draw_buffers: [GLenum; MAX_DRAW_BUFFERS],
+    pub clear_color: [f32; 4],
+    pub clear_index: f32,
+    pub index_mask: u32,
+    pub color_mask: [[bool; 4]; MAX_DRAW_BUFFERS],
+    pub clamp_fragment_color: GLenum,
+    pub clamp_read_color: GLenum,
+}
+
+impl ColorBufferState {
+    /// Initial state for a framebuffer whose default draw buffer is `draw_buffer`.
+    pub fn new(draw_buffer: GLenum) -> Self {
+        let mut draw_buffers = [GL_NONE; MAX_DRAW_BUFFERS];
+        draw_buffers[0] = draw_buffer;
+        ColorBufferState {
+            alpha_test: false,
+            alpha_func: CompareFunc::Always,
+            alpha_ref: 0.0,
+            blend: [false; MAX_DRAW_BUFFERS],
+            blend_src_rgb: [GL_ONE; MAX_DRAW_BUFFERS],
+            blend_dst_rgb: [GL_ZERO; MAX_DRAW_BUFFERS],
+            blend_src_alpha: [GL_ONE; MAX_DRAW_BUFFERS],
+            blend_dst_alpha: [GL_ZERO; MAX_DRAW_BUFFERS],
+            blend_equation_rgb: [GL_FUNC_ADD; MAX_DRAW_BUFFERS],
+            blend_equation_alpha: [GL_FUNC_ADD; MAX_DRAW_BUFFERS],
+            blend_color: [0.0; 4],
+            dither: true,
+            color_logic_op: false,
+            index_logic_op: false,
+            logic_op: GL_COPY,
+            draw_buffers,
+            clear_color: [0.0; 4],
+            clear_index: 0.0,
+            index_mask: !0,
+            color_mask: [[true; 4]; MAX_DRAW_BUFFERS],
+            clamp_fragment_color: GL_FIXED_ONLY,
+            clamp_read_color: GL_FIXED_ONLY,
+        }
+    }
+}
+
+/// GL_DEPTH_BUFFER_BIT.
+#[derive(Clone, Debug, PartialEq)]
+pub struct DepthState {
+    pub test: bool,
+    pub func: CompareFunc,
+    pub write_mask: bool,
+    pub clear: f64,
+}
+
+impl Default for DepthState {
+    fn default() -> Self {
+        DepthState { test: false, func: CompareFunc::Less, write_mask: true, clear: 1.0 }
+    }
+}
+
+/// One face's stencil state.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct StencilFace {
+    pub func: CompareFunc,
+    pub reference: i32,
+    pub value_mask: u32,
+    pub fail: GLenum,
+    pub depth_fail: GLenum,
+    pub depth_pass: GLenum,
+    pub write_mask: u32,
+}
+
+impl Default for StencilFace {
+    fn default() -> Self {
+        StencilFace {
+            func: CompareFunc::Always,
+            reference: 0,
+            value_mask: !0,
+            fail: GL_KEEP,
+            depth_fail: GL_KEEP,
+            depth_pass: GL_KEEP,
+            write_mask: !0,
+        }
+    }
+}
+
+/// GL_STENCIL_BUFFER_BIT.
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct StencilState {
+    pub test: bool,
+    /// GL_STENCIL_TEST_TWO_SIDE_EXT.
+    pub two_side: bool,
+    /// GL_ACTIVE_STENCIL_FACE_EXT is GL_BACK (true) or GL_FRONT (false).
+    pub active_face_back: bool,
+    pub front: StencilFace,
+    pub back: StencilFace,
+    pub clear: i32,
+}
+
+/// GL_SCISSOR_BIT.
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct ScissorState {
+    pub test: bool,
+    /// x, y, width, height.
+    pub rect: [i32; 4],
+}
+
+/// GL_VIEWPORT_BIT.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ViewportState {
+    /// x, y, width, height.
+    pub rect: [i32; 4],
+    pub depth_range: [f64; 2],
+}
+
+impl Default for ViewportState {
+    fn default() -> Self {
+        ViewportState { rect: [0; 4], depth_range: [0.0, 1.0] }
+    }
+}
+
+/// GL_ACCUM_BUFFER_BIT.
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct AccumState {
+    pub clear: [f32; 4],
+}
+
+/// GL_HINT_BIT.
+#[derive(Clone, Debug, PartialEq)]
+pub struct HintState {
+    pub perspective_correction: GLenum,
+    pub point_smooth: GLenum,
+    pub line_smooth: GLenum,
+    pub polygon_smooth: GLenum,
+    pub fog: GLenum,
+    pub generate_mipmap: GLenum,
+    pub texture_compression: GLenum,
+    pub fragment_shader_derivative: GLenum,
+}
+
+impl Default for HintState {
+    fn default() -> Self {
+        HintState {
+            perspective_correction: GL_DONT_CARE,
+            point_smooth: GL_DONT_CARE,
+            line_smooth: GL_DONT_CARE,
+            polygon_smooth: GL_DONT_CARE,
+            fog: GL_DONT_CARE,
+            generate_mipmap: GL_DONT_CARE,
+            texture_compression: GL_DONT_CARE,
+            fragment_shader_derivative: GL_DONT_CARE,
+        }
+    }
+}
+
+/// GL_FOG_BIT (enable only, so far).
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct FogState {
+    pub enabled: bool,
+    pub color_sum: bool,
+}
+
+/// GL_LIGHTING_BIT (enables and vertex color clamping, so far).
+#[derive(Clone, Debug, PartialEq)]
+pub struct LightingState {
+    pub enabled: bool,
+    pub lights: [bool; MAX_LIGHTS],
+    pub color_material: bool,
+    /// GL_CLAMP_VERTEX_COLOR.
+    pub clamp_vertex_color: GLenum,
+}
+
+impl Default for LightingState {
+    fn default() -> Self {
+        LightingState { enabled: false, lights: [false; MAX_LIGHTS], color_material: false, clamp_vertex_color: GL_TRUE as GLenum }
+    }
+}
+
+/// GL_TRANSFORM_BIT (enables only, so far).
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct TransformState {
+    pub clip_planes: [bool; MAX_CLIP_PLANES],
+    pub normalize: bool,
+    pub rescale_normal: bool,
+    pub depth_clamp: bool,
+}
+
+/// GL_POLYGON_BIT (enables only, so far) and GL_POLYGON_STIPPLE enable.
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct PolygonState {
+    pub cull_face: bool,
+    pub smooth: bool,
+    pub stipple: bool,
+    pub offset_fill: bool,
+    pub offset_line: bool,
+    pub offset_point: bool,
+}
+
+/// GL_LINE_BIT and GL_POINT_BIT enables.
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct LinePointState {
+    pub line_smooth: bool,
+    pub line_stipple: bool,
+    pub point_smooth: bool,
+    pub point_sprite: bool,
+    pub vertex_program_point_size: bool,
+    pub vertex_program_two_side: bool,
+}
+
+/// GL_MULTISAMPLE_BIT.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MultisampleState {
+    pub enabled: bool,
+    pub alpha_to_coverage: bool,
+    pub alpha_to_one: bool,
+    pub coverage: bool,
+}
+
+impl Default for MultisampleState {
+    fn default() -> Self {
+        MultisampleState { enabled: true, alpha_to_coverage: false, alpha_to_one: false, coverage: false }
+    }
+}
+
+/// Texture enables of one unit (GL_TEXTURE_BIT / GL_ENABLE_BIT).
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct TextureUnitEnables {
+    pub texture_1d: bool,
+    pub texture_2d: bool,
+    pub texture_3d: bool,
+    pub texture_cube_map: bool,
+    /// GL_TEXTURE_GEN_S, T, R, Q.
+    pub gen: [bool; 4],
+}
+
+/// GL_TEXTURE_BIT (enables and the active unit, so far).
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct TextureState {
+    pub active_unit: usize,
+    pub units: [TextureUnitEnables; MAX_TEXTURE_UNITS],
+}
+
+/// GL_EVAL_BIT enables: GL_MAP1_* and GL_MAP2_* (in enum order) and GL_AUTO_NORMAL.
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct EvalState {
+    pub map1: [bool; 9],
+    pub map2: [bool; 9],
+    pub auto_normal: bool,
+}
+
+/// GL_PIXEL_MODE_BIT (the read buffer, so far).
+#[derive(Clone, Debug, PartialEq)]
+pub struct PixelModeState {
+    pub read_buffer: GLenum,
+}
+
+/// One direction of glPixelStore (GL_PACK_* or GL_UNPACK_*): client state.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PixelStoreModes {
+    pub swap_bytes: bool,
+    pub lsb_first: bool,
+    pub row_length: i32,
+    pub image_height: i32,
+    pub skip_rows: i32,
+    pub skip_pixels: i32,
+    pub skip_images: i32,
+    pub alignment: i32,
+}
+
+impl Default for PixelStoreModes {
+    fn default() -> Self {
+        PixelStoreModes {
+            swap_bytes: false,
+            lsb_first: false,
+            row_length: 0,
+            image_height: 0,
+            skip_rows: 0,
+            skip_pixels: 0,
+            skip_images: 0,
+            alignment: 4,
+        }
+    }
+}
+
+/// GL_CLIENT_PIXEL_STORE_BIT.
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct PixelStoreState {
+    pub pack: PixelStoreModes,
+    pub unpack: PixelStoreModes,
+}
+
+/// All server-side state covered so far, one field per attribute group.
+#[derive(Clone, Debug, PartialEq)]
+pub struct State {
+    pub color: ColorBufferState,
+    pub depth: DepthState,
+    pub stencil: StencilState,
+    pub scissor: ScissorState,
+    pub viewport: ViewportState,
+    pub accum: AccumState,
+    pub hint: HintState,
+    pub fog: FogState,
+    pub lighting: LightingState,
+    pub transform: TransformState,
+    pub polygon: PolygonState,
+    pub line_point: LinePointState,
+    pub multisample: MultisampleState,
+    pub texture: TextureState,
+    pub eval: EvalState,
+    pub pixel_mode: PixelModeState,
+}
+
+impl State {
+    /// Initial state for a framebuffer whose default draw and read buffer is `buffer`
+    /// (GL_FRONT single-buffered, GL_BACK double-buffered).
+    pub fn new(buffer: GLenum) -> Self {
+        State {
+            color: ColorBufferState::new(buffer),
+            depth: DepthState::default(),
+            stencil: StencilState::default(),
+            scissor: ScissorState::default(),
+            viewport: ViewportState::default(),
+            accum: AccumState::default(),
+            hint: HintState::default(),
+            fog: FogState::default(),
+            lighting: LightingState::default(),
+            transform: TransformState::default(),
+            polygon: PolygonState::default(),
+            line_point: LinePointState::default(),
+            multisample: MultisampleState::default(),
+            texture: TextureState::default(),
+            eval: EvalState::default(),
+            pixel_mode: PixelModeState { read_buffer: buffer },
+        }
+    }
+}

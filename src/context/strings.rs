@@ -1,0 +1,49 @@
+//! glGetString: vendor, renderer, version and the extension list.
+//!
+//! The version is the highest GL version whose every required feature works, and the
+//! extension list names only what works; both grow as the pipeline does. The strings are
+//! static so the pointers handed to C stay valid for the life of the process.
+use super::Context;
+use crate::api::enums::*;
+use crate::api::types::GLenum;
+
+pub const VENDOR: &str = "tessera project\0";
+pub const RENDERER: &str = concat!("tessera ", env!("CARGO_PKG_VERSION"), " (software rasterizer)\0");
+/// GL_VERSION: 1.1 names the level the state machine targets until the rasterizer and
+/// the rest of GL 1.x land (see the issues); it is never above what works.
+pub const VERSION: &str = concat!("1.1 tessera ", env!("CARGO_PKG_VERSION"), "\0");
+/// Extensions whose every entry point and enum works.
+pub const EXTENSIONS: &[&str] = &[];
+
+/// Whether a context of GL version `major.minor` (compatibility profile) can be created.
+pub fn supports_version(major: i32, minor: i32) -> bool {
+    (major, minor) <= (1, 1) && major >= 1 && minor >= 0
+}
+
+fn extensions_string() -> &'static str {
+    static JOINED: std::sync::OnceLock<String> = std::sync::OnceLock::new();
+    JOINED.get_or_init(|| {
+        let mut s = EXTENSIONS.join(" ");
+        s.push('\0');
+        s
+    })
+}
+
+impl Context {
+    /// glGetString: a NUL-terminated static string, or `None` (GL_INVALID_ENUM).
+    pub fn get_string(&mut self, name: GLenum) -> Option<&'static str> {
+        if !self.check_outside_begin_end() {
+            return None;
+        }
+        match name {
+            GL_VENDOR => Some(VENDOR),
+            GL_RENDERER => Some(RENDERER),
+            GL_VERSION => Some(VERSION),
+            GL_EXTENSIONS => Some(extensions_string()),
+            _ => {
+                self.error(GL_INVALID_ENUM);
+                None
+            }
+        }
+    }
+}

@@ -1,0 +1,51 @@
+//! The one wrapper around caller-owned pixel memory (the OSMesa buffer).
+//!
+//! The caller promises, by the OSMesa contract, that the buffer handed to OSMesaMakeCurrent
+//! holds `row_length × height` pixels of the format and type it named and stays valid while
+//! bound. [`CallerBuffer`] records that extent once and then only lets safe code write whole
+//! rows inside it.
+
+/// A byte range of memory owned by the C caller.
+pub struct CallerBuffer {
+    ptr: *mut u8,
+    len: usize,
+}
+
+// SAFETY: the buffer is plain memory the caller lent to the context; tessera writes it only
+// from the thread holding the context's lock, and the OSMesa contract forbids the caller from
+// using it concurrently with rendering.
+unsafe impl Send for CallerBuffer {}
+
+impl CallerBuffer {
+    /// Wraps `len` bytes at `ptr`.
+    ///
+    /// # Safety
+    /// `ptr` must be valid for writes of `len` bytes for as long as this value is used.
+    pub unsafe fn new(ptr: *mut u8, len: usize) -> CallerBuffer {
+        CallerBuffer { ptr, len }
+    }
+
+    /// The address, as the caller gave it.
+    pub fn as_ptr(&self) -> *mut u8 {
+        self.ptr
+    }
+
+    pub fn len(&self) -> usize {
+        self.len
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.len == 0
+    }
+
+    /// The bytes `[offset, offset + count)` as a mutable slice; `None` when outside.
+    pub fn bytes_mut(&mut self, offset: usize, count: usize) -> Option<&mut [u8]> {
+        let end = offset.checked_add(count)?;
+        if end > self.len || self.ptr.is_null() {
+            return None;
+        }
+        // SAFETY: [offset, end) lies inside the `len` bytes the constructor's contract makes
+        // valid for writes, and `&mut self` makes this the only live view.
+        Some(unsafe { std::slice::from_raw_parts_mut(self.ptr.add(offset), count) })
+    }
+}

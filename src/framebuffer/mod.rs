@@ -1,0 +1,192 @@
+//! Buffers and pixel formats: the only code that touches raw pixel memory.
+//!
+//! A [`Framebuffer`] is the set of layers a drawable has (color buffers front/back ×
+//! left/right plus aux buffers, depth, stencil, accumulation), stored bottom row first as GL
+//! numbers them. It knows formats and rectangles, not GL: the context decides which buffers
+//! and which rectangle an operation touches and passes plain values down.
+
+pub mod external;
+pub mod format;
+pub mod surface;
+
+pub use format::{ColorFormat, DepthStencilFormat};
+pub use surface::{AccumBuffer, ColorBuffer, DepthStencilBuffer};
+
+/// Which color buffer of a framebuffer.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum ColorSlot {
+    FrontLeft,
+    BackLeft,
+    FrontRight,
+    BackRight,
+    Aux(u8),
+}
+
+/// A half-open pixel rectangle `[x0, x1) × [y0, y1)`, y counted from the bottom row.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub struct Rect {
+    pub x0: i32,
+    pub y0: i32,
+    pub x1: i32,
+    pub y1: i32,
+}
+
+impl Rect {
+    /// The rectangle at (x, y) of size w × h; negative sizes give an empty rectangle.
+    pub fn from_xywh(x: i32, y: i32, w: i32, h: i32) -> Rect {
+        Rect { x0: x, y0: y, x1: x.saturating_add(w.max(0)), y1: y.saturating_add(h.max(0)) }
+    }
+
+    pub fn intersect(self, other: Rect) -> Rect {
+        Rect {
+            x0: self.x0.max(other.x0),
+            y0: self.y0.max(other.y0),
+            x1: self.x1.min(other.x1),
+            y1: self.y1.min(other.y1),
+        }
+    }
+
+    pub fn is_empty(self) -> bool {
+        self.x0 >= self.x1 || self.y0 >= self.y1
+    }
+
+    pub fn width(self) -> usize {
+        (self.x1 - self.x0).max(0) as usize
+    }
+
+    pub fn height(self) -> usize {
+        (self.y1 - self.y0).max(0) as usize
+    }
+}
+
+/// The shape of a framebuffer: which layers it has and in which formats.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct FramebufferConfig {
+    pub color: ColorFormat,
+    pub double_buffered: bool,
+    pub stereo: bool,
+    pub aux_buffers: u8,
+    pub depth_stencil: DepthStencilFormat,
+    /// Bits per channel of the accumulation buffer (0 or 16).
+    pub accum_bits: u32,
+}
+
+impl FramebufferConfig {
+    /// Every color slot this configuration has, front-left first.
+    pub fn color_slots(&self) -> Vec<ColorSlot> {
+        let mut slots = vec![ColorSlot::FrontLeft];
+        if self.double_buffered {
+            slots.push(ColorSlot::BackLeft);
+        }
+        if self.stereo {
+            slots.push(ColorSlot::FrontRight);
+            if self.double_buffered {
+                slots.push(ColorSlot::BackRight);
+            }
+        }
+        slots.extend((0..self.aux_buffers).map(ColorSlot::Aux));
+        slots
+    }
+}
+
+/// Why a framebuffer could not be allocated.
+#[derive(Debug, PartialEq, Eq)]
+pub struct OutOfMemory;
+
+/// The layers of one drawable.
+pub struct Framebuffer {
+    config: FramebufferConfig,
+    width: usize,
+    height: usize,
+    color: Vec<(ColorSlot, ColorBuffer)>,
+    depth_stencil: DepthStencilBuffer,
+    accum: Option<AccumBuffer>,
+}
+
+impl Framebuffer {
+    /// Allocates every layer of `config` at `width` × `height`, zero-filled (color black,
+    /// depth 0, stencil 0) as a fresh Mesa renderbuffer is. Allocation failure is reported,
+    /// never an abort.
+    pub fn new(config: FramebufferConfig, width: usize, height: usize) -> Result<Framebuffer, OutOfMemory> {
+        let pixels = width.checked_mul(height).ok_or(OutOfMemory)?;
+        let mut color = Vec::new();
+        for slot in config.color_slots() {
+            color.push((slot, ColorBuffer::new(config.color, width, height, pixels)?));
+        }
+        let depth_stencil = DepthStencilBuffer::new(config.depth_stencil, width, pixels)?;
+        let accum = if config.accum_bits > 0 { Some(AccumBuffer::new(width, pixels)?) } else { None };
+        Ok(Framebuffer { config, width, height, color, depth_stencil, accum })
+    }
+
+    pub fn config(&self) -> &FramebufferConfig {
+        &self.config
+    }
+
+    pub fn width(&self) -> usize {
+        self.width
+    }
+
+    pub fn height(&self) -> usize {
+        self.height
+    }
+
+    /// The whole framebuffer as a rectangle.
+    pub fn bounds(&self) -> Rect {
+        Rect::from_xywh(0, 0, self.width as i32, self.height as i32)
+    }
+
+    pub fn has_slot(&self, slot: ColorSlot) -> bool {
+        self.color.iter().any(|(s, _)| *s == slot)
+    }
+
+    pub fn color(&self, slot: ColorSlot) -> Option<&ColorBuffer> {
+        self.color.iter().find(|(s, _)| *s == slot).map(|(_, b)| b)
+    }
+
+    pub fn color_mut(&mut self, slot: ColorSlot) -> Option<&mut ColorBuffer> {
+        self.color.iter_mut().find(|(s, _)| *s == slot).map(|(_, b)| b)
+    }
+
+    pub fn depth_stencil(&self) -> &DepthStencilBuffer {
+        &self.depth_stencil
+    }
+
+    pub fn depth_stencil_mut(&mut self) -> &mut DepthStencilBuffer {
+        &mut self.depth_stencil
+    }
+
+    pub fn accum(&self) -> Option<&AccumBuffer> {
+        self.accum.as_ref()
+    }
+
+    /// The accumulation buffer together with one color buffer, for glAccum.
+    pub fn accum_and_color_mut(&mut self, slot: ColorSlot) -> Option<(&mut AccumBuffer, &mut ColorBuffer)> {
+        let accum = self.accum.as_mut()?;
+        let color = self.color.iter_mut().find(|(s, _)| *s == slot).map(|(_, b)| b)?;
+        Some((accum, color))
+    }
+
+    pub fn accum_mut(&mut self) -> Option<&mut AccumBuffer> {
+        self.accum.as_mut()
+    }
+}
+
+/// Shows a framebuffer to its consumer: the OSMesa caller's memory, an X window, ...
+/// Called at the flush points of the API (glFlush, glFinish, swap) after rendering completed.
+pub trait Present: Send {
+    fn present(&mut self, framebuffer: &Framebuffer);
+}
+
+/// A framebuffer together with the way it is presented: what a GL context draws into.
+pub struct Drawable {
+    pub framebuffer: Framebuffer,
+    pub presenter: Option<Box<dyn Present>>,
+}
+
+impl Drawable {
+    pub fn present(&mut self) {
+        if let Some(presenter) = self.presenter.as_mut() {
+            presenter.present(&self.framebuffer);
+        }
+    }
+}

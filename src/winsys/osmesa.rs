@@ -1,0 +1,409 @@
+//! OSMesa: contexts that render into memory the caller owns.
+//!
+//! As Mesa does, tessera renders into its own framebuffer and writes the caller's buffer at
+//! the flush points (glFlush, glFinish, OSMesaGetColorBuffer); the caller's existing contents
+//! are never read. Rows go bottom-up (`OSMESA_Y_UP`, the default) or top-down, `OSMESA_ROW_LENGTH`
+//! pixels apart.
+use crate::api::enums::*;
+use crate::api::osmesa::{OSMESA_ARGB, OSMESA_BGR, OSMESA_BGRA, OSMESA_RGB_565};
+use crate::api::types::GLenum;
+use crate::context::current::{self, SharedContext};
+use crate::context::state::MAX_VIEWPORT_DIM;
+use crate::context::{Context, ContextConfig};
+use crate::framebuffer::external::CallerBuffer;
+use crate::framebuffer::surface::{ColorPixels, DepthStencilPixels};
+use crate::framebuffer::{
+    ColorFormat, ColorSlot, DepthStencilFormat, Drawable, Framebuffer, FramebufferConfig, OutOfMemory, Present,
+};
+use std::collections::HashMap;
+use std::sync::{Arc, Mutex, MutexGuard, OnceLock};
+
+
+/// Channel layout of the caller's buffer.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PixelLayout {
+    Rgba,
+    Bgra,
+    Argb,
+    Rgb,
+    Bgr,
+    Rgb565,
+}
+
+impl PixelLayout {
+    pub fn from_osmesa(format: GLenum) -> Option<PixelLayout> {
+        Some(match format {
+            GL_RGBA => PixelLayout::Rgba,
+            OSMESA_BGRA => PixelLayout::Bgra,
+            OSMESA_ARGB => PixelLayout::Argb,
+            GL_RGB => PixelLayout::Rgb,
+            OSMESA_BGR => PixelLayout::Bgr,
+            OSMESA_RGB_565 => PixelLayout::Rgb565,
+            _ => return None,
+        })
+    }
+
+    pub fn to_osmesa(self) -> GLenum {
+        match self {
+            PixelLayout::Rgba => GL_RGBA,
+            PixelLayout::Bgra => OSMESA_BGRA,
+            PixelLayout::Argb => OSMESA_ARGB,
+            PixelLayout::Rgb => GL_RGB,
+            PixelLayout::Bgr => OSMESA_BGR,
+            PixelLayout::Rgb565 => OSMESA_RGB_565,
+        }
+    }
+
+    /// Components per pixel in the caller's buffer.
+    fn components(self) -> usize {
+        match self {
+            PixelLayout::Rgba | PixelLayout::Bgra | PixelLayout::Argb => 4,
+            PixelLayout::Rgb | PixelLayout::Bgr => 3,
+            PixelLayout::Rgb565 => 1,
+        }
+    }
+
+    /// For each output component, which RGBA channel it holds.
+    fn order(self) -> &'static [usize] {
+        match self {
+            PixelLayout::Rgba => &[0, 1, 2, 3],
+            PixelLayout::Bgra => &[2, 1, 0, 3],
+            PixelLayout::Argb => &[3, 0, 1, 2],
+            PixelLayout::Rgb => &[0, 1, 2],
+            PixelLayout::Bgr => &[2, 1, 0],
+            PixelLayout::Rgb565 => &[0],
+        }
+    }
+
+    /// The internal color format for this layout and GL type; `None` if the pair is invalid.
+    pub fn color_format(self, ty: GLenum) -> Option<ColorFormat> {
+        let alpha = self.components() == 4;
+        match (self, ty) {
+            (PixelLayout::Rgb565, GL_UNSIGNED_SHORT_5_6_5) => Some(ColorFormat::Rgb565),
+            (PixelLayout::Rgb565, _) => None,
+            (_, GL_UNSIGNED_BYTE) => Some(ColorFormat::Unorm8 { alpha }),
+            (_, GL_UNSIGNED_SHORT) => Some(ColorFormat::Unorm16 { alpha }),
+            (_, GL_FLOAT) => Some(ColorFormat::Float32 { alpha }),
+            _ => None,
+        }
+    }
+
+    /// Bytes per pixel in the caller's buffer for `ty`.
+    pub fn bytes_per_pixel(self, ty: GLenum) -> usize {
+        let component = match ty {
+            GL_UNSIGNED_BYTE => 1,
+            GL_UNSIGNED_SHORT | GL_UNSIGNED_SHORT_5_6_5 => 2,
+            _ => 4,
+        };
+        self.components() * component
+    }
+}
+
+/// Depth/stencil/accum sizes requested at creation.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Request {
+    pub layout: PixelLayout,
+    pub depth_bits: i32,
+    pub stencil_bits: i32,
+    pub accum_bits: i32,
+}
+
+impl Request {
+    /// The depth/stencil storage for the requested sizes. Like Mesa, any stencil request
+    /// gives 8 bits packed with 24-bit depth; unlike Mesa 22 (which gives no depth below 16
+    /// bits, 16 bits up to 23 and never 32), tessera gives at least the requested depth.
+    fn depth_stencil(&self) -> DepthStencilFormat {
+        let (d, s) = (self.depth_bits, self.stencil_bits);
+        match (d, s > 0) {
+            (0, false) => DepthStencilFormat::None,
+            (0, true) => DepthStencilFormat::Packed24 { depth: false, stencil: true },
+            (1..=16, false) => DepthStencilFormat::Depth16,
+            (1..=24, _) => DepthStencilFormat::Packed24 { depth: true, stencil: s > 0 },
+            (_, stencil) => DepthStencilFormat::Depth32 { stencil },
+        }
+    }
+
+    fn config(&self, color: ColorFormat) -> FramebufferConfig {
+        FramebufferConfig {
+            color,
+            double_buffered: false,
+            stereo: false,
+            aux_buffers: 0,
+            depth_stencil: self.depth_stencil(),
+            accum_bits: if self.accum_bits > 0 { 16 } else { 0 },
+        }
+    }
+}
+
+/// What the caller bound with OSMesaMakeCurrent.
+struct Binding {
+    /// The caller's buffer address (kept as an address: only the API edge turns it into
+    /// a [`CallerBuffer`]).
+    address: usize,
+    ty: GLenum,
+    width: usize,
+    height: usize,
+    drawable: Arc<Mutex<Drawable>>,
+}
+
+/// Writes the front-left color buffer into the caller's memory.
+struct CallerPresenter {
+    buffer: CallerBuffer,
+    layout: PixelLayout,
+    ty: GLenum,
+    row_length: usize,
+    y_up: bool,
+}
+
+impl Present for CallerPresenter {
+    fn present(&mut self, framebuffer: &Framebuffer) {
+        let Some(color) = framebuffer.color(ColorSlot::FrontLeft) else {
+            return;
+        };
+        let (width, height) = (framebuffer.width(), framebuffer.height());
+        let bpp = self.layout.bytes_per_pixel(self.ty);
+        let stride = self.row_length.max(width) * bpp;
+        let order = self.layout.order();
+        for y in 0..height {
+            let dst_row = if self.y_up { y } else { height - 1 - y };
+            let Some(dst) = self.buffer.bytes_mut(dst_row * stride, width * bpp) else {
+                return;
+            };
+            let src = y * width..(y + 1) * width;
+            match color.pixels() {
+                ColorPixels::Unorm8(px) => {
+                    for (out, p) in dst.chunks_exact_mut(order.len()).zip(&px[src]) {
+                        for (o, &c) in out.iter_mut().zip(order) {
+                            *o = p[c];
+                        }
+                    }
+                }
+                ColorPixels::Unorm16(px) => {
+                    for (out, p) in dst.chunks_exact_mut(order.len() * 2).zip(&px[src]) {
+                        for (o, &c) in out.chunks_exact_mut(2).zip(order) {
+                            o.copy_from_slice(&p[c].to_ne_bytes());
+                        }
+                    }
+                }
+                ColorPixels::Float32(px) => {
+                    for (out, p) in dst.chunks_exact_mut(order.len() * 4).zip(&px[src]) {
+                        for (o, &c) in out.chunks_exact_mut(4).zip(order) {
+                            o.copy_from_slice(&p[c].to_ne_bytes());
+                        }
+                    }
+                }
+                ColorPixels::Rgb565(px) => {
+                    for (out, p) in dst.chunks_exact_mut(2).zip(&px[src]) {
+                        out.copy_from_slice(&p.to_ne_bytes());
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// An OSMesa context: a GL context plus what OSMesa needs to bind caller memory to it.
+pub struct OsMesaContext {
+    pub shared: Arc<SharedContext>,
+    pub request: Request,
+    binding: Mutex<Option<Binding>>,
+    /// OSMESA_ROW_LENGTH and OSMESA_Y_UP (they apply to the current context).
+    store: Mutex<(usize, bool)>,
+}
+
+/// Why OSMesaMakeCurrent failed.
+#[derive(Debug, PartialEq, Eq)]
+pub enum BindFailure {
+    BadArguments,
+    OutOfMemory,
+    CurrentElsewhere,
+}
+
+impl OsMesaContext {
+    fn lock_binding(&self) -> MutexGuard<'_, Option<Binding>> {
+        self.binding.lock().unwrap_or_else(|p| p.into_inner())
+    }
+
+    fn store(&self) -> (usize, bool) {
+        *self.store.lock().unwrap_or_else(|p| p.into_inner())
+    }
+
+    /// OSMesaMakeCurrent with a non-null buffer, already wrapped by the API edge.
+    /// A framebuffer of the same size and type is kept (its contents survive), as in Mesa.
+    pub fn make_current(
+        self: &Arc<Self>,
+        buffer: CallerBuffer,
+        ty: GLenum,
+        width: i32,
+        height: i32,
+    ) -> Result<(), BindFailure> {
+        if width < 1 || height < 1 || width > MAX_VIEWPORT_DIM || height > MAX_VIEWPORT_DIM {
+            return Err(BindFailure::BadArguments);
+        }
+        let color = self.request.layout.color_format(ty).ok_or(BindFailure::BadArguments)?;
+        if let Some(owner) = self.shared.bound_thread() {
+            if owner != std::thread::current().id() {
+                return Err(BindFailure::CurrentElsewhere);
+            }
+        }
+        let (width, height) = (width as usize, height as usize);
+        let (row_length, y_up) = self.store();
+        let presenter_address = buffer.as_ptr() as usize;
+        let presenter = Box::new(CallerPresenter { buffer, layout: self.request.layout, ty, row_length, y_up });
+        let mut binding = self.lock_binding();
+        let reuse = binding.as_ref().filter(|b| b.ty == ty && b.width == width && b.height == height);
+        let drawable = match reuse {
+            Some(b) => {
+                b.drawable.lock().unwrap_or_else(|p| p.into_inner()).presenter = Some(presenter);
+                b.drawable.clone()
+            }
+            None => {
+                let framebuffer = Framebuffer::new(self.request.config(color), width, height)
+                    .map_err(|OutOfMemory| BindFailure::OutOfMemory)?;
+                Arc::new(Mutex::new(Drawable { framebuffer, presenter: Some(presenter) }))
+            }
+        };
+        *binding = Some(Binding { address: presenter_address, ty, width, height, drawable: drawable.clone() });
+        drop(binding);
+        current::make_current(Some(self.shared.clone())).map_err(|_| BindFailure::CurrentElsewhere)?;
+        self.shared.lock().bind_drawable(Some(drawable));
+        Ok(())
+    }
+
+    /// OSMesaPixelStore on this (current) context. `wrap` describes the caller's buffer
+    /// for the new row length: the API edge owns that promise.
+    pub fn pixel_store(&self, row_length: Option<usize>, y_up: Option<bool>, wrap: impl FnOnce(*mut u8, usize) -> CallerBuffer) {
+        let (row_length, y_up) = {
+            let mut store = self.store.lock().unwrap_or_else(|p| p.into_inner());
+            if let Some(r) = row_length {
+                store.0 = r;
+            }
+            if let Some(y) = y_up {
+                store.1 = y;
+            }
+            *store
+        };
+        if let Some(b) = self.lock_binding().as_ref() {
+            let bytes = row_length.max(b.width) * b.height * self.request.layout.bytes_per_pixel(b.ty);
+            let presenter = CallerPresenter {
+                buffer: wrap(b.address as *mut u8, bytes),
+                layout: self.request.layout,
+                ty: b.ty,
+                row_length,
+                y_up,
+            };
+            b.drawable.lock().unwrap_or_else(|p| p.into_inner()).presenter = Some(Box::new(presenter));
+        }
+    }
+
+    /// The bytes the caller's buffer must hold for `width` × `height` of `ty` under the
+    /// current row length.
+    pub fn required_bytes(&self, ty: GLenum, width: usize, height: usize) -> usize {
+        self.store().0.max(width) * height * self.request.layout.bytes_per_pixel(ty)
+    }
+
+    /// OSMesaGetIntegerv values of the bound buffer: (width, height, type); zeros if unbound.
+    pub fn bound_size(&self) -> (usize, usize, GLenum) {
+        self.lock_binding().as_ref().map_or((0, 0, 0), |b| (b.width, b.height, b.ty))
+    }
+
+    /// OSMESA_ROW_LENGTH and OSMESA_Y_UP as set.
+    pub fn row_length_and_y_up(&self) -> (usize, bool) {
+        self.store()
+    }
+
+    /// The caller's buffer address and size, after flushing rendering into it.
+    pub fn color_buffer(&self) -> Option<(usize, usize, usize)> {
+        let binding = self.lock_binding();
+        let b = binding.as_ref()?;
+        b.drawable.lock().unwrap_or_else(|p| p.into_inner()).present();
+        Some((b.address, b.width, b.height))
+    }
+
+    /// The internal depth buffer: (width, height, bytes per value, address), after flushing.
+    /// `None` without depth bits.
+    pub fn depth_buffer(&self) -> Option<(usize, usize, usize, usize)> {
+        let binding = self.lock_binding();
+        let b = binding.as_ref()?;
+        let drawable = b.drawable.lock().unwrap_or_else(|p| p.into_inner());
+        let ds = drawable.framebuffer.depth_stencil();
+        if ds.depth_bits() == 0 {
+            return None;
+        }
+        let (bpv, address) = match ds.pixels() {
+            DepthStencilPixels::Depth16(px) => (2, px.as_ptr() as usize),
+            DepthStencilPixels::Packed24(px) => (4, px.as_ptr() as usize),
+            DepthStencilPixels::Depth32(px, _) => (4, px.as_ptr() as usize),
+            DepthStencilPixels::None => return None,
+        };
+        Some((b.width, b.height, bpv, address))
+    }
+
+    /// The GL state's draw framebuffer is released when the context is destroyed.
+    fn release(&self) {
+        *self.lock_binding() = None;
+    }
+}
+
+/// The live OSMesa contexts, by the handle given to C. A handle is only an identifier:
+/// it is looked up here, never dereferenced, so a stale or forged handle is harmless.
+fn registry() -> MutexGuard<'static, HashMap<usize, Arc<OsMesaContext>>> {
+    static REGISTRY: OnceLock<Mutex<HashMap<usize, Arc<OsMesaContext>>>> = OnceLock::new();
+    REGISTRY.get_or_init(|| Mutex::new(HashMap::new())).lock().unwrap_or_else(|p| p.into_inner())
+}
+
+/// OSMesaCreateContextExt / Attribs after argument checks: registers a new context and
+/// returns its handle.
+pub fn create(request: Request, share: Option<usize>) -> Option<usize> {
+    if request.depth_bits < 0 || request.stencil_bits < 0 || request.accum_bits < 0 {
+        return None;
+    }
+    if let Some(handle) = share {
+        lookup(handle)?;
+    }
+    // The color format is decided by the type given at MakeCurrent; RGBA8 until then.
+    let placeholder = request.layout.color_format(GL_UNSIGNED_BYTE).unwrap_or(ColorFormat::Rgb565);
+    let context = Context::new(ContextConfig { visual: request.config(placeholder) });
+    let osmesa = Arc::new(OsMesaContext {
+        shared: SharedContext::new(context),
+        request,
+        binding: Mutex::new(None),
+        store: Mutex::new((0, true)),
+    });
+    let handle = Arc::as_ptr(&osmesa) as usize;
+    registry().insert(handle, osmesa);
+    Some(handle)
+}
+
+/// The context behind a handle.
+pub fn lookup(handle: usize) -> Option<Arc<OsMesaContext>> {
+    registry().get(&handle).cloned()
+}
+
+/// The handle of the OSMesa context current on this thread.
+pub fn current_handle() -> Option<usize> {
+    let shared = current::current()?;
+    registry().iter().find(|(_, c)| Arc::ptr_eq(&c.shared, &shared)).map(|(h, _)| *h)
+}
+
+/// The OSMesa context current on this thread.
+pub fn current_context() -> Option<Arc<OsMesaContext>> {
+    lookup(current_handle()?)
+}
+
+/// OSMesaDestroyContext: unregisters; releases it first if it is current on this thread.
+pub fn destroy(handle: usize) {
+    let Some(context) = registry().remove(&handle) else {
+        return;
+    };
+    if current::current().is_some_and(|c| Arc::ptr_eq(&c, &context.shared)) {
+        let _ = current::make_current(None);
+    }
+    context.shared.lock().bind_drawable(None);
+    context.release();
+}
+
+/// OSMesaMakeCurrent(NULL, NULL, ...): releases the current context.
+pub fn release_current() {
+    let _ = current::make_current(None);
+}
