@@ -1,0 +1,91 @@
+/* Implementation of the capi test helpers (see common.h). */
+#include "common.h"
+#include <stdarg.h>
+
+static int failures;
+
+int capi_is_tessera(void)
+{
+    const char *renderer = (const char *)glGetString(GL_RENDERER);
+    return renderer && strncmp(renderer, "tessera", 7) == 0;
+}
+
+void capi_check_at(int cond, const char *file, int line, const char *fmt, ...)
+{
+    if (cond)
+        return;
+    failures++;
+    printf("FAIL %s:%d: ", file, line);
+    va_list ap;
+    va_start(ap, fmt);
+    vprintf(fmt, ap);
+    va_end(ap);
+    printf("\n");
+}
+
+void capi_value(const char *key, const char *fmt, ...)
+{
+    printf("VALUE %s ", key);
+    va_list ap;
+    va_start(ap, fmt);
+    vprintf(fmt, ap);
+    va_end(ap);
+    printf("\n");
+}
+
+void capi_expect_error_at(GLenum expected, const char *what, const char *file, int line)
+{
+    GLenum got = glGetError();
+    capi_check_at(got == expected, file, line, "%s: expected GL error 0x%x, got 0x%x", what, expected, got);
+    capi_value(what, "error=0x%x", got);
+}
+
+void capi_save_image(const char *name, int w, int h, int channels, enum capi_type type, const void *data)
+{
+    const char *dir = getenv("CAPI_OUT");
+    char path[4096];
+    snprintf(path, sizeof path, "%s/%s.img", dir ? dir : ".", name);
+    FILE *f = fopen(path, "wb");
+    if (!f) {
+        capi_check(0, "cannot write %s", path);
+        return;
+    }
+    const char *tname = type == CAPI_U8 ? "u8" : type == CAPI_U16 ? "u16" : "f32";
+    fprintf(f, "TESSIMG %d %d %d %s\n", w, h, channels, tname);
+    fwrite(data, (size_t)type * channels, (size_t)w * h, f);
+    fclose(f);
+}
+
+void capi_save_framebuffer(const char *name, int w, int h)
+{
+    unsigned char *pixels = malloc((size_t)w * h * 4);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, pixels);
+    capi_save_image(name, w, h, 4, CAPI_U8, pixels);
+    free(pixels);
+}
+
+OSMesaContext capi_make_context(GLenum format, GLenum type, int depth, int stencil, int accum,
+                                int w, int h, void **buffer_out)
+{
+    OSMesaContext ctx = OSMesaCreateContextExt(format, depth, stencil, accum, NULL);
+    if (!ctx) {
+        printf("FAIL could not create a context (format 0x%x)\n", format);
+        exit(2);
+    }
+    void *buffer = calloc((size_t)w * h, 16);
+    if (!OSMesaMakeCurrent(ctx, buffer, type, w, h)) {
+        printf("FAIL OSMesaMakeCurrent failed (type 0x%x)\n", type);
+        exit(2);
+    }
+    if (buffer_out)
+        *buffer_out = buffer;
+    return ctx;
+}
+
+int capi_finish(void)
+{
+    if (failures)
+        printf("%d check(s) failed\n", failures);
+    return failures ? 1 : 0;
+}

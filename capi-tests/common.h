@@ -1,0 +1,56 @@
+/* Shared helpers of the capi tests.
+ *
+ * Every capi test is a standalone C program built once against the system's Mesa headers
+ * (-lOSMesa) and run twice by tests/capi.rs: on Mesa and on tessera (LD_LIBRARY_PATH).
+ *  - capi_check(): an assertion that must hold on every implementation; a failure makes the
+ *    program exit non-zero.
+ *  - capi_value(): a value that must be identical on Mesa and on tessera; the runner compares
+ *    the VALUE lines of the two runs (unless the manifest allows a difference).
+ *  - capi_save_image(): an image the runner compares between the two runs with the
+ *    thresholds of capi-tests/manifest.txt (default: exact).
+ * Behaviour where tessera deliberately differs from Mesa 22 is branched on capi_is_tessera().
+ */
+#ifndef CAPI_COMMON_H
+#define CAPI_COMMON_H
+
+#include <GL/osmesa.h>
+#include <GL/gl.h>
+#include <GL/glext.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Component types of saved images. */
+enum capi_type { CAPI_U8 = 1, CAPI_U16 = 2, CAPI_F32 = 4 };
+
+/* Nonzero when GL_RENDERER starts with "tessera" (needs a current context). */
+int capi_is_tessera(void);
+
+/* Records a failed assertion (printed as "FAIL file:line: message") when cond is false. */
+#define capi_check(cond, ...) capi_check_at((cond), __FILE__, __LINE__, __VA_ARGS__)
+void capi_check_at(int cond, const char *file, int line, const char *fmt, ...)
+    __attribute__((format(printf, 4, 5)));
+
+/* Prints "VALUE <key> <formatted value>": compared between Mesa and tessera. */
+void capi_value(const char *key, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+
+/* Checks glGetError() == expected (an assertion) and prints it as a VALUE. */
+#define capi_expect_error(expected, what) capi_expect_error_at((expected), (what), __FILE__, __LINE__)
+void capi_expect_error_at(GLenum expected, const char *what, const char *file, int line);
+
+/* Saves an image for comparison: w x h pixels of `channels` components of `type`, rows
+ * bottom-up as glReadPixels returns them, tightly packed. Written to $CAPI_OUT/<name>.img. */
+void capi_save_image(const char *name, int w, int h, int channels, enum capi_type type, const void *data);
+
+/* Reads the current read buffer (RGBA, GL_UNSIGNED_BYTE, pack alignment 1) and saves it. */
+void capi_save_framebuffer(const char *name, int w, int h);
+
+/* Creates an RGBA/UNSIGNED_BYTE context with the given depth/stencil/accum bits, binds a
+ * w x h buffer (owned by the helper) and returns the context; aborts the test on failure. */
+OSMesaContext capi_make_context(GLenum format, GLenum type, int depth, int stencil, int accum,
+                                int w, int h, void **buffer_out);
+
+/* Exit status: 0 when every capi_check held. Call last in main(). */
+int capi_finish(void);
+
+#endif
