@@ -44,8 +44,10 @@ pub fn read_slot(config: &FramebufferConfig, buffer: GLenum) -> Option<ColorSlot
 
 /// Whether `buffer` may be one entry of glDrawBuffers (a single buffer name).
 fn is_single_buffer_name(buffer: GLenum) -> bool {
-    matches!(buffer, GL_NONE | GL_FRONT_LEFT | GL_FRONT_RIGHT | GL_BACK_LEFT | GL_BACK_RIGHT)
-        || (GL_AUX0..GL_AUX0 + MAX_AUX_ENUMS).contains(&buffer)
+    matches!(
+        buffer,
+        GL_NONE | GL_FRONT_LEFT | GL_FRONT_RIGHT | GL_BACK_LEFT | GL_BACK_RIGHT
+    ) || (GL_AUX0..GL_AUX0 + MAX_AUX_ENUMS).contains(&buffer)
 }
 
 impl Context {
@@ -140,7 +142,8 @@ impl Context {
         if !self.check_outside_begin_end() {
             return;
         }
-        let known = GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT;
+        let known =
+            GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT;
         if mask & !known != 0 {
             return self.error(GL_INVALID_VALUE);
         }
@@ -150,7 +153,10 @@ impl Context {
         let clear_color = color.clear_color;
         let color_masks = color.color_mask;
         let depth = (self.state.depth.write_mask, self.state.depth.clear);
-        let stencil = (self.state.stencil.front.write_mask, self.state.stencil.clear);
+        let stencil = (
+            self.state.stencil.front.write_mask,
+            self.state.stencil.clear,
+        );
         let accum_clear = self.state.accum.clear;
         let clip = |bounds: Rect| self.clip_rect(bounds);
         let _ = self.with_framebuffer(|fb| {
@@ -174,7 +180,8 @@ impl Context {
                 fb.depth_stencil_mut().clear_depth(rect, depth.1);
             }
             if mask & GL_STENCIL_BUFFER_BIT != 0 {
-                fb.depth_stencil_mut().clear_stencil(rect, stencil.1 as u8, stencil.0 as u8);
+                fb.depth_stencil_mut()
+                    .clear_stencil(rect, stencil.1 as u8, stencil.0 as u8);
             }
             if mask & GL_ACCUM_BUFFER_BIT != 0 {
                 if let Some(accum) = fb.accum_mut() {
@@ -217,7 +224,12 @@ impl Context {
         if width < 0 || height < 0 {
             return self.error(GL_INVALID_VALUE);
         }
-        self.state.viewport.rect = [x, y, width.min(MAX_VIEWPORT_DIM), height.min(MAX_VIEWPORT_DIM)];
+        self.state.viewport.rect = [
+            x,
+            y,
+            width.min(MAX_VIEWPORT_DIM),
+            height.min(MAX_VIEWPORT_DIM),
+        ];
     }
 
     /// glDepthRange: both values clamp to [0, 1].
@@ -252,7 +264,8 @@ impl Context {
     /// glClearAccum: clamped to [-1, 1].
     pub fn clear_accum(&mut self, rgba: [f32; 4]) {
         if self.check_outside_begin_end() {
-            self.state.accum.clear = rgba.map(|c| if c.is_nan() { 0.0 } else { c.clamp(-1.0, 1.0) });
+            self.state.accum.clear =
+                rgba.map(|c| if c.is_nan() { 0.0 } else { c.clamp(-1.0, 1.0) });
         }
     }
 
@@ -301,5 +314,133 @@ fn clamp01(v: f64) -> f64 {
         v.min(1.0)
     } else {
         0.0
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::context::ContextConfig;
+    use crate::framebuffer::{ColorFormat, DepthStencilFormat, Drawable, Framebuffer};
+    use std::sync::{Arc, Mutex};
+
+    /// A double-buffered stereo context with two aux buffers, bound to a 4×4 drawable.
+    fn stereo_context() -> (Context, Arc<Mutex<Drawable>>) {
+        let visual = FramebufferConfig {
+            color: ColorFormat::Unorm8 { alpha: true },
+            double_buffered: true,
+            stereo: true,
+            aux_buffers: 2,
+            depth_stencil: DepthStencilFormat::Packed24 {
+                depth: true,
+                stencil: true,
+            },
+            accum_bits: 16,
+        };
+        let drawable = Arc::new(Mutex::new(Drawable {
+            framebuffer: Framebuffer::new(visual, 4, 4).unwrap(),
+            presenter: None,
+        }));
+        let mut ctx = Context::new(ContextConfig { visual });
+        ctx.bind_drawable(Some(drawable.clone()));
+        (ctx, drawable)
+    }
+
+    fn pixel(d: &Arc<Mutex<Drawable>>, slot: ColorSlot, x: i32, y: i32) -> [f32; 4] {
+        let mut out = Vec::new();
+        d.lock()
+            .unwrap()
+            .framebuffer
+            .color(slot)
+            .unwrap()
+            .read_row_f32(y, x, x + 1, &mut out);
+        out[0]
+    }
+
+    #[test]
+    fn enums_expand_to_the_buffers_they_name() {
+        let (ctx, _) = stereo_context();
+        let visual = ctx.config().visual;
+        use ColorSlot::*;
+        assert_eq!(
+            slots_of(&visual, GL_FRONT).unwrap(),
+            vec![FrontLeft, FrontRight]
+        );
+        assert_eq!(
+            slots_of(&visual, GL_LEFT).unwrap(),
+            vec![FrontLeft, BackLeft]
+        );
+        assert_eq!(slots_of(&visual, GL_FRONT_AND_BACK).unwrap().len(), 4);
+        assert_eq!(slots_of(&visual, GL_AUX1).unwrap(), vec![Aux(1)]);
+        assert_eq!(slots_of(&visual, GL_AUX2).unwrap(), vec![]);
+        assert_eq!(read_slot(&visual, GL_RIGHT), Some(FrontRight));
+        assert_eq!(slots_of(&visual, GL_DEPTH_TEST), None);
+    }
+
+    #[test]
+    fn double_buffered_contexts_draw_and_read_the_back_buffer() {
+        let (ctx, _) = stereo_context();
+        assert_eq!(ctx.state.color.draw_buffers[0], GL_BACK);
+        assert_eq!(ctx.state.pixel_mode.read_buffer, GL_BACK);
+        assert_eq!(ctx.current_read_slot(), Some(ColorSlot::BackLeft));
+    }
+
+    #[test]
+    fn clear_writes_exactly_the_selected_buffers() {
+        let (mut ctx, d) = stereo_context();
+        ctx.draw_buffer(GL_RIGHT);
+        ctx.clear_color([1.0, 0.0, 0.0, 1.0]);
+        ctx.clear(GL_COLOR_BUFFER_BIT);
+        assert_eq!(ctx.take_error(), GL_NO_ERROR);
+        assert_eq!(pixel(&d, ColorSlot::FrontRight, 0, 0), [1.0, 0.0, 0.0, 1.0]);
+        assert_eq!(pixel(&d, ColorSlot::BackRight, 3, 3), [1.0, 0.0, 0.0, 1.0]);
+        assert_eq!(pixel(&d, ColorSlot::FrontLeft, 0, 0), [0.0; 4]);
+        assert_eq!(pixel(&d, ColorSlot::Aux(0), 0, 0), [0.0; 4]);
+    }
+
+    #[test]
+    fn draw_buffers_apply_each_outputs_color_mask() {
+        let (mut ctx, d) = stereo_context();
+        ctx.draw_buffers(&[GL_AUX0, GL_BACK_LEFT]);
+        assert_eq!(ctx.take_error(), GL_NO_ERROR);
+        ctx.color_mask(Some(1), [false, true, false, true]);
+        ctx.clear_color([1.0, 1.0, 1.0, 1.0]);
+        ctx.clear(GL_COLOR_BUFFER_BIT);
+        assert_eq!(pixel(&d, ColorSlot::Aux(0), 1, 1), [1.0; 4]);
+        assert_eq!(pixel(&d, ColorSlot::BackLeft, 1, 1), [0.0, 1.0, 0.0, 1.0]);
+        assert_eq!(pixel(&d, ColorSlot::FrontLeft, 1, 1), [0.0; 4]);
+    }
+
+    #[test]
+    fn invalid_buffer_selections_are_errors_that_change_nothing() {
+        let (mut ctx, _) = stereo_context();
+        ctx.draw_buffer(GL_DEPTH_TEST);
+        assert_eq!(ctx.take_error(), GL_INVALID_ENUM);
+        ctx.draw_buffer(GL_AUX3);
+        assert_eq!(ctx.take_error(), GL_INVALID_OPERATION);
+        ctx.draw_buffers(&[GL_AUX0, GL_AUX0]);
+        assert_eq!(ctx.take_error(), GL_INVALID_OPERATION);
+        ctx.draw_buffers(&[GL_FRONT]);
+        assert_eq!(ctx.take_error(), GL_INVALID_OPERATION);
+        ctx.draw_buffers(&[GL_NONE; MAX_DRAW_BUFFERS + 1]);
+        assert_eq!(ctx.take_error(), GL_INVALID_VALUE);
+        ctx.read_buffer(GL_FRONT_AND_BACK);
+        assert_eq!(ctx.take_error(), GL_INVALID_ENUM);
+        assert_eq!(ctx.state.color.draw_buffers[0], GL_BACK);
+        assert_eq!(ctx.state.pixel_mode.read_buffer, GL_BACK);
+    }
+
+    #[test]
+    fn scissored_clears_touch_only_the_box() {
+        let (mut ctx, d) = stereo_context();
+        ctx.set_capability(GL_SCISSOR_TEST, true);
+        ctx.scissor(1, 1, 2, 2);
+        ctx.clear_color([0.0, 0.0, 1.0, 1.0]);
+        ctx.clear(GL_COLOR_BUFFER_BIT);
+        assert_eq!(pixel(&d, ColorSlot::BackLeft, 1, 2), [0.0, 0.0, 1.0, 1.0]);
+        assert_eq!(pixel(&d, ColorSlot::BackLeft, 0, 0), [0.0; 4]);
+        assert_eq!(pixel(&d, ColorSlot::BackLeft, 3, 1), [0.0; 4]);
+        ctx.clear(0x8000_0000);
+        assert_eq!(ctx.take_error(), GL_INVALID_VALUE);
     }
 }

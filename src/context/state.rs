@@ -135,7 +135,12 @@ pub struct DepthState {
 
 impl Default for DepthState {
     fn default() -> Self {
-        DepthState { test: false, func: CompareFunc::Less, write_mask: true, clear: 1.0 }
+        DepthState {
+            test: false,
+            func: CompareFunc::Less,
+            write_mask: true,
+            clear: 1.0,
+        }
     }
 }
 
@@ -196,7 +201,10 @@ pub struct ViewportState {
 
 impl Default for ViewportState {
     fn default() -> Self {
-        ViewportState { rect: [0; 4], depth_range: [0.0, 1.0] }
+        ViewportState {
+            rect: [0; 4],
+            depth_range: [0.0, 1.0],
+        }
     }
 }
 
@@ -253,7 +261,12 @@ pub struct LightingState {
 
 impl Default for LightingState {
     fn default() -> Self {
-        LightingState { enabled: false, lights: [false; MAX_LIGHTS], color_material: false, clamp_vertex_color: GL_TRUE as GLenum }
+        LightingState {
+            enabled: false,
+            lights: [false; MAX_LIGHTS],
+            color_material: false,
+            clamp_vertex_color: GL_TRUE as GLenum,
+        }
     }
 }
 
@@ -299,7 +312,12 @@ pub struct MultisampleState {
 
 impl Default for MultisampleState {
     fn default() -> Self {
-        MultisampleState { enabled: true, alpha_to_coverage: false, alpha_to_one: false, coverage: false }
+        MultisampleState {
+            enabled: true,
+            alpha_to_coverage: false,
+            alpha_to_one: false,
+            coverage: false,
+        }
     }
 }
 
@@ -411,7 +429,9 @@ impl State {
             multisample: MultisampleState::default(),
             texture: TextureState::default(),
             eval: EvalState::default(),
-            pixel_mode: PixelModeState { read_buffer: buffer },
+            pixel_mode: PixelModeState {
+                read_buffer: buffer,
+            },
         }
     }
 }

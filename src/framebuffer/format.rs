@@ -72,7 +72,8 @@ impl DepthStencilFormat {
 
     pub fn stencil_bits(self) -> u32 {
         match self {
-            DepthStencilFormat::Packed24 { stencil: true, .. } | DepthStencilFormat::Depth32 { stencil: true } => 8,
+            DepthStencilFormat::Packed24 { stencil: true, .. }
+            | DepthStencilFormat::Depth32 { stencil: true } => 8,
             _ => 0,
         }
     }
@@ -102,12 +103,13 @@ pub fn unorm_to_float(value: u32, bits: u32) -> f32 {
     (value as f64 / unorm_max(bits) as f64) as f32
 }
 
-/// Depth in [0, 1] (f64) → n-bit depth value, rounded to nearest; NaN becomes 0.
+/// Depth in [0, 1] (f64) → n-bit depth value, rounded to nearest with ties to even (as
+/// Mesa's clears measure: 0.1 → 0x199a, 0.7 → 0xb332 at 16 bits); NaN becomes 0.
 #[inline]
 pub fn depth_to_fixed(depth: f64, bits: u32) -> u32 {
     let max = unorm_max(bits) as f64;
     let clamped = if depth > 0.0 { depth.min(1.0) } else { 0.0 };
-    (clamped * max).round() as u32
+    (clamped * max).round_ties_even() as u32
 }
 
 /// Widens an n-bit unorm value to 32 bits by bit replication (exact rounding of the ratio).
