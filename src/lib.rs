@@ -12,4 +12,5 @@ pub mod api;
 pub mod context;
 pub mod framebuffer;
 pub mod pixel;
+pub mod setup;
 pub mod winsys;

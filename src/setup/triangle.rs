@@ -1,0 +1,285 @@
+//! Triangle setup in 24.8 fixed point and exact row spans.
+//!
+//! A vertex snaps to the nearest 1/256 pixel. For an edge from `a` to `b` the edge function
+//! at point `p` is `E(p) = (b.x - a.x)(p.y - a.y) - (b.y - a.y)(p.x - a.x)`; after orienting
+//! the triangle counter-clockwise every interior point has `E > 0` for all three edges.
+//! A centre exactly on an edge belongs to the triangle only if the edge is a left edge or a
+//! bottom edge (lowest y, window coordinates growing upwards). That is the top-left rule of
+//! a y-down framebuffer seen through GL's y-up window coordinates, and what Mesa's llvmpipe
+//! does (measured: a triangle with an edge on pixel centres of row 0 covers row 0). It makes
+//! triangles sharing an edge cover every pixel exactly once.
+
+/// Subpixel bits of window coordinates.
+pub const SUBPIXEL_BITS: u32 = 8;
+/// One pixel in fixed point.
+pub const ONE: i64 = 1 << SUBPIXEL_BITS;
+const HALF: i64 = ONE / 2;
+
+/// Largest |coordinate| in pixels that setup accepts; larger primitives are clipped before
+/// setup (the guard band). With 8 subpixel bits coordinates stay below 2^31 in fixed point
+/// and every edge-function product below 2^63.
+pub const GUARD_BAND: f32 = (1 << 22) as f32;
+
+/// Snaps a window coordinate to fixed point (round to nearest).
+#[inline]
+pub fn to_fixed(v: f32) -> i64 {
+    (v as f64 * ONE as f64).round() as i64
+}
+
+/// One edge: `E(x, y) = a·x + b·y + c` over fixed-point coordinates, inside when
+/// `E > 0`, or `E == 0` on a top-left edge.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Edge {
+    a: i64,
+    b: i64,
+    c: i64,
+    /// 0 for left and bottom edges (E == 0 counts as inside), 1 otherwise (needs E ≥ 1).
+    bias: i64,
+}
+
+impl Edge {
+    /// The edge from `p` to `q` of a counter-clockwise triangle.
+    fn new(p: [i64; 2], q: [i64; 2]) -> Edge {
+        let (dx, dy) = (q[0] - p[0], q[1] - p[1]);
+        // E(x, y) = dx·(y − py) − dy·(x − px)
+        let a = -dy;
+        let b = dx;
+        let c = dy * p[0] - dx * p[1];
+        // Counter-clockwise with y up: a left edge goes down (dy < 0); a bottom edge is
+        // horizontal and goes right (dy == 0, dx > 0).
+        let owns_centres = dy < 0 || (dy == 0 && dx > 0);
+        Edge {
+            a,
+            b,
+            c,
+            bias: if owns_centres { 0 } else { 1 },
+        }
+    }
+
+    /// Whether the fixed-point point (x, y) is inside this edge.
+    #[inline]
+    pub fn inside(&self, x: i64, y: i64) -> bool {
+        self.a * x + self.b * y + self.c >= self.bias
+    }
+}
+
+/// A set-up triangle: its three edges and its pixel bounding box.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct TriangleSetup {
+    edges: [Edge; 3],
+    /// Fixed-point vertices, counter-clockwise.
+    pub vertices: [[i64; 2]; 3],
+    /// Whether the input was clockwise (reordered to counter-clockwise).
+    pub was_clockwise: bool,
+    /// Inclusive pixel bounds that may contain covered centres.
+    pub min_x: i32,
+    pub max_x: i32,
+    pub min_y: i32,
+    pub max_y: i32,
+}
+
+/// Floor division for i64 (rounds towards −∞).
+#[inline]
+fn div_floor(n: i64, d: i64) -> i64 {
+    let q = n / d;
+    if (n % d != 0) && ((n < 0) != (d < 0)) {
+        q - 1
+    } else {
+        q
+    }
+}
+
+/// Ceiling division for i64 (rounds towards +∞).
+#[inline]
+fn div_ceil(n: i64, d: i64) -> i64 {
+    -div_floor(-n, d)
+}
+
+impl TriangleSetup {
+    /// Sets up a triangle from window coordinates (within the guard band). Returns `None`
+    /// for a degenerate (zero-area) triangle, which covers no pixel.
+    pub fn new(window: [[f32; 2]; 3]) -> Option<TriangleSetup> {
+        let mut v = window.map(|p| [to_fixed(p[0]), to_fixed(p[1])]);
+        let area2 =
+            (v[1][0] - v[0][0]) * (v[2][1] - v[0][1]) - (v[2][0] - v[0][0]) * (v[1][1] - v[0][1]);
+        if area2 == 0 {
+            return None;
+        }
+        let was_clockwise = area2 < 0;
+        if was_clockwise {
+            v.swap(1, 2);
+        }
+        let edges = [
+            Edge::new(v[0], v[1]),
+            Edge::new(v[1], v[2]),
+            Edge::new(v[2], v[0]),
+        ];
+        let xs = v.map(|p| p[0]);
+        let ys = v.map(|p| p[1]);
+        // Pixel x is covered only if its centre x·256+128 lies within [min, max].
+        let pixel_lo = |m: i64| div_ceil(m - HALF, ONE) as i32;
+        let pixel_hi = |m: i64| div_floor(m - HALF, ONE) as i32;
+        Some(TriangleSetup {
+            edges,
+            vertices: v,
+            was_clockwise,
+            min_x: pixel_lo(*xs.iter().min().unwrap()),
+            max_x: pixel_hi(*xs.iter().max().unwrap()),
+            min_y: pixel_lo(*ys.iter().min().unwrap()),
+            max_y: pixel_hi(*ys.iter().max().unwrap()),
+        })
+    }
+
+    /// Whether pixel (x, y)'s centre is covered (reference test, one pixel at a time).
+    #[inline]
+    pub fn covers(&self, x: i32, y: i32) -> bool {
+        let (px, py) = (x as i64 * ONE + HALF, y as i64 * ONE + HALF);
+        self.edges.iter().all(|e| e.inside(px, py))
+    }
+
+    /// The covered pixels of row `y` as a half-open range `[x0, x1)` clamped to
+    /// `[clip_x0, clip_x1)`, solved exactly from the edge equations; `None` if empty.
+    pub fn row_span(&self, y: i32, clip_x0: i32, clip_x1: i32) -> Option<(i32, i32)> {
+        let py = y as i64 * ONE + HALF;
+        let mut lo = clip_x0.max(self.min_x) as i64;
+        let mut hi = clip_x1.min(self.max_x + 1) as i64; // exclusive
+        for e in &self.edges {
+            // Inside: a·(256·x + 128) + (b·py + c) ≥ bias  ⇔  256·a·x ≥ bias − a·128 − b·py − c.
+            let rhs = e.bias - e.a * HALF - e.b * py - e.c;
+            let k = e.a * ONE;
+            if k > 0 {
+                lo = lo.max(div_ceil(rhs, k));
+            } else if k < 0 {
+                hi = hi.min(div_floor(rhs, k) + 1);
+            } else if rhs > 0 {
+                return None;
+            }
+            if lo >= hi {
+                return None;
+            }
+        }
+        Some((lo as i32, hi as i32))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every pixel in the bounding box: span membership equals the per-pixel test.
+    fn assert_spans_match_pixels(t: &TriangleSetup) {
+        for y in t.min_y - 1..=t.max_y + 1 {
+            let span = t.row_span(y, i32::MIN / 2, i32::MAX / 2);
+            for x in t.min_x - 1..=t.max_x + 1 {
+                let in_span = span.is_some_and(|(a, b)| a <= x && x < b);
+                assert_eq!(in_span, t.covers(x, y), "pixel ({x},{y})");
+            }
+        }
+    }
+
+    /// A tiny deterministic generator (xorshift) for coordinates.
+    fn coords(seed: &mut u64, range: f32) -> f32 {
+        *seed ^= *seed << 13;
+        *seed ^= *seed >> 7;
+        *seed ^= *seed << 17;
+        ((*seed >> 11) as f64 / (1u64 << 53) as f64) as f32 * range
+    }
+
+    #[test]
+    fn spans_equal_the_per_pixel_test() {
+        let mut seed = 0x9e3779b97f4a7c15;
+        for _ in 0..300 {
+            let v =
+                [0, 1, 2].map(|_| [coords(&mut seed, 40.0) - 5.0, coords(&mut seed, 40.0) - 5.0]);
+            if let Some(t) = TriangleSetup::new(v) {
+                assert_spans_match_pixels(&t);
+            }
+        }
+    }
+
+    #[test]
+    fn shared_edges_cover_each_pixel_exactly_once() {
+        // A fan around an interior point: every pixel of the enclosing square is covered by
+        // exactly one of the triangles, even with centres exactly on shared edges.
+        let centre = [8.5, 8.5];
+        let ring = [[0.0, 0.0], [16.0, 0.0], [16.0, 16.0], [0.0, 16.0]];
+        let mut hits = vec![0u8; 16 * 16];
+        for i in 0..4 {
+            let t = TriangleSetup::new([centre, ring[i], ring[(i + 1) % 4]]).unwrap();
+            for y in 0..16 {
+                if let Some((a, b)) = t.row_span(y, 0, 16) {
+                    for x in a..b {
+                        hits[(y * 16 + x) as usize] += 1;
+                    }
+                }
+            }
+        }
+        assert!(hits.iter().all(|&h| h == 1), "{hits:?}");
+    }
+
+    #[test]
+    fn fill_rule_on_a_square_through_pixel_centres() {
+        // Two triangles forming the square [0.5, 4.5]² whose edges run through pixel centres:
+        // it covers exactly 16 pixels, owning the centres on its left and bottom edges.
+        let quad = [[0.5, 0.5], [4.5, 0.5], [4.5, 4.5], [0.5, 4.5]];
+        let a = TriangleSetup::new([quad[0], quad[1], quad[2]]).unwrap();
+        let b = TriangleSetup::new([quad[0], quad[2], quad[3]]).unwrap();
+        let mut covered = Vec::new();
+        for y in -1..6 {
+            for x in -1..6 {
+                let n = a.covers(x, y) as u8 + b.covers(x, y) as u8;
+                assert!(n <= 1);
+                if n == 1 {
+                    covered.push((x, y));
+                }
+            }
+        }
+        // The left edge (x = 0.5) and the bottom edge (y = 0.5) are in; right and top out.
+        let expected: Vec<_> = (0..4).flat_map(|y| (0..4).map(move |x| (x, y))).collect();
+        covered.sort_by_key(|&(x, y)| (y, x));
+        assert_eq!(covered, expected);
+    }
+
+    #[test]
+    fn matches_llvmpipe_on_edges_through_centres() {
+        // Mesa 22 llvmpipe draws this triangle as rows y0: x0..3, y1: x1..3, y2: x2..3, y3: x3.
+        let t = TriangleSetup::new([[0.5, 0.5], [4.5, 0.5], [4.5, 4.5]]).unwrap();
+        let spans: Vec<_> = (0..6).map(|y| t.row_span(y, 0, 8)).collect();
+        assert_eq!(
+            spans,
+            vec![
+                Some((0, 4)),
+                Some((1, 4)),
+                Some((2, 4)),
+                Some((3, 4)),
+                None,
+                None
+            ]
+        );
+    }
+
+    #[test]
+    fn orientation_and_translation_do_not_change_coverage() {
+        let v = [[1.3, 2.7], [13.9, 4.1], [6.2, 11.6]];
+        let t = TriangleSetup::new(v).unwrap();
+        let reversed = TriangleSetup::new([v[0], v[2], v[1]]).unwrap();
+        let rotated = TriangleSetup::new([v[1], v[2], v[0]]).unwrap();
+        let moved = TriangleSetup::new(v.map(|p| [p[0] + 7.0, p[1] - 3.0])).unwrap();
+        for y in 0..16 {
+            for x in 0..16 {
+                assert_eq!(t.covers(x, y), reversed.covers(x, y));
+                assert_eq!(t.covers(x, y), rotated.covers(x, y));
+                assert_eq!(t.covers(x, y), moved.covers(x + 7, y - 3));
+            }
+        }
+    }
+
+    #[test]
+    fn degenerate_and_huge_triangles() {
+        assert!(TriangleSetup::new([[1.0, 1.0], [2.0, 2.0], [3.0, 3.0]]).is_none());
+        let g = GUARD_BAND - 1.0;
+        let t = TriangleSetup::new([[-g, -g], [g, -g], [0.0, g]]).unwrap();
+        assert_eq!(t.row_span(0, 0, 100), Some((0, 100)));
+        assert!(t.covers(0, 0));
+    }
+}
