@@ -40,32 +40,16 @@ pub extern "C" fn glClearIndex(c: GLfloat) {
 
 #[no_mangle]
 pub extern "C" fn glColorMask(red: GLboolean, green: GLboolean, blue: GLboolean, alpha: GLboolean) {
-    with_context((), |ctx| {
-        ctx.color_mask(None, [red != 0, green != 0, blue != 0, alpha != 0])
-    })
+    with_context((), |ctx| ctx.color_mask(None, [red != 0, green != 0, blue != 0, alpha != 0]))
 }
 
 #[no_mangle]
-pub extern "C" fn glColorMaski(
-    index: GLuint,
-    r: GLboolean,
-    g: GLboolean,
-    b: GLboolean,
-    a: GLboolean,
-) {
-    with_context((), |ctx| {
-        ctx.color_mask(Some(index), [r != 0, g != 0, b != 0, a != 0])
-    })
+pub extern "C" fn glColorMaski(index: GLuint, r: GLboolean, g: GLboolean, b: GLboolean, a: GLboolean) {
+    with_context((), |ctx| ctx.color_mask(Some(index), [r != 0, g != 0, b != 0, a != 0]))
 }
 
 #[no_mangle]
-pub extern "C" fn glColorMaskIndexedEXT(
-    index: GLuint,
-    r: GLboolean,
-    g: GLboolean,
-    b: GLboolean,
-    a: GLboolean,
-) {
+pub extern "C" fn glColorMaskIndexedEXT(index: GLuint, r: GLboolean, g: GLboolean, b: GLboolean, a: GLboolean) {
     glColorMaski(index, r, g, b, a)
 }
 

@@ -154,9 +154,5 @@ pub unsafe extern "C" fn glGetDoublev(pname: GLenum, data: *mut GLdouble) {
 
 /// Runs a query returning a vector; empty when there is no context or the query failed.
 fn with_context_vec<T>(f: impl FnOnce(&mut crate::context::Context) -> Option<Vec<T>>) -> Vec<T> {
-    guard(Vec::new(), || {
-        crate::context::current::with_current(f)
-            .flatten()
-            .unwrap_or_default()
-    })
+    guard(Vec::new(), || crate::context::current::with_current(f).flatten().unwrap_or_default())
 }

@@ -45,23 +45,12 @@ fn share_handle(sharelist: OSMesaContext) -> Option<usize> {
     (!sharelist.is_null()).then(|| handle_of(sharelist))
 }
 
-fn create(
-    format: GLenum,
-    depth: GLint,
-    stencil: GLint,
-    accum: GLint,
-    sharelist: OSMesaContext,
-) -> OSMesaContext {
+fn create(format: GLenum, depth: GLint, stencil: GLint, accum: GLint, sharelist: OSMesaContext) -> OSMesaContext {
     guard(std::ptr::null_mut(), || {
         let Some(layout) = PixelLayout::from_osmesa(format) else {
             return std::ptr::null_mut();
         };
-        let request = Request {
-            layout,
-            depth_bits: depth,
-            stencil_bits: stencil,
-            accum_bits: accum,
-        };
+        let request = Request { layout, depth_bits: depth, stencil_bits: stencil, accum_bits: accum };
         to_c(osm::create(request, share_handle(sharelist)))
     })
 }
@@ -159,11 +148,7 @@ pub unsafe extern "C" fn OSMesaMakeCurrent(
         let caller = unsafe { CallerBuffer::new(buffer.cast(), bytes) };
         match context.make_current(caller, type_, width, height) {
             Ok(()) => GL_TRUE,
-            Err(
-                BindFailure::BadArguments
-                | BindFailure::OutOfMemory
-                | BindFailure::CurrentElsewhere,
-            ) => GL_FALSE,
+            Err(BindFailure::BadArguments | BindFailure::OutOfMemory | BindFailure::CurrentElsewhere) => GL_FALSE,
         }
     })
 }
@@ -183,9 +168,7 @@ pub extern "C" fn OSMesaPixelStore(pname: GLint, value: GLint) {
         // row_length × height pixels; the wrapper is rebuilt with that extent.
         let wrap = |ptr: *mut u8, len: usize| unsafe { CallerBuffer::new(ptr, len) };
         match pname {
-            OSMESA_ROW_LENGTH if value >= 0 => {
-                context.pixel_store(Some(value as usize), None, wrap)
-            }
+            OSMESA_ROW_LENGTH if value >= 0 => context.pixel_store(Some(value as usize), None, wrap),
             OSMESA_Y_UP => context.pixel_store(None, Some(value != 0), wrap),
             OSMESA_ROW_LENGTH => record_error(GL_INVALID_VALUE),
             _ => record_error(GL_INVALID_ENUM),
@@ -205,15 +188,11 @@ pub unsafe extern "C" fn OSMesaGetIntegerv(pname: GLint, value: *mut GLint) {
     let result = guard(None, || {
         let context = osm::current_context();
         let (width, height, ty) = context.as_ref().map_or((0, 0, 0), |c| c.bound_size());
-        let (row_length, y_up) = context
-            .as_ref()
-            .map_or((0, true), |c| c.row_length_and_y_up());
+        let (row_length, y_up) = context.as_ref().map_or((0, true), |c| c.row_length_and_y_up());
         Some(match pname {
             OSMESA_WIDTH => width as GLint,
             OSMESA_HEIGHT => height as GLint,
-            OSMESA_FORMAT => context
-                .as_ref()
-                .map_or(0, |c| c.request.layout.to_osmesa() as GLint),
+            OSMESA_FORMAT => context.as_ref().map_or(0, |c| c.request.layout.to_osmesa() as GLint),
             OSMESA_TYPE => ty as GLint,
             OSMESA_ROW_LENGTH => row_length as GLint,
             OSMESA_Y_UP => y_up as GLint,
@@ -251,9 +230,7 @@ pub unsafe extern "C" fn OSMesaGetDepthBuffer(
     bytesPerValue: *mut GLint,
     buffer: *mut *mut c_void,
 ) -> GLboolean {
-    let found = guard(None, || {
-        osm::lookup(handle_of(c)).and_then(|ctx| ctx.depth_buffer())
-    });
+    let found = guard(None, || osm::lookup(handle_of(c)).and_then(|ctx| ctx.depth_buffer()));
     let (w, h, bpv, address) = found.unwrap_or((0, 0, 0, 0));
     // SAFETY: each pointer is NULL or valid, per this function's contract.
     unsafe {
@@ -305,11 +282,7 @@ pub unsafe extern "C" fn OSMesaGetProcAddress(funcName: *const c_char) -> OSMESA
 
 #[no_mangle]
 pub extern "C" fn OSMesaColorClamp(enable: GLboolean) {
-    let clamp = if enable != 0 {
-        GL_TRUE as GLenum
-    } else {
-        GL_FIXED_ONLY
-    };
+    let clamp = if enable != 0 { GL_TRUE as GLenum } else { GL_FIXED_ONLY };
     super::with_context((), |ctx| ctx.clamp_color(GL_CLAMP_FRAGMENT_COLOR, clamp))
 }
 
@@ -319,21 +292,13 @@ pub extern "C" fn OSMesaColorClamp(enable: GLboolean) {
 /// # Safety
 /// `filter` must be NULL or a NUL-terminated string.
 #[no_mangle]
-pub unsafe extern "C" fn OSMesaPostprocess(
-    osmesa: OSMesaContext,
-    filter: *const c_char,
-    enable_value: c_uint,
-) {
+pub unsafe extern "C" fn OSMesaPostprocess(osmesa: OSMesaContext, filter: *const c_char, enable_value: c_uint) {
     let _ = (osmesa, enable_value);
     let name = if filter.is_null() {
         String::from("(null)")
     } else {
         // SAFETY: non-null and NUL-terminated by the contract.
-        unsafe { CStr::from_ptr(filter) }
-            .to_string_lossy()
-            .into_owned()
+        unsafe { CStr::from_ptr(filter) }.to_string_lossy().into_owned()
     };
-    eprintln!(
-        "tessera: OSMesaPostprocess filter '{name}' is not supported; rendering is unchanged"
-    );
+    eprintln!("tessera: OSMesaPostprocess filter '{name}' is not supported; rendering is unchanged");
 }

@@ -14,14 +14,7 @@ struct Table(Vec<(&'static [u8], usize)>);
 
 fn table() -> &'static Table {
     static TABLE: OnceLock<Table> = OnceLock::new();
-    TABLE.get_or_init(|| {
-        Table(
-            generated::table()
-                .into_iter()
-                .map(|(n, f)| (n, f as usize))
-                .collect(),
-        )
-    })
+    TABLE.get_or_init(|| Table(generated::table().into_iter().map(|(n, f)| (n, f as usize)).collect()))
 }
 
 /// The entry point called `name`, or `None`.

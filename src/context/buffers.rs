@@ -44,10 +44,8 @@ pub fn read_slot(config: &FramebufferConfig, buffer: GLenum) -> Option<ColorSlot
 
 /// Whether `buffer` may be one entry of glDrawBuffers (a single buffer name).
 fn is_single_buffer_name(buffer: GLenum) -> bool {
-    matches!(
-        buffer,
-        GL_NONE | GL_FRONT_LEFT | GL_FRONT_RIGHT | GL_BACK_LEFT | GL_BACK_RIGHT
-    ) || (GL_AUX0..GL_AUX0 + MAX_AUX_ENUMS).contains(&buffer)
+    matches!(buffer, GL_NONE | GL_FRONT_LEFT | GL_FRONT_RIGHT | GL_BACK_LEFT | GL_BACK_RIGHT)
+        || (GL_AUX0..GL_AUX0 + MAX_AUX_ENUMS).contains(&buffer)
 }
 
 impl Context {
@@ -142,8 +140,7 @@ impl Context {
         if !self.check_outside_begin_end() {
             return;
         }
-        let known =
-            GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT;
+        let known = GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT;
         if mask & !known != 0 {
             return self.error(GL_INVALID_VALUE);
         }
@@ -153,10 +150,7 @@ impl Context {
         let clear_color = color.clear_color;
         let color_masks = color.color_mask;
         let depth = (self.state.depth.write_mask, self.state.depth.clear);
-        let stencil = (
-            self.state.stencil.front.write_mask,
-            self.state.stencil.clear,
-        );
+        let stencil = (self.state.stencil.front.write_mask, self.state.stencil.clear);
         let accum_clear = self.state.accum.clear;
         let clip = |bounds: Rect| self.clip_rect(bounds);
         let _ = self.with_framebuffer(|fb| {
@@ -180,8 +174,7 @@ impl Context {
                 fb.depth_stencil_mut().clear_depth(rect, depth.1);
             }
             if mask & GL_STENCIL_BUFFER_BIT != 0 {
-                fb.depth_stencil_mut()
-                    .clear_stencil(rect, stencil.1 as u8, stencil.0 as u8);
+                fb.depth_stencil_mut().clear_stencil(rect, stencil.1 as u8, stencil.0 as u8);
             }
             if mask & GL_ACCUM_BUFFER_BIT != 0 {
                 if let Some(accum) = fb.accum_mut() {
@@ -224,12 +217,7 @@ impl Context {
         if width < 0 || height < 0 {
             return self.error(GL_INVALID_VALUE);
         }
-        self.state.viewport.rect = [
-            x,
-            y,
-            width.min(MAX_VIEWPORT_DIM),
-            height.min(MAX_VIEWPORT_DIM),
-        ];
+        self.state.viewport.rect = [x, y, width.min(MAX_VIEWPORT_DIM), height.min(MAX_VIEWPORT_DIM)];
     }
 
     /// glDepthRange: both values clamp to [0, 1].
@@ -264,8 +252,7 @@ impl Context {
     /// glClearAccum: clamped to [-1, 1].
     pub fn clear_accum(&mut self, rgba: [f32; 4]) {
         if self.check_outside_begin_end() {
-            self.state.accum.clear =
-                rgba.map(|c| if c.is_nan() { 0.0 } else { c.clamp(-1.0, 1.0) });
+            self.state.accum.clear = rgba.map(|c| if c.is_nan() { 0.0 } else { c.clamp(-1.0, 1.0) });
         }
     }
 
@@ -331,16 +318,11 @@ mod tests {
             double_buffered: true,
             stereo: true,
             aux_buffers: 2,
-            depth_stencil: DepthStencilFormat::Packed24 {
-                depth: true,
-                stencil: true,
-            },
+            depth_stencil: DepthStencilFormat::Packed24 { depth: true, stencil: true },
             accum_bits: 16,
         };
-        let drawable = Arc::new(Mutex::new(Drawable {
-            framebuffer: Framebuffer::new(visual, 4, 4).unwrap(),
-            presenter: None,
-        }));
+        let drawable =
+            Arc::new(Mutex::new(Drawable { framebuffer: Framebuffer::new(visual, 4, 4).unwrap(), presenter: None }));
         let mut ctx = Context::new(ContextConfig { visual });
         ctx.bind_drawable(Some(drawable.clone()));
         (ctx, drawable)
@@ -348,12 +330,7 @@ mod tests {
 
     fn pixel(d: &Arc<Mutex<Drawable>>, slot: ColorSlot, x: i32, y: i32) -> [f32; 4] {
         let mut out = Vec::new();
-        d.lock()
-            .unwrap()
-            .framebuffer
-            .color(slot)
-            .unwrap()
-            .read_row_f32(y, x, x + 1, &mut out);
+        d.lock().unwrap().framebuffer.color(slot).unwrap().read_row_f32(y, x, x + 1, &mut out);
         out[0]
     }
 
@@ -362,14 +339,8 @@ mod tests {
         let (ctx, _) = stereo_context();
         let visual = ctx.config().visual;
         use ColorSlot::*;
-        assert_eq!(
-            slots_of(&visual, GL_FRONT).unwrap(),
-            vec![FrontLeft, FrontRight]
-        );
-        assert_eq!(
-            slots_of(&visual, GL_LEFT).unwrap(),
-            vec![FrontLeft, BackLeft]
-        );
+        assert_eq!(slots_of(&visual, GL_FRONT).unwrap(), vec![FrontLeft, FrontRight]);
+        assert_eq!(slots_of(&visual, GL_LEFT).unwrap(), vec![FrontLeft, BackLeft]);
         assert_eq!(slots_of(&visual, GL_FRONT_AND_BACK).unwrap().len(), 4);
         assert_eq!(slots_of(&visual, GL_AUX1).unwrap(), vec![Aux(1)]);
         assert_eq!(slots_of(&visual, GL_AUX2).unwrap(), vec![]);

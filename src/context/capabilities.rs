@@ -94,9 +94,7 @@ pub fn flag(state: &mut State, cap: GLenum) -> Option<&mut bool> {
         GL_ALPHA_TEST => &mut state.color.alpha_test,
         GL_AUTO_NORMAL => &mut state.eval.auto_normal,
         GL_BLEND => &mut state.color.blend[0],
-        GL_CLIP_PLANE0..=GL_CLIP_PLANE5 => {
-            &mut state.transform.clip_planes[(cap - GL_CLIP_PLANE0) as usize]
-        }
+        GL_CLIP_PLANE0..=GL_CLIP_PLANE5 => &mut state.transform.clip_planes[(cap - GL_CLIP_PLANE0) as usize],
         GL_COLOR_LOGIC_OP => &mut state.color.color_logic_op,
         GL_COLOR_MATERIAL => &mut state.lighting.color_material,
         GL_COLOR_SUM => &mut state.fog.color_sum,
@@ -110,12 +108,8 @@ pub fn flag(state: &mut State, cap: GLenum) -> Option<&mut bool> {
         GL_LIGHTING => &mut state.lighting.enabled,
         GL_LINE_SMOOTH => &mut state.line_point.line_smooth,
         GL_LINE_STIPPLE => &mut state.line_point.line_stipple,
-        GL_MAP1_COLOR_4..=GL_MAP1_VERTEX_4 => {
-            &mut state.eval.map1[(cap - GL_MAP1_COLOR_4) as usize]
-        }
-        GL_MAP2_COLOR_4..=GL_MAP2_VERTEX_4 => {
-            &mut state.eval.map2[(cap - GL_MAP2_COLOR_4) as usize]
-        }
+        GL_MAP1_COLOR_4..=GL_MAP1_VERTEX_4 => &mut state.eval.map1[(cap - GL_MAP1_COLOR_4) as usize],
+        GL_MAP2_COLOR_4..=GL_MAP2_VERTEX_4 => &mut state.eval.map2[(cap - GL_MAP2_COLOR_4) as usize],
         GL_MULTISAMPLE => &mut state.multisample.enabled,
         GL_NORMALIZE => &mut state.transform.normalize,
         GL_POINT_SMOOTH => &mut state.line_point.point_smooth,
@@ -136,9 +130,7 @@ pub fn flag(state: &mut State, cap: GLenum) -> Option<&mut bool> {
         GL_TEXTURE_2D => &mut state.texture.units[unit].texture_2d,
         GL_TEXTURE_3D => &mut state.texture.units[unit].texture_3d,
         GL_TEXTURE_CUBE_MAP => &mut state.texture.units[unit].texture_cube_map,
-        GL_TEXTURE_GEN_S..=GL_TEXTURE_GEN_Q => {
-            &mut state.texture.units[unit].gen[(cap - GL_TEXTURE_GEN_S) as usize]
-        }
+        GL_TEXTURE_GEN_S..=GL_TEXTURE_GEN_Q => &mut state.texture.units[unit].gen[(cap - GL_TEXTURE_GEN_S) as usize],
         GL_VERTEX_PROGRAM_POINT_SIZE => &mut state.line_point.vertex_program_point_size,
         GL_VERTEX_PROGRAM_TWO_SIDE => &mut state.line_point.vertex_program_two_side,
         _ => return None,
@@ -210,9 +202,6 @@ impl Context {
 
     /// Snapshot of every capability (for GL_ENABLE_BIT).
     pub fn capability_snapshot(&mut self) -> Vec<(GLenum, bool)> {
-        CAPABILITIES
-            .iter()
-            .filter_map(|&cap| flag(&mut self.state, cap).map(|f| (cap, *f)))
-            .collect()
+        CAPABILITIES.iter().filter_map(|&cap| flag(&mut self.state, cap).map(|f| (cap, *f))).collect()
     }
 }

@@ -19,18 +19,13 @@ pub struct SharedContext {
 
 impl SharedContext {
     pub fn new(context: Context) -> Arc<Self> {
-        Arc::new(SharedContext {
-            gl: Mutex::new(context),
-            bound_to: Mutex::new(None),
-        })
+        Arc::new(SharedContext { gl: Mutex::new(context), bound_to: Mutex::new(None) })
     }
 
     /// Locks the GL state. A panic caught at the API edge while the lock was held leaves the
     /// state as it was at that point; the context stays usable.
     pub fn lock(&self) -> MutexGuard<'_, Context> {
-        self.gl
-            .lock()
-            .unwrap_or_else(|poisoned| poisoned.into_inner())
+        self.gl.lock().unwrap_or_else(|poisoned| poisoned.into_inner())
     }
 
     /// The thread this context is current on.
@@ -73,8 +68,7 @@ pub fn make_current(context: Option<Arc<SharedContext>>) -> Result<(), BindError
             _ => *bound = Some(me),
         }
     }
-    let previous =
-        CURRENT.with(|slot| std::mem::replace(&mut slot.borrow_mut().0, context.clone()));
+    let previous = CURRENT.with(|slot| std::mem::replace(&mut slot.borrow_mut().0, context.clone()));
     if let Some(prev) = previous {
         let same = context.as_ref().is_some_and(|c| Arc::ptr_eq(c, &prev));
         if !same {

@@ -47,11 +47,7 @@ pub struct Context {
 
 impl Context {
     pub fn new(config: ContextConfig) -> Context {
-        let buffer = if config.visual.double_buffered {
-            GL_BACK
-        } else {
-            GL_FRONT
-        };
+        let buffer = if config.visual.double_buffered { GL_BACK } else { GL_FRONT };
         Context {
             state: State::new(buffer),
             pixel_store: PixelStoreState::default(),
@@ -96,17 +92,10 @@ impl Context {
     /// viewport and scissor box become the drawable's size.
     pub fn bind_drawable(&mut self, drawable: Option<Arc<Mutex<Drawable>>>) {
         if let Some(d) = &drawable {
-            self.config.visual = *d
-                .lock()
-                .unwrap_or_else(|p| p.into_inner())
-                .framebuffer
-                .config();
+            self.config.visual = *d.lock().unwrap_or_else(|p| p.into_inner()).framebuffer.config();
             if !self.bound_once {
                 let guard = d.lock().unwrap_or_else(|p| p.into_inner());
-                let (w, h) = (
-                    guard.framebuffer.width() as i32,
-                    guard.framebuffer.height() as i32,
-                );
+                let (w, h) = (guard.framebuffer.width() as i32, guard.framebuffer.height() as i32);
                 drop(guard);
                 self.state.viewport.rect = [0, 0, w, h];
                 self.state.scissor.rect = [0, 0, w, h];

@@ -135,12 +135,7 @@ pub struct DepthState {
 
 impl Default for DepthState {
     fn default() -> Self {
-        DepthState {
-            test: false,
-            func: CompareFunc::Less,
-            write_mask: true,
-            clear: 1.0,
-        }
+        DepthState { test: false, func: CompareFunc::Less, write_mask: true, clear: 1.0 }
     }
 }
 
@@ -201,10 +196,7 @@ pub struct ViewportState {
 
 impl Default for ViewportState {
     fn default() -> Self {
-        ViewportState {
-            rect: [0; 4],
-            depth_range: [0.0, 1.0],
-        }
+        ViewportState { rect: [0; 4], depth_range: [0.0, 1.0] }
     }
 }
 
@@ -312,12 +304,7 @@ pub struct MultisampleState {
 
 impl Default for MultisampleState {
     fn default() -> Self {
-        MultisampleState {
-            enabled: true,
-            alpha_to_coverage: false,
-            alpha_to_one: false,
-            coverage: false,
-        }
+        MultisampleState { enabled: true, alpha_to_coverage: false, alpha_to_one: false, coverage: false }
     }
 }
 
@@ -429,9 +416,7 @@ impl State {
             multisample: MultisampleState::default(),
             texture: TextureState::default(),
             eval: EvalState::default(),
-            pixel_mode: PixelModeState {
-                read_buffer: buffer,
-            },
+            pixel_mode: PixelModeState { read_buffer: buffer },
         }
     }
 }

@@ -8,11 +8,7 @@ use crate::api::enums::*;
 use crate::api::types::GLenum;
 
 pub const VENDOR: &str = "tessera project\0";
-pub const RENDERER: &str = concat!(
-    "tessera ",
-    env!("CARGO_PKG_VERSION"),
-    " (software rasterizer)\0"
-);
+pub const RENDERER: &str = concat!("tessera ", env!("CARGO_PKG_VERSION"), " (software rasterizer)\0");
 /// GL_VERSION: 1.1 names the level the state machine targets until the rasterizer and
 /// the rest of GL 1.x land (see the issues); it is never above what works.
 pub const VERSION: &str = concat!("1.1 tessera ", env!("CARGO_PKG_VERSION"), "\0");

@@ -72,8 +72,7 @@ impl DepthStencilFormat {
 
     pub fn stencil_bits(self) -> u32 {
         match self {
-            DepthStencilFormat::Packed24 { stencil: true, .. }
-            | DepthStencilFormat::Depth32 { stencil: true } => 8,
+            DepthStencilFormat::Packed24 { stencil: true, .. } | DepthStencilFormat::Depth32 { stencil: true } => 8,
             _ => 0,
         }
     }

@@ -34,12 +34,7 @@ pub struct Rect {
 impl Rect {
     /// The rectangle at (x, y) of size w × h; negative sizes give an empty rectangle.
     pub fn from_xywh(x: i32, y: i32, w: i32, h: i32) -> Rect {
-        Rect {
-            x0: x,
-            y0: y,
-            x1: x.saturating_add(w.max(0)),
-            y1: y.saturating_add(h.max(0)),
-        }
+        Rect { x0: x, y0: y, x1: x.saturating_add(w.max(0)), y1: y.saturating_add(h.max(0)) }
     }
 
     pub fn intersect(self, other: Rect) -> Rect {
@@ -112,30 +107,15 @@ impl Framebuffer {
     /// Allocates every layer of `config` at `width` × `height`, zero-filled (color black,
     /// depth 0, stencil 0) as a fresh Mesa renderbuffer is. Allocation failure is reported,
     /// never an abort.
-    pub fn new(
-        config: FramebufferConfig,
-        width: usize,
-        height: usize,
-    ) -> Result<Framebuffer, OutOfMemory> {
+    pub fn new(config: FramebufferConfig, width: usize, height: usize) -> Result<Framebuffer, OutOfMemory> {
         let pixels = width.checked_mul(height).ok_or(OutOfMemory)?;
         let mut color = Vec::new();
         for slot in config.color_slots() {
             color.push((slot, ColorBuffer::new(config.color, width, height, pixels)?));
         }
         let depth_stencil = DepthStencilBuffer::new(config.depth_stencil, width, pixels)?;
-        let accum = if config.accum_bits > 0 {
-            Some(AccumBuffer::new(width, pixels)?)
-        } else {
-            None
-        };
-        Ok(Framebuffer {
-            config,
-            width,
-            height,
-            color,
-            depth_stencil,
-            accum,
-        })
+        let accum = if config.accum_bits > 0 { Some(AccumBuffer::new(width, pixels)?) } else { None };
+        Ok(Framebuffer { config, width, height, color, depth_stencil, accum })
     }
 
     pub fn config(&self) -> &FramebufferConfig {
@@ -164,10 +144,7 @@ impl Framebuffer {
     }
 
     pub fn color_mut(&mut self, slot: ColorSlot) -> Option<&mut ColorBuffer> {
-        self.color
-            .iter_mut()
-            .find(|(s, _)| *s == slot)
-            .map(|(_, b)| b)
+        self.color.iter_mut().find(|(s, _)| *s == slot).map(|(_, b)| b)
     }
 
     pub fn depth_stencil(&self) -> &DepthStencilBuffer {
@@ -183,16 +160,9 @@ impl Framebuffer {
     }
 
     /// The accumulation buffer together with one color buffer, for glAccum.
-    pub fn accum_and_color_mut(
-        &mut self,
-        slot: ColorSlot,
-    ) -> Option<(&mut AccumBuffer, &mut ColorBuffer)> {
+    pub fn accum_and_color_mut(&mut self, slot: ColorSlot) -> Option<(&mut AccumBuffer, &mut ColorBuffer)> {
         let accum = self.accum.as_mut()?;
-        let color = self
-            .color
-            .iter_mut()
-            .find(|(s, _)| *s == slot)
-            .map(|(_, b)| b)?;
+        let color = self.color.iter_mut().find(|(s, _)| *s == slot).map(|(_, b)| b)?;
         Some((accum, color))
     }
 

@@ -3,8 +3,7 @@
 //! Rows are stored bottom-up with no padding; pixel (x, y) is at `y * width + x`. Every
 //! allocation goes through [`alloc_filled`] so that running out of memory is an error value.
 use super::format::{
-    depth_to_fixed, float_to_unorm, unorm_max, unorm_to_float, unorm_widen_to_u32, ColorFormat,
-    DepthStencilFormat,
+    depth_to_fixed, float_to_unorm, unorm_max, unorm_to_float, unorm_widen_to_u32, ColorFormat, DepthStencilFormat,
 };
 use super::{OutOfMemory, Rect};
 
@@ -48,33 +47,21 @@ fn pack565(r: u32, g: u32, b: u32) -> u16 {
 }
 
 impl ColorBuffer {
-    pub(super) fn new(
-        format: ColorFormat,
-        width: usize,
-        _height: usize,
-        pixels: usize,
-    ) -> Result<Self, OutOfMemory> {
+    pub(super) fn new(format: ColorFormat, width: usize, _height: usize, pixels: usize) -> Result<Self, OutOfMemory> {
         // A fresh buffer is black; formats without alpha keep alpha at its maximum.
         let pixels = match format {
-            ColorFormat::Unorm8 { alpha } => ColorPixels::Unorm8(alloc_filled(
-                pixels,
-                [0, 0, 0, if alpha { 0 } else { 255 }],
-            )?),
+            ColorFormat::Unorm8 { alpha } => {
+                ColorPixels::Unorm8(alloc_filled(pixels, [0, 0, 0, if alpha { 0 } else { 255 }])?)
+            }
             ColorFormat::Rgb565 => ColorPixels::Rgb565(alloc_filled(pixels, 0)?),
-            ColorFormat::Unorm16 { alpha } => ColorPixels::Unorm16(alloc_filled(
-                pixels,
-                [0, 0, 0, if alpha { 0 } else { 65535 }],
-            )?),
-            ColorFormat::Float32 { alpha } => ColorPixels::Float32(alloc_filled(
-                pixels,
-                [0.0, 0.0, 0.0, if alpha { 0.0 } else { 1.0 }],
-            )?),
+            ColorFormat::Unorm16 { alpha } => {
+                ColorPixels::Unorm16(alloc_filled(pixels, [0, 0, 0, if alpha { 0 } else { 65535 }])?)
+            }
+            ColorFormat::Float32 { alpha } => {
+                ColorPixels::Float32(alloc_filled(pixels, [0.0, 0.0, 0.0, if alpha { 0.0 } else { 1.0 }])?)
+            }
         };
-        Ok(ColorBuffer {
-            format,
-            width,
-            pixels,
-        })
+        Ok(ColorBuffer { format, width, pixels })
     }
 
     pub fn format(&self) -> ColorFormat {
@@ -109,11 +96,8 @@ impl ColorBuffer {
             }
             ColorPixels::Float32(px) => fill_masked(px, width, rect, color, mask),
             ColorPixels::Rgb565(px) => {
-                let value = pack565(
-                    float_to_unorm(color[0], 5),
-                    float_to_unorm(color[1], 6),
-                    float_to_unorm(color[2], 5),
-                );
+                let value =
+                    pack565(float_to_unorm(color[0], 5), float_to_unorm(color[1], 6), float_to_unorm(color[2], 5));
                 let keep: u16 = (if mask[0] { 0 } else { 0xf800 })
                     | (if mask[1] { 0 } else { 0x07e0 })
                     | (if mask[2] { 0 } else { 0x001f });
@@ -130,25 +114,12 @@ impl ColorBuffer {
     pub fn read_row_f32(&self, y: i32, x0: i32, x1: i32, out: &mut Vec<[f32; 4]>) {
         let range = span(self.width, y, x0, x1);
         match &self.pixels {
-            ColorPixels::Unorm8(px) => out.extend(
-                px[range]
-                    .iter()
-                    .map(|p| p.map(|c| unorm_to_float(c as u32, 8))),
-            ),
-            ColorPixels::Unorm16(px) => out.extend(
-                px[range]
-                    .iter()
-                    .map(|p| p.map(|c| unorm_to_float(c as u32, 16))),
-            ),
+            ColorPixels::Unorm8(px) => out.extend(px[range].iter().map(|p| p.map(|c| unorm_to_float(c as u32, 8)))),
+            ColorPixels::Unorm16(px) => out.extend(px[range].iter().map(|p| p.map(|c| unorm_to_float(c as u32, 16)))),
             ColorPixels::Float32(px) => out.extend_from_slice(&px[range]),
             ColorPixels::Rgb565(px) => out.extend(px[range].iter().map(|&p| {
                 let p = p as u32;
-                [
-                    unorm_to_float(p >> 11, 5),
-                    unorm_to_float((p >> 5) & 63, 6),
-                    unorm_to_float(p & 31, 5),
-                    1.0,
-                ]
+                [unorm_to_float(p >> 11, 5), unorm_to_float((p >> 5) & 63, 6), unorm_to_float(p & 31, 5), 1.0]
             })),
         }
     }
@@ -160,25 +131,13 @@ impl ColorBuffer {
 
     /// Reads pixels `[x0, x1)` of row `y` as unorm values widened to 32 bits by replication;
     /// `None` for float formats.
-    pub fn read_row_unorm32(
-        &self,
-        y: i32,
-        x0: i32,
-        x1: i32,
-        out: &mut Vec<[u32; 4]>,
-    ) -> Option<()> {
+    pub fn read_row_unorm32(&self, y: i32, x0: i32, x1: i32, out: &mut Vec<[u32; 4]>) -> Option<()> {
         let range = span(self.width, y, x0, x1);
         match &self.pixels {
-            ColorPixels::Unorm8(px) => out.extend(
-                px[range]
-                    .iter()
-                    .map(|p| p.map(|c| unorm_widen_to_u32(c as u32, 8))),
-            ),
-            ColorPixels::Unorm16(px) => out.extend(
-                px[range]
-                    .iter()
-                    .map(|p| p.map(|c| unorm_widen_to_u32(c as u32, 16))),
-            ),
+            ColorPixels::Unorm8(px) => out.extend(px[range].iter().map(|p| p.map(|c| unorm_widen_to_u32(c as u32, 8)))),
+            ColorPixels::Unorm16(px) => {
+                out.extend(px[range].iter().map(|p| p.map(|c| unorm_widen_to_u32(c as u32, 16))))
+            }
             ColorPixels::Rgb565(px) => out.extend(px[range].iter().map(|&p| {
                 let p = p as u32;
                 [
@@ -197,12 +156,7 @@ impl ColorBuffer {
     /// fixed-point) and honouring the channel `mask`.
     pub fn write_row_f32(&mut self, y: i32, x0: i32, values: &[[f32; 4]], mask: [bool; 4]) {
         let range = span(self.width, y, x0, x0 + values.len() as i32);
-        let mask = [
-            mask[0],
-            mask[1],
-            mask[2],
-            mask[3] && self.format.has_alpha(),
-        ];
+        let mask = [mask[0], mask[1], mask[2], mask[3] && self.format.has_alpha()];
         match &mut self.pixels {
             ColorPixels::Unorm8(px) => {
                 for (p, v) in px[range].iter_mut().zip(values) {
@@ -234,21 +188,9 @@ impl ColorBuffer {
             ColorPixels::Rgb565(px) => {
                 for (p, v) in px[range].iter_mut().zip(values) {
                     let old = *p as u32;
-                    let r = if mask[0] {
-                        float_to_unorm(v[0], 5)
-                    } else {
-                        old >> 11
-                    };
-                    let g = if mask[1] {
-                        float_to_unorm(v[1], 6)
-                    } else {
-                        (old >> 5) & 63
-                    };
-                    let b = if mask[2] {
-                        float_to_unorm(v[2], 5)
-                    } else {
-                        old & 31
-                    };
+                    let r = if mask[0] { float_to_unorm(v[0], 5) } else { old >> 11 };
+                    let g = if mask[1] { float_to_unorm(v[1], 6) } else { (old >> 5) & 63 };
+                    let b = if mask[2] { float_to_unorm(v[2], 5) } else { old & 31 };
                     *p = pack565(r, g, b);
                 }
             }
@@ -257,13 +199,7 @@ impl ColorBuffer {
 }
 
 /// Fills `rect` of a 4-channel buffer with `value`, channel-masked.
-fn fill_masked<T: Copy>(
-    px: &mut [[T; 4]],
-    width: usize,
-    rect: Rect,
-    value: [T; 4],
-    mask: [bool; 4],
-) {
+fn fill_masked<T: Copy>(px: &mut [[T; 4]], width: usize, rect: Rect, value: [T; 4], mask: [bool; 4]) {
     let all = mask.iter().all(|&m| m);
     for y in rect.y0..rect.y1 {
         let row = &mut px[span(width, y, rect.x0, rect.x1)];
@@ -301,31 +237,17 @@ pub struct DepthStencilBuffer {
 }
 
 impl DepthStencilBuffer {
-    pub(super) fn new(
-        format: DepthStencilFormat,
-        width: usize,
-        pixels: usize,
-    ) -> Result<Self, OutOfMemory> {
+    pub(super) fn new(format: DepthStencilFormat, width: usize, pixels: usize) -> Result<Self, OutOfMemory> {
         let storage = match format {
             DepthStencilFormat::None => DepthStencilPixels::None,
             DepthStencilFormat::Depth16 => DepthStencilPixels::Depth16(alloc_filled(pixels, 0)?),
-            DepthStencilFormat::Packed24 { .. } => {
-                DepthStencilPixels::Packed24(alloc_filled(pixels, 0)?)
-            }
+            DepthStencilFormat::Packed24 { .. } => DepthStencilPixels::Packed24(alloc_filled(pixels, 0)?),
             DepthStencilFormat::Depth32 { stencil } => DepthStencilPixels::Depth32(
                 alloc_filled(pixels, 0)?,
-                if stencil {
-                    Some(alloc_filled(pixels, 0)?)
-                } else {
-                    None
-                },
+                if stencil { Some(alloc_filled(pixels, 0)?) } else { None },
             ),
         };
-        Ok(DepthStencilBuffer {
-            format,
-            width,
-            pixels: storage,
-        })
+        Ok(DepthStencilBuffer { format, width, pixels: storage })
     }
 
     pub fn format(&self) -> DepthStencilFormat {
@@ -434,10 +356,7 @@ pub struct AccumBuffer {
 
 impl AccumBuffer {
     pub(super) fn new(width: usize, pixels: usize) -> Result<Self, OutOfMemory> {
-        Ok(AccumBuffer {
-            width,
-            pixels: alloc_filled(pixels, [0; 4])?,
-        })
+        Ok(AccumBuffer { width, pixels: alloc_filled(pixels, [0; 4])? })
     }
 
     pub fn width(&self) -> usize {

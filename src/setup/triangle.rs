@@ -48,12 +48,7 @@ impl Edge {
         // Counter-clockwise with y up: a left edge goes down (dy < 0); a bottom edge is
         // horizontal and goes right (dy == 0, dx > 0).
         let owns_centres = dy < 0 || (dy == 0 && dx > 0);
-        Edge {
-            a,
-            b,
-            c,
-            bias: if owns_centres { 0 } else { 1 },
-        }
+        Edge { a, b, c, bias: if owns_centres { 0 } else { 1 } }
     }
 
     /// Whether the fixed-point point (x, y) is inside this edge.
@@ -100,8 +95,7 @@ impl TriangleSetup {
     /// for a degenerate (zero-area) triangle, which covers no pixel.
     pub fn new(window: [[f32; 2]; 3]) -> Option<TriangleSetup> {
         let mut v = window.map(|p| [to_fixed(p[0]), to_fixed(p[1])]);
-        let area2 =
-            (v[1][0] - v[0][0]) * (v[2][1] - v[0][1]) - (v[2][0] - v[0][0]) * (v[1][1] - v[0][1]);
+        let area2 = (v[1][0] - v[0][0]) * (v[2][1] - v[0][1]) - (v[2][0] - v[0][0]) * (v[1][1] - v[0][1]);
         if area2 == 0 {
             return None;
         }
@@ -109,11 +103,7 @@ impl TriangleSetup {
         if was_clockwise {
             v.swap(1, 2);
         }
-        let edges = [
-            Edge::new(v[0], v[1]),
-            Edge::new(v[1], v[2]),
-            Edge::new(v[2], v[0]),
-        ];
+        let edges = [Edge::new(v[0], v[1]), Edge::new(v[1], v[2]), Edge::new(v[2], v[0])];
         let xs = v.map(|p| p[0]);
         let ys = v.map(|p| p[1]);
         // Pixel x is covered only if its centre x·256+128 lies within [min, max].
@@ -189,8 +179,7 @@ mod tests {
     fn spans_equal_the_per_pixel_test() {
         let mut seed = 0x9e3779b97f4a7c15;
         for _ in 0..300 {
-            let v =
-                [0, 1, 2].map(|_| [coords(&mut seed, 40.0) - 5.0, coords(&mut seed, 40.0) - 5.0]);
+            let v = [0, 1, 2].map(|_| [coords(&mut seed, 40.0) - 5.0, coords(&mut seed, 40.0) - 5.0]);
             if let Some(t) = TriangleSetup::new(v) {
                 assert_spans_match_pixels(&t);
             }
@@ -245,17 +234,7 @@ mod tests {
         // Mesa 22 llvmpipe draws this triangle as rows y0: x0..3, y1: x1..3, y2: x2..3, y3: x3.
         let t = TriangleSetup::new([[0.5, 0.5], [4.5, 0.5], [4.5, 4.5]]).unwrap();
         let spans: Vec<_> = (0..6).map(|y| t.row_span(y, 0, 8)).collect();
-        assert_eq!(
-            spans,
-            vec![
-                Some((0, 4)),
-                Some((1, 4)),
-                Some((2, 4)),
-                Some((3, 4)),
-                None,
-                None
-            ]
-        );
+        assert_eq!(spans, vec![Some((0, 4)), Some((1, 4)), Some((2, 4)), Some((3, 4)), None, None]);
     }
 
     #[test]

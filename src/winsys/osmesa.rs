@@ -13,8 +13,7 @@ use crate::context::{Context, ContextConfig};
 use crate::framebuffer::external::CallerBuffer;
 use crate::framebuffer::surface::{ColorPixels, DepthStencilPixels};
 use crate::framebuffer::{
-    ColorFormat, ColorSlot, DepthStencilFormat, Drawable, Framebuffer, FramebufferConfig,
-    OutOfMemory, Present,
+    ColorFormat, ColorSlot, DepthStencilFormat, Drawable, Framebuffer, FramebufferConfig, OutOfMemory, Present,
 };
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex, MutexGuard, OnceLock};
@@ -116,15 +115,9 @@ impl Request {
         let (d, s) = (self.depth_bits, self.stencil_bits);
         match (d, s > 0) {
             (0, false) => DepthStencilFormat::None,
-            (0, true) => DepthStencilFormat::Packed24 {
-                depth: false,
-                stencil: true,
-            },
+            (0, true) => DepthStencilFormat::Packed24 { depth: false, stencil: true },
             (1..=16, false) => DepthStencilFormat::Depth16,
-            (1..=24, _) => DepthStencilFormat::Packed24 {
-                depth: true,
-                stencil: s > 0,
-            },
+            (1..=24, _) => DepthStencilFormat::Packed24 { depth: true, stencil: s > 0 },
             (_, stencil) => DepthStencilFormat::Depth32 { stencil },
         }
     }
@@ -246,11 +239,7 @@ impl OsMesaContext {
         if width < 1 || height < 1 || width > MAX_VIEWPORT_DIM || height > MAX_VIEWPORT_DIM {
             return Err(BindFailure::BadArguments);
         }
-        let color = self
-            .request
-            .layout
-            .color_format(ty)
-            .ok_or(BindFailure::BadArguments)?;
+        let color = self.request.layout.color_format(ty).ok_or(BindFailure::BadArguments)?;
         if let Some(owner) = self.shared.bound_thread() {
             if owner != std::thread::current().id() {
                 return Err(BindFailure::CurrentElsewhere);
@@ -259,44 +248,23 @@ impl OsMesaContext {
         let (width, height) = (width as usize, height as usize);
         let (row_length, y_up) = self.store();
         let presenter_address = buffer.as_ptr() as usize;
-        let presenter = Box::new(CallerPresenter {
-            buffer,
-            layout: self.request.layout,
-            ty,
-            row_length,
-            y_up,
-        });
+        let presenter = Box::new(CallerPresenter { buffer, layout: self.request.layout, ty, row_length, y_up });
         let mut binding = self.lock_binding();
-        let reuse = binding
-            .as_ref()
-            .filter(|b| b.ty == ty && b.width == width && b.height == height);
+        let reuse = binding.as_ref().filter(|b| b.ty == ty && b.width == width && b.height == height);
         let drawable = match reuse {
             Some(b) => {
-                b.drawable
-                    .lock()
-                    .unwrap_or_else(|p| p.into_inner())
-                    .presenter = Some(presenter);
+                b.drawable.lock().unwrap_or_else(|p| p.into_inner()).presenter = Some(presenter);
                 b.drawable.clone()
             }
             None => {
                 let framebuffer = Framebuffer::new(self.request.config(color), width, height)
                     .map_err(|OutOfMemory| BindFailure::OutOfMemory)?;
-                Arc::new(Mutex::new(Drawable {
-                    framebuffer,
-                    presenter: Some(presenter),
-                }))
+                Arc::new(Mutex::new(Drawable { framebuffer, presenter: Some(presenter) }))
             }
         };
-        *binding = Some(Binding {
-            address: presenter_address,
-            ty,
-            width,
-            height,
-            drawable: drawable.clone(),
-        });
+        *binding = Some(Binding { address: presenter_address, ty, width, height, drawable: drawable.clone() });
         drop(binding);
-        current::make_current(Some(self.shared.clone()))
-            .map_err(|_| BindFailure::CurrentElsewhere)?;
+        current::make_current(Some(self.shared.clone())).map_err(|_| BindFailure::CurrentElsewhere)?;
         self.shared.lock().bind_drawable(Some(drawable));
         Ok(())
     }
@@ -320,8 +288,7 @@ impl OsMesaContext {
             *store
         };
         if let Some(b) = self.lock_binding().as_ref() {
-            let bytes =
-                row_length.max(b.width) * b.height * self.request.layout.bytes_per_pixel(b.ty);
+            let bytes = row_length.max(b.width) * b.height * self.request.layout.bytes_per_pixel(b.ty);
             let presenter = CallerPresenter {
                 buffer: wrap(b.address as *mut u8, bytes),
                 layout: self.request.layout,
@@ -329,10 +296,7 @@ impl OsMesaContext {
                 row_length,
                 y_up,
             };
-            b.drawable
-                .lock()
-                .unwrap_or_else(|p| p.into_inner())
-                .presenter = Some(Box::new(presenter));
+            b.drawable.lock().unwrap_or_else(|p| p.into_inner()).presenter = Some(Box::new(presenter));
         }
     }
 
@@ -344,9 +308,7 @@ impl OsMesaContext {
 
     /// OSMesaGetIntegerv values of the bound buffer: (width, height, type); zeros if unbound.
     pub fn bound_size(&self) -> (usize, usize, GLenum) {
-        self.lock_binding()
-            .as_ref()
-            .map_or((0, 0, 0), |b| (b.width, b.height, b.ty))
+        self.lock_binding().as_ref().map_or((0, 0, 0), |b| (b.width, b.height, b.ty))
     }
 
     /// OSMESA_ROW_LENGTH and OSMESA_Y_UP as set.
@@ -358,10 +320,7 @@ impl OsMesaContext {
     pub fn color_buffer(&self) -> Option<(usize, usize, usize)> {
         let binding = self.lock_binding();
         let b = binding.as_ref()?;
-        b.drawable
-            .lock()
-            .unwrap_or_else(|p| p.into_inner())
-            .present();
+        b.drawable.lock().unwrap_or_else(|p| p.into_inner()).present();
         Some((b.address, b.width, b.height))
     }
 
@@ -394,10 +353,7 @@ impl OsMesaContext {
 /// it is looked up here, never dereferenced, so a stale or forged handle is harmless.
 fn registry() -> MutexGuard<'static, HashMap<usize, Arc<OsMesaContext>>> {
     static REGISTRY: OnceLock<Mutex<HashMap<usize, Arc<OsMesaContext>>>> = OnceLock::new();
-    REGISTRY
-        .get_or_init(|| Mutex::new(HashMap::new()))
-        .lock()
-        .unwrap_or_else(|p| p.into_inner())
+    REGISTRY.get_or_init(|| Mutex::new(HashMap::new())).lock().unwrap_or_else(|p| p.into_inner())
 }
 
 /// OSMesaCreateContextExt / Attribs after argument checks: registers a new context and
@@ -410,13 +366,8 @@ pub fn create(request: Request, share: Option<usize>) -> Option<usize> {
         lookup(handle)?;
     }
     // The color format is decided by the type given at MakeCurrent; RGBA8 until then.
-    let placeholder = request
-        .layout
-        .color_format(GL_UNSIGNED_BYTE)
-        .unwrap_or(ColorFormat::Rgb565);
-    let context = Context::new(ContextConfig {
-        visual: request.config(placeholder),
-    });
+    let placeholder = request.layout.color_format(GL_UNSIGNED_BYTE).unwrap_or(ColorFormat::Rgb565);
+    let context = Context::new(ContextConfig { visual: request.config(placeholder) });
     let osmesa = Arc::new(OsMesaContext {
         shared: SharedContext::new(context),
         request,
@@ -436,10 +387,7 @@ pub fn lookup(handle: usize) -> Option<Arc<OsMesaContext>> {
 /// The handle of the OSMesa context current on this thread.
 pub fn current_handle() -> Option<usize> {
     let shared = current::current()?;
-    registry()
-        .iter()
-        .find(|(_, c)| Arc::ptr_eq(&c.shared, &shared))
-        .map(|(h, _)| *h)
+    registry().iter().find(|(_, c)| Arc::ptr_eq(&c.shared, &shared)).map(|(h, _)| *h)
 }
 
 /// The OSMesa context current on this thread.
