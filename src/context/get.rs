@@ -305,3 +305,232 @@ impl Context {
         Some(self.query(pname)?.into_iter().map(Value::to_double).collect())
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::context::state::CompareFunc;
+    use crate::context::ContextConfig;
+    use crate::framebuffer::{ColorFormat, DepthStencilFormat, FramebufferConfig};
+
+    fn context(color: ColorFormat) -> Context {
+        let visual = FramebufferConfig {
+            color,
+            double_buffered: false,
+            stereo: false,
+            aux_buffers: 0,
+            depth_stencil: DepthStencilFormat::Packed24 { depth: true, stencil: true },
+            accum_bits: 16,
+        };
+        Context::new(ContextConfig { visual })
+    }
+
+    fn rgba8() -> Context {
+        context(ColorFormat::Unorm8 { alpha: true })
+    }
+
+    #[test]
+    fn normalized_values_map_onto_the_integer_range_by_truncation() {
+        // Measured on Mesa 22: glClearColor(0.5, 0.1, -1, 2) reads back these integers.
+        assert_eq!(Value::NormFloat(0.5).to_integer(), 1073741823);
+        assert_eq!(Value::NormFloat(0.1).to_integer(), 214748367);
+        assert_eq!(Value::NormFloat(1.0).to_integer(), 2147483647);
+        assert_eq!(Value::NormFloat(-1.0).to_integer(), -2147483647);
+        assert_eq!(Value::NormFloat(0.25).to_integer(), 536870911);
+        assert_eq!(Value::NormFloat(-0.5).to_integer(), -1073741823);
+        assert_eq!(Value::NormFloat(0.0).to_integer(), 0);
+        // Out of range and NaN: saturation and 0 (Mesa 22 gives -2^31 for all three).
+        assert_eq!(Value::NormFloat(2.0).to_integer(), i32::MAX);
+        assert_eq!(Value::NormFloat(-3.0).to_integer(), i32::MIN);
+        assert_eq!(Value::NormFloat(f32::NAN).to_integer(), 0);
+        // Doubles keep their precision: 0.3 is not 0.3f.
+        assert_eq!(Value::NormDouble(0.3).to_integer(), 644245094);
+        assert_eq!(Value::NormDouble(0.3f32 as f64).to_integer(), 644245119);
+        assert_eq!(Value::NormDouble(0.3).to_float(), 0.3f32);
+        assert_eq!(Value::NormDouble(0.3).to_double(), 0.3);
+        assert_eq!(Value::NormFloat(0.1).to_double(), 0.10000000149011612);
+    }
+
+    #[test]
+    fn floats_round_half_away_from_zero_as_integers() {
+        assert_eq!(Value::Float(2.5).to_integer(), 3);
+        assert_eq!(Value::Float(-2.5).to_integer(), -3);
+        assert_eq!(Value::Float(2.4999998).to_integer(), 2);
+        assert_eq!(Value::Float(0.49999997).to_integer(), 0);
+        assert_eq!(Value::Float(-0.4).to_integer(), 0);
+        assert_eq!(Value::Float(1e10).to_integer(), i32::MAX);
+        assert_eq!(Value::Float(-1e10).to_integer(), i32::MIN);
+        assert_eq!(Value::Float(16384.0).to_double(), 16384.0);
+    }
+
+    #[test]
+    fn booleans_and_numbers_convert_both_ways() {
+        for v in [Value::Bool(true), Value::Int(-1), Value::Uint(1), Value::Enum(GL_FIXED_ONLY), Value::Float(f32::NAN)]
+        {
+            assert_eq!(v.to_boolean(), GL_TRUE, "{v:?}");
+        }
+        for v in [Value::Bool(false), Value::Int(0), Value::Uint(0), Value::Float(-0.0), Value::NormDouble(0.0)] {
+            assert_eq!(v.to_boolean(), GL_FALSE, "{v:?}");
+        }
+        assert_eq!(Value::NormFloat(1e-30).to_boolean(), GL_TRUE);
+        assert_eq!(Value::Bool(true).to_integer(), 1);
+        assert_eq!(Value::Bool(true).to_float(), 1.0);
+        assert_eq!(Value::Bool(false).to_double(), 0.0);
+        assert_eq!(Value::Enum(GL_FIXED_ONLY).to_integer(), 35101);
+        assert_eq!(Value::Enum(GL_FIXED_ONLY).to_float(), 35101.0);
+        assert_eq!(Value::Int(-7).to_float(), -7.0);
+        assert_eq!(Value::Int(i32::MAX).to_float(), 2147483648.0);
+        assert_eq!(Value::Int(-1).to_double(), -1.0);
+    }
+
+    #[test]
+    fn unsigned_values_saturate_as_integers_only() {
+        // Measured on Mesa 22 after glStencilMaskSeparate(GL_BACK, 0x80000001).
+        let mask = Value::Uint(0x8000_0001);
+        assert_eq!(mask.to_integer(), 2147483647);
+        assert_eq!(mask.to_float(), 2147483648.0);
+        assert_eq!(mask.to_double(), 2147483649.0);
+        assert_eq!(Value::Uint(255).to_integer(), 255);
+        assert_eq!(Value::Uint(u32::MAX).to_double(), 4294967295.0);
+    }
+
+    #[test]
+    fn clear_index_is_mesa_s_truncated_unsigned() {
+        assert_eq!(clear_index_value(3.7), 3);
+        assert_eq!(clear_index_value(-2.5), -2);
+        assert_eq!(clear_index_value(5e9), 705032704);
+        assert_eq!(clear_index_value(f32::NAN), 0);
+        assert_eq!(clear_index_value(1e30), 0);
+    }
+
+    #[test]
+    fn clear_color_is_clamped_for_fixed_point_buffers_only() {
+        let mut ctx = rgba8();
+        ctx.clear_color([0.5, 0.1, -1.0, 2.0]);
+        assert_eq!(ctx.get_integers(GL_COLOR_CLEAR_VALUE), Some(vec![1073741823, 214748367, 0, 2147483647]));
+        assert_eq!(ctx.get_floats(GL_COLOR_CLEAR_VALUE), Some(vec![0.5, 0.1, 0.0, 1.0]));
+        assert_eq!(ctx.get_booleans(GL_COLOR_CLEAR_VALUE), Some(vec![GL_TRUE, GL_TRUE, GL_FALSE, GL_TRUE]));
+        ctx.clamp_color(GL_CLAMP_FRAGMENT_COLOR, GL_FALSE as GLenum);
+        assert_eq!(ctx.get_floats(GL_COLOR_CLEAR_VALUE), Some(vec![0.5, 0.1, -1.0, 2.0]));
+        assert_eq!(ctx.get_doubles(GL_COLOR_CLEAR_VALUE), Some(vec![0.5, 0.1f32 as f64, -1.0, 2.0]));
+
+        let mut float = context(ColorFormat::Float32 { alpha: true });
+        float.clear_color([0.5, 0.1, -1.0, 2.0]);
+        assert_eq!(float.get_floats(GL_COLOR_CLEAR_VALUE), Some(vec![0.5, 0.1, -1.0, 2.0]));
+        float.clamp_color(GL_CLAMP_FRAGMENT_COLOR, GL_TRUE as GLenum);
+        assert_eq!(float.get_floats(GL_COLOR_CLEAR_VALUE), Some(vec![0.5, 0.1, 0.0, 1.0]));
+        assert_eq!(float.take_error(), GL_NO_ERROR);
+    }
+
+    #[test]
+    fn blend_color_and_alpha_reference_clamp_like_the_clear_color() {
+        let mut ctx = rgba8();
+        ctx.state.color.blend_color = [0.5, -1.0, 2.0, 0.25];
+        ctx.state.color.alpha_ref = 2.0;
+        assert_eq!(ctx.get_integers(GL_BLEND_COLOR), Some(vec![1073741823, 0, 2147483647, 536870911]));
+        assert_eq!(ctx.get_floats(GL_ALPHA_TEST_REF), Some(vec![1.0]));
+        ctx.clamp_color(GL_CLAMP_FRAGMENT_COLOR, GL_FALSE as GLenum);
+        assert_eq!(ctx.get_floats(GL_BLEND_COLOR), Some(vec![0.5, -1.0, 2.0, 0.25]));
+        assert_eq!(ctx.get_doubles(GL_ALPHA_TEST_REF), Some(vec![2.0]));
+    }
+
+    #[test]
+    fn stencil_queries_follow_the_active_face_and_clamp_the_reference() {
+        let mut ctx = rgba8();
+        ctx.state.stencil.front.func = CompareFunc::Less;
+        ctx.state.stencil.front.reference = 300;
+        ctx.state.stencil.back.func = CompareFunc::Equal;
+        ctx.state.stencil.back.reference = -3;
+        ctx.state.stencil.back.fail = GL_INCR_WRAP;
+        assert_eq!(ctx.get_integers(GL_STENCIL_FUNC), Some(vec![GL_LESS as i32]));
+        assert_eq!(ctx.get_integers(GL_STENCIL_REF), Some(vec![255]));
+        assert_eq!(ctx.get_integers(GL_STENCIL_BACK_REF), Some(vec![0]));
+        assert_eq!(ctx.get_integers(GL_STENCIL_VALUE_MASK), Some(vec![i32::MAX]));
+        assert_eq!(ctx.get_doubles(GL_STENCIL_WRITEMASK), Some(vec![4294967295.0]));
+        assert_eq!(ctx.get_integers(GL_ACTIVE_STENCIL_FACE_EXT), Some(vec![GL_FRONT as i32]));
+        ctx.state.stencil.active_face_back = true;
+        assert_eq!(ctx.get_integers(GL_ACTIVE_STENCIL_FACE_EXT), Some(vec![GL_BACK as i32]));
+        assert_eq!(ctx.get_integers(GL_STENCIL_FUNC), Some(vec![GL_EQUAL as i32]));
+        assert_eq!(ctx.get_integers(GL_STENCIL_FAIL), Some(vec![GL_INCR_WRAP as i32]));
+        assert_eq!(ctx.get_integers(GL_STENCIL_BACK_FAIL), Some(vec![GL_INCR_WRAP as i32]));
+    }
+
+    #[test]
+    fn every_capability_reads_back_its_enable() {
+        let mut ctx = rgba8();
+        for &cap in capabilities::CAPABILITIES {
+            let initial = matches!(cap, GL_DITHER | GL_MULTISAMPLE);
+            assert_eq!(ctx.get_integers(cap), Some(vec![initial as i32]), "{cap:#x}");
+            ctx.set_capability(cap, !initial);
+            assert_eq!(ctx.get_booleans(cap), Some(vec![(!initial) as GLboolean]), "{cap:#x}");
+        }
+        assert_eq!(ctx.take_error(), GL_NO_ERROR);
+    }
+
+    #[test]
+    fn texture_queries_follow_the_active_unit() {
+        let mut ctx = rgba8();
+        ctx.state.texture.active_unit = 2;
+        ctx.set_capability(GL_TEXTURE_2D, true);
+        assert_eq!(ctx.get_integers(GL_ACTIVE_TEXTURE), Some(vec![GL_TEXTURE0 as i32 + 2]));
+        assert_eq!(ctx.get_integers(GL_TEXTURE_2D), Some(vec![1]));
+        ctx.state.texture.active_unit = 1;
+        assert_eq!(ctx.get_integers(GL_TEXTURE_2D), Some(vec![0]));
+    }
+
+    #[test]
+    fn framebuffer_limits_and_buffers() {
+        let mut ctx = context(ColorFormat::Rgb565);
+        let int = |ctx: &mut Context, pname| ctx.get_integers(pname).unwrap();
+        assert_eq!(int(&mut ctx, GL_RED_BITS), [5]);
+        assert_eq!(int(&mut ctx, GL_GREEN_BITS), [6]);
+        assert_eq!(int(&mut ctx, GL_ALPHA_BITS), [0]);
+        assert_eq!(int(&mut ctx, GL_DEPTH_BITS), [24]);
+        assert_eq!(int(&mut ctx, GL_STENCIL_BITS), [8]);
+        assert_eq!(int(&mut ctx, GL_ACCUM_ALPHA_BITS), [16]);
+        assert_eq!(int(&mut ctx, GL_MAX_VIEWPORT_DIMS), [16384, 16384]);
+        assert_eq!(int(&mut ctx, GL_MAX_CLIP_PLANES), [6]);
+        assert_eq!(int(&mut ctx, GL_MAX_TEXTURE_UNITS), [4]);
+        assert_eq!(int(&mut ctx, GL_DRAW_BUFFER), [GL_FRONT as i32]);
+        assert_eq!(int(&mut ctx, GL_DRAW_BUFFER7), [GL_NONE as i32]);
+        ctx.draw_buffer(GL_FRONT_LEFT);
+        assert_eq!(int(&mut ctx, GL_DRAW_BUFFER0), [GL_FRONT_LEFT as i32]);
+        ctx.push_attrib(0);
+        ctx.push_client_attrib(0);
+        ctx.push_client_attrib(0);
+        assert_eq!(int(&mut ctx, GL_ATTRIB_STACK_DEPTH), [1]);
+        assert_eq!(int(&mut ctx, GL_CLIENT_ATTRIB_STACK_DEPTH), [2]);
+        ctx.pixel_store.unpack.alignment = 2;
+        ctx.pixel_store.pack.swap_bytes = true;
+        assert_eq!(int(&mut ctx, GL_UNPACK_ALIGNMENT), [2]);
+        assert_eq!(int(&mut ctx, GL_PACK_ALIGNMENT), [4]);
+        assert_eq!(ctx.get_booleans(GL_PACK_SWAP_BYTES), Some(vec![GL_TRUE]));
+        ctx.viewport(1, 2, 3, 4);
+        ctx.depth_range(0.1, 0.7);
+        assert_eq!(ctx.get_doubles(GL_VIEWPORT), Some(vec![1.0, 2.0, 3.0, 4.0]));
+        assert_eq!(ctx.get_doubles(GL_DEPTH_RANGE), Some(vec![0.1, 0.7]));
+        assert_eq!(int(&mut ctx, GL_DEPTH_RANGE), [214748364, 1503238552]);
+        assert_eq!(ctx.take_error(), GL_NO_ERROR);
+    }
+
+    #[test]
+    fn unknown_pnames_are_invalid_enum_and_return_nothing() {
+        let mut ctx = rgba8();
+        for pname in [0, GL_RGBA, 0xdead, GL_DRAW_BUFFER8, GL_MAJOR_VERSION, GL_TEXTURE_2D + 1] {
+            assert_eq!(ctx.get_booleans(pname), None);
+            assert_eq!(ctx.take_error(), GL_INVALID_ENUM);
+            assert_eq!(ctx.get_doubles(pname), None);
+            assert_eq!(ctx.take_error(), GL_INVALID_ENUM);
+        }
+    }
+
+    #[test]
+    fn queries_between_begin_and_end_are_invalid_operation() {
+        let mut ctx = rgba8();
+        ctx.inside_begin_end = true;
+        assert_eq!(ctx.get_integers(GL_DEPTH_FUNC), None);
+        assert_eq!(ctx.take_error(), GL_INVALID_OPERATION);
+        assert_eq!(ctx.get_floats(0xdead), None);
+        assert_eq!(ctx.take_error(), GL_INVALID_OPERATION);
+    }
+}
