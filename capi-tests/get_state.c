@@ -215,7 +215,6 @@ static void check_defaults(void)
         { GL_DOUBLEBUFFER, 0, "doublebuffer" }, { GL_RGBA_MODE, 1, "rgba mode" }, { GL_INDEX_MODE, 0, "index" },
         { GL_MAX_ATTRIB_STACK_DEPTH, 16, "max stack" }, { GL_MAX_CLIENT_ATTRIB_STACK_DEPTH, 16, "max client" },
         { GL_MAX_DRAW_BUFFERS, 8, "max draw buffers" }, { GL_MAX_LIGHTS, 8, "max lights" },
-        { GL_SUBPIXEL_BITS, 8, "subpixel bits" },
     };
     for (int n = 0; n < COUNT(ints); n++) {
         GLint v = get_int(ints[n].pname);
@@ -249,6 +248,7 @@ static void check_defaults(void)
     /* Implementation limits where tessera and llvmpipe differ: at least the spec's minimum. */
     capi_check(get_int(GL_MAX_CLIP_PLANES) >= 6, "GL_MAX_CLIP_PLANES");
     capi_check(get_int(GL_MAX_TEXTURE_UNITS) >= 2, "GL_MAX_TEXTURE_UNITS");
+    capi_check(get_int(GL_SUBPIXEL_BITS) >= 4, "GL_SUBPIXEL_BITS (softpipe has 4, llvmpipe and tessera 8)");
 
     for (int n = 0; n < COUNT(capabilities); n++) {
         GLenum cap = capabilities[n].pname;
