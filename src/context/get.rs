@@ -15,7 +15,9 @@
 //! Deliberate deviations from Mesa 22, where its answer is an accident of C on x86:
 //! a normalized value outside [-1, 1] (an unclamped clear color on a float buffer) saturates
 //! to the integer range instead of becoming −2³¹, NaN becomes 0 instead of −2³¹, and a float
-//! beyond the integer range saturates instead of wrapping.
+//! beyond the integer range saturates instead of wrapping. The depth range is reported as the
+//! double it is kept in (Mesa 22 keeps it as a float: glDepthRange(0.1, …) reads back
+//! 0.10000000149011612 there, 0.1 here).
 //!
 //! Colors that fragment clamping applies to (clear color, blend color, alpha reference) are
 //! stored as given and clamped here when the clamp is in effect: CLAMP_FRAGMENT_COLOR TRUE, or
