@@ -1,23 +1,556 @@
 //! glPushAttrib/glPopAttrib and glPushClientAttrib/glPopClientAttrib.
+//!
+//! A pushed entry holds a clone of each group struct of [`State`] that the mask names; popping
+//! writes back exactly the state of those groups, as the tables of chapter 6 of the GL 2.1
+//! specification assign it. Most groups are one struct of [`State`] and come back whole.
+//! Three need care: GL_LINE_BIT and GL_POINT_BIT share [`LinePointState`] (which also holds
+//! enables that belong to GL_ENABLE_BIT only), and GL_ENABLE_BIT gathers the enables of every
+//! group, including the texture enables of every unit and the blend enable of every draw
+//! buffer, while leaving the rest of those groups alone.
+//!
+//! Groups whose state does not exist yet (current, list, polygon stipple pattern, ...) are
+//! accepted and save nothing. Unknown mask bits are ignored, and an empty mask still pushes
+//! an entry, as in Mesa.
+//!
+//! Deliberate differences from Mesa 22, which restores less than the specification asks:
+//! GL_ENABLE_BIT restores GL_LIGHTi (Mesa's enable group has no light loop), GL_ENABLE_BIT and
+//! GL_FOG_BIT restore GL_COLOR_SUM (fog/enable in table 6.11), and GL_HINT_BIT restores
+//! GL_GENERATE_MIPMAP_HINT and GL_FRAGMENT_SHADER_DERIVATIVE_HINT.
+use super::capabilities::{self, CAPABILITIES};
+use super::state::*;
 use super::Context;
+use crate::api::enums::*;
+use crate::api::types::GLenum;
 
-/// One glPushAttrib entry.
-pub struct SavedAttribs {}
+/// GL_ENABLE_BIT: every capability's flag.
+#[derive(Clone, Debug, PartialEq)]
+struct Enables {
+    /// The flags of the capabilities that are neither per texture unit nor per draw buffer,
+    /// in [`CAPABILITIES`] order.
+    flags: Vec<bool>,
+    /// GL_BLEND of every draw buffer.
+    blend: [bool; MAX_DRAW_BUFFERS],
+    /// The texture and texture-coordinate generation enables of every unit.
+    texture_units: [TextureUnitEnables; MAX_TEXTURE_UNITS],
+}
 
-/// One glPushClientAttrib entry.
-pub struct SavedClientAttribs {}
+/// Capabilities that are not one flag of the context: GL_BLEND has one flag per draw buffer,
+/// the texture enables one set per texture unit.
+fn is_per_buffer_or_unit(cap: GLenum) -> bool {
+    matches!(
+        cap,
+        GL_BLEND | GL_TEXTURE_1D | GL_TEXTURE_2D | GL_TEXTURE_3D | GL_TEXTURE_CUBE_MAP | GL_TEXTURE_GEN_S
+            ..=GL_TEXTURE_GEN_Q
+    )
+}
+
+/// The single-flag capabilities, in [`CAPABILITIES`] order.
+fn single_flag_capabilities() -> impl Iterator<Item = GLenum> {
+    CAPABILITIES.iter().copied().filter(|&cap| !is_per_buffer_or_unit(cap))
+}
+
+impl Enables {
+    fn save(state: &mut State) -> Enables {
+        let flags = single_flag_capabilities().map(|cap| capabilities::flag(state, cap).is_some_and(|f| *f)).collect();
+        Enables { flags, blend: state.color.blend, texture_units: state.texture.units }
+    }
+
+    fn restore(&self, state: &mut State) {
+        for (cap, &on) in single_flag_capabilities().zip(&self.flags) {
+            if let Some(flag) = capabilities::flag(state, cap) {
+                *flag = on;
+            }
+        }
+        state.color.blend = self.blend;
+        state.texture.units = self.texture_units;
+    }
+}
+
+/// One glPushAttrib entry: a clone of each group the mask named.
+#[derive(Clone, Debug, Default)]
+pub struct SavedAttribs {
+    color: Option<ColorBufferState>,
+    depth: Option<DepthState>,
+    stencil: Option<StencilState>,
+    scissor: Option<ScissorState>,
+    viewport: Option<ViewportState>,
+    accum: Option<AccumState>,
+    hint: Option<HintState>,
+    fog: Option<FogState>,
+    lighting: Option<LightingState>,
+    transform: Option<TransformState>,
+    polygon: Option<PolygonState>,
+    /// GL_LINE_BIT and GL_POINT_BIT: the shared struct, of which each restores its fields.
+    line: Option<LinePointState>,
+    point: Option<LinePointState>,
+    multisample: Option<MultisampleState>,
+    texture: Option<TextureState>,
+    eval: Option<EvalState>,
+    pixel_mode: Option<PixelModeState>,
+    enable: Option<Enables>,
+}
+
+/// Clones `group` when `mask` names `bit`.
+fn saved<T: Clone>(mask: u32, bit: u32, group: &T) -> Option<T> {
+    (mask & bit != 0).then(|| group.clone())
+}
+
+impl SavedAttribs {
+    fn save(state: &mut State, mask: u32) -> SavedAttribs {
+        SavedAttribs {
+            color: saved(mask, GL_COLOR_BUFFER_BIT, &state.color),
+            depth: saved(mask, GL_DEPTH_BUFFER_BIT, &state.depth),
+            stencil: saved(mask, GL_STENCIL_BUFFER_BIT, &state.stencil),
+            scissor: saved(mask, GL_SCISSOR_BIT, &state.scissor),
+            viewport: saved(mask, GL_VIEWPORT_BIT, &state.viewport),
+            accum: saved(mask, GL_ACCUM_BUFFER_BIT, &state.accum),
+            hint: saved(mask, GL_HINT_BIT, &state.hint),
+            fog: saved(mask, GL_FOG_BIT, &state.fog),
+            lighting: saved(mask, GL_LIGHTING_BIT, &state.lighting),
+            transform: saved(mask, GL_TRANSFORM_BIT, &state.transform),
+            polygon: saved(mask, GL_POLYGON_BIT, &state.polygon),
+            line: saved(mask, GL_LINE_BIT, &state.line_point),
+            point: saved(mask, GL_POINT_BIT, &state.line_point),
+            multisample: saved(mask, GL_MULTISAMPLE_BIT, &state.multisample),
+            texture: saved(mask, GL_TEXTURE_BIT, &state.texture),
+            eval: saved(mask, GL_EVAL_BIT, &state.eval),
+            pixel_mode: saved(mask, GL_PIXEL_MODE_BIT, &state.pixel_mode),
+            enable: (mask & GL_ENABLE_BIT != 0).then(|| Enables::save(state)),
+        }
+    }
+
+    /// Writes the saved groups back. Where groups overlap (GL_ENABLE_BIT with any other) both
+    /// hold the same values, saved at the same time, so the order does not matter.
+    fn restore(self, state: &mut State) {
+        if let Some(enable) = self.enable {
+            enable.restore(state);
+        }
+        if let Some(line) = self.line {
+            state.line_point.line_smooth = line.line_smooth;
+            state.line_point.line_stipple = line.line_stipple;
+        }
+        if let Some(point) = self.point {
+            state.line_point.point_smooth = point.point_smooth;
+            state.line_point.point_sprite = point.point_sprite;
+        }
+        restore(&mut state.color, self.color);
+        restore(&mut state.depth, self.depth);
+        restore(&mut state.stencil, self.stencil);
+        restore(&mut state.scissor, self.scissor);
+        restore(&mut state.viewport, self.viewport);
+        restore(&mut state.accum, self.accum);
+        restore(&mut state.hint, self.hint);
+        restore(&mut state.fog, self.fog);
+        restore(&mut state.lighting, self.lighting);
+        restore(&mut state.transform, self.transform);
+        restore(&mut state.polygon, self.polygon);
+        restore(&mut state.multisample, self.multisample);
+        restore(&mut state.texture, self.texture);
+        restore(&mut state.eval, self.eval);
+        restore(&mut state.pixel_mode, self.pixel_mode);
+    }
+}
+
+fn restore<T>(group: &mut T, saved: Option<T>) {
+    if let Some(saved) = saved {
+        *group = saved;
+    }
+}
+
+/// One glPushClientAttrib entry. GL_CLIENT_VERTEX_ARRAY_BIT is accepted; vertex array state
+/// does not exist yet, so it saves nothing.
+#[derive(Clone, Debug, Default)]
+pub struct SavedClientAttribs {
+    pixel_store: Option<PixelStoreState>,
+}
 
 impl Context {
-    pub fn push_attrib(&mut self, _mask: u32) {
-        todo!()
+    /// glPushAttrib.
+    pub fn push_attrib(&mut self, mask: u32) {
+        if !self.check_outside_begin_end() {
+            return;
+        }
+        if self.attrib_stack.len() >= MAX_ATTRIB_STACK_DEPTH {
+            return self.error(GL_STACK_OVERFLOW);
+        }
+        let saved = SavedAttribs::save(&mut self.state, mask);
+        self.attrib_stack.push(saved);
     }
+
+    /// glPopAttrib.
     pub fn pop_attrib(&mut self) {
-        todo!()
+        if !self.check_outside_begin_end() {
+            return;
+        }
+        match self.attrib_stack.pop() {
+            Some(saved) => saved.restore(&mut self.state),
+            None => self.error(GL_STACK_UNDERFLOW),
+        }
     }
-    pub fn push_client_attrib(&mut self, _mask: u32) {
-        todo!()
+
+    /// glPushClientAttrib. Client state commands are not checked against glBegin/glEnd (the
+    /// specification lists no error for them there, and Mesa checks none).
+    pub fn push_client_attrib(&mut self, mask: u32) {
+        if self.client_attrib_stack.len() >= MAX_ATTRIB_STACK_DEPTH {
+            return self.error(GL_STACK_OVERFLOW);
+        }
+        let pixel_store = saved(mask, GL_CLIENT_PIXEL_STORE_BIT, &self.pixel_store);
+        self.client_attrib_stack.push(SavedClientAttribs { pixel_store });
     }
+
+    /// glPopClientAttrib.
     pub fn pop_client_attrib(&mut self) {
-        todo!()
+        match self.client_attrib_stack.pop() {
+            Some(saved) => restore(&mut self.pixel_store, saved.pixel_store),
+            None => self.error(GL_STACK_UNDERFLOW),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::context::ContextConfig;
+    use crate::framebuffer::{ColorFormat, DepthStencilFormat, FramebufferConfig};
+
+    fn context() -> Context {
+        let visual = FramebufferConfig {
+            color: ColorFormat::Unorm8 { alpha: true },
+            double_buffered: false,
+            stereo: false,
+            aux_buffers: 0,
+            depth_stencil: DepthStencilFormat::Packed24 { depth: true, stencil: true },
+            accum_bits: 16,
+        };
+        Context::new(ContextConfig { visual })
+    }
+
+    /// `state` with every field of every group changed.
+    fn scrambled(state: &State) -> State {
+        let mut t = state.clone();
+        let c = &mut t.color;
+        c.alpha_test = !c.alpha_test;
+        c.alpha_func = CompareFunc::Greater;
+        c.alpha_ref = 0.5;
+        c.blend = [true, false, true, true, false, true, true, true];
+        c.blend_src_rgb = [GL_SRC_ALPHA; MAX_DRAW_BUFFERS];
+        c.blend_dst_rgb = [GL_ONE; MAX_DRAW_BUFFERS];
+        c.blend_src_alpha = [GL_ZERO; MAX_DRAW_BUFFERS];
+        c.blend_dst_alpha = [GL_ONE; MAX_DRAW_BUFFERS];
+        c.blend_equation_rgb = [GL_FUNC_SUBTRACT; MAX_DRAW_BUFFERS];
+        c.blend_equation_alpha = [GL_MAX; MAX_DRAW_BUFFERS];
+        c.blend_color = [0.1, 0.2, 0.3, 0.4];
+        c.dither = !c.dither;
+        c.color_logic_op = !c.color_logic_op;
+        c.index_logic_op = !c.index_logic_op;
+        c.logic_op = GL_XOR;
+        c.draw_buffers[0] = GL_FRONT_LEFT;
+        c.clear_color = [1.0, 0.5, 0.25, 2.0];
+        c.clear_index = 7.0;
+        c.index_mask = 0x3c;
+        c.color_mask[1] = [false, true, false, true];
+        c.clamp_fragment_color = GL_TRUE as GLenum;
+        c.clamp_read_color = GL_FALSE as GLenum;
+        let d = &mut t.depth;
+        (d.test, d.func, d.write_mask, d.clear) = (!d.test, CompareFunc::Greater, !d.write_mask, 0.5);
+        let s = &mut t.stencil;
+        (s.test, s.two_side, s.active_face_back, s.clear) = (!s.test, !s.two_side, !s.active_face_back, 9);
+        for (face, reference) in [(&mut s.front, 3), (&mut s.back, 4)] {
+            *face = StencilFace {
+                func: CompareFunc::Equal,
+                reference,
+                value_mask: 0x0f,
+                fail: GL_INCR,
+                depth_fail: GL_DECR,
+                depth_pass: GL_INVERT,
+                write_mask: 0xf0,
+            };
+        }
+        t.scissor = ScissorState { test: !t.scissor.test, rect: [1, 2, 3, 4] };
+        t.viewport = ViewportState { rect: [5, 6, 7, 8], depth_range: [0.25, 0.5] };
+        t.accum.clear = [0.5, -0.5, 0.25, 1.0];
+        let h = &mut t.hint;
+        h.perspective_correction = GL_NICEST;
+        h.point_smooth = GL_NICEST;
+        h.line_smooth = GL_FASTEST;
+        h.polygon_smooth = GL_NICEST;
+        h.fog = GL_FASTEST;
+        h.generate_mipmap = GL_NICEST;
+        h.texture_compression = GL_FASTEST;
+        h.fragment_shader_derivative = GL_NICEST;
+        t.fog = FogState { enabled: !t.fog.enabled, color_sum: !t.fog.color_sum };
+        let l = &mut t.lighting;
+        (l.enabled, l.color_material, l.clamp_vertex_color) = (!l.enabled, !l.color_material, GL_FALSE as GLenum);
+        l.lights = [true, false, true, false, true, false, true, true];
+        let x = &mut t.transform;
+        x.clip_planes = [true; MAX_CLIP_PLANES];
+        (x.normalize, x.rescale_normal, x.depth_clamp) = (!x.normalize, !x.rescale_normal, !x.depth_clamp);
+        t.polygon = PolygonState {
+            cull_face: true,
+            smooth: true,
+            stipple: true,
+            offset_fill: true,
+            offset_line: true,
+            offset_point: true,
+        };
+        t.line_point = LinePointState {
+            line_smooth: true,
+            line_stipple: true,
+            point_smooth: true,
+            point_sprite: true,
+            vertex_program_point_size: true,
+            vertex_program_two_side: true,
+        };
+        let m = &mut t.multisample;
+        (m.enabled, m.alpha_to_coverage, m.alpha_to_one, m.coverage) =
+            (!m.enabled, !m.alpha_to_coverage, !m.alpha_to_one, !m.coverage);
+        t.texture.active_unit = 2;
+        let all = TextureUnitEnables {
+            texture_1d: true,
+            texture_2d: true,
+            texture_3d: true,
+            texture_cube_map: true,
+            gen: [true; 4],
+        };
+        t.texture.units = [all; MAX_TEXTURE_UNITS];
+        t.eval = EvalState { map1: [true; 9], map2: [true; 9], auto_normal: true };
+        t.pixel_mode.read_buffer = GL_FRONT_LEFT;
+        t
+    }
+
+    /// Copies one group from the original state (second) to the expected state (first).
+    type CopyGroup = fn(&mut State, &State);
+
+    /// The state a pop of `mask` must leave after everything was scrambled, written from the
+    /// tables of chapter 6 independently of the implementation.
+    fn expected_after_pop(mask: u32, original: &State) -> State {
+        let o = original;
+        let mut e = scrambled(o);
+        if mask & GL_ENABLE_BIT != 0 {
+            e.color.alpha_test = o.color.alpha_test;
+            e.color.blend = o.color.blend;
+            e.color.dither = o.color.dither;
+            e.color.color_logic_op = o.color.color_logic_op;
+            e.color.index_logic_op = o.color.index_logic_op;
+            e.depth.test = o.depth.test;
+            e.stencil.test = o.stencil.test;
+            e.stencil.two_side = o.stencil.two_side;
+            e.scissor.test = o.scissor.test;
+            e.fog = o.fog.clone();
+            e.lighting.enabled = o.lighting.enabled;
+            e.lighting.lights = o.lighting.lights;
+            e.lighting.color_material = o.lighting.color_material;
+            e.transform = o.transform.clone();
+            e.polygon = o.polygon.clone();
+            e.line_point = o.line_point.clone();
+            e.multisample = o.multisample.clone();
+            e.texture.units = o.texture.units;
+            e.eval = o.eval.clone();
+        }
+        if mask & GL_LINE_BIT != 0 {
+            e.line_point.line_smooth = o.line_point.line_smooth;
+            e.line_point.line_stipple = o.line_point.line_stipple;
+        }
+        if mask & GL_POINT_BIT != 0 {
+            e.line_point.point_smooth = o.line_point.point_smooth;
+            e.line_point.point_sprite = o.line_point.point_sprite;
+        }
+        let whole: [(u32, CopyGroup); 15] = [
+            (GL_COLOR_BUFFER_BIT, |e, o| e.color = o.color.clone()),
+            (GL_DEPTH_BUFFER_BIT, |e, o| e.depth = o.depth.clone()),
+            (GL_STENCIL_BUFFER_BIT, |e, o| e.stencil = o.stencil.clone()),
+            (GL_SCISSOR_BIT, |e, o| e.scissor = o.scissor.clone()),
+            (GL_VIEWPORT_BIT, |e, o| e.viewport = o.viewport.clone()),
+            (GL_ACCUM_BUFFER_BIT, |e, o| e.accum = o.accum.clone()),
+            (GL_HINT_BIT, |e, o| e.hint = o.hint.clone()),
+            (GL_FOG_BIT, |e, o| e.fog = o.fog.clone()),
+            (GL_LIGHTING_BIT, |e, o| e.lighting = o.lighting.clone()),
+            (GL_TRANSFORM_BIT, |e, o| e.transform = o.transform.clone()),
+            (GL_POLYGON_BIT, |e, o| e.polygon = o.polygon.clone()),
+            (GL_MULTISAMPLE_BIT, |e, o| e.multisample = o.multisample.clone()),
+            (GL_TEXTURE_BIT, |e, o| e.texture = o.texture.clone()),
+            (GL_EVAL_BIT, |e, o| e.eval = o.eval.clone()),
+            (GL_PIXEL_MODE_BIT, |e, o| e.pixel_mode = o.pixel_mode.clone()),
+        ];
+        for (bit, copy) in whole {
+            if mask & bit != 0 {
+                copy(&mut e, o);
+            }
+        }
+        e
+    }
+
+    const GROUPS: [u32; 23] = [
+        GL_CURRENT_BIT,
+        GL_POINT_BIT,
+        GL_LINE_BIT,
+        GL_POLYGON_BIT,
+        GL_POLYGON_STIPPLE_BIT,
+        GL_PIXEL_MODE_BIT,
+        GL_LIGHTING_BIT,
+        GL_FOG_BIT,
+        GL_DEPTH_BUFFER_BIT,
+        GL_ACCUM_BUFFER_BIT,
+        GL_STENCIL_BUFFER_BIT,
+        GL_VIEWPORT_BIT,
+        GL_TRANSFORM_BIT,
+        GL_ENABLE_BIT,
+        GL_COLOR_BUFFER_BIT,
+        GL_HINT_BIT,
+        GL_EVAL_BIT,
+        GL_LIST_BIT,
+        GL_TEXTURE_BIT,
+        GL_SCISSOR_BIT,
+        GL_MULTISAMPLE_BIT,
+        0,
+        GL_ENABLE_BIT | GL_LINE_BIT | GL_VIEWPORT_BIT,
+    ];
+
+    #[test]
+    fn scrambling_changes_every_group() {
+        let o = context().state;
+        let t = scrambled(&o);
+        assert_ne!(t.color, o.color);
+        assert_ne!(t.depth, o.depth);
+        assert_ne!(t.stencil, o.stencil);
+        assert_ne!(t.scissor, o.scissor);
+        assert_ne!(t.viewport, o.viewport);
+        assert_ne!(t.accum, o.accum);
+        assert_ne!(t.hint, o.hint);
+        assert_ne!(t.fog, o.fog);
+        assert_ne!(t.lighting, o.lighting);
+        assert_ne!(t.transform, o.transform);
+        assert_ne!(t.polygon, o.polygon);
+        assert_ne!(t.line_point, o.line_point);
+        assert_ne!(t.multisample, o.multisample);
+        assert_ne!(t.texture, o.texture);
+        assert_ne!(t.eval, o.eval);
+        assert_ne!(t.pixel_mode, o.pixel_mode);
+        // Nothing but the scramble itself survives a pop of every group.
+        assert_eq!(expected_after_pop(GL_ALL_ATTRIB_BITS, &o), o);
+    }
+
+    #[test]
+    fn each_group_restores_exactly_its_state() {
+        for mask in GROUPS {
+            let mut ctx = context();
+            ctx.state.color.blend[3] = true;
+            ctx.state.texture.units[1].gen[2] = true;
+            let original = ctx.state.clone();
+            ctx.push_attrib(mask);
+            ctx.state = scrambled(&original);
+            ctx.pop_attrib();
+            assert_eq!(ctx.state, expected_after_pop(mask, &original), "mask {mask:#x}");
+            assert_eq!(ctx.take_error(), GL_NO_ERROR);
+        }
+    }
+
+    #[test]
+    fn all_attrib_bits_restore_everything() {
+        let mut ctx = context();
+        let original = ctx.state.clone();
+        ctx.push_attrib(GL_ALL_ATTRIB_BITS);
+        ctx.state = scrambled(&original);
+        ctx.pop_attrib();
+        assert_eq!(ctx.state, original);
+    }
+
+    #[test]
+    fn enable_bit_restores_every_capability_of_every_unit() {
+        let mut ctx = context();
+        ctx.state.texture.active_unit = 3;
+        ctx.push_attrib(GL_ENABLE_BIT);
+        for &cap in CAPABILITIES {
+            let on = ctx.is_enabled(cap) != 0;
+            ctx.set_capability(cap, !on);
+        }
+        ctx.state.texture.active_unit = 0;
+        ctx.set_capability(GL_TEXTURE_CUBE_MAP, true);
+        ctx.pop_attrib();
+        // Everything is back to the initial state; the active unit, which is not an enable,
+        // stays what it was set to (0) rather than what it was at the push (3).
+        assert_eq!(ctx.state, context().state);
+        assert_eq!(ctx.take_error(), GL_NO_ERROR);
+    }
+
+    #[test]
+    fn the_stack_overflows_at_its_depth_and_underflows_when_empty() {
+        let mut ctx = context();
+        ctx.pop_attrib();
+        assert_eq!(ctx.take_error(), GL_STACK_UNDERFLOW);
+        for i in 0..MAX_ATTRIB_STACK_DEPTH {
+            ctx.state.stencil.clear = i as i32;
+            ctx.push_attrib(GL_STENCIL_BUFFER_BIT);
+        }
+        assert_eq!(ctx.take_error(), GL_NO_ERROR);
+        ctx.state.stencil.clear = 100;
+        ctx.push_attrib(GL_ALL_ATTRIB_BITS);
+        assert_eq!(ctx.take_error(), GL_STACK_OVERFLOW);
+        assert_eq!(ctx.attrib_stack.len(), MAX_ATTRIB_STACK_DEPTH);
+        for i in (0..MAX_ATTRIB_STACK_DEPTH).rev() {
+            ctx.pop_attrib();
+            assert_eq!(ctx.state.stencil.clear, i as i32);
+        }
+        ctx.pop_attrib();
+        assert_eq!(ctx.take_error(), GL_STACK_UNDERFLOW);
+        assert_eq!(ctx.state.stencil.clear, 0);
+    }
+
+    #[test]
+    fn server_stack_is_illegal_between_begin_and_end_client_stack_is_not() {
+        let mut ctx = context();
+        ctx.inside_begin_end = true;
+        ctx.push_attrib(GL_ALL_ATTRIB_BITS);
+        assert_eq!(ctx.take_error(), GL_INVALID_OPERATION);
+        assert!(ctx.attrib_stack.is_empty());
+        ctx.push_client_attrib(GL_CLIENT_ALL_ATTRIB_BITS);
+        assert_eq!(ctx.take_error(), GL_NO_ERROR);
+        ctx.inside_begin_end = false;
+        ctx.push_attrib(0);
+        ctx.inside_begin_end = true;
+        ctx.pop_attrib();
+        assert_eq!(ctx.take_error(), GL_INVALID_OPERATION);
+        assert_eq!(ctx.attrib_stack.len(), 1);
+        ctx.pop_client_attrib();
+        assert_eq!(ctx.take_error(), GL_NO_ERROR);
+    }
+
+    #[test]
+    fn client_stack_restores_pixel_store_only_for_its_bit() {
+        let mut ctx = context();
+        ctx.pixel_store.pack.alignment = 2;
+        ctx.pixel_store.unpack.row_length = 7;
+        let original = ctx.pixel_store.clone();
+        ctx.push_client_attrib(GL_CLIENT_PIXEL_STORE_BIT);
+        ctx.pixel_store.pack.alignment = 8;
+        ctx.pixel_store.unpack.swap_bytes = true;
+        ctx.push_client_attrib(GL_CLIENT_VERTEX_ARRAY_BIT);
+        ctx.pixel_store.unpack.skip_images = 3;
+        let changed = ctx.pixel_store.clone();
+        ctx.pop_client_attrib();
+        assert_eq!(ctx.pixel_store, changed);
+        ctx.pop_client_attrib();
+        assert_eq!(ctx.pixel_store, original);
+        // The server stack does not hold client state.
+        ctx.push_attrib(GL_ALL_ATTRIB_BITS);
+        ctx.pixel_store.pack.lsb_first = true;
+        ctx.pop_attrib();
+        assert!(ctx.pixel_store.pack.lsb_first);
+        assert_eq!(ctx.take_error(), GL_NO_ERROR);
+    }
+
+    #[test]
+    fn client_stack_overflows_and_underflows() {
+        let mut ctx = context();
+        ctx.pop_client_attrib();
+        assert_eq!(ctx.take_error(), GL_STACK_UNDERFLOW);
+        for _ in 0..MAX_ATTRIB_STACK_DEPTH {
+            ctx.push_client_attrib(GL_CLIENT_ALL_ATTRIB_BITS);
+        }
+        assert_eq!(ctx.take_error(), GL_NO_ERROR);
+        ctx.push_client_attrib(GL_CLIENT_ALL_ATTRIB_BITS);
+        assert_eq!(ctx.take_error(), GL_STACK_OVERFLOW);
+        assert_eq!(ctx.client_attrib_stack.len(), MAX_ATTRIB_STACK_DEPTH);
+        assert!(ctx.attrib_stack.is_empty());
     }
 }
