@@ -3,7 +3,8 @@
 //! Rows are stored bottom-up with no padding; pixel (x, y) is at `y * width + x`. Every
 //! allocation goes through [`alloc_filled`] so that running out of memory is an error value.
 use super::format::{
-    depth_to_fixed, float_to_unorm, unorm_max, unorm_to_float, unorm_widen_to_u32, ColorFormat, DepthStencilFormat,
+    depth_to_fixed, float_to_unorm, unorm_max, unorm_to_float, unorm_widen_to_u32, ColorFormat,
+    DepthStencilFormat,
 };
 use super::{OutOfMemory, Rect};
 
@@ -47,19 +48,33 @@ fn pack565(r: u32, g: u32, b: u32) -> u16 {
 }
 
 impl ColorBuffer {
-    pub(super) fn new(format: ColorFormat, width: usize, _height: usize, pixels: usize) -> Result<Self, OutOfMemory> {
+    pub(super) fn new(
+        format: ColorFormat,
+        width: usize,
+        _height: usize,
+        pixels: usize,
+    ) -> Result<Self, OutOfMemory> {
         // A fresh buffer is black; formats without alpha keep alpha at its maximum.
         let pixels = match format {
-            ColorFormat::Unorm8 { alpha } => ColorPixels::Unorm8(alloc_filled(pixels, [0, 0, 0, if alpha { 0 } else { 255 }])?),
+            ColorFormat::Unorm8 { alpha } => ColorPixels::Unorm8(alloc_filled(
+                pixels,
+                [0, 0, 0, if alpha { 0 } else { 255 }],
+            )?),
             ColorFormat::Rgb565 => ColorPixels::Rgb565(alloc_filled(pixels, 0)?),
-            ColorFormat::Unorm16 { alpha } => {
-                ColorPixels::Unorm16(alloc_filled(pixels, [0, 0, 0, if alpha { 0 } else { 65535 }])?)
-            }
-            ColorFormat::Float32 { alpha } => {
-                ColorPixels::Float32(alloc_filled(pixels, [0.0, 0.0, 0.0, if alpha { 0.0 } else { 1.0 }])?)
-            }
+            ColorFormat::Unorm16 { alpha } => ColorPixels::Unorm16(alloc_filled(
+                pixels,
+                [0, 0, 0, if alpha { 0 } else { 65535 }],
+            )?),
+            ColorFormat::Float32 { alpha } => ColorPixels::Float32(alloc_filled(
+                pixels,
+                [0.0, 0.0, 0.0, if alpha { 0.0 } else { 1.0 }],
+            )?),
         };
-        Ok(ColorBuffer { format, width, pixels })
+        Ok(ColorBuffer {
+            format,
+            width,
+            pixels,
+        })
     }
 
     pub fn format(&self) -> ColorFormat {
@@ -94,7 +109,11 @@ impl ColorBuffer {
             }
             ColorPixels::Float32(px) => fill_masked(px, width, rect, color, mask),
             ColorPixels::Rgb565(px) => {
-                let value = pack565(float_to_unorm(color[0], 5), float_to_unorm(color[1], 6), float_to_unorm(color[2], 5));
+                let value = pack565(
+                    float_to_unorm(color[0], 5),
+                    float_to_unorm(color[1], 6),
+                    float_to_unorm(color[2], 5),
+                );
                 let keep: u16 = (if mask[0] { 0 } else { 0xf800 })
                     | (if mask[1] { 0 } else { 0x07e0 })
                     | (if mask[2] { 0 } else { 0x001f });
@@ -111,12 +130,25 @@ impl ColorBuffer {
     pub fn read_row_f32(&self, y: i32, x0: i32, x1: i32, out: &mut Vec<[f32; 4]>) {
         let range = span(self.width, y, x0, x1);
         match &self.pixels {
-            ColorPixels::Unorm8(px) => out.extend(px[range].iter().map(|p| p.map(|c| unorm_to_float(c as u32, 8)))),
-            ColorPixels::Unorm16(px) => out.extend(px[range].iter().map(|p| p.map(|c| unorm_to_float(c as u32, 16)))),
+            ColorPixels::Unorm8(px) => out.extend(
+                px[range]
+                    .iter()
+                    .map(|p| p.map(|c| unorm_to_float(c as u32, 8))),
+            ),
+            ColorPixels::Unorm16(px) => out.extend(
+                px[range]
+                    .iter()
+                    .map(|p| p.map(|c| unorm_to_float(c as u32, 16))),
+            ),
             ColorPixels::Float32(px) => out.extend_from_slice(&px[range]),
             ColorPixels::Rgb565(px) => out.extend(px[range].iter().map(|&p| {
                 let p = p as u32;
-                [unorm_to_float(p >> 11, 5), unorm_to_float((p >> 5) & 63, 6), unorm_to_float(p & 31, 5), 1.0]
+                [
+                    unorm_to_float(p >> 11, 5),
+                    unorm_to_float((p >> 5) & 63, 6),
+                    unorm_to_float(p & 31, 5),
+                    1.0,
+                ]
             })),
         }
     }
@@ -128,14 +160,33 @@ impl ColorBuffer {
 
     /// Reads pixels `[x0, x1)` of row `y` as unorm values widened to 32 bits by replication;
     /// `None` for float formats.
-    pub fn read_row_unorm32(&self, y: i32, x0: i32, x1: i32, out: &mut Vec<[u32; 4]>) -> Option<()> {
+    pub fn read_row_unorm32(
+        &self,
+        y: i32,
+        x0: i32,
+        x1: i32,
+        out: &mut Vec<[u32; 4]>,
+    ) -> Option<()> {
         let range = span(self.width, y, x0, x1);
         match &self.pixels {
-            ColorPixels::Unorm8(px) => out.extend(px[range].iter().map(|p| p.map(|c| unorm_widen_to_u32(c as u32, 8)))),
-            ColorPixels::Unorm16(px) => out.extend(px[range].iter().map(|p| p.map(|c| unorm_widen_to_u32(c as u32, 16)))),
+            ColorPixels::Unorm8(px) => out.extend(
+                px[range]
+                    .iter()
+                    .map(|p| p.map(|c| unorm_widen_to_u32(c as u32, 8))),
+            ),
+            ColorPixels::Unorm16(px) => out.extend(
+                px[range]
+                    .iter()
+                    .map(|p| p.map(|c| unorm_widen_to_u32(c as u32, 16))),
+            ),
             ColorPixels::Rgb565(px) => out.extend(px[range].iter().map(|&p| {
                 let p = p as u32;
-                [unorm_widen_to_u32(p >> 11, 5), unorm_widen_to_u32((p >> 5) & 63, 6), unorm_widen_to_u32(p & 31, 5), u32::MAX]
+                [
+                    unorm_widen_to_u32(p >> 11, 5),
+                    unorm_widen_to_u32((p >> 5) & 63, 6),
+                    unorm_widen_to_u32(p & 31, 5),
+                    u32::MAX,
+                ]
             })),
             ColorPixels::Float32(_) => return None,
         }
@@ -146,7 +197,12 @@ impl ColorBuffer {
     /// fixed-point) and honouring the channel `mask`.
     pub fn write_row_f32(&mut self, y: i32, x0: i32, values: &[[f32; 4]], mask: [bool; 4]) {
         let range = span(self.width, y, x0, x0 + values.len() as i32);
-        let mask = [mask[0], mask[1], mask[2], mask[3] && self.format.has_alpha()];
+        let mask = [
+            mask[0],
+            mask[1],
+            mask[2],
+            mask[3] && self.format.has_alpha(),
+        ];
         match &mut self.pixels {
             ColorPixels::Unorm8(px) => {
                 for (p, v) in px[range].iter_mut().zip(values) {
@@ -178,9 +234,21 @@ impl ColorBuffer {
             ColorPixels::Rgb565(px) => {
                 for (p, v) in px[range].iter_mut().zip(values) {
                     let old = *p as u32;
-                    let r = if mask[0] { float_to_unorm(v[0], 5) } else { old >> 11 };
-                    let g = if mask[1] { float_to_unorm(v[1], 6) } else { (old >> 5) & 63 };
-                    let b = if mask[2] { float_to_unorm(v[2], 5) } else { old & 31 };
+                    let r = if mask[0] {
+                        float_to_unorm(v[0], 5)
+                    } else {
+                        old >> 11
+                    };
+                    let g = if mask[1] {
+                        float_to_unorm(v[1], 6)
+                    } else {
+                        (old >> 5) & 63
+                    };
+                    let b = if mask[2] {
+                        float_to_unorm(v[2], 5)
+                    } else {
+                        old & 31
+                    };
                     *p = pack565(r, g, b);
                 }
             }
@@ -189,7 +257,13 @@ impl ColorBuffer {
 }
 
 /// Fills `rect` of a 4-channel buffer with `value`, channel-masked.
-fn fill_masked<T: Copy>(px: &mut [[T; 4]], width: usize, rect: Rect, value: [T; 4], mask: [bool; 4]) {
+fn fill_masked<T: Copy>(
+    px: &mut [[T; 4]],
+    width: usize,
+    rect: Rect,
+    value: [T; 4],
+    mask: [bool; 4],
+) {
     let all = mask.iter().all(|&m| m);
     for y in rect.y0..rect.y1 {
         let row = &mut px[span(width, y, rect.x0, rect.x1)];
@@ -227,17 +301,31 @@ pub struct DepthStencilBuffer {
 }
 
 impl DepthStencilBuffer {
-    pub(super) fn new(format: DepthStencilFormat, width: usize, pixels: usize) -> Result<Self, OutOfMemory> {
+    pub(super) fn new(
+        format: DepthStencilFormat,
+        width: usize,
+        pixels: usize,
+    ) -> Result<Self, OutOfMemory> {
         let storage = match format {
             DepthStencilFormat::None => DepthStencilPixels::None,
             DepthStencilFormat::Depth16 => DepthStencilPixels::Depth16(alloc_filled(pixels, 0)?),
-            DepthStencilFormat::Packed24 { .. } => DepthStencilPixels::Packed24(alloc_filled(pixels, 0)?),
+            DepthStencilFormat::Packed24 { .. } => {
+                DepthStencilPixels::Packed24(alloc_filled(pixels, 0)?)
+            }
             DepthStencilFormat::Depth32 { stencil } => DepthStencilPixels::Depth32(
                 alloc_filled(pixels, 0)?,
-                if stencil { Some(alloc_filled(pixels, 0)?) } else { None },
+                if stencil {
+                    Some(alloc_filled(pixels, 0)?)
+                } else {
+                    None
+                },
             ),
         };
-        Ok(DepthStencilBuffer { format, width, pixels: storage })
+        Ok(DepthStencilBuffer {
+            format,
+            width,
+            pixels: storage,
+        })
     }
 
     pub fn format(&self) -> DepthStencilFormat {
@@ -338,15 +426,90 @@ impl DepthStencilBuffer {
 }
 
 /// The accumulation buffer: signed 16-bit normalized RGBA, as Mesa stores it.
+///
+/// The arithmetic reproduces Mesa 22's glAccum (`main/accum.c` on the CPU) bit for bit, because
+/// tessera must give the same pictures; it was measured against llvmpipe OSMesa for every
+/// operation, value range and color format (see `capi-tests/accum.c`):
+/// - values are stored as `i16` with 1.0 ↔ 32767; float → `i16` truncates toward zero through a
+///   32-bit integer and keeps the low 16 bits (x86-64's `cvttss2si` + C's narrowing), so values
+///   beyond ±1 wrap around instead of saturating, and so do sums (`wrapping_add`). The GL
+///   specification leaves results outside [-1, 1] undefined; Mesa's wrap is what programs see.
+/// - color channels are read as Mesa's format unpackers do: `c · (1/(2ⁿ − 1))` in f32 (a
+///   multiplication by the rounded reciprocal, not a division).
+/// - GL_RETURN writes `acc · (value / 32767)` packed as Mesa's format packers do: 8-bit
+///   channels round to nearest (even), 16-bit and 5/6-bit channels add 0.5 and truncate, float
+///   channels store the value unclamped.
 #[derive(Clone, Debug)]
 pub struct AccumBuffer {
     width: usize,
     pixels: Vec<[i16; 4]>,
 }
 
+/// float → accumulation value: truncation through i32 (NaN and out-of-range give `i32::MIN`,
+/// as `cvttss2si` does), then the low 16 bits.
+#[inline]
+pub fn accum_from_f32(value: f32) -> i16 {
+    let wide = if value.is_nan() || !(-2147483648.0..2147483648.0).contains(&value) {
+        i32::MIN
+    } else {
+        value as i32
+    };
+    wide as i16
+}
+
+/// glClearAccum's value (in [-1, 1]) as stored: Mesa's `FLOAT_TO_SHORT`,
+/// `(trunc(65535 · c) − 1) / 2` with C's division (toward zero).
+#[inline]
+pub fn accum_clear_value(value: f32) -> i16 {
+    let scaled = if value.is_nan() {
+        0
+    } else {
+        (65535.0 * value.clamp(-1.0, 1.0)) as i32
+    };
+    ((scaled - 1) / 2) as i16
+}
+
+/// Mesa's float → n-bit unorm packing for 16-bit and 5/6-bit channels (`util_iround` of the
+/// clamped value times 2ⁿ − 1, which adds 0.5 and truncates); NaN gives 0.
+#[inline]
+fn pack_unorm_half_up(value: f32, max: f32) -> u32 {
+    let clamped = if value > 0.0 { value.min(1.0) } else { 0.0 };
+    (clamped * max + 0.5) as u32
+}
+
+/// Mesa's float → 8-bit unorm packing (`float_to_ubyte`): round to nearest, ties to even.
+#[inline]
+fn pack_unorm8(value: f32) -> u8 {
+    float_to_unorm(value, 8) as u8
+}
+
+/// Mesa's n-bit unorm → float unpacking: a multiplication by the f32 reciprocal of 2ⁿ − 1.
+#[inline]
+fn unpack_unorm(value: u32, reciprocal: f32) -> f32 {
+    value as f32 * reciprocal
+}
+
+const RECIP_255: f32 = 1.0 / 255.0;
+const RECIP_65535: f32 = 1.0 / 65535.0;
+const RECIP_31: f32 = 1.0 / 31.0;
+const RECIP_63: f32 = 1.0 / 63.0;
+
+/// `acc` combined with a new value converted from a color: GL_LOAD replaces, GL_ACCUM adds.
+#[inline]
+fn combine(acc: &mut i16, new: i16, accumulate: bool) {
+    *acc = if accumulate {
+        acc.wrapping_add(new)
+    } else {
+        new
+    };
+}
+
 impl AccumBuffer {
     pub(super) fn new(width: usize, pixels: usize) -> Result<Self, OutOfMemory> {
-        Ok(AccumBuffer { width, pixels: alloc_filled(pixels, [0; 4])? })
+        Ok(AccumBuffer {
+            width,
+            pixels: alloc_filled(pixels, [0; 4])?,
+        })
     }
 
     pub fn width(&self) -> usize {
@@ -364,5 +527,372 @@ impl AccumBuffer {
     /// Index of pixel (x, y).
     pub fn index(&self, x: i32, y: i32) -> usize {
         y as usize * self.width + x as usize
+    }
+
+    /// Sets every pixel of `rect` (already inside the buffer) to `value`.
+    pub fn fill(&mut self, rect: Rect, value: [i16; 4]) {
+        for y in rect.y0..rect.y1 {
+            self.pixels[span(self.width, y, rect.x0, rect.x1)].fill(value);
+        }
+    }
+
+    /// GL_ADD: adds `value · 32767` (truncated) to every channel of `rect`, wrapping.
+    pub fn add(&mut self, rect: Rect, value: f32) {
+        let increment = accum_from_f32(value * 32767.0);
+        self.for_each_channel(rect, |acc| *acc = acc.wrapping_add(increment));
+    }
+
+    /// GL_MULT: multiplies every channel of `rect` by `value`, truncating.
+    pub fn multiply(&mut self, rect: Rect, value: f32) {
+        self.for_each_channel(rect, |acc| *acc = accum_from_f32(*acc as f32 * value));
+    }
+
+    fn for_each_channel(&mut self, rect: Rect, mut f: impl FnMut(&mut i16)) {
+        for y in rect.y0..rect.y1 {
+            for pixel in &mut self.pixels[span(self.width, y, rect.x0, rect.x1)] {
+                pixel.iter_mut().for_each(&mut f);
+            }
+        }
+    }
+
+    /// GL_LOAD (`accumulate` false) or GL_ACCUM (true) over `rect`: the color buffer's pixels
+    /// times `value`, stored or added. `color` has the accumulation buffer's width.
+    pub fn load_from(&mut self, color: &ColorBuffer, rect: Rect, value: f32, accumulate: bool) {
+        let scale = value * 32767.0;
+        let width = self.width;
+        match &color.pixels {
+            ColorPixels::Unorm8(px) => {
+                // 256 possible inputs: convert each once.
+                let table: [i16; 256] = std::array::from_fn(|c| {
+                    accum_from_f32(unpack_unorm(c as u32, RECIP_255) * scale)
+                });
+                let alpha = color.format.has_alpha();
+                let opaque = accum_from_f32(scale);
+                for y in rect.y0..rect.y1 {
+                    let range = span(width, y, rect.x0, rect.x1);
+                    for (acc, p) in self.pixels[range.clone()].iter_mut().zip(&px[range]) {
+                        for c in 0..3 {
+                            combine(&mut acc[c], table[p[c] as usize], accumulate);
+                        }
+                        combine(
+                            &mut acc[3],
+                            if alpha { table[p[3] as usize] } else { opaque },
+                            accumulate,
+                        );
+                    }
+                }
+            }
+            ColorPixels::Unorm16(px) => {
+                let alpha = color.format.has_alpha();
+                self.load_rows(px, rect, accumulate, |p: &[u16; 4]| {
+                    let a = if alpha {
+                        unpack_unorm(p[3] as u32, RECIP_65535)
+                    } else {
+                        1.0
+                    };
+                    [
+                        unpack_unorm(p[0] as u32, RECIP_65535),
+                        unpack_unorm(p[1] as u32, RECIP_65535),
+                        unpack_unorm(p[2] as u32, RECIP_65535),
+                        a,
+                    ]
+                    .map(|f| accum_from_f32(f * scale))
+                });
+            }
+            ColorPixels::Float32(px) => {
+                let alpha = color.format.has_alpha();
+                self.load_rows(px, rect, accumulate, |p: &[f32; 4]| {
+                    [p[0], p[1], p[2], if alpha { p[3] } else { 1.0 }]
+                        .map(|f| accum_from_f32(f * scale))
+                });
+            }
+            ColorPixels::Rgb565(px) => {
+                self.load_rows(px, rect, accumulate, |&p: &u16| {
+                    let p = p as u32;
+                    [
+                        unpack_unorm(p >> 11, RECIP_31),
+                        unpack_unorm((p >> 5) & 63, RECIP_63),
+                        unpack_unorm(p & 31, RECIP_31),
+                        1.0,
+                    ]
+                    .map(|f| accum_from_f32(f * scale))
+                });
+            }
+        }
+    }
+
+    /// The rows of `rect` of a color buffer, each pixel converted by `convert`, combined into
+    /// the accumulation buffer.
+    fn load_rows<P>(
+        &mut self,
+        px: &[P],
+        rect: Rect,
+        accumulate: bool,
+        convert: impl Fn(&P) -> [i16; 4],
+    ) {
+        for y in rect.y0..rect.y1 {
+            let range = span(self.width, y, rect.x0, rect.x1);
+            for (acc, p) in self.pixels[range.clone()].iter_mut().zip(&px[range]) {
+                let new = convert(p);
+                for c in 0..4 {
+                    combine(&mut acc[c], new[c], accumulate);
+                }
+            }
+        }
+    }
+
+    /// GL_RETURN over `rect`: writes `acc · value` into `color`, only the channels whose `mask`
+    /// entry is true. `color` has the accumulation buffer's width.
+    pub fn return_to(&self, color: &mut ColorBuffer, rect: Rect, value: f32, mask: [bool; 4]) {
+        let scale = value / 32767.0;
+        let mask = [
+            mask[0],
+            mask[1],
+            mask[2],
+            mask[3] && color.format.has_alpha(),
+        ];
+        match &mut color.pixels {
+            ColorPixels::Unorm8(px) => self.return_rows(px, rect, |p: &mut [u8; 4], acc| {
+                for c in 0..4 {
+                    if mask[c] {
+                        p[c] = pack_unorm8(acc[c] as f32 * scale);
+                    }
+                }
+            }),
+            ColorPixels::Unorm16(px) => self.return_rows(px, rect, |p: &mut [u16; 4], acc| {
+                for c in 0..4 {
+                    if mask[c] {
+                        p[c] = pack_unorm_half_up(acc[c] as f32 * scale, 65535.0) as u16;
+                    }
+                }
+            }),
+            ColorPixels::Float32(px) => self.return_rows(px, rect, |p: &mut [f32; 4], acc| {
+                for c in 0..4 {
+                    if mask[c] {
+                        p[c] = acc[c] as f32 * scale;
+                    }
+                }
+            }),
+            ColorPixels::Rgb565(px) => {
+                let keep: u16 = (if mask[0] { 0 } else { 0xf800 })
+                    | (if mask[1] { 0 } else { 0x07e0 })
+                    | (if mask[2] { 0 } else { 0x001f });
+                self.return_rows(px, rect, |p: &mut u16, acc| {
+                    let r = pack_unorm_half_up(acc[0] as f32 * scale, 31.0);
+                    let g = pack_unorm_half_up(acc[1] as f32 * scale, 63.0);
+                    let b = pack_unorm_half_up(acc[2] as f32 * scale, 31.0);
+                    *p = (*p & keep) | (pack565(r, g, b) & !keep);
+                })
+            }
+        }
+    }
+
+    /// Runs `store` on every pixel of `rect` of a color buffer with its accumulation value.
+    fn return_rows<P>(&self, px: &mut [P], rect: Rect, store: impl Fn(&mut P, [i16; 4])) {
+        for y in rect.y0..rect.y1 {
+            let range = span(self.width, y, rect.x0, rect.x1);
+            for (p, acc) in px[range.clone()].iter_mut().zip(&self.pixels[range]) {
+                store(p, *acc);
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod accum_tests {
+    //! Expected values were computed with Mesa 22's C expressions (and checked against
+    //! llvmpipe OSMesa); they pin the rounding, truncation and wrap-around of every step.
+    use super::*;
+
+    fn whole(width: i32, height: i32) -> Rect {
+        Rect::from_xywh(0, 0, width, height)
+    }
+
+    fn accum_with(values: &[[i16; 4]]) -> AccumBuffer {
+        let mut accum = AccumBuffer::new(values.len(), values.len()).unwrap();
+        accum.pixels_mut().copy_from_slice(values);
+        accum
+    }
+
+    #[test]
+    fn float_to_accum_truncates_and_wraps_like_x86_mesa() {
+        assert_eq!(accum_from_f32(0.99), 0);
+        assert_eq!(accum_from_f32(1.9), 1);
+        assert_eq!(accum_from_f32(-1.9), -1);
+        assert_eq!(accum_from_f32(32767.9), 32767);
+        assert_eq!(accum_from_f32(32768.0), -32768);
+        assert_eq!(accum_from_f32(-32769.0), 32767);
+        assert_eq!(accum_from_f32(98301.0), 32765);
+        assert_eq!(accum_from_f32(2147483520.0), -128);
+        // Outside the i32 range, cvttss2si gives i32::MIN, whose low half is 0.
+        assert_eq!(accum_from_f32(2147483648.0), 0);
+        assert_eq!(accum_from_f32(-1e10), 0);
+        assert_eq!(accum_from_f32(f32::NAN), 0);
+        assert_eq!(accum_from_f32(f32::INFINITY), 0);
+    }
+
+    #[test]
+    fn clear_value_is_mesas_float_to_short() {
+        assert_eq!(accum_clear_value(1.0), 32767);
+        assert_eq!(accum_clear_value(-1.0), -32768);
+        assert_eq!(accum_clear_value(0.0), 0);
+        assert_eq!(accum_clear_value(0.5), 16383);
+        assert_eq!(accum_clear_value(-0.5), -16384);
+        assert_eq!(accum_clear_value(0.25), 8191);
+        assert_eq!(accum_clear_value(1e-5), 0);
+    }
+
+    #[test]
+    fn fill_add_and_multiply_stay_inside_the_rect() {
+        let mut accum = AccumBuffer::new(3, 6).unwrap();
+        accum.fill(whole(3, 2), [20000, 1000, -12345, 30000]);
+        let inner = Rect::from_xywh(1, 1, 2, 1);
+        accum.add(inner, 0.5);
+        assert_eq!(accum.pixels()[4], [-29153, 17383, 4038, -19153]);
+        accum.fill(whole(3, 2), [20000, 1000, -12345, 30000]);
+        accum.multiply(inner, 0.3);
+        assert_eq!(accum.pixels()[5][1], 300);
+        accum.fill(inner, [1000, -12345, 30000, 7]);
+        accum.multiply(inner, 1.7);
+        assert_eq!(accum.pixels()[4], [1700, -20986, -14536, 11]);
+        accum.multiply(inner, f32::NAN);
+        assert_eq!(accum.pixels()[4], [0; 4]);
+        // Outside the rectangle nothing changed.
+        assert_eq!(accum.pixels()[0], [20000, 1000, -12345, 30000]);
+        assert_eq!(accum.pixels()[3], [20000, 1000, -12345, 30000]);
+        // Increments below one step truncate to nothing.
+        accum.add(whole(3, 2), 1e-5);
+        assert_eq!(accum.pixels()[0], [20000, 1000, -12345, 30000]);
+    }
+
+    #[test]
+    fn load_and_accum_unpack_with_mesas_reciprocals() {
+        let mut color = ColorBuffer::new(ColorFormat::Unorm8 { alpha: true }, 2, 1, 2).unwrap();
+        if let ColorPixels::Unorm8(px) = color.pixels_mut() {
+            px[0] = [128, 0, 255, 254];
+            px[1] = [1, 2, 3, 4];
+        }
+        let mut accum = AccumBuffer::new(2, 2).unwrap();
+        accum.load_from(&color, whole(1, 1), 1.0, false);
+        assert_eq!(accum.pixels()[0], [16447, 0, 32767, 32638]);
+        assert_eq!(accum.pixels()[1], [0; 4], "outside the rectangle");
+        accum.load_from(&color, whole(1, 1), 1.0, true);
+        assert_eq!(accum.pixels()[0], [-32642, 0, -2, -260]);
+        // x · (1/255) rounds differently from x / 255 here: -32515 (Mesa) instead of -32516.
+        accum.load_from(&color, whole(1, 1), 33151.0 / 32767.0, false);
+        assert_eq!(accum.pixels()[0][3], -32515);
+
+        let mut color16 = ColorBuffer::new(ColorFormat::Unorm16 { alpha: false }, 1, 1, 1).unwrap();
+        if let ColorPixels::Unorm16(px) = color16.pixels_mut() {
+            px[0] = [257, 40000, 514, 65535];
+        }
+        let mut accum = AccumBuffer::new(1, 1).unwrap();
+        accum.load_from(&color16, whole(1, 1), 510.0 / 32767.0, false);
+        // 257 · (1/65535) gives 1 where 257 / 65535 would give 2; alpha reads as 1.0.
+        assert_eq!(accum.pixels()[0], [1, 311, 3, 510]);
+
+        let mut color565 = ColorBuffer::new(ColorFormat::Rgb565, 1, 1, 1).unwrap();
+        if let ColorPixels::Rgb565(px) = color565.pixels_mut() {
+            px[0] = pack565(31, 40, 0);
+        }
+        accum.load_from(&color565, whole(1, 1), 1.0, false);
+        assert_eq!(accum.pixels()[0], [32767, 20804, 0, 32767]);
+
+        let mut colorf = ColorBuffer::new(ColorFormat::Float32 { alpha: true }, 1, 1, 1).unwrap();
+        if let ColorPixels::Float32(px) = colorf.pixels_mut() {
+            px[0] = [3.0, -1.11, 1e6, f32::NAN];
+        }
+        accum.load_from(&colorf, whole(1, 1), 1.0, false);
+        assert_eq!(accum.pixels()[0], [32765, 29165, 0, 0]);
+    }
+
+    #[test]
+    fn return_packs_like_mesa_per_format() {
+        let accum = accum_with(&[[16447, 32742, -32768, 16457], [16000, 16000, 16000, 16000]]);
+        let rect = whole(2, 1);
+
+        let mut c8 = ColorBuffer::new(ColorFormat::Unorm8 { alpha: true }, 2, 1, 2).unwrap();
+        accum.return_to(&mut c8, rect, 1.0, [true; 4]);
+        let ColorPixels::Unorm8(px) = c8.pixels() else {
+            unreachable!()
+        };
+        assert_eq!(px[0], [128, 255, 0, 128]);
+
+        let mut c16 = ColorBuffer::new(ColorFormat::Unorm16 { alpha: true }, 2, 1, 2).unwrap();
+        accum.return_to(&mut c16, rect, 0.5, [true; 4]);
+        let ColorPixels::Unorm16(px) = c16.pixels() else {
+            unreachable!()
+        };
+        // 32742.5 rounds up (Mesa adds 0.5 and truncates), not to even.
+        assert_eq!(px[0][1], 32743);
+        accum.return_to(&mut c16, rect, 1.0, [true; 4]);
+        let ColorPixels::Unorm16(px) = c16.pixels() else {
+            unreachable!()
+        };
+        assert_eq!(px[0][3], 32915);
+
+        let mut cf = ColorBuffer::new(ColorFormat::Float32 { alpha: true }, 2, 1, 2).unwrap();
+        accum.return_to(&mut cf, rect, 3.0, [true; 4]);
+        let ColorPixels::Float32(px) = cf.pixels() else {
+            unreachable!()
+        };
+        assert_eq!(px[0][2], -32768.0 * (3.0 / 32767.0));
+        assert_eq!(px[1][0], 16000.0 * (3.0 / 32767.0));
+        assert!(px[1][0] > 1.0, "float buffers are not clamped");
+
+        let mut c565 = ColorBuffer::new(ColorFormat::Rgb565, 2, 1, 2).unwrap();
+        accum.return_to(&mut c565, rect, 1.0, [true; 4]);
+        let ColorPixels::Rgb565(px) = c565.pixels() else {
+            unreachable!()
+        };
+        assert_eq!(px[1], pack565(15, 31, 15));
+    }
+
+    #[test]
+    fn return_honours_the_channel_mask() {
+        let accum = accum_with(&[[32767, 32767, 32767, 32767]]);
+        let mut c8 = ColorBuffer::new(ColorFormat::Unorm8 { alpha: true }, 1, 1, 1).unwrap();
+        c8.clear(whole(1, 1), [0.2, 0.4, 0.6, 0.8], [true; 4]);
+        accum.return_to(&mut c8, whole(1, 1), 1.0, [false, true, false, true]);
+        let ColorPixels::Unorm8(px) = c8.pixels() else {
+            unreachable!()
+        };
+        assert_eq!(px[0], [51, 255, 153, 255]);
+
+        let mut c565 = ColorBuffer::new(ColorFormat::Rgb565, 1, 1, 1).unwrap();
+        accum.return_to(&mut c565, whole(1, 1), 1.0, [true, false, true, true]);
+        let ColorPixels::Rgb565(px) = c565.pixels() else {
+            unreachable!()
+        };
+        assert_eq!(px[0], pack565(31, 0, 31));
+    }
+
+    /// Mesa's `float_to_ubyte`: the mantissa of `f · 255/256 + 32768` (an independent oracle).
+    fn float_to_ubyte_trick(f: f32) -> u8 {
+        if f.is_nan() || f <= 0.0 {
+            0
+        } else if f >= 1.0 {
+            255
+        } else {
+            ((f * (255.0 / 256.0) + 32768.0).to_bits() & 0xff) as u8
+        }
+    }
+
+    #[test]
+    fn unorm8_packing_equals_mesas_float_to_ubyte() {
+        // Every 61st float of [0, 1] plus the ties and the edges.
+        let mut bits = 0u32;
+        while bits <= 1.0f32.to_bits() {
+            let f = f32::from_bits(bits);
+            assert_eq!(pack_unorm8(f), float_to_ubyte_trick(f), "{f:e}");
+            bits += 61;
+        }
+        for n in 0..255 {
+            let tie = (n as f32 + 0.5) / 255.0;
+            assert_eq!(pack_unorm8(tie), float_to_ubyte_trick(tie), "{tie:e}");
+        }
+        for f in [-1.0, 1.5, f32::NAN, f32::INFINITY, -0.0] {
+            assert_eq!(pack_unorm8(f), float_to_ubyte_trick(f));
+        }
     }
 }
