@@ -394,11 +394,35 @@ static void no_accum_buffer(void)
     free(buffer);
 }
 
+/* RGB 5/6/5: LOAD reads c * (1/31) and c * (1/63); RETURN rounds half up to 5/6 bits. */
+static void rgb565(void)
+{
+    void *buffer;
+    OSMesaContext ctx = capi_make_context(OSMESA_RGB_565, GL_UNSIGNED_SHORT_5_6_5, 24, 8, 16, W, H, &buffer);
+    for (int x = 0; x < W; x++)
+        fill(x, 0, 1, H, x / 31.0f, (x * 2 + 1) / 63.0f, 1.0f - x / 31.0f, 1.0f);
+    glAccum(GL_LOAD, 1.0f);
+    const float values[] = {0.5f, 1.5f, 0.25f, 63 / 64.0f};
+    for (int i = 0; i < 4; i++) {
+        char name[32];
+        glAccum(GL_RETURN, values[i]);
+        present();
+        snprintf(name, sizeof name, "rgb565_return%d", i);
+        capi_save_image(name, W, H, 1, CAPI_U16, buffer);
+        const unsigned short *px = buffer;
+        capi_value(name, "%04x %04x %04x %04x", px[1], px[7], px[16], px[30]);
+    }
+    capi_expect_error(GL_NO_ERROR, "rgb565");
+    OSMesaDestroyContext(ctx);
+    free(buffer);
+}
+
 int main(void)
 {
     run(GL_UNSIGNED_BYTE, "u8");
     run(GL_UNSIGNED_SHORT, "u16");
     run(GL_FLOAT, "f32");
+    rgb565();
     no_accum_buffer();
     return capi_finish();
 }

@@ -11,6 +11,9 @@
 //! - GL_RETURN writes every current draw buffer (none for GL_NONE), honouring that draw
 //!   buffer's color mask, with no other fragment operation, no clamping of float buffers
 //!   (Mesa ignores GL_CLAMP_FRAGMENT_COLOR here) and no dithering.
+//!
+//! Still to do when the rest exists: glAccum is a flush point for deferred rendering (it
+//! reads and writes resolved pixels), and Mesa ignores it outside glRenderMode(GL_RENDER).
 use super::Context;
 use crate::api::enums::*;
 use crate::api::types::GLenum;

@@ -449,12 +449,48 @@ pub struct AccumBuffer {
 /// as `cvttss2si` does), then the low 16 bits.
 #[inline]
 pub fn accum_from_f32(value: f32) -> i16 {
-    let wide = if value.is_nan() || !(-2147483648.0..2147483648.0).contains(&value) {
-        i32::MIN
+    // Rust's `as` saturates: NaN gives 0 and values below the range i32::MIN, whose low half
+    // is 0 as with cvttss2si; only values above the range need the explicit 0.
+    let wide = value as i32;
+    if value >= 2147483648.0 {
+        0
     } else {
-        value as i32
-    };
-    wide as i16
+        wide as i16
+    }
+}
+
+/// Magnitude below which [`accum_from_small_f32`] is exact.
+const SMALL_LIMIT: f32 = 4194304.0; // 2²²
+
+/// [`accum_from_f32`] for |value| < 2²², without the saturating conversion that LLVM does
+/// not vectorize on baseline x86-64: adding 1.5 · 2²³ rounds to nearest into the low mantissa
+/// bits, and a rounding away from zero is then undone. (Checked equal to [`accum_from_f32`]
+/// for every such f32.)
+#[inline]
+fn accum_from_small_f32(value: f32) -> i16 {
+    const MAGIC: f32 = 12582912.0;
+    let biased = value + MAGIC;
+    let rounded = (biased.to_bits() as i32).wrapping_sub(MAGIC.to_bits() as i32);
+    let rounded_away = (biased - MAGIC).abs() > value.abs();
+    let toward_zero = if value < 0.0 { 1 } else { -1 };
+    (if rounded_away {
+        rounded + toward_zero
+    } else {
+        rounded
+    }) as i16
+}
+
+/// Stores `convert(src)` into `acc` (GL_LOAD) or adds it, wrapping (GL_ACCUM).
+#[inline]
+fn combine_channels<T: Copy, const ACCUMULATE: bool>(
+    acc: &mut [i16],
+    src: &[T],
+    convert: impl Fn(T) -> i16,
+) {
+    for (a, &c) in acc.iter_mut().zip(src) {
+        let new = convert(c);
+        *a = if ACCUMULATE { a.wrapping_add(new) } else { new };
+    }
 }
 
 /// glClearAccum's value (in [-1, 1]) as stored: Mesa's `FLOAT_TO_SHORT`,
@@ -477,10 +513,19 @@ fn pack_unorm_half_up(value: f32, max: f32) -> u32 {
     (clamped * max + 0.5) as u32
 }
 
-/// Mesa's float → 8-bit unorm packing (`float_to_ubyte`): round to nearest, ties to even.
+/// Mesa's float → 8-bit unorm packing (`float_to_ubyte`): 0 for NaN and values ≤ 0, 255 from
+/// 1 up, else the low byte of the mantissa of `f · 255/256 + 32768`, which is `f · 255` rounded
+/// to nearest even (without a rounding instruction, which x86-64's baseline lacks).
 #[inline]
 fn pack_unorm8(value: f32) -> u8 {
-    float_to_unorm(value, 8) as u8
+    let rounded = (value * (255.0 / 256.0) + 32768.0).to_bits() as u8;
+    if value >= 1.0 {
+        255
+    } else if value > 0.0 {
+        rounded
+    } else {
+        0
+    }
 }
 
 /// Mesa's n-bit unorm → float unpacking: a multiplication by the f32 reciprocal of 2ⁿ − 1.
@@ -493,16 +538,6 @@ const RECIP_255: f32 = 1.0 / 255.0;
 const RECIP_65535: f32 = 1.0 / 65535.0;
 const RECIP_31: f32 = 1.0 / 31.0;
 const RECIP_63: f32 = 1.0 / 63.0;
-
-/// `acc` combined with a new value converted from a color: GL_LOAD replaces, GL_ACCUM adds.
-#[inline]
-fn combine(acc: &mut i16, new: i16, accumulate: bool) {
-    *acc = if accumulate {
-        acc.wrapping_add(new)
-    } else {
-        new
-    };
-}
 
 impl AccumBuffer {
     pub(super) fn new(width: usize, pixels: usize) -> Result<Self, OutOfMemory> {
@@ -544,7 +579,12 @@ impl AccumBuffer {
 
     /// GL_MULT: multiplies every channel of `rect` by `value`, truncating.
     pub fn multiply(&mut self, rect: Rect, value: f32) {
-        self.for_each_channel(rect, |acc| *acc = accum_from_f32(*acc as f32 * value));
+        // |acc · value| ≤ 32768 · |value|.
+        if value.abs() < SMALL_LIMIT / 32768.0 {
+            self.for_each_channel(rect, |acc| *acc = accum_from_small_f32(*acc as f32 * value));
+        } else {
+            self.for_each_channel(rect, |acc| *acc = accum_from_f32(*acc as f32 * value));
+        }
     }
 
     fn for_each_channel(&mut self, rect: Rect, mut f: impl FnMut(&mut i16)) {
@@ -557,87 +597,96 @@ impl AccumBuffer {
 
     /// GL_LOAD (`accumulate` false) or GL_ACCUM (true) over `rect`: the color buffer's pixels
     /// times `value`, stored or added. `color` has the accumulation buffer's width.
+    ///
+    /// Formats without alpha store alpha at its maximum, which reads as exactly 1.0 as Mesa's
+    /// unpackers give (the accumulated alpha of such buffers is never visible anyway).
     pub fn load_from(&mut self, color: &ColorBuffer, rect: Rect, value: f32, accumulate: bool) {
+        if accumulate {
+            self.load::<true>(color, rect, value);
+        } else {
+            self.load::<false>(color, rect, value);
+        }
+    }
+
+    fn load<const ACCUMULATE: bool>(&mut self, color: &ColorBuffer, rect: Rect, value: f32) {
         let scale = value * 32767.0;
-        let width = self.width;
         match &color.pixels {
             ColorPixels::Unorm8(px) => {
                 // 256 possible inputs: convert each once.
                 let table: [i16; 256] = std::array::from_fn(|c| {
                     accum_from_f32(unpack_unorm(c as u32, RECIP_255) * scale)
                 });
-                let alpha = color.format.has_alpha();
-                let opaque = accum_from_f32(scale);
+                self.load_channels::<_, ACCUMULATE>(px, rect, |c| table[c as usize]);
+            }
+            ColorPixels::Unorm16(px) => {
+                // Unpacked colors are in [0, 1].
+                if scale.abs() < SMALL_LIMIT {
+                    self.load_channels::<_, ACCUMULATE>(px, rect, |c| {
+                        accum_from_small_f32(unpack_unorm(c as u32, RECIP_65535) * scale)
+                    })
+                } else {
+                    self.load_channels::<_, ACCUMULATE>(px, rect, |c| {
+                        accum_from_f32(unpack_unorm(c as u32, RECIP_65535) * scale)
+                    })
+                }
+            }
+            ColorPixels::Float32(px) => {
                 for y in rect.y0..rect.y1 {
-                    let range = span(width, y, rect.x0, rect.x1);
-                    for (acc, p) in self.pixels[range.clone()].iter_mut().zip(&px[range]) {
-                        for c in 0..3 {
-                            combine(&mut acc[c], table[p[c] as usize], accumulate);
-                        }
-                        combine(
-                            &mut acc[3],
-                            if alpha { table[p[3] as usize] } else { opaque },
-                            accumulate,
-                        );
+                    let range = span(self.width, y, rect.x0, rect.x1);
+                    let colors = px[range.clone()].as_flattened();
+                    let acc = self.pixels[range].as_flattened_mut();
+                    // Float colors are unbounded: decide per row (NaN takes the general path).
+                    let small = colors
+                        .iter()
+                        .fold(true, |ok, &c| ok & ((c * scale).abs() < SMALL_LIMIT));
+                    if small {
+                        combine_channels::<_, ACCUMULATE>(acc, colors, |c| {
+                            accum_from_small_f32(c * scale)
+                        });
+                    } else {
+                        combine_channels::<_, ACCUMULATE>(acc, colors, |c| {
+                            accum_from_f32(c * scale)
+                        });
                     }
                 }
             }
-            ColorPixels::Unorm16(px) => {
-                let alpha = color.format.has_alpha();
-                self.load_rows(px, rect, accumulate, |p: &[u16; 4]| {
-                    let a = if alpha {
-                        unpack_unorm(p[3] as u32, RECIP_65535)
-                    } else {
-                        1.0
-                    };
-                    [
-                        unpack_unorm(p[0] as u32, RECIP_65535),
-                        unpack_unorm(p[1] as u32, RECIP_65535),
-                        unpack_unorm(p[2] as u32, RECIP_65535),
-                        a,
-                    ]
-                    .map(|f| accum_from_f32(f * scale))
-                });
-            }
-            ColorPixels::Float32(px) => {
-                let alpha = color.format.has_alpha();
-                self.load_rows(px, rect, accumulate, |p: &[f32; 4]| {
-                    [p[0], p[1], p[2], if alpha { p[3] } else { 1.0 }]
-                        .map(|f| accum_from_f32(f * scale))
-                });
-            }
             ColorPixels::Rgb565(px) => {
-                self.load_rows(px, rect, accumulate, |&p: &u16| {
-                    let p = p as u32;
-                    [
-                        unpack_unorm(p >> 11, RECIP_31),
-                        unpack_unorm((p >> 5) & 63, RECIP_63),
-                        unpack_unorm(p & 31, RECIP_31),
-                        1.0,
-                    ]
-                    .map(|f| accum_from_f32(f * scale))
-                });
+                let opaque = accum_from_f32(scale);
+                for y in rect.y0..rect.y1 {
+                    let range = span(self.width, y, rect.x0, rect.x1);
+                    for (acc, &p) in self.pixels[range.clone()].iter_mut().zip(&px[range]) {
+                        let p = p as u32;
+                        let new = [
+                            accum_from_f32(unpack_unorm(p >> 11, RECIP_31) * scale),
+                            accum_from_f32(unpack_unorm((p >> 5) & 63, RECIP_63) * scale),
+                            accum_from_f32(unpack_unorm(p & 31, RECIP_31) * scale),
+                            opaque,
+                        ];
+                        for (a, n) in acc.iter_mut().zip(new) {
+                            *a = if ACCUMULATE { a.wrapping_add(n) } else { n };
+                        }
+                    }
+                }
             }
         }
     }
 
-    /// The rows of `rect` of a color buffer, each pixel converted by `convert`, combined into
-    /// the accumulation buffer.
-    fn load_rows<P>(
+    /// The channels of `rect` of a 4-channel color buffer, each converted by `convert`, stored
+    /// into or added to the accumulation buffer.
+    fn load_channels<T: Copy, const ACCUMULATE: bool>(
         &mut self,
-        px: &[P],
+        px: &[[T; 4]],
         rect: Rect,
-        accumulate: bool,
-        convert: impl Fn(&P) -> [i16; 4],
+        convert: impl Fn(T) -> i16,
     ) {
         for y in rect.y0..rect.y1 {
             let range = span(self.width, y, rect.x0, rect.x1);
-            for (acc, p) in self.pixels[range.clone()].iter_mut().zip(&px[range]) {
-                let new = convert(p);
-                for c in 0..4 {
-                    combine(&mut acc[c], new[c], accumulate);
-                }
-            }
+            let colors = px[range.clone()].as_flattened();
+            combine_channels::<_, ACCUMULATE>(
+                self.pixels[range].as_flattened_mut(),
+                colors,
+                &convert,
+            );
         }
     }
 
@@ -652,47 +701,56 @@ impl AccumBuffer {
             mask[3] && color.format.has_alpha(),
         ];
         match &mut color.pixels {
-            ColorPixels::Unorm8(px) => self.return_rows(px, rect, |p: &mut [u8; 4], acc| {
-                for c in 0..4 {
-                    if mask[c] {
-                        p[c] = pack_unorm8(acc[c] as f32 * scale);
-                    }
-                }
+            ColorPixels::Unorm8(px) => {
+                self.return_channels(px, rect, mask, |a| pack_unorm8(a as f32 * scale))
+            }
+            ColorPixels::Unorm16(px) => self.return_channels(px, rect, mask, |a| {
+                pack_unorm_half_up(a as f32 * scale, 65535.0) as u16
             }),
-            ColorPixels::Unorm16(px) => self.return_rows(px, rect, |p: &mut [u16; 4], acc| {
-                for c in 0..4 {
-                    if mask[c] {
-                        p[c] = pack_unorm_half_up(acc[c] as f32 * scale, 65535.0) as u16;
-                    }
-                }
-            }),
-            ColorPixels::Float32(px) => self.return_rows(px, rect, |p: &mut [f32; 4], acc| {
-                for c in 0..4 {
-                    if mask[c] {
-                        p[c] = acc[c] as f32 * scale;
-                    }
-                }
-            }),
+            ColorPixels::Float32(px) => self.return_channels(px, rect, mask, |a| a as f32 * scale),
             ColorPixels::Rgb565(px) => {
                 let keep: u16 = (if mask[0] { 0 } else { 0xf800 })
                     | (if mask[1] { 0 } else { 0x07e0 })
                     | (if mask[2] { 0 } else { 0x001f });
-                self.return_rows(px, rect, |p: &mut u16, acc| {
-                    let r = pack_unorm_half_up(acc[0] as f32 * scale, 31.0);
-                    let g = pack_unorm_half_up(acc[1] as f32 * scale, 63.0);
-                    let b = pack_unorm_half_up(acc[2] as f32 * scale, 31.0);
-                    *p = (*p & keep) | (pack565(r, g, b) & !keep);
-                })
+                for y in rect.y0..rect.y1 {
+                    let range = span(self.width, y, rect.x0, rect.x1);
+                    for (p, acc) in px[range.clone()].iter_mut().zip(&self.pixels[range]) {
+                        let r = pack_unorm_half_up(acc[0] as f32 * scale, 31.0);
+                        let g = pack_unorm_half_up(acc[1] as f32 * scale, 63.0);
+                        let b = pack_unorm_half_up(acc[2] as f32 * scale, 31.0);
+                        *p = (*p & keep) | (pack565(r, g, b) & !keep);
+                    }
+                }
             }
         }
     }
 
-    /// Runs `store` on every pixel of `rect` of a color buffer with its accumulation value.
-    fn return_rows<P>(&self, px: &mut [P], rect: Rect, store: impl Fn(&mut P, [i16; 4])) {
+    /// Writes `convert(acc)` into the channels of `rect` of a 4-channel color buffer whose
+    /// `mask` entry is true.
+    fn return_channels<T: Copy>(
+        &self,
+        px: &mut [[T; 4]],
+        rect: Rect,
+        mask: [bool; 4],
+        convert: impl Fn(i16) -> T,
+    ) {
+        let all = mask == [true; 4];
         for y in rect.y0..rect.y1 {
             let range = span(self.width, y, rect.x0, rect.x1);
-            for (p, acc) in px[range.clone()].iter_mut().zip(&self.pixels[range]) {
-                store(p, *acc);
+            let accum = &self.pixels[range.clone()];
+            if all {
+                let dst = px[range].as_flattened_mut();
+                for (p, &a) in dst.iter_mut().zip(accum.as_flattened()) {
+                    *p = convert(a);
+                }
+            } else {
+                for (p, a) in px[range].iter_mut().zip(accum) {
+                    for c in 0..4 {
+                        if mask[c] {
+                            p[c] = convert(a[c]);
+                        }
+                    }
+                }
             }
         }
     }
@@ -732,6 +790,35 @@ mod accum_tests {
     }
 
     #[test]
+    fn small_conversion_equals_the_general_one() {
+        // Every 13th f32 below 2²² in magnitude, plus the halves and the edges.
+        let mut bits = 0u32;
+        while bits < SMALL_LIMIT.to_bits() {
+            for v in [f32::from_bits(bits), -f32::from_bits(bits)] {
+                assert_eq!(accum_from_small_f32(v), accum_from_f32(v), "{v:e}");
+            }
+            bits += 13;
+        }
+        for n in -70000..70000 {
+            let v = n as f32 + 0.5;
+            assert_eq!(accum_from_small_f32(v), accum_from_f32(v), "{v}");
+        }
+        let below_limit = f32::from_bits(SMALL_LIMIT.to_bits() - 1);
+        for v in [
+            0.0,
+            -0.0,
+            0.99999994,
+            -0.99999994,
+            32767.5,
+            -32768.5,
+            below_limit,
+            -below_limit,
+        ] {
+            assert_eq!(accum_from_small_f32(v), accum_from_f32(v), "{v}");
+        }
+    }
+
+    #[test]
     fn clear_value_is_mesas_float_to_short() {
         assert_eq!(accum_clear_value(1.0), 32767);
         assert_eq!(accum_clear_value(-1.0), -32768);
@@ -763,6 +850,13 @@ mod accum_tests {
         // Increments below one step truncate to nothing.
         accum.add(whole(3, 2), 1e-5);
         assert_eq!(accum.pixels()[0], [20000, 1000, -12345, 30000]);
+    }
+
+    #[test]
+    fn maximum_channels_unpack_to_exactly_one() {
+        // Formats without alpha rely on this: their stored alpha is the maximum.
+        assert_eq!(unpack_unorm(255, RECIP_255), 1.0);
+        assert_eq!(unpack_unorm(65535, RECIP_65535), 1.0);
     }
 
     #[test]
@@ -867,32 +961,23 @@ mod accum_tests {
         assert_eq!(px[0], pack565(31, 0, 31));
     }
 
-    /// Mesa's `float_to_ubyte`: the mantissa of `f · 255/256 + 32768` (an independent oracle).
-    fn float_to_ubyte_trick(f: f32) -> u8 {
-        if f.is_nan() || f <= 0.0 {
-            0
-        } else if f >= 1.0 {
-            255
-        } else {
-            ((f * (255.0 / 256.0) + 32768.0).to_bits() & 0xff) as u8
-        }
-    }
-
+    /// Mesa's float_to_ubyte trick equals clamping and rounding `f · 255` to nearest even
+    /// (checked here against [`float_to_unorm`], an independent formulation).
     #[test]
-    fn unorm8_packing_equals_mesas_float_to_ubyte() {
+    fn unorm8_packing_rounds_to_nearest_even() {
         // Every 61st float of [0, 1] plus the ties and the edges.
         let mut bits = 0u32;
         while bits <= 1.0f32.to_bits() {
             let f = f32::from_bits(bits);
-            assert_eq!(pack_unorm8(f), float_to_ubyte_trick(f), "{f:e}");
+            assert_eq!(pack_unorm8(f), float_to_unorm(f, 8) as u8, "{f:e}");
             bits += 61;
         }
         for n in 0..255 {
             let tie = (n as f32 + 0.5) / 255.0;
-            assert_eq!(pack_unorm8(tie), float_to_ubyte_trick(tie), "{tie:e}");
+            assert_eq!(pack_unorm8(tie), float_to_unorm(tie, 8) as u8, "{tie:e}");
         }
-        for f in [-1.0, 1.5, f32::NAN, f32::INFINITY, -0.0] {
-            assert_eq!(pack_unorm8(f), float_to_ubyte_trick(f));
+        for f in [-1.0, 1.5, f32::NAN, f32::INFINITY, -0.0, 1.0] {
+            assert_eq!(pack_unorm8(f), float_to_unorm(f, 8) as u8);
         }
     }
 }
