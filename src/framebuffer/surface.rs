@@ -348,11 +348,106 @@ impl DepthStencilBuffer {
 }
 
 /// The accumulation buffer: signed 16-bit normalized RGBA, as Mesa stores it.
+///
+/// The arithmetic reproduces Mesa 22's glAccum (`main/accum.c` on the CPU) bit for bit, because
+/// tessera must give the same pictures; it was measured against llvmpipe OSMesa for every
+/// operation, value range and color format (see `capi-tests/accum.c`):
+/// - values are stored as `i16` with 1.0 ↔ 32767; float → `i16` truncates toward zero through a
+///   32-bit integer and keeps the low 16 bits (x86-64's `cvttss2si` + C's narrowing), so values
+///   beyond ±1 wrap around instead of saturating, and so do sums (`wrapping_add`). The GL
+///   specification leaves results outside [-1, 1] undefined; Mesa's wrap is what programs see.
+/// - color channels are read as Mesa's format unpackers do: `c · (1/(2ⁿ − 1))` in f32 (a
+///   multiplication by the rounded reciprocal, not a division).
+/// - GL_RETURN writes `acc · (value / 32767)` packed as Mesa's format packers do: 8-bit
+///   channels round to nearest (even), 16-bit and 5/6-bit channels add 0.5 and truncate, float
+///   channels store the value unclamped.
 #[derive(Clone, Debug)]
 pub struct AccumBuffer {
     width: usize,
     pixels: Vec<[i16; 4]>,
 }
+
+/// float → accumulation value: truncation through i32 (NaN and out-of-range give `i32::MIN`,
+/// as `cvttss2si` does), then the low 16 bits.
+#[inline]
+pub fn accum_from_f32(value: f32) -> i16 {
+    // Rust's `as` saturates: NaN gives 0 and values below the range i32::MIN, whose low half
+    // is 0 as with cvttss2si; only values above the range need the explicit 0.
+    let wide = value as i32;
+    if value >= 2147483648.0 {
+        0
+    } else {
+        wide as i16
+    }
+}
+
+/// Magnitude below which [`accum_from_small_f32`] is exact.
+const SMALL_LIMIT: f32 = 4194304.0; // 2²²
+
+/// [`accum_from_f32`] for |value| < 2²², without the saturating conversion that LLVM does
+/// not vectorize on baseline x86-64: adding 1.5 · 2²³ rounds to nearest into the low mantissa
+/// bits, and a rounding away from zero is then undone. (Checked equal to [`accum_from_f32`]
+/// for every such f32.)
+#[inline]
+fn accum_from_small_f32(value: f32) -> i16 {
+    const MAGIC: f32 = 12582912.0;
+    let biased = value + MAGIC;
+    let rounded = (biased.to_bits() as i32).wrapping_sub(MAGIC.to_bits() as i32);
+    let rounded_away = (biased - MAGIC).abs() > value.abs();
+    let toward_zero = if value < 0.0 { 1 } else { -1 };
+    (if rounded_away { rounded + toward_zero } else { rounded }) as i16
+}
+
+/// Stores `convert(src)` into `acc` (GL_LOAD) or adds it, wrapping (GL_ACCUM).
+#[inline]
+fn combine_channels<T: Copy, const ACCUMULATE: bool>(acc: &mut [i16], src: &[T], convert: impl Fn(T) -> i16) {
+    for (a, &c) in acc.iter_mut().zip(src) {
+        let new = convert(c);
+        *a = if ACCUMULATE { a.wrapping_add(new) } else { new };
+    }
+}
+
+/// glClearAccum's value (in [-1, 1]) as stored: Mesa's `FLOAT_TO_SHORT`,
+/// `(trunc(65535 · c) − 1) / 2` with C's division (toward zero).
+#[inline]
+pub fn accum_clear_value(value: f32) -> i16 {
+    let scaled = if value.is_nan() { 0 } else { (65535.0 * value.clamp(-1.0, 1.0)) as i32 };
+    ((scaled - 1) / 2) as i16
+}
+
+/// Mesa's float → n-bit unorm packing for 16-bit and 5/6-bit channels (`util_iround` of the
+/// clamped value times 2ⁿ − 1, which adds 0.5 and truncates); NaN gives 0.
+#[inline]
+fn pack_unorm_half_up(value: f32, max: f32) -> u32 {
+    let clamped = if value > 0.0 { value.min(1.0) } else { 0.0 };
+    (clamped * max + 0.5) as u32
+}
+
+/// Mesa's float → 8-bit unorm packing (`float_to_ubyte`): 0 for NaN and values ≤ 0, 255 from
+/// 1 up, else the low byte of the mantissa of `f · 255/256 + 32768`, which is `f · 255` rounded
+/// to nearest even (without a rounding instruction, which x86-64's baseline lacks).
+#[inline]
+fn pack_unorm8(value: f32) -> u8 {
+    let rounded = (value * (255.0 / 256.0) + 32768.0).to_bits() as u8;
+    if value >= 1.0 {
+        255
+    } else if value > 0.0 {
+        rounded
+    } else {
+        0
+    }
+}
+
+/// Mesa's n-bit unorm → float unpacking: a multiplication by the f32 reciprocal of 2ⁿ − 1.
+#[inline]
+fn unpack_unorm(value: u32, reciprocal: f32) -> f32 {
+    value as f32 * reciprocal
+}
+
+const RECIP_255: f32 = 1.0 / 255.0;
+const RECIP_65535: f32 = 1.0 / 65535.0;
+const RECIP_31: f32 = 1.0 / 31.0;
+const RECIP_63: f32 = 1.0 / 63.0;
 
 impl AccumBuffer {
     pub(super) fn new(width: usize, pixels: usize) -> Result<Self, OutOfMemory> {
@@ -374,5 +469,375 @@ impl AccumBuffer {
     /// Index of pixel (x, y).
     pub fn index(&self, x: i32, y: i32) -> usize {
         y as usize * self.width + x as usize
+    }
+
+    /// Sets every pixel of `rect` (already inside the buffer) to `value`.
+    pub fn fill(&mut self, rect: Rect, value: [i16; 4]) {
+        for y in rect.y0..rect.y1 {
+            self.pixels[span(self.width, y, rect.x0, rect.x1)].fill(value);
+        }
+    }
+
+    /// GL_ADD: adds `value · 32767` (truncated) to every channel of `rect`, wrapping.
+    pub fn add(&mut self, rect: Rect, value: f32) {
+        let increment = accum_from_f32(value * 32767.0);
+        self.for_each_channel(rect, |acc| *acc = acc.wrapping_add(increment));
+    }
+
+    /// GL_MULT: multiplies every channel of `rect` by `value`, truncating.
+    pub fn multiply(&mut self, rect: Rect, value: f32) {
+        // |acc · value| ≤ 32768 · |value|.
+        if value.abs() < SMALL_LIMIT / 32768.0 {
+            self.for_each_channel(rect, |acc| *acc = accum_from_small_f32(*acc as f32 * value));
+        } else {
+            self.for_each_channel(rect, |acc| *acc = accum_from_f32(*acc as f32 * value));
+        }
+    }
+
+    fn for_each_channel(&mut self, rect: Rect, mut f: impl FnMut(&mut i16)) {
+        for y in rect.y0..rect.y1 {
+            for pixel in &mut self.pixels[span(self.width, y, rect.x0, rect.x1)] {
+                pixel.iter_mut().for_each(&mut f);
+            }
+        }
+    }
+
+    /// GL_LOAD (`accumulate` false) or GL_ACCUM (true) over `rect`: the color buffer's pixels
+    /// times `value`, stored or added. `color` has the accumulation buffer's width.
+    ///
+    /// Formats without alpha store alpha at its maximum, which reads as exactly 1.0 as Mesa's
+    /// unpackers give (the accumulated alpha of such buffers is never visible anyway).
+    pub fn load_from(&mut self, color: &ColorBuffer, rect: Rect, value: f32, accumulate: bool) {
+        if accumulate {
+            self.load::<true>(color, rect, value);
+        } else {
+            self.load::<false>(color, rect, value);
+        }
+    }
+
+    fn load<const ACCUMULATE: bool>(&mut self, color: &ColorBuffer, rect: Rect, value: f32) {
+        let scale = value * 32767.0;
+        match &color.pixels {
+            ColorPixels::Unorm8(px) => {
+                // 256 possible inputs: convert each once.
+                let table: [i16; 256] =
+                    std::array::from_fn(|c| accum_from_f32(unpack_unorm(c as u32, RECIP_255) * scale));
+                self.load_channels::<_, ACCUMULATE>(px, rect, |c| table[c as usize]);
+            }
+            ColorPixels::Unorm16(px) => {
+                // Unpacked colors are in [0, 1].
+                if scale.abs() < SMALL_LIMIT {
+                    self.load_channels::<_, ACCUMULATE>(px, rect, |c| {
+                        accum_from_small_f32(unpack_unorm(c as u32, RECIP_65535) * scale)
+                    })
+                } else {
+                    self.load_channels::<_, ACCUMULATE>(px, rect, |c| {
+                        accum_from_f32(unpack_unorm(c as u32, RECIP_65535) * scale)
+                    })
+                }
+            }
+            ColorPixels::Float32(px) => {
+                for y in rect.y0..rect.y1 {
+                    let range = span(self.width, y, rect.x0, rect.x1);
+                    let colors = px[range.clone()].as_flattened();
+                    let acc = self.pixels[range].as_flattened_mut();
+                    // Float colors are unbounded: decide per row (NaN takes the general path).
+                    let small = colors.iter().fold(true, |ok, &c| ok & ((c * scale).abs() < SMALL_LIMIT));
+                    if small {
+                        combine_channels::<_, ACCUMULATE>(acc, colors, |c| accum_from_small_f32(c * scale));
+                    } else {
+                        combine_channels::<_, ACCUMULATE>(acc, colors, |c| accum_from_f32(c * scale));
+                    }
+                }
+            }
+            ColorPixels::Rgb565(px) => {
+                let opaque = accum_from_f32(scale);
+                for y in rect.y0..rect.y1 {
+                    let range = span(self.width, y, rect.x0, rect.x1);
+                    for (acc, &p) in self.pixels[range.clone()].iter_mut().zip(&px[range]) {
+                        let p = p as u32;
+                        let new = [
+                            accum_from_f32(unpack_unorm(p >> 11, RECIP_31) * scale),
+                            accum_from_f32(unpack_unorm((p >> 5) & 63, RECIP_63) * scale),
+                            accum_from_f32(unpack_unorm(p & 31, RECIP_31) * scale),
+                            opaque,
+                        ];
+                        for (a, n) in acc.iter_mut().zip(new) {
+                            *a = if ACCUMULATE { a.wrapping_add(n) } else { n };
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    /// The channels of `rect` of a 4-channel color buffer, each converted by `convert`, stored
+    /// into or added to the accumulation buffer.
+    fn load_channels<T: Copy, const ACCUMULATE: bool>(
+        &mut self,
+        px: &[[T; 4]],
+        rect: Rect,
+        convert: impl Fn(T) -> i16,
+    ) {
+        for y in rect.y0..rect.y1 {
+            let range = span(self.width, y, rect.x0, rect.x1);
+            let colors = px[range.clone()].as_flattened();
+            combine_channels::<_, ACCUMULATE>(self.pixels[range].as_flattened_mut(), colors, &convert);
+        }
+    }
+
+    /// GL_RETURN over `rect`: writes `acc · value` into `color`, only the channels whose `mask`
+    /// entry is true. `color` has the accumulation buffer's width.
+    pub fn return_to(&self, color: &mut ColorBuffer, rect: Rect, value: f32, mask: [bool; 4]) {
+        let scale = value / 32767.0;
+        let mask = [mask[0], mask[1], mask[2], mask[3] && color.format.has_alpha()];
+        match &mut color.pixels {
+            ColorPixels::Unorm8(px) => self.return_channels(px, rect, mask, |a| pack_unorm8(a as f32 * scale)),
+            ColorPixels::Unorm16(px) => {
+                self.return_channels(px, rect, mask, |a| pack_unorm_half_up(a as f32 * scale, 65535.0) as u16)
+            }
+            ColorPixels::Float32(px) => self.return_channels(px, rect, mask, |a| a as f32 * scale),
+            ColorPixels::Rgb565(px) => {
+                let keep: u16 = (if mask[0] { 0 } else { 0xf800 })
+                    | (if mask[1] { 0 } else { 0x07e0 })
+                    | (if mask[2] { 0 } else { 0x001f });
+                for y in rect.y0..rect.y1 {
+                    let range = span(self.width, y, rect.x0, rect.x1);
+                    for (p, acc) in px[range.clone()].iter_mut().zip(&self.pixels[range]) {
+                        let r = pack_unorm_half_up(acc[0] as f32 * scale, 31.0);
+                        let g = pack_unorm_half_up(acc[1] as f32 * scale, 63.0);
+                        let b = pack_unorm_half_up(acc[2] as f32 * scale, 31.0);
+                        *p = (*p & keep) | (pack565(r, g, b) & !keep);
+                    }
+                }
+            }
+        }
+    }
+
+    /// Writes `convert(acc)` into the channels of `rect` of a 4-channel color buffer whose
+    /// `mask` entry is true.
+    fn return_channels<T: Copy>(&self, px: &mut [[T; 4]], rect: Rect, mask: [bool; 4], convert: impl Fn(i16) -> T) {
+        let all = mask == [true; 4];
+        for y in rect.y0..rect.y1 {
+            let range = span(self.width, y, rect.x0, rect.x1);
+            let accum = &self.pixels[range.clone()];
+            if all {
+                let dst = px[range].as_flattened_mut();
+                for (p, &a) in dst.iter_mut().zip(accum.as_flattened()) {
+                    *p = convert(a);
+                }
+            } else {
+                for (p, a) in px[range].iter_mut().zip(accum) {
+                    for c in 0..4 {
+                        if mask[c] {
+                            p[c] = convert(a[c]);
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod accum_tests {
+    //! Expected values were computed with Mesa 22's C expressions (and checked against
+    //! llvmpipe OSMesa); they pin the rounding, truncation and wrap-around of every step.
+    use super::*;
+
+    fn whole(width: i32, height: i32) -> Rect {
+        Rect::from_xywh(0, 0, width, height)
+    }
+
+    fn accum_with(values: &[[i16; 4]]) -> AccumBuffer {
+        let mut accum = AccumBuffer::new(values.len(), values.len()).unwrap();
+        accum.pixels_mut().copy_from_slice(values);
+        accum
+    }
+
+    #[test]
+    fn float_to_accum_truncates_and_wraps_like_x86_mesa() {
+        assert_eq!(accum_from_f32(0.99), 0);
+        assert_eq!(accum_from_f32(1.9), 1);
+        assert_eq!(accum_from_f32(-1.9), -1);
+        assert_eq!(accum_from_f32(32767.9), 32767);
+        assert_eq!(accum_from_f32(32768.0), -32768);
+        assert_eq!(accum_from_f32(-32769.0), 32767);
+        assert_eq!(accum_from_f32(98301.0), 32765);
+        assert_eq!(accum_from_f32(2147483520.0), -128);
+        // Outside the i32 range, cvttss2si gives i32::MIN, whose low half is 0.
+        assert_eq!(accum_from_f32(2147483648.0), 0);
+        assert_eq!(accum_from_f32(-1e10), 0);
+        assert_eq!(accum_from_f32(f32::NAN), 0);
+        assert_eq!(accum_from_f32(f32::INFINITY), 0);
+    }
+
+    #[test]
+    fn small_conversion_equals_the_general_one() {
+        // Every 13th f32 below 2²² in magnitude, plus the halves and the edges.
+        let mut bits = 0u32;
+        while bits < SMALL_LIMIT.to_bits() {
+            for v in [f32::from_bits(bits), -f32::from_bits(bits)] {
+                assert_eq!(accum_from_small_f32(v), accum_from_f32(v), "{v:e}");
+            }
+            bits += 13;
+        }
+        for n in -70000..70000 {
+            let v = n as f32 + 0.5;
+            assert_eq!(accum_from_small_f32(v), accum_from_f32(v), "{v}");
+        }
+        let below_limit = f32::from_bits(SMALL_LIMIT.to_bits() - 1);
+        for v in [0.0, -0.0, 0.99999994, -0.99999994, 32767.5, -32768.5, below_limit, -below_limit] {
+            assert_eq!(accum_from_small_f32(v), accum_from_f32(v), "{v}");
+        }
+    }
+
+    #[test]
+    fn clear_value_is_mesas_float_to_short() {
+        assert_eq!(accum_clear_value(1.0), 32767);
+        assert_eq!(accum_clear_value(-1.0), -32768);
+        assert_eq!(accum_clear_value(0.0), 0);
+        assert_eq!(accum_clear_value(0.5), 16383);
+        assert_eq!(accum_clear_value(-0.5), -16384);
+        assert_eq!(accum_clear_value(0.25), 8191);
+        assert_eq!(accum_clear_value(1e-5), 0);
+    }
+
+    #[test]
+    fn fill_add_and_multiply_stay_inside_the_rect() {
+        let mut accum = AccumBuffer::new(3, 6).unwrap();
+        accum.fill(whole(3, 2), [20000, 1000, -12345, 30000]);
+        let inner = Rect::from_xywh(1, 1, 2, 1);
+        accum.add(inner, 0.5);
+        assert_eq!(accum.pixels()[4], [-29153, 17383, 4038, -19153]);
+        accum.fill(whole(3, 2), [20000, 1000, -12345, 30000]);
+        accum.multiply(inner, 0.3);
+        assert_eq!(accum.pixels()[5][1], 300);
+        accum.fill(inner, [1000, -12345, 30000, 7]);
+        accum.multiply(inner, 1.7);
+        assert_eq!(accum.pixels()[4], [1700, -20986, -14536, 11]);
+        accum.multiply(inner, f32::NAN);
+        assert_eq!(accum.pixels()[4], [0; 4]);
+        // Outside the rectangle nothing changed.
+        assert_eq!(accum.pixels()[0], [20000, 1000, -12345, 30000]);
+        assert_eq!(accum.pixels()[3], [20000, 1000, -12345, 30000]);
+        // Increments below one step truncate to nothing.
+        accum.add(whole(3, 2), 1e-5);
+        assert_eq!(accum.pixels()[0], [20000, 1000, -12345, 30000]);
+    }
+
+    #[test]
+    fn maximum_channels_unpack_to_exactly_one() {
+        // Formats without alpha rely on this: their stored alpha is the maximum.
+        assert_eq!(unpack_unorm(255, RECIP_255), 1.0);
+        assert_eq!(unpack_unorm(65535, RECIP_65535), 1.0);
+    }
+
+    #[test]
+    fn load_and_accum_unpack_with_mesas_reciprocals() {
+        let mut color = ColorBuffer::new(ColorFormat::Unorm8 { alpha: true }, 2, 1, 2).unwrap();
+        if let ColorPixels::Unorm8(px) = color.pixels_mut() {
+            px[0] = [128, 0, 255, 254];
+            px[1] = [1, 2, 3, 4];
+        }
+        let mut accum = AccumBuffer::new(2, 2).unwrap();
+        accum.load_from(&color, whole(1, 1), 1.0, false);
+        assert_eq!(accum.pixels()[0], [16447, 0, 32767, 32638]);
+        assert_eq!(accum.pixels()[1], [0; 4], "outside the rectangle");
+        accum.load_from(&color, whole(1, 1), 1.0, true);
+        assert_eq!(accum.pixels()[0], [-32642, 0, -2, -260]);
+        // x · (1/255) rounds differently from x / 255 here: -32515 (Mesa) instead of -32516.
+        accum.load_from(&color, whole(1, 1), 33151.0 / 32767.0, false);
+        assert_eq!(accum.pixels()[0][3], -32515);
+
+        let mut color16 = ColorBuffer::new(ColorFormat::Unorm16 { alpha: false }, 1, 1, 1).unwrap();
+        if let ColorPixels::Unorm16(px) = color16.pixels_mut() {
+            px[0] = [257, 40000, 514, 65535];
+        }
+        let mut accum = AccumBuffer::new(1, 1).unwrap();
+        accum.load_from(&color16, whole(1, 1), 510.0 / 32767.0, false);
+        // 257 · (1/65535) gives 1 where 257 / 65535 would give 2; alpha reads as 1.0.
+        assert_eq!(accum.pixels()[0], [1, 311, 3, 510]);
+
+        let mut color565 = ColorBuffer::new(ColorFormat::Rgb565, 1, 1, 1).unwrap();
+        if let ColorPixels::Rgb565(px) = color565.pixels_mut() {
+            px[0] = pack565(31, 40, 0);
+        }
+        accum.load_from(&color565, whole(1, 1), 1.0, false);
+        assert_eq!(accum.pixels()[0], [32767, 20804, 0, 32767]);
+
+        let mut colorf = ColorBuffer::new(ColorFormat::Float32 { alpha: true }, 1, 1, 1).unwrap();
+        if let ColorPixels::Float32(px) = colorf.pixels_mut() {
+            px[0] = [3.0, -1.11, 1e6, f32::NAN];
+        }
+        accum.load_from(&colorf, whole(1, 1), 1.0, false);
+        assert_eq!(accum.pixels()[0], [32765, 29165, 0, 0]);
+    }
+
+    #[test]
+    fn return_packs_like_mesa_per_format() {
+        let accum = accum_with(&[[16447, 32742, -32768, 16457], [16000, 16000, 16000, 16000]]);
+        let rect = whole(2, 1);
+
+        let mut c8 = ColorBuffer::new(ColorFormat::Unorm8 { alpha: true }, 2, 1, 2).unwrap();
+        accum.return_to(&mut c8, rect, 1.0, [true; 4]);
+        let ColorPixels::Unorm8(px) = c8.pixels() else { unreachable!() };
+        assert_eq!(px[0], [128, 255, 0, 128]);
+
+        let mut c16 = ColorBuffer::new(ColorFormat::Unorm16 { alpha: true }, 2, 1, 2).unwrap();
+        accum.return_to(&mut c16, rect, 0.5, [true; 4]);
+        let ColorPixels::Unorm16(px) = c16.pixels() else { unreachable!() };
+        // 32742.5 rounds up (Mesa adds 0.5 and truncates), not to even.
+        assert_eq!(px[0][1], 32743);
+        accum.return_to(&mut c16, rect, 1.0, [true; 4]);
+        let ColorPixels::Unorm16(px) = c16.pixels() else { unreachable!() };
+        assert_eq!(px[0][3], 32915);
+
+        let mut cf = ColorBuffer::new(ColorFormat::Float32 { alpha: true }, 2, 1, 2).unwrap();
+        accum.return_to(&mut cf, rect, 3.0, [true; 4]);
+        let ColorPixels::Float32(px) = cf.pixels() else { unreachable!() };
+        assert_eq!(px[0][2], -32768.0 * (3.0 / 32767.0));
+        assert_eq!(px[1][0], 16000.0 * (3.0 / 32767.0));
+        assert!(px[1][0] > 1.0, "float buffers are not clamped");
+
+        let mut c565 = ColorBuffer::new(ColorFormat::Rgb565, 2, 1, 2).unwrap();
+        accum.return_to(&mut c565, rect, 1.0, [true; 4]);
+        let ColorPixels::Rgb565(px) = c565.pixels() else { unreachable!() };
+        assert_eq!(px[1], pack565(15, 31, 15));
+    }
+
+    #[test]
+    fn return_honours_the_channel_mask() {
+        let accum = accum_with(&[[32767, 32767, 32767, 32767]]);
+        let mut c8 = ColorBuffer::new(ColorFormat::Unorm8 { alpha: true }, 1, 1, 1).unwrap();
+        c8.clear(whole(1, 1), [0.2, 0.4, 0.6, 0.8], [true; 4]);
+        accum.return_to(&mut c8, whole(1, 1), 1.0, [false, true, false, true]);
+        let ColorPixels::Unorm8(px) = c8.pixels() else { unreachable!() };
+        assert_eq!(px[0], [51, 255, 153, 255]);
+
+        let mut c565 = ColorBuffer::new(ColorFormat::Rgb565, 1, 1, 1).unwrap();
+        accum.return_to(&mut c565, whole(1, 1), 1.0, [true, false, true, true]);
+        let ColorPixels::Rgb565(px) = c565.pixels() else { unreachable!() };
+        assert_eq!(px[0], pack565(31, 0, 31));
+    }
+
+    /// Mesa's float_to_ubyte trick equals clamping and rounding `f · 255` to nearest even
+    /// (checked here against [`float_to_unorm`], an independent formulation).
+    #[test]
+    fn unorm8_packing_rounds_to_nearest_even() {
+        // Every 61st float of [0, 1] plus the ties and the edges.
+        let mut bits = 0u32;
+        while bits <= 1.0f32.to_bits() {
+            let f = f32::from_bits(bits);
+            assert_eq!(pack_unorm8(f), float_to_unorm(f, 8) as u8, "{f:e}");
+            bits += 61;
+        }
+        for n in 0..255 {
+            let tie = (n as f32 + 0.5) / 255.0;
+            assert_eq!(pack_unorm8(tie), float_to_unorm(tie, 8) as u8, "{tie:e}");
+        }
+        for f in [-1.0, 1.5, f32::NAN, f32::INFINITY, -0.0, 1.0] {
+            assert_eq!(pack_unorm8(f), float_to_unorm(f, 8) as u8);
+        }
     }
 }
