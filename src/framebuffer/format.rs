@@ -96,6 +96,15 @@ pub fn float_to_unorm(value: f32, bits: u32) -> u32 {
     (clamped * max).round_ties_even() as u32
 }
 
+/// float → 16-bit unorm as Mesa's clears of 16-bit buffers compute it: the product in single
+/// precision, plus one half, truncated (so a product that rounds to x.5 goes up: 0.3 → 19661,
+/// 0.7 → 45875, where [`float_to_unorm`] gives 19660 and 45874).
+#[inline]
+pub fn float_to_unorm16_half_up(value: f32) -> u16 {
+    let clamped = if value > 0.0 { value.min(1.0) } else { 0.0 };
+    (clamped * 65535.0 + 0.5) as u16
+}
+
 /// n-bit unorm → float, exactly `u / (2ⁿ − 1)` rounded once to f32.
 #[inline]
 pub fn unorm_to_float(value: u32, bits: u32) -> f32 {
@@ -154,6 +163,17 @@ mod tests {
         assert_eq!(depth_to_fixed(0.7, 24), 0xb33332);
         assert_eq!(depth_to_fixed(0.99999, 24), 0xffff57);
         assert_eq!(depth_to_fixed(1.0, 24), 0xffffff);
+    }
+
+    #[test]
+    fn sixteen_bit_clears_round_half_up_in_single_precision() {
+        // Values measured on Mesa 22 after glClearColor(v) of a GL_UNSIGNED_SHORT buffer.
+        assert_eq!(float_to_unorm16_half_up(600.0 / 2000.0), 19661);
+        assert_eq!(float_to_unorm16_half_up(1043.0 / 2000.0), 34177);
+        assert_eq!(float_to_unorm16_half_up(0.7), 45875);
+        assert_eq!(float_to_unorm16_half_up(1.0), 65535);
+        assert_eq!(float_to_unorm16_half_up(-0.5), 0);
+        assert_eq!(float_to_unorm16_half_up(f32::NAN), 0);
     }
 
     #[test]

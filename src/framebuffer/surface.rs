@@ -3,7 +3,8 @@
 //! Rows are stored bottom-up with no padding; pixel (x, y) is at `y * width + x`. Every
 //! allocation goes through [`alloc_filled`] so that running out of memory is an error value.
 use super::format::{
-    depth_to_fixed, float_to_unorm, unorm_max, unorm_to_float, unorm_widen_to_u32, ColorFormat, DepthStencilFormat,
+    depth_to_fixed, float_to_unorm, float_to_unorm16_half_up, unorm_max, unorm_to_float, unorm_widen_to_u32,
+    ColorFormat, DepthStencilFormat,
 };
 use super::{OutOfMemory, Rect};
 
@@ -91,7 +92,7 @@ impl ColorBuffer {
                 fill_masked(px, width, rect, value, mask);
             }
             ColorPixels::Unorm16(px) => {
-                let value = color.map(|c| float_to_unorm(c, 16) as u16);
+                let value = color.map(float_to_unorm16_half_up);
                 fill_masked(px, width, rect, value, mask);
             }
             ColorPixels::Float32(px) => fill_masked(px, width, rect, color, mask),
