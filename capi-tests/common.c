@@ -10,6 +10,20 @@ int capi_is_tessera(void)
     return renderer && strncmp(renderer, "tessera", 7) == 0;
 }
 
+int capi_probe_is_tessera(void)
+{
+    static int answer = -1;
+    if (answer < 0) {
+        static unsigned char pixel[4];
+        OSMesaContext probe = OSMesaCreateContextExt(OSMESA_RGBA, 0, 0, 0, NULL);
+        answer = probe && OSMesaMakeCurrent(probe, pixel, GL_UNSIGNED_BYTE, 1, 1) && capi_is_tessera();
+        OSMesaMakeCurrent(NULL, NULL, 0, 0, 0);
+        if (probe)
+            OSMesaDestroyContext(probe);
+    }
+    return answer;
+}
+
 void capi_check_at(int cond, const char *file, int line, const char *fmt, ...)
 {
     if (cond)
