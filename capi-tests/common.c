@@ -35,6 +35,7 @@ void capi_check_at(int cond, const char *file, int line, const char *fmt, ...)
     vprintf(fmt, ap);
     va_end(ap);
     printf("\n");
+    fflush(stdout); /* keep the line if the program crashes later */
 }
 
 void capi_value(const char *key, const char *fmt, ...)
@@ -45,6 +46,7 @@ void capi_value(const char *key, const char *fmt, ...)
     vprintf(fmt, ap);
     va_end(ap);
     printf("\n");
+    fflush(stdout); /* keep the line if the program crashes later */
 }
 
 void capi_expect_error_at(GLenum expected, const char *what, const char *file, int line)
