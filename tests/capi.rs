@@ -34,6 +34,9 @@ use std::time::Duration;
 /// A test program is killed after this long.
 const TIMEOUT: Duration = Duration::from_secs(60);
 
+/// What tessera prints on stderr when it catches a panic at the API edge (src/api/mod.rs).
+const PANIC_REPORT: &str = "tessera: internal error caught at the API edge";
+
 /// The three runs of every test, the reference first.
 const RUNS: [Implementation; 3] = [Implementation::Mesa, Implementation::Tessera, Implementation::TesseraOneThread];
 
@@ -175,6 +178,11 @@ fn run_test(setup: &Setup, manifest: &Manifest, name: &str) -> Outcome {
     for (run, dir, finished) in &runs {
         if finished.exit != Exit::Code(0) {
             outcome.problems.push(format!("{} run: {} ({})\n{}", run.label(), finished.exit, dir.display(), failure_excerpt(finished)));
+        }
+        // A panic caught at the API edge kept the program alive but is a tessera bug.
+        if *run != Implementation::Mesa && finished.stderr.contains(PANIC_REPORT) {
+            let line = finished.stderr.lines().find(|l| l.contains(PANIC_REPORT)).unwrap_or_default();
+            outcome.problems.push(format!("{} run: {line} (see {}/stderr.txt)", run.label(), dir.display()));
         }
     }
     let (mesa, tessera, one_thread) = (&runs[0], &runs[1], &runs[2]);
