@@ -82,7 +82,9 @@ fn exported_functions(source: &str) -> Vec<String> {
             continue;
         }
         if exported {
-            if let Some(rest) = line.strip_prefix("pub unsafe extern \"C\" fn ").or_else(|| line.strip_prefix("pub extern \"C\" fn ")) {
+            if let Some(rest) =
+                line.strip_prefix("pub unsafe extern \"C\" fn ").or_else(|| line.strip_prefix("pub extern \"C\" fn "))
+            {
                 let name: String = rest.chars().take_while(|c| c.is_alphanumeric() || *c == '_').collect();
                 names.push(name);
             }

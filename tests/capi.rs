@@ -101,7 +101,8 @@ fn check_implementations_are_distinct(setup: &Setup) {
     let source = setup.root.join("tests/capi_support/renderer_probe.c");
     let binary = setup.out.join("bin/renderer_probe");
     std::fs::create_dir_all(binary.parent().unwrap()).unwrap();
-    let (ok, log) = process::output_of(Command::new(CC).arg("-std=c11").arg(&source).arg("-o").arg(&binary).arg("-lOSMesa"));
+    let (ok, log) =
+        process::output_of(Command::new(CC).arg("-std=c11").arg(&source).arg("-o").arg(&binary).arg("-lOSMesa"));
     assert!(ok, "cannot build the renderer probe:\n{log}");
     for run in [Implementation::Mesa, Implementation::Tessera] {
         let dir = setup.out.join("run/renderer_probe").join(run.label());
@@ -118,7 +119,11 @@ fn check_implementations_are_distinct(setup: &Setup) {
             "the {} run loaded the wrong library (GL_RENDERER = `{renderer}`); check LD_LIBRARY_PATH and TESSERA_LIB_DIR",
             run.label()
         );
-        say(&format!("capi: {} renderer: {renderer}", run.label()));
+        let library = match run {
+            Implementation::Mesa => setup.mesa_library.clone(),
+            _ => setup.tessera_lib_dir.join("libOSMesa.so.8"),
+        };
+        say(&format!("capi: {} renderer: {renderer} ({})", run.label(), library.display()));
     }
 }
 
@@ -177,7 +182,13 @@ fn run_test(setup: &Setup, manifest: &Manifest, name: &str) -> Outcome {
 
     for (run, dir, finished) in &runs {
         if finished.exit != Exit::Code(0) {
-            outcome.problems.push(format!("{} run: {} ({})\n{}", run.label(), finished.exit, dir.display(), failure_excerpt(finished)));
+            outcome.problems.push(format!(
+                "{} run: {} ({})\n{}",
+                run.label(),
+                finished.exit,
+                dir.display(),
+                failure_excerpt(finished)
+            ));
         }
         // A panic caught at the API edge kept the program alive but is a tessera bug.
         if *run != Implementation::Mesa && finished.stderr.contains(PANIC_REPORT) {
@@ -222,7 +233,8 @@ fn compile(setup: &Setup, name: &str) -> Result<PathBuf, String> {
 
 /// The FAIL lines of a run and the end of its stderr.
 fn failure_excerpt(finished: &Finished) -> String {
-    let mut lines: Vec<&str> = finished.stdout.lines().filter(|l| l.starts_with("FAIL") || l.contains("check(s) failed")).collect();
+    let mut lines: Vec<&str> =
+        finished.stdout.lines().filter(|l| l.starts_with("FAIL") || l.contains("check(s) failed")).collect();
     let stderr: Vec<&str> = finished.stderr.lines().collect();
     lines.extend(&stderr[stderr.len().saturating_sub(15)..]);
     lines.join("\n")
@@ -243,7 +255,14 @@ fn kept_values<'a>(stdout: &'a str, free: &[String]) -> Vec<&'a str> {
 
 /// Compares the VALUE lines of two runs, ignoring the keys in `free`; returns how many
 /// lines were compared.
-fn compare_values(a: &Finished, b: &Finished, free: &[String], a_name: &str, b_name: &str, problems: &mut Vec<String>) -> usize {
+fn compare_values(
+    a: &Finished,
+    b: &Finished,
+    free: &[String],
+    a_name: &str,
+    b_name: &str,
+    problems: &mut Vec<String>,
+) -> usize {
     let a_lines = kept_values(&a.stdout, free);
     let b_lines = kept_values(&b.stdout, free);
     if a_lines != b_lines {
@@ -276,14 +295,22 @@ fn images_in(dir: &Path) -> Vec<String> {
 }
 
 /// Compares Mesa's and tessera's images; returns a summary of the worst numbers.
-fn compare_images(manifest: &Manifest, test: &str, mesa: &Path, tessera: &Path, failures: &Path, problems: &mut Vec<String>) -> String {
+fn compare_images(
+    manifest: &Manifest,
+    test: &str,
+    mesa: &Path,
+    tessera: &Path,
+    failures: &Path,
+    problems: &mut Vec<String>,
+) -> String {
     let (mesa_names, tessera_names) = (images_in(mesa), images_in(tessera));
     if mesa_names != tessera_names {
         problems.push(format!("the runs saved different images: mesa {mesa_names:?}, tessera {tessera_names:?}"));
     }
     let (mut worst_error, mut worst_psnr, mut bad) = (0.0f64, f64::INFINITY, 0u64);
     for name in mesa_names.iter().filter(|n| tessera_names.contains(n)) {
-        let loaded = (Image::load(&mesa.join(format!("{name}.img"))), Image::load(&tessera.join(format!("{name}.img"))));
+        let loaded =
+            (Image::load(&mesa.join(format!("{name}.img"))), Image::load(&tessera.join(format!("{name}.img"))));
         let (a, b) = match loaded {
             (Ok(a), Ok(b)) => (a, b),
             (Err(e), _) | (_, Err(e)) => {
@@ -386,9 +413,13 @@ fn tessera_header_names(header: &str) -> (Vec<String>, Vec<String>) {
             if (name.starts_with("GL_") || name.starts_with("OSMESA_")) && !macros.contains(&name) {
                 macros.push(name);
             }
-        } else if !line.starts_with(['#', ' ', '\t', '/', '}', '{']) && line.ends_with(");") && !line.starts_with("typedef") {
+        } else if !line.starts_with(['#', ' ', '\t', '/', '}', '{'])
+            && line.ends_with(");")
+            && !line.starts_with("typedef")
+        {
             if let Some(open) = line.find('(') {
-                let name: String = line[..open].chars().rev().take_while(|c| c.is_alphanumeric() || *c == '_').collect();
+                let name: String =
+                    line[..open].chars().rev().take_while(|c| c.is_alphanumeric() || *c == '_').collect();
                 functions.push(name.chars().rev().collect());
             }
         }
@@ -427,7 +458,11 @@ fn abi_tessera_header_agrees_with_system_headers() {
     std::fs::write(&path, coverage).unwrap();
     let (ok, log) = compile_abi(&setup, &path, &[]);
     assert!(ok, "tessera.h declares names the system headers do not ({}):\n{log}", path.display());
-    say(&format!("abi: tessera.h agrees with the system headers ({} functions, {} constants)", functions.len(), macros.len()));
+    say(&format!(
+        "abi: tessera.h agrees with the system headers ({} functions, {} constants)",
+        functions.len(),
+        macros.len()
+    ));
 }
 
 #[test]

@@ -74,7 +74,10 @@ pub extern "C" fn OSMesaCreateContextExt(
 /// # Safety
 /// `attribList` must be NULL or a zero-terminated list of attribute/value pairs.
 #[no_mangle]
-pub unsafe extern "C" fn OSMesaCreateContextAttribs(attribList: *const c_int, sharelist: OSMesaContext) -> OSMesaContext {
+pub unsafe extern "C" fn OSMesaCreateContextAttribs(
+    attribList: *const c_int,
+    sharelist: OSMesaContext,
+) -> OSMesaContext {
     let mut format = OSMESA_RGBA;
     // <GL/osmesa.h>: depth, stencil and accum bits default to 0 here (unlike OSMesaCreateContext).
     let (mut depth, mut stencil, mut accum) = (0, 0, 0);

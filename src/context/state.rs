@@ -253,7 +253,12 @@ pub struct LightingState {
 
 impl Default for LightingState {
     fn default() -> Self {
-        LightingState { enabled: false, lights: [false; MAX_LIGHTS], color_material: false, clamp_vertex_color: GL_TRUE as GLenum }
+        LightingState {
+            enabled: false,
+            lights: [false; MAX_LIGHTS],
+            color_material: false,
+            clamp_vertex_color: GL_TRUE as GLenum,
+        }
     }
 }
 

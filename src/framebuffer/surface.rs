@@ -50,7 +50,9 @@ impl ColorBuffer {
     pub(super) fn new(format: ColorFormat, width: usize, _height: usize, pixels: usize) -> Result<Self, OutOfMemory> {
         // A fresh buffer is black; formats without alpha keep alpha at its maximum.
         let pixels = match format {
-            ColorFormat::Unorm8 { alpha } => ColorPixels::Unorm8(alloc_filled(pixels, [0, 0, 0, if alpha { 0 } else { 255 }])?),
+            ColorFormat::Unorm8 { alpha } => {
+                ColorPixels::Unorm8(alloc_filled(pixels, [0, 0, 0, if alpha { 0 } else { 255 }])?)
+            }
             ColorFormat::Rgb565 => ColorPixels::Rgb565(alloc_filled(pixels, 0)?),
             ColorFormat::Unorm16 { alpha } => {
                 ColorPixels::Unorm16(alloc_filled(pixels, [0, 0, 0, if alpha { 0 } else { 65535 }])?)
@@ -94,7 +96,8 @@ impl ColorBuffer {
             }
             ColorPixels::Float32(px) => fill_masked(px, width, rect, color, mask),
             ColorPixels::Rgb565(px) => {
-                let value = pack565(float_to_unorm(color[0], 5), float_to_unorm(color[1], 6), float_to_unorm(color[2], 5));
+                let value =
+                    pack565(float_to_unorm(color[0], 5), float_to_unorm(color[1], 6), float_to_unorm(color[2], 5));
                 let keep: u16 = (if mask[0] { 0 } else { 0xf800 })
                     | (if mask[1] { 0 } else { 0x07e0 })
                     | (if mask[2] { 0 } else { 0x001f });
@@ -132,10 +135,17 @@ impl ColorBuffer {
         let range = span(self.width, y, x0, x1);
         match &self.pixels {
             ColorPixels::Unorm8(px) => out.extend(px[range].iter().map(|p| p.map(|c| unorm_widen_to_u32(c as u32, 8)))),
-            ColorPixels::Unorm16(px) => out.extend(px[range].iter().map(|p| p.map(|c| unorm_widen_to_u32(c as u32, 16)))),
+            ColorPixels::Unorm16(px) => {
+                out.extend(px[range].iter().map(|p| p.map(|c| unorm_widen_to_u32(c as u32, 16))))
+            }
             ColorPixels::Rgb565(px) => out.extend(px[range].iter().map(|&p| {
                 let p = p as u32;
-                [unorm_widen_to_u32(p >> 11, 5), unorm_widen_to_u32((p >> 5) & 63, 6), unorm_widen_to_u32(p & 31, 5), u32::MAX]
+                [
+                    unorm_widen_to_u32(p >> 11, 5),
+                    unorm_widen_to_u32((p >> 5) & 63, 6),
+                    unorm_widen_to_u32(p & 31, 5),
+                    u32::MAX,
+                ]
             })),
             ColorPixels::Float32(_) => return None,
         }

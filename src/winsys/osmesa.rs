@@ -18,7 +18,6 @@ use crate::framebuffer::{
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex, MutexGuard, OnceLock};
 
-
 /// Channel layout of the caller's buffer.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum PixelLayout {
@@ -272,7 +271,12 @@ impl OsMesaContext {
 
     /// OSMesaPixelStore on this (current) context. `wrap` describes the caller's buffer
     /// for the new row length: the API edge owns that promise.
-    pub fn pixel_store(&self, row_length: Option<usize>, y_up: Option<bool>, wrap: impl FnOnce(*mut u8, usize) -> CallerBuffer) {
+    pub fn pixel_store(
+        &self,
+        row_length: Option<usize>,
+        y_up: Option<bool>,
+        wrap: impl FnOnce(*mut u8, usize) -> CallerBuffer,
+    ) {
         let (row_length, y_up) = {
             let mut store = self.store.lock().unwrap_or_else(|p| p.into_inner());
             if let Some(r) = row_length {

@@ -189,14 +189,25 @@ pub fn write_heat_map(a: &Image, b: &Image, path: &Path) -> Result<(), String> {
             } else {
                 // sqrt spreads small differences (a few LSB) over a visible part of the ramp.
                 let t = (worst / peak).min(1.0).sqrt();
-                data.extend_from_slice(&[(255.0 * (2.0 * t).min(1.0)) as u8, (255.0 * (2.0 * (1.0 - t)).min(1.0)) as u8, 0]);
+                data.extend_from_slice(&[
+                    (255.0 * (2.0 * t).min(1.0)) as u8,
+                    (255.0 * (2.0 * (1.0 - t)).min(1.0)) as u8,
+                    0,
+                ]);
             }
         }
     }
     encode(path, a.width, a.height, png::ColorType::Rgb, png::BitDepth::Eight, &data)
 }
 
-fn encode(path: &Path, w: usize, h: usize, color: png::ColorType, depth: png::BitDepth, data: &[u8]) -> Result<(), String> {
+fn encode(
+    path: &Path,
+    w: usize,
+    h: usize,
+    color: png::ColorType,
+    depth: png::BitDepth,
+    data: &[u8],
+) -> Result<(), String> {
     let file = std::fs::File::create(path).map_err(|e| format!("{}: {e}", path.display()))?;
     let mut encoder = png::Encoder::new(std::io::BufWriter::new(file), w as u32, h as u32);
     encoder.set_color(color);
@@ -277,7 +288,13 @@ mod tests {
         let dir = std::env::temp_dir().join(format!("capi-png-{}", std::process::id()));
         std::fs::create_dir_all(&dir).unwrap();
         // 1x2 image, bottom row red, top row blue: the PNG's first row must be blue.
-        let img = Image { width: 1, height: 2, channels: 3, sample: Sample::U8, samples: vec![255.0, 0.0, 0.0, 0.0, 0.0, 255.0] };
+        let img = Image {
+            width: 1,
+            height: 2,
+            channels: 3,
+            sample: Sample::U8,
+            samples: vec![255.0, 0.0, 0.0, 0.0, 0.0, 255.0],
+        };
         let path = dir.join("a.png");
         write_png(&img, &path).unwrap();
         let decoder = png::Decoder::new(std::io::BufReader::new(std::fs::File::open(&path).unwrap()));

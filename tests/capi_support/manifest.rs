@@ -69,8 +69,15 @@ impl Manifest {
             }
             let mut entry = Entry::default();
             for setting in words {
-                let (key, value) = setting.split_once('=').ok_or_else(|| at(format!("`{setting}` is not key=value")))?;
-                let number = || value.parse::<f64>().ok().filter(|v| !v.is_nan()).ok_or_else(|| at(format!("bad number in `{setting}`")));
+                let (key, value) =
+                    setting.split_once('=').ok_or_else(|| at(format!("`{setting}` is not key=value")))?;
+                let number = || {
+                    value
+                        .parse::<f64>()
+                        .ok()
+                        .filter(|v| !v.is_nan())
+                        .ok_or_else(|| at(format!("bad number in `{setting}`")))
+                };
                 match key {
                     "max_error" => entry.max_error = Some(number()?),
                     "tolerance" => entry.tolerance = Some(number()?),
@@ -141,7 +148,10 @@ mod tests {
             "lines max_error=2 values=a,b   # comment\nlines/wide tolerance=1 bad_pixels=7 min_psnr=40.5\n",
         )
         .unwrap();
-        assert_eq!(m.thresholds("lines", "thin"), Thresholds { max_error: 2.0, tolerance: 2.0, bad_pixels: 0, min_psnr: None });
+        assert_eq!(
+            m.thresholds("lines", "thin"),
+            Thresholds { max_error: 2.0, tolerance: 2.0, bad_pixels: 0, min_psnr: None }
+        );
         assert_eq!(
             m.thresholds("lines", "wide"),
             Thresholds { max_error: 2.0, tolerance: 1.0, bad_pixels: 7, min_psnr: Some(40.5) }

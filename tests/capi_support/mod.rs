@@ -6,7 +6,6 @@
 //! Output that a person must see even when the test harness captures output (the per-test
 //! lines, the SKIPPED banner) goes through [`say`], which writes to the process's stderr
 //! directly instead of through `eprintln!` (which libtest captures).
-#![allow(dead_code)] // each helper is used by some, not all, of the tests in tests/capi.rs
 
 pub mod image;
 pub mod manifest;

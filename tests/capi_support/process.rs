@@ -125,7 +125,12 @@ pub fn run_with_timeout(command: &mut Command, dir: &Path, timeout: Duration) ->
         std::thread::sleep(Duration::from_millis(5));
     };
     let read = |p: &Path| String::from_utf8_lossy(&std::fs::read(p).unwrap_or_default()).into_owned();
-    Ok(Finished { exit, stdout: read(&stdout_path), stderr: read(&stderr_path), seconds: start.elapsed().as_secs_f64() })
+    Ok(Finished {
+        exit,
+        stdout: read(&stdout_path),
+        stderr: read(&stderr_path),
+        seconds: start.elapsed().as_secs_f64(),
+    })
 }
 
 fn exit_of(status: ExitStatus) -> Exit {
