@@ -234,7 +234,7 @@ fn compile(setup: &Setup, name: &str) -> Result<PathBuf, String> {
 /// The FAIL lines of a run and the end of its stderr.
 fn failure_excerpt(finished: &Finished) -> String {
     let mut lines: Vec<&str> =
-        finished.stdout.lines().filter(|l| l.starts_with("FAIL") || l.contains("check(s) failed")).collect();
+        finished.stdout.lines().filter(|l| l.starts_with("FAIL") || l.contains("check(s) failed")).take(20).collect();
     let stderr: Vec<&str> = finished.stderr.lines().collect();
     lines.extend(&stderr[stderr.len().saturating_sub(15)..]);
     lines.join("\n")
@@ -517,4 +517,11 @@ fn header_parser_finds_functions_and_constants() {
     let (functions, macros) = tessera_header_names(header);
     assert_eq!(functions, ["glClear", "glGetString", "OSMesaCreateContext"]);
     assert_eq!(macros, ["GL_A", "GL_B"]);
+}
+
+#[test]
+fn value_lines_keep_order_and_drop_free_keys() {
+    let stdout = "noise\nVALUE a 1 2\nFAIL x\nVALUE b error=0x0\nVALUE a 3\nVALUEx c\n";
+    assert_eq!(value_lines(stdout), [("a", "VALUE a 1 2"), ("b", "VALUE b error=0x0"), ("a", "VALUE a 3")]);
+    assert_eq!(kept_values(stdout, &["a".to_string()]), ["VALUE b error=0x0"]);
 }

@@ -61,10 +61,14 @@ impl Implementation {
 /// The entries of the current `LD_LIBRARY_PATH` that are not tessera directories (the
 /// configured one, or any directory holding a `libtessera.so`).
 fn foreign_library_path(tessera: &Path) -> Vec<PathBuf> {
+    without_tessera(&std::env::var_os("LD_LIBRARY_PATH").unwrap_or_default(), tessera)
+}
+
+/// The entries of the search path `value` that are not tessera directories.
+fn without_tessera(value: &std::ffi::OsStr, tessera: &Path) -> Vec<PathBuf> {
     let canonical = |p: &Path| p.canonicalize().unwrap_or_else(|_| p.to_path_buf());
     let tessera = canonical(tessera);
-    let current = std::env::var_os("LD_LIBRARY_PATH").unwrap_or_default();
-    std::env::split_paths(&current)
+    std::env::split_paths(value)
         .filter(|p| !p.as_os_str().is_empty())
         .filter(|p| canonical(p) != tessera && !p.join("libtessera.so").exists())
         .collect()
@@ -152,5 +156,41 @@ pub fn output_of(command: &mut Command) -> (bool, String) {
             (out.status.success(), text)
         }
         Err(e) => (false, format!("cannot run {command:?}: {e}")),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn run(script: &str, timeout: Duration) -> Finished {
+        let dir = std::env::temp_dir().join(format!("capi-process-{}-{}", std::process::id(), script.len()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let finished = run_with_timeout(Command::new("sh").args(["-c", script]), &dir, timeout).unwrap();
+        std::fs::remove_dir_all(&dir).unwrap();
+        finished
+    }
+
+    #[test]
+    fn reports_exit_codes_signals_output_and_timeouts() {
+        let done = run("echo out; echo err >&2; exit 3", Duration::from_secs(20));
+        assert_eq!((done.exit, done.stdout.as_str(), done.stderr.as_str()), (Exit::Code(3), "out\n", "err\n"));
+        assert_eq!(run("kill -SEGV $$", Duration::from_secs(20)).exit, Exit::Signal(11));
+        let slow = run("sleep 30", Duration::from_millis(200));
+        assert_eq!(slow.exit, Exit::TimedOut);
+        assert!(slow.seconds < 10.0, "the timed-out program was not killed promptly");
+    }
+
+    #[test]
+    fn tessera_directories_leave_the_mesa_search_path() {
+        let dir = std::env::temp_dir().join(format!("capi-ldpath-{}", std::process::id()));
+        let (tessera, marked, other) = (dir.join("release"), dir.join("debug"), dir.join("other"));
+        for d in [&tessera, &marked, &other] {
+            std::fs::create_dir_all(d).unwrap();
+        }
+        std::fs::write(marked.join("libtessera.so"), b"").unwrap();
+        let value = std::env::join_paths([&other, &tessera, &marked, &dir.join("release/../release")]).unwrap();
+        assert_eq!(without_tessera(&value, &tessera), vec![other.clone()]);
+        std::fs::remove_dir_all(&dir).unwrap();
     }
 }
