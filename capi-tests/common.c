@@ -10,6 +10,20 @@ int capi_is_tessera(void)
     return renderer && strncmp(renderer, "tessera", 7) == 0;
 }
 
+int capi_probe_is_tessera(void)
+{
+    static int answer = -1;
+    if (answer < 0) {
+        static unsigned char pixel[4];
+        OSMesaContext probe = OSMesaCreateContextExt(OSMESA_RGBA, 0, 0, 0, NULL);
+        answer = probe && OSMesaMakeCurrent(probe, pixel, GL_UNSIGNED_BYTE, 1, 1) && capi_is_tessera();
+        OSMesaMakeCurrent(NULL, NULL, 0, 0, 0);
+        if (probe)
+            OSMesaDestroyContext(probe);
+    }
+    return answer;
+}
+
 void capi_check_at(int cond, const char *file, int line, const char *fmt, ...)
 {
     if (cond)
@@ -21,6 +35,7 @@ void capi_check_at(int cond, const char *file, int line, const char *fmt, ...)
     vprintf(fmt, ap);
     va_end(ap);
     printf("\n");
+    fflush(stdout); /* keep the line if the program crashes later */
 }
 
 void capi_value(const char *key, const char *fmt, ...)
@@ -31,6 +46,7 @@ void capi_value(const char *key, const char *fmt, ...)
     vprintf(fmt, ap);
     va_end(ap);
     printf("\n");
+    fflush(stdout); /* keep the line if the program crashes later */
 }
 
 void capi_expect_error_at(GLenum expected, const char *what, const char *file, int line)

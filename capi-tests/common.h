@@ -26,6 +26,11 @@ enum capi_type { CAPI_U8 = 1, CAPI_U16 = 2, CAPI_F32 = 4 };
 /* Nonzero when GL_RENDERER starts with "tessera" (needs a current context). */
 int capi_is_tessera(void);
 
+/* As capi_is_tessera(), but needs no current context: it binds a temporary 1x1 context to
+ * find out (once; the answer is cached). Call it while no context of the test is current:
+ * it leaves no context current. For guarding calls that crash Mesa 22 without a context. */
+int capi_probe_is_tessera(void);
+
 /* Records a failed assertion (printed as "FAIL file:line: message") when cond is false. */
 #define capi_check(cond, ...) capi_check_at((cond), __FILE__, __LINE__, __VA_ARGS__)
 void capi_check_at(int cond, const char *file, int line, const char *fmt, ...)

@@ -79,7 +79,8 @@ pub unsafe extern "C" fn OSMesaCreateContextAttribs(
     sharelist: OSMesaContext,
 ) -> OSMesaContext {
     let mut format = OSMESA_RGBA;
-    let (mut depth, mut stencil, mut accum) = (24, 8, 0);
+    // <GL/osmesa.h>: depth, stencil and accum bits default to 0 here (unlike OSMesaCreateContext).
+    let (mut depth, mut stencil, mut accum) = (0, 0, 0);
     let mut profile = OSMESA_COMPAT_PROFILE;
     let (mut major, mut minor) = (1, 0);
     if !attribList.is_null() {

@@ -146,7 +146,6 @@ impl Context {
         }
         let targets = self.draw_targets();
         let color = &self.state.color;
-        let clamp_float = color.clamp_fragment_color == GL_TRUE as GLenum;
         let clear_color = color.clear_color;
         let color_masks = color.color_mask;
         let depth = (self.state.depth.write_mask, self.state.depth.clear);
@@ -161,7 +160,9 @@ impl Context {
             if mask & GL_COLOR_BUFFER_BIT != 0 {
                 for &(slot, index) in &targets {
                     if let Some(buffer) = fb.color_mut(slot) {
-                        let value = if clamp_float || !buffer.format().is_float() {
+                        // ARB_color_buffer_float: fragment color clamping does not apply to
+                        // clears; only fixed-point buffers clamp the clear color (as Mesa).
+                        let value = if !buffer.format().is_float() {
                             clear_color.map(|c| c.clamp(0.0, 1.0))
                         } else {
                             clear_color
