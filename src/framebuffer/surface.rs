@@ -69,6 +69,17 @@ impl ColorBuffer {
         self.format
     }
 
+    /// Rows in the buffer.
+    pub fn height(&self) -> usize {
+        let len = match &self.pixels {
+            ColorPixels::Unorm8(px) => px.len(),
+            ColorPixels::Rgb565(px) => px.len(),
+            ColorPixels::Unorm16(px) => px.len(),
+            ColorPixels::Float32(px) => px.len(),
+        };
+        len.checked_div(self.width).unwrap_or(0)
+    }
+
     pub fn pixels(&self) -> &ColorPixels {
         &self.pixels
     }
@@ -84,6 +95,8 @@ impl ColorBuffer {
             return;
         }
         let has_alpha = self.format.has_alpha();
+        let whole_buffer =
+            rect == Rect::from_xywh(0, 0, self.width as i32, self.height() as i32) && mask.iter().all(|&m| m);
         let mask = [mask[0], mask[1], mask[2], mask[3] && has_alpha];
         let width = self.width;
         match &mut self.pixels {
@@ -92,7 +105,14 @@ impl ColorBuffer {
                 fill_masked(px, width, rect, value, mask);
             }
             ColorPixels::Unorm16(px) => {
-                let value = color.map(float_to_unorm16_half_up);
+                // llvmpipe packs a whole-buffer clear with half-up rounding and draws a partial
+                // (scissored or masked) clear as a quad whose stores round ties to even; both
+                // are "nearest", and matching the reference bit for bit decides which tie wins.
+                let value = if whole_buffer {
+                    color.map(float_to_unorm16_half_up)
+                } else {
+                    color.map(|c| float_to_unorm(c, 16) as u16)
+                };
                 fill_masked(px, width, rect, value, mask);
             }
             ColorPixels::Float32(px) => fill_masked(px, width, rect, color, mask),
@@ -840,5 +860,26 @@ mod accum_tests {
         for f in [-1.0, 1.5, f32::NAN, f32::INFINITY, -0.0, 1.0] {
             assert_eq!(pack_unorm8(f), float_to_unorm(f, 8) as u8);
         }
+    }
+}
+
+#[cfg(test)]
+mod color_tests {
+    use super::*;
+
+    #[test]
+    fn sixteen_bit_clears_break_ties_like_llvmpipe() {
+        // 0.3 · 65535 rounds to 19660.5 in single precision: whole-buffer clears give 19661,
+        // partial (scissored or masked) ones 19660, as measured on Mesa 22 llvmpipe.
+        let format = ColorFormat::Unorm16 { alpha: true };
+        let mut buffer = ColorBuffer::new(format, 4, 4, 16).unwrap();
+        buffer.clear(Rect::from_xywh(0, 0, 4, 4), [0.3; 4], [true; 4]);
+        let ColorPixels::Unorm16(px) = buffer.pixels() else { unreachable!() };
+        assert_eq!(px[0], [19661; 4]);
+        buffer.clear(Rect::from_xywh(0, 0, 2, 2), [0.3; 4], [true; 4]);
+        buffer.clear(Rect::from_xywh(0, 0, 4, 4), [0.3; 4], [true, false, true, true]);
+        let ColorPixels::Unorm16(px) = buffer.pixels() else { unreachable!() };
+        assert_eq!(px[0], [19660; 4]);
+        assert_eq!(px[15], [19660, 19661, 19660, 19660]);
     }
 }
