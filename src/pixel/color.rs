@@ -19,8 +19,12 @@
 //! Where Mesa's intermediates lose precision they are reproduced on purpose, because tessera
 //! must give the same bytes: 16-bit buffers read as packed types of ≤ 8-bit components round
 //! twice (16 → 8 → n bits); 5/6/5 buffers read as anything but 8-bit components go through
-//! float (`c · (1/31)`), so GL_UNSIGNED_INT of 5-bit 1 is 0x08421080, not 0x08421084.
-use super::convert::{float_to_half, float_to_snorm, float_to_unorm, unorm_to_float, unorm_to_unorm};
+//! float (`c · (1/31)`), so GL_UNSIGNED_INT of 5-bit 1 is 0x08421080, not 0x08421084; float
+//! values packed into the packed types round half up, not to even (see [`float_to_field`]);
+//! 8-bit values widen to 10 bits by replication (43 → 172, where 43/255 · 1023 = 172.5), as
+//! Mesa does for GL_RGBA buffers (it rounds correctly for OSMESA_BGRA ones, which tessera's
+//! buffers cannot tell apart).
+use super::convert::{float_to_half, float_to_snorm, float_to_unorm, unorm_max, unorm_to_float, unorm_to_unorm};
 use super::{ClientFormat, ClientType, PackedType};
 use crate::framebuffer::surface::ColorRow;
 use crate::framebuffer::ColorFormat;
@@ -178,8 +182,8 @@ enum Target {
     /// One `size`-byte value per component.
     Array { channels: &'static [usize], size: usize, conv: Converters },
     /// All components in one `bytes`-byte element; `bits`/`shifts` are per RGBA channel
-    /// (unused channels have 0 bits).
-    Packed { bits: [u32; 4], shifts: [u32; 4], bytes: usize },
+    /// (unused channels have 0 bits). `half_up`: how float values round (see [`float_to_field`]).
+    Packed { bits: [u32; 4], shifts: [u32; 4], bytes: usize, half_up: bool },
 }
 
 /// A per-call shortcut that needs no conversion.
@@ -291,9 +295,9 @@ impl ColorPlan {
             },
             Staged::Floats(floats) => match &self.target {
                 Target::Array { conv, .. } => (conv.float_row)(floats, values),
-                Target::Packed { bits, .. } => {
+                Target::Packed { bits, half_up, .. } => {
                     values.clear();
-                    values.extend(floats.iter().map(|p| [0, 1, 2, 3].map(|c| float_to_field(p[c], bits[c]))));
+                    values.extend(floats.iter().map(|p| [0, 1, 2, 3].map(|c| float_to_field(p[c], bits[c], *half_up))));
                 }
             },
         }
@@ -385,15 +389,19 @@ fn refill<T>(buffer: &mut Vec<T>, items: impl Iterator<Item = T>) {
     buffer.extend(items);
 }
 
-/// A float → packed field of `bits` bits (0: unused). Mesa packs float buffers with a blit
-/// that rounds 0.5 up to 1 in 1-bit fields (its CPU conversion would round to even, giving 0);
-/// every other width has no halfway case that the two roundings disagree on.
+/// A float → packed field of `bits` bits (0: unused). Mesa packs float values into the packed
+/// types (other than 8_8_8_8) with gallium's format packers, which round half up
+/// (`(int)(x · max + 0.5)` in single precision) where its other conversions round half to even:
+/// 0.3 is 4.5 of 4 bits and packs as 5, 0.5 packs as 1 in a 1-bit field.
 #[inline]
-fn float_to_field(value: f32, bits: u32) -> u32 {
-    match bits {
-        0 => 0,
-        1 => (value >= 0.5) as u32,
-        _ => float_to_unorm(value, bits),
+fn float_to_field(value: f32, bits: u32, half_up: bool) -> u32 {
+    if bits == 0 {
+        0
+    } else if half_up {
+        // NaN passes the clamp and `as` makes it 0, as the C conversion leaves it.
+        (clamp01(value) * unorm_max(bits) as f32 + 0.5) as u32
+    } else {
+        float_to_unorm(value, bits)
     }
 }
 
@@ -441,7 +449,8 @@ fn packed_target(packed: PackedType, channels: &[usize]) -> Target {
         bits[channel] = b;
         shifts[channel] = s;
     }
-    Target::Packed { bits, shifts, bytes: packed.bytes() }
+    let half_up = !matches!(packed, PackedType::UnsignedInt8888 | PackedType::UnsignedInt8888Rev);
+    Target::Packed { bits, shifts, bytes: packed.bytes(), half_up }
 }
 
 /// For 8-bit stages: every 8-bit input converted, per channel.
@@ -649,6 +658,30 @@ mod tests {
         let out =
             read(RGBA16, row, ClientFormat::Rgba, ClientType::Packed(PackedType::UnsignedInt1010102), false, false);
         assert_eq!(words32(&out), [1]);
+    }
+
+    #[test]
+    fn floats_pack_half_up_except_into_8888() {
+        use PackedType::*;
+        // 0.3 · 15 and 0.7 · 15 are 4.5 and 10.5 in single precision; measured on Mesa 22.
+        let px = [[0.3, 0.7, 0.5, 2.5 / 255.0]];
+        let row = ColorRow::Float32(&px);
+        let p = |ty| read(RGBAF, row, ClientFormat::Rgba, ClientType::Packed(ty), true, false);
+        assert_eq!(words16(&p(UnsignedShort4444)), [0x5b80]);
+        assert_eq!(words16(&p(UnsignedShort5551)), [(9 << 11) | (22 << 6) | (16 << 1)]);
+        // 8_8_8_8 rounds to even: 76.5 → 76, 178.5 → 178, 2.5 → 2.
+        assert_eq!(words32(&p(UnsignedInt8888)), [0x4cb2_8002]);
+        // 16-bit 19763 is 308.5 of 10 bits through float: 309.
+        let px = [[19763, 0, 0, 0]];
+        let out = read(
+            RGBA16,
+            ColorRow::Unorm16(&px),
+            ClientFormat::Rgba,
+            ClientType::Packed(UnsignedInt1010102),
+            false,
+            false,
+        );
+        assert_eq!(words32(&out), [309 << 22]);
     }
 
     #[test]
