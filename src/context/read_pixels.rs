@@ -1,12 +1,13 @@
 //! glReadPixels and glPixelStore.
 //!
 //! glReadPixels validates as Mesa 22 does, in Mesa's order (the specification leaves the
-//! order open): inside glBegin/glEnd, then a negative size (GL_INVALID_VALUE), then a missing
-//! source buffer for the format's kind (color read buffer GL_NONE, no depth buffer, no stencil
-//! buffer: GL_INVALID_OPERATION), then the format/type pair (GL_INVALID_ENUM, or
-//! GL_INVALID_OPERATION for a packed type of the wrong component count and for
-//! GL_UNSIGNED_INT_24_8 with anything but GL_DEPTH_STENCIL), then GL_DEPTH_STENCIL without a
-//! stencil buffer and GL_COLOR_INDEX (no color-index buffers exist). An unknown `format` is
+//! order open): inside glBegin/glEnd, then a negative size (GL_INVALID_VALUE), then no depth
+//! buffer for depth formats or no stencil buffer for GL_STENCIL_INDEX (GL_INVALID_OPERATION),
+//! then the format/type pair (GL_INVALID_ENUM, or GL_INVALID_OPERATION for a packed type of
+//! the wrong component count and for GL_UNSIGNED_INT_24_8 with anything but
+//! GL_DEPTH_STENCIL), then the read buffer GL_NONE for color formats, GL_DEPTH_STENCIL
+//! without a stencil buffer and GL_COLOR_INDEX (no color-index buffers exist), all
+//! GL_INVALID_OPERATION. An unknown `format` is
 //! GL_INVALID_ENUM at once (GL_INVALID_OPERATION with a packed type, whose rule Mesa checks
 //! first): Mesa 22 looks for a stencil buffer first and reports GL_INVALID_OPERATION when
 //! there is none, which the specification does not allow.
@@ -111,11 +112,6 @@ fn check_format_and_type(format: ReadFormat, ty: GLenum) -> Result<ClientType, G
     }
     // Every remaining type is an array type, which every remaining format accepts.
     Ok(ty)
-}
-
-/// The source layers a format reads.
-fn needs_color(format: ReadFormat) -> bool {
-    matches!(format, ReadFormat::Client(f) if f.is_color())
 }
 
 /// What one glReadPixels call reads, after validation and clipping.
@@ -274,12 +270,13 @@ impl Context {
         };
         let layers = self.config().visual.depth_stencil;
         let (depth_bits, stencil_bits) = (layers.depth_bits(), layers.stencil_bits());
-        let source_missing = match read_format {
-            _ if needs_color(read_format) => self.current_read_slot().is_none(),
+        let layer_missing = match read_format {
             ReadFormat::Client(ClientFormat::DepthComponent | ClientFormat::DepthStencil) => depth_bits == 0,
-            _ => stencil_bits == 0,
+            // Mesa looks GL_COLOR_INDEX up as a stencil format here; it fails later anyway.
+            ReadFormat::Client(ClientFormat::StencilIndex) | ReadFormat::ColorIndex => stencil_bits == 0,
+            _ => false,
         };
-        if source_missing {
+        if layer_missing {
             self.error(GL_INVALID_OPERATION);
             return None;
         }
@@ -292,6 +289,7 @@ impl Context {
         };
         let client_format = match read_format {
             ReadFormat::Client(ClientFormat::DepthStencil) if stencil_bits == 0 => None,
+            ReadFormat::Client(f) if f.is_color() && self.current_read_slot().is_none() => None,
             ReadFormat::Client(f) => Some(f),
             ReadFormat::ColorIndex => None,
         };
@@ -455,7 +453,7 @@ mod tests {
         assert_eq!(read(&mut ctx, [0, 0, 1, 1], GL_RGBA, GL_HALF_FLOAT, &mut buf), GL_NO_ERROR);
         ctx.read_buffer(GL_NONE);
         assert_eq!(read(&mut ctx, [0, 0, 0, 1], GL_RGBA, GL_UNSIGNED_BYTE, &mut buf), GL_INVALID_OPERATION);
-        assert_eq!(read(&mut ctx, [0, 0, 1, 1], GL_RGBA, 0x1234, &mut buf), GL_INVALID_OPERATION);
+        assert_eq!(read(&mut ctx, [0, 0, 1, 1], GL_RGBA, 0x1234, &mut buf), GL_INVALID_ENUM);
         ctx.inside_begin_end = true;
         assert_eq!(read(&mut ctx, [0, 0, -1, 1], GL_RGBA, GL_UNSIGNED_BYTE, &mut buf), GL_INVALID_OPERATION);
 

@@ -36,10 +36,8 @@ enum Stage {
     Unorm8,
     /// 16-bit values as stored.
     Unorm16,
-    /// Float values as stored.
+    /// Float values as stored (clamped, if at all, by the conversion).
     Float,
-    /// Float values clamped to [0, 1].
-    FloatClamped,
     /// 16-bit values narrowed to 8 bits first.
     Unorm16To8,
     /// 16-bit values as floats.
@@ -52,8 +50,10 @@ enum Stage {
     Luminance { clamp: bool },
 }
 
-/// A client scalar type's conversions, returning the value's bit pattern in the low bytes.
+/// A client scalar type: its size and conversions, which return the value's bit pattern in
+/// the low `SIZE` bytes.
 trait Scalar {
+    const SIZE: usize;
     fn from_unorm(value: u32, bits: u32) -> u32;
     fn from_float(value: f32) -> u32;
 }
@@ -68,6 +68,7 @@ struct F32;
 struct F16;
 
 impl Scalar for U8 {
+    const SIZE: usize = 1;
     fn from_unorm(value: u32, bits: u32) -> u32 {
         unorm_to_unorm(value, bits, 8)
     }
@@ -77,6 +78,7 @@ impl Scalar for U8 {
 }
 
 impl Scalar for I8 {
+    const SIZE: usize = 1;
     fn from_unorm(value: u32, bits: u32) -> u32 {
         unorm_to_unorm(value, bits, 7)
     }
@@ -86,6 +88,7 @@ impl Scalar for I8 {
 }
 
 impl Scalar for U16 {
+    const SIZE: usize = 2;
     fn from_unorm(value: u32, bits: u32) -> u32 {
         unorm_to_unorm(value, bits, 16)
     }
@@ -95,6 +98,7 @@ impl Scalar for U16 {
 }
 
 impl Scalar for I16 {
+    const SIZE: usize = 2;
     fn from_unorm(value: u32, bits: u32) -> u32 {
         unorm_to_unorm(value, bits, 15)
     }
@@ -104,6 +108,7 @@ impl Scalar for I16 {
 }
 
 impl Scalar for U32 {
+    const SIZE: usize = 4;
     fn from_unorm(value: u32, bits: u32) -> u32 {
         unorm_to_unorm(value, bits, 32)
     }
@@ -113,6 +118,7 @@ impl Scalar for U32 {
 }
 
 impl Scalar for I32 {
+    const SIZE: usize = 4;
     fn from_unorm(value: u32, bits: u32) -> u32 {
         unorm_to_unorm(value, bits, 31)
     }
@@ -122,6 +128,7 @@ impl Scalar for I32 {
 }
 
 impl Scalar for F32 {
+    const SIZE: usize = 4;
     fn from_unorm(value: u32, bits: u32) -> u32 {
         unorm_to_float(value, bits).to_bits()
     }
@@ -131,6 +138,7 @@ impl Scalar for F32 {
 }
 
 impl Scalar for F16 {
+    const SIZE: usize = 2;
     fn from_unorm(value: u32, bits: u32) -> u32 {
         float_to_half(unorm_to_float(value, bits)) as u32
     }
@@ -139,48 +147,50 @@ impl Scalar for F16 {
     }
 }
 
-/// The conversions of one client scalar type, as plain function pointers chosen per call.
+/// Converts and stores a row of 16-bit pixels, the components named by the channel list.
+type ShortEmitter = fn(&[[u16; 4]], &[usize], &mut [u8]);
+/// Converts and stores a row of float pixels.
+type FloatEmitter = fn(&[[f32; 4]], &[usize], &mut [u8]);
+
+/// The conversions of one array type, as function pointers chosen once per call (each a
+/// loop monomorphized for the type, the byte order and the clamping).
 #[derive(Clone, Copy)]
-struct Converters {
+struct ArrayConversions {
+    size: usize,
     unorm: fn(u32, u32) -> u32,
-    unorm16_row: fn(&[[u16; 4]], &mut Vec<[u32; 4]>),
-    float_row: fn(&[[f32; 4]], &mut Vec<[u32; 4]>),
+    shorts: ShortEmitter,
+    floats: FloatEmitter,
 }
 
-fn unorm16_row<T: Scalar>(src: &[[u16; 4]], out: &mut Vec<[u32; 4]>) {
-    out.clear();
-    out.extend(src.iter().map(|p| p.map(|c| T::from_unorm(c as u32, 16))));
+fn array_conversions_of<T: Scalar>(swap: bool, clamp: bool) -> ArrayConversions {
+    let shorts: ShortEmitter = if swap { emit_shorts::<T, true> } else { emit_shorts::<T, false> };
+    let floats: FloatEmitter = match (swap, clamp) {
+        (false, false) => emit_floats::<T, false, false>,
+        (false, true) => emit_floats::<T, false, true>,
+        (true, false) => emit_floats::<T, true, false>,
+        (true, true) => emit_floats::<T, true, true>,
+    };
+    ArrayConversions { size: T::SIZE, unorm: T::from_unorm, shorts, floats }
 }
 
-fn float_row<T: Scalar>(src: &[[f32; 4]], out: &mut Vec<[u32; 4]>) {
-    out.clear();
-    out.extend(src.iter().map(|p| p.map(T::from_float)));
-}
-
-fn converters<T: Scalar>() -> Converters {
-    Converters { unorm: T::from_unorm, unorm16_row: unorm16_row::<T>, float_row: float_row::<T> }
-}
-
-/// The conversions of an array (non-packed) client type.
-fn array_converters(ty: ClientType) -> Option<(Converters, usize)> {
+fn array_conversions(ty: ClientType, swap: bool, clamp: bool) -> Option<ArrayConversions> {
     Some(match ty {
-        ClientType::UnsignedByte => (converters::<U8>(), 1),
-        ClientType::Byte => (converters::<I8>(), 1),
-        ClientType::UnsignedShort => (converters::<U16>(), 2),
-        ClientType::Short => (converters::<I16>(), 2),
-        ClientType::UnsignedInt => (converters::<U32>(), 4),
-        ClientType::Int => (converters::<I32>(), 4),
-        ClientType::Float => (converters::<F32>(), 4),
-        ClientType::HalfFloat => (converters::<F16>(), 2),
+        ClientType::UnsignedByte => array_conversions_of::<U8>(swap, clamp),
+        ClientType::Byte => array_conversions_of::<I8>(swap, clamp),
+        ClientType::UnsignedShort => array_conversions_of::<U16>(swap, clamp),
+        ClientType::Short => array_conversions_of::<I16>(swap, clamp),
+        ClientType::UnsignedInt => array_conversions_of::<U32>(swap, clamp),
+        ClientType::Int => array_conversions_of::<I32>(swap, clamp),
+        ClientType::Float => array_conversions_of::<F32>(swap, clamp),
+        ClientType::HalfFloat => array_conversions_of::<F16>(swap, clamp),
         _ => return None,
     })
 }
 
 /// What one pixel becomes.
-#[derive(Clone)]
 enum Target {
-    /// One `size`-byte value per component.
-    Array { channels: &'static [usize], size: usize, conv: Converters },
+    /// One value per component, in the order of `channels`.
+    Array { channels: &'static [usize], conv: ArrayConversions },
     /// All components in one `bytes`-byte element; `bits`/`shifts` are per RGBA channel
     /// (unused channels have 0 bits). `half_up`: how float values round (see [`float_to_field`]).
     Packed { bits: [u32; 4], shifts: [u32; 4], bytes: usize, half_up: bool },
@@ -189,8 +199,12 @@ enum Target {
 /// A per-call shortcut that needs no conversion.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Shortcut {
-    /// The 8-bit row's bytes, reordered by `order` (RGBA, BGRA, RGB, BGR).
-    Bytes { order: [usize; 4], count: usize },
+    /// The 8-bit row's bytes as they are.
+    Rgba8,
+    /// The 8-bit row with red and blue exchanged.
+    Bgra8,
+    /// The 8-bit row's first three bytes, in this order.
+    Rgb8([usize; 3]),
     /// The row's values in native byte order, as stored (16-bit RGBA, float RGBA, 5_6_5).
     Native,
 }
@@ -200,7 +214,6 @@ enum Shortcut {
 pub struct ColorScratch {
     bytes: Vec<[u8; 4]>,
     floats: Vec<[f32; 4]>,
-    values: Vec<[u32; 4]>,
 }
 
 /// How to pack every row of one glReadPixels call.
@@ -229,18 +242,18 @@ impl ColorPlan {
         if channels.is_empty() {
             return None;
         }
+        let luminance = matches!(format, ClientFormat::Luminance | ClientFormat::LuminanceAlpha);
+        // Only values straight from a float buffer may still need clamping here: luminance
+        // clamps itself, every other stage is within [0, 1].
+        let clamp_floats = clamp && !luminance && source.is_float();
         let target = match ty {
             ClientType::Packed(packed) if packed.accepts(format) => packed_target(packed, channels),
-            _ => {
-                let (conv, size) = array_converters(ty)?;
-                Target::Array { channels, size, conv }
-            }
+            _ => Target::Array { channels, conv: array_conversions(ty, swap_bytes, clamp_floats)? },
         };
         let packed_bits = match &target {
             Target::Packed { bits, .. } => bits.iter().copied().max(),
             Target::Array { .. } => None,
         };
-        let luminance = matches!(format, ClientFormat::Luminance | ClientFormat::LuminanceAlpha);
         let stage = if luminance {
             Stage::Luminance { clamp }
         } else {
@@ -251,7 +264,6 @@ impl ColorPlan {
                     Some(bits) if bits <= 8 => Stage::Unorm16To8,
                     Some(_) => Stage::Unorm16ToFloat,
                 },
-                ColorFormat::Float32 { .. } if clamp => Stage::FloatClamped,
                 ColorFormat::Float32 { .. } => Stage::Float,
                 ColorFormat::Rgb565 => match packed_bits {
                     None if ty == ClientType::UnsignedByte => Stage::Rgb565To8,
@@ -260,7 +272,8 @@ impl ColorPlan {
                 },
             }
         };
-        let shortcut = if swap_bytes && ty.element_bytes() > 1 { None } else { shortcut(stage, format, ty) };
+        let shortcut =
+            if swap_bytes && ty.element_bytes() > 1 { None } else { shortcut(stage, format, ty, clamp_floats) };
         let eight_bit = matches!(stage, Stage::Unorm8 | Stage::Unorm16To8 | Stage::Rgb565To8);
         let table = (eight_bit && shortcut.is_none()).then(|| eight_bit_table(&target));
         Some(ColorPlan { stage, target, shortcut, swap_bytes, table })
@@ -269,7 +282,7 @@ impl ColorPlan {
     /// Bytes one pixel takes in client memory.
     pub fn pixel_bytes(&self) -> usize {
         match &self.target {
-            Target::Array { channels, size, .. } => channels.len() * size,
+            Target::Array { channels, conv } => channels.len() * conv.size,
             Target::Packed { bytes, .. } => *bytes,
         }
     }
@@ -279,32 +292,43 @@ impl ColorPlan {
         if let Some(shortcut) = self.shortcut {
             return copy_row(shortcut, row, out);
         }
-        let values = &mut scratch.values;
-        match self.stage_row(row, &mut scratch.bytes, &mut scratch.floats) {
-            Staged::Bytes(bytes) => {
-                let Some(table) = &self.table else { return };
-                values.clear();
-                values.extend(bytes.iter().map(|p| {
-                    [table[0][p[0] as usize], table[1][p[1] as usize], table[2][p[2] as usize], table[3][p[3] as usize]]
-                }));
-            }
-            Staged::Shorts(shorts) => match &self.target {
-                Target::Array { conv, .. } => (conv.unorm16_row)(shorts, values),
-                // 16-bit stages are only chosen for array types.
-                Target::Packed { .. } => return,
+        let swap = self.swap_bytes;
+        match (self.stage_row(row, &mut scratch.bytes, &mut scratch.floats), &self.target, &self.table) {
+            (Staged::Bytes(px), Target::Array { channels, conv }, Some(table)) => match (conv.size, swap) {
+                (1, _) => emit_table::<1, false>(px, table, channels, out),
+                (2, false) => emit_table::<2, false>(px, table, channels, out),
+                (2, true) => emit_table::<2, true>(px, table, channels, out),
+                (_, false) => emit_table::<4, false>(px, table, channels, out),
+                (_, true) => emit_table::<4, true>(px, table, channels, out),
             },
-            Staged::Floats(floats) => match &self.target {
-                Target::Array { conv, .. } => (conv.float_row)(floats, values),
-                Target::Packed { bits, half_up, .. } => {
-                    values.clear();
-                    values.extend(floats.iter().map(|p| [0, 1, 2, 3].map(|c| float_to_field(p[c], bits[c], *half_up))));
+            (Staged::Bytes(px), Target::Packed { shifts, bytes, .. }, Some(table)) => match (*bytes, swap) {
+                (1, _) => emit_packed_table::<1, false>(px, table, shifts, out),
+                (2, false) => emit_packed_table::<2, false>(px, table, shifts, out),
+                (2, true) => emit_packed_table::<2, true>(px, table, shifts, out),
+                (_, false) => emit_packed_table::<4, false>(px, table, shifts, out),
+                (_, true) => emit_packed_table::<4, true>(px, table, shifts, out),
+            },
+            (Staged::Shorts(px), Target::Array { channels, conv }, _) => (conv.shorts)(px, channels, out),
+            (Staged::Floats(px), Target::Array { channels, conv }, _) => (conv.floats)(px, channels, out),
+            (Staged::Floats(px), Target::Packed { bits, shifts, bytes, half_up }, _) => {
+                let fields = |p: &[f32; 4]| {
+                    let field = |c: usize| float_to_field(p[c], bits[c], *half_up) << shifts[c];
+                    field(0) | field(1) | field(2) | field(3)
+                };
+                match (*bytes, swap) {
+                    (1, _) => emit_words::<1, false>(px, fields, out),
+                    (2, false) => emit_words::<2, false>(px, fields, out),
+                    (2, true) => emit_words::<2, true>(px, fields, out),
+                    (_, false) => emit_words::<4, false>(px, fields, out),
+                    (_, true) => emit_words::<4, true>(px, fields, out),
                 }
-            },
+            }
+            // Other pairs are never planned.
+            _ => {}
         }
-        self.store(values, out);
     }
 
-    /// Step 1: the row as the conversion sees it.
+    /// The row as the conversion sees it.
     fn stage_row<'a>(
         &self,
         row: ColorRow<'a>,
@@ -315,10 +339,6 @@ impl ColorPlan {
             (Stage::Unorm8, ColorRow::Unorm8(px)) => Staged::Bytes(px),
             (Stage::Unorm16, ColorRow::Unorm16(px)) => Staged::Shorts(px),
             (Stage::Float, ColorRow::Float32(px)) => Staged::Floats(px),
-            (Stage::FloatClamped, ColorRow::Float32(px)) => {
-                refill(floats, px.iter().map(|p| p.map(clamp01)));
-                Staged::Floats(floats)
-            }
             (Stage::Unorm16To8, ColorRow::Unorm16(px)) => {
                 refill(bytes, px.iter().map(|p| p.map(|c| unorm_to_unorm(c as u32, 16, 8) as u8)));
                 Staged::Bytes(bytes)
@@ -352,26 +372,6 @@ impl ColorPlan {
             }
             // The plan was made for another buffer format: nothing sensible to write.
             _ => Staged::Floats(&[]),
-        }
-    }
-
-    /// Step 3: converted values → client bytes.
-    fn store(&self, values: &[[u32; 4]], out: &mut [u8]) {
-        match &self.target {
-            Target::Array { channels, size, .. } => match (*size, self.swap_bytes) {
-                (1, _) => store_array::<1, false>(values, channels, out),
-                (2, false) => store_array::<2, false>(values, channels, out),
-                (2, true) => store_array::<2, true>(values, channels, out),
-                (_, false) => store_array::<4, false>(values, channels, out),
-                (_, true) => store_array::<4, true>(values, channels, out),
-            },
-            Target::Packed { shifts, bytes, .. } => match (*bytes, self.swap_bytes) {
-                (1, _) => store_packed::<1, false>(values, shifts, out),
-                (2, false) => store_packed::<2, false>(values, shifts, out),
-                (2, true) => store_packed::<2, true>(values, shifts, out),
-                (_, false) => store_packed::<4, false>(values, shifts, out),
-                (_, true) => store_packed::<4, true>(values, shifts, out),
-            },
         }
     }
 }
@@ -453,7 +453,7 @@ fn packed_target(packed: PackedType, channels: &[usize]) -> Target {
     Target::Packed { bits, shifts, bytes: packed.bytes(), half_up }
 }
 
-/// For 8-bit stages: every 8-bit input converted, per channel.
+/// For 8-bit stages: every 8-bit input converted, per channel (packed: the field value).
 fn eight_bit_table(target: &Target) -> Box<[[u32; 256]; 4]> {
     let mut table = Box::new([[0u32; 256]; 4]);
     for (channel, entries) in table.iter_mut().enumerate() {
@@ -469,16 +469,15 @@ fn eight_bit_table(target: &Target) -> Box<[[u32; 256]; 4]> {
 }
 
 /// The shortcut for reads that need no conversion, if any.
-fn shortcut(stage: Stage, format: ClientFormat, ty: ClientType) -> Option<Shortcut> {
+fn shortcut(stage: Stage, format: ClientFormat, ty: ClientType, clamp_floats: bool) -> Option<Shortcut> {
     use ClientFormat::*;
     match (stage, format, ty) {
-        (Stage::Unorm8, Rgba, ClientType::UnsignedByte) => Some(Shortcut::Bytes { order: [0, 1, 2, 3], count: 4 }),
-        (Stage::Unorm8, Bgra, ClientType::UnsignedByte) => Some(Shortcut::Bytes { order: [2, 1, 0, 3], count: 4 }),
-        (Stage::Unorm8, Rgb, ClientType::UnsignedByte) => Some(Shortcut::Bytes { order: [0, 1, 2, 0], count: 3 }),
-        (Stage::Unorm8, Bgr, ClientType::UnsignedByte) => Some(Shortcut::Bytes { order: [2, 1, 0, 0], count: 3 }),
-        (Stage::Unorm16, Rgba, ClientType::UnsignedShort) | (Stage::Float, Rgba, ClientType::Float) => {
-            Some(Shortcut::Native)
-        }
+        (Stage::Unorm8, Rgba, ClientType::UnsignedByte) => Some(Shortcut::Rgba8),
+        (Stage::Unorm8, Bgra, ClientType::UnsignedByte) => Some(Shortcut::Bgra8),
+        (Stage::Unorm8, Rgb, ClientType::UnsignedByte) => Some(Shortcut::Rgb8([0, 1, 2])),
+        (Stage::Unorm8, Bgr, ClientType::UnsignedByte) => Some(Shortcut::Rgb8([2, 1, 0])),
+        (Stage::Unorm16, Rgba, ClientType::UnsignedShort) => Some(Shortcut::Native),
+        (Stage::Float, Rgba, ClientType::Float) if !clamp_floats => Some(Shortcut::Native),
         (Stage::Rgb565To8, Rgb, ClientType::Packed(PackedType::UnsignedShort565)) => Some(Shortcut::Native),
         _ => None,
     }
@@ -487,15 +486,16 @@ fn shortcut(stage: Stage, format: ClientFormat, ty: ClientType) -> Option<Shortc
 /// Performs a shortcut.
 fn copy_row(shortcut: Shortcut, row: ColorRow<'_>, out: &mut [u8]) {
     match (shortcut, row) {
-        (Shortcut::Bytes { order: [0, 1, 2, 3], count: 4 }, ColorRow::Unorm8(px)) => {
-            out.copy_from_slice(px.as_flattened());
-        }
-        (Shortcut::Bytes { order, count: 4 }, ColorRow::Unorm8(px)) => {
+        (Shortcut::Rgba8, ColorRow::Unorm8(px)) => out.copy_from_slice(px.as_flattened()),
+        (Shortcut::Bgra8, ColorRow::Unorm8(px)) => {
             for (o, p) in out.chunks_exact_mut(4).zip(px) {
-                o.copy_from_slice(&[p[order[0]], p[order[1]], p[order[2]], p[order[3]]]);
+                // Exchange bytes 0 and 2 of the pixel as one word.
+                let v = u32::from_le_bytes(*p);
+                let swapped = (v & 0xff00_ff00) | ((v & 0xff) << 16) | ((v >> 16) & 0xff);
+                o.copy_from_slice(&swapped.to_le_bytes());
             }
         }
-        (Shortcut::Bytes { order, .. }, ColorRow::Unorm8(px)) => {
+        (Shortcut::Rgb8(order), ColorRow::Unorm8(px)) => {
             for (o, p) in out.chunks_exact_mut(3).zip(px) {
                 o.copy_from_slice(&[p[order[0]], p[order[1]], p[order[2]]]);
             }
@@ -529,20 +529,65 @@ fn put<const SIZE: usize, const SWAP: bool>(out: &mut [u8], value: u32) {
     }
 }
 
-fn store_array<const SIZE: usize, const SWAP: bool>(values: &[[u32; 4]], channels: &[usize], out: &mut [u8]) {
-    let pixel = channels.len() * SIZE;
-    for (o, v) in out.chunks_exact_mut(pixel).zip(values) {
-        for (slot, &channel) in o.chunks_exact_mut(SIZE).zip(channels) {
-            put::<SIZE, SWAP>(slot, v[channel]);
+/// `put` for a scalar type's size (the match folds away once `T` is known).
+#[inline(always)]
+fn put_scalar<T: Scalar, const SWAP: bool>(out: &mut [u8], value: u32) {
+    match T::SIZE {
+        1 => put::<1, SWAP>(out, value),
+        2 => put::<2, SWAP>(out, value),
+        _ => put::<4, SWAP>(out, value),
+    }
+}
+
+fn emit_shorts<T: Scalar, const SWAP: bool>(src: &[[u16; 4]], channels: &[usize], out: &mut [u8]) {
+    for (o, p) in out.chunks_exact_mut(channels.len() * T::SIZE).zip(src) {
+        for (slot, &c) in o.chunks_exact_mut(T::SIZE).zip(channels) {
+            put_scalar::<T, SWAP>(slot, T::from_unorm(p[c] as u32, 16));
         }
     }
 }
 
-fn store_packed<const SIZE: usize, const SWAP: bool>(values: &[[u32; 4]], shifts: &[u32; 4], out: &mut [u8]) {
-    for (o, v) in out.chunks_exact_mut(SIZE).zip(values) {
-        // Unused channels hold 0, so their (zero) shift adds nothing.
-        let word = (v[0] << shifts[0]) | (v[1] << shifts[1]) | (v[2] << shifts[2]) | (v[3] << shifts[3]);
+fn emit_floats<T: Scalar, const SWAP: bool, const CLAMP: bool>(src: &[[f32; 4]], channels: &[usize], out: &mut [u8]) {
+    for (o, p) in out.chunks_exact_mut(channels.len() * T::SIZE).zip(src) {
+        for (slot, &c) in o.chunks_exact_mut(T::SIZE).zip(channels) {
+            let v = if CLAMP { clamp01(p[c]) } else { p[c] };
+            put_scalar::<T, SWAP>(slot, T::from_float(v));
+        }
+    }
+}
+
+fn emit_table<const SIZE: usize, const SWAP: bool>(
+    src: &[[u8; 4]],
+    table: &[[u32; 256]; 4],
+    channels: &[usize],
+    out: &mut [u8],
+) {
+    for (o, p) in out.chunks_exact_mut(channels.len() * SIZE).zip(src) {
+        for (slot, &c) in o.chunks_exact_mut(SIZE).zip(channels) {
+            put::<SIZE, SWAP>(slot, table[c][p[c] as usize]);
+        }
+    }
+}
+
+fn emit_packed_table<const SIZE: usize, const SWAP: bool>(
+    src: &[[u8; 4]],
+    table: &[[u32; 256]; 4],
+    shifts: &[u32; 4],
+    out: &mut [u8],
+) {
+    for (o, p) in out.chunks_exact_mut(SIZE).zip(src) {
+        // Unused channels' table entries are 0, so their (zero) shift adds nothing.
+        let word = (table[0][p[0] as usize] << shifts[0])
+            | (table[1][p[1] as usize] << shifts[1])
+            | (table[2][p[2] as usize] << shifts[2])
+            | (table[3][p[3] as usize] << shifts[3]);
         put::<SIZE, SWAP>(o, word);
+    }
+}
+
+fn emit_words<const SIZE: usize, const SWAP: bool>(src: &[[f32; 4]], word: impl Fn(&[f32; 4]) -> u32, out: &mut [u8]) {
+    for (o, p) in out.chunks_exact_mut(SIZE).zip(src) {
+        put::<SIZE, SWAP>(o, word(p));
     }
 }
 

@@ -25,6 +25,21 @@ pub const fn unorm_max(bits: u32) -> u32 {
     }
 }
 
+/// Rounds to the nearest integer, ties to even (as `rintf` in the default rounding mode).
+/// Adding 2²³ leaves no fraction bits, so the addition itself rounds; beyond 2²³ every float
+/// is an integer already. (`f32::round_ties_even` is a library call without SSE4.1.) NaN
+/// stays NaN.
+#[inline]
+pub fn round_even(value: f32) -> f32 {
+    const MAGIC: f32 = 8_388_608.0;
+    let magnitude = value.abs();
+    if magnitude < MAGIC {
+        ((magnitude + MAGIC) - MAGIC).copysign(value)
+    } else {
+        value
+    }
+}
+
 /// Mesa's `_mesa_unorm_to_unorm`: replication when widening (the `EXTEND_NORMALIZED_INT`
 /// formula), rounding division when narrowing.
 #[inline]
@@ -61,9 +76,14 @@ pub fn float_to_unorm(value: f32, bits: u32) -> u32 {
     } else if value > 1.0 {
         unorm_max(bits)
     } else {
-        let scaled = (value * unorm_max(bits) as f32).round_ties_even();
-        // `as u64` maps NaN to 0 as Mesa's conversion does (its low bits are zero).
-        (scaled as u64).min(unorm_max(bits) as u64) as u32
+        let scaled = round_even(value * unorm_max(bits) as f32);
+        // `as` maps NaN to 0 as Mesa's conversion does (its low bits are zero). Below 2³¹ the
+        // cheaper signed conversion is exact.
+        if bits < 31 {
+            scaled as i32 as u32
+        } else {
+            (scaled as u64).min(unorm_max(bits) as u64) as u32
+        }
     }
 }
 
@@ -76,7 +96,7 @@ pub fn float_to_snorm(value: f32, bits: u32) -> i32 {
     } else if value > 1.0 {
         max
     } else {
-        let scaled = (value * max as f32).round_ties_even() as i64;
+        let scaled = round_even(value * max as f32) as i64;
         scaled.clamp(i32::MIN as i64, max as i64) as i32
     }
 }
@@ -155,7 +175,7 @@ pub mod depth_pack {
     /// `CLAMPED_FLOAT_TO_USHORT`: rounds half to even.
     #[inline]
     pub fn to_u16(d: f32) -> u16 {
-        (d * 65535.0).round_ties_even() as i64 as u16
+        super::round_even(d * 65535.0) as i64 as u16
     }
 
     /// `FLOAT_TO_SHORT`: `(trunc(65535·d) − 1) / 2`.
@@ -234,6 +254,14 @@ mod tests {
         assert_eq!(float_to_snorm(0.5, 8), 64);
         assert_eq!(float_to_snorm(-2.0, 8), -127);
         assert_eq!(float_to_snorm(-1.0, 16), -32767);
+    }
+
+    #[test]
+    fn round_even_matches_the_library() {
+        for v in [0.5f32, 1.5, 2.5, -2.5, 2.4999998, 8_388_607.5, 8_388_609.0, 1e10, -0.3, 0.0, 65534.5, 3.5e-30] {
+            assert_eq!(round_even(v).to_bits(), v.round_ties_even().to_bits(), "{v}");
+        }
+        assert!(round_even(f32::NAN).is_nan());
     }
 
     #[test]

@@ -35,7 +35,12 @@ pub fn pack_depth_row(values: &[u32], bits: u32, ty: ClientType, swap: bool, out
     }
     let d = |v: u32| depth_to_float(v, bits);
     match ty {
-        ClientType::UnsignedInt if !swap => each(values, out, false, |v| unorm_widen_to_u32(v, bits).to_ne_bytes()),
+        ClientType::UnsignedInt if !swap => match bits {
+            // Bit replication, specialized for the common widths.
+            16 => each(values, out, false, |v| ((v << 16) | v).to_ne_bytes()),
+            24 => each(values, out, false, |v| ((v << 8) | (v >> 16)).to_ne_bytes()),
+            _ => each(values, out, false, |v| unorm_widen_to_u32(v, bits).to_ne_bytes()),
+        },
         ClientType::UnsignedInt => each(values, out, true, |v| depth_pack::to_u32(d(v)).to_ne_bytes()),
         ClientType::UnsignedByte => each(values, out, false, |v| [depth_pack::to_u8(d(v))]),
         ClientType::Byte => each(values, out, false, |v| depth_pack::to_i8(d(v)).to_ne_bytes()),
@@ -82,14 +87,18 @@ pub fn pack_stencil_bitmap_row(values: &[u8], first_bit: usize, lsb_first: bool,
 /// Packs one row of depth (n-bit) and stencil values as GL_DEPTH_STENCIL /
 /// GL_UNSIGNED_INT_24_8: depth in the high 24 bits, stencil in the low 8.
 pub fn pack_depth_stencil_row(depth: &[u32], bits: u32, stencil: &[u8], swap: bool, out: &mut [u8]) {
-    for ((o, &z), &s) in out.chunks_exact_mut(4).zip(depth).zip(stencil) {
-        let word = if swap {
-            // Mesa's general path (taken when swapping): through float, truncated.
-            (depth_pack::to_u24(depth_to_float(z, bits)) << 8) | s as u32
-        } else {
-            (unorm_widen_to_u32(z, bits) & 0xffff_ff00) | s as u32
-        };
-        put(o, word.to_ne_bytes(), swap);
+    fn each(depth: &[u32], stencil: &[u8], out: &mut [u8], swap: bool, word: impl Fn(u32, u8) -> u32) {
+        for ((o, &z), &s) in out.chunks_exact_mut(4).zip(depth).zip(stencil) {
+            put(o, word(z, s).to_ne_bytes(), swap);
+        }
+    }
+    if swap {
+        // Mesa's general path (taken when swapping): through float, truncated.
+        each(depth, stencil, out, true, |z, s| (depth_pack::to_u24(depth_to_float(z, bits)) << 8) | s as u32);
+    } else if bits == 24 {
+        each(depth, stencil, out, false, |z, s| (z << 8) | s as u32);
+    } else {
+        each(depth, stencil, out, false, |z, s| (unorm_widen_to_u32(z, bits) & 0xffff_ff00) | s as u32);
     }
 }
 
