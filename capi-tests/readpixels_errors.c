@@ -11,7 +11,8 @@
  *  - GL_STENCIL_INDEX/GL_BITMAP: Mesa 22 never returns; tessera packs the bits as the
  *    specification lays them out (checked on tessera only);
  *  - 3-component OSMesa buffers (GL_RGB): Mesa 22 renders them wrongly; tessera reads alpha as
- *    1 (checked on tessera only). */
+ *    1 (checked on tessera only);
+ *  - a NULL destination: tessera writes nothing (Mesa would write through it). */
 #define GL_GLEXT_PROTOTYPES
 #include "common.h"
 #include <math.h>
@@ -316,6 +317,21 @@ static void rgb_buffers(void)
     }
 }
 
+/* A NULL destination (no pixel buffer object exists) writes nothing and is not an error on
+ * tessera; Mesa 22 would write through it (checked on tessera only). */
+static void null_destination(void)
+{
+    void *fb;
+    OSMesaContext ctx = capi_make_context(GL_RGBA, GL_UNSIGNED_BYTE, 24, 8, 0, 4, 4, &fb);
+    if (capi_is_tessera()) {
+        glReadPixels(0, 0, 4, 4, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+        glReadPixels(0, 0, 4, 4, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, NULL);
+        check_no_error("NULL destination");
+    }
+    OSMesaDestroyContext(ctx);
+    free(fb);
+}
+
 int main(void)
 {
     state_errors();
@@ -323,5 +339,6 @@ int main(void)
     float_buffer_differences();
     stencil_bitmaps();
     rgb_buffers();
+    null_destination();
     return capi_finish();
 }
