@@ -6236,6 +6236,12 @@ void glReadBuffer(GLenum mode);
 
 void glAccum(GLenum op, GLfloat value);
 
+void glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, GLenum type_, GLvoid *pixels);
+
+void glPixelStorei(GLenum pname, GLint param);
+
+void glPixelStoref(GLenum pname, GLfloat param);
+
 void glEnable(GLenum cap);
 
 void glDisable(GLenum cap);

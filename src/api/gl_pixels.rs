@@ -1,1 +1,40 @@
 //! Entry points for glReadPixels and glPixelStore.
+use super::types::*;
+use super::with_context;
+
+/// # Safety
+/// `pixels` must point to client memory laid out as the pack parameters describe for a
+/// `width` × `height` image of `format`/`type` (GL's contract for glReadPixels); only the
+/// bytes of the pixels inside the framebuffer are written. NULL writes nothing.
+#[no_mangle]
+pub unsafe extern "C" fn glReadPixels(
+    x: GLint,
+    y: GLint,
+    width: GLsizei,
+    height: GLsizei,
+    format: GLenum,
+    type_: GLenum,
+    pixels: *mut GLvoid,
+) {
+    with_context((), |ctx| {
+        ctx.read_pixels(x, y, width, height, format, type_, |span| {
+            if pixels.is_null() {
+                return None;
+            }
+            // SAFETY: the context computed `span` from the pack parameters as the bytes of
+            // the client image that the clipped read writes; by glReadPixels' contract the
+            // caller's image holds them, and nothing else accesses that memory during the call.
+            Some(unsafe { std::slice::from_raw_parts_mut((pixels as *mut u8).add(span.start), span.len()) })
+        })
+    })
+}
+
+#[no_mangle]
+pub extern "C" fn glPixelStorei(pname: GLenum, param: GLint) {
+    with_context((), |ctx| ctx.pixel_store(pname, param))
+}
+
+#[no_mangle]
+pub extern "C" fn glPixelStoref(pname: GLenum, param: GLfloat) {
+    with_context((), |ctx| ctx.pixel_store_f(pname, param))
+}

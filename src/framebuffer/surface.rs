@@ -219,6 +219,45 @@ impl ColorBuffer {
     }
 }
 
+/// Pixels `[x0, x1)` of one row of a color buffer, borrowed in the buffer's own format: the
+/// exact values, for readers that convert them once (glReadPixels).
+#[derive(Clone, Copy, Debug)]
+pub enum ColorRow<'a> {
+    Unorm8(&'a [[u8; 4]]),
+    /// r in bits 11..16, g in 5..11, b in 0..5.
+    Rgb565(&'a [u16]),
+    Unorm16(&'a [[u16; 4]]),
+    Float32(&'a [[f32; 4]]),
+}
+
+impl ColorRow<'_> {
+    pub fn len(&self) -> usize {
+        match self {
+            ColorRow::Unorm8(px) => px.len(),
+            ColorRow::Rgb565(px) => px.len(),
+            ColorRow::Unorm16(px) => px.len(),
+            ColorRow::Float32(px) => px.len(),
+        }
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+}
+
+impl ColorBuffer {
+    /// Borrows pixels `[x0, x1)` of row `y` (inside the buffer).
+    pub fn row(&self, y: i32, x0: i32, x1: i32) -> ColorRow<'_> {
+        let range = span(self.width, y, x0, x1);
+        match &self.pixels {
+            ColorPixels::Unorm8(px) => ColorRow::Unorm8(&px[range]),
+            ColorPixels::Rgb565(px) => ColorRow::Rgb565(&px[range]),
+            ColorPixels::Unorm16(px) => ColorRow::Unorm16(&px[range]),
+            ColorPixels::Float32(px) => ColorRow::Float32(&px[range]),
+        }
+    }
+}
+
 /// Fills `rect` of a 4-channel buffer with `value`, channel-masked.
 fn fill_masked<T: Copy>(px: &mut [[T; 4]], width: usize, rect: Rect, value: [T; 4], mask: [bool; 4]) {
     let all = mask.iter().all(|&m| m);
