@@ -120,6 +120,15 @@ pub fn depth_to_fixed(depth: f64, bits: u32) -> u32 {
     (clamped * max).round_ties_even() as u32
 }
 
+/// Window-space depth of a fragment (single precision, in [0, 1]) → n-bit depth value:
+/// the product in single precision, rounded to nearest with ties to even, as llvmpipe's
+/// depth stores compute it. NaN becomes 0.
+#[inline]
+pub fn fragment_depth_to_fixed(z: f32, bits: u32) -> u32 {
+    let clamped = if z > 0.0 { z.min(1.0) } else { 0.0 };
+    (clamped * unorm_max(bits) as f32).round_ties_even() as u32
+}
+
 /// Widens an n-bit unorm value to 32 bits by bit replication (exact rounding of the ratio).
 #[inline]
 pub fn unorm_widen_to_u32(value: u32, bits: u32) -> u32 {
@@ -174,6 +183,16 @@ mod tests {
         assert_eq!(float_to_unorm16_half_up(1.0), 65535);
         assert_eq!(float_to_unorm16_half_up(-0.5), 0);
         assert_eq!(float_to_unorm16_half_up(f32::NAN), 0);
+    }
+
+    #[test]
+    fn fragment_depth_rounds_the_single_precision_product_to_even() {
+        assert_eq!(fragment_depth_to_fixed(0.5, 16), 0x8000);
+        assert_eq!(fragment_depth_to_fixed(1.0, 24), 0xff_ffff);
+        assert_eq!(fragment_depth_to_fixed(-1.0, 24), 0);
+        assert_eq!(fragment_depth_to_fixed(f32::NAN, 16), 0);
+        // 0.1f · 65535 = 6553.5 exactly in single precision: ties go to the even 6554.
+        assert_eq!(fragment_depth_to_fixed(0.1, 16), 0x199a);
     }
 
     #[test]

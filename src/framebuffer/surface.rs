@@ -3,8 +3,8 @@
 //! Rows are stored bottom-up with no padding; pixel (x, y) is at `y * width + x`. Every
 //! allocation goes through [`alloc_filled`] so that running out of memory is an error value.
 use super::format::{
-    depth_to_fixed, float_to_unorm, float_to_unorm16_half_up, unorm_max, unorm_to_float, unorm_widen_to_u32,
-    ColorFormat, DepthStencilFormat,
+    depth_to_fixed, float_to_unorm, float_to_unorm16_half_up, fragment_depth_to_fixed, unorm_max, unorm_to_float,
+    unorm_widen_to_u32, ColorFormat, DepthStencilFormat,
 };
 use super::{OutOfMemory, Rect};
 
@@ -117,8 +117,14 @@ impl ColorBuffer {
             }
             ColorPixels::Float32(px) => fill_masked(px, width, rect, color, mask),
             ColorPixels::Rgb565(px) => {
-                let value =
-                    pack565(float_to_unorm(color[0], 5), float_to_unorm(color[1], 6), float_to_unorm(color[2], 5));
+                // A partial clear is drawn by llvmpipe, whose 5/6-bit stores take the top bits
+                // of the 8-bit conversion (0.992 green: 253 >> 2 = 63, not round(62.496)).
+                let value = if whole_buffer {
+                    pack565(float_to_unorm(color[0], 5), float_to_unorm(color[1], 6), float_to_unorm(color[2], 5))
+                } else {
+                    let c8 = color.map(|c| float_to_unorm(c, 8));
+                    pack565(c8[0] >> 3, c8[1] >> 2, c8[2] >> 3)
+                };
                 let keep: u16 = (if mask[0] { 0 } else { 0xf800 })
                     | (if mask[1] { 0 } else { 0x07e0 })
                     | (if mask[2] { 0 } else { 0x001f });
@@ -336,7 +342,18 @@ impl DepthStencilBuffer {
         if bits == 0 || rect.is_empty() {
             return;
         }
-        let value = depth_to_fixed(depth, bits);
+        let rows = self.len().checked_div(self.width).unwrap_or(0);
+        let whole_buffer = rect == Rect::from_xywh(0, 0, self.width as i32, rows as i32);
+        // llvmpipe packs a whole-buffer clear from the double-precision depth, and draws a
+        // partial (scissored) clear as a quad at NDC depth 2d − 1, which the viewport maps
+        // back in single precision before the fragment depth store: 0.1 clears a 16-bit
+        // buffer to 0x199a, a scissored part of it to 0x1999 (matches Mesa on 4082 samples).
+        let value = if whole_buffer {
+            depth_to_fixed(depth, bits)
+        } else {
+            let ndc = depth as f32 * 2.0 - 1.0;
+            fragment_depth_to_fixed(ndc * 0.5 + 0.5, bits)
+        };
         let width = self.width;
         for y in rect.y0..rect.y1 {
             let r = span(width, y, rect.x0, rect.x1);
@@ -350,6 +367,16 @@ impl DepthStencilBuffer {
                 DepthStencilPixels::Depth32(px, _) => px[r].fill(value),
                 DepthStencilPixels::None => {}
             }
+        }
+    }
+
+    /// Pixels in the buffer.
+    fn len(&self) -> usize {
+        match &self.pixels {
+            DepthStencilPixels::None => 0,
+            DepthStencilPixels::Depth16(px) => px.len(),
+            DepthStencilPixels::Packed24(px) => px.len(),
+            DepthStencilPixels::Depth32(px, _) => px.len(),
         }
     }
 
@@ -905,6 +932,26 @@ mod accum_tests {
 #[cfg(test)]
 mod color_tests {
     use super::*;
+
+    #[test]
+    fn partial_clears_convert_as_llvmpipe_draws_them() {
+        // Values measured on Mesa 22 llvmpipe (capi-tests/clear_conversions.c sweeps them all).
+        let mut rgb = ColorBuffer::new(ColorFormat::Rgb565, 4, 4, 16).unwrap();
+        rgb.clear(Rect::from_xywh(0, 0, 4, 4), [0.008, 0.992, 0.004, 1.0], [true; 4]);
+        let ColorPixels::Rgb565(px) = rgb.pixels() else { unreachable!() };
+        assert_eq!(px[0] & 0x07e0, 62 << 5);
+        rgb.clear(Rect::from_xywh(0, 0, 2, 2), [0.008, 0.992, 0.004, 1.0], [true; 4]);
+        let ColorPixels::Rgb565(px) = rgb.pixels() else { unreachable!() };
+        assert_eq!(px[0] & 0x07e0, 63 << 5);
+
+        let mut depth = DepthStencilBuffer::new(DepthStencilFormat::Depth16, 4, 16).unwrap();
+        depth.clear_depth(Rect::from_xywh(0, 0, 4, 4), 0.1);
+        let mut row = Vec::new();
+        depth.read_depth_row(0, 0, 1, &mut row);
+        depth.clear_depth(Rect::from_xywh(0, 0, 2, 2), 0.1);
+        depth.read_depth_row(0, 0, 1, &mut row);
+        assert_eq!(row, vec![0x199a, 0x1999]);
+    }
 
     #[test]
     fn sixteen_bit_clears_break_ties_like_llvmpipe() {
