@@ -110,27 +110,19 @@ impl Context {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::context::ContextConfig;
     use crate::framebuffer::surface::ColorPixels;
-    use crate::framebuffer::{ColorFormat, ColorSlot, DepthStencilFormat, Drawable, Framebuffer, FramebufferConfig};
-    use std::sync::{Arc, Mutex};
+    use crate::framebuffer::{ColorFormat, ColorSlot, DepthStencilFormat, FramebufferConfig};
 
     const W: i32 = 4;
     const H: i32 = 2;
 
     fn context(accum_bits: u32) -> Context {
-        let config = FramebufferConfig {
-            color: ColorFormat::Unorm8 { alpha: true },
-            double_buffered: false,
-            stereo: false,
-            aux_buffers: 0,
-            depth_stencil: DepthStencilFormat::None,
+        let config = FramebufferConfig::single_buffered(
+            ColorFormat::Unorm8 { alpha: true },
+            DepthStencilFormat::None,
             accum_bits,
-        };
-        let framebuffer = Framebuffer::new(config, W as usize, H as usize).unwrap();
-        let mut ctx = Context::new(ContextConfig { visual: config });
-        ctx.bind_drawable(Some(Arc::new(Mutex::new(Drawable { framebuffer, presenter: None }))));
-        ctx
+        );
+        Context::with_test_drawable(config, W as usize, H as usize).0
     }
 
     fn pixels(ctx: &Context) -> Vec<[u8; 4]> {

@@ -214,14 +214,8 @@ mod tests {
     use crate::framebuffer::{ColorFormat, DepthStencilFormat, FramebufferConfig};
 
     fn context() -> Context {
-        let visual = FramebufferConfig {
-            color: ColorFormat::Unorm8 { alpha: true },
-            double_buffered: false,
-            stereo: false,
-            aux_buffers: 0,
-            depth_stencil: DepthStencilFormat::Packed24 { depth: true, stencil: true },
-            accum_bits: 16,
-        };
+        let depth_stencil = DepthStencilFormat::Packed24 { depth: true, stencil: true };
+        let visual = FramebufferConfig::single_buffered(ColorFormat::Unorm8 { alpha: true }, depth_stencil, 16);
         Context::new(ContextConfig { visual })
     }
 

@@ -308,8 +308,7 @@ fn clamp01(v: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::context::ContextConfig;
-    use crate::framebuffer::{ColorFormat, DepthStencilFormat, Drawable, Framebuffer};
+    use crate::framebuffer::{ColorFormat, DepthStencilFormat, Drawable};
     use std::sync::{Arc, Mutex};
 
     /// A double-buffered stereo context with two aux buffers, bound to a 4×4 drawable.
@@ -322,11 +321,7 @@ mod tests {
             depth_stencil: DepthStencilFormat::Packed24 { depth: true, stencil: true },
             accum_bits: 16,
         };
-        let drawable =
-            Arc::new(Mutex::new(Drawable { framebuffer: Framebuffer::new(visual, 4, 4).unwrap(), presenter: None }));
-        let mut ctx = Context::new(ContextConfig { visual });
-        ctx.bind_drawable(Some(drawable.clone()));
-        (ctx, drawable)
+        Context::with_test_drawable(visual, 4, 4)
     }
 
     fn pixel(d: &Arc<Mutex<Drawable>>, slot: ColorSlot, x: i32, y: i32) -> [f32; 4] {

@@ -316,15 +316,8 @@ mod tests {
     use crate::framebuffer::{ColorFormat, DepthStencilFormat, FramebufferConfig};
 
     fn context(color: ColorFormat) -> Context {
-        let visual = FramebufferConfig {
-            color,
-            double_buffered: false,
-            stereo: false,
-            aux_buffers: 0,
-            depth_stencil: DepthStencilFormat::Packed24 { depth: true, stencil: true },
-            accum_bits: 16,
-        };
-        Context::new(ContextConfig { visual })
+        let depth_stencil = DepthStencilFormat::Packed24 { depth: true, stencil: true };
+        Context::new(ContextConfig { visual: FramebufferConfig::single_buffered(color, depth_stencil, 16) })
     }
 
     fn rgba8() -> Context {

@@ -123,6 +123,20 @@ impl Context {
         }
     }
 
+    /// A context bound to a fresh `width` × `height` drawable of `visual` (for tests).
+    #[cfg(test)]
+    pub(crate) fn with_test_drawable(
+        visual: FramebufferConfig,
+        width: usize,
+        height: usize,
+    ) -> (Context, Arc<Mutex<Drawable>>) {
+        let framebuffer = Framebuffer::new(visual, width, height).expect("test framebuffer");
+        let drawable = Arc::new(Mutex::new(Drawable { framebuffer, presenter: None }));
+        let mut ctx = Context::new(ContextConfig { visual });
+        ctx.bind_drawable(Some(drawable.clone()));
+        (ctx, drawable)
+    }
+
     /// glFinish: as glFlush, and returns only when rendering is complete.
     pub fn finish(&mut self) {
         self.flush();

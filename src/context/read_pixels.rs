@@ -409,23 +409,10 @@ fn read_into(fb: &Framebuffer, slot: Option<crate::framebuffer::ColorSlot>, job:
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::context::ContextConfig;
-    use crate::framebuffer::{ColorFormat, DepthStencilFormat, Drawable, FramebufferConfig};
-    use std::sync::{Arc, Mutex};
+    use crate::framebuffer::{ColorFormat, DepthStencilFormat, FramebufferConfig};
 
     fn context(color: ColorFormat, depth_stencil: DepthStencilFormat, w: usize, h: usize) -> Context {
-        let visual = FramebufferConfig {
-            color,
-            double_buffered: false,
-            stereo: false,
-            aux_buffers: 0,
-            depth_stencil,
-            accum_bits: 0,
-        };
-        let mut ctx = Context::new(ContextConfig { visual });
-        let framebuffer = Framebuffer::new(visual, w, h).unwrap();
-        ctx.bind_drawable(Some(Arc::new(Mutex::new(Drawable { framebuffer, presenter: None }))));
-        ctx
+        Context::with_test_drawable(FramebufferConfig::single_buffered(color, depth_stencil, 0), w, h).0
     }
 
     fn read(ctx: &mut Context, rect: [i32; 4], format: GLenum, ty: GLenum, buffer: &mut [u8]) -> GLenum {

@@ -72,6 +72,11 @@ pub struct FramebufferConfig {
 }
 
 impl FramebufferConfig {
+    /// A single-buffered, mono configuration without aux buffers (what OSMesa gives).
+    pub fn single_buffered(color: ColorFormat, depth_stencil: DepthStencilFormat, accum_bits: u32) -> Self {
+        FramebufferConfig { color, double_buffered: false, stereo: false, aux_buffers: 0, depth_stencil, accum_bits }
+    }
+
     /// Every color slot this configuration has, front-left first.
     pub fn color_slots(&self) -> Vec<ColorSlot> {
         let mut slots = vec![ColorSlot::FrontLeft];

@@ -123,14 +123,7 @@ impl Request {
     }
 
     fn config(&self, color: ColorFormat) -> FramebufferConfig {
-        FramebufferConfig {
-            color,
-            double_buffered: false,
-            stereo: false,
-            aux_buffers: 0,
-            depth_stencil: self.depth_stencil(),
-            accum_bits: if self.accum_bits > 0 { 16 } else { 0 },
-        }
+        FramebufferConfig::single_buffered(color, self.depth_stencil(), if self.accum_bits > 0 { 16 } else { 0 })
     }
 }
 
