@@ -13,4 +13,5 @@ pub mod context;
 pub mod framebuffer;
 pub mod pixel;
 pub mod setup;
+pub mod vertex;
 pub mod winsys;

@@ -286,6 +286,7 @@ mod tests {
             offset_fill: true,
             offset_line: true,
             offset_point: true,
+            ..t.polygon.clone()
         };
         t.line_point = LinePointState {
             line_smooth: true,
@@ -294,6 +295,7 @@ mod tests {
             point_sprite: true,
             vertex_program_point_size: true,
             vertex_program_two_side: true,
+            ..t.line_point.clone()
         };
         let m = &mut t.multisample;
         (m.enabled, m.alpha_to_coverage, m.alpha_to_one, m.coverage) =

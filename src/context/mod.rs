@@ -11,8 +11,10 @@ pub mod attrib;
 pub mod buffers;
 pub mod capabilities;
 pub mod current;
+pub mod draw;
 pub mod get;
 pub mod hints;
+pub mod matrix;
 pub mod read_pixels;
 pub mod state;
 pub mod strings;
@@ -34,6 +36,8 @@ pub struct ContextConfig {
 pub struct Context {
     pub state: State,
     pub pixel_store: PixelStoreState,
+    /// The matrix stacks (not part of any attribute group).
+    pub matrices: matrix::MatrixStacks,
     config: ContextConfig,
     error: GLenum,
     attrib_stack: Vec<attrib::SavedAttribs>,
@@ -51,6 +55,7 @@ impl Context {
         Context {
             state: State::new(buffer),
             pixel_store: PixelStoreState::default(),
+            matrices: matrix::MatrixStacks::default(),
             config,
             error: GL_NO_ERROR,
             attrib_stack: Vec::new(),

@@ -17,6 +17,15 @@ pub const MAX_CLIP_PLANES: usize = 6;
 pub const MAX_LIGHTS: usize = 8;
 /// Texture units with fixed-function state (GL_MAX_TEXTURE_UNITS).
 pub const MAX_TEXTURE_UNITS: usize = 4;
+/// Largest point size and line width (GL_POINT_SIZE_RANGE / GL_LINE_WIDTH_RANGE maximum).
+pub const MAX_POINT_SIZE: f32 = 255.0;
+pub const MAX_LINE_WIDTH: f32 = 255.0;
+/// Depths of the matrix stacks (GL_MAX_MODELVIEW/PROJECTION/TEXTURE_STACK_DEPTH; GL
+/// requires at least 32, 2 and 2).
+pub const MAX_MODELVIEW_STACK_DEPTH: usize = 32;
+pub const MAX_PROJECTION_STACK_DEPTH: usize = 32;
+pub const MAX_TEXTURE_STACK_DEPTH: usize = 10;
+pub const MAX_COLOR_STACK_DEPTH: usize = 10;
 /// Largest viewport and renderbuffer side (GL_MAX_VIEWPORT_DIMS, OSMESA_MAX_WIDTH).
 pub const MAX_VIEWPORT_DIM: i32 = 16384;
 
@@ -249,6 +258,10 @@ pub struct LightingState {
     pub color_material: bool,
     /// GL_CLAMP_VERTEX_COLOR.
     pub clamp_vertex_color: GLenum,
+    /// glShadeModel: GL_SMOOTH or GL_FLAT.
+    pub shade_model: GLenum,
+    /// glProvokingVertex: GL_LAST_VERTEX_CONVENTION (GL's default) or GL_FIRST_VERTEX_CONVENTION.
+    pub provoking_vertex: GLenum,
 }
 
 impl Default for LightingState {
@@ -258,21 +271,41 @@ impl Default for LightingState {
             lights: [false; MAX_LIGHTS],
             color_material: false,
             clamp_vertex_color: GL_TRUE as GLenum,
+            shade_model: GL_SMOOTH,
+            provoking_vertex: GL_LAST_VERTEX_CONVENTION,
         }
     }
 }
 
-/// GL_TRANSFORM_BIT (enables only, so far).
-#[derive(Clone, Debug, PartialEq, Default)]
+/// GL_TRANSFORM_BIT.
+#[derive(Clone, Debug, PartialEq)]
 pub struct TransformState {
     pub clip_planes: [bool; MAX_CLIP_PLANES],
+    /// glClipPlane equations, in eye coordinates (transformed by the inverse modelview
+    /// at specification).
+    pub clip_plane_equations: [[f64; 4]; MAX_CLIP_PLANES],
     pub normalize: bool,
     pub rescale_normal: bool,
     pub depth_clamp: bool,
+    /// glMatrixMode: GL_MODELVIEW, GL_PROJECTION, GL_TEXTURE or GL_COLOR.
+    pub matrix_mode: GLenum,
 }
 
-/// GL_POLYGON_BIT (enables only, so far) and GL_POLYGON_STIPPLE enable.
-#[derive(Clone, Debug, PartialEq, Default)]
+impl Default for TransformState {
+    fn default() -> Self {
+        TransformState {
+            clip_planes: [false; MAX_CLIP_PLANES],
+            clip_plane_equations: [[0.0; 4]; MAX_CLIP_PLANES],
+            normalize: false,
+            rescale_normal: false,
+            depth_clamp: false,
+            matrix_mode: GL_MODELVIEW,
+        }
+    }
+}
+
+/// GL_POLYGON_BIT.
+#[derive(Clone, Debug, PartialEq)]
 pub struct PolygonState {
     pub cull_face: bool,
     pub smooth: bool,
@@ -280,10 +313,41 @@ pub struct PolygonState {
     pub offset_fill: bool,
     pub offset_line: bool,
     pub offset_point: bool,
+    /// glCullFace: GL_FRONT, GL_BACK or GL_FRONT_AND_BACK.
+    pub cull_face_mode: GLenum,
+    /// glFrontFace: GL_CCW or GL_CW.
+    pub front_face: GLenum,
+    /// glPolygonMode of front and back faces: GL_POINT, GL_LINE or GL_FILL.
+    pub mode_front: GLenum,
+    pub mode_back: GLenum,
+    /// glPolygonOffset (and GL_POLYGON_OFFSET_CLAMP, 0 = no clamp).
+    pub offset_factor: f32,
+    pub offset_units: f32,
+    pub offset_clamp: f32,
 }
 
-/// GL_LINE_BIT and GL_POINT_BIT enables.
-#[derive(Clone, Debug, PartialEq, Default)]
+impl Default for PolygonState {
+    fn default() -> Self {
+        PolygonState {
+            cull_face: false,
+            smooth: false,
+            stipple: false,
+            offset_fill: false,
+            offset_line: false,
+            offset_point: false,
+            cull_face_mode: GL_BACK,
+            front_face: GL_CCW,
+            mode_front: GL_FILL,
+            mode_back: GL_FILL,
+            offset_factor: 0.0,
+            offset_units: 0.0,
+            offset_clamp: 0.0,
+        }
+    }
+}
+
+/// GL_LINE_BIT and GL_POINT_BIT.
+#[derive(Clone, Debug, PartialEq)]
 pub struct LinePointState {
     pub line_smooth: bool,
     pub line_stipple: bool,
@@ -291,6 +355,42 @@ pub struct LinePointState {
     pub point_sprite: bool,
     pub vertex_program_point_size: bool,
     pub vertex_program_two_side: bool,
+    /// glLineWidth.
+    pub line_width: f32,
+    /// glLineStipple: repeat factor (clamped to [1, 256]) and pattern.
+    pub line_stipple_factor: i32,
+    pub line_stipple_pattern: u16,
+    /// glPointSize.
+    pub point_size: f32,
+    /// glPointParameter: GL_POINT_SIZE_MIN/MAX, GL_POINT_FADE_THRESHOLD_SIZE,
+    /// GL_POINT_DISTANCE_ATTENUATION, GL_POINT_SPRITE_COORD_ORIGIN.
+    pub point_size_min: f32,
+    pub point_size_max: f32,
+    pub point_fade_threshold: f32,
+    pub point_distance_attenuation: [f32; 3],
+    pub point_sprite_coord_origin: GLenum,
+}
+
+impl Default for LinePointState {
+    fn default() -> Self {
+        LinePointState {
+            line_smooth: false,
+            line_stipple: false,
+            point_smooth: false,
+            point_sprite: false,
+            vertex_program_point_size: false,
+            vertex_program_two_side: false,
+            line_width: 1.0,
+            line_stipple_factor: 1,
+            line_stipple_pattern: 0xffff,
+            point_size: 1.0,
+            point_size_min: 0.0,
+            point_size_max: MAX_POINT_SIZE,
+            point_fade_threshold: 1.0,
+            point_distance_attenuation: [1.0, 0.0, 0.0],
+            point_sprite_coord_origin: GL_UPPER_LEFT,
+        }
+    }
 }
 
 /// GL_MULTISAMPLE_BIT.
@@ -375,9 +475,38 @@ pub struct PixelStoreState {
     pub unpack: PixelStoreModes,
 }
 
+/// GL_CURRENT_BIT: the current vertex attributes (what glColor, glNormal, ... set).
+#[derive(Clone, Debug, PartialEq)]
+pub struct CurrentState {
+    pub color: [f32; 4],
+    pub secondary_color: [f32; 4],
+    pub normal: [f32; 3],
+    pub tex_coords: [[f32; 4]; MAX_TEXTURE_UNITS],
+    pub fog_coord: f32,
+    pub edge_flag: bool,
+    pub index: f32,
+}
+
+impl Default for CurrentState {
+    fn default() -> Self {
+        CurrentState {
+            color: [1.0; 4],
+            secondary_color: [0.0, 0.0, 0.0, 1.0],
+            normal: [0.0, 0.0, 1.0],
+            tex_coords: [[0.0, 0.0, 0.0, 1.0]; MAX_TEXTURE_UNITS],
+            fog_coord: 0.0,
+            edge_flag: true,
+            index: 1.0,
+        }
+    }
+}
+
 /// All server-side state covered so far, one field per attribute group.
 #[derive(Clone, Debug, PartialEq)]
 pub struct State {
+    pub current: CurrentState,
+    /// GL_POLYGON_STIPPLE_BIT: 32 rows of 32 bits, row 0 at the bottom, bit 31 leftmost.
+    pub polygon_stipple: [u32; 32],
     pub color: ColorBufferState,
     pub depth: DepthState,
     pub stencil: StencilState,
@@ -401,6 +530,8 @@ impl State {
     /// (GL_FRONT single-buffered, GL_BACK double-buffered).
     pub fn new(buffer: GLenum) -> Self {
         State {
+            current: CurrentState::default(),
+            polygon_stipple: [!0; 32],
             color: ColorBufferState::new(buffer),
             depth: DepthState::default(),
             stencil: StencilState::default(),
