@@ -10,8 +10,10 @@
 
 pub mod api;
 pub mod context;
+pub mod fragment;
 pub mod framebuffer;
 pub mod pixel;
+pub mod raster;
 pub mod setup;
 pub mod vertex;
 pub mod winsys;

@@ -60,6 +60,7 @@ impl Context {
         if self.config.visual.accum_bits == 0 {
             return self.error(GL_INVALID_OPERATION);
         }
+        self.flush_rendering();
         // Mesa skips the operations that cannot change anything (truncating a product with 0
         // gives 0 whatever the color, even for NaN and infinities).
         let no_op = match op {

@@ -144,6 +144,8 @@ impl Context {
         if mask & !known != 0 {
             return self.error(GL_INVALID_VALUE);
         }
+        // Clears run immediately, so the draws recorded before them run first.
+        self.flush_rendering();
         let targets = self.draw_targets();
         let color = &self.state.color;
         let clear_color = color.clear_color;

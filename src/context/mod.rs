@@ -45,6 +45,8 @@ pub struct Context {
     /// Between glBegin and glEnd, where most commands are GL_INVALID_OPERATION.
     pub inside_begin_end: bool,
     drawable: Option<Arc<Mutex<Drawable>>>,
+    /// Primitives recorded since the last flush point.
+    scene: Option<crate::raster::Scene>,
     /// Viewport and scissor are initialised to the drawable's size at the first bind only.
     bound_once: bool,
 }
@@ -62,6 +64,7 @@ impl Context {
             client_attrib_stack: Vec::new(),
             inside_begin_end: false,
             drawable: None,
+            scene: None,
             bound_once: false,
         }
     }
@@ -96,6 +99,14 @@ impl Context {
     /// Binds the drawable this context renders to (None: unbind). At the first bind the
     /// viewport and scissor box become the drawable's size.
     pub fn bind_drawable(&mut self, drawable: Option<Arc<Mutex<Drawable>>>) {
+        let same = match (&drawable, &self.drawable) {
+            (Some(a), Some(b)) => Arc::ptr_eq(a, b),
+            _ => false,
+        };
+        if !same {
+            // What was recorded belongs to the old drawable.
+            self.flush_rendering();
+        }
         if let Some(d) = &drawable {
             self.config.visual = *d.lock().unwrap_or_else(|p| p.into_inner()).framebuffer.config();
             if !self.bound_once {
@@ -123,6 +134,7 @@ impl Context {
 
     /// glFlush: completes pending rendering and presents the drawable.
     pub fn flush(&mut self) {
+        self.flush_rendering();
         if let Some(drawable) = &self.drawable {
             drawable.lock().unwrap_or_else(|p| p.into_inner()).present();
         }

@@ -234,8 +234,8 @@ impl Context {
         let Some(job) = self.validate_read(x, y, width, height, format, ty) else {
             return;
         };
-        // Rendering completes before the read (the flush point of the design); clears and
-        // draws are immediate so far, so there is nothing queued to run here.
+        // Rendering recorded so far completes before the read (a flush point).
+        self.flush_rendering();
         let Some(out) = dest(job.span.clone()) else {
             return;
         };

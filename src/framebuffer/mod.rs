@@ -5,6 +5,7 @@
 //! numbers them. It knows formats and rectangles, not GL: the context decides which buffers
 //! and which rectangle an operation touches and passes plain values down.
 
+pub mod band;
 pub mod external;
 pub mod format;
 pub mod surface;

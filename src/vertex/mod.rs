@@ -20,3 +20,6 @@ pub struct Vertex {
     /// Whether edges starting at this vertex are boundary edges (glEdgeFlag).
     pub edge_flag: bool,
 }
+
+pub mod assembly;
+pub mod clip;

@@ -311,6 +311,7 @@ impl OsMesaContext {
 
     /// The caller's buffer address and size, after flushing rendering into it.
     pub fn color_buffer(&self) -> Option<(usize, usize, usize)> {
+        self.shared.lock().flush_rendering();
         let binding = self.lock_binding();
         let b = binding.as_ref()?;
         b.drawable.lock().unwrap_or_else(|p| p.into_inner()).present();
@@ -320,6 +321,7 @@ impl OsMesaContext {
     /// The internal depth buffer: (width, height, bytes per value, address), after flushing.
     /// `None` without depth bits.
     pub fn depth_buffer(&self) -> Option<(usize, usize, usize, usize)> {
+        self.shared.lock().flush_rendering();
         let binding = self.lock_binding();
         let b = binding.as_ref()?;
         let drawable = b.drawable.lock().unwrap_or_else(|p| p.into_inner());

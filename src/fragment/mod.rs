@@ -1,0 +1,135 @@
+//! The per-fragment operations, applied to one span of a tile row at a time.
+//!
+//! A draw's state is compiled into a [`FragmentState`] once; disabled operations are absent
+//! from it rather than tested per pixel. This first path does the depth test (every
+//! function, with the write mask) and writes colors to every draw target with its color
+//! mask; the full pipeline of the seeds (alpha, stencil, blending, logic op, fog, dither)
+//! builds on the same span interface.
+use crate::context::state::CompareFunc;
+use crate::framebuffer::band::{ColorBand, DepthBand};
+use crate::framebuffer::format::{float_to_unorm, fragment_depth_to_fixed};
+
+/// Longest span the fragment stage processes at once (one tile row).
+pub const MAX_SPAN: usize = 64;
+
+/// The depth test of a draw.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct DepthTest {
+    pub func: CompareFunc,
+    pub write: bool,
+}
+
+/// What a draw does to each fragment, compiled from the GL state at draw time.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FragmentState {
+    /// `None` when the depth test is disabled or there is no depth buffer.
+    pub depth: Option<DepthTest>,
+    /// For each color target of the scene (same order as the band's colors): the channel
+    /// write mask, or `None` when this draw does not write that target.
+    pub color_masks: Vec<Option<[bool; 4]>>,
+    /// Clamp colors written to float buffers to [0, 1].
+    pub clamp_float: bool,
+}
+
+#[inline]
+fn passes(func: CompareFunc, fragment: u32, stored: u32) -> bool {
+    match func {
+        CompareFunc::Never => false,
+        CompareFunc::Less => fragment < stored,
+        CompareFunc::Equal => fragment == stored,
+        CompareFunc::LessEqual => fragment <= stored,
+        CompareFunc::Greater => fragment > stored,
+        CompareFunc::NotEqual => fragment != stored,
+        CompareFunc::GreaterEqual => fragment >= stored,
+        CompareFunc::Always => true,
+    }
+}
+
+/// Depth-tests the fragments of `live` (bit i: pixel `offset + i` of the row) against the
+/// row of `depth` starting at `offset`, updating stored depth where the test passes and
+/// writing is enabled. `z` holds window-space depths. Returns the fragments that pass.
+pub fn depth_test(test: &DepthTest, depth: &mut DepthBand<'_>, row_start: usize, z: &[f32], live: u64) -> u64 {
+    macro_rules! run {
+        ($px:expr, $bits:expr, $read:expr, $write:expr) => {{
+            let mut pass = 0u64;
+            for (i, &zf) in z.iter().enumerate() {
+                if live & (1 << i) == 0 {
+                    continue;
+                }
+                let frag = fragment_depth_to_fixed(zf, $bits);
+                let cell = &mut $px[row_start + i];
+                #[allow(clippy::redundant_closure_call)]
+                let stored = ($read)(*cell);
+                if passes(test.func, frag, stored) {
+                    pass |= 1 << i;
+                    if test.write {
+                        #[allow(clippy::redundant_closure_call)]
+                        ($write)(cell, frag);
+                    }
+                }
+            }
+            pass
+        }};
+    }
+    match depth {
+        DepthBand::None => live,
+        DepthBand::Depth16(px) => run!(px, 16, |v: u16| v as u32, |c: &mut u16, f: u32| *c = f as u16),
+        DepthBand::Packed24(px) => {
+            run!(px, 24, |v: u32| v & 0x00ff_ffff, |c: &mut u32, f: u32| *c = (*c & 0xff00_0000) | f)
+        }
+        DepthBand::Depth32(px, _) => run!(px, 32, |v: u32| v, |c: &mut u32, f: u32| *c = f),
+    }
+}
+
+/// Writes `colors[i]` for every bit of `live` to the row of `target` starting at
+/// `row_start`, converting to the buffer's format and honouring the channel `mask`.
+pub fn write_colors(
+    target: &mut ColorBand<'_>,
+    row_start: usize,
+    colors: &[[f32; 4]],
+    live: u64,
+    mask: [bool; 4],
+    clamp_float: bool,
+) {
+    let all = mask.iter().all(|&m| m);
+    let lanes = colors.iter().enumerate().filter(|(i, _)| live & (1 << i) != 0);
+    match target {
+        ColorBand::Unorm8(px) => {
+            for (i, c) in lanes {
+                let v = c.map(|x| float_to_unorm(x, 8) as u8);
+                let cell = &mut px[row_start + i];
+                if all {
+                    *cell = v;
+                } else {
+                    (0..4).filter(|&k| mask[k]).for_each(|k| cell[k] = v[k]);
+                }
+            }
+        }
+        ColorBand::Unorm16(px) => {
+            for (i, c) in lanes {
+                let v = c.map(|x| float_to_unorm(x, 16) as u16);
+                let cell = &mut px[row_start + i];
+                (0..4).filter(|&k| mask[k]).for_each(|k| cell[k] = v[k]);
+            }
+        }
+        ColorBand::Float32(px) => {
+            for (i, c) in lanes {
+                let v = if clamp_float { c.map(|x| if x > 0.0 { x.min(1.0) } else { 0.0 }) } else { *c };
+                let cell = &mut px[row_start + i];
+                (0..4).filter(|&k| mask[k]).for_each(|k| cell[k] = v[k]);
+            }
+        }
+        ColorBand::Rgb565(px) => {
+            // 5/6-bit stores take the top bits of the 8-bit conversion, as llvmpipe's do.
+            let keep: u16 = (if mask[0] { 0 } else { 0xf800 })
+                | (if mask[1] { 0 } else { 0x07e0 })
+                | (if mask[2] { 0 } else { 0x001f });
+            for (i, c) in lanes {
+                let [r, g, b, _] = c.map(|x| float_to_unorm(x, 8));
+                let v = ((r >> 3) << 11 | (g >> 2) << 5 | (b >> 3)) as u16;
+                let cell = &mut px[row_start + i];
+                *cell = (*cell & keep) | (v & !keep);
+            }
+        }
+    }
+}

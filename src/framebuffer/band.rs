@@ -1,0 +1,105 @@
+//! Bands: disjoint horizontal strips of a framebuffer that rasterizer workers own.
+//!
+//! A band is one row of tiles (`TILE_SIZE` rows of pixels) of every layer a scene writes:
+//! the selected color buffers and the depth/stencil buffer. Bands borrow disjoint slices of
+//! the buffers, so worker threads can render different bands at the same time with no
+//! locking and no unsafe code; each pixel belongs to exactly one band, which is what makes
+//! results identical for any number of threads.
+use super::surface::{ColorPixels, DepthStencilPixels};
+use super::{ColorFormat, ColorSlot, DepthStencilFormat, Framebuffer};
+
+/// The pixels of one color buffer inside a band (rows bottom-up, `width` pixels each).
+pub enum ColorBand<'a> {
+    Unorm8(&'a mut [[u8; 4]]),
+    Rgb565(&'a mut [u16]),
+    Unorm16(&'a mut [[u16; 4]]),
+    Float32(&'a mut [[f32; 4]]),
+}
+
+/// The depth/stencil pixels inside a band.
+pub enum DepthBand<'a> {
+    None,
+    Depth16(&'a mut [u16]),
+    Packed24(&'a mut [u32]),
+    Depth32(&'a mut [u32], Option<&'a mut [u8]>),
+}
+
+/// One color target of a band: the buffer's pixels and its format.
+pub struct ColorTarget<'a> {
+    pub slot: ColorSlot,
+    pub format: ColorFormat,
+    pub pixels: ColorBand<'a>,
+}
+
+/// A strip of rows `[y0, y0 + rows)` of every layer a scene writes.
+pub struct Band<'a> {
+    pub y0: i32,
+    pub rows: usize,
+    pub width: usize,
+    pub colors: Vec<ColorTarget<'a>>,
+    pub depth: DepthBand<'a>,
+    pub depth_format: DepthStencilFormat,
+}
+
+/// Splits `slice` into chunks of `chunk` elements (the last may be shorter).
+fn split<T>(slice: &mut [T], chunk: usize) -> Vec<&mut [T]> {
+    slice.chunks_mut(chunk.max(1)).collect()
+}
+
+impl Framebuffer {
+    /// Splits the color buffers in `slots` (each at most once) and the depth/stencil buffer
+    /// into bands of `band_rows` rows.
+    pub fn bands(&mut self, band_rows: usize, slots: &[ColorSlot]) -> Vec<Band<'_>> {
+        let width = self.width;
+        let height = self.height;
+        let chunk = width * band_rows;
+        let count = height.div_ceil(band_rows.max(1));
+        let mut bands: Vec<Band<'_>> = (0..count)
+            .map(|i| Band {
+                y0: (i * band_rows) as i32,
+                rows: band_rows.min(height - i * band_rows),
+                width,
+                colors: Vec::new(),
+                depth: DepthBand::None,
+                depth_format: self.config.depth_stencil,
+            })
+            .collect();
+        // Split every selected buffer, then hand the pieces to the bands in `slots` order.
+        let mut split_buffers: Vec<(ColorSlot, ColorFormat, Vec<ColorBand<'_>>)> = Vec::new();
+        for (slot, buffer) in self.color.iter_mut().filter(|(s, _)| slots.contains(s)) {
+            let format = buffer.format();
+            let pieces: Vec<ColorBand<'_>> = match buffer.pixels_mut() {
+                ColorPixels::Unorm8(px) => split(px, chunk).into_iter().map(ColorBand::Unorm8).collect(),
+                ColorPixels::Rgb565(px) => split(px, chunk).into_iter().map(ColorBand::Rgb565).collect(),
+                ColorPixels::Unorm16(px) => split(px, chunk).into_iter().map(ColorBand::Unorm16).collect(),
+                ColorPixels::Float32(px) => split(px, chunk).into_iter().map(ColorBand::Float32).collect(),
+            };
+            split_buffers.push((*slot, format, pieces));
+        }
+        for slot in slots {
+            let Some(i) = split_buffers.iter().position(|(s, _, _)| s == slot) else {
+                continue;
+            };
+            let (slot, format, pieces) = split_buffers.swap_remove(i);
+            for (band, pixels) in bands.iter_mut().zip(pieces) {
+                band.colors.push(ColorTarget { slot, format, pixels });
+            }
+        }
+        let depth_pieces: Vec<DepthBand<'_>> = match self.depth_stencil.pixels_mut() {
+            DepthStencilPixels::None => Vec::new(),
+            DepthStencilPixels::Depth16(px) => split(px, chunk).into_iter().map(DepthBand::Depth16).collect(),
+            DepthStencilPixels::Packed24(px) => split(px, chunk).into_iter().map(DepthBand::Packed24).collect(),
+            DepthStencilPixels::Depth32(px, stencil) => {
+                let mut stencil_pieces = stencil.as_mut().map(|s| split(s, chunk).into_iter());
+                split(px, chunk)
+                    .into_iter()
+                    .map(|d| DepthBand::Depth32(d, stencil_pieces.as_mut().and_then(|s| s.next())))
+                    .collect()
+            }
+        };
+        for (band, depth) in bands.iter_mut().zip(depth_pieces) {
+            band.depth = depth;
+        }
+        bands
+    }
+}

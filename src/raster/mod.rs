@@ -1,0 +1,179 @@
+//! The tiled rasterizer: scenes of binned primitives, rendered band by band by a pool of
+//! workers.
+//!
+//! A draw call appends its primitives (already set up: edges, attribute planes) and a
+//! snapshot of its state to the [`Scene`]; each primitive is binned into the 64×64 tiles
+//! its bounding box touches. At a flush point the scene runs: the framebuffer is split into
+//! bands (rows of tiles), `TESSERA_THREADS` workers (the calling thread included) take bands
+//! one at a time, and each band renders its tiles, each tile its bin in submission order.
+//! A pixel is only ever touched by the one worker owning its band, in submission order, so
+//! the bytes are identical for any number of threads.
+
+pub mod triangle;
+
+use crate::fragment::FragmentState;
+use crate::framebuffer::band::Band;
+use crate::framebuffer::{ColorSlot, Framebuffer, Rect};
+use std::sync::{Arc, Mutex, OnceLock};
+use triangle::TriangleJob;
+
+/// Tile side in pixels.
+pub const TILE_SIZE: usize = 64;
+
+/// What a draw call's primitives share: the compiled fragment state and the scissor box.
+#[derive(Debug)]
+pub struct DrawState {
+    pub fragment: FragmentState,
+    /// Pixels outside this rectangle (scissor box ∩ framebuffer) are never written.
+    pub clip: Rect,
+}
+
+/// A primitive ready for rasterization.
+pub enum Primitive {
+    Triangle(TriangleJob),
+}
+
+/// Recorded rendering waiting for a flush point.
+pub struct Scene {
+    width: usize,
+    height: usize,
+    tiles_x: usize,
+    /// The color buffers the scene writes, in the order of every draw's color masks.
+    targets: Vec<ColorSlot>,
+    states: Vec<Arc<DrawState>>,
+    primitives: Vec<(u32, Primitive)>,
+    /// Per tile (row-major), indices into `primitives` in submission order.
+    bins: Vec<Vec<u32>>,
+}
+
+impl Scene {
+    /// An empty scene for a `width` × `height` framebuffer.
+    pub fn new(width: usize, height: usize) -> Scene {
+        let tiles_x = width.div_ceil(TILE_SIZE);
+        let tiles_y = height.div_ceil(TILE_SIZE);
+        Scene {
+            width,
+            height,
+            tiles_x,
+            targets: Vec::new(),
+            states: Vec::new(),
+            primitives: Vec::new(),
+            bins: vec![Vec::new(); tiles_x * tiles_y],
+        }
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.primitives.is_empty()
+    }
+
+    pub fn size(&self) -> (usize, usize) {
+        (self.width, self.height)
+    }
+
+    /// The index of `slot` among the scene's color targets, adding it if new.
+    pub fn target_index(&mut self, slot: ColorSlot) -> usize {
+        if let Some(i) = self.targets.iter().position(|&s| s == slot) {
+            return i;
+        }
+        self.targets.push(slot);
+        self.targets.len() - 1
+    }
+
+    /// How many color targets the scene has so far.
+    pub fn target_count(&self) -> usize {
+        self.targets.len()
+    }
+
+    /// Adds a draw's state; primitives added afterwards refer to it.
+    pub fn add_state(&mut self, state: DrawState) -> u32 {
+        self.states.push(Arc::new(state));
+        (self.states.len() - 1) as u32
+    }
+
+    /// Bins a primitive covering at most the pixel rectangle `bounds` (inclusive min,
+    /// exclusive max), under draw state `state`.
+    pub fn add(&mut self, state: u32, bounds: Rect, primitive: Primitive) {
+        let clip = self.states[state as usize].clip;
+        let r = bounds.intersect(clip);
+        if r.is_empty() {
+            return;
+        }
+        let index = self.primitives.len() as u32;
+        self.primitives.push((state, primitive));
+        let t = TILE_SIZE as i32;
+        for ty in (r.y0 / t)..=((r.y1 - 1) / t) {
+            for tx in (r.x0 / t)..=((r.x1 - 1) / t) {
+                self.bins[ty as usize * self.tiles_x + tx as usize].push(index);
+            }
+        }
+    }
+
+    /// Renders the scene into `framebuffer` (which must have the scene's size) on
+    /// `thread_count()` threads.
+    pub fn execute(self, framebuffer: &mut Framebuffer) {
+        self.execute_on(framebuffer, thread_count());
+    }
+
+    /// Renders the scene on up to `threads` threads (the caller's included).
+    pub fn execute_on(self, framebuffer: &mut Framebuffer, threads: usize) {
+        if self.primitives.is_empty() {
+            return;
+        }
+        let bands = framebuffer.bands(TILE_SIZE, &self.targets);
+        let scene = &self;
+        run_parallel(bands, threads, |band| scene.render_band(band));
+    }
+
+    /// Renders every tile of one band, each tile's primitives in submission order.
+    fn render_band(&self, mut band: Band<'_>) {
+        let ty = band.y0 as usize / TILE_SIZE;
+        let mut scratch = triangle::Scratch::default();
+        for tx in 0..self.tiles_x {
+            let tile = Rect::from_xywh((tx * TILE_SIZE) as i32, band.y0, TILE_SIZE as i32, band.rows as i32)
+                .intersect(Rect::from_xywh(0, 0, self.width as i32, self.height as i32));
+            for &index in &self.bins[ty * self.tiles_x + tx] {
+                let (state, primitive) = &self.primitives[index as usize];
+                let state = &self.states[*state as usize];
+                let area = tile.intersect(state.clip);
+                match primitive {
+                    Primitive::Triangle(job) => job.render(state, area, &mut band, &mut scratch),
+                }
+            }
+        }
+    }
+}
+
+/// The number of rasterizer threads: `TESSERA_THREADS`, or the number of cores.
+pub fn thread_count() -> usize {
+    static COUNT: OnceLock<usize> = OnceLock::new();
+    *COUNT.get_or_init(|| {
+        std::env::var("TESSERA_THREADS")
+            .ok()
+            .and_then(|v| v.trim().parse::<usize>().ok())
+            .filter(|&n| n >= 1)
+            .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()))
+            .min(256)
+    })
+}
+
+/// Runs `work` on every item, on up to `threads` threads (the caller's included).
+fn run_parallel<T: Send>(items: Vec<T>, threads: usize, work: impl Fn(T) + Sync) {
+    let threads = threads.min(items.len());
+    if threads <= 1 {
+        items.into_iter().for_each(work);
+        return;
+    }
+    let queue = Mutex::new(items.into_iter());
+    let next = || queue.lock().unwrap_or_else(|p| p.into_inner()).next();
+    let worker = || {
+        while let Some(item) = next() {
+            work(item);
+        }
+    };
+    std::thread::scope(|s| {
+        for _ in 1..threads {
+            s.spawn(worker);
+        }
+        worker();
+    });
+}

@@ -1,0 +1,170 @@
+//! Triangles inside one tile: exact row spans from the edge functions, attribute planes
+//! evaluated at pixel centres, then the fragment operations span by span.
+//!
+//! Attribute planes are anchored at the triangle's first vertex (not the window origin), so
+//! their precision does not depend on where the triangle lies. Colors are interpolated
+//! perspective-correctly (planes of c/w and 1/w), window z linearly; when all three w are
+//! equal the divide is skipped, which changes nothing but time.
+use super::{Band, DrawState};
+use crate::fragment::{depth_test, write_colors, MAX_SPAN};
+use crate::framebuffer::Rect;
+use crate::setup::triangle::{TriangleSetup, ONE};
+
+/// `a(x, y) = a0 + dadx·(x − x0) + dady·(y − y0)` around the anchor `(x0, y0)`.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct Plane {
+    pub a0: f32,
+    pub dadx: f32,
+    pub dady: f32,
+}
+
+impl Plane {
+    /// The plane through three values at three points (in pixels, relative to the anchor at
+    /// the first point).
+    pub fn through(d1: [f64; 2], d2: [f64; 2], values: [f32; 3]) -> Plane {
+        let det = d1[0] * d2[1] - d2[0] * d1[1];
+        let (v0, v1, v2) = (values[0] as f64, values[1] as f64, values[2] as f64);
+        let (dv1, dv2) = (v1 - v0, v2 - v0);
+        Plane {
+            a0: values[0],
+            dadx: ((dv1 * d2[1] - dv2 * d1[1]) / det) as f32,
+            dady: ((d1[0] * dv2 - d2[0] * dv1) / det) as f32,
+        }
+    }
+
+    #[inline]
+    pub fn at(&self, dx: f32, dy: f32) -> f32 {
+        self.a0 + self.dadx * dx + self.dady * dy
+    }
+}
+
+/// How a triangle's color varies over it.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Shading {
+    /// One color (flat shading, or all three vertices equal).
+    Flat([f32; 4]),
+    /// Linear in window space (all w equal: orthographic projections).
+    Affine([Plane; 4]),
+    /// Planes of color/w and of 1/w.
+    Perspective { color_over_w: [Plane; 4], inv_w: Plane },
+}
+
+/// A set-up triangle with everything its fragments need.
+#[derive(Clone, Debug)]
+pub struct TriangleJob {
+    pub setup: TriangleSetup,
+    /// The anchor of the planes: the first (counter-clockwise) vertex, in pixels.
+    pub anchor: [f32; 2],
+    pub z: Plane,
+    pub shading: Shading,
+}
+
+/// Per-worker storage reused across spans.
+#[derive(Default)]
+pub struct Scratch {
+    z: Vec<f32>,
+    colors: Vec<[f32; 4]>,
+}
+
+/// The window-space inputs of one vertex.
+#[derive(Clone, Copy, Debug)]
+pub struct WindowVertex {
+    pub x: f32,
+    pub y: f32,
+    pub z: f32,
+    pub inv_w: f32,
+    pub color: [f32; 4],
+}
+
+impl TriangleJob {
+    /// Sets up a triangle; `None` when it covers no pixel centre (zero area).
+    /// `flat` is the flat-shading color, if flat shaded. `depth_offset` is added to z.
+    pub fn new(v: [WindowVertex; 3], flat: Option<[f32; 4]>, depth_offset: f32) -> Option<TriangleJob> {
+        let setup = TriangleSetup::new(v.map(|p| [p.x, p.y]))?;
+        // Attribute values in the setup's (counter-clockwise) vertex order.
+        let v = if setup.was_clockwise { [v[0], v[2], v[1]] } else { v };
+        let fixed = setup.vertices;
+        let px = |i: usize| [fixed[i][0] as f64 / ONE as f64, fixed[i][1] as f64 / ONE as f64];
+        let (p0, p1, p2) = (px(0), px(1), px(2));
+        let d1 = [p1[0] - p0[0], p1[1] - p0[1]];
+        let d2 = [p2[0] - p0[0], p2[1] - p0[1]];
+        let plane = |values: [f32; 3]| Plane::through(d1, d2, values);
+        let mut z = plane([v[0].z, v[1].z, v[2].z]);
+        z.a0 += depth_offset;
+        let shading = match flat {
+            Some(color) => Shading::Flat(color),
+            None if v[0].color == v[1].color && v[1].color == v[2].color => Shading::Flat(v[0].color),
+            None if v[0].inv_w == v[1].inv_w && v[1].inv_w == v[2].inv_w => {
+                Shading::Affine(std::array::from_fn(|c| plane([v[0].color[c], v[1].color[c], v[2].color[c]])))
+            }
+            None => Shading::Perspective {
+                color_over_w: std::array::from_fn(|c| {
+                    plane([v[0].color[c] * v[0].inv_w, v[1].color[c] * v[1].inv_w, v[2].color[c] * v[2].inv_w])
+                }),
+                inv_w: plane([v[0].inv_w, v[1].inv_w, v[2].inv_w]),
+            },
+        };
+        Some(TriangleJob { setup, anchor: [p0[0] as f32, p0[1] as f32], z, shading })
+    }
+
+    /// The pixel rectangle that may contain covered centres.
+    pub fn bounds(&self) -> Rect {
+        let s = &self.setup;
+        Rect { x0: s.min_x, y0: s.min_y, x1: s.max_x.saturating_add(1), y1: s.max_y.saturating_add(1) }
+    }
+
+    /// Renders the part of the triangle inside `area` (within the band) into `band`.
+    pub fn render(&self, state: &DrawState, area: Rect, band: &mut Band<'_>, scratch: &mut Scratch) {
+        let area = area.intersect(self.bounds());
+        if area.is_empty() {
+            return;
+        }
+        for y in area.y0..area.y1 {
+            let Some((x0, x1)) = self.setup.row_span(y, area.x0, area.x1) else {
+                continue;
+            };
+            let mut start = x0;
+            while start < x1 {
+                let end = (start + MAX_SPAN as i32).min(x1);
+                self.shade_span(state, band, y, start, end, scratch);
+                start = end;
+            }
+        }
+    }
+
+    fn shade_span(&self, state: &DrawState, band: &mut Band<'_>, y: i32, x0: i32, x1: i32, scratch: &mut Scratch) {
+        let n = (x1 - x0) as usize;
+        let dy = y as f32 + 0.5 - self.anchor[1];
+        let dx0 = x0 as f32 + 0.5 - self.anchor[0];
+        let row_start = (y - band.y0) as usize * band.width + x0 as usize;
+        let mut live: u64 = if n == 64 { !0 } else { (1u64 << n) - 1 };
+        let fragment = &state.fragment;
+        if let Some(test) = &fragment.depth {
+            scratch.z.clear();
+            scratch.z.extend((0..n).map(|i| self.z.at(dx0 + i as f32, dy)));
+            live = depth_test(test, &mut band.depth, row_start, &scratch.z, live);
+            if live == 0 {
+                return;
+            }
+        }
+        scratch.colors.clear();
+        match &self.shading {
+            Shading::Flat(c) => scratch.colors.resize(n, *c),
+            Shading::Affine(planes) => {
+                scratch.colors.extend((0..n).map(|i| planes.map(|p| p.at(dx0 + i as f32, dy))));
+            }
+            Shading::Perspective { color_over_w, inv_w } => {
+                scratch.colors.extend((0..n).map(|i| {
+                    let dx = dx0 + i as f32;
+                    let w = 1.0 / inv_w.at(dx, dy);
+                    color_over_w.map(|p| p.at(dx, dy) * w)
+                }));
+            }
+        }
+        for (target, mask) in band.colors.iter_mut().zip(&fragment.color_masks) {
+            if let Some(mask) = mask {
+                write_colors(&mut target.pixels, row_start, &scratch.colors, live, *mask, fragment.clamp_float);
+            }
+        }
+    }
+}

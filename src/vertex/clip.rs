@@ -1,0 +1,243 @@
+//! Clipping in homogeneous clip space, and the vertex record that flows through it.
+//!
+//! A primitive is clipped only when it must be: against the near and far planes (unless
+//! depth clamping is on), against enabled user clip planes, and against a guard band far
+//! outside the viewport that keeps window coordinates inside the rasterizer's fixed-point
+//! range. Everything that merely leaves the viewport is left to the rasterizer, which
+//! discards outside pixels for free, so shared edges of visible geometry are never cut and
+//! stay watertight.
+//!
+//! New vertices interpolate every attribute linearly in clip space, always from the outside
+//! vertex towards the inside one, so an edge shared by two primitives is cut at exactly
+//! the same point whichever primitive it belongs to.
+
+use crate::context::state::MAX_TEXTURE_UNITS;
+
+/// A vertex after transformation: clip coordinates, eye coordinates (for user clip planes
+/// and fog) and the attributes the rasterizer interpolates.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ClipVertex {
+    pub clip: [f32; 4],
+    pub eye: [f32; 4],
+    pub color: [f32; 4],
+    pub secondary_color: [f32; 4],
+    pub tex_coords: [[f32; 4]; MAX_TEXTURE_UNITS],
+    pub fog_coord: f32,
+    /// Whether the edge from this vertex to the next one of its polygon is a boundary edge.
+    pub edge_flag: bool,
+}
+
+impl ClipVertex {
+    /// `self + t · (other − self)` for every interpolated quantity.
+    fn lerp(&self, other: &ClipVertex, t: f32) -> ClipVertex {
+        let mix = |a: f32, b: f32| a + t * (b - a);
+        let mix4 = |a: [f32; 4], b: [f32; 4]| [mix(a[0], b[0]), mix(a[1], b[1]), mix(a[2], b[2]), mix(a[3], b[3])];
+        let mut tex_coords = self.tex_coords;
+        for (out, (a, b)) in tex_coords.iter_mut().zip(self.tex_coords.iter().zip(&other.tex_coords)) {
+            *out = mix4(*a, *b);
+        }
+        ClipVertex {
+            clip: mix4(self.clip, other.clip),
+            eye: mix4(self.eye, other.eye),
+            color: mix4(self.color, other.color),
+            secondary_color: mix4(self.secondary_color, other.secondary_color),
+            tex_coords,
+            fog_coord: mix(self.fog_coord, other.fog_coord),
+            edge_flag: self.edge_flag,
+        }
+    }
+}
+
+/// The planes a primitive is clipped against, as signed distance functions: a point is
+/// inside a plane when its distance is ≥ 0.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ClipPlanes {
+    /// Guard band half-extent in normalized device coordinates (|x/w|, |y/w| ≤ this).
+    pub guard_x: f32,
+    pub guard_y: f32,
+    /// Clip against −w ≤ z ≤ w (off with GL_DEPTH_CLAMP).
+    pub clip_z: bool,
+    /// Enabled user clip planes, in eye coordinates.
+    pub user: Vec<[f32; 4]>,
+}
+
+/// Number of fixed planes: x±, y±, z± and w > 0.
+const FIXED_PLANES: usize = 7;
+
+impl ClipPlanes {
+    fn count(&self) -> usize {
+        FIXED_PLANES + self.user.len()
+    }
+
+    /// Signed distance of `v` to plane `i`.
+    #[inline]
+    fn distance(&self, i: usize, v: &ClipVertex) -> f32 {
+        let [x, y, z, w] = v.clip;
+        match i {
+            0 => self.guard_x * w + x,
+            1 => self.guard_x * w - x,
+            2 => self.guard_y * w + y,
+            3 => self.guard_y * w - y,
+            4 => {
+                if self.clip_z {
+                    w + z
+                } else {
+                    0.0
+                }
+            }
+            5 => {
+                if self.clip_z {
+                    w - z
+                } else {
+                    0.0
+                }
+            }
+            // w must stay positive for the divide; a tiny positive bound keeps 1/w finite.
+            6 => w - W_EPSILON,
+            _ => {
+                let p = self.user[i - FIXED_PLANES];
+                let e = v.eye;
+                p[0] * e[0] + p[1] * e[1] + p[2] * e[2] + p[3] * e[3]
+            }
+        }
+    }
+
+    /// Bit set of the planes `v` is outside of (NaN counts as outside).
+    #[inline]
+    pub fn outcode(&self, v: &ClipVertex) -> u32 {
+        let mut code = 0;
+        for i in 0..self.count() {
+            let d = self.distance(i, v);
+            if d.is_nan() || d < 0.0 {
+                code |= 1 << i;
+            }
+        }
+        code
+    }
+
+    /// Clips the convex polygon `poly` against every plane in `mask`, in place.
+    /// `scratch` is reused storage. The result may be empty.
+    pub fn clip_polygon(&self, poly: &mut Vec<ClipVertex>, scratch: &mut Vec<ClipVertex>, mask: u32) {
+        for plane in 0..self.count() {
+            if mask & (1 << plane) == 0 || poly.is_empty() {
+                continue;
+            }
+            scratch.clear();
+            let n = poly.len();
+            for i in 0..n {
+                let cur = &poly[i];
+                let next = &poly[(i + 1) % n];
+                let d_cur = self.distance(plane, cur);
+                let d_next = self.distance(plane, next);
+                let cur_in = d_cur >= 0.0;
+                let next_in = d_next >= 0.0;
+                if cur_in {
+                    scratch.push(*cur);
+                }
+                if cur_in != next_in {
+                    // Interpolate from the outside vertex towards the inside one.
+                    let (out, inside, d_out, d_in) =
+                        if cur_in { (next, cur, d_next, d_cur) } else { (cur, next, d_cur, d_next) };
+                    let t = d_out / (d_out - d_in);
+                    let mut v = out.lerp(inside, t);
+                    // The edge leaving the clip plane keeps the flag of the edge it cuts; the
+                    // new edge along the plane is not a boundary of the original polygon.
+                    v.edge_flag = if cur_in { false } else { cur.edge_flag };
+                    scratch.push(v);
+                }
+            }
+            std::mem::swap(poly, scratch);
+        }
+    }
+
+    /// Clips the segment `a`–`b` plane by plane, exactly as a polygon edge is clipped;
+    /// `None` when nothing remains.
+    pub fn clip_line(&self, a: &ClipVertex, b: &ClipVertex, mask: u32) -> Option<(ClipVertex, ClipVertex)> {
+        let (mut a, mut b) = (*a, *b);
+        for plane in 0..self.count() {
+            if mask & (1 << plane) == 0 {
+                continue;
+            }
+            let da = self.distance(plane, &a);
+            let db = self.distance(plane, &b);
+            match (da >= 0.0, db >= 0.0) {
+                (true, true) => {}
+                (false, false) => return None,
+                (false, true) => a = a.lerp(&b, da / (da - db)),
+                (true, false) => b = b.lerp(&a, db / (db - da)),
+            }
+        }
+        Some((a, b))
+    }
+}
+
+/// Smallest w a clipped vertex may have.
+pub const W_EPSILON: f32 = 1e-30;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn vertex(x: f32, y: f32, z: f32, w: f32) -> ClipVertex {
+        ClipVertex {
+            clip: [x, y, z, w],
+            eye: [x, y, z, w],
+            color: [x, y, z, 1.0],
+            secondary_color: [0.0; 4],
+            tex_coords: [[0.0; 4]; MAX_TEXTURE_UNITS],
+            fog_coord: 0.0,
+            edge_flag: true,
+        }
+    }
+
+    fn planes() -> ClipPlanes {
+        ClipPlanes { guard_x: 1.0, guard_y: 1.0, clip_z: true, user: Vec::new() }
+    }
+
+    #[test]
+    fn a_triangle_crossing_the_near_plane_is_cut_there() {
+        let p = planes();
+        let tri = [vertex(0.0, 0.0, -2.0, 1.0), vertex(0.5, 0.0, 0.0, 1.0), vertex(0.0, 0.5, 0.0, 1.0)];
+        let mask = tri.iter().fold(0, |m, v| m | p.outcode(v));
+        assert_eq!(mask, 1 << 4);
+        let mut poly = tri.to_vec();
+        p.clip_polygon(&mut poly, &mut Vec::new(), mask);
+        assert_eq!(poly.len(), 4);
+        for v in &poly {
+            assert!(v.clip[2] >= -v.clip[3] - 1e-6);
+        }
+    }
+
+    #[test]
+    fn shared_edges_are_cut_at_the_same_point_in_either_direction() {
+        let p = planes();
+        let a = vertex(-3.0, 0.2, 0.0, 1.0);
+        let b = vertex(0.7, -0.4, 0.3, 1.0);
+        let mask = p.outcode(&a) | p.outcode(&b);
+        let (x0, y0) = p.clip_line(&a, &b, mask).unwrap();
+        let (y1, x1) = p.clip_line(&b, &a, mask).unwrap();
+        assert_eq!(x0, x1);
+        assert_eq!(y0, y1);
+        let mut poly1 = vec![a, b, vertex(0.0, 0.9, 0.0, 1.0)];
+        let mut poly2 = vec![b, a, vertex(0.0, -0.9, 0.0, 1.0)];
+        p.clip_polygon(&mut poly1, &mut Vec::new(), mask);
+        p.clip_polygon(&mut poly2, &mut Vec::new(), mask);
+        let cut1: Vec<_> = poly1.iter().filter(|v| v.clip[0] == -1.0).map(|v| v.clip).collect();
+        let cut2: Vec<_> = poly2.iter().filter(|v| v.clip[0] == -1.0).map(|v| v.clip).collect();
+        assert!(cut1.iter().any(|c| cut2.contains(c)), "{cut1:?} {cut2:?}");
+    }
+
+    #[test]
+    fn vertices_behind_the_eye_are_removed() {
+        let p = planes();
+        let mut poly = vec![vertex(0.0, 0.0, 0.0, 1.0), vertex(1.0, 0.0, 0.0, -1.0), vertex(0.0, 1.0, 0.0, -1.0)];
+        let mask = poly.iter().fold(0, |m, v| m | p.outcode(v));
+        p.clip_polygon(&mut poly, &mut Vec::new(), mask);
+        assert!(poly.iter().all(|v| v.clip[3] > 0.0));
+    }
+
+    #[test]
+    fn nan_is_outside() {
+        assert_ne!(planes().outcode(&vertex(f32::NAN, 0.0, 0.0, 1.0)), 0);
+    }
+}
