@@ -222,8 +222,9 @@ mod tests {
         let mut poly2 = vec![b, a, vertex(0.0, -0.9, 0.0, 1.0)];
         p.clip_polygon(&mut poly1, &mut Vec::new(), mask);
         p.clip_polygon(&mut poly2, &mut Vec::new(), mask);
-        let cut1: Vec<_> = poly1.iter().filter(|v| v.clip[0] == -1.0).map(|v| v.clip).collect();
-        let cut2: Vec<_> = poly2.iter().filter(|v| v.clip[0] == -1.0).map(|v| v.clip).collect();
+        let on_plane = |v: &&ClipVertex| (v.clip[0] + 1.0).abs() < 1e-5;
+        let cut1: Vec<_> = poly1.iter().filter(on_plane).map(|v| v.clip).collect();
+        let cut2: Vec<_> = poly2.iter().filter(on_plane).map(|v| v.clip).collect();
         assert!(cut1.iter().any(|c| cut2.contains(c)), "{cut1:?} {cut2:?}");
     }
 
