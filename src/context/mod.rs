@@ -18,6 +18,8 @@ pub mod matrix;
 pub mod read_pixels;
 pub mod state;
 pub mod strings;
+#[cfg(test)]
+mod watertight_tests;
 
 use crate::api::enums::*;
 use crate::api::types::GLenum;
