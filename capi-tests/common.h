@@ -13,6 +13,10 @@
 #ifndef CAPI_COMMON_H
 #define CAPI_COMMON_H
 
+/* Declare the GL 1.2+ entry points too: tests call them directly, as legacy programs do. */
+#ifndef GL_GLEXT_PROTOTYPES
+#define GL_GLEXT_PROTOTYPES 1
+#endif
 #include <GL/osmesa.h>
 #include <GL/gl.h>
 #include <GL/glext.h>
