@@ -6354,13 +6354,13 @@ void glMultMatrixf(const GLfloat *m);
 
 void glMultMatrixd(const GLdouble *m);
 
-void glLoadTransposeMatrixf(const GLfloat *m);
+void glLoadTransposeMatrixf(const GLfloat m[16]);
 
-void glLoadTransposeMatrixd(const GLdouble *m);
+void glLoadTransposeMatrixd(const GLdouble m[16]);
 
-void glMultTransposeMatrixf(const GLfloat *m);
+void glMultTransposeMatrixf(const GLfloat m[16]);
 
-void glMultTransposeMatrixd(const GLdouble *m);
+void glMultTransposeMatrixd(const GLdouble m[16]);
 
 void glLoadTransposeMatrixfARB(const GLfloat *m);
 

@@ -92,6 +92,7 @@ pub unsafe extern "C" fn glMultMatrixd(m: *const GLdouble) {
 
 /// # Safety
 /// `m` is NULL (ignored) or points to 16 floats.
+/// cbindgen:ptrs-as-arrays=[[m; 16]]
 #[no_mangle]
 pub unsafe extern "C" fn glLoadTransposeMatrixf(m: *const GLfloat) {
     // SAFETY: forwarded contract of this entry point.
@@ -102,6 +103,7 @@ pub unsafe extern "C" fn glLoadTransposeMatrixf(m: *const GLfloat) {
 
 /// # Safety
 /// `m` is NULL (ignored) or points to 16 doubles.
+/// cbindgen:ptrs-as-arrays=[[m; 16]]
 #[no_mangle]
 pub unsafe extern "C" fn glLoadTransposeMatrixd(m: *const GLdouble) {
     // SAFETY: forwarded contract of this entry point.
@@ -112,6 +114,7 @@ pub unsafe extern "C" fn glLoadTransposeMatrixd(m: *const GLdouble) {
 
 /// # Safety
 /// `m` is NULL (ignored) or points to 16 floats.
+/// cbindgen:ptrs-as-arrays=[[m; 16]]
 #[no_mangle]
 pub unsafe extern "C" fn glMultTransposeMatrixf(m: *const GLfloat) {
     // SAFETY: forwarded contract of this entry point.
@@ -122,6 +125,7 @@ pub unsafe extern "C" fn glMultTransposeMatrixf(m: *const GLfloat) {
 
 /// # Safety
 /// `m` is NULL (ignored) or points to 16 doubles.
+/// cbindgen:ptrs-as-arrays=[[m; 16]]
 #[no_mangle]
 pub unsafe extern "C" fn glMultTransposeMatrixd(m: *const GLdouble) {
     // SAFETY: forwarded contract of this entry point.

@@ -56,10 +56,11 @@ fn bit_mask(bit: usize, lsb_first: bool) -> u8 {
 fn unpack_stipple(client: &[u8], layout: &ImageLayout, start: usize, lsb_first: bool) -> Option<[u32; 32]> {
     let mut pattern = [0u32; STIPPLE_SIZE];
     for (row, word) in pattern.iter_mut().enumerate() {
-        let row_start = layout.row_offset(row)?.checked_sub(start)?;
+        let row_offset = layout.row_offset(row)?;
         for col in 0..STIPPLE_SIZE {
             let bit = layout.bit_index(col);
-            if client.get(row_start + bit / 8)? & bit_mask(bit, lsb_first) != 0 {
+            let byte = client.get((row_offset + bit / 8).checked_sub(start)?)?;
+            if byte & bit_mask(bit, lsb_first) != 0 {
                 *word |= 0x8000_0000 >> col;
             }
         }
@@ -71,12 +72,12 @@ fn unpack_stipple(client: &[u8], layout: &ImageLayout, start: usize, lsb_first: 
 /// the other bits of the bytes it touches keep their values.
 fn pack_stipple(pattern: &[u32; 32], client: &mut [u8], layout: &ImageLayout, start: usize, lsb_first: bool) {
     for (row, &word) in pattern.iter().enumerate() {
-        let Some(row_start) = layout.row_offset(row).and_then(|o| o.checked_sub(start)) else {
+        let Some(row_offset) = layout.row_offset(row) else {
             return;
         };
         for col in 0..STIPPLE_SIZE {
             let bit = layout.bit_index(col);
-            let Some(byte) = client.get_mut(row_start + bit / 8) else {
+            let Some(byte) = (row_offset + bit / 8).checked_sub(start).and_then(|i| client.get_mut(i)) else {
                 return;
             };
             let mask = bit_mask(bit, lsb_first);
@@ -432,6 +433,29 @@ mod tests {
             assert_eq!(o & !mask, 0xa5 & !mask, "byte {i}");
         }
         assert_eq!(ctx.take_error(), GL_NO_ERROR);
+    }
+
+    #[test]
+    fn whole_byte_skips_move_the_span_start() {
+        let mut ctx = context();
+        ctx.pixel_store.unpack.skip_pixels = 8;
+        ctx.pixel_store.unpack.alignment = 1;
+        let client: Vec<u8> = (0..=255).collect();
+        ctx.polygon_stipple(|span| {
+            assert_eq!(span, 1..129);
+            Some(&client[span])
+        });
+        // Row r is bytes 4r+1 .. 4r+4 of the client image.
+        assert_eq!(ctx.state.polygon_stipple[0], 0x0102_0304);
+        assert_eq!(ctx.state.polygon_stipple[31], 0x7d7e_7f80);
+        ctx.pixel_store.pack.skip_pixels = 16;
+        let mut out = [0u8; 132];
+        ctx.get_polygon_stipple(|span| {
+            assert_eq!(span, 2..130);
+            Some(&mut out[span])
+        });
+        assert_eq!(&out[..7], &[0, 0, 1, 2, 3, 4, 5]);
+        assert_eq!(&out[128..], &[0x7f, 0x80, 0, 0]);
     }
 
     #[test]
