@@ -219,6 +219,30 @@ static void zero_signs(void)
     glLoadIdentity();
 }
 
+/* A draw validates state, and Mesa analyses the changed matrices then: a loaded matrix known
+ * to be affine afterwards takes the 3x4 product, which keeps -0 at element 8. Checked (not
+ * printed) so that it holds as soon as the implementation can draw. */
+static void draw_time_analysis(void)
+{
+    static const GLfloat negate[16] = {-1.0f, -0.0f, -0.0f, -0.0f, -0.0f, -1.0f, -0.0f, -0.0f,
+                                       -0.0f, -0.0f, -1.0f, -0.0f, 0.0f,  0.0f,  0.0f,  1.0f};
+    void (*begin)(GLenum) = (void (*)(GLenum))OSMesaGetProcAddress("glBegin");
+    void (*vertex)(GLfloat, GLfloat, GLfloat) = (void (*)(GLfloat, GLfloat, GLfloat))OSMesaGetProcAddress("glVertex3f");
+    void (*end)(void) = (void (*)(void))OSMesaGetProcAddress("glEnd");
+    if (!begin || !vertex || !end)
+        return;
+    GLfloat m[16];
+    glLoadMatrixf(negate);
+    begin(GL_POINTS);
+    vertex(0.0f, 0.0f, 0.0f);
+    end();
+    glRotatef(90.0f, 0.0f, 0.0f, 1.0f);
+    glGetFloatv(GL_MODELVIEW_MATRIX, m);
+    capi_check(m[8] == 0.0f && signbit(m[8]), "after a draw, the 3x4 product: element 8 is %a", m[8]);
+    glLoadIdentity();
+    capi_check(glGetError() == GL_NO_ERROR, "draw_time_analysis");
+}
+
 static void rotation_corners(void)
 {
     glLoadIdentity();
@@ -320,6 +344,7 @@ int main(void)
     texture_stacks();
     load_and_multiply();
     zero_signs();
+    draw_time_analysis();
     rotation_corners();
     stacks();
     color_matrix();

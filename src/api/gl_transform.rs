@@ -90,9 +90,11 @@ pub unsafe extern "C" fn glMultMatrixd(m: *const GLdouble) {
     }
 }
 
+// <GL/gl.h> declares the parameter as an array, `m[16]`; so does tessera.h.
+/// cbindgen:ptrs-as-arrays=[[m; 16]]
+///
 /// # Safety
 /// `m` is NULL (ignored) or points to 16 floats.
-/// cbindgen:ptrs-as-arrays=[[m; 16]]
 #[no_mangle]
 pub unsafe extern "C" fn glLoadTransposeMatrixf(m: *const GLfloat) {
     // SAFETY: forwarded contract of this entry point.
@@ -101,9 +103,11 @@ pub unsafe extern "C" fn glLoadTransposeMatrixf(m: *const GLfloat) {
     }
 }
 
+// <GL/gl.h> declares the parameter as an array, `m[16]`; so does tessera.h.
+/// cbindgen:ptrs-as-arrays=[[m; 16]]
+///
 /// # Safety
 /// `m` is NULL (ignored) or points to 16 doubles.
-/// cbindgen:ptrs-as-arrays=[[m; 16]]
 #[no_mangle]
 pub unsafe extern "C" fn glLoadTransposeMatrixd(m: *const GLdouble) {
     // SAFETY: forwarded contract of this entry point.
@@ -112,9 +116,11 @@ pub unsafe extern "C" fn glLoadTransposeMatrixd(m: *const GLdouble) {
     }
 }
 
+// <GL/gl.h> declares the parameter as an array, `m[16]`; so does tessera.h.
+/// cbindgen:ptrs-as-arrays=[[m; 16]]
+///
 /// # Safety
 /// `m` is NULL (ignored) or points to 16 floats.
-/// cbindgen:ptrs-as-arrays=[[m; 16]]
 #[no_mangle]
 pub unsafe extern "C" fn glMultTransposeMatrixf(m: *const GLfloat) {
     // SAFETY: forwarded contract of this entry point.
@@ -123,9 +129,11 @@ pub unsafe extern "C" fn glMultTransposeMatrixf(m: *const GLfloat) {
     }
 }
 
+// <GL/gl.h> declares the parameter as an array, `m[16]`; so does tessera.h.
+/// cbindgen:ptrs-as-arrays=[[m; 16]]
+///
 /// # Safety
 /// `m` is NULL (ignored) or points to 16 doubles.
-/// cbindgen:ptrs-as-arrays=[[m; 16]]
 #[no_mangle]
 pub unsafe extern "C" fn glMultTransposeMatrixd(m: *const GLdouble) {
     // SAFETY: forwarded contract of this entry point.

@@ -19,6 +19,10 @@
 //! double it is kept in (Mesa 22 keeps it as a float: glDepthRange(0.1, …) reads back
 //! 0.10000000149011612 there, 0.1 here).
 //!
+//! Matrices are not normalized values, so as integers they round like any float (GL 2.1
+//! 6.1.2); Mesa 22 maps them like colors (0.5 reads back as 1073741823). GL_TRANSPOSE_TEXTURE_MATRIX
+//! is the active unit's, as GL_TEXTURE_MATRIX is (Mesa 22 answers it from unit 0).
+//!
 //! Colors that fragment clamping applies to (clear color, blend color, alpha reference) are
 //! stored as given and clamped here when the clamp is in effect: CLAMP_FRAGMENT_COLOR TRUE, or
 //! FIXED_ONLY with a fixed-point color buffer. (Mesa 22 also clamps for OSMesa float buffers
