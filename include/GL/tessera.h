@@ -6242,6 +6242,50 @@ void glPixelStorei(GLenum pname, GLint param);
 
 void glPixelStoref(GLenum pname, GLfloat param);
 
+void glShadeModel(GLenum mode);
+
+void glProvokingVertex(GLenum mode);
+
+void glProvokingVertexEXT(GLenum mode);
+
+void glFrontFace(GLenum mode);
+
+void glCullFace(GLenum mode);
+
+void glPolygonMode(GLenum face, GLenum mode);
+
+void glPolygonOffset(GLfloat factor, GLfloat units);
+
+void glPolygonOffsetClamp(GLfloat factor, GLfloat units, GLfloat clamp);
+
+void glPolygonOffsetClampEXT(GLfloat factor, GLfloat units, GLfloat clamp);
+
+void glLineWidth(GLfloat width);
+
+void glLineStipple(GLint factor, GLushort pattern);
+
+void glPointSize(GLfloat size);
+
+void glPointParameterf(GLenum pname, GLfloat param);
+
+void glPointParameteri(GLenum pname, GLint param);
+
+void glPointParameterfv(GLenum pname, const GLfloat *params);
+
+void glPointParameteriv(GLenum pname, const GLint *params);
+
+void glPointParameterfARB(GLenum pname, GLfloat param);
+
+void glPointParameterfEXT(GLenum pname, GLfloat param);
+
+void glPointParameterfvARB(GLenum pname, const GLfloat *params);
+
+void glPointParameterfvEXT(GLenum pname, const GLfloat *params);
+
+void glPolygonStipple(const GLubyte *mask);
+
+void glGetPolygonStipple(GLubyte *mask);
+
 void glEnable(GLenum cap);
 
 void glDisable(GLenum cap);
@@ -6289,6 +6333,62 @@ void glGetIntegerv(GLenum pname, GLint *data);
 void glGetFloatv(GLenum pname, GLfloat *data);
 
 void glGetDoublev(GLenum pname, GLdouble *data);
+
+void glMatrixMode(GLenum mode);
+
+void glActiveTexture(GLenum texture);
+
+void glActiveTextureARB(GLenum texture);
+
+void glPushMatrix(void);
+
+void glPopMatrix(void);
+
+void glLoadIdentity(void);
+
+void glLoadMatrixf(const GLfloat *m);
+
+void glLoadMatrixd(const GLdouble *m);
+
+void glMultMatrixf(const GLfloat *m);
+
+void glMultMatrixd(const GLdouble *m);
+
+void glLoadTransposeMatrixf(const GLfloat m[16]);
+
+void glLoadTransposeMatrixd(const GLdouble m[16]);
+
+void glMultTransposeMatrixf(const GLfloat m[16]);
+
+void glMultTransposeMatrixd(const GLdouble m[16]);
+
+void glLoadTransposeMatrixfARB(const GLfloat *m);
+
+void glLoadTransposeMatrixdARB(const GLdouble *m);
+
+void glMultTransposeMatrixfARB(const GLfloat *m);
+
+void glMultTransposeMatrixdARB(const GLdouble *m);
+
+void glRotatef(GLfloat angle, GLfloat x, GLfloat y, GLfloat z);
+
+void glRotated(GLdouble angle, GLdouble x, GLdouble y, GLdouble z);
+
+void glScalef(GLfloat x, GLfloat y, GLfloat z);
+
+void glScaled(GLdouble x, GLdouble y, GLdouble z);
+
+void glTranslatef(GLfloat x, GLfloat y, GLfloat z);
+
+void glTranslated(GLdouble x, GLdouble y, GLdouble z);
+
+void glFrustum(GLdouble left, GLdouble right, GLdouble bottom, GLdouble top, GLdouble near_val, GLdouble far_val);
+
+void glOrtho(GLdouble left, GLdouble right, GLdouble bottom, GLdouble top, GLdouble near_val, GLdouble far_val);
+
+void glClipPlane(GLenum plane, const GLdouble *equation);
+
+void glGetClipPlane(GLenum plane, GLdouble *equation);
 
 OSMesaContext OSMesaCreateContext(GLenum format, OSMesaContext sharelist);
 

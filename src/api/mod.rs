@@ -14,7 +14,9 @@
 pub mod enums;
 pub mod gl_buffers;
 pub mod gl_pixels;
+pub mod gl_raster_state;
 pub mod gl_state;
+pub mod gl_transform;
 pub mod osmesa;
 pub mod procs;
 pub mod types;

@@ -8,14 +8,14 @@
 //! group, including the texture enables of every unit and the blend enable of every draw
 //! buffer, while leaving the rest of those groups alone.
 //!
-//! Groups whose state does not exist yet (current, list, polygon stipple pattern, ...) are
-//! accepted and save nothing. Unknown mask bits are ignored, and an empty mask still pushes
+//! Groups whose state does not exist yet (current, list, ...) are accepted and save nothing. Unknown mask bits are ignored, and an empty mask still pushes
 //! an entry, as in Mesa.
 //!
 //! Deliberate differences from Mesa 22, which restores less than the specification asks:
 //! GL_ENABLE_BIT restores GL_LIGHTi (Mesa's enable group has no light loop), GL_ENABLE_BIT and
 //! GL_FOG_BIT restore GL_COLOR_SUM (fog/enable in table 6.11), and GL_HINT_BIT restores
-//! GL_GENERATE_MIPMAP_HINT and GL_FRAGMENT_SHADER_DERIVATIVE_HINT.
+//! GL_GENERATE_MIPMAP_HINT and GL_FRAGMENT_SHADER_DERIVATIVE_HINT, and GL_LIGHTING_BIT restores
+//! GL_PROVOKING_VERTEX (ARB_provoking_vertex puts it in the lighting group; Mesa 22 leaves it).
 use super::capabilities::{self, CAPABILITIES};
 use super::state::*;
 use super::Context;
@@ -87,6 +87,7 @@ pub struct SavedAttribs {
     texture: Option<TextureState>,
     eval: Option<EvalState>,
     pixel_mode: Option<PixelModeState>,
+    polygon_stipple: Option<[u32; 32]>,
     enable: Option<Enables>,
 }
 
@@ -115,6 +116,7 @@ impl SavedAttribs {
             texture: saved(mask, GL_TEXTURE_BIT, &state.texture),
             eval: saved(mask, GL_EVAL_BIT, &state.eval),
             pixel_mode: saved(mask, GL_PIXEL_MODE_BIT, &state.pixel_mode),
+            polygon_stipple: saved(mask, GL_POLYGON_STIPPLE_BIT, &state.polygon_stipple),
             enable: (mask & GL_ENABLE_BIT != 0).then(|| Enables::save(state)),
         }
     }
@@ -126,12 +128,17 @@ impl SavedAttribs {
             enable.restore(state);
         }
         if let Some(line) = self.line {
-            state.line_point.line_smooth = line.line_smooth;
-            state.line_point.line_stipple = line.line_stipple;
+            let l = &mut state.line_point;
+            (l.line_smooth, l.line_stipple, l.line_width) = (line.line_smooth, line.line_stipple, line.line_width);
+            (l.line_stipple_factor, l.line_stipple_pattern) = (line.line_stipple_factor, line.line_stipple_pattern);
         }
         if let Some(point) = self.point {
-            state.line_point.point_smooth = point.point_smooth;
-            state.line_point.point_sprite = point.point_sprite;
+            let p = &mut state.line_point;
+            (p.point_smooth, p.point_sprite, p.point_size) = (point.point_smooth, point.point_sprite, point.point_size);
+            (p.point_size_min, p.point_size_max) = (point.point_size_min, point.point_size_max);
+            p.point_fade_threshold = point.point_fade_threshold;
+            p.point_distance_attenuation = point.point_distance_attenuation;
+            p.point_sprite_coord_origin = point.point_sprite_coord_origin;
         }
         restore(&mut state.color, self.color);
         restore(&mut state.depth, self.depth);
@@ -148,6 +155,7 @@ impl SavedAttribs {
         restore(&mut state.texture, self.texture);
         restore(&mut state.eval, self.eval);
         restore(&mut state.pixel_mode, self.pixel_mode);
+        restore(&mut state.polygon_stipple, self.polygon_stipple);
     }
 }
 
@@ -276,9 +284,12 @@ mod tests {
         let l = &mut t.lighting;
         (l.enabled, l.color_material, l.clamp_vertex_color) = (!l.enabled, !l.color_material, GL_FALSE as GLenum);
         l.lights = [true, false, true, false, true, false, true, true];
+        (l.shade_model, l.provoking_vertex) = (GL_FLAT, GL_FIRST_VERTEX_CONVENTION);
         let x = &mut t.transform;
         x.clip_planes = [true; MAX_CLIP_PLANES];
         (x.normalize, x.rescale_normal, x.depth_clamp) = (!x.normalize, !x.rescale_normal, !x.depth_clamp);
+        x.clip_plane_equations[3] = [1.0, -2.0, 0.5, 4.0];
+        x.matrix_mode = GL_TEXTURE;
         t.polygon = PolygonState {
             cull_face: true,
             smooth: true,
@@ -286,7 +297,13 @@ mod tests {
             offset_fill: true,
             offset_line: true,
             offset_point: true,
-            ..t.polygon.clone()
+            cull_face_mode: GL_FRONT_AND_BACK,
+            front_face: GL_CW,
+            mode_front: GL_POINT,
+            mode_back: GL_LINE,
+            offset_factor: 2.0,
+            offset_units: -1.0,
+            offset_clamp: 0.5,
         };
         t.line_point = LinePointState {
             line_smooth: true,
@@ -295,8 +312,17 @@ mod tests {
             point_sprite: true,
             vertex_program_point_size: true,
             vertex_program_two_side: true,
-            ..t.line_point.clone()
+            line_width: 3.0,
+            line_stipple_factor: 7,
+            line_stipple_pattern: 0xf0f0,
+            point_size: 5.0,
+            point_size_min: 2.0,
+            point_size_max: 9.0,
+            point_fade_threshold: 0.25,
+            point_distance_attenuation: [0.5, 1.0, 2.0],
+            point_sprite_coord_origin: GL_LOWER_LEFT,
         };
+        t.polygon_stipple[5] = 0x1234_5678;
         let m = &mut t.multisample;
         (m.enabled, m.alpha_to_coverage, m.alpha_to_one, m.coverage) =
             (!m.enabled, !m.alpha_to_coverage, !m.alpha_to_one, !m.coverage);
@@ -336,22 +362,40 @@ mod tests {
             e.lighting.enabled = o.lighting.enabled;
             e.lighting.lights = o.lighting.lights;
             e.lighting.color_material = o.lighting.color_material;
-            e.transform = o.transform.clone();
-            e.polygon = o.polygon.clone();
-            e.line_point = o.line_point.clone();
+            let (et, ot) = (&mut e.transform, &o.transform);
+            (et.clip_planes, et.normalize, et.rescale_normal) = (ot.clip_planes, ot.normalize, ot.rescale_normal);
+            et.depth_clamp = ot.depth_clamp;
+            let (ep, op) = (&mut e.polygon, &o.polygon);
+            (ep.cull_face, ep.smooth, ep.stipple) = (op.cull_face, op.smooth, op.stipple);
+            (ep.offset_fill, ep.offset_line, ep.offset_point) = (op.offset_fill, op.offset_line, op.offset_point);
+            let (el, ol) = (&mut e.line_point, &o.line_point);
+            (el.line_smooth, el.line_stipple, el.point_smooth) = (ol.line_smooth, ol.line_stipple, ol.point_smooth);
+            el.point_sprite = ol.point_sprite;
+            el.vertex_program_point_size = ol.vertex_program_point_size;
+            el.vertex_program_two_side = ol.vertex_program_two_side;
             e.multisample = o.multisample.clone();
             e.texture.units = o.texture.units;
             e.eval = o.eval.clone();
         }
+        let (el, ol) = (&mut e.line_point, &o.line_point);
         if mask & GL_LINE_BIT != 0 {
-            e.line_point.line_smooth = o.line_point.line_smooth;
-            e.line_point.line_stipple = o.line_point.line_stipple;
+            el.line_smooth = ol.line_smooth;
+            el.line_stipple = ol.line_stipple;
+            el.line_width = ol.line_width;
+            el.line_stipple_factor = ol.line_stipple_factor;
+            el.line_stipple_pattern = ol.line_stipple_pattern;
         }
         if mask & GL_POINT_BIT != 0 {
-            e.line_point.point_smooth = o.line_point.point_smooth;
-            e.line_point.point_sprite = o.line_point.point_sprite;
+            el.point_smooth = ol.point_smooth;
+            el.point_sprite = ol.point_sprite;
+            el.point_size = ol.point_size;
+            el.point_size_min = ol.point_size_min;
+            el.point_size_max = ol.point_size_max;
+            el.point_fade_threshold = ol.point_fade_threshold;
+            el.point_distance_attenuation = ol.point_distance_attenuation;
+            el.point_sprite_coord_origin = ol.point_sprite_coord_origin;
         }
-        let whole: [(u32, CopyGroup); 15] = [
+        let whole: [(u32, CopyGroup); 16] = [
             (GL_COLOR_BUFFER_BIT, |e, o| e.color = o.color.clone()),
             (GL_DEPTH_BUFFER_BIT, |e, o| e.depth = o.depth.clone()),
             (GL_STENCIL_BUFFER_BIT, |e, o| e.stencil = o.stencil.clone()),
@@ -367,6 +411,7 @@ mod tests {
             (GL_TEXTURE_BIT, |e, o| e.texture = o.texture.clone()),
             (GL_EVAL_BIT, |e, o| e.eval = o.eval.clone()),
             (GL_PIXEL_MODE_BIT, |e, o| e.pixel_mode = o.pixel_mode.clone()),
+            (GL_POLYGON_STIPPLE_BIT, |e, o| e.polygon_stipple = o.polygon_stipple),
         ];
         for (bit, copy) in whole {
             if mask & bit != 0 {
@@ -376,7 +421,7 @@ mod tests {
         e
     }
 
-    const GROUPS: [u32; 23] = [
+    const GROUPS: [u32; 24] = [
         GL_CURRENT_BIT,
         GL_POINT_BIT,
         GL_LINE_BIT,
@@ -400,6 +445,7 @@ mod tests {
         GL_MULTISAMPLE_BIT,
         0,
         GL_ENABLE_BIT | GL_LINE_BIT | GL_VIEWPORT_BIT,
+        GL_LINE_BIT | GL_POINT_BIT | GL_POLYGON_STIPPLE_BIT,
     ];
 
     #[test]
@@ -422,6 +468,13 @@ mod tests {
         assert_ne!(t.texture, o.texture);
         assert_ne!(t.eval, o.eval);
         assert_ne!(t.pixel_mode, o.pixel_mode);
+        assert_ne!(t.polygon_stipple, o.polygon_stipple);
+        // Every field of the groups with enables outside GL_ENABLE_BIT changed too.
+        let only_enables = expected_after_pop(GL_ENABLE_BIT, &o);
+        assert_ne!(only_enables.transform, o.transform);
+        assert_ne!(only_enables.polygon, o.polygon);
+        assert_ne!(only_enables.line_point, o.line_point);
+        assert_ne!(only_enables.lighting, o.lighting);
         // Nothing but the scramble itself survives a pop of every group.
         assert_eq!(expected_after_pop(GL_ALL_ATTRIB_BITS, &o), o);
     }

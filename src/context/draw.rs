@@ -75,6 +75,8 @@ impl Context {
                 Scene::new(width, height)
             }
         };
+        // Mesa analyses changed matrices at draw time; their flags decide how products round.
+        self.matrices.validate();
         let state = self.draw_state(&mut scene, width, height, float_color, depth_bits);
         let state_index = scene.add_state(state);
         let clip_vertices = self.transform(vertices, float_color);
@@ -156,7 +158,7 @@ impl Context {
     /// Vertices to clip space, with their eye coordinates and clamped colors.
     fn transform(&self, vertices: &[Vertex], float_color: bool) -> Vec<ClipVertex> {
         let modelview = self.matrices.modelview();
-        let mvp: Mat4 = self.matrices.projection() * modelview;
+        let mvp: Mat4 = self.matrices.model_project();
         let clamp = match self.state.lighting.clamp_vertex_color {
             GL_FIXED_ONLY => !float_color,
             c => c == GL_TRUE as GLenum,
@@ -265,7 +267,8 @@ mod tests {
         );
         let (mut ctx, d) = Context::with_test_drawable(visual, w, h);
         // glOrtho(0, w, 0, h, -1, 1): object coordinates are window coordinates.
-        ctx.matrices.projection = vec![Mat4::orthographic_rh_gl(0.0, w as f32, 0.0, h as f32, -1.0, 1.0)];
+        ctx.matrix_mode(GL_PROJECTION);
+        ctx.ortho(0.0, w as f64, 0.0, h as f64, -1.0, 1.0);
         (ctx, d)
     }
 
@@ -346,7 +349,9 @@ mod tests {
     #[test]
     fn geometry_behind_the_eye_is_clipped_not_wrapped() {
         let (mut ctx, d) = context(16, 16);
-        ctx.matrices.projection = vec![Mat4::perspective_rh_gl(1.2, 1.0, 0.5, 10.0)];
+        ctx.matrix_mode(GL_PROJECTION);
+        ctx.load_identity();
+        ctx.frustum(-0.5, 0.5, -0.5, 0.5, 0.5, 10.0);
         // A triangle from in front of the camera to behind it (eye z > 0).
         ctx.draw_vertices(
             GL_TRIANGLES,

@@ -19,12 +19,18 @@
 //! double it is kept in (Mesa 22 keeps it as a float: glDepthRange(0.1, …) reads back
 //! 0.10000000149011612 there, 0.1 here).
 //!
+//! Matrices are not normalized values, so as integers they round like any float (GL 2.1
+//! 6.1.2); Mesa 22 maps them like colors (0.5 reads back as 1073741823). GL_TRANSPOSE_TEXTURE_MATRIX
+//! is the active unit's, as GL_TEXTURE_MATRIX is (Mesa 22 answers it from unit 0).
+//!
 //! Colors that fragment clamping applies to (clear color, blend color, alpha reference) are
 //! stored as given and clamped here when the clamp is in effect: CLAMP_FRAGMENT_COLOR TRUE, or
 //! FIXED_ONLY with a fixed-point color buffer. (Mesa 22 also clamps for OSMesa float buffers
 //! under FIXED_ONLY, because its window-system framebuffer never records that it is float,
 //! although its clears there are unclamped; tessera answers by the buffer's real format.)
 use super::capabilities;
+use super::matrix::{transpose, MatrixStacks, StackId};
+use super::raster_state::{LINE_WIDTH_GRANULARITY, LINE_WIDTH_RANGE, POINT_SIZE_GRANULARITY, POINT_SIZE_RANGE};
 use super::state::{
     StencilFace, MAX_ATTRIB_STACK_DEPTH, MAX_CLIP_PLANES, MAX_DRAW_BUFFERS, MAX_LIGHTS, MAX_TEXTURE_UNITS,
     MAX_VIEWPORT_DIM,
@@ -133,6 +139,10 @@ fn norm_floats<const N: usize>(values: [f32; N]) -> Vec<Value> {
     values.map(Value::NormFloat).to_vec()
 }
 
+fn floats<const N: usize>(values: [f32; N]) -> Vec<Value> {
+    values.map(Value::Float).to_vec()
+}
+
 fn one(value: Value) -> Vec<Value> {
     vec![value]
 }
@@ -163,6 +173,13 @@ impl Context {
         let face: &StencilFace = if s.stencil.active_face_back { &s.stencil.back } else { &s.stencil.front };
         let back = &s.stencil.back;
         let (pack, unpack) = (&self.pixel_store.pack, &self.pixel_store.unpack);
+        let texture_stack = StackId::Texture(s.texture.active_unit);
+        // Matrices are not normalized: as integers they round (Mesa 22 maps them like colors).
+        let matrix = |stack| floats(self.matrix_elements(stack));
+        let transposed = |stack| floats(transpose(&self.matrix_elements(stack)));
+        let depth = |stack| one(Int(self.matrices.depth(stack) as i32));
+        let max_depth = |stack| one(Int(MatrixStacks::max_depth(stack) as i32));
+        let (lp, polygon) = (&s.line_point, &s.polygon);
         Some(match pname {
             // Framebuffer properties.
             GL_RED_BITS => one(Int(red)),
@@ -238,6 +255,50 @@ impl Context {
             GL_DEPTH_RANGE => vec![NormDouble(s.viewport.depth_range[0]), NormDouble(s.viewport.depth_range[1])],
             GL_SCISSOR_BOX => ints(s.scissor.rect),
             GL_CLAMP_VERTEX_COLOR => one(Enum(s.lighting.clamp_vertex_color)),
+            GL_SHADE_MODEL => one(Enum(s.lighting.shade_model)),
+            GL_PROVOKING_VERTEX => one(Enum(s.lighting.provoking_vertex)),
+
+            // Matrices.
+            GL_MATRIX_MODE => one(Enum(s.transform.matrix_mode)),
+            GL_MODELVIEW_MATRIX => matrix(StackId::Modelview),
+            GL_PROJECTION_MATRIX => matrix(StackId::Projection),
+            GL_TEXTURE_MATRIX => matrix(texture_stack),
+            GL_COLOR_MATRIX => matrix(StackId::Color),
+            GL_TRANSPOSE_MODELVIEW_MATRIX => transposed(StackId::Modelview),
+            GL_TRANSPOSE_PROJECTION_MATRIX => transposed(StackId::Projection),
+            GL_TRANSPOSE_TEXTURE_MATRIX => transposed(texture_stack),
+            GL_TRANSPOSE_COLOR_MATRIX => transposed(StackId::Color),
+            GL_MODELVIEW_STACK_DEPTH => depth(StackId::Modelview),
+            GL_PROJECTION_STACK_DEPTH => depth(StackId::Projection),
+            GL_TEXTURE_STACK_DEPTH => depth(texture_stack),
+            GL_COLOR_MATRIX_STACK_DEPTH => depth(StackId::Color),
+            GL_MAX_MODELVIEW_STACK_DEPTH => max_depth(StackId::Modelview),
+            GL_MAX_PROJECTION_STACK_DEPTH => max_depth(StackId::Projection),
+            GL_MAX_TEXTURE_STACK_DEPTH => max_depth(texture_stack),
+            GL_MAX_COLOR_MATRIX_STACK_DEPTH => max_depth(StackId::Color),
+
+            // Polygons, lines and points.
+            GL_FRONT_FACE => one(Enum(polygon.front_face)),
+            GL_CULL_FACE_MODE => one(Enum(polygon.cull_face_mode)),
+            GL_POLYGON_MODE => vec![Enum(polygon.mode_front), Enum(polygon.mode_back)],
+            GL_POLYGON_OFFSET_FACTOR => one(Float(polygon.offset_factor)),
+            GL_POLYGON_OFFSET_UNITS => one(Float(polygon.offset_units)),
+            GL_POLYGON_OFFSET_CLAMP => one(Float(polygon.offset_clamp)),
+            GL_LINE_WIDTH => one(Float(lp.line_width)),
+            // Also GL_SMOOTH_LINE_WIDTH_RANGE and GL_SMOOTH_LINE_WIDTH_GRANULARITY.
+            GL_LINE_WIDTH_RANGE | GL_ALIASED_LINE_WIDTH_RANGE => floats(LINE_WIDTH_RANGE),
+            GL_LINE_WIDTH_GRANULARITY => one(Float(LINE_WIDTH_GRANULARITY)),
+            GL_LINE_STIPPLE_PATTERN => one(Int(lp.line_stipple_pattern as i32)),
+            GL_LINE_STIPPLE_REPEAT => one(Int(lp.line_stipple_factor)),
+            GL_POINT_SIZE => one(Float(lp.point_size)),
+            // Also GL_SMOOTH_POINT_SIZE_RANGE and GL_SMOOTH_POINT_SIZE_GRANULARITY.
+            GL_POINT_SIZE_RANGE | GL_ALIASED_POINT_SIZE_RANGE => floats(POINT_SIZE_RANGE),
+            GL_POINT_SIZE_GRANULARITY => one(Float(POINT_SIZE_GRANULARITY)),
+            GL_POINT_SIZE_MIN => one(Float(lp.point_size_min)),
+            GL_POINT_SIZE_MAX => one(Float(lp.point_size_max)),
+            GL_POINT_FADE_THRESHOLD_SIZE => one(Float(lp.point_fade_threshold)),
+            GL_POINT_DISTANCE_ATTENUATION => floats(lp.point_distance_attenuation),
+            GL_POINT_SPRITE_COORD_ORIGIN => one(Enum(lp.point_sprite_coord_origin)),
 
             // Hints.
             GL_PERSPECTIVE_CORRECTION_HINT => one(Enum(s.hint.perspective_correction)),

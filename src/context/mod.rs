@@ -15,9 +15,11 @@ pub mod draw;
 pub mod get;
 pub mod hints;
 pub mod matrix;
+pub mod raster_state;
 pub mod read_pixels;
 pub mod state;
 pub mod strings;
+pub mod transform;
 #[cfg(test)]
 mod watertight_tests;
 

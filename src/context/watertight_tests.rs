@@ -7,7 +7,6 @@ use crate::framebuffer::surface::ColorPixels;
 use crate::framebuffer::{ColorFormat, ColorSlot, DepthStencilFormat, FramebufferConfig};
 use crate::setup::triangle::TriangleSetup;
 use crate::vertex::Vertex;
-use glam::Mat4;
 
 fn vertex(x: f32, y: f32, color: [f32; 4]) -> Vertex {
     Vertex {
@@ -32,7 +31,8 @@ fn id_color(id: usize) -> [f32; 4] {
 fn check_mesh(width: usize, height: usize, triangles: &[[[f32; 2]; 3]]) {
     let visual = FramebufferConfig::single_buffered(ColorFormat::Unorm8 { alpha: true }, DepthStencilFormat::None, 0);
     let (mut ctx, drawable) = Context::with_test_drawable(visual, width, height);
-    ctx.matrices.projection = vec![Mat4::orthographic_rh_gl(0.0, width as f32, 0.0, height as f32, -1.0, 1.0)];
+    ctx.matrix_mode(GL_PROJECTION);
+    ctx.ortho(0.0, width as f64, 0.0, height as f64, -1.0, 1.0);
     ctx.state.lighting.shade_model = GL_FLAT;
     let vertices: Vec<Vertex> =
         triangles.iter().enumerate().flat_map(|(id, t)| t.map(|p| vertex(p[0], p[1], id_color(id)))).collect();

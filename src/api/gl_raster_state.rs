@@ -1,0 +1,173 @@
+//! Entry points for the rasterization state: shading, faces, polygon modes and offset, lines,
+//! points and the polygon stipple.
+use super::types::*;
+use super::with_context;
+use crate::context::Context;
+
+#[no_mangle]
+pub extern "C" fn glShadeModel(mode: GLenum) {
+    with_context((), |ctx| ctx.shade_model(mode))
+}
+
+#[no_mangle]
+pub extern "C" fn glProvokingVertex(mode: GLenum) {
+    with_context((), |ctx| ctx.provoking_vertex(mode))
+}
+
+#[no_mangle]
+pub extern "C" fn glProvokingVertexEXT(mode: GLenum) {
+    glProvokingVertex(mode)
+}
+
+#[no_mangle]
+pub extern "C" fn glFrontFace(mode: GLenum) {
+    with_context((), |ctx| ctx.front_face(mode))
+}
+
+#[no_mangle]
+pub extern "C" fn glCullFace(mode: GLenum) {
+    with_context((), |ctx| ctx.cull_face(mode))
+}
+
+#[no_mangle]
+pub extern "C" fn glPolygonMode(face: GLenum, mode: GLenum) {
+    with_context((), |ctx| ctx.polygon_mode(face, mode))
+}
+
+#[no_mangle]
+pub extern "C" fn glPolygonOffset(factor: GLfloat, units: GLfloat) {
+    with_context((), |ctx| ctx.polygon_offset(factor, units, 0.0))
+}
+
+#[no_mangle]
+pub extern "C" fn glPolygonOffsetClamp(factor: GLfloat, units: GLfloat, clamp: GLfloat) {
+    with_context((), |ctx| ctx.polygon_offset(factor, units, clamp))
+}
+
+#[no_mangle]
+pub extern "C" fn glPolygonOffsetClampEXT(factor: GLfloat, units: GLfloat, clamp: GLfloat) {
+    glPolygonOffsetClamp(factor, units, clamp)
+}
+
+#[no_mangle]
+pub extern "C" fn glLineWidth(width: GLfloat) {
+    with_context((), |ctx| ctx.line_width(width))
+}
+
+#[no_mangle]
+pub extern "C" fn glLineStipple(factor: GLint, pattern: GLushort) {
+    with_context((), |ctx| ctx.line_stipple(factor, pattern))
+}
+
+#[no_mangle]
+pub extern "C" fn glPointSize(size: GLfloat) {
+    with_context((), |ctx| ctx.point_size(size))
+}
+
+#[no_mangle]
+pub extern "C" fn glPointParameterf(pname: GLenum, param: GLfloat) {
+    with_context((), |ctx| ctx.point_parameter(pname, [param, 0.0, 0.0]))
+}
+
+#[no_mangle]
+pub extern "C" fn glPointParameteri(pname: GLenum, param: GLint) {
+    glPointParameterf(pname, param as GLfloat)
+}
+
+/// The values a glPointParameter*v pointer holds for `pname`, as floats; `None` for NULL.
+///
+/// # Safety
+/// `params` is NULL or points to as many values as `pname` takes.
+unsafe fn read_point_params<T: Copy + Into<f64>>(pname: GLenum, params: *const T) -> Option<[GLfloat; 3]> {
+    if params.is_null() {
+        return None;
+    }
+    let count = Context::point_parameter_count(pname);
+    let mut values = [0.0; 3];
+    for (i, value) in values.iter_mut().enumerate().take(count) {
+        // SAFETY: the caller passes a pointer to `count` values (GL's contract for `pname`).
+        *value = unsafe { params.add(i).read_unaligned() }.into() as GLfloat;
+    }
+    Some(values)
+}
+
+/// # Safety
+/// `params` is NULL (ignored) or points to 3 floats for GL_POINT_DISTANCE_ATTENUATION, else 1.
+#[no_mangle]
+pub unsafe extern "C" fn glPointParameterfv(pname: GLenum, params: *const GLfloat) {
+    // SAFETY: forwarded contract of this entry point.
+    if let Some(values) = unsafe { read_point_params(pname, params) } {
+        with_context((), |ctx| ctx.point_parameter(pname, values))
+    }
+}
+
+/// # Safety
+/// `params` is NULL (ignored) or points to 3 integers for GL_POINT_DISTANCE_ATTENUATION, else 1.
+#[no_mangle]
+pub unsafe extern "C" fn glPointParameteriv(pname: GLenum, params: *const GLint) {
+    // SAFETY: forwarded contract of this entry point.
+    if let Some(values) = unsafe { read_point_params(pname, params) } {
+        with_context((), |ctx| ctx.point_parameter(pname, values))
+    }
+}
+
+#[no_mangle]
+pub extern "C" fn glPointParameterfARB(pname: GLenum, param: GLfloat) {
+    glPointParameterf(pname, param)
+}
+
+#[no_mangle]
+pub extern "C" fn glPointParameterfEXT(pname: GLenum, param: GLfloat) {
+    glPointParameterf(pname, param)
+}
+
+/// # Safety
+/// As glPointParameterfv.
+#[no_mangle]
+pub unsafe extern "C" fn glPointParameterfvARB(pname: GLenum, params: *const GLfloat) {
+    // SAFETY: forwarded contract of this entry point.
+    unsafe { glPointParameterfv(pname, params) }
+}
+
+/// # Safety
+/// As glPointParameterfv.
+#[no_mangle]
+pub unsafe extern "C" fn glPointParameterfvEXT(pname: GLenum, params: *const GLfloat) {
+    // SAFETY: forwarded contract of this entry point.
+    unsafe { glPointParameterfv(pname, params) }
+}
+
+/// # Safety
+/// `mask` is NULL (ignored) or points to a 32×32 bitmap laid out as the unpack parameters of
+/// glPixelStore describe.
+#[no_mangle]
+pub unsafe extern "C" fn glPolygonStipple(mask: *const GLubyte) {
+    with_context((), |ctx| {
+        ctx.polygon_stipple(|span| {
+            if mask.is_null() {
+                return None;
+            }
+            // SAFETY: the context computed `span` from the unpack parameters as the bytes the
+            // 32×32 bitmap occupies; by glPolygonStipple's contract the caller's image holds them.
+            Some(unsafe { std::slice::from_raw_parts(mask.add(span.start), span.len()) })
+        })
+    })
+}
+
+/// # Safety
+/// `mask` is NULL (nothing written) or points to room for a 32×32 bitmap laid out as the pack
+/// parameters of glPixelStore describe; only the bits of the bitmap are written.
+#[no_mangle]
+pub unsafe extern "C" fn glGetPolygonStipple(mask: *mut GLubyte) {
+    with_context((), |ctx| {
+        ctx.get_polygon_stipple(|span| {
+            if mask.is_null() {
+                return None;
+            }
+            // SAFETY: the context computed `span` from the pack parameters as the bytes the
+            // 32×32 bitmap occupies; by glGetPolygonStipple's contract the caller provides them,
+            // and nothing else accesses that memory during the call.
+            Some(unsafe { std::slice::from_raw_parts_mut(mask.add(span.start), span.len()) })
+        })
+    })
+}

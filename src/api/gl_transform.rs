@@ -1,0 +1,254 @@
+//! Entry points for matrices, glActiveTexture and user clip planes.
+use super::types::*;
+use super::with_context;
+
+/// Reads the 16 elements a matrix pointer names; `None` for NULL.
+///
+/// # Safety
+/// `m` is NULL or points to 16 readable `T`.
+unsafe fn read_matrix<T: Copy>(m: *const T) -> Option<[T; 16]> {
+    if m.is_null() {
+        return None;
+    }
+    // SAFETY: the caller (a GL entry point) forwards GL's contract that a non-NULL matrix
+    // pointer addresses 16 elements.
+    Some(unsafe { std::ptr::read_unaligned(m as *const [T; 16]) })
+}
+
+/// A double matrix converted to float, as every double matrix command does first.
+fn to_float(m: [GLdouble; 16]) -> [GLfloat; 16] {
+    m.map(|v| v as GLfloat)
+}
+
+#[no_mangle]
+pub extern "C" fn glMatrixMode(mode: GLenum) {
+    with_context((), |ctx| ctx.matrix_mode(mode))
+}
+
+#[no_mangle]
+pub extern "C" fn glActiveTexture(texture: GLenum) {
+    with_context((), |ctx| ctx.active_texture(texture))
+}
+
+#[no_mangle]
+pub extern "C" fn glActiveTextureARB(texture: GLenum) {
+    glActiveTexture(texture)
+}
+
+#[no_mangle]
+pub extern "C" fn glPushMatrix() {
+    with_context((), |ctx| ctx.push_matrix())
+}
+
+#[no_mangle]
+pub extern "C" fn glPopMatrix() {
+    with_context((), |ctx| ctx.pop_matrix())
+}
+
+#[no_mangle]
+pub extern "C" fn glLoadIdentity() {
+    with_context((), |ctx| ctx.load_identity())
+}
+
+/// # Safety
+/// `m` is NULL (ignored) or points to 16 floats.
+#[no_mangle]
+pub unsafe extern "C" fn glLoadMatrixf(m: *const GLfloat) {
+    // SAFETY: forwarded contract of this entry point.
+    if let Some(m) = unsafe { read_matrix(m) } {
+        with_context((), |ctx| ctx.load_matrix(&m))
+    }
+}
+
+/// # Safety
+/// `m` is NULL (ignored) or points to 16 doubles.
+#[no_mangle]
+pub unsafe extern "C" fn glLoadMatrixd(m: *const GLdouble) {
+    // SAFETY: forwarded contract of this entry point.
+    if let Some(m) = unsafe { read_matrix(m) } {
+        with_context((), |ctx| ctx.load_matrix(&to_float(m)))
+    }
+}
+
+/// # Safety
+/// `m` is NULL (ignored) or points to 16 floats.
+#[no_mangle]
+pub unsafe extern "C" fn glMultMatrixf(m: *const GLfloat) {
+    // SAFETY: forwarded contract of this entry point.
+    if let Some(m) = unsafe { read_matrix(m) } {
+        with_context((), |ctx| ctx.mult_matrix(&m))
+    }
+}
+
+/// # Safety
+/// `m` is NULL (ignored) or points to 16 doubles.
+#[no_mangle]
+pub unsafe extern "C" fn glMultMatrixd(m: *const GLdouble) {
+    // SAFETY: forwarded contract of this entry point.
+    if let Some(m) = unsafe { read_matrix(m) } {
+        with_context((), |ctx| ctx.mult_matrix(&to_float(m)))
+    }
+}
+
+// <GL/gl.h> declares the parameter as an array, `m[16]`; so does tessera.h.
+/// cbindgen:ptrs-as-arrays=[[m; 16]]
+///
+/// # Safety
+/// `m` is NULL (ignored) or points to 16 floats.
+#[no_mangle]
+pub unsafe extern "C" fn glLoadTransposeMatrixf(m: *const GLfloat) {
+    // SAFETY: forwarded contract of this entry point.
+    if let Some(m) = unsafe { read_matrix(m) } {
+        with_context((), |ctx| ctx.load_transpose_matrix(&m))
+    }
+}
+
+// <GL/gl.h> declares the parameter as an array, `m[16]`; so does tessera.h.
+/// cbindgen:ptrs-as-arrays=[[m; 16]]
+///
+/// # Safety
+/// `m` is NULL (ignored) or points to 16 doubles.
+#[no_mangle]
+pub unsafe extern "C" fn glLoadTransposeMatrixd(m: *const GLdouble) {
+    // SAFETY: forwarded contract of this entry point.
+    if let Some(m) = unsafe { read_matrix(m) } {
+        with_context((), |ctx| ctx.load_transpose_matrix(&to_float(m)))
+    }
+}
+
+// <GL/gl.h> declares the parameter as an array, `m[16]`; so does tessera.h.
+/// cbindgen:ptrs-as-arrays=[[m; 16]]
+///
+/// # Safety
+/// `m` is NULL (ignored) or points to 16 floats.
+#[no_mangle]
+pub unsafe extern "C" fn glMultTransposeMatrixf(m: *const GLfloat) {
+    // SAFETY: forwarded contract of this entry point.
+    if let Some(m) = unsafe { read_matrix(m) } {
+        with_context((), |ctx| ctx.mult_transpose_matrix(&m))
+    }
+}
+
+// <GL/gl.h> declares the parameter as an array, `m[16]`; so does tessera.h.
+/// cbindgen:ptrs-as-arrays=[[m; 16]]
+///
+/// # Safety
+/// `m` is NULL (ignored) or points to 16 doubles.
+#[no_mangle]
+pub unsafe extern "C" fn glMultTransposeMatrixd(m: *const GLdouble) {
+    // SAFETY: forwarded contract of this entry point.
+    if let Some(m) = unsafe { read_matrix(m) } {
+        with_context((), |ctx| ctx.mult_transpose_matrix(&to_float(m)))
+    }
+}
+
+/// # Safety
+/// As glLoadTransposeMatrixf.
+#[no_mangle]
+pub unsafe extern "C" fn glLoadTransposeMatrixfARB(m: *const GLfloat) {
+    // SAFETY: forwarded contract of this entry point.
+    unsafe { glLoadTransposeMatrixf(m) }
+}
+
+/// # Safety
+/// As glLoadTransposeMatrixd.
+#[no_mangle]
+pub unsafe extern "C" fn glLoadTransposeMatrixdARB(m: *const GLdouble) {
+    // SAFETY: forwarded contract of this entry point.
+    unsafe { glLoadTransposeMatrixd(m) }
+}
+
+/// # Safety
+/// As glMultTransposeMatrixf.
+#[no_mangle]
+pub unsafe extern "C" fn glMultTransposeMatrixfARB(m: *const GLfloat) {
+    // SAFETY: forwarded contract of this entry point.
+    unsafe { glMultTransposeMatrixf(m) }
+}
+
+/// # Safety
+/// As glMultTransposeMatrixd.
+#[no_mangle]
+pub unsafe extern "C" fn glMultTransposeMatrixdARB(m: *const GLdouble) {
+    // SAFETY: forwarded contract of this entry point.
+    unsafe { glMultTransposeMatrixd(m) }
+}
+
+#[no_mangle]
+pub extern "C" fn glRotatef(angle: GLfloat, x: GLfloat, y: GLfloat, z: GLfloat) {
+    with_context((), |ctx| ctx.rotate(angle, x, y, z))
+}
+
+#[no_mangle]
+pub extern "C" fn glRotated(angle: GLdouble, x: GLdouble, y: GLdouble, z: GLdouble) {
+    glRotatef(angle as GLfloat, x as GLfloat, y as GLfloat, z as GLfloat)
+}
+
+#[no_mangle]
+pub extern "C" fn glScalef(x: GLfloat, y: GLfloat, z: GLfloat) {
+    with_context((), |ctx| ctx.scale(x, y, z))
+}
+
+#[no_mangle]
+pub extern "C" fn glScaled(x: GLdouble, y: GLdouble, z: GLdouble) {
+    glScalef(x as GLfloat, y as GLfloat, z as GLfloat)
+}
+
+#[no_mangle]
+pub extern "C" fn glTranslatef(x: GLfloat, y: GLfloat, z: GLfloat) {
+    with_context((), |ctx| ctx.translate(x, y, z))
+}
+
+#[no_mangle]
+pub extern "C" fn glTranslated(x: GLdouble, y: GLdouble, z: GLdouble) {
+    glTranslatef(x as GLfloat, y as GLfloat, z as GLfloat)
+}
+
+#[no_mangle]
+pub extern "C" fn glFrustum(
+    left: GLdouble,
+    right: GLdouble,
+    bottom: GLdouble,
+    top: GLdouble,
+    near_val: GLdouble,
+    far_val: GLdouble,
+) {
+    with_context((), |ctx| ctx.frustum(left, right, bottom, top, near_val, far_val))
+}
+
+#[no_mangle]
+pub extern "C" fn glOrtho(
+    left: GLdouble,
+    right: GLdouble,
+    bottom: GLdouble,
+    top: GLdouble,
+    near_val: GLdouble,
+    far_val: GLdouble,
+) {
+    with_context((), |ctx| ctx.ortho(left, right, bottom, top, near_val, far_val))
+}
+
+/// # Safety
+/// `equation` is NULL (ignored) or points to 4 doubles.
+#[no_mangle]
+pub unsafe extern "C" fn glClipPlane(plane: GLenum, equation: *const GLdouble) {
+    if equation.is_null() {
+        return;
+    }
+    // SAFETY: GL's contract: a plane equation is 4 doubles.
+    let equation = unsafe { std::ptr::read_unaligned(equation as *const [GLdouble; 4]) };
+    with_context((), |ctx| ctx.clip_plane(plane, equation))
+}
+
+/// # Safety
+/// `equation` is NULL (nothing written) or points to room for 4 doubles.
+#[no_mangle]
+pub unsafe extern "C" fn glGetClipPlane(plane: GLenum, equation: *mut GLdouble) {
+    let Some(values) = with_context(None, |ctx| ctx.get_clip_plane(plane)) else {
+        return;
+    };
+    if !equation.is_null() {
+        // SAFETY: GL's contract: the caller provides room for 4 doubles.
+        unsafe { std::ptr::write_unaligned(equation as *mut [GLdouble; 4], values) }
+    }
+}
