@@ -18,6 +18,7 @@ pub mod matrix;
 pub mod read_pixels;
 pub mod state;
 pub mod strings;
+pub mod vertex_input;
 
 use crate::api::enums::*;
 use crate::api::types::GLenum;
@@ -47,6 +48,10 @@ pub struct Context {
     drawable: Option<Arc<Mutex<Drawable>>>,
     /// Viewport and scissor are initialised to the drawable's size at the first bind only.
     bound_once: bool,
+    /// Immediate mode and client vertex arrays (`vertex_input`).
+    pub vertex_input: vertex_input::VertexInput,
+    /// The buffer objects (one table, so that it can become shared between contexts).
+    pub buffers: crate::vertex::buffer_objects::BufferTable,
 }
 
 impl Context {
@@ -63,6 +68,8 @@ impl Context {
             inside_begin_end: false,
             drawable: None,
             bound_once: false,
+            vertex_input: vertex_input::VertexInput::default(),
+            buffers: Default::default(),
         }
     }
 
