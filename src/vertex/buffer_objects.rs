@@ -54,7 +54,8 @@ pub fn is_access(access: GLenum) -> bool {
 pub struct BufferObject {
     data: Vec<u8>,
     pub usage: GLenum,
-    /// GL_BUFFER_ACCESS: the access of the last glMapBuffer (GL_READ_WRITE initially).
+    /// GL_BUFFER_ACCESS: the access of the current mapping; GL_READ_WRITE when unmapped (as
+    /// Mesa reports it; GL 2.1 only says what glMapBuffer sets).
     pub access: GLenum,
     pub mapped: bool,
 }
@@ -107,6 +108,12 @@ impl BufferObject {
         self.data.get_mut(offset..offset.checked_add(len)?)
     }
 
+    /// glUnmapBuffer: GL_BUFFER_ACCESS returns to GL_READ_WRITE, as in Mesa.
+    pub fn unmap(&mut self) {
+        self.mapped = false;
+        self.access = GL_READ_WRITE;
+    }
+
     /// glMapBuffer: marks the buffer mapped and returns the address of its storage.
     pub fn map(&mut self, access: GLenum) -> *mut u8 {
         self.mapped = true;
@@ -136,19 +143,23 @@ enum Slot {
 #[derive(Debug, Default)]
 pub struct BufferTable {
     slots: HashMap<u32, Slot>,
+    /// The largest name ever used: new names continue after it.
+    largest: u32,
 }
 
 impl BufferTable {
     /// glGenBuffers: `n` unused names, reserved. Like Mesa, names continue after the largest
-    /// name in use, and only search for a free block when that would overflow.
+    /// name ever used (deleted names are not reused), and only search for free names when
+    /// that would overflow.
     pub fn generate(&mut self, n: usize) -> Vec<u32> {
-        let largest = self.slots.keys().copied().max().unwrap_or(0);
+        let largest = self.largest;
         let names: Vec<u32> = match largest.checked_add(n as u32).filter(|_| n <= u32::MAX as usize) {
             Some(_) => (1..=n as u32).map(|i| largest + i).collect(),
             None => (1..=u32::MAX).filter(|name| !self.slots.contains_key(name)).take(n).collect(),
         };
         for &name in &names {
             self.slots.insert(name, Slot::Reserved);
+            self.largest = self.largest.max(name);
         }
         names
     }
@@ -156,6 +167,7 @@ impl BufferTable {
     /// glBindBuffer's object creation: any nonzero name becomes an object at its first bind.
     pub fn create_on_bind(&mut self, name: u32) {
         if name != 0 {
+            self.largest = self.largest.max(name);
             let slot = self.slots.entry(name).or_insert(Slot::Reserved);
             if matches!(slot, Slot::Reserved) {
                 *slot = Slot::Object(BufferObject::default());
@@ -193,7 +205,7 @@ mod tests {
     use super::*;
 
     #[test]
-    fn names_continue_after_the_largest_in_use_like_mesa() {
+    fn names_continue_after_the_largest_ever_used_like_mesa() {
         let mut table = BufferTable::default();
         assert_eq!(table.generate(3), [1, 2, 3]);
         assert!(!table.is_buffer(1), "a generated name is no object before its first bind");
@@ -202,8 +214,8 @@ mod tests {
         assert!(table.delete(1) && table.delete(2));
         assert!(!table.delete(2) && !table.delete(0) && !table.delete(12345));
         assert_eq!(table.generate(2), [78, 79]);
-        assert!(table.delete(77) && table.delete(78) && table.delete(79));
-        assert_eq!(table.generate(1), [4]);
+        assert!(table.delete(3) && table.delete(77) && table.delete(78) && table.delete(79));
+        assert_eq!(table.generate(1), [80]);
         assert_eq!(table.generate(0), Vec::<u32>::new());
         table.create_on_bind(u32::MAX);
         assert_eq!(table.generate(2), [1, 2]);

@@ -216,7 +216,7 @@ impl Context {
             self.error(GL_INVALID_OPERATION);
             return false;
         }
-        buffer.mapped = false;
+        buffer.unmap();
         true
     }
 
@@ -331,6 +331,7 @@ mod tests {
         ctx.get_buffer_sub_data(GL_ARRAY_BUFFER, 0, 1, |_| None);
         assert_eq!(ctx.take_error(), GL_INVALID_OPERATION);
         assert!(ctx.unmap_buffer(GL_ARRAY_BUFFER));
+        assert_eq!(ctx.get_buffer_parameter(GL_ARRAY_BUFFER, GL_BUFFER_ACCESS), Some(GL_READ_WRITE as i32));
         assert!(!ctx.unmap_buffer(GL_ARRAY_BUFFER));
         assert_eq!(ctx.take_error(), GL_INVALID_OPERATION);
         assert_eq!(ctx.get_buffer_pointer(GL_ARRAY_BUFFER, GL_BUFFER_MAP_POINTER), Some(std::ptr::null_mut()));
