@@ -6,6 +6,8 @@
 //! array draw starts from that snapshot and overwrites what its enabled arrays hold. The
 //! vertices of a glBegin/glEnd pair and of a draw call are collected in vectors that live
 //! as long as the context, so steady-state drawing allocates nothing per vertex or per call.
+//! Points, lines, triangles and quads are delivered in batches of [`BATCH_VERTICES`] (also
+//! while glBegin/glEnd is still open); other modes are delivered whole.
 //!
 //! Deliberate differences from Mesa 22 (which implements GL 4.5 and is lenient where GL 2.1
 //! is not) are listed with the commands they concern, in the submodules.
@@ -24,6 +26,23 @@ use crate::vertex::Vertex;
 /// GL_MAX_ELEMENTS_VERTICES / GL_MAX_ELEMENTS_INDICES: a recommendation only (any count
 /// works); Mesa's value.
 pub const MAX_ELEMENTS: i32 = 3000;
+
+/// Primitives that share no vertices (points, lines, triangles, quads) are delivered in
+/// batches of this many vertices (a multiple of 1, 2, 3 and 4), so a long glBegin/glEnd or a
+/// large draw call needs no more memory than that and stays in cache. Strips, fans, loops
+/// and polygons are delivered whole.
+pub const BATCH_VERTICES: usize = 3072;
+
+/// Vertices per primitive of the modes whose primitives share no vertices.
+fn independent_primitive_size(mode: GLenum) -> Option<usize> {
+    match mode {
+        GL_POINTS => Some(1),
+        GL_LINES => Some(2),
+        GL_TRIANGLES => Some(3),
+        GL_QUADS => Some(4),
+        _ => None,
+    }
+}
 
 /// The vertex-input state of a context besides the current attributes (which are
 /// `state.current`) and the buffer objects (`Context::buffers`).
@@ -66,7 +85,10 @@ impl Context {
             GL_CURRENT_COLOR => current.color.map(NormFloat).to_vec(),
             GL_CURRENT_SECONDARY_COLOR => current.secondary_color.map(NormFloat).to_vec(),
             GL_CURRENT_NORMAL => current.normal.map(NormFloat).to_vec(),
-            GL_CURRENT_TEXTURE_COORDS => current.tex_coords[self.state.texture.active_unit].map(Float).to_vec(),
+            GL_CURRENT_TEXTURE_COORDS => {
+                let coords = current.tex_coords.get(self.state.texture.active_unit).copied().unwrap_or_default();
+                coords.map(Float).to_vec()
+            }
             GL_CURRENT_FOG_COORD => vec![Float(current.fog_coord)],
             GL_CURRENT_INDEX => vec![Float(current.index)],
             GL_EDGE_FLAG => vec![Bool(current.edge_flag)],

@@ -150,18 +150,21 @@ pub struct BufferTable {
 impl BufferTable {
     /// glGenBuffers: `n` unused names, reserved. Like Mesa, names continue after the largest
     /// name ever used (deleted names are not reused), and only search for free names when
-    /// that would overflow.
-    pub fn generate(&mut self, n: usize) -> Vec<u32> {
+    /// that would overflow. A count the memory cannot hold is [`OutOfMemory`], not an abort.
+    pub fn generate(&mut self, n: usize) -> Result<Vec<u32>, OutOfMemory> {
+        let mut names = Vec::new();
+        names.try_reserve_exact(n).map_err(|_| OutOfMemory)?;
+        self.slots.try_reserve(n).map_err(|_| OutOfMemory)?;
         let largest = self.largest;
-        let names: Vec<u32> = match largest.checked_add(n as u32).filter(|_| n <= u32::MAX as usize) {
-            Some(_) => (1..=n as u32).map(|i| largest + i).collect(),
-            None => (1..=u32::MAX).filter(|name| !self.slots.contains_key(name)).take(n).collect(),
-        };
+        match largest.checked_add(n as u32).filter(|_| n <= u32::MAX as usize) {
+            Some(_) => names.extend((1..=n as u32).map(|i| largest + i)),
+            None => names.extend((1..=u32::MAX).filter(|name| !self.slots.contains_key(name)).take(n)),
+        }
         for &name in &names {
             self.slots.insert(name, Slot::Reserved);
             self.largest = self.largest.max(name);
         }
-        names
+        Ok(names)
     }
 
     /// glBindBuffer's object creation: any nonzero name becomes an object at its first bind.
@@ -207,24 +210,25 @@ mod tests {
     #[test]
     fn names_continue_after_the_largest_ever_used_like_mesa() {
         let mut table = BufferTable::default();
-        assert_eq!(table.generate(3), [1, 2, 3]);
+        assert_eq!(table.generate(3), Ok(vec![1, 2, 3]));
         assert!(!table.is_buffer(1), "a generated name is no object before its first bind");
         table.create_on_bind(77);
         assert!(table.is_buffer(77));
         assert!(table.delete(1) && table.delete(2));
         assert!(!table.delete(2) && !table.delete(0) && !table.delete(12345));
-        assert_eq!(table.generate(2), [78, 79]);
+        assert_eq!(table.generate(2), Ok(vec![78, 79]));
         assert!(table.delete(3) && table.delete(77) && table.delete(78) && table.delete(79));
-        assert_eq!(table.generate(1), [80]);
-        assert_eq!(table.generate(0), Vec::<u32>::new());
+        assert_eq!(table.generate(1), Ok(vec![80]));
+        assert_eq!(table.generate(0), Ok(vec![]));
+        assert_eq!(table.generate(usize::MAX / 2), Err(OutOfMemory));
         table.create_on_bind(u32::MAX);
-        assert_eq!(table.generate(2), [1, 2]);
+        assert_eq!(table.generate(2), Ok(vec![1, 2]));
     }
 
     #[test]
     fn bind_creates_reserved_and_unknown_names_once() {
         let mut table = BufferTable::default();
-        let [a] = table.generate(1)[..] else { panic!() };
+        let [a] = table.generate(1).unwrap()[..] else { panic!() };
         table.create_on_bind(a);
         table.get_mut(a).unwrap().set_data(4, Some(b"abcd"), GL_DYNAMIC_DRAW).unwrap();
         table.create_on_bind(a);

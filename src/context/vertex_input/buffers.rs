@@ -56,7 +56,11 @@ impl Context {
             self.error(GL_INVALID_VALUE);
             return None;
         }
-        Some(self.buffers.generate(n as usize))
+        let names = self.buffers.generate(n as usize);
+        if names.is_err() {
+            self.error(GL_OUT_OF_MEMORY);
+        }
+        names.ok()
     }
 
     /// glDeleteBuffers of `names` (the first `n` of the caller's array). Bindings of the
@@ -164,7 +168,8 @@ impl Context {
     ) {
         if let Some((buffer, offset, size)) = self.buffer_range(target, offset, size) {
             if let (Some(source), Some(destination)) = (contents(size), buffer.range_mut(offset, size)) {
-                destination.copy_from_slice(&source[..size.min(source.len())]);
+                let n = destination.len().min(source.len());
+                destination[..n].copy_from_slice(&source[..n]);
             }
         }
     }

@@ -17,7 +17,7 @@
 //! Deliberate differences from Mesa 22: the modes are GL 2.1's (no adjacency, no patches:
 //! GL_INVALID_ENUM), and drawing from a mapped buffer object is GL_INVALID_OPERATION (the GL
 //! 1.5 specification allows it to be; Mesa draws the mapped contents).
-use super::Context;
+use super::{independent_primitive_size, Context, BATCH_VERTICES};
 use crate::api::enums::*;
 use crate::api::types::GLenum;
 use crate::context::state::{CurrentState, MAX_TEXTURE_UNITS};
@@ -31,8 +31,9 @@ use crate::vertex::Vertex;
 /// How many arrays there are (`ClientArrays::all`).
 const ARRAY_COUNT: usize = 7 + MAX_TEXTURE_UNITS;
 
-/// A draw's batch vector keeps at most this many vertices of capacity between draws.
-const KEPT_BATCH_CAPACITY: usize = 1 << 16;
+/// A draw's batch vector keeps at most this many vertices of capacity between draws (strips
+/// and the other connected modes are delivered whole, and may be long).
+const KEPT_BATCH_CAPACITY: usize = 4 * BATCH_VERTICES;
 
 /// The elements a draw reads, in order.
 #[derive(Clone, Copy)]
@@ -179,8 +180,33 @@ impl Context {
         true
     }
 
-    /// Makes the vertices of one validated draw and delivers them.
+    /// Makes the vertices of one validated draw and delivers them: in batches of
+    /// [`BATCH_VERTICES`] for independent primitives, whole otherwise.
     fn draw_from_arrays(&mut self, mode: GLenum, source: IndexSource, memory: &dyn ClientMemory) {
+        if independent_primitive_size(mode).is_none() {
+            return self.draw_batch(mode, source, memory);
+        }
+        match source {
+            IndexSource::Sequence { first, count } => {
+                for start in (0..count).step_by(BATCH_VERTICES) {
+                    let count = (count - start).min(BATCH_VERTICES as u32);
+                    self.draw_batch(mode, IndexSource::Sequence { first: first + start, count }, memory);
+                }
+            }
+            IndexSource::Listed { kind, address, count } => {
+                for start in (0..count).step_by(BATCH_VERTICES) {
+                    let Some(address) = address.checked_add(start * kind.size()) else {
+                        return;
+                    };
+                    let count = (count - start).min(BATCH_VERTICES);
+                    self.draw_batch(mode, IndexSource::Listed { kind, address, count }, memory);
+                }
+            }
+        }
+    }
+
+    /// Makes the vertices of one validated draw (or batch of a draw) and delivers them.
+    fn draw_batch(&mut self, mode: GLenum, source: IndexSource, memory: &dyn ClientMemory) {
         let mut batch = std::mem::take(&mut self.vertex_input.batch);
         batch.clear();
         let outcome = {
@@ -460,6 +486,36 @@ mod tests {
         assert_eq!(reads[..3], [(0x3000, 4), (0x1008, 5 * 8), (0x2004, 5 * 4)]);
         assert_eq!(reads[3..6], [(0x4000, 6), (0x1010, 6 * 8), (0x2008, 6 * 4)]);
         assert_eq!(reads[6..], [(0x5000, 12), (0x1000, 5 * 8), (0x2000, 5 * 4)]);
+    }
+
+    #[test]
+    fn large_draws_of_independent_primitives_come_in_batches() {
+        let mut ctx = context();
+        let mut memory = FakeMemory::default();
+        let n = 2 * BATCH_VERTICES + 5;
+        let positions: Vec<f32> = (0..n).flat_map(|i| [i as f32, 0.0]).collect();
+        let vertices = memory.add(0x10000, floats(&positions));
+        let indices = memory.add(0x100000, (0..n as u32).rev().flat_map(|i| i.to_ne_bytes()).collect());
+        ctx.vertex_pointer(2, GL_FLOAT, 0, vertices);
+        ctx.enable_client_state(GL_VERTEX_ARRAY, true);
+        ctx.draw_arrays(GL_TRIANGLES, 0, n as i32, &memory);
+        let sizes: Vec<usize> = ctx.vertex_input.delivered.iter().map(|(_, v)| v.len()).collect();
+        assert_eq!(sizes, [BATCH_VERTICES, BATCH_VERTICES, 5]);
+        let all: Vec<f32> = ctx.vertex_input.delivered.iter().flat_map(|(_, v)| xs(v)).collect();
+        assert_eq!(all, (0..n).map(|i| i as f32).collect::<Vec<_>>());
+        // Each batch reads only its own elements.
+        assert_eq!(memory.reads.borrow()[1], (vertices + BATCH_VERTICES * 8, BATCH_VERTICES * 8));
+        ctx.vertex_input.delivered.clear();
+        ctx.draw_elements(GL_POINTS, n as i32, GL_UNSIGNED_INT, indices, &memory);
+        let all: Vec<f32> = ctx.vertex_input.delivered.iter().flat_map(|(_, v)| xs(v)).collect();
+        assert_eq!(all, (0..n).rev().map(|i| i as f32).collect::<Vec<_>>());
+        assert_eq!(ctx.vertex_input.delivered.len(), 3);
+        // Connected primitives are delivered whole.
+        ctx.vertex_input.delivered.clear();
+        ctx.draw_arrays(GL_TRIANGLE_STRIP, 0, n as i32, &memory);
+        assert_eq!(ctx.vertex_input.delivered.len(), 1);
+        assert_eq!(ctx.vertex_input.delivered[0].1.len(), n);
+        assert_eq!(ctx.take_error(), GL_NO_ERROR);
     }
 
     #[test]

@@ -11,7 +11,7 @@
 //!   not check the target and writes unit `target & 7`.
 //! - glEdgeFlag(flag) sets the edge flag for any nonzero `flag`; Mesa keeps the flag as a
 //!   float and reports TRUE only for exactly 1.
-use super::Context;
+use super::{independent_primitive_size, Context, BATCH_VERTICES};
 use crate::api::enums::*;
 use crate::api::types::GLenum;
 use crate::context::state::MAX_TEXTURE_UNITS;
@@ -37,12 +37,7 @@ impl Context {
             return self.error(GL_INVALID_OPERATION);
         }
         self.inside_begin_end = false;
-        let vertices = std::mem::take(&mut self.vertex_input.vertices);
-        if !vertices.is_empty() {
-            self.deliver(self.vertex_input.begin_mode, &vertices);
-        }
-        self.vertex_input.vertices = vertices;
-        self.vertex_input.vertices.clear();
+        self.deliver_open_vertices();
     }
 
     /// glVertex: appends a vertex at `position` with the current attributes (object
@@ -58,6 +53,20 @@ impl Context {
             return self.error(GL_OUT_OF_MEMORY);
         }
         vertices.push(vertex);
+        if vertices.len() >= BATCH_VERTICES && independent_primitive_size(self.vertex_input.begin_mode).is_some() {
+            // A whole number of primitives: BATCH_VERTICES is a multiple of every size.
+            self.deliver_open_vertices();
+        }
+    }
+
+    /// Delivers and forgets the vertices collected since glBegin.
+    fn deliver_open_vertices(&mut self) {
+        let vertices = std::mem::take(&mut self.vertex_input.vertices);
+        if !vertices.is_empty() {
+            self.deliver(self.vertex_input.begin_mode, &vertices);
+        }
+        self.vertex_input.vertices = vertices;
+        self.vertex_input.vertices.clear();
     }
 
     /// glColor (already converted to floats; not clamped).
@@ -197,6 +206,27 @@ mod tests {
         assert_eq!(ctx.vertex_input.delivered[0].1.len(), 2);
         ctx.end();
         assert_eq!(ctx.take_error(), GL_INVALID_OPERATION);
+    }
+
+    #[test]
+    fn long_independent_primitives_are_delivered_in_batches() {
+        let mut ctx = context();
+        for (mode, batches) in [(GL_TRIANGLES, 3), (GL_LINE_STRIP, 1)] {
+            ctx.vertex_input.delivered.clear();
+            ctx.begin(mode);
+            for i in 0..2 * BATCH_VERTICES + 3 {
+                ctx.vertex([i as f32, 0.0, 0.0, 1.0]);
+            }
+            if mode == GL_TRIANGLES {
+                assert_eq!(ctx.vertex_input.delivered.len(), 2, "delivered while glBegin is open");
+            }
+            ctx.end();
+            let delivered = &ctx.vertex_input.delivered;
+            assert_eq!(delivered.len(), batches, "mode {mode:#x}");
+            let xs: Vec<f32> = delivered.iter().flat_map(|(_, v)| v.iter().map(|v| v.position[0])).collect();
+            assert_eq!(xs, (0..2 * BATCH_VERTICES + 3).map(|i| i as f32).collect::<Vec<_>>());
+        }
+        assert_eq!(BATCH_VERTICES % 12, 0);
     }
 
     #[test]
