@@ -108,26 +108,17 @@ fn array_bytes<'a>(
     Ok(data.get(start.min(end)..end).unwrap_or(&[]))
 }
 
-/// Stores an attribute value fetched from array `id` into `vertex`.
-#[inline]
-fn store(id: ArrayId, [x, y, z, w]: [f32; 4], vertex: &mut Vertex) {
-    match id {
-        ArrayId::Vertex => vertex.position = [x, y, z, w],
-        ArrayId::Normal => vertex.normal = [x, y, z],
-        ArrayId::Color => vertex.color = [x, y, z, w],
-        ArrayId::SecondaryColor => vertex.secondary_color = [x, y, z, 1.0],
-        ArrayId::FogCoord => vertex.fog_coord = x,
-        ArrayId::EdgeFlag => vertex.edge_flag = x != 0.0,
-        ArrayId::TexCoord(unit) => {
-            if let Some(coords) = vertex.tex_coords.get_mut(unit) {
-                *coords = [x, y, z, w];
-            }
-        }
-        ArrayId::Index => {}
+/// Fetches element `index` of `array` for each vertex of `batch`, in order, and stores it
+/// with `store`. One loop per array, monomorphized per attribute, so the per-vertex work is
+/// the fetch and a plain store.
+fn fill(batch: &mut [Vertex], elements: Elements, array: &BoundArray, store: impl Fn(&mut Vertex, [f32; 4])) {
+    for (vertex, index) in batch.iter_mut().zip(elements.indices()) {
+        store(vertex, array.fetch(index));
     }
 }
 
-/// Appends the vertices of `elements` to `batch`.
+/// Appends the vertices of `elements` to `batch`: copies of the current attributes, then
+/// each enabled array's values stored over them, one array at a time.
 fn assemble(
     arrays: &ClientArrays,
     buffers: &BufferTable,
@@ -150,13 +141,26 @@ fn assemble(
         }
     }
     batch.try_reserve(elements.len()).map_err(|_| NoDraw::OutOfMemory)?;
-    let template = vertex_from_current(current, [0.0, 0.0, 0.0, 1.0]);
-    for index in elements.indices() {
-        let mut vertex = template;
-        for (id, array) in bound.iter().flatten() {
-            store(*id, array.fetch(index), &mut vertex);
+    let start = batch.len();
+    batch.resize(start + elements.len(), vertex_from_current(current, [0.0, 0.0, 0.0, 1.0]));
+    let vertices = &mut batch[start..];
+    for (id, array) in bound.iter().flatten() {
+        match *id {
+            ArrayId::Vertex => fill(vertices, elements, array, |v, x| v.position = x),
+            ArrayId::Normal => fill(vertices, elements, array, |v, [x, y, z, _]| v.normal = [x, y, z]),
+            ArrayId::Color => fill(vertices, elements, array, |v, x| v.color = x),
+            ArrayId::SecondaryColor => {
+                fill(vertices, elements, array, |v, [r, g, b, _]| v.secondary_color = [r, g, b, 1.0])
+            }
+            ArrayId::FogCoord => fill(vertices, elements, array, |v, [f, ..]| v.fog_coord = f),
+            ArrayId::EdgeFlag => fill(vertices, elements, array, |v, [e, ..]| v.edge_flag = e != 0.0),
+            ArrayId::TexCoord(unit) => fill(vertices, elements, array, |v, x| {
+                if let Some(coords) = v.tex_coords.get_mut(unit) {
+                    *coords = x;
+                }
+            }),
+            ArrayId::Index => {}
         }
-        batch.push(vertex);
     }
     Ok(())
 }
