@@ -6190,6 +6190,118 @@ typedef void (*OSMESAproc)();
 extern "C" {
 #endif // __cplusplus
 
+void glVertexPointer(GLint size, GLenum type_, GLsizei stride, const GLvoid *ptr);
+
+void glNormalPointer(GLenum type_, GLsizei stride, const GLvoid *ptr);
+
+void glColorPointer(GLint size, GLenum type_, GLsizei stride, const GLvoid *ptr);
+
+void glSecondaryColorPointer(GLint size, GLenum type_, GLsizei stride, const GLvoid *pointer);
+
+void glSecondaryColorPointerEXT(GLint size, GLenum type_, GLsizei stride, const GLvoid *pointer);
+
+void glFogCoordPointer(GLenum type_, GLsizei stride, const GLvoid *pointer);
+
+void glFogCoordPointerEXT(GLenum type_, GLsizei stride, const GLvoid *pointer);
+
+void glIndexPointer(GLenum type_, GLsizei stride, const GLvoid *ptr);
+
+void glEdgeFlagPointer(GLsizei stride, const GLvoid *ptr);
+
+void glTexCoordPointer(GLint size, GLenum type_, GLsizei stride, const GLvoid *ptr);
+
+void glVertexPointerEXT(GLint size, GLenum type_, GLsizei stride, GLsizei _count, const GLvoid *pointer);
+
+void glNormalPointerEXT(GLenum type_, GLsizei stride, GLsizei _count, const GLvoid *pointer);
+
+void glColorPointerEXT(GLint size, GLenum type_, GLsizei stride, GLsizei _count, const GLvoid *pointer);
+
+void glIndexPointerEXT(GLenum type_, GLsizei stride, GLsizei _count, const GLvoid *pointer);
+
+void glEdgeFlagPointerEXT(GLsizei stride, GLsizei _count, const GLboolean *pointer);
+
+void glTexCoordPointerEXT(GLint size, GLenum type_, GLsizei stride, GLsizei _count, const GLvoid *pointer);
+
+void glEnableClientState(GLenum cap);
+
+void glDisableClientState(GLenum cap);
+
+void glClientActiveTexture(GLenum texture);
+
+void glClientActiveTextureARB(GLenum texture);
+
+void glInterleavedArrays(GLenum format, GLsizei stride, const GLvoid *pointer);
+
+void glGetPointerv(GLenum pname, GLvoid **params);
+
+void glGetPointervEXT(GLenum pname, GLvoid **params);
+
+void glArrayElement(GLint i);
+
+void glArrayElementEXT(GLint i);
+
+void glDrawArrays(GLenum mode, GLint first, GLsizei count);
+
+void glDrawArraysEXT(GLenum mode, GLint first, GLsizei count);
+
+void glDrawElements(GLenum mode, GLsizei count, GLenum type_, const GLvoid *indices);
+
+void glDrawRangeElements(GLenum mode, GLuint start, GLuint end, GLsizei count, GLenum type_, const GLvoid *indices);
+
+void glDrawRangeElementsEXT(GLenum mode, GLuint start, GLuint end, GLsizei count, GLenum type_, const GLvoid *indices);
+
+void glMultiDrawArrays(GLenum mode, const GLint *first, const GLsizei *count, GLsizei drawcount);
+
+void glMultiDrawArraysEXT(GLenum mode, const GLint *first, const GLsizei *count, GLsizei primcount);
+
+void glMultiDrawElements(GLenum mode, const GLsizei *count, GLenum type_, const GLvoid *const *indices, GLsizei drawcount);
+
+void glMultiDrawElementsEXT(GLenum mode, const GLsizei *count, GLenum type_, const GLvoid *const *indices, GLsizei primcount);
+
+void glGenBuffers(GLsizei n, GLuint *buffers);
+
+void glDeleteBuffers(GLsizei n, const GLuint *buffers);
+
+void glBindBuffer(GLenum target, GLuint buffer);
+
+GLboolean glIsBuffer(GLuint buffer);
+
+void glBufferData(GLenum target, GLsizeiptr size, const GLvoid *data, GLenum usage);
+
+void glBufferSubData(GLenum target, GLintptr offset, GLsizeiptr size, const GLvoid *data);
+
+void glGetBufferSubData(GLenum target, GLintptr offset, GLsizeiptr size, GLvoid *data);
+
+GLvoid *glMapBuffer(GLenum target, GLenum access);
+
+GLboolean glUnmapBuffer(GLenum target);
+
+void glGetBufferParameteriv(GLenum target, GLenum pname, GLint *params);
+
+void glGetBufferPointerv(GLenum target, GLenum pname, GLvoid **params);
+
+void glGenBuffersARB(GLsizei n, GLuint *buffers);
+
+void glDeleteBuffersARB(GLsizei n, const GLuint *buffers);
+
+void glBindBufferARB(GLenum target, GLuint buffer);
+
+GLboolean glIsBufferARB(GLuint buffer);
+
+void glBufferDataARB(GLenum target, GLsizeiptr size, const GLvoid *data, GLenum usage);
+
+void glBufferSubDataARB(GLenum target, GLintptr offset, GLsizeiptr size, const GLvoid *data);
+
+void glGetBufferSubDataARB(GLenum target, GLintptr offset, GLsizeiptr size, GLvoid *data);
+
+GLvoid *glMapBufferARB(GLenum target, GLenum access);
+
+GLboolean glUnmapBufferARB(GLenum target);
+
+void glGetBufferParameterivARB(GLenum target, GLenum pname, GLint *params);
+
+void glGetBufferPointervARB(GLenum target, GLenum pname, GLvoid **params);
+
 void glClear(GLbitfield mask);
 
 void glClearColor(GLclampf red, GLclampf green, GLclampf blue, GLclampf alpha);
@@ -6389,6 +6501,454 @@ void glOrtho(GLdouble left, GLdouble right, GLdouble bottom, GLdouble top, GLdou
 void glClipPlane(GLenum plane, const GLdouble *equation);
 
 void glGetClipPlane(GLenum plane, GLdouble *equation);
+
+void glBegin(GLenum mode);
+
+void glEnd(void);
+
+void glVertex2s(GLshort x, GLshort y);
+
+void glVertex2sv(const GLshort *v);
+
+void glVertex2i(GLint x, GLint y);
+
+void glVertex2iv(const GLint *v);
+
+void glVertex2f(GLfloat x, GLfloat y);
+
+void glVertex2fv(const GLfloat *v);
+
+void glVertex2d(GLdouble x, GLdouble y);
+
+void glVertex2dv(const GLdouble *v);
+
+void glVertex3s(GLshort x, GLshort y, GLshort z);
+
+void glVertex3sv(const GLshort *v);
+
+void glVertex3i(GLint x, GLint y, GLint z);
+
+void glVertex3iv(const GLint *v);
+
+void glVertex3f(GLfloat x, GLfloat y, GLfloat z);
+
+void glVertex3fv(const GLfloat *v);
+
+void glVertex3d(GLdouble x, GLdouble y, GLdouble z);
+
+void glVertex3dv(const GLdouble *v);
+
+void glVertex4s(GLshort x, GLshort y, GLshort z, GLshort w);
+
+void glVertex4sv(const GLshort *v);
+
+void glVertex4i(GLint x, GLint y, GLint z, GLint w);
+
+void glVertex4iv(const GLint *v);
+
+void glVertex4f(GLfloat x, GLfloat y, GLfloat z, GLfloat w);
+
+void glVertex4fv(const GLfloat *v);
+
+void glVertex4d(GLdouble x, GLdouble y, GLdouble z, GLdouble w);
+
+void glVertex4dv(const GLdouble *v);
+
+void glColor3b(GLbyte red, GLbyte green, GLbyte blue);
+
+void glColor3bv(const GLbyte *v);
+
+void glColor3s(GLshort red, GLshort green, GLshort blue);
+
+void glColor3sv(const GLshort *v);
+
+void glColor3i(GLint red, GLint green, GLint blue);
+
+void glColor3iv(const GLint *v);
+
+void glColor3f(GLfloat red, GLfloat green, GLfloat blue);
+
+void glColor3fv(const GLfloat *v);
+
+void glColor3d(GLdouble red, GLdouble green, GLdouble blue);
+
+void glColor3dv(const GLdouble *v);
+
+void glColor3ub(GLubyte red, GLubyte green, GLubyte blue);
+
+void glColor3ubv(const GLubyte *v);
+
+void glColor3us(GLushort red, GLushort green, GLushort blue);
+
+void glColor3usv(const GLushort *v);
+
+void glColor3ui(GLuint red, GLuint green, GLuint blue);
+
+void glColor3uiv(const GLuint *v);
+
+void glColor4b(GLbyte red, GLbyte green, GLbyte blue, GLbyte alpha);
+
+void glColor4bv(const GLbyte *v);
+
+void glColor4s(GLshort red, GLshort green, GLshort blue, GLshort alpha);
+
+void glColor4sv(const GLshort *v);
+
+void glColor4i(GLint red, GLint green, GLint blue, GLint alpha);
+
+void glColor4iv(const GLint *v);
+
+void glColor4f(GLfloat red, GLfloat green, GLfloat blue, GLfloat alpha);
+
+void glColor4fv(const GLfloat *v);
+
+void glColor4d(GLdouble red, GLdouble green, GLdouble blue, GLdouble alpha);
+
+void glColor4dv(const GLdouble *v);
+
+void glColor4ub(GLubyte red, GLubyte green, GLubyte blue, GLubyte alpha);
+
+void glColor4ubv(const GLubyte *v);
+
+void glColor4us(GLushort red, GLushort green, GLushort blue, GLushort alpha);
+
+void glColor4usv(const GLushort *v);
+
+void glColor4ui(GLuint red, GLuint green, GLuint blue, GLuint alpha);
+
+void glColor4uiv(const GLuint *v);
+
+void glSecondaryColor3b(GLbyte red, GLbyte green, GLbyte blue);
+
+void glSecondaryColor3bv(const GLbyte *v);
+
+void glSecondaryColor3s(GLshort red, GLshort green, GLshort blue);
+
+void glSecondaryColor3sv(const GLshort *v);
+
+void glSecondaryColor3i(GLint red, GLint green, GLint blue);
+
+void glSecondaryColor3iv(const GLint *v);
+
+void glSecondaryColor3f(GLfloat red, GLfloat green, GLfloat blue);
+
+void glSecondaryColor3fv(const GLfloat *v);
+
+void glSecondaryColor3d(GLdouble red, GLdouble green, GLdouble blue);
+
+void glSecondaryColor3dv(const GLdouble *v);
+
+void glSecondaryColor3ub(GLubyte red, GLubyte green, GLubyte blue);
+
+void glSecondaryColor3ubv(const GLubyte *v);
+
+void glSecondaryColor3us(GLushort red, GLushort green, GLushort blue);
+
+void glSecondaryColor3usv(const GLushort *v);
+
+void glSecondaryColor3ui(GLuint red, GLuint green, GLuint blue);
+
+void glSecondaryColor3uiv(const GLuint *v);
+
+void glSecondaryColor3bEXT(GLbyte red, GLbyte green, GLbyte blue);
+
+void glSecondaryColor3bvEXT(const GLbyte *v);
+
+void glSecondaryColor3sEXT(GLshort red, GLshort green, GLshort blue);
+
+void glSecondaryColor3svEXT(const GLshort *v);
+
+void glSecondaryColor3iEXT(GLint red, GLint green, GLint blue);
+
+void glSecondaryColor3ivEXT(const GLint *v);
+
+void glSecondaryColor3fEXT(GLfloat red, GLfloat green, GLfloat blue);
+
+void glSecondaryColor3fvEXT(const GLfloat *v);
+
+void glSecondaryColor3dEXT(GLdouble red, GLdouble green, GLdouble blue);
+
+void glSecondaryColor3dvEXT(const GLdouble *v);
+
+void glSecondaryColor3ubEXT(GLubyte red, GLubyte green, GLubyte blue);
+
+void glSecondaryColor3ubvEXT(const GLubyte *v);
+
+void glSecondaryColor3usEXT(GLushort red, GLushort green, GLushort blue);
+
+void glSecondaryColor3usvEXT(const GLushort *v);
+
+void glSecondaryColor3uiEXT(GLuint red, GLuint green, GLuint blue);
+
+void glSecondaryColor3uivEXT(const GLuint *v);
+
+void glNormal3b(GLbyte nx, GLbyte ny, GLbyte nz);
+
+void glNormal3bv(const GLbyte *v);
+
+void glNormal3s(GLshort nx, GLshort ny, GLshort nz);
+
+void glNormal3sv(const GLshort *v);
+
+void glNormal3i(GLint nx, GLint ny, GLint nz);
+
+void glNormal3iv(const GLint *v);
+
+void glNormal3f(GLfloat nx, GLfloat ny, GLfloat nz);
+
+void glNormal3fv(const GLfloat *v);
+
+void glNormal3d(GLdouble nx, GLdouble ny, GLdouble nz);
+
+void glNormal3dv(const GLdouble *v);
+
+void glTexCoord1s(GLshort s);
+
+void glTexCoord1sv(const GLshort *v);
+
+void glTexCoord1i(GLint s);
+
+void glTexCoord1iv(const GLint *v);
+
+void glTexCoord1f(GLfloat s);
+
+void glTexCoord1fv(const GLfloat *v);
+
+void glTexCoord1d(GLdouble s);
+
+void glTexCoord1dv(const GLdouble *v);
+
+void glTexCoord2s(GLshort s, GLshort t);
+
+void glTexCoord2sv(const GLshort *v);
+
+void glTexCoord2i(GLint s, GLint t);
+
+void glTexCoord2iv(const GLint *v);
+
+void glTexCoord2f(GLfloat s, GLfloat t);
+
+void glTexCoord2fv(const GLfloat *v);
+
+void glTexCoord2d(GLdouble s, GLdouble t);
+
+void glTexCoord2dv(const GLdouble *v);
+
+void glTexCoord3s(GLshort s, GLshort t, GLshort r);
+
+void glTexCoord3sv(const GLshort *v);
+
+void glTexCoord3i(GLint s, GLint t, GLint r);
+
+void glTexCoord3iv(const GLint *v);
+
+void glTexCoord3f(GLfloat s, GLfloat t, GLfloat r);
+
+void glTexCoord3fv(const GLfloat *v);
+
+void glTexCoord3d(GLdouble s, GLdouble t, GLdouble r);
+
+void glTexCoord3dv(const GLdouble *v);
+
+void glTexCoord4s(GLshort s, GLshort t, GLshort r, GLshort q);
+
+void glTexCoord4sv(const GLshort *v);
+
+void glTexCoord4i(GLint s, GLint t, GLint r, GLint q);
+
+void glTexCoord4iv(const GLint *v);
+
+void glTexCoord4f(GLfloat s, GLfloat t, GLfloat r, GLfloat q);
+
+void glTexCoord4fv(const GLfloat *v);
+
+void glTexCoord4d(GLdouble s, GLdouble t, GLdouble r, GLdouble q);
+
+void glTexCoord4dv(const GLdouble *v);
+
+void glMultiTexCoord1s(GLenum target, GLshort s);
+
+void glMultiTexCoord1sv(GLenum target, const GLshort *v);
+
+void glMultiTexCoord1i(GLenum target, GLint s);
+
+void glMultiTexCoord1iv(GLenum target, const GLint *v);
+
+void glMultiTexCoord1f(GLenum target, GLfloat s);
+
+void glMultiTexCoord1fv(GLenum target, const GLfloat *v);
+
+void glMultiTexCoord1d(GLenum target, GLdouble s);
+
+void glMultiTexCoord1dv(GLenum target, const GLdouble *v);
+
+void glMultiTexCoord2s(GLenum target, GLshort s, GLshort t);
+
+void glMultiTexCoord2sv(GLenum target, const GLshort *v);
+
+void glMultiTexCoord2i(GLenum target, GLint s, GLint t);
+
+void glMultiTexCoord2iv(GLenum target, const GLint *v);
+
+void glMultiTexCoord2f(GLenum target, GLfloat s, GLfloat t);
+
+void glMultiTexCoord2fv(GLenum target, const GLfloat *v);
+
+void glMultiTexCoord2d(GLenum target, GLdouble s, GLdouble t);
+
+void glMultiTexCoord2dv(GLenum target, const GLdouble *v);
+
+void glMultiTexCoord3s(GLenum target, GLshort s, GLshort t, GLshort r);
+
+void glMultiTexCoord3sv(GLenum target, const GLshort *v);
+
+void glMultiTexCoord3i(GLenum target, GLint s, GLint t, GLint r);
+
+void glMultiTexCoord3iv(GLenum target, const GLint *v);
+
+void glMultiTexCoord3f(GLenum target, GLfloat s, GLfloat t, GLfloat r);
+
+void glMultiTexCoord3fv(GLenum target, const GLfloat *v);
+
+void glMultiTexCoord3d(GLenum target, GLdouble s, GLdouble t, GLdouble r);
+
+void glMultiTexCoord3dv(GLenum target, const GLdouble *v);
+
+void glMultiTexCoord4s(GLenum target, GLshort s, GLshort t, GLshort r, GLshort q);
+
+void glMultiTexCoord4sv(GLenum target, const GLshort *v);
+
+void glMultiTexCoord4i(GLenum target, GLint s, GLint t, GLint r, GLint q);
+
+void glMultiTexCoord4iv(GLenum target, const GLint *v);
+
+void glMultiTexCoord4f(GLenum target, GLfloat s, GLfloat t, GLfloat r, GLfloat q);
+
+void glMultiTexCoord4fv(GLenum target, const GLfloat *v);
+
+void glMultiTexCoord4d(GLenum target, GLdouble s, GLdouble t, GLdouble r, GLdouble q);
+
+void glMultiTexCoord4dv(GLenum target, const GLdouble *v);
+
+void glMultiTexCoord1sARB(GLenum target, GLshort s);
+
+void glMultiTexCoord1svARB(GLenum target, const GLshort *v);
+
+void glMultiTexCoord1iARB(GLenum target, GLint s);
+
+void glMultiTexCoord1ivARB(GLenum target, const GLint *v);
+
+void glMultiTexCoord1fARB(GLenum target, GLfloat s);
+
+void glMultiTexCoord1fvARB(GLenum target, const GLfloat *v);
+
+void glMultiTexCoord1dARB(GLenum target, GLdouble s);
+
+void glMultiTexCoord1dvARB(GLenum target, const GLdouble *v);
+
+void glMultiTexCoord2sARB(GLenum target, GLshort s, GLshort t);
+
+void glMultiTexCoord2svARB(GLenum target, const GLshort *v);
+
+void glMultiTexCoord2iARB(GLenum target, GLint s, GLint t);
+
+void glMultiTexCoord2ivARB(GLenum target, const GLint *v);
+
+void glMultiTexCoord2fARB(GLenum target, GLfloat s, GLfloat t);
+
+void glMultiTexCoord2fvARB(GLenum target, const GLfloat *v);
+
+void glMultiTexCoord2dARB(GLenum target, GLdouble s, GLdouble t);
+
+void glMultiTexCoord2dvARB(GLenum target, const GLdouble *v);
+
+void glMultiTexCoord3sARB(GLenum target, GLshort s, GLshort t, GLshort r);
+
+void glMultiTexCoord3svARB(GLenum target, const GLshort *v);
+
+void glMultiTexCoord3iARB(GLenum target, GLint s, GLint t, GLint r);
+
+void glMultiTexCoord3ivARB(GLenum target, const GLint *v);
+
+void glMultiTexCoord3fARB(GLenum target, GLfloat s, GLfloat t, GLfloat r);
+
+void glMultiTexCoord3fvARB(GLenum target, const GLfloat *v);
+
+void glMultiTexCoord3dARB(GLenum target, GLdouble s, GLdouble t, GLdouble r);
+
+void glMultiTexCoord3dvARB(GLenum target, const GLdouble *v);
+
+void glMultiTexCoord4sARB(GLenum target, GLshort s, GLshort t, GLshort r, GLshort q);
+
+void glMultiTexCoord4svARB(GLenum target, const GLshort *v);
+
+void glMultiTexCoord4iARB(GLenum target, GLint s, GLint t, GLint r, GLint q);
+
+void glMultiTexCoord4ivARB(GLenum target, const GLint *v);
+
+void glMultiTexCoord4fARB(GLenum target, GLfloat s, GLfloat t, GLfloat r, GLfloat q);
+
+void glMultiTexCoord4fvARB(GLenum target, const GLfloat *v);
+
+void glMultiTexCoord4dARB(GLenum target, GLdouble s, GLdouble t, GLdouble r, GLdouble q);
+
+void glMultiTexCoord4dvARB(GLenum target, const GLdouble *v);
+
+void glFogCoordf(GLfloat coord);
+
+void glFogCoordfv(const GLfloat *coord);
+
+void glFogCoordd(GLdouble coord);
+
+void glFogCoorddv(const GLdouble *coord);
+
+void glFogCoordfEXT(GLfloat coord);
+
+void glFogCoordfvEXT(const GLfloat *coord);
+
+void glFogCoorddEXT(GLdouble coord);
+
+void glFogCoorddvEXT(const GLdouble *coord);
+
+void glEdgeFlag(GLboolean flag);
+
+void glEdgeFlagv(const GLboolean *flag);
+
+void glIndexs(GLshort c);
+
+void glIndexsv(const GLshort *c);
+
+void glIndexi(GLint c);
+
+void glIndexiv(const GLint *c);
+
+void glIndexf(GLfloat c);
+
+void glIndexfv(const GLfloat *c);
+
+void glIndexd(GLdouble c);
+
+void glIndexdv(const GLdouble *c);
+
+void glIndexub(GLubyte c);
+
+void glIndexubv(const GLubyte *c);
+
+void glRects(GLshort x1, GLshort y1, GLshort x2, GLshort y2);
+
+void glRectsv(const GLshort *v1, const GLshort *v2);
+
+void glRecti(GLint x1, GLint y1, GLint x2, GLint y2);
+
+void glRectiv(const GLint *v1, const GLint *v2);
+
+void glRectf(GLfloat x1, GLfloat y1, GLfloat x2, GLfloat y2);
+
+void glRectfv(const GLfloat *v1, const GLfloat *v2);
+
+void glRectd(GLdouble x1, GLdouble y1, GLdouble x2, GLdouble y2);
+
+void glRectdv(const GLdouble *v1, const GLdouble *v2);
 
 OSMesaContext OSMesaCreateContext(GLenum format, OSMesaContext sharelist);
 

@@ -49,7 +49,8 @@ pub extern "C" fn glIsEnabledIndexedEXT(target: GLenum, index: GLuint) -> GLbool
 
 #[no_mangle]
 pub extern "C" fn glGetError() -> GLenum {
-    with_context(0, |ctx| ctx.take_error())
+    // Between glBegin and glEnd glGetError is itself GL_INVALID_OPERATION (and returns 0).
+    with_context(0, |ctx| if ctx.check_outside_begin_end() { ctx.take_error() } else { 0 })
 }
 
 #[no_mangle]
@@ -75,12 +76,20 @@ pub extern "C" fn glClampColorARB(target: GLenum, clamp: GLenum) {
 
 #[no_mangle]
 pub extern "C" fn glFlush() {
-    with_context((), |ctx| ctx.flush())
+    with_context((), |ctx| {
+        if ctx.check_outside_begin_end() {
+            ctx.flush()
+        }
+    })
 }
 
 #[no_mangle]
 pub extern "C" fn glFinish() {
-    with_context((), |ctx| ctx.finish())
+    with_context((), |ctx| {
+        if ctx.check_outside_begin_end() {
+            ctx.finish()
+        }
+    })
 }
 
 #[no_mangle]

@@ -12,11 +12,14 @@
 #![allow(non_snake_case)]
 
 pub mod enums;
+pub mod gl_arrays;
+pub mod gl_buffer_objects;
 pub mod gl_buffers;
 pub mod gl_pixels;
 pub mod gl_raster_state;
 pub mod gl_state;
 pub mod gl_transform;
+pub mod gl_vertex;
 pub mod osmesa;
 pub mod procs;
 pub mod types;

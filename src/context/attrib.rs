@@ -8,7 +8,8 @@
 //! group, including the texture enables of every unit and the blend enable of every draw
 //! buffer, while leaving the rest of those groups alone.
 //!
-//! Groups whose state does not exist yet (current, list, ...) are accepted and save nothing. Unknown mask bits are ignored, and an empty mask still pushes
+//! Groups whose state does not exist yet (list, ...) are accepted and save nothing. Unknown
+//! mask bits are ignored, and an empty mask still pushes
 //! an entry, as in Mesa.
 //!
 //! Deliberate differences from Mesa 22, which restores less than the specification asks:
@@ -69,6 +70,7 @@ impl Enables {
 /// One glPushAttrib entry: a clone of each group the mask named.
 #[derive(Clone, Debug, Default)]
 pub struct SavedAttribs {
+    current: Option<CurrentState>,
     color: Option<ColorBufferState>,
     depth: Option<DepthState>,
     stencil: Option<StencilState>,
@@ -99,6 +101,7 @@ fn saved<T: Clone>(mask: u32, bit: u32, group: &T) -> Option<T> {
 impl SavedAttribs {
     fn save(state: &mut State, mask: u32) -> SavedAttribs {
         SavedAttribs {
+            current: saved(mask, GL_CURRENT_BIT, &state.current),
             color: saved(mask, GL_COLOR_BUFFER_BIT, &state.color),
             depth: saved(mask, GL_DEPTH_BUFFER_BIT, &state.depth),
             stencil: saved(mask, GL_STENCIL_BUFFER_BIT, &state.stencil),
@@ -140,6 +143,7 @@ impl SavedAttribs {
             p.point_distance_attenuation = point.point_distance_attenuation;
             p.point_sprite_coord_origin = point.point_sprite_coord_origin;
         }
+        restore(&mut state.current, self.current);
         restore(&mut state.color, self.color);
         restore(&mut state.depth, self.depth);
         restore(&mut state.stencil, self.stencil);
@@ -165,11 +169,11 @@ fn restore<T>(group: &mut T, saved: Option<T>) {
     }
 }
 
-/// One glPushClientAttrib entry. GL_CLIENT_VERTEX_ARRAY_BIT is accepted; vertex array state
-/// does not exist yet, so it saves nothing.
+/// One glPushClientAttrib entry: pixel storage modes and vertex array state.
 #[derive(Clone, Debug, Default)]
 pub struct SavedClientAttribs {
     pixel_store: Option<PixelStoreState>,
+    vertex_arrays: Option<crate::vertex::arrays::ClientArrays>,
 }
 
 impl Context {
@@ -196,20 +200,32 @@ impl Context {
         }
     }
 
-    /// glPushClientAttrib. Client state commands are not checked against glBegin/glEnd (the
-    /// specification lists no error for them there, and Mesa checks none).
+    /// glPushClientAttrib. Between glBegin and glEnd the client stack is undefined in GL ("an
+    /// error may or may not be generated"); Mesa 22 generates GL_INVALID_OPERATION, as here.
     pub fn push_client_attrib(&mut self, mask: u32) {
+        if !self.check_outside_begin_end() {
+            return;
+        }
         if self.client_attrib_stack.len() >= MAX_ATTRIB_STACK_DEPTH {
             return self.error(GL_STACK_OVERFLOW);
         }
         let pixel_store = saved(mask, GL_CLIENT_PIXEL_STORE_BIT, &self.pixel_store);
-        self.client_attrib_stack.push(SavedClientAttribs { pixel_store });
+        let vertex_arrays = saved(mask, GL_CLIENT_VERTEX_ARRAY_BIT, &self.vertex_input.arrays);
+        self.client_attrib_stack.push(SavedClientAttribs { pixel_store, vertex_arrays });
     }
 
     /// glPopClientAttrib.
     pub fn pop_client_attrib(&mut self) {
+        if !self.check_outside_begin_end() {
+            return;
+        }
         match self.client_attrib_stack.pop() {
-            Some(saved) => restore(&mut self.pixel_store, saved.pixel_store),
+            Some(saved) => {
+                restore(&mut self.pixel_store, saved.pixel_store);
+                if let Some(arrays) = saved.vertex_arrays {
+                    self.restore_client_arrays(arrays);
+                }
+            }
             None => self.error(GL_STACK_UNDERFLOW),
         }
     }
@@ -230,6 +246,14 @@ mod tests {
     /// `state` with every field of every group changed.
     fn scrambled(state: &State) -> State {
         let mut t = state.clone();
+        let cur = &mut t.current;
+        cur.color = [0.1, 0.2, 0.3, 0.4];
+        cur.secondary_color = [0.5, 0.6, 0.7, 1.0];
+        cur.normal = [1.0, 0.0, 0.0];
+        cur.tex_coords[2] = [1.0, 2.0, 3.0, 4.0];
+        cur.fog_coord = 5.0;
+        cur.edge_flag = !cur.edge_flag;
+        cur.index = 9.0;
         let c = &mut t.color;
         c.alpha_test = !c.alpha_test;
         c.alpha_func = CompareFunc::Greater;
@@ -395,7 +419,8 @@ mod tests {
             el.point_distance_attenuation = ol.point_distance_attenuation;
             el.point_sprite_coord_origin = ol.point_sprite_coord_origin;
         }
-        let whole: [(u32, CopyGroup); 16] = [
+        let whole: [(u32, CopyGroup); 17] = [
+            (GL_CURRENT_BIT, |e, o| e.current = o.current.clone()),
             (GL_COLOR_BUFFER_BIT, |e, o| e.color = o.color.clone()),
             (GL_DEPTH_BUFFER_BIT, |e, o| e.depth = o.depth.clone()),
             (GL_STENCIL_BUFFER_BIT, |e, o| e.stencil = o.stencil.clone()),
@@ -452,6 +477,7 @@ mod tests {
     fn scrambling_changes_every_group() {
         let o = context().state;
         let t = scrambled(&o);
+        assert_ne!(t.current, o.current);
         assert_ne!(t.color, o.color);
         assert_ne!(t.depth, o.depth);
         assert_ne!(t.stencil, o.stencil);
@@ -546,22 +572,25 @@ mod tests {
     }
 
     #[test]
-    fn server_stack_is_illegal_between_begin_and_end_client_stack_is_not() {
+    fn both_stacks_are_illegal_between_begin_and_end() {
         let mut ctx = context();
         ctx.inside_begin_end = true;
         ctx.push_attrib(GL_ALL_ATTRIB_BITS);
         assert_eq!(ctx.take_error(), GL_INVALID_OPERATION);
         assert!(ctx.attrib_stack.is_empty());
         ctx.push_client_attrib(GL_CLIENT_ALL_ATTRIB_BITS);
-        assert_eq!(ctx.take_error(), GL_NO_ERROR);
+        assert_eq!(ctx.take_error(), GL_INVALID_OPERATION);
+        assert!(ctx.client_attrib_stack.is_empty());
         ctx.inside_begin_end = false;
         ctx.push_attrib(0);
+        ctx.push_client_attrib(0);
         ctx.inside_begin_end = true;
         ctx.pop_attrib();
         assert_eq!(ctx.take_error(), GL_INVALID_OPERATION);
         assert_eq!(ctx.attrib_stack.len(), 1);
         ctx.pop_client_attrib();
-        assert_eq!(ctx.take_error(), GL_NO_ERROR);
+        assert_eq!(ctx.take_error(), GL_INVALID_OPERATION);
+        assert_eq!(ctx.client_attrib_stack.len(), 1);
     }
 
     #[test]

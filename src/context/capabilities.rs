@@ -148,6 +148,11 @@ impl Context {
             self.state.color.blend = [on; MAX_DRAW_BUFFERS];
             return;
         }
+        if let Some(enabled) = self.client_array_enable(cap) {
+            // Client arrays: as glEnableClientState (Mesa accepts them here too).
+            *enabled = on;
+            return;
+        }
         match flag(&mut self.state, cap) {
             Some(f) => *f = on,
             None => self.error(GL_INVALID_ENUM),
@@ -158,6 +163,9 @@ impl Context {
     pub fn is_enabled(&mut self, cap: GLenum) -> GLboolean {
         if !self.check_outside_begin_end() {
             return GL_FALSE;
+        }
+        if let Some(enabled) = self.client_array_enable(cap) {
+            return *enabled as GLboolean;
         }
         match flag(&mut self.state, cap) {
             Some(f) => *f as GLboolean,

@@ -20,6 +20,7 @@ pub mod read_pixels;
 pub mod state;
 pub mod strings;
 pub mod transform;
+pub mod vertex_input;
 #[cfg(test)]
 mod watertight_tests;
 
@@ -53,6 +54,10 @@ pub struct Context {
     scene: Option<crate::raster::Scene>,
     /// Viewport and scissor are initialised to the drawable's size at the first bind only.
     bound_once: bool,
+    /// Immediate mode and client vertex arrays (`vertex_input`).
+    pub vertex_input: vertex_input::VertexInput,
+    /// The buffer objects (one table, so that it can become shared between contexts).
+    pub buffers: crate::vertex::buffer_objects::BufferTable,
 }
 
 impl Context {
@@ -70,6 +75,8 @@ impl Context {
             drawable: None,
             scene: None,
             bound_once: false,
+            vertex_input: vertex_input::VertexInput::default(),
+            buffers: Default::default(),
         }
     }
 

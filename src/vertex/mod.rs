@@ -4,6 +4,11 @@
 //! Every source of vertices produces the same [`Vertex`] records, so everything after
 //! vertex input has one path.
 
+pub mod arrays;
+pub mod buffer_objects;
+pub mod components;
+pub mod immediate;
+
 use crate::context::state::MAX_TEXTURE_UNITS;
 
 /// One vertex as a draw call delivers it: object-space position and every attribute the

@@ -1,0 +1,271 @@
+//! glBegin/glEnd, glVertex, the current-attribute commands and glRect.
+//!
+//! The attribute commands are legal between glBegin and glEnd (section 2.6.3) and set
+//! `state.current` there and outside alike; glVertex appends a snapshot of it to the open
+//! primitive. glVertex outside glBegin/glEnd is undefined in GL; like Mesa, tessera ignores it
+//! without an error.
+//!
+//! Deliberate differences from Mesa 22:
+//! - glBegin takes GL 2.1's modes only: the adjacency modes and GL_PATCHES are GL_INVALID_ENUM.
+//! - glMultiTexCoord with a target beyond GL_MAX_TEXTURE_UNITS is GL_INVALID_ENUM; Mesa does
+//!   not check the target and writes unit `target & 7`.
+//! - glEdgeFlag(flag) sets the edge flag for any nonzero `flag`; Mesa keeps the flag as a
+//!   float and reports TRUE only for exactly 1.
+use super::{independent_primitive_size, Context, BATCH_VERTICES};
+use crate::api::enums::*;
+use crate::api::types::GLenum;
+use crate::context::state::MAX_TEXTURE_UNITS;
+use crate::vertex::immediate::{is_primitive_mode, rect_positions, vertex_from_current};
+
+impl Context {
+    /// glBegin.
+    pub fn begin(&mut self, mode: GLenum) {
+        if !self.check_outside_begin_end() {
+            return;
+        }
+        if !is_primitive_mode(mode) {
+            return self.error(GL_INVALID_ENUM);
+        }
+        self.vertex_input.begin_mode = mode;
+        self.vertex_input.vertices.clear();
+        self.inside_begin_end = true;
+    }
+
+    /// glEnd: the vertices since glBegin go to the geometry pipeline.
+    pub fn end(&mut self) {
+        if !self.inside_begin_end {
+            return self.error(GL_INVALID_OPERATION);
+        }
+        self.inside_begin_end = false;
+        self.deliver_open_vertices();
+    }
+
+    /// glVertex: appends a vertex at `position` with the current attributes (object
+    /// coordinates; missing components are z = 0, w = 1).
+    #[inline]
+    pub fn vertex(&mut self, position: [f32; 4]) {
+        if !self.inside_begin_end {
+            return;
+        }
+        let vertex = vertex_from_current(&self.state.current, position);
+        let vertices = &mut self.vertex_input.vertices;
+        if vertices.len() == vertices.capacity() && vertices.try_reserve(vertices.len().max(256)).is_err() {
+            return self.error(GL_OUT_OF_MEMORY);
+        }
+        vertices.push(vertex);
+        if vertices.len() >= BATCH_VERTICES && independent_primitive_size(self.vertex_input.begin_mode).is_some() {
+            // A whole number of primitives: BATCH_VERTICES is a multiple of every size.
+            self.deliver_open_vertices();
+        }
+    }
+
+    /// Delivers and forgets the vertices collected since glBegin.
+    fn deliver_open_vertices(&mut self) {
+        let vertices = std::mem::take(&mut self.vertex_input.vertices);
+        if !vertices.is_empty() {
+            self.deliver(self.vertex_input.begin_mode, &vertices);
+        }
+        self.vertex_input.vertices = vertices;
+        self.vertex_input.vertices.clear();
+    }
+
+    /// glColor (already converted to floats; not clamped).
+    #[inline]
+    pub fn set_color(&mut self, color: [f32; 4]) {
+        self.state.current.color = color;
+    }
+
+    /// glSecondaryColor3: the alpha of the secondary color is always 1.
+    #[inline]
+    pub fn set_secondary_color(&mut self, [red, green, blue]: [f32; 3]) {
+        self.state.current.secondary_color = [red, green, blue, 1.0];
+    }
+
+    /// glNormal3.
+    #[inline]
+    pub fn set_normal(&mut self, normal: [f32; 3]) {
+        self.state.current.normal = normal;
+    }
+
+    /// glTexCoord (unit 0) and glMultiTexCoord once its target is checked.
+    #[inline]
+    pub fn set_tex_coords(&mut self, unit: usize, coords: [f32; 4]) {
+        if let Some(current) = self.state.current.tex_coords.get_mut(unit) {
+            *current = coords;
+        }
+    }
+
+    /// glMultiTexCoord: `target` is GL_TEXTUREi of an existing unit, else GL_INVALID_ENUM.
+    #[inline]
+    pub fn multi_tex_coord(&mut self, target: GLenum, coords: [f32; 4]) {
+        match texture_unit(target) {
+            Some(unit) => self.set_tex_coords(unit, coords),
+            None => self.error(GL_INVALID_ENUM),
+        }
+    }
+
+    /// glFogCoord.
+    #[inline]
+    pub fn set_fog_coord(&mut self, coord: f32) {
+        self.state.current.fog_coord = coord;
+    }
+
+    /// glEdgeFlag.
+    #[inline]
+    pub fn set_edge_flag(&mut self, flag: bool) {
+        self.state.current.edge_flag = flag;
+    }
+
+    /// glIndex.
+    #[inline]
+    pub fn set_index(&mut self, index: f32) {
+        self.state.current.index = index;
+    }
+
+    /// glRect: a GL_POLYGON of the four corners with the current attributes (section 2.11).
+    /// Illegal between glBegin and glEnd.
+    pub fn rect(&mut self, corner1: [f32; 2], corner2: [f32; 2]) {
+        if !self.check_outside_begin_end() {
+            return;
+        }
+        let vertices = rect_positions(corner1, corner2).map(|p| vertex_from_current(&self.state.current, p));
+        self.deliver(GL_POLYGON, &vertices);
+    }
+}
+
+/// The unit GL_TEXTUREi names, when it exists.
+pub(super) fn texture_unit(texture: GLenum) -> Option<usize> {
+    let unit = texture.checked_sub(GL_TEXTURE0)? as usize;
+    (unit < MAX_TEXTURE_UNITS).then_some(unit)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::test_support::*;
+    use super::*;
+
+    #[test]
+    fn begin_end_delivers_snapshots_of_the_current_attributes() {
+        let mut ctx = context();
+        ctx.begin(GL_TRIANGLES);
+        ctx.set_color([1.0, 0.0, 0.0, 1.0]);
+        ctx.vertex([0.0, 0.0, 0.0, 1.0]);
+        ctx.set_color([0.0, 1.0, 0.0, 0.5]);
+        ctx.set_normal([1.0, 0.0, 0.0]);
+        ctx.multi_tex_coord(GL_TEXTURE3, [1.0, 2.0, 3.0, 4.0]);
+        ctx.set_edge_flag(false);
+        ctx.vertex([1.0, 0.0, 0.0, 1.0]);
+        ctx.set_secondary_color([0.25, 0.5, 0.75]);
+        ctx.set_fog_coord(7.0);
+        ctx.vertex([1.0, 1.0, 0.5, 2.0]);
+        assert!(ctx.vertex_input.delivered.is_empty(), "nothing is drawn before glEnd");
+        ctx.end();
+        assert_eq!(ctx.take_error(), GL_NO_ERROR);
+        let (mode, vertices) = &ctx.vertex_input.delivered[0];
+        assert_eq!((*mode, vertices.len()), (GL_TRIANGLES, 3));
+        assert_eq!(vertices[0].color, [1.0, 0.0, 0.0, 1.0]);
+        assert_eq!(vertices[0].normal, [0.0, 0.0, 1.0]);
+        assert!(vertices[0].edge_flag);
+        assert_eq!(vertices[1].color, [0.0, 1.0, 0.0, 0.5]);
+        assert_eq!(vertices[1].normal, [1.0, 0.0, 0.0]);
+        assert_eq!(vertices[1].tex_coords[3], [1.0, 2.0, 3.0, 4.0]);
+        assert!(!vertices[1].edge_flag);
+        assert_eq!(vertices[1].secondary_color, [0.0, 0.0, 0.0, 1.0]);
+        assert_eq!(vertices[2].position, [1.0, 1.0, 0.5, 2.0]);
+        assert_eq!(vertices[2].secondary_color, [0.25, 0.5, 0.75, 1.0]);
+        assert_eq!(vertices[2].fog_coord, 7.0);
+        // The attributes stay current after glEnd.
+        assert_eq!(ctx.state.current.color, [0.0, 1.0, 0.0, 0.5]);
+        // An empty primitive delivers nothing; the next one starts empty.
+        ctx.begin(GL_POINTS);
+        ctx.end();
+        ctx.begin(GL_POINTS);
+        ctx.vertex([5.0, 0.0, 0.0, 1.0]);
+        ctx.end();
+        assert_eq!(ctx.vertex_input.delivered.len(), 2);
+        assert_eq!(ctx.vertex_input.delivered[1].1.len(), 1);
+    }
+
+    #[test]
+    fn begin_and_end_errors() {
+        let mut ctx = context();
+        ctx.end();
+        assert_eq!(ctx.take_error(), GL_INVALID_OPERATION);
+        ctx.begin(GL_POLYGON + 1);
+        assert_eq!(ctx.take_error(), GL_INVALID_ENUM);
+        assert!(!ctx.inside_begin_end);
+        ctx.begin(GL_LINES);
+        ctx.vertex([0.0; 4]);
+        ctx.begin(GL_POINTS);
+        assert_eq!(ctx.take_error(), GL_INVALID_OPERATION);
+        ctx.vertex([1.0; 4]);
+        ctx.end();
+        // The nested glBegin changed nothing: one GL_LINES primitive of two vertices.
+        assert_eq!(ctx.vertex_input.delivered.len(), 1);
+        assert_eq!(ctx.vertex_input.delivered[0].0, GL_LINES);
+        assert_eq!(ctx.vertex_input.delivered[0].1.len(), 2);
+        ctx.end();
+        assert_eq!(ctx.take_error(), GL_INVALID_OPERATION);
+    }
+
+    #[test]
+    fn long_independent_primitives_are_delivered_in_batches() {
+        let mut ctx = context();
+        for (mode, batches) in [(GL_TRIANGLES, 3), (GL_LINE_STRIP, 1)] {
+            ctx.vertex_input.delivered.clear();
+            ctx.begin(mode);
+            for i in 0..2 * BATCH_VERTICES + 3 {
+                ctx.vertex([i as f32, 0.0, 0.0, 1.0]);
+            }
+            if mode == GL_TRIANGLES {
+                assert_eq!(ctx.vertex_input.delivered.len(), 2, "delivered while glBegin is open");
+            }
+            ctx.end();
+            let delivered = &ctx.vertex_input.delivered;
+            assert_eq!(delivered.len(), batches, "mode {mode:#x}");
+            let xs: Vec<f32> = delivered.iter().flat_map(|(_, v)| v.iter().map(|v| v.position[0])).collect();
+            assert_eq!(xs, (0..2 * BATCH_VERTICES + 3).map(|i| i as f32).collect::<Vec<_>>());
+        }
+        assert_eq!(BATCH_VERTICES % 12, 0);
+    }
+
+    #[test]
+    fn vertices_outside_begin_end_are_ignored() {
+        let mut ctx = context();
+        ctx.vertex([1.0, 2.0, 3.0, 1.0]);
+        ctx.begin(GL_POINTS);
+        ctx.end();
+        assert!(ctx.vertex_input.delivered.is_empty());
+        assert_eq!(ctx.take_error(), GL_NO_ERROR);
+    }
+
+    #[test]
+    fn multi_tex_coord_targets() {
+        let mut ctx = context();
+        ctx.multi_tex_coord(GL_TEXTURE0 + MAX_TEXTURE_UNITS as GLenum, [1.0; 4]);
+        assert_eq!(ctx.take_error(), GL_INVALID_ENUM);
+        ctx.multi_tex_coord(GL_TEXTURE0 - 1, [1.0; 4]);
+        assert_eq!(ctx.take_error(), GL_INVALID_ENUM);
+        assert_eq!(ctx.state.current.tex_coords, [[0.0, 0.0, 0.0, 1.0]; MAX_TEXTURE_UNITS]);
+        ctx.set_tex_coords(0, [2.0; 4]);
+        assert_eq!(ctx.state.current.tex_coords[0], [2.0; 4]);
+        assert_eq!(texture_unit(GL_TEXTURE3), Some(3));
+    }
+
+    #[test]
+    fn rect_is_a_polygon_and_illegal_inside_begin_end() {
+        let mut ctx = context();
+        ctx.set_color([0.5; 4]);
+        ctx.rect([1.0, 2.0], [3.0, 4.0]);
+        let (mode, vertices) = &ctx.vertex_input.delivered[0];
+        assert_eq!(*mode, GL_POLYGON);
+        let positions: Vec<_> = vertices.iter().map(|v| v.position).collect();
+        assert_eq!(positions, rect_positions([1.0, 2.0], [3.0, 4.0]));
+        assert!(vertices.iter().all(|v| v.color == [0.5; 4]));
+        ctx.begin(GL_QUADS);
+        ctx.rect([0.0; 2], [1.0; 2]);
+        assert_eq!(ctx.take_error(), GL_INVALID_OPERATION);
+        ctx.end();
+        assert_eq!(ctx.vertex_input.delivered.len(), 1);
+    }
+}
