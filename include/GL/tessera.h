@@ -6348,6 +6348,8 @@ void glReadBuffer(GLenum mode);
 
 void glAccum(GLenum op, GLfloat value);
 
+void glDepthFunc(GLenum func);
+
 void glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, GLenum type_, GLvoid *pixels);
 
 void glPixelStorei(GLenum pname, GLint param);

@@ -136,3 +136,8 @@ pub extern "C" fn glReadBuffer(mode: GLenum) {
 pub extern "C" fn glAccum(op: GLenum, value: GLfloat) {
     with_context((), |ctx| ctx.accum(op, value))
 }
+
+#[no_mangle]
+pub extern "C" fn glDepthFunc(func: GLenum) {
+    with_context((), |ctx| ctx.depth_func(func))
+}

@@ -13,7 +13,7 @@ use crate::framebuffer::Rect;
 use crate::raster::triangle::{TriangleJob, WindowVertex};
 use crate::raster::{DrawState, Primitive as RasterPrimitive, Scene};
 use crate::setup::triangle::GUARD_BAND;
-use crate::vertex::assembly::{assemble, Primitive};
+use crate::vertex::assembly::{assemble, Primitive, QuadSplit};
 use crate::vertex::clip::{ClipPlanes, ClipVertex};
 use crate::vertex::Vertex;
 use glam::{Mat4, Vec4};
@@ -85,7 +85,12 @@ impl Context {
         let mut poly = Vec::new();
         let mut scratch = Vec::new();
         let outcodes: Vec<u32> = clip_vertices.iter().map(|v| geometry.planes.outcode(v)).collect();
-        assemble(mode, clip_vertices.len() as u32, first_vertex, |primitive| {
+        let split = if !first_vertex && mode == GL_QUADS && geometry.leaves_view_volume(&clip_vertices) {
+            QuadSplit::SecondDiagonal
+        } else {
+            QuadSplit::FirstDiagonal
+        };
+        assemble(mode, clip_vertices.len() as u32, first_vertex, split, |primitive| {
             if let Primitive::Triangle { v, provoking, .. } = primitive {
                 let [a, b, c] = v.map(|i| i as usize);
                 let (oa, ob, oc) = (outcodes[a], outcodes[b], outcodes[c]);
@@ -212,6 +217,15 @@ impl Context {
             offset: polygon.offset_fill.then_some((polygon.offset_factor, polygon.offset_units)),
             depth_bits,
         }
+    }
+}
+
+impl Geometry {
+    /// Whether any vertex lies outside the view volume (not only the guard band) or an
+    /// enabled user clip plane: where Mesa's draw module takes its pipeline path.
+    fn leaves_view_volume(&self, vertices: &[ClipVertex]) -> bool {
+        let view = ClipPlanes { guard_x: 1.0, guard_y: 1.0, clip_z: true, user: self.planes.user.clone() };
+        vertices.iter().any(|v| view.outcode(v) != 0)
     }
 }
 

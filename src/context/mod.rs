@@ -12,6 +12,7 @@ pub mod buffers;
 pub mod capabilities;
 pub mod current;
 pub mod draw;
+pub mod fragment_state;
 pub mod get;
 pub mod hints;
 pub mod matrix;

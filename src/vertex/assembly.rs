@@ -26,9 +26,29 @@ pub enum Primitive {
     },
 }
 
+/// How quads become triangles. Mesa's draw module splits a quad v0 v1 v2 v3 along v0–v2
+/// when it emits vertices directly, but along v1–v3 (so that the provoking v3 ends both
+/// triangles) when the draw goes through its pipeline stages, as it does when any vertex
+/// lies outside the view volume (measured: GL_QUADS only; quad strips and polygons keep
+/// v0–v2 either way). The split decides which triangle's colors a pixel of a
+/// non-planar-colored quad gets, so tessera follows the same rule.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum QuadSplit {
+    /// Diagonal v0–v2.
+    FirstDiagonal,
+    /// Diagonal v1–v3 (last-vertex convention through the clipping pipeline).
+    SecondDiagonal,
+}
+
 /// Calls `emit` for every primitive of `mode` over `count` vertices, in GL order.
 /// `first_vertex_convention` selects GL_FIRST_VERTEX_CONVENTION for the provoking vertex.
-pub fn assemble(mode: GLenum, count: u32, first_vertex_convention: bool, mut emit: impl FnMut(Primitive)) {
+pub fn assemble(
+    mode: GLenum,
+    count: u32,
+    first_vertex_convention: bool,
+    split: QuadSplit,
+    mut emit: impl FnMut(Primitive),
+) {
     let tri = |v: [u32; 3], last: u32, first: u32| Primitive::Triangle {
         v,
         provoking: if first_vertex_convention { first } else { last },
@@ -63,13 +83,15 @@ pub fn assemble(mode: GLenum, count: u32, first_vertex_convention: bool, mut emi
         GL_QUADS => {
             for q in 0..count / 4 {
                 let b = 4 * q;
-                quad(&mut emit, [b, b + 1, b + 2, b + 3], if first_vertex_convention { b } else { b + 3 });
+                let provoking = if first_vertex_convention { b } else { b + 3 };
+                quad(&mut emit, [b, b + 1, b + 2, b + 3], provoking, split);
             }
         }
         GL_QUAD_STRIP => {
             for q in 0..(count.saturating_sub(2)) / 2 {
                 let b = 2 * q;
-                quad(&mut emit, [b, b + 1, b + 3, b + 2], if first_vertex_convention { b } else { b + 3 });
+                let provoking = if first_vertex_convention { b } else { b + 3 };
+                quad(&mut emit, [b, b + 1, b + 3, b + 2], provoking, split);
             }
         }
         GL_POLYGON => {
@@ -83,10 +105,18 @@ pub fn assemble(mode: GLenum, count: u32, first_vertex_convention: bool, mut emi
     }
 }
 
-/// A quad v0 v1 v2 v3 (in polygon order) as two triangles sharing the diagonal v0–v2.
-fn quad(emit: &mut impl FnMut(Primitive), v: [u32; 4], provoking: u32) {
-    emit(Primitive::Triangle { v: [v[0], v[1], v[2]], provoking, boundary: [true, true, false] });
-    emit(Primitive::Triangle { v: [v[0], v[2], v[3]], provoking, boundary: [false, true, true] });
+/// A quad v0 v1 v2 v3 (in polygon order) as two triangles split as `split` says.
+fn quad(emit: &mut impl FnMut(Primitive), v: [u32; 4], provoking: u32, split: QuadSplit) {
+    match split {
+        QuadSplit::FirstDiagonal => {
+            emit(Primitive::Triangle { v: [v[0], v[1], v[2]], provoking, boundary: [true, true, false] });
+            emit(Primitive::Triangle { v: [v[0], v[2], v[3]], provoking, boundary: [false, true, true] });
+        }
+        QuadSplit::SecondDiagonal => {
+            emit(Primitive::Triangle { v: [v[0], v[1], v[3]], provoking, boundary: [true, false, true] });
+            emit(Primitive::Triangle { v: [v[1], v[2], v[3]], provoking, boundary: [true, true, false] });
+        }
+    }
 }
 
 #[cfg(test)]
@@ -95,7 +125,7 @@ mod tests {
 
     fn collect(mode: GLenum, count: u32, first: bool) -> Vec<Primitive> {
         let mut out = Vec::new();
-        assemble(mode, count, first, |p| out.push(p));
+        assemble(mode, count, first, QuadSplit::FirstDiagonal, |p| out.push(p));
         out
     }
 
@@ -126,6 +156,14 @@ mod tests {
         assert!(polygon.iter().all(|p| matches!(p, Primitive::Triangle { provoking: 0, .. })));
         let first = collect(GL_TRIANGLES, 3, true);
         assert!(matches!(first[0], Primitive::Triangle { provoking: 0, .. }));
+    }
+
+    #[test]
+    fn quads_through_the_clipping_pipeline_split_along_the_other_diagonal() {
+        let mut out = Vec::new();
+        assemble(GL_QUADS, 4, false, QuadSplit::SecondDiagonal, |p| out.push(p));
+        assert_eq!(out[0], Primitive::Triangle { v: [0, 1, 3], provoking: 3, boundary: [true, false, true] });
+        assert_eq!(out[1], Primitive::Triangle { v: [1, 2, 3], provoking: 3, boundary: [true, true, false] });
     }
 
     #[test]
