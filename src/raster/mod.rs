@@ -9,11 +9,15 @@
 //! A pixel is only ever touched by the one worker owning its band, in submission order, so
 //! the bytes are identical for any number of threads.
 
+pub mod line;
+pub mod point;
 pub mod triangle;
 
-use crate::fragment::FragmentState;
+use crate::fragment::{write_colors, FragmentState};
 use crate::framebuffer::band::Band;
 use crate::framebuffer::{ColorSlot, Framebuffer, Rect};
+use line::LineJob;
+use point::PointJob;
 use std::sync::{Arc, Mutex, OnceLock};
 use triangle::TriangleJob;
 
@@ -26,11 +30,40 @@ pub struct DrawState {
     pub fragment: FragmentState,
     /// Pixels outside this rectangle (scissor box ∩ framebuffer) are never written.
     pub clip: Rect,
+    /// GL_POLYGON_STIPPLE's pattern when enabled (filled polygons only): row `y % 32`
+    /// from the bottom of the window, bit `31 − x % 32` for column `x`.
+    pub polygon_stipple: Option<[u32; 32]>,
 }
 
 /// A primitive ready for rasterization.
 pub enum Primitive {
     Triangle(TriangleJob),
+    Line(LineJob),
+    Point(PointJob),
+}
+
+/// Per-worker storage reused across spans.
+#[derive(Default)]
+pub struct Scratch {
+    pub z: Vec<f32>,
+    pub colors: Vec<[f32; 4]>,
+}
+
+/// Writes a shaded span (`colors[i]` for every bit `i` of `live`, starting at `row_start`
+/// of the band) to every color target the draw writes.
+#[inline]
+pub fn write_span_colors(
+    fragment: &FragmentState,
+    band: &mut Band<'_>,
+    row_start: usize,
+    colors: &[[f32; 4]],
+    live: u64,
+) {
+    for (target, mask) in band.colors.iter_mut().zip(&fragment.color_masks) {
+        if let Some(mask) = mask {
+            write_colors(&mut target.pixels, row_start, colors, live, *mask, fragment.clamp_float);
+        }
+    }
 }
 
 /// Recorded rendering waiting for a flush point.
@@ -127,7 +160,7 @@ impl Scene {
     /// Renders every tile of one band, each tile's primitives in submission order.
     fn render_band(&self, mut band: Band<'_>) {
         let ty = band.y0 as usize / TILE_SIZE;
-        let mut scratch = triangle::Scratch::default();
+        let mut scratch = Scratch::default();
         for tx in 0..self.tiles_x {
             let tile = Rect::from_xywh((tx * TILE_SIZE) as i32, band.y0, TILE_SIZE as i32, band.rows as i32)
                 .intersect(Rect::from_xywh(0, 0, self.width as i32, self.height as i32));
@@ -137,6 +170,8 @@ impl Scene {
                 let area = tile.intersect(state.clip);
                 match primitive {
                     Primitive::Triangle(job) => job.render(state, area, &mut band, &mut scratch),
+                    Primitive::Line(job) => job.render(state, area, &mut band, &mut scratch),
+                    Primitive::Point(job) => job.render(state, area, &mut band, &mut scratch),
                 }
             }
         }
