@@ -5,6 +5,19 @@
 //! the context's [`Scene`]. Nothing is rasterized until a flush point
 //! ([`Context::flush_rendering`]): glFlush, glFinish, glReadPixels, clears, glAccum, buffer
 //! queries, MakeCurrent.
+//!
+//! Points, lines and polygons drawn in GL_POINT or GL_LINE mode follow Mesa 22's llvmpipe
+//! exactly (it is what programs are compared against), which pins down details GL leaves
+//! open: they are clipped to the view volume (points by their centre), in llvmpipe's y-down
+//! window space with its rounding (a fused multiply-add where its generated code has one);
+//! line stipple cuts lines into dashes, one pixel step along the major axis per pattern
+//! bit; polygon outlines come from Mesa's primitive decomposition, clipper (new vertices
+//! interpolated from the end nearer the plane), culling, polygon offset (per vertex, units
+//! scaled by twice the depth resolution) and edge order. Known deviations, where Mesa
+//! contradicts the GL specification: a strip whose first segment is clipped away entirely
+//! keeps the stipple counter of the previous draw in Mesa (here it restarts), and Mesa
+//! turns a 3-vertex triangle fan into GL_TRIANGLES, changing its provoking vertex under
+//! GL_FIRST_VERTEX_CONVENTION (here it stays the second vertex).
 use super::Context;
 use crate::api::enums::*;
 use crate::api::types::GLenum;
@@ -130,30 +143,27 @@ impl Context {
         let first_vertex = self.state.lighting.provoking_vertex == GL_FIRST_VERTEX_CONVENTION;
         let mut poly = Vec::new();
         let mut scratch = Vec::new();
-        let outcodes: Vec<u32> = clip_vertices.iter().map(|v| geometry.planes.outcode(v)).collect();
-        let line_outcodes: Vec<u32> = if mode == GL_POINTS || (GL_LINES..=GL_LINE_STRIP).contains(&mode) {
-            clip_vertices.iter().map(|v| geometry.line_planes.outcode(v)).collect()
-        } else {
-            Vec::new()
-        };
+        let polygons = (GL_TRIANGLES..=GL_POLYGON).contains(&mode);
+        let outlines = polygons && (geometry.mode_front != GL_FILL || geometry.mode_back != GL_FILL);
+        // Filled polygons are clipped to the guard band; points, lines and outlines to the
+        // view volume.
+        let planes = if polygons && !outlines { &geometry.planes } else { &geometry.line_planes };
+        let outcodes: Vec<u32> = clip_vertices.iter().map(|v| planes.outcode(v)).collect();
         let mut stipple = self.line_stipple();
-        if geometry.mode_front != GL_FILL || geometry.mode_back != GL_FILL {
-            if let Some(planes_outcodes) = outline_outcodes(mode, &geometry, &clip_vertices) {
-                let mut outline =
-                    Outline { scene: &mut scene, state: state_index, g: &geometry, stipple, first_vertex };
-                decompose_outlines(mode, clip_vertices.len() as u32, first_vertex, |t| {
-                    let v = t.v.map(|i| &clip_vertices[i as usize]);
-                    let codes = t.v.map(|i| planes_outcodes[i as usize]);
-                    outline.triangle(v, codes, t, &mut poly, &mut scratch);
-                });
-                self.scene = Some(scene);
-                return;
-            }
+        if outlines {
+            let mut outline = Outline { scene: &mut scene, state: state_index, g: &geometry, stipple, first_vertex };
+            decompose_outlines(mode, clip_vertices.len() as u32, first_vertex, |t| {
+                let v = t.v.map(|i| &clip_vertices[i as usize]);
+                let codes = t.v.map(|i| outcodes[i as usize]);
+                outline.triangle(v, codes, t, &mut poly, &mut scratch);
+            });
+            self.scene = Some(scene);
+            return;
         }
         assemble(mode, clip_vertices.len() as u32, first_vertex, |primitive| match primitive {
             Primitive::Point(i) => {
                 let i = i as usize;
-                if line_outcodes[i] == 0 {
+                if outcodes[i] == 0 {
                     emit_point(&mut scene, state_index, &geometry, &clip_vertices[i]);
                 }
             }
@@ -171,7 +181,7 @@ impl Context {
                     state_index,
                     &geometry,
                     [&clip_vertices[a], &clip_vertices[b]],
-                    [line_outcodes[a], line_outcodes[b]],
+                    [outcodes[a], outcodes[b]],
                     flat_color,
                     stipple.as_mut(),
                 );
@@ -427,12 +437,6 @@ fn decompose_outlines(mode: GLenum, count: u32, first_vertex: bool, mut emit: im
         }
         _ => {}
     }
-}
-
-/// Outcodes against the view volume for the polygon modes, or `None` when `mode` draws no
-/// polygons.
-fn outline_outcodes(mode: GLenum, g: &Geometry, vertices: &[ClipVertex]) -> Option<Vec<u32>> {
-    (GL_TRIANGLES..=GL_POLYGON).contains(&mode).then(|| vertices.iter().map(|v| g.line_planes.outcode(v)).collect())
 }
 
 /// The point and line polygon modes: triangles of polygons are clipped to the view volume
@@ -776,8 +780,8 @@ fn emit_dash(
 
 fn emit_line_job(scene: &mut Scene, state: u32, g: &Geometry, a: &LineVertex, b: &LineVertex, flat: Option<[f32; 4]>) {
     if let Some(job) = LineJob::new(a, b, g.line_width, g.height, flat) {
-        let bounds = job.bounds();
-        scene.add(state, bounds, RasterPrimitive::Line(job));
+        let (bounds, setup) = (job.bounds(), job.setup().clone());
+        scene.add_narrow(state, bounds, RasterPrimitive::Line(job), |y0, y1| setup.columns(y0, y1));
     }
 }
 

@@ -58,6 +58,10 @@ impl LineJob {
         Some(LineJob { setup, z, shading })
     }
 
+    pub fn setup(&self) -> &LineSetup {
+        &self.setup
+    }
+
     /// The pixel rectangle that may contain covered pixels.
     pub fn bounds(&self) -> Rect {
         self.setup.bounds

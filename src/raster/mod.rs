@@ -141,6 +141,42 @@ impl Scene {
         }
     }
 
+    /// Bins a primitive covering at most `bounds`, but only into the tiles of each tile row
+    /// that `columns` (the half-open pixel columns it may cover within a half-open range
+    /// of rows) names: long thin primitives (lines) cross few of their bounding box's tiles.
+    pub fn add_narrow(
+        &mut self,
+        state: u32,
+        bounds: Rect,
+        primitive: Primitive,
+        columns: impl Fn(i32, i32) -> Option<(i32, i32)>,
+    ) {
+        let clip = self.states[state as usize].clip;
+        let r = bounds.intersect(clip);
+        if r.is_empty() {
+            return;
+        }
+        let index = self.primitives.len() as u32;
+        let t = TILE_SIZE as i32;
+        let mut binned = false;
+        for ty in (r.y0 / t)..=((r.y1 - 1) / t) {
+            let Some((x0, x1)) = columns(r.y0.max(ty * t), r.y1.min(ty * t + t)) else {
+                continue;
+            };
+            let (x0, x1) = (x0.max(r.x0), x1.min(r.x1));
+            if x0 >= x1 {
+                continue;
+            }
+            for tx in (x0 / t)..=((x1 - 1) / t) {
+                self.bins[ty as usize * self.tiles_x + tx as usize].push(index);
+                binned = true;
+            }
+        }
+        if binned {
+            self.primitives.push((state, primitive));
+        }
+    }
+
     /// Renders the scene into `framebuffer` (which must have the scene's size) on
     /// `thread_count()` threads.
     pub fn execute(self, framebuffer: &mut Framebuffer) {

@@ -101,6 +101,9 @@ impl LineGradient {
 #[derive(Clone, Debug, PartialEq)]
 pub struct LineSetup {
     planes: [EdgePlane; 4],
+    /// The parallelogram's corners in y-down fixed point (pixel (px, py) samples at
+    /// (256·px, 256·py)).
+    corners: [[i64; 2]; 4],
     /// The framebuffer height: y-down row `py` is GL row `height − 1 − py`.
     height: i32,
     /// Pixels that may be covered, in GL rows (exclusive maxima).
@@ -263,6 +266,7 @@ impl LineSetup {
         };
         Some(LineSetup {
             planes,
+            corners: std::array::from_fn(|i| [x[i], y[i]]),
             height,
             bounds,
             gradient: LineGradient { dx: gradient.0, dy: gradient.1, inv_length2, origin: [p1[0] - 0.5, p1[1] - 0.5] },
@@ -273,6 +277,39 @@ impl LineSetup {
     #[inline]
     pub fn row_down(&self, y: i32) -> i32 {
         self.height - 1 - y
+    }
+
+    /// Pixel columns `[x0, x1)` that may hold covered pixels in GL rows `[y0, y1)`: the
+    /// parallelogram's extent across that slab, with a pixel of margin.
+    pub fn columns(&self, y0: i32, y1: i32) -> Option<(i32, i32)> {
+        // Sample rows of the slab in y-down fixed point.
+        let lo = (self.row_down(y1 - 1) as i64) * ONE;
+        let hi = (self.row_down(y0) as i64) * ONE;
+        let (mut min_x, mut max_x) = (i64::MAX, i64::MIN);
+        let mut take = |x: i64| {
+            min_x = min_x.min(x);
+            max_x = max_x.max(x);
+        };
+        for i in 0..4 {
+            let [px, py] = self.corners[i];
+            let [qx, qy] = self.corners[(i + 1) % 4];
+            if (lo..=hi).contains(&py) {
+                take(px);
+            }
+            for bound in [lo, hi] {
+                if (py < bound) != (qy < bound) {
+                    // The edge crosses the slab's side: x there, rounded both ways.
+                    let n = (bound - py) * (qx - px);
+                    let d = qy - py;
+                    take(px + div_floor(n, d));
+                    take(px + div_ceil(n, d));
+                }
+            }
+        }
+        (min_x <= max_x).then(|| {
+            let to_i32 = |v: i64| v.clamp(i32::MIN as i64 / 2, i32::MAX as i64 / 2) as i32;
+            (to_i32(div_floor(min_x, ONE) - 1), to_i32(div_ceil(max_x, ONE) + 2))
+        })
     }
 
     /// The covered pixels of GL row `y` as a half-open range within `[clip_x0, clip_x1)`.
