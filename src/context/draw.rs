@@ -952,7 +952,8 @@ mod tests {
     }
 
     /// Horizontal, vertical, diagonal, shallow and steep lines; pixel-centre, integer and
-    /// fractional endpoints; both directions of one steep segment (its centre tie goes differently each way).
+    /// fractional endpoints; both directions of one steep segment (its centre tie goes
+    /// differently each way).
     #[test]
     fn width_1_lines_follow_the_diamond_exit_rule_as_llvmpipe() {
         let script = "
@@ -1277,8 +1278,8 @@ mod tests {
         assert_eq!(point_size(&lp), MAX_POINT_SIZE);
     }
 
-    /// Replays a probe script: the command language of the C probe used to measure Mesa
-    /// (size, clear, viewport, ortho, frustum, linewidth, pointsize, pointminmax, stipple,
+    /// Replays a probe script: the command language of `tools/gl-probe.c`, which runs the
+    /// same script on Mesa (size, clear, viewport, ortho, frustum, linewidth, pointsize, pointminmax, stipple,
     /// pstipple, enable, disable, shade, provoking, polymode, cullface, frontface,
     /// depthfunc, offset, begin, color, edge, v, end, lit, dump, depth; one command per line
     /// or separated by `;`), printing the same lines, so that a script's output on Mesa and

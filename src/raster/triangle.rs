@@ -173,3 +173,19 @@ pub fn stipple_mask(pattern: &[u32; 32], x0: i32, y: i32) -> u64 {
     let bits = row.rotate_left(x0.rem_euclid(32) as u32).reverse_bits() as u64;
     bits | bits << 32
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn stipple_mask_reads_bit_31_as_the_leftmost_column() {
+        let mut pattern = [0u32; 32];
+        pattern[3] = 0x8000_0001; // columns 0 and 31 of rows 3, 35, 67, …
+        assert_eq!(stipple_mask(&pattern, 0, 3), 1 | 1 << 31 | 1 << 32 | 1 << 63);
+        assert_eq!(stipple_mask(&pattern, 31, 35), 1 | 1 << 1 | 1 << 32 | 1 << 33);
+        assert_eq!(stipple_mask(&pattern, 5, 4), 0);
+        // Negative coordinates wrap like positive ones (x = −1 is column 31).
+        assert_eq!(stipple_mask(&pattern, -1, -29) & 3, 3);
+    }
+}

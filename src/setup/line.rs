@@ -359,5 +359,47 @@ mod tests {
     fn horizontal_lines_draw_the_start_and_not_the_end() {
         assert_eq!(pixels([1.5, 2.5], [4.5, 2.5], 1.0, 8), vec![(1, 2), (2, 2), (3, 2)]);
         assert_eq!(pixels([4.5, 2.5], [1.5, 2.5], 1.0, 8), vec![(2, 2), (3, 2), (4, 2)]);
+        // On a pixel border the line belongs to the row below (Mesa 22: y = 2 lights row 1).
+        assert_eq!(pixels([1.0, 2.0], [4.0, 2.0], 1.0, 8), vec![(1, 1), (2, 1), (3, 1)]);
+    }
+
+    #[test]
+    fn wide_lines_cover_whole_columns_and_rows() {
+        // Width 3, x-major: three rows per column; y-major: three columns per row.
+        let x_major = pixels([1.5, 4.5], [5.5, 4.5], 3.0, 8);
+        assert_eq!(x_major, (3..6).flat_map(|y| (1..5).map(move |x| (x, y))).collect::<Vec<_>>());
+        let y_major = pixels([4.5, 1.5], [4.5, 4.5], 3.0, 8);
+        assert_eq!(y_major, (1..4).flat_map(|y| (3..6).map(move |x| (x, y))).collect::<Vec<_>>());
+    }
+
+    #[test]
+    fn degenerate_and_far_lines_draw_nothing() {
+        assert!(LineSetup::new([3.0, 3.0], [3.0, 3.0], 1.0, 8).is_none());
+        assert!(LineSetup::new([f32::NAN, 3.0], [5.0, 3.0], 1.0, 8).is_none());
+        assert!(LineSetup::new([-1e9, 3.0], [5.0, 3.0], 1.0, 8).is_none());
+    }
+
+    #[test]
+    fn columns_contain_every_covered_pixel() {
+        let mut seed = 0x2545_f491_4f6c_dd1du64;
+        let mut next = || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            ((seed >> 11) as f64 / (1u64 << 53) as f64) as f32 * 200.0 - 20.0
+        };
+        for _ in 0..300 {
+            let (p1, p2, width) = ([next(), next()], [next(), next()], 1.0 + (next() + 20.0) / 40.0);
+            let Some(line) = LineSetup::new(p1, p2, width, 160) else { continue };
+            for band in (0..160).step_by(16) {
+                let columns = line.columns(band, band + 16);
+                for y in band..band + 16 {
+                    if let Some((a, b)) = line.row_span(y, -100, 300) {
+                        let (c0, c1) = columns.expect("a covered row in a band with no columns");
+                        assert!(c0 <= a && b <= c1, "row {y}: span {a}..{b} outside {c0}..{c1}");
+                    }
+                }
+            }
+        }
     }
 }
