@@ -13,11 +13,14 @@
 //! line stipple cuts lines into dashes, one pixel step along the major axis per pattern
 //! bit; polygon outlines come from Mesa's primitive decomposition, clipper (new vertices
 //! interpolated from the end nearer the plane), culling, polygon offset (per vertex, units
-//! scaled by twice the depth resolution) and edge order. Known deviations, where Mesa
-//! contradicts the GL specification: a strip whose first segment is clipped away entirely
-//! keeps the stipple counter of the previous draw in Mesa (here it restarts), and Mesa
-//! turns a 3-vertex triangle fan into GL_TRIANGLES, changing its provoking vertex under
-//! GL_FIRST_VERTEX_CONVENTION (here it stays the second vertex).
+//! scaled by twice the depth resolution) and edge order; quads keep their last vertex
+//! provoking under either convention, as Mesa's (GL_QUADS_FOLLOW_PROVOKING_VERTEX_CONVENTION
+//! false). Known deviations, where Mesa contradicts the GL specification: a strip whose
+//! first segment is clipped away entirely keeps the stipple counter of the previous draw in
+//! Mesa (here it restarts); Mesa turns a 3-vertex triangle fan into GL_TRIANGLES, changing
+//! its provoking vertex under GL_FIRST_VERTEX_CONVENTION (here it stays the second vertex);
+//! and when front and back faces have different modes, Mesa applies the polygon offset of
+//! the first triangle's mode to the whole draw (here each triangle gets its own mode's).
 use super::Context;
 use crate::api::enums::*;
 use crate::api::types::GLenum;
