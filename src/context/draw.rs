@@ -5,13 +5,33 @@
 //! the context's [`Scene`]. Nothing is rasterized until a flush point
 //! ([`Context::flush_rendering`]): glFlush, glFinish, glReadPixels, clears, glAccum, buffer
 //! queries, MakeCurrent.
+//!
+//! Points, lines and polygons drawn in GL_POINT or GL_LINE mode follow Mesa 22's llvmpipe
+//! exactly (it is what programs are compared against), which pins down details GL leaves
+//! open: they are clipped to the view volume (points by their centre), in llvmpipe's y-down
+//! window space with its rounding (a fused multiply-add where its generated code has one);
+//! line stipple cuts lines into dashes, one pixel step along the major axis per pattern
+//! bit; polygon outlines come from Mesa's primitive decomposition, clipper (new vertices
+//! interpolated from the end nearer the plane), culling, polygon offset (per vertex, units
+//! scaled by twice the depth resolution) and edge order; quads keep their last vertex
+//! provoking under either convention, as Mesa's (GL_QUADS_FOLLOW_PROVOKING_VERTEX_CONVENTION
+//! false). Known deviations, where Mesa contradicts the GL specification: a strip whose
+//! first segment is clipped away entirely keeps the stipple counter of the previous draw in
+//! Mesa (here it restarts); Mesa turns a 3-vertex triangle fan into GL_TRIANGLES, changing
+//! its provoking vertex under GL_FIRST_VERTEX_CONVENTION (here it stays the second vertex);
+//! and when front and back faces have different modes, Mesa applies the polygon offset of
+//! the first triangle's mode to the whole draw (here each triangle gets its own mode's).
 use super::Context;
 use crate::api::enums::*;
 use crate::api::types::GLenum;
+use crate::context::state::{LinePointState, MAX_LINE_WIDTH, MAX_POINT_SIZE};
 use crate::fragment::{DepthTest, FragmentState};
 use crate::framebuffer::Rect;
+use crate::raster::line::{LineJob, LineVertex};
+use crate::raster::point::PointJob;
 use crate::raster::triangle::{TriangleJob, WindowVertex};
 use crate::raster::{DrawState, Primitive as RasterPrimitive, Scene};
+use crate::setup::point::point_rect;
 use crate::setup::triangle::GUARD_BAND;
 use crate::vertex::assembly::{assemble, Primitive, QuadSplit};
 use crate::vertex::clip::{ClipPlanes, ClipVertex};
@@ -23,6 +43,9 @@ use glam::{Mat4, Vec4};
 struct Viewport {
     scale: [f32; 3],
     offset: [f32; 3],
+    /// The y translation of llvmpipe's y-down window space (framebuffer height − offset y),
+    /// where lines and points are set up: `y_down = ndc_y · −scale_y + offset_down`.
+    offset_down: f32,
 }
 
 impl Viewport {
@@ -40,17 +63,58 @@ impl Viewport {
             color: v.color,
         }
     }
+
+    /// Window coordinates of a line or point vertex in llvmpipe's y-down window space.
+    /// Vertices straight from the vertex stage get the multiply-add llvmpipe's generated
+    /// code fuses (`fused`); vertices made by clipping get its C clipper's separate
+    /// multiply and add. Endpoint pixels depend on the last bit of these coordinates.
+    #[inline]
+    fn window_down(&self, v: &ClipVertex, fused: bool) -> LineVertex {
+        let inv_w = 1.0 / v.clip[3];
+        let ndc = [v.clip[0] * inv_w, v.clip[1] * inv_w, v.clip[2] * inv_w];
+        let map = |n: f32, scale: f32, offset: f32| if fused { n.mul_add(scale, offset) } else { n * scale + offset };
+        LineVertex {
+            x: map(ndc[0], self.scale[0], self.offset[0]),
+            y_down: map(ndc[1], -self.scale[1], self.offset_down),
+            z: map(ndc[2], self.scale[2], self.offset[2]),
+            inv_w,
+            color: v.color,
+        }
+    }
+}
+
+/// The line stipple of a draw: GL's repeat factor and pattern, and the running counter
+/// (in pixel steps along the lines' major axes).
+#[derive(Clone, Copy, Debug)]
+struct LineStipple {
+    factor: i32,
+    pattern: u16,
+    counter: i32,
 }
 
 /// Per-draw constants of the geometry stage.
 struct Geometry {
     viewport: Viewport,
     planes: ClipPlanes,
+    /// The view volume without guard band: lines are clipped to it, points outside it
+    /// are discarded.
+    line_planes: ClipPlanes,
     flat: bool,
     cull: Option<GLenum>,
     front_ccw: bool,
     offset: Option<(f32, f32)>,
     depth_bits: u32,
+    /// Framebuffer height (for llvmpipe's y-down window space).
+    height: i32,
+    line_width: f32,
+    point_size: f32,
+    /// glPolygonMode of front and back faces.
+    mode_front: GLenum,
+    mode_back: GLenum,
+    /// The depth offsets of polygons drawn as lines and as points: (factor, units × 2r),
+    /// r the depth buffer's resolution, as Mesa's offset stage applies them.
+    offset_line: Option<(f32, f32)>,
+    offset_point: Option<(f32, f32)>,
 }
 
 impl Context {
@@ -80,18 +144,59 @@ impl Context {
         let state = self.draw_state(&mut scene, width, height, float_color, depth_bits);
         let state_index = scene.add_state(state);
         let clip_vertices = self.transform(vertices, float_color);
-        let geometry = self.geometry(depth_bits);
+        let geometry = self.geometry(depth_bits, height);
         let first_vertex = self.state.lighting.provoking_vertex == GL_FIRST_VERTEX_CONVENTION;
         let mut poly = Vec::new();
         let mut scratch = Vec::new();
-        let outcodes: Vec<u32> = clip_vertices.iter().map(|v| geometry.planes.outcode(v)).collect();
+        let polygons = (GL_TRIANGLES..=GL_POLYGON).contains(&mode);
+        let outlines = polygons && (geometry.mode_front != GL_FILL || geometry.mode_back != GL_FILL);
+        // Filled polygons are clipped to the guard band; points, lines and outlines to the
+        // view volume.
+        let planes = if polygons && !outlines { &geometry.planes } else { &geometry.line_planes };
+        let outcodes: Vec<u32> = clip_vertices.iter().map(|v| planes.outcode(v)).collect();
+        let mut stipple = self.active_line_stipple();
+        if outlines {
+            let mut outline = Outline { scene: &mut scene, state: state_index, g: &geometry, stipple, first_vertex };
+            decompose_outlines(mode, clip_vertices.len() as u32, first_vertex, |t| {
+                let v = t.v.map(|i| &clip_vertices[i as usize]);
+                let codes = t.v.map(|i| outcodes[i as usize]);
+                outline.triangle(v, codes, t, &mut poly, &mut scratch);
+            });
+            self.scene = Some(scene);
+            return;
+        }
         let split = if !first_vertex && mode == GL_QUADS && geometry.leaves_view_volume(&clip_vertices) {
             QuadSplit::SecondDiagonal
         } else {
             QuadSplit::FirstDiagonal
         };
-        assemble(mode, clip_vertices.len() as u32, first_vertex, split, |primitive| {
-            if let Primitive::Triangle { v, provoking, .. } = primitive {
+        assemble(mode, clip_vertices.len() as u32, first_vertex, split, |primitive| match primitive {
+            Primitive::Point(i) => {
+                let i = i as usize;
+                if outcodes[i] == 0 {
+                    emit_point(&mut scene, state_index, &geometry, &clip_vertices[i]);
+                }
+            }
+            Primitive::Line { v: [a, b], provoking } => {
+                if mode == GL_LINES {
+                    // Every independent segment restarts the pattern (GL 2.1 §3.4.2).
+                    if let Some(s) = stipple.as_mut() {
+                        s.counter = 0;
+                    }
+                }
+                let flat_color = geometry.flat.then(|| clip_vertices[provoking as usize].color);
+                let (a, b) = (a as usize, b as usize);
+                emit_clip_line(
+                    &mut scene,
+                    state_index,
+                    &geometry,
+                    [&clip_vertices[a], &clip_vertices[b]],
+                    [outcodes[a], outcodes[b]],
+                    flat_color,
+                    stipple.as_mut(),
+                );
+            }
+            Primitive::Triangle { v, provoking, .. } => {
                 let [a, b, c] = v.map(|i| i as usize);
                 let (oa, ob, oc) = (outcodes[a], outcodes[b], outcodes[c]);
                 if oa & ob & oc != 0 {
@@ -157,7 +262,20 @@ impl Context {
             c => c == GL_TRUE as GLenum,
         };
         let clip = self.clip_rect(Rect::from_xywh(0, 0, width as i32, height as i32));
-        DrawState { fragment: FragmentState { depth, color_masks, clamp_float }, clip }
+        let [vx, vy, vw, vh] = self.state.viewport.rect;
+        let fill_clip = clip.intersect(Rect::from_xywh(vx, vy, vw, vh));
+        let polygon_stipple = self.state.polygon.stipple.then_some(self.state.polygon_stipple);
+        DrawState { fragment: FragmentState { depth, color_masks, clamp_float }, clip, fill_clip, polygon_stipple }
+    }
+
+    /// GL_LINE_STIPPLE's state at the start of a draw, when enabled.
+    fn active_line_stipple(&self) -> Option<LineStipple> {
+        let lp = &self.state.line_point;
+        lp.line_stipple.then_some(LineStipple {
+            factor: lp.line_stipple_factor.clamp(1, 256),
+            pattern: lp.line_stipple_pattern,
+            counter: 0,
+        })
     }
 
     /// Vertices to clip space, with their eye coordinates and clamped colors.
@@ -187,7 +305,7 @@ impl Context {
     }
 
     /// The per-draw geometry constants.
-    fn geometry(&self, depth_bits: u32) -> Geometry {
+    fn geometry(&self, depth_bits: u32, height: usize) -> Geometry {
         let [x, y, w, h] = self.state.viewport.rect;
         let [near, far] = self.state.viewport.depth_range;
         let half = [w as f32 * 0.5, h as f32 * 0.5];
@@ -200,17 +318,40 @@ impl Context {
             .map(|i| transform.clip_plane_equations[i].map(|c| c as f32))
             .collect();
         let polygon = &self.state.polygon;
+        let planes = ClipPlanes {
+            guard_x: guard(centre[0], half[0]),
+            guard_y: guard(centre[1], half[1]),
+            clip_z: !transform.depth_clamp,
+            user,
+        };
+        let lp = &self.state.line_point;
+        // Mesa's offset stage scales units by twice the depth buffer's resolution.
+        let units_scale = if depth_bits > 0 { (2.0 / ((1u64 << depth_bits) - 1) as f64) as f32 } else { 0.0 };
         Geometry {
             viewport: Viewport {
                 scale: [half[0], half[1], ((far - near) * 0.5) as f32],
                 offset: [centre[0], centre[1], ((far + near) * 0.5) as f32],
+                offset_down: height as f32 - centre[1],
             },
-            planes: ClipPlanes {
-                guard_x: guard(centre[0], half[0]),
-                guard_y: guard(centre[1], half[1]),
-                clip_z: !transform.depth_clamp,
-                user,
+            line_planes: ClipPlanes { guard_x: 1.0, guard_y: 1.0, ..planes.clone() },
+            planes,
+            height: height as i32,
+            line_width: lp.line_width.min(MAX_LINE_WIDTH),
+            point_size: point_size(lp),
+            // A culled face's mode does not matter; Mesa gives it the other face's, which
+            // decides whether quads are split as filled quads or as outlines.
+            mode_front: if polygon.cull_face && polygon.cull_face_mode == GL_FRONT {
+                polygon.mode_back
+            } else {
+                polygon.mode_front
             },
+            mode_back: if polygon.cull_face && polygon.cull_face_mode == GL_BACK {
+                polygon.mode_front
+            } else {
+                polygon.mode_back
+            },
+            offset_line: polygon.offset_line.then_some((polygon.offset_factor, polygon.offset_units * units_scale)),
+            offset_point: polygon.offset_point.then_some((polygon.offset_factor, polygon.offset_units * units_scale)),
             flat: self.state.lighting.shade_model == GL_FLAT,
             cull: polygon.cull_face.then_some(polygon.cull_face_mode),
             front_ccw: polygon.front_face == GL_CCW,
@@ -224,9 +365,288 @@ impl Geometry {
     /// Whether any vertex lies outside the view volume (not only the guard band) or an
     /// enabled user clip plane: where Mesa's draw module takes its pipeline path.
     fn leaves_view_volume(&self, vertices: &[ClipVertex]) -> bool {
-        let view = ClipPlanes { guard_x: 1.0, guard_y: 1.0, clip_z: true, user: self.planes.user.clone() };
-        vertices.iter().any(|v| view.outcode(v) != 0)
+        vertices.iter().any(|v| self.line_planes.outcode(v) != 0)
     }
+}
+
+/// The size points are drawn with: glPointSize clamped to GL_POINT_SIZE_MIN/MAX (the
+/// minimum winning when they cross, as in Mesa) and to the implementation's range.
+/// Distance attenuation (GL_POINT_DISTANCE_ATTENUATION) is not applied yet.
+fn point_size(lp: &LinePointState) -> f32 {
+    let size = lp.point_size;
+    let size = if size < lp.point_size_min {
+        lp.point_size_min
+    } else if size > lp.point_size_max {
+        lp.point_size_max
+    } else {
+        size
+    };
+    size.min(MAX_POINT_SIZE)
+}
+
+/// A triangle of a polygon drawn in GL_POINT or GL_LINE mode: its vertices, which of its
+/// edges v0→v1, v1→v2, v2→v0 are edges of the polygon, and whether it is the polygon's
+/// first (the line stipple restarts there).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+struct OutlineTriangle {
+    v: [u32; 3],
+    edges: [bool; 3],
+    first: bool,
+}
+
+/// Decomposes the polygons of `mode` into triangles for the point and line polygon modes,
+/// in Mesa 22's order: the vertex order, the order of the outline's edges and where the
+/// stipple restarts all follow its primitive decomposition (the provoking vertex stays
+/// last, or first under GL_FIRST_VERTEX_CONVENTION; quads split along the diagonal that
+/// keeps it a corner of both triangles).
+fn decompose_outlines(mode: GLenum, count: u32, first_vertex: bool, mut emit: impl FnMut(OutlineTriangle)) {
+    let tri = |v: [u32; 3], edges: [bool; 3], first: bool| OutlineTriangle { v, edges, first };
+    const ALL: [bool; 3] = [true; 3];
+    match mode {
+        GL_TRIANGLES => (0..count / 3).for_each(|i| emit(tri([3 * i, 3 * i + 1, 3 * i + 2], ALL, true))),
+        GL_TRIANGLE_STRIP => {
+            for i in 0..count.saturating_sub(2) {
+                let v = match (i % 2 == 1, first_vertex) {
+                    (false, _) => [i, i + 1, i + 2],
+                    (true, false) => [i + 1, i, i + 2],
+                    (true, true) => [i, i + 2, i + 1],
+                };
+                emit(tri(v, ALL, true));
+            }
+        }
+        GL_TRIANGLE_FAN => {
+            for i in 1..count.saturating_sub(1) {
+                emit(tri(if first_vertex { [i, i + 1, 0] } else { [0, i, i + 1] }, ALL, true));
+            }
+        }
+        GL_QUADS => {
+            for q in 0..count / 4 {
+                let [a, b, c, d] = [0, 1, 2, 3].map(|k| 4 * q + k);
+                if first_vertex {
+                    // Quads keep their last vertex provoking under either convention.
+                    emit(tri([d, a, b], [true, true, false], true));
+                    emit(tri([d, b, c], [false, true, true], false));
+                } else {
+                    emit(tri([a, b, d], [true, false, true], true));
+                    emit(tri([b, c, d], [true, true, false], false));
+                }
+            }
+        }
+        GL_QUAD_STRIP => {
+            for q in 0..count.saturating_sub(2) / 2 {
+                // Quad q is a, b, d, c in polygon order.
+                let [a, b, c, d] = [0, 1, 2, 3].map(|k| 2 * q + k);
+                if first_vertex {
+                    emit(tri([d, c, a], [true, true, false], true));
+                    emit(tri([d, a, b], [false, true, true], false));
+                } else {
+                    emit(tri([c, a, d], [true, false, true], true));
+                    emit(tri([a, b, d], [true, true, false], false));
+                }
+            }
+        }
+        GL_POLYGON if count >= 3 => {
+            for i in 0..count - 2 {
+                let last = i + 3 == count;
+                if first_vertex {
+                    emit(tri([0, i + 1, i + 2], [i == 0, true, last], i == 0));
+                } else {
+                    emit(tri([i + 1, i + 2, 0], [true, last, i == 0], i == 0));
+                }
+            }
+        }
+        _ => {}
+    }
+}
+
+/// The point and line polygon modes: triangles of polygons are clipped to the view volume
+/// (edges made by clipping are not polygon edges), culled, offset, and then drawn in their
+/// face's mode as their polygon edges or vertices, following Mesa 22's pipeline (clip,
+/// cull, offset, flat shading, unfilled, stipple).
+struct Outline<'a> {
+    scene: &'a mut Scene,
+    state: u32,
+    g: &'a Geometry,
+    stipple: Option<LineStipple>,
+    first_vertex: bool,
+}
+
+impl Outline<'_> {
+    /// One triangle of the decomposition, `codes` its vertices' outcodes.
+    fn triangle(
+        &mut self,
+        v: [&ClipVertex; 3],
+        codes: [u32; 3],
+        t: OutlineTriangle,
+        poly: &mut Vec<ClipVertex>,
+        scratch: &mut Vec<ClipVertex>,
+    ) {
+        if codes[0] & codes[1] & codes[2] != 0 {
+            return;
+        }
+        // An edge is drawn when the decomposition and the edge flag of its first vertex say so.
+        let edges = std::array::from_fn(|i| t.edges[i] && v[i].edge_flag);
+        let flat = self.g.flat.then(|| v[if self.first_vertex { 0 } else { 2 }].color);
+        let corner = |c: &ClipVertex, fused: bool| (self.g.viewport.window_down(c, fused), self.g.viewport.window(c));
+        if codes[0] | codes[1] | codes[2] == 0 {
+            let w = v.map(|c| corner(c, true));
+            self.draw(w, edges, t.first, flat);
+            return;
+        }
+        poly.clear();
+        poly.extend((0..3).map(|i| ClipVertex { edge_flag: edges[i], ..*v[i] }));
+        if !clip_outline(&self.g.line_planes, poly, scratch, codes[0] | codes[1] | codes[2]) {
+            return;
+        }
+        let n = poly.len();
+        if n < 3 {
+            return;
+        }
+        // Vertices made by clipping get Mesa's C clipper's window mapping.
+        let w: Vec<_> = poly.iter().map(|c| corner(c, v.iter().any(|o| o.clip == c.clip))).collect();
+        let flags: Vec<bool> = poly.iter().map(|c| c.edge_flag).collect();
+        // Mesa re-emits a clipped polygon as a fan around its first vertex, keeping the
+        // provoking vertex first or last.
+        for i in 2..n {
+            let start = i == 2 && flags[0];
+            let middle = flags[i - 1];
+            let end = i == n - 1 && flags[i];
+            if self.first_vertex {
+                self.draw([w[0], w[i - 1], w[i]], [start, middle, end], i == 2, flat);
+            } else {
+                self.draw([w[i - 1], w[i], w[0]], [middle, end, start], i == 2, flat);
+            }
+        }
+    }
+
+    /// Culls, offsets and draws one (clipped) triangle in its face's mode; `w` holds each
+    /// corner in y-down and in GL window coordinates.
+    fn draw(&mut self, w: [(LineVertex, WindowVertex); 3], edges: [bool; 3], first: bool, flat: Option<[f32; 4]>) {
+        let g = self.g;
+        let mut l = w.map(|c| c.0);
+        let (ex, ey, ez) = (l[0].x - l[2].x, l[0].y_down - l[2].y_down, l[0].z - l[2].z);
+        let (fx, fy, fz) = (l[1].x - l[2].x, l[1].y_down - l[2].y_down, l[1].z - l[2].z);
+        let det = ex * fy - ey * fx;
+        if det == 0.0 || !det.is_finite() {
+            return;
+        }
+        // y-down flips the orientation: counter-clockwise in GL has det < 0 here.
+        let front = (det < 0.0) == g.front_ccw;
+        match g.cull {
+            Some(GL_FRONT_AND_BACK) => return,
+            Some(GL_FRONT) if front => return,
+            Some(GL_BACK) if !front => return,
+            _ => {}
+        }
+        let mode = if front { g.mode_front } else { g.mode_back };
+        let offset = match mode {
+            GL_LINE => g.offset_line,
+            GL_POINT => g.offset_point,
+            _ => {
+                if let Some(s) = self.stipple.as_mut() {
+                    s.counter = 0;
+                }
+                emit_triangle(self.scene, self.state, g, w.map(|c| c.1), flat);
+                return;
+            }
+        };
+        if let Some((factor, units)) = offset {
+            // Mesa's offset stage: the larger depth slope of the triangle, applied per vertex.
+            let inv_det = 1.0 / det;
+            let dzdx = ((ey * fz - ez * fy) * inv_det).abs();
+            let dzdy = ((ez * fx - ex * fz) * inv_det).abs();
+            let z_offset = units + dzdx.max(dzdy) * factor;
+            for c in &mut l {
+                c.z = (c.z + z_offset).clamp(0.0, 1.0);
+            }
+        }
+        if let Some(color) = flat {
+            for c in &mut l {
+                c.color = color;
+            }
+        }
+        if mode == GL_LINE {
+            if first {
+                if let Some(s) = self.stipple.as_mut() {
+                    s.counter = 0;
+                }
+            }
+            // Mesa draws the edge into v0 first: v2→v0, v0→v1, v1→v2.
+            for k in [2, 0, 1] {
+                if edges[k] {
+                    emit_window_line(self.scene, self.state, g, l[k], l[(k + 1) % 3], flat, self.stipple.as_mut());
+                }
+            }
+        } else {
+            for k in 0..3 {
+                if edges[k] {
+                    if let Some(s) = self.stipple.as_mut() {
+                        s.counter = 0;
+                    }
+                    emit_window_point(self.scene, self.state, g, &l[k]);
+                }
+            }
+        }
+    }
+}
+
+/// Clips the polygon `poly` (each vertex's `edge_flag` telling whether the edge it starts
+/// is drawn) against the planes in `mask` as Mesa's clipper does for polygons it draws as
+/// outlines: plane by plane, each new vertex interpolated from the end of the cut edge
+/// nearer to the plane, edges along a view-volume plane not drawn. `false` when a
+/// distance is NaN (the polygon is dropped).
+fn clip_outline(planes: &ClipPlanes, poly: &mut Vec<ClipVertex>, scratch: &mut Vec<ClipVertex>, mask: u32) -> bool {
+    let user_planes = planes.count() - planes.user.len();
+    for plane in 0..planes.count() {
+        if mask & (1 << plane) == 0 || poly.len() < 3 {
+            continue;
+        }
+        scratch.clear();
+        let n = poly.len();
+        let mut prev = poly[0];
+        let mut d_prev = planes.distance(plane, &prev);
+        for i in 1..=n {
+            let cur = poly[i % n];
+            let d = planes.distance(plane, &cur);
+            if d.is_nan() || d_prev.is_nan() {
+                return false;
+            }
+            if d_prev >= 0.0 {
+                scratch.push(prev);
+            }
+            if (d_prev >= 0.0) == (d < 0.0) {
+                // Interpolate from the end nearer to the plane (the inside one on a tie),
+                // so that both directions of an edge give the same vertex.
+                let denom = d - d_prev;
+                let (from, to, t) = if d < 0.0 {
+                    if -d < d_prev {
+                        (&cur, &prev, d / denom)
+                    } else {
+                        (&prev, &cur, -d_prev / denom)
+                    }
+                } else if -d_prev < d {
+                    (&prev, &cur, -d_prev / denom)
+                } else {
+                    (&cur, &prev, d / denom)
+                };
+                let mix = |p: [f32; 4], q: [f32; 4]| std::array::from_fn(|k| p[k] + t * (q[k] - p[k]));
+                // Leaving the volume: the new edge runs along the plane, drawn only for user
+                // clip planes (as NVIDIA does, which Mesa copies). Coming back: the new
+                // vertex starts the rest of the cut edge.
+                let edge_flag = if d < 0.0 { plane >= user_planes } else { prev.edge_flag };
+                scratch.push(ClipVertex {
+                    clip: mix(from.clip, to.clip),
+                    color: mix(from.color, to.color),
+                    edge_flag,
+                    ..cur
+                });
+            }
+            prev = cur;
+            d_prev = d;
+        }
+        std::mem::swap(poly, scratch);
+    }
+    true
 }
 
 /// Culls, offsets, sets up and bins one window-space triangle.
@@ -247,6 +667,155 @@ fn emit_triangle(scene: &mut Scene, state: u32, g: &Geometry, w: [WindowVertex; 
         let bounds = job.bounds();
         scene.add(state, bounds, RasterPrimitive::Triangle(job));
     }
+}
+
+/// Clips a line to the view volume the way Mesa's clipper does (both ends moved from the
+/// original endpoints, by the largest cut of any plane), maps it to window space and emits
+/// it. `outcodes` are against `g.line_planes`.
+fn emit_clip_line(
+    scene: &mut Scene,
+    state: u32,
+    g: &Geometry,
+    ends: [&ClipVertex; 2],
+    outcodes: [u32; 2],
+    flat: Option<[f32; 4]>,
+    stipple: Option<&mut LineStipple>,
+) {
+    let [a, b] = ends;
+    if outcodes[0] & outcodes[1] != 0 {
+        return;
+    }
+    let (wa, wb) = if outcodes[0] | outcodes[1] == 0 {
+        (g.viewport.window_down(a, true), g.viewport.window_down(b, true))
+    } else {
+        let planes = &g.line_planes;
+        let (mut t0, mut t1) = (0.0f32, 0.0f32);
+        let mut mask = outcodes[0] | outcodes[1];
+        while mask != 0 {
+            let plane = mask.trailing_zeros() as usize;
+            mask &= mask - 1;
+            let (da, db) = (planes.distance(plane, a), planes.distance(plane, b));
+            if !da.is_finite() || !db.is_finite() {
+                return;
+            }
+            if db < 0.0 {
+                t1 = t1.max(db / (db - da));
+            }
+            if da < 0.0 {
+                t0 = t0.max(da / (da - db));
+            }
+            if t0 + t1 >= 1.0 {
+                return;
+            }
+        }
+        let wa = if outcodes[0] != 0 {
+            g.viewport.window_down(&lerp_clip(a, b, t0), false)
+        } else {
+            g.viewport.window_down(a, true)
+        };
+        let wb = if outcodes[1] != 0 {
+            g.viewport.window_down(&lerp_clip(b, a, t1), false)
+        } else {
+            g.viewport.window_down(b, true)
+        };
+        (wa, wb)
+    };
+    emit_window_line(scene, state, g, wa, wb, flat, stipple);
+}
+
+/// `from + t · (to − from)` for the clip position and color of a clipped line end.
+fn lerp_clip(from: &ClipVertex, to: &ClipVertex, t: f32) -> ClipVertex {
+    let mix = |a: [f32; 4], b: [f32; 4]| std::array::from_fn(|i| a[i] + t * (b[i] - a[i]));
+    ClipVertex { clip: mix(from.clip, to.clip), color: mix(from.color, to.color), ..*from }
+}
+
+/// Emits a window-space line, cut into its stippled dashes when stippled.
+fn emit_window_line(
+    scene: &mut Scene,
+    state: u32,
+    g: &Geometry,
+    a: LineVertex,
+    b: LineVertex,
+    flat: Option<[f32; 4]>,
+    stipple: Option<&mut LineStipple>,
+) {
+    let Some(stipple) = stipple else {
+        emit_line_job(scene, state, g, &a, &b, flat);
+        return;
+    };
+    // llvmpipe's stipple: the line is cut into dashes, one pixel step along the major axis
+    // per stipple bit, each dash drawn as a line of its own.
+    let length = (a.x - b.x).abs().max((a.y_down - b.y_down).abs());
+    let steps = if length.is_finite() { length.ceil() as i32 } else { 0 };
+    let base = stipple.counter;
+    let bit = |i: i32| stipple.pattern >> (((base + i) / stipple.factor) & 15) & 1 != 0;
+    let mut dash_start = None;
+    for i in 0..steps {
+        match (dash_start, bit(i)) {
+            (None, true) => dash_start = Some(i),
+            (Some(start), false) => {
+                emit_dash(scene, state, g, &a, &b, start as f32 / length, i as f32 / length, flat);
+                dash_start = None;
+            }
+            _ => {}
+        }
+    }
+    if let Some(start) = dash_start {
+        if (start as f32) < length {
+            emit_dash(scene, state, g, &a, &b, start as f32 / length, 1.0, flat);
+        }
+    }
+    // The counter advances by whole steps: a strip's next segment continues where this
+    // one's last (partial) step ended, as in Mesa 22.
+    stipple.counter = stipple.counter.wrapping_add(steps);
+}
+
+/// Emits the part of `a`–`b` between parameters `t0` and `t1`, every attribute
+/// interpolated linearly in window space as llvmpipe's stipple stage does.
+#[allow(clippy::too_many_arguments)]
+fn emit_dash(
+    scene: &mut Scene,
+    state: u32,
+    g: &Geometry,
+    a: &LineVertex,
+    b: &LineVertex,
+    t0: f32,
+    t1: f32,
+    flat: Option<[f32; 4]>,
+) {
+    let at = |t: f32| {
+        let mix = |p: f32, q: f32| p + t * (q - p);
+        LineVertex {
+            x: mix(a.x, b.x),
+            y_down: mix(a.y_down, b.y_down),
+            z: mix(a.z, b.z),
+            inv_w: mix(a.inv_w, b.inv_w),
+            color: std::array::from_fn(|i| mix(a.color[i], b.color[i])),
+        }
+    };
+    let start = if t0 > 0.0 { at(t0) } else { *a };
+    let end = if t1 < 1.0 { at(t1) } else { *b };
+    emit_line_job(scene, state, g, &start, &end, flat);
+}
+
+fn emit_line_job(scene: &mut Scene, state: u32, g: &Geometry, a: &LineVertex, b: &LineVertex, flat: Option<[f32; 4]>) {
+    if let Some(job) = LineJob::new(a, b, g.line_width, g.height, flat) {
+        let (bounds, setup) = (job.bounds(), job.setup().clone());
+        scene.add_narrow(state, bounds, RasterPrimitive::Line(job), |y0, y1| setup.columns(y0, y1));
+    }
+}
+
+/// Emits a point whose vertex is inside the view volume.
+fn emit_point(scene: &mut Scene, state: u32, g: &Geometry, v: &ClipVertex) {
+    let w = g.viewport.window_down(v, true);
+    emit_window_point(scene, state, g, &w);
+}
+
+fn emit_window_point(scene: &mut Scene, state: u32, g: &Geometry, w: &LineVertex) {
+    let rect = point_rect(w.x, w.y_down, g.point_size, g.height);
+    // llvmpipe interpolates point colors perspective-correctly too: (c/w)·w.
+    let color = if w.inv_w == 1.0 { w.color } else { w.color.map(|c| c * w.inv_w * (1.0 / w.inv_w)) };
+    scene.add(state, rect, RasterPrimitive::Point(PointJob { rect, z: w.z, color }));
 }
 
 /// glPolygonOffset's depth offset for a triangle: factor × max depth slope + units × r,
@@ -403,5 +972,525 @@ mod tests {
         for threads in [2, 4, 7] {
             assert!(one == render(threads), "{threads} threads differ");
         }
+    }
+
+    /// Horizontal, vertical, diagonal, shallow and steep lines; pixel-centre, integer and
+    /// fractional endpoints; both directions of one steep segment (its centre tie goes
+    /// differently each way).
+    #[test]
+    fn width_1_lines_follow_the_diamond_exit_rule_as_llvmpipe() {
+        let script = "
+            size 16 16; color 1 1 1 1; clear 0 0 0 0; begin lines; v 1.5 1.5; v 6.5 1.5; v 6.5 3.5
+            v 1.5 3.5; v 8 1; v 14 1; v 1.5 5.5; v 1.5 10.5; v 3.5 10.5; v 3.5 5.5; end; lit axis_aligned
+            clear 0 0 0 0; begin lines; v 1.5 1.5; v 6.5 6.5; v 12.5 1.5; v 7.5 6.5; v 1.25 8.75
+            v 14.75 11.25; v 14.75 13.25; v 1.25 15.75; end; lit diagonal_and_shallow; clear 0 0 0 0
+            begin lines; v 2.2 0.7; v 4.9 14.3; v 13.8 14.6; v 10.1 1.2; v 7.5 2.5; v 8.5 4.5; end
+            lit steep_fractional; clear 0 0 0 0; begin lines; v 10.5 2.5; v 9.5 12.5; v 9.5 12.5; v 10.5 2.5
+            end; lit both_directions_of_a_tie";
+        let mesa = concat!(
+            "axis_aligned: 8,0 9,0 10,0 11,0 12,0 13,0 1,1 2,1 3,1 4,1 5,1 2,3 3,3 4,3 5,3 6,3 1,5 \
+             1,6 3,6 1,7 3,7 1,8 3,8 1,9 3,9 3,10\n",
+            "diagonal_and_shallow: 1,1 12,1 2,2 11,2 3,3 10,3 4,4 9,4 5,5 8,5 1,8 2,8 3,9 4,9 5,9 6,9 \
+             7,9 8,10 9,10 10,10 11,10 12,10 13,11 14,11 11,13 12,13 13,13 14,13 5,14 6,14 7,14 8,14 \
+             9,14 10,14 1,15 2,15 3,15 4,15\n",
+            "steep_fractional: 2,1 10,1 2,2 7,2 10,2 2,3 7,3 10,3 2,4 11,4 3,5 11,5 3,6 11,6 3,7 11,7 \
+             3,8 12,8 3,9 12,9 4,10 12,10 4,11 12,11 4,12 13,12 4,13 13,13 13,14\n",
+            "both_directions_of_a_tie: 10,2 10,3 10,4 10,5 10,6 9,7 10,7 9,8 9,9 9,10 9,11 9,12\n",
+        );
+        assert_eq!(replay(script), mesa);
+    }
+
+    /// Each segment draws its start pixel and not its end pixel.
+    #[test]
+    fn strips_and_loops_draw_shared_vertices_once() {
+        let script = "
+            size 16 16; color 1 1 1 1; clear 0 0 0 0; begin line_strip; v 1.5 1.5; v 8.5 1.5; v 8.5 8.5
+            v 1.7 14.2; end; lit strip; clear 0 0 0 0; begin line_loop; v 2.5 2.5; v 12.5 3.5; v 7.5 12.5
+            end; lit loop";
+        let mesa = concat!(
+            "strip: 1,1 2,1 3,1 4,1 5,1 6,1 7,1 8,1 8,2 8,3 8,4 8,5 8,6 8,7 8,8 7,9 6,10 4,11 5,11 \
+             3,12 2,13\n",
+            "loop: 2,2 3,2 4,2 5,2 6,2 7,2 2,3 8,3 9,3 10,3 11,3 12,3 3,4 11,4 3,5 11,5 4,6 10,6 4,7 \
+             10,7 5,8 9,8 5,9 9,9 6,10 8,10 6,11 8,11 7,12\n",
+        );
+        assert_eq!(replay(script), mesa);
+    }
+
+    /// x-major lines get round(width) rows per column, y-major lines round(width) columns per
+    /// row; 2.5 rounds up.
+    #[test]
+    fn wide_lines_are_widened_across_their_minor_axis() {
+        let script = "
+            size 16 16; color 1 1 1 1; clear 0 0 0 0; linewidth 2; begin lines; v 1.5 2.5; v 12.5 4.5
+            v 13.5 6.5; v 11.5 14.5; end; lit width2; clear 0 0 0 0; linewidth 2.5; begin lines; v 1.25 3.3
+            v 14.75 8.6; end; lit width2_5_is_3; clear 0 0 0 0; linewidth 4; begin lines; v 7.4 1.2
+            v 8.6 13.9; end; lit width4_ymajor";
+        let mesa = concat!(
+            "width2: 1,2 2,2 3,2 4,2 5,2 6,2 1,3 2,3 3,3 4,3 5,3 6,3 7,3 8,3 9,3 10,3 11,3 7,4 8,4 \
+             9,4 10,4 11,4 12,6 13,6 12,7 13,7 12,8 13,8 12,9 13,9 11,10 12,10 11,11 12,11 11,12 \
+             12,12 11,13 12,13\n",
+            "width2_5_is_3: 1,2 2,2 1,3 2,3 3,3 4,3 5,3 1,4 2,4 3,4 4,4 5,4 6,4 7,4 3,5 4,5 5,5 6,5 \
+             7,5 8,5 9,5 10,5 6,6 7,6 8,6 9,6 10,6 11,6 12,6 8,7 9,7 10,7 11,7 12,7 13,7 11,8 12,8 \
+             13,8 13,9\n",
+            "width4_ymajor: 5,1 6,1 7,1 8,1 6,2 7,2 8,2 9,2 6,3 7,3 8,3 9,3 6,4 7,4 8,4 9,4 6,5 7,5 \
+             8,5 9,5 6,6 7,6 8,6 9,6 6,7 7,7 8,7 9,7 6,8 7,8 8,8 9,8 6,9 7,9 8,9 9,9 6,10 7,10 8,10 \
+             9,10 6,11 7,11 8,11 9,11 6,12 7,12 8,12 9,12 7,13 8,13 9,13 10,13\n",
+        );
+        assert_eq!(replay(script), mesa);
+    }
+
+    /// GL_LINES restarts the pattern for every segment; strips and loops continue it, by whole
+    /// pixel steps per segment (Mesa 22); the factor repeats each bit.
+    #[test]
+    fn line_stipple_restarts_per_segment_of_gl_lines_only() {
+        let script = "
+            size 24 8; color 1 1 1 1; enable line_stipple; stipple 1 0f0f; clear 0 0 0 0; begin lines
+            v 0.5 1.5; v 10.5 1.5; v 0.5 3.5; v 20.5 3.5; end; lit lines_restart; clear 0 0 0 0
+            begin line_strip; v 0.5 1.5; v 6.25 1.5; v 20.5 1.5; end; lit strip_continues_by_whole_steps
+            clear 0 0 0 0; stipple 3 00ff; begin line_loop; v 1.5 1.5; v 20.5 1.5; v 20.5 6.5; v 1.5 6.5
+            end; lit loop_factor3";
+        let mesa = concat!(
+            "lines_restart: 0,1 1,1 2,1 3,1 8,1 9,1 0,3 1,3 2,3 3,3 8,3 9,3 10,3 11,3 16,3 17,3 18,3 \
+             19,3\n",
+            "strip_continues_by_whole_steps: 0,1 1,1 2,1 3,1 8,1 9,1 10,1 11,1 16,1 17,1 18,1 19,1\n",
+            "loop_factor3: 1,1 2,1 3,1 4,1 5,1 6,1 7,1 8,1 9,1 10,1 11,1 12,1 13,1 14,1 15,1 16,1 \
+             17,1 18,1 19,1 20,1 20,2 20,3 20,4 20,5\n",
+        );
+        assert_eq!(replay(script), mesa);
+    }
+
+    /// Odd sizes centre on the pixel containing the point, even sizes on the nearest corner;
+    /// sizes round at halves down and clamp to GL_POINT_SIZE_MIN/MAX; a point whose centre is
+    /// outside the view volume is discarded, a wide one inside it draws past the viewport.
+    #[test]
+    fn points_cover_squares_of_their_rounded_size() {
+        let script = "
+            size 24 24; color 1 1 1 1; clear 0 0 0 0; pointsize 1; begin points; v 2.5 2.5; v 4.0 2.0
+            v 6.99 2.01; end; pointsize 2; begin points; v 2.5 6.5; v 6.2 6.7; end; pointsize 3
+            begin points; v 12.5 6.5; v 17.0 6.0; end; pointsize 2.5; begin points; v 4.5 12.5; end
+            pointsize 1.5; begin points; v 10.5 12.5; end; lit sizes; clear 0 0 0 0; pointsize 10
+            pointminmax 2 4; begin points; v 5.5 5.5; end; pointsize 1; begin points; v 15.5 15.5; end
+            pointminmax 0 255; lit clamped_to_min_max; clear 0 0 0 0; viewport 4 4 16 16
+            ortho 0 16 0 16 -1 1; pointsize 5; begin points; v 0.5 0.5; v -0.5 8.5; v 15.9 15.9; end
+            lit centre_in_view_decides";
+        let mesa = concat!(
+            "sizes: 2,2 4,2 6,2 11,5 12,5 13,5 16,5 17,5 18,5 2,6 3,6 5,6 6,6 11,6 12,6 13,6 16,6 \
+             17,6 18,6 2,7 3,7 5,7 6,7 11,7 12,7 13,7 16,7 17,7 18,7 4,12 5,12 10,12 4,13 5,13\n",
+            "clamped_to_min_max: 4,4 5,4 6,4 7,4 4,5 5,5 6,5 7,5 4,6 5,6 6,6 7,6 4,7 5,7 6,7 7,7 \
+             15,15 16,15 15,16 16,16\n",
+            "centre_in_view_decides: 2,2 3,2 4,2 5,2 6,2 2,3 3,3 4,3 5,3 6,3 2,4 3,4 4,4 5,4 6,4 2,5 \
+             3,5 4,5 5,5 6,5 2,6 3,6 4,6 5,6 6,6 17,17 18,17 19,17 20,17 21,17 17,18 18,18 19,18 \
+             20,18 21,18 17,19 18,19 19,19 20,19 21,19 17,20 18,20 19,20 20,20 21,20 17,21 18,21 \
+             19,21 20,21 21,21\n",
+        );
+        assert_eq!(replay(script), mesa);
+    }
+
+    /// Smooth color and window z along a line; flat color from the last or the first vertex.
+    #[test]
+    fn lines_interpolate_color_and_depth_and_flat_shade_from_the_provoking_vertex() {
+        let script = "
+            size 16 8; enable depth_test; clear 0 0 0 0; begin lines; color 1 0 0 1; v 1.5 1.5 -0.5
+            color 0 0 1 1; v 14.5 5.5 0.5; end; dump smooth; depth smooth_z; shade flat; clear 0 0 0 0
+            begin line_strip; color 1 0 0 1; v 1.5 1.5; color 0 1 0 1; v 8.5 1.5; color 0 0 1 1; v 8.5 6.5
+            end; dump flat_last; provoking first; clear 0 0 0 0; begin line_strip; color 1 0 0 1; v 1.5 1.5
+            color 0 1 0 1; v 8.5 1.5; color 0 0 1 1; v 8.5 6.5; end; dump flat_first";
+        let mesa = concat!(
+            "smooth: 1,1=ff0000ff 2,1=eb0014ff 3,2=d80027ff 4,2=c4003bff 5,2=b1004eff 6,3=9d0062ff \
+             7,3=890076ff 8,3=760089ff 9,3=62009dff 10,4=4e00b1ff 11,4=3b00c4ff 12,4=2700d8ff \
+             13,5=1400ebff\n",
+            "smooth_z: 1,1=bfffff 2,1=b62762 3,2=ac4ec4 4,2=a27627 5,2=989d89 6,3=8ec4eb 7,3=84ec4e \
+             8,3=7b13b0 9,3=713b13 10,4=676276 11,4=5d89d8 12,4=53b13a 13,5=49d89c\n",
+            "flat_last: 1,1=00ff00ff 2,1=00ff00ff 3,1=00ff00ff 4,1=00ff00ff 5,1=00ff00ff 6,1=00ff00ff \
+             7,1=00ff00ff 8,1=0000ffff 8,2=0000ffff 8,3=0000ffff 8,4=0000ffff 8,5=0000ffff\n",
+            "flat_first: 1,1=ff0000ff 2,1=ff0000ff 3,1=ff0000ff 4,1=ff0000ff 5,1=ff0000ff \
+             6,1=ff0000ff 7,1=ff0000ff 8,1=00ff00ff 8,2=00ff00ff 8,3=00ff00ff 8,4=00ff00ff \
+             8,5=00ff00ff\n",
+        );
+        assert_eq!(replay(script), mesa);
+    }
+
+    /// Only boundary edges (no quad diagonal, glEdgeFlag honoured), per-face modes and culling,
+    /// and clipped polygons: edges made by clipping are not drawn, vertices made by it are.
+    #[test]
+    fn polygon_modes_draw_polygon_edges_and_vertices() {
+        let script = "
+            size 16 16; color 1 1 1 1; polymode front_and_back line; clear 0 0 0 0; begin quads; v 2.5 2.5
+            v 12.5 2.5; v 12.5 12.5; v 2.5 12.5; end; lit quad_outline_no_diagonal; clear 0 0 0 0
+            begin polygon; v 2.3 1.7; edge 0; v 13.2 3.1; edge 1; v 11.6 13.4; v 3.1 10.2; end
+            lit polygon_edge_flag; polymode front point; polymode back line; clear 0 0 0 0; begin triangles
+            v 2.5 2.5; v 7.5 2.5; v 2.5 7.5; v 9.5 9.5; v 9.5 14.5; v 14.5 9.5; end
+            lit front_points_back_lines; enable cull_face; cullface front; clear 0 0 0 0; begin triangles
+            v 2.5 2.5; v 7.5 2.5; v 2.5 7.5; v 9.5 9.5; v 9.5 14.5; v 14.5 9.5; end; lit front_culled
+            disable cull_face; polymode front_and_back line; clear 0 0 0 0; begin triangles; v -6.5 4.5
+            v 12.5 6.5; v 4.5 14.5; end; lit clip_edges_not_drawn; polymode front_and_back point
+            clear 0 0 0 0; begin triangles; v -6.5 4.5; v 12.5 6.5; v 4.5 14.5; end
+            lit clip_vertices_are_points";
+        let mesa = concat!(
+            "quad_outline_no_diagonal: 2,2 3,2 4,2 5,2 6,2 7,2 8,2 9,2 10,2 11,2 12,2 2,3 12,3 2,4 \
+             12,4 2,5 12,5 2,6 12,6 2,7 12,7 2,8 12,8 2,9 12,9 2,10 12,10 2,11 12,11 2,12 3,12 4,12 \
+             5,12 6,12 7,12 8,12 9,12 10,12 11,12 12,12\n",
+            "polygon_edge_flag: 2,1 3,1 4,1 2,2 5,2 6,2 7,2 8,2 9,2 10,2 11,2 2,3 12,3 2,4 2,5 2,6 \
+             2,7 2,8 3,9 3,10 4,10 5,11 6,11 7,11 8,12 9,12 10,12 11,13\n",
+            "front_points_back_lines: 2,2 7,2 2,7 9,9 10,9 11,9 12,9 13,9 14,9 9,10 13,10 9,11 12,11 \
+             9,12 11,12 9,13 10,13 9,14\n",
+            "front_culled: 9,9 10,9 11,9 12,9 13,9 14,9 9,10 13,10 9,11 12,11 9,12 11,12 9,13 10,13 \
+             9,14\n",
+            "clip_edges_not_drawn: 0,5 1,5 2,5 3,5 4,5 5,5 6,5 7,5 8,6 9,6 10,6 11,6 12,6 11,7 10,8 \
+             9,9 0,10 8,10 1,11 7,11 2,12 6,12 3,13 5,13 4,14\n",
+            "clip_vertices_are_points: 0,5 12,6 4,14\n",
+        );
+        assert_eq!(replay(script), mesa);
+    }
+
+    /// GL_POLYGON_OFFSET_LINE with factor 1 and units 2, against no offset.
+    #[test]
+    fn polygon_offset_line_moves_outline_depth() {
+        let script = "
+            size 16 16; color 1 1 1 1; enable depth_test; depthfunc always; polymode front_and_back line
+            enable offset_line; offset 1 2; clear 0 0 0 0; begin triangles; v 2.5 2.5 0.2; v 13.5 3.5 -0.3
+            v 6.5 13.5 0.4; end; depth offset_line; disable offset_line; clear 0 0 0 0; begin triangles
+            v 2.5 2.5 0.2; v 13.5 3.5 -0.3; v 6.5 13.5 0.4; end; depth no_offset";
+        let mesa = concat!(
+            "offset_line: 2,2=6ca2ce 3,2=727442 4,2=7845b6 5,2=7e172a 6,2=83e89f 7,2=89ba13 \
+             2,3=6a4f06 8,3=8f8b87 9,3=955cfc 10,3=9b2e70 11,3=a0ffe4 12,3=a6d159 13,3=aca2cd \
+             3,4=67fb3e 12,4=a3ad0b 3,5=65a776 12,5=9ab748 3,6=6353ae 11,6=91c185 4,7=60ffe6 \
+             10,7=88cbc3 4,8=5eac1d 10,8=7fd601 5,9=5c5855 9,9=76e03e 5,10=5a048d 8,10=6dea7c \
+             5,11=57b0c5 7,11=64f4ba 6,12=555cfd 7,12=5bfef7 6,13=530934\n",
+            "no_offset: 2,2=666666 3,2=6c37da 4,2=72094e 5,2=77dac3 6,2=7dac38 7,2=837dab 2,3=64129e \
+             8,3=894f1f 9,3=8f2094 10,3=94f208 11,3=9ac37c 12,3=a094f1 13,3=a66665 3,4=61bed6 \
+             12,4=9d70a3 3,5=5f6b0e 12,5=947ae0 3,6=5d1746 11,6=8b851d 4,7=5ac37d 10,7=828f5b \
+             4,8=586fb5 10,8=799999 5,9=561bed 9,9=70a3d6 5,10=53c824 8,10=67ae14 5,11=51745c \
+             7,11=5eb852 6,12=4f2094 7,12=55c28f 6,13=4ccccc\n",
+        );
+        assert_eq!(replay(script), mesa);
+    }
+
+    /// Row y % 32 from the bottom, bit 31 − x % 32; outlines are not stippled.
+    #[test]
+    fn polygon_stipple_is_anchored_at_the_window_origin() {
+        let script = "
+            size 40 37; color 1 1 1 1; clear 0 0 0 0
+            pstipple 80000001 00000000 00000000 80000001 00000000 0000ffff 80000001 00000000 00000000 80000001 00000000 00000000 80000001 00000000 00000000 80000001 00000000 00000000 80000001 00000000 00000000 80000001 00000000 00000000 80000001 00000000 00000000 80000001 00000000 00000000 80000001 00000000
+            enable polygon_stipple; begin triangles; v 1.3 2.7; v 39 5; v 20 36; end; lit filled
+            polymode front_and_back line; clear 0 0 0 0; begin triangles; v 1.3 2.7; v 39 5; v 20 36; end
+            lit outline_not_stippled";
+        let mesa = concat!(
+            "filled: 16,5 17,5 18,5 19,5 20,5 21,5 22,5 23,5 24,5 25,5 26,5 27,5 28,5 29,5 30,5 31,5 \
+             31,6 32,6 31,9 32,9 31,12 32,12 31,15 32,15\n",
+            "outline_not_stippled: 1,2 2,2 3,2 4,2 5,2 1,3 6,3 7,3 8,3 9,3 10,3 11,3 12,3 13,3 14,3 \
+             15,3 16,3 17,3 18,3 19,3 20,3 21,3 22,3 2,4 23,4 24,4 25,4 26,4 27,4 28,4 29,4 30,4 31,4 \
+             32,4 33,4 34,4 35,4 36,4 37,4 38,4 2,5 38,5 3,6 38,6 3,7 37,7 4,8 36,8 5,9 36,9 5,10 \
+             35,10 6,11 35,11 6,12 34,12 7,13 33,13 7,14 33,14 8,15 32,15 9,16 31,16 9,17 31,17 10,18 \
+             30,18 10,19 30,19 11,20 29,20 11,21 28,21 12,22 28,22 12,23 27,23 13,24 27,24 14,25 \
+             26,25 14,26 25,26 15,27 25,27 15,28 24,28 16,29 23,29 16,30 23,30 17,31 22,31 18,32 \
+             22,32 18,33 21,33 19,34 20,34 19,35 20,35\n",
+        );
+        assert_eq!(replay(script), mesa);
+    }
+
+    /// A quad in GL_LINE mode is stippled as one strip of four edges, in Mesa's edge order.
+    #[test]
+    fn outline_edges_continue_the_line_stipple() {
+        let script = "
+            size 16 16; color 1 1 1 1; polymode front_and_back line; enable line_stipple; stipple 1 3333
+            clear 0 0 0 0; begin quads; v 1.5 1.5; v 14.5 1.5; v 14.5 14.5; v 1.5 14.5; end
+            lit quad_edges_continue_the_pattern";
+        let mesa = "quad_edges_continue_the_pattern: 1,1 4,1 5,1 8,1 9,1 12,1 13,1 1,2 14,3 14,4 1,5 1,6 \
+             14,7 14,8 1,9 1,10 14,11 14,12 1,13 1,14 4,14 5,14 8,14 9,14 12,14 13,14\n";
+        assert_eq!(replay(script), mesa);
+    }
+
+    #[test]
+    fn lines_points_and_outlines_are_identical_for_any_thread_count() {
+        let render = |threads: usize| {
+            let (mut ctx, d) = context(300, 200);
+            ctx.state.depth.test = true;
+            ctx.clear(GL_DEPTH_BUFFER_BIT);
+            let mut seed = 777u32;
+            let mut rnd = || {
+                seed = seed.wrapping_mul(1664525).wrapping_add(1013904223);
+                (seed >> 8) as f32 / (1 << 24) as f32
+            };
+            let mut vertices = Vec::new();
+            for _ in 0..120 {
+                let c = [rnd(), rnd(), rnd(), 1.0];
+                vertices.push(vertex(rnd() * 340.0 - 20.0, rnd() * 240.0 - 20.0, rnd() * 2.0 - 1.0, c));
+            }
+            ctx.state.line_point.line_width = 3.0;
+            ctx.draw_vertices(GL_LINE_STRIP, &vertices);
+            ctx.state.line_point.line_stipple = true;
+            ctx.state.line_point.line_stipple_pattern = 0x3f3f;
+            ctx.state.line_point.line_width = 1.0;
+            ctx.draw_vertices(GL_LINES, &vertices);
+            ctx.state.line_point.point_size = 9.0;
+            ctx.draw_vertices(GL_POINTS, &vertices);
+            ctx.state.polygon.mode_front = GL_LINE;
+            ctx.state.polygon.mode_back = GL_POINT;
+            ctx.draw_vertices(GL_TRIANGLES, &vertices);
+            let scene = ctx.scene.take().unwrap();
+            scene.execute_on(&mut d.lock().unwrap().framebuffer, threads);
+            pixels(&mut ctx, &d)
+        };
+        let one = render(1);
+        assert!(one.iter().filter(|p| p[3] != 0).count() > 5000);
+        for threads in [2, 4, 7] {
+            assert!(one == render(threads), "{threads} threads differ");
+        }
+    }
+
+    #[test]
+    fn outline_decomposition_keeps_the_provoking_vertex_and_the_outline() {
+        let collect = |mode, count, first| {
+            let mut out = Vec::new();
+            decompose_outlines(mode, count, first, |t| out.push(t));
+            out
+        };
+        let t = |v: [u32; 3], edges: [bool; 3], first: bool| OutlineTriangle { v, edges, first };
+        // Quads split along the diagonal that keeps the last vertex a corner of both halves.
+        assert_eq!(
+            collect(GL_QUADS, 4, false),
+            [t([0, 1, 3], [true, false, true], true), t([1, 2, 3], [true, true, false], false)]
+        );
+        assert_eq!(
+            collect(GL_QUADS, 4, true),
+            [t([3, 0, 1], [true, true, false], true), t([3, 1, 2], [false, true, true], false)]
+        );
+        // A polygon's outline is its edges in order, around vertex 0.
+        assert_eq!(
+            collect(GL_POLYGON, 5, false),
+            [
+                t([1, 2, 0], [true, false, true], true),
+                t([2, 3, 0], [true, false, false], false),
+                t([3, 4, 0], [true, true, false], false),
+            ]
+        );
+        let outline = |tris: &[OutlineTriangle]| {
+            let mut edges: Vec<(u32, u32)> = tris
+                .iter()
+                .flat_map(|t| (0..3).filter(move |&k| t.edges[k]).map(move |k| (t.v[k], t.v[(k + 1) % 3])))
+                .map(|(a, b)| (a.min(b), a.max(b)))
+                .collect();
+            edges.sort_unstable();
+            edges
+        };
+        for first in [false, true] {
+            // A polygon's outline is each of its edges once.
+            assert_eq!(outline(&collect(GL_POLYGON, 6, first)), [(0, 1), (0, 5), (1, 2), (2, 3), (3, 4), (4, 5)]);
+            // Each quad of a strip is outlined without its diagonals.
+            for quad in collect(GL_QUAD_STRIP, 8, first).chunks(2) {
+                let a = quad.iter().flat_map(|t| t.v).min().unwrap();
+                assert_eq!(outline(quad), [(a, a + 1), (a, a + 2), (a + 1, a + 3), (a + 2, a + 3)]);
+            }
+        }
+    }
+
+    #[test]
+    fn point_size_clamps_like_mesa() {
+        let mut lp =
+            LinePointState { point_size: 10.0, point_size_min: 2.0, point_size_max: 4.0, ..Default::default() };
+        assert_eq!(point_size(&lp), 4.0);
+        lp.point_size = 1.0;
+        assert_eq!(point_size(&lp), 2.0);
+        // Crossed limits: the minimum wins below it, the maximum above.
+        (lp.point_size_min, lp.point_size_max) = (6.0, 4.0);
+        assert_eq!(point_size(&lp), 6.0);
+        lp.point_size = 9.0;
+        assert_eq!(point_size(&lp), 4.0);
+        lp = LinePointState { point_size: 300.0, ..Default::default() };
+        assert_eq!(point_size(&lp), MAX_POINT_SIZE);
+    }
+
+    /// Replays a probe script: the command language of `tools/gl-probe.c`, which runs the
+    /// same script on Mesa (size, clear, viewport, ortho, frustum, linewidth, pointsize, pointminmax, stipple,
+    /// pstipple, enable, disable, shade, provoking, polymode, cullface, frontface,
+    /// depthfunc, offset, begin, color, edge, v, end, lit, dump, depth; one command per line
+    /// or separated by `;`), printing the same lines, so that a script's output on Mesa and
+    /// on tessera can be diffed. `lit` lists the pixels that differ from the clear color.
+    pub(crate) fn replay(script: &str) -> String {
+        let mut out = String::new();
+        let mut ctx_drawable: Option<(Context, Arc<Mutex<Drawable>>)> = None;
+        let mut size = (0usize, 0usize);
+        let mut clear = [0.0f32; 4];
+        let mut mode = 0;
+        let mut vertices = Vec::new();
+        let mut color = [1.0f32; 4];
+        let mut edge = true;
+        let name = |n: &str| -> GLenum {
+            match n {
+                "points" => GL_POINTS,
+                "lines" => GL_LINES,
+                "line_strip" => GL_LINE_STRIP,
+                "line_loop" => GL_LINE_LOOP,
+                "triangles" => GL_TRIANGLES,
+                "triangle_strip" => GL_TRIANGLE_STRIP,
+                "triangle_fan" => GL_TRIANGLE_FAN,
+                "quads" => GL_QUADS,
+                "quad_strip" => GL_QUAD_STRIP,
+                "polygon" => GL_POLYGON,
+                "point" => GL_POINT,
+                "line" => GL_LINE,
+                "fill" => GL_FILL,
+                "front" => GL_FRONT,
+                "back" => GL_BACK,
+                "front_and_back" => GL_FRONT_AND_BACK,
+                "flat" => GL_FLAT,
+                "smooth" => GL_SMOOTH,
+                "cw" => GL_CW,
+                "ccw" => GL_CCW,
+                "first" => GL_FIRST_VERTEX_CONVENTION,
+                "last" => GL_LAST_VERTEX_CONVENTION,
+                _ => panic!("unknown name {n}"),
+            }
+        };
+        for line in script.split(['\n', ';']) {
+            let words: Vec<&str> = line.split_whitespace().collect();
+            let Some(&cmd) = words.first() else { continue };
+            if cmd.starts_with('#') {
+                continue;
+            }
+            let f = |i: usize| words[i].parse::<f64>().unwrap();
+            if cmd == "size" {
+                size = (words[1].parse().unwrap(), words[2].parse().unwrap());
+                ctx_drawable = Some(context(size.0, size.1));
+                continue;
+            }
+            let (ctx, d) = ctx_drawable.as_mut().expect("size first");
+            let st = &mut ctx.state;
+            match cmd {
+                "clear" => {
+                    clear = [f(1) as f32, f(2) as f32, f(3) as f32, f(4) as f32];
+                    st.color.clear_color = clear;
+                    st.depth.clear = 1.0;
+                    ctx.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+                }
+                "cleardepth" => {
+                    st.depth.clear = f(1);
+                    ctx.clear(GL_DEPTH_BUFFER_BIT);
+                }
+                "ortho" | "frustum" => {
+                    let (l, r, b, t, n, fa) = (f(1), f(2), f(3), f(4), f(5), f(6));
+                    ctx.matrix_mode(GL_PROJECTION);
+                    ctx.load_identity();
+                    if cmd == "ortho" {
+                        ctx.ortho(l, r, b, t, n, fa);
+                    } else {
+                        ctx.frustum(l, r, b, t, n, fa);
+                    }
+                }
+                "viewport" => st.viewport.rect = [1, 2, 3, 4].map(|i| words[i].parse().unwrap()),
+                "scissorbox" => st.scissor.rect = [1, 2, 3, 4].map(|i| words[i].parse().unwrap()),
+                "linewidth" => st.line_point.line_width = f(1) as f32,
+                "pointsize" => st.line_point.point_size = f(1) as f32,
+                "pointminmax" => {
+                    st.line_point.point_size_min = f(1) as f32;
+                    st.line_point.point_size_max = f(2) as f32;
+                }
+                "stipple" => {
+                    st.line_point.line_stipple_factor = words[1].parse().unwrap();
+                    st.line_point.line_stipple_pattern = u16::from_str_radix(words[2], 16).unwrap();
+                }
+                "pstipple" => {
+                    for i in 0..32 {
+                        st.polygon_stipple[i] = u32::from_str_radix(words[1 + i], 16).unwrap();
+                    }
+                }
+                "enable" | "disable" => {
+                    let on = cmd == "enable";
+                    match words[1] {
+                        "line_stipple" => st.line_point.line_stipple = on,
+                        "polygon_stipple" => st.polygon.stipple = on,
+                        "depth_test" => st.depth.test = on,
+                        "cull_face" => st.polygon.cull_face = on,
+                        "offset_fill" => st.polygon.offset_fill = on,
+                        "offset_line" => st.polygon.offset_line = on,
+                        "offset_point" => st.polygon.offset_point = on,
+                        "scissor" => st.scissor.test = on,
+                        w => panic!("unknown capability {w}"),
+                    }
+                }
+                "shade" => st.lighting.shade_model = name(words[1]),
+                "provoking" => st.lighting.provoking_vertex = name(words[1]),
+                "polymode" => {
+                    let m = name(words[2]);
+                    match name(words[1]) {
+                        GL_FRONT => st.polygon.mode_front = m,
+                        GL_BACK => st.polygon.mode_back = m,
+                        _ => {
+                            st.polygon.mode_front = m;
+                            st.polygon.mode_back = m;
+                        }
+                    }
+                }
+                "cullface" => st.polygon.cull_face_mode = name(words[1]),
+                "frontface" => st.polygon.front_face = name(words[1]),
+                "depthfunc" => {
+                    st.depth.func = match words[1] {
+                        "less" => CompareFunc::Less,
+                        "lequal" => CompareFunc::LessEqual,
+                        "equal" => CompareFunc::Equal,
+                        "always" => CompareFunc::Always,
+                        w => panic!("unknown depth func {w}"),
+                    }
+                }
+                "offset" => {
+                    st.polygon.offset_factor = f(1) as f32;
+                    st.polygon.offset_units = f(2) as f32;
+                }
+                "begin" => {
+                    mode = name(words[1]);
+                    vertices.clear();
+                }
+                "color" => color = [f(1) as f32, f(2) as f32, f(3) as f32, f(4) as f32],
+                "edge" => edge = words[1] != "0",
+                "v" => {
+                    let p = [
+                        f(1) as f32,
+                        f(2) as f32,
+                        words.get(3).map_or(0.0, |_| f(3) as f32),
+                        words.get(4).map_or(1.0, |_| f(4) as f32),
+                    ];
+                    let mut v = vertex(p[0], p[1], p[2], color);
+                    v.position[3] = p[3];
+                    v.edge_flag = edge;
+                    vertices.push(v);
+                }
+                "end" => ctx.draw_vertices(mode, &vertices),
+                "lit" | "dump" => {
+                    let px = pixels(ctx, d);
+                    let cc = clear.map(|c| (c * 255.0 + 0.5) as u8);
+                    out.push_str(&format!("{}:", words[1]));
+                    for (i, p) in px.iter().enumerate() {
+                        if *p != cc {
+                            let (x, y) = (i % size.0, i / size.0);
+                            if cmd == "lit" {
+                                out.push_str(&format!(" {x},{y}"));
+                            } else {
+                                out.push_str(&format!(" {x},{y}={:02x}{:02x}{:02x}{:02x}", p[0], p[1], p[2], p[3]));
+                            }
+                        }
+                    }
+                    out.push('\n');
+                }
+                "depth" => {
+                    ctx.flush_rendering();
+                    let guard = d.lock().unwrap();
+                    let fb = &guard.framebuffer;
+                    out.push_str(&format!("{}:", words[1]));
+                    for y in 0..fb.height() as i32 {
+                        let mut row = Vec::new();
+                        fb.depth_stencil().read_depth_row(y, 0, fb.width() as i32, &mut row);
+                        for (x, z) in row.iter().enumerate() {
+                            if *z != 0x00ff_ffff {
+                                out.push_str(&format!(" {x},{y}={z:06x}"));
+                            }
+                        }
+                    }
+                    out.push('\n');
+                }
+                w => panic!("unknown command {w}"),
+            }
+        }
+        out
     }
 }

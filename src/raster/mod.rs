@@ -9,11 +9,15 @@
 //! A pixel is only ever touched by the one worker owning its band, in submission order, so
 //! the bytes are identical for any number of threads.
 
+pub mod line;
+pub mod point;
 pub mod triangle;
 
-use crate::fragment::FragmentState;
+use crate::fragment::{write_colors, FragmentState};
 use crate::framebuffer::band::Band;
 use crate::framebuffer::{ColorSlot, Framebuffer, Rect};
+use line::LineJob;
+use point::PointJob;
 use std::sync::{Arc, Mutex, OnceLock};
 use triangle::TriangleJob;
 
@@ -26,11 +30,44 @@ pub struct DrawState {
     pub fragment: FragmentState,
     /// Pixels outside this rectangle (scissor box ∩ framebuffer) are never written.
     pub clip: Rect,
+    /// `clip` ∩ the viewport: filled triangles are clipped only to a guard band far
+    /// outside the view volume, so the viewport bounds them here instead (points and wide
+    /// lines may legitimately reach outside the viewport; they use `clip`).
+    pub fill_clip: Rect,
+    /// GL_POLYGON_STIPPLE's pattern when enabled (filled polygons only): row `y % 32`
+    /// from the bottom of the window, bit `31 − x % 32` for column `x`.
+    pub polygon_stipple: Option<[u32; 32]>,
 }
 
 /// A primitive ready for rasterization.
 pub enum Primitive {
     Triangle(TriangleJob),
+    Line(LineJob),
+    Point(PointJob),
+}
+
+/// Per-worker storage reused across spans.
+#[derive(Default)]
+pub struct Scratch {
+    pub z: Vec<f32>,
+    pub colors: Vec<[f32; 4]>,
+}
+
+/// Writes a shaded span (`colors[i]` for every bit `i` of `live`, starting at `row_start`
+/// of the band) to every color target the draw writes.
+#[inline]
+pub fn write_span_colors(
+    fragment: &FragmentState,
+    band: &mut Band<'_>,
+    row_start: usize,
+    colors: &[[f32; 4]],
+    live: u64,
+) {
+    for (target, mask) in band.colors.iter_mut().zip(&fragment.color_masks) {
+        if let Some(mask) = mask {
+            write_colors(&mut target.pixels, row_start, colors, live, *mask, fragment.clamp_float);
+        }
+    }
 }
 
 /// Recorded rendering waiting for a flush point.
@@ -93,7 +130,8 @@ impl Scene {
     /// Bins a primitive covering at most the pixel rectangle `bounds` (inclusive min,
     /// exclusive max), under draw state `state`.
     pub fn add(&mut self, state: u32, bounds: Rect, primitive: Primitive) {
-        let clip = self.states[state as usize].clip;
+        let drawn = &self.states[state as usize];
+        let clip = if matches!(primitive, Primitive::Triangle(_)) { drawn.fill_clip } else { drawn.clip };
         let r = bounds.intersect(clip);
         if r.is_empty() {
             return;
@@ -105,6 +143,42 @@ impl Scene {
             for tx in (r.x0 / t)..=((r.x1 - 1) / t) {
                 self.bins[ty as usize * self.tiles_x + tx as usize].push(index);
             }
+        }
+    }
+
+    /// Bins a primitive covering at most `bounds`, but only into the tiles of each tile row
+    /// that `columns` (the half-open pixel columns it may cover within a half-open range
+    /// of rows) names: long thin primitives (lines) cross few of their bounding box's tiles.
+    pub fn add_narrow(
+        &mut self,
+        state: u32,
+        bounds: Rect,
+        primitive: Primitive,
+        columns: impl Fn(i32, i32) -> Option<(i32, i32)>,
+    ) {
+        let clip = self.states[state as usize].clip;
+        let r = bounds.intersect(clip);
+        if r.is_empty() {
+            return;
+        }
+        let index = self.primitives.len() as u32;
+        let t = TILE_SIZE as i32;
+        let mut binned = false;
+        for ty in (r.y0 / t)..=((r.y1 - 1) / t) {
+            let Some((x0, x1)) = columns(r.y0.max(ty * t), r.y1.min(ty * t + t)) else {
+                continue;
+            };
+            let (x0, x1) = (x0.max(r.x0), x1.min(r.x1));
+            if x0 >= x1 {
+                continue;
+            }
+            for tx in (x0 / t)..=((x1 - 1) / t) {
+                self.bins[ty as usize * self.tiles_x + tx as usize].push(index);
+                binned = true;
+            }
+        }
+        if binned {
+            self.primitives.push((state, primitive));
         }
     }
 
@@ -127,7 +201,7 @@ impl Scene {
     /// Renders every tile of one band, each tile's primitives in submission order.
     fn render_band(&self, mut band: Band<'_>) {
         let ty = band.y0 as usize / TILE_SIZE;
-        let mut scratch = triangle::Scratch::default();
+        let mut scratch = Scratch::default();
         for tx in 0..self.tiles_x {
             let tile = Rect::from_xywh((tx * TILE_SIZE) as i32, band.y0, TILE_SIZE as i32, band.rows as i32)
                 .intersect(Rect::from_xywh(0, 0, self.width as i32, self.height as i32));
@@ -136,7 +210,11 @@ impl Scene {
                 let state = &self.states[*state as usize];
                 let area = tile.intersect(state.clip);
                 match primitive {
-                    Primitive::Triangle(job) => job.render(state, area, &mut band, &mut scratch),
+                    Primitive::Triangle(job) => {
+                        job.render(state, tile.intersect(state.fill_clip), &mut band, &mut scratch)
+                    }
+                    Primitive::Line(job) => job.render(state, area, &mut band, &mut scratch),
+                    Primitive::Point(job) => job.render(state, area, &mut band, &mut scratch),
                 }
             }
         }

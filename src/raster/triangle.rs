@@ -5,8 +5,8 @@
 //! their precision does not depend on where the triangle lies. Colors are interpolated
 //! perspective-correctly (planes of c/w and 1/w), window z linearly; when all three w are
 //! equal the divide is skipped, which changes nothing but time.
-use super::{Band, DrawState};
-use crate::fragment::{depth_test, write_colors, MAX_SPAN};
+use super::{write_span_colors, Band, DrawState, Scratch};
+use crate::fragment::{depth_test, MAX_SPAN};
 use crate::framebuffer::Rect;
 use crate::setup::triangle::{TriangleSetup, ONE};
 
@@ -57,13 +57,6 @@ pub struct TriangleJob {
     pub anchor: [f32; 2],
     pub z: Plane,
     pub shading: Shading,
-}
-
-/// Per-worker storage reused across spans.
-#[derive(Default)]
-pub struct Scratch {
-    z: Vec<f32>,
-    colors: Vec<[f32; 4]>,
 }
 
 /// The window-space inputs of one vertex.
@@ -138,6 +131,12 @@ impl TriangleJob {
         let dx0 = x0 as f32 + 0.5 - self.anchor[0];
         let row_start = (y - band.y0) as usize * band.width + x0 as usize;
         let mut live: u64 = if n == 64 { !0 } else { (1u64 << n) - 1 };
+        if let Some(pattern) = &state.polygon_stipple {
+            live &= stipple_mask(pattern, x0, y);
+            if live == 0 {
+                return;
+            }
+        }
         let fragment = &state.fragment;
         if let Some(test) = &fragment.depth {
             scratch.z.clear();
@@ -161,10 +160,32 @@ impl TriangleJob {
                 }));
             }
         }
-        for (target, mask) in band.colors.iter_mut().zip(&fragment.color_masks) {
-            if let Some(mask) = mask {
-                write_colors(&mut target.pixels, row_start, &scratch.colors, live, *mask, fragment.clamp_float);
-            }
-        }
+        write_span_colors(fragment, band, row_start, &scratch.colors, live);
+    }
+}
+
+/// The polygon stipple bits of the 64 pixels from `(x0, y)` on: bit `i` for pixel `x0 + i`.
+/// The pattern's row `y % 32` holds column `x % 32` in bit `31 − x % 32` (§3.6.2).
+#[inline]
+pub fn stipple_mask(pattern: &[u32; 32], x0: i32, y: i32) -> u64 {
+    let row = pattern[y.rem_euclid(32) as usize];
+    // Rotate column x0 into bit 31, then reverse so that it lands in bit 0.
+    let bits = row.rotate_left(x0.rem_euclid(32) as u32).reverse_bits() as u64;
+    bits | bits << 32
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn stipple_mask_reads_bit_31_as_the_leftmost_column() {
+        let mut pattern = [0u32; 32];
+        pattern[3] = 0x8000_0001; // columns 0 and 31 of rows 3, 35, 67, …
+        assert_eq!(stipple_mask(&pattern, 0, 3), 1 | 1 << 31 | 1 << 32 | 1 << 63);
+        assert_eq!(stipple_mask(&pattern, 31, 35), 1 | 1 << 1 | 1 << 32 | 1 << 33);
+        assert_eq!(stipple_mask(&pattern, 5, 4), 0);
+        // Negative coordinates wrap like positive ones (x = −1 is column 31).
+        assert_eq!(stipple_mask(&pattern, -1, -29) & 3, 3);
     }
 }

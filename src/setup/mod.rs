@@ -7,4 +7,6 @@
 //! from the three edge equations, so a pixel is covered iff its centre is inside by exact
 //! integer arithmetic, whatever the triangle's size or shape.
 
+pub mod line;
+pub mod point;
 pub mod triangle;

@@ -83,14 +83,18 @@ pub fn assemble(
         GL_QUADS => {
             for q in 0..count / 4 {
                 let b = 4 * q;
-                let provoking = if first_vertex_convention { b } else { b + 3 };
+                // Quads do not follow the provoking-vertex convention (Mesa reports
+                // GL_QUADS_FOLLOW_PROVOKING_VERTEX_CONVENTION false): the last vertex.
+                let provoking = b + 3;
                 quad(&mut emit, [b, b + 1, b + 2, b + 3], provoking, split);
             }
         }
         GL_QUAD_STRIP => {
             for q in 0..(count.saturating_sub(2)) / 2 {
                 let b = 2 * q;
-                let provoking = if first_vertex_convention { b } else { b + 3 };
+                // Quads do not follow the provoking-vertex convention (Mesa reports
+                // GL_QUADS_FOLLOW_PROVOKING_VERTEX_CONVENTION false): the last vertex.
+                let provoking = b + 3;
                 quad(&mut emit, [b, b + 1, b + 3, b + 2], provoking, split);
             }
         }

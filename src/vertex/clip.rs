@@ -65,19 +65,21 @@ pub struct ClipPlanes {
 const FIXED_PLANES: usize = 7;
 
 impl ClipPlanes {
-    fn count(&self) -> usize {
+    pub fn count(&self) -> usize {
         FIXED_PLANES + self.user.len()
     }
 
-    /// Signed distance of `v` to plane `i`.
+    /// Signed distance of `v` to plane `i`. Planes are numbered (and polygons clipped
+    /// against them) in Mesa's order, right, left, top, bottom, near, far: the order
+    /// decides the last bits of vertices cut by several planes.
     #[inline]
-    fn distance(&self, i: usize, v: &ClipVertex) -> f32 {
+    pub fn distance(&self, i: usize, v: &ClipVertex) -> f32 {
         let [x, y, z, w] = v.clip;
         match i {
-            0 => self.guard_x * w + x,
-            1 => self.guard_x * w - x,
-            2 => self.guard_y * w + y,
-            3 => self.guard_y * w - y,
+            0 => self.guard_x * w - x,
+            1 => self.guard_x * w + x,
+            2 => self.guard_y * w - y,
+            3 => self.guard_y * w + y,
             4 => {
                 if self.clip_z {
                     w + z

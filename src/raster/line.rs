@@ -1,0 +1,121 @@
+//! Lines inside one tile: the row spans of a set-up line, its attribute planes evaluated at
+//! pixel centres, then the same fragment operations as triangles.
+//!
+//! Attributes follow llvmpipe's line planes: they vary along the major axis only, linearly
+//! in window space for z and perspective-correctly (planes of c/w and 1/w) for colors.
+use super::{write_span_colors, Band, DrawState, Scratch};
+use crate::fragment::{depth_test, MAX_SPAN};
+use crate::framebuffer::Rect;
+use crate::setup::line::{LinePlane, LineSetup};
+
+/// How a line's color varies along it.
+#[derive(Clone, Debug, PartialEq)]
+pub enum LineShading {
+    Flat([f32; 4]),
+    /// Linear in window space (equal w at both ends).
+    Affine([LinePlane; 4]),
+    /// Planes of color/w and of 1/w.
+    Perspective {
+        color_over_w: [LinePlane; 4],
+        inv_w: LinePlane,
+    },
+}
+
+/// One endpoint of a line in window space (y down, as the line setup wants it).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LineVertex {
+    pub x: f32,
+    pub y_down: f32,
+    pub z: f32,
+    pub inv_w: f32,
+    pub color: [f32; 4],
+}
+
+/// A set-up line with everything its fragments need.
+#[derive(Clone, Debug)]
+pub struct LineJob {
+    setup: LineSetup,
+    z: LinePlane,
+    shading: LineShading,
+}
+
+impl LineJob {
+    /// Sets up the line `a`–`b` of GL width `width` in a framebuffer `height` rows high;
+    /// `flat` is the flat-shading color if flat shaded. `None` if it draws nothing.
+    pub fn new(a: &LineVertex, b: &LineVertex, width: f32, height: i32, flat: Option<[f32; 4]>) -> Option<LineJob> {
+        let setup = LineSetup::new([a.x, a.y_down], [b.x, b.y_down], width, height)?;
+        let g = setup.gradient;
+        let z = g.plane(a.z, b.z);
+        let shading = match flat {
+            Some(color) => LineShading::Flat(color),
+            None if a.color == b.color => LineShading::Flat(a.color),
+            None if a.inv_w == b.inv_w => LineShading::Affine(std::array::from_fn(|c| g.plane(a.color[c], b.color[c]))),
+            None => LineShading::Perspective {
+                color_over_w: std::array::from_fn(|c| g.plane(a.color[c] * a.inv_w, b.color[c] * b.inv_w)),
+                inv_w: g.plane(a.inv_w, b.inv_w),
+            },
+        };
+        Some(LineJob { setup, z, shading })
+    }
+
+    pub fn setup(&self) -> &LineSetup {
+        &self.setup
+    }
+
+    /// The pixel rectangle that may contain covered pixels.
+    pub fn bounds(&self) -> Rect {
+        self.setup.bounds
+    }
+
+    /// Renders the part of the line inside `area` (within the band) into `band`.
+    pub fn render(&self, state: &DrawState, area: Rect, band: &mut Band<'_>, scratch: &mut Scratch) {
+        let area = area.intersect(self.bounds());
+        if area.is_empty() {
+            return;
+        }
+        for y in area.y0..area.y1 {
+            let Some((x0, x1)) = self.setup.row_span(y, area.x0, area.x1) else {
+                continue;
+            };
+            let mut start = x0;
+            while start < x1 {
+                let end = (start + MAX_SPAN as i32).min(x1);
+                self.shade_span(state, band, y, start, end, scratch);
+                start = end;
+            }
+        }
+    }
+
+    fn shade_span(&self, state: &DrawState, band: &mut Band<'_>, y: i32, x0: i32, x1: i32, scratch: &mut Scratch) {
+        let n = (x1 - x0) as usize;
+        // Planes are over llvmpipe's y-down pixel coordinates.
+        let py = self.setup.row_down(y) as f32;
+        let px0 = x0 as f32;
+        let row_start = (y - band.y0) as usize * band.width + x0 as usize;
+        let mut live: u64 = if n == 64 { !0 } else { (1u64 << n) - 1 };
+        let fragment = &state.fragment;
+        if let Some(test) = &fragment.depth {
+            scratch.z.clear();
+            scratch.z.extend((0..n).map(|i| self.z.at(px0 + i as f32, py)));
+            live = depth_test(test, &mut band.depth, row_start, &scratch.z, live);
+            if live == 0 {
+                return;
+            }
+        }
+        scratch.colors.clear();
+        match &self.shading {
+            LineShading::Flat(c) => scratch.colors.resize(n, *c),
+            LineShading::Affine(planes) => {
+                scratch.colors.extend((0..n).map(|i| planes.map(|p| p.at(px0 + i as f32, py))));
+            }
+            LineShading::Perspective { color_over_w, inv_w } => {
+                scratch.colors.extend((0..n).map(|i| {
+                    let px = px0 + i as f32;
+                    let w = 1.0 / inv_w.at(px, py);
+                    color_over_w.map(|p| p.at(px, py) * w)
+                }));
+            }
+        }
+        write_span_colors(fragment, band, row_start, &scratch.colors, live);
+    }
+}
