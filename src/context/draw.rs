@@ -61,6 +61,9 @@ impl Viewport {
             z: ndc[2] * self.scale[2] + self.offset[2],
             inv_w,
             color: v.color,
+            secondary_color: v.secondary_color,
+            tex_coords: v.tex_coords,
+            fog_coord: v.fog_coord,
         }
     }
 
@@ -92,6 +95,27 @@ struct LineStipple {
     counter: i32,
 }
 
+/// A scalar vertex attribute that a draw's later stages read per fragment.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum Attribute {
+    /// A channel of the secondary color (GL_COLOR_SUM).
+    SecondaryColor(usize),
+    /// The fog coordinate (GL_FOG).
+    FogCoord,
+    /// A component of a unit's texture coordinates (the unit has a texture target enabled).
+    TexCoord(usize, usize),
+}
+
+impl Attribute {
+    fn of(self, v: &WindowVertex) -> f32 {
+        match self {
+            Attribute::SecondaryColor(c) => v.secondary_color[c],
+            Attribute::FogCoord => v.fog_coord,
+            Attribute::TexCoord(unit, c) => v.tex_coords[unit][c],
+        }
+    }
+}
+
 /// Per-draw constants of the geometry stage.
 struct Geometry {
     viewport: Viewport,
@@ -115,6 +139,9 @@ struct Geometry {
     /// r the depth buffer's resolution, as Mesa's offset stage applies them.
     offset_line: Option<(f32, f32)>,
     offset_point: Option<(f32, f32)>,
+    /// The attributes interpolated over filled polygons for the stages this draw enables
+    /// (none when only color is needed).
+    varyings: Vec<Attribute>,
 }
 
 impl Context {
@@ -238,6 +265,25 @@ impl Context {
         });
     }
 
+    /// The attributes beyond color that the enabled per-fragment stages read: the secondary
+    /// color for the color sum, the fog coordinate for fog, and the texture coordinates of
+    /// every unit with a texture target enabled. Nothing else is interpolated.
+    pub(super) fn varyings_needed(&self) -> Vec<Attribute> {
+        let mut needed = Vec::new();
+        if self.state.fog.color_sum {
+            needed.extend((0..3).map(Attribute::SecondaryColor));
+        }
+        if self.state.fog.enabled {
+            needed.push(Attribute::FogCoord);
+        }
+        for (unit, e) in self.state.texture.units.iter().enumerate() {
+            if e.texture_1d || e.texture_2d || e.texture_3d || e.texture_cube_map {
+                needed.extend((0..4).map(|c| Attribute::TexCoord(unit, c)));
+            }
+        }
+        needed
+    }
+
     /// The fragment state and clip rectangle of a draw.
     fn draw_state(
         &self,
@@ -328,6 +374,7 @@ impl Context {
         // Mesa's offset stage scales units by twice the depth buffer's resolution.
         let units_scale = if depth_bits > 0 { (2.0 / ((1u64 << depth_bits) - 1) as f64) as f32 } else { 0.0 };
         Geometry {
+            varyings: self.varyings_needed(),
             viewport: Viewport {
                 scale: [half[0], half[1], ((far - near) * 0.5) as f32],
                 offset: [centre[0], centre[1], ((far + near) * 0.5) as f32],
@@ -663,7 +710,8 @@ fn emit_triangle(scene: &mut Scene, state: u32, g: &Geometry, w: [WindowVertex; 
         _ => {}
     }
     let offset = g.offset.map_or(0.0, |(factor, units)| polygon_offset(&w, factor, units, g.depth_bits));
-    if let Some(job) = TriangleJob::new(w, flat, offset) {
+    let varyings: Vec<[f32; 3]> = g.varyings.iter().map(|a| w.map(|v| a.of(&v))).collect();
+    if let Some(job) = TriangleJob::new(w, flat, offset, &varyings) {
         let bounds = job.bounds();
         scene.add(state, bounds, RasterPrimitive::Triangle(job));
     }

@@ -103,3 +103,15 @@ fn fans_with_many_thin_triangles_cover_their_disc_exactly_once() {
     let tris: Vec<_> = (0..n).map(|i| [centre, ring[i], ring[(i + 1) % n]]).collect();
     check_mesh(140, 140, &tris);
 }
+
+#[test]
+fn only_enabled_stages_ask_for_varyings() {
+    let visual = FramebufferConfig::single_buffered(ColorFormat::Unorm8 { alpha: true }, DepthStencilFormat::None, 0);
+    let (mut ctx, _) = Context::with_test_drawable(visual, 4, 4);
+    assert!(ctx.varyings_needed().is_empty());
+    ctx.set_capability(GL_FOG, true);
+    ctx.set_capability(GL_TEXTURE_2D, true);
+    assert_eq!(ctx.varyings_needed().len(), 1 + 4);
+    ctx.set_capability(GL_COLOR_SUM, true);
+    assert_eq!(ctx.varyings_needed().len(), 3 + 1 + 4);
+}

@@ -6,6 +6,7 @@
 //! perspective-correctly (planes of c/w and 1/w), window z linearly; when all three w are
 //! equal the divide is skipped, which changes nothing but time.
 use super::{write_span_colors, Band, DrawState, Scratch};
+use crate::context::state::MAX_TEXTURE_UNITS;
 use crate::fragment::{depth_test, MAX_SPAN};
 use crate::framebuffer::Rect;
 use crate::setup::triangle::{TriangleSetup, ONE};
@@ -49,6 +50,35 @@ pub enum Shading {
     Perspective { color_over_w: [Plane; 4], inv_w: Plane },
 }
 
+/// The attributes beyond color that a draw's later stages read (secondary color, fog
+/// coordinate, texture coordinates), interpolated perspective-correctly: planes of a/w and
+/// the plane of 1/w. Empty (and free) when the draw needs none.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Varyings {
+    over_w: Vec<Plane>,
+    inv_w: Plane,
+}
+
+impl Varyings {
+    /// How many scalar attributes are interpolated.
+    pub fn len(&self) -> usize {
+        self.over_w.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.over_w.is_empty()
+    }
+
+    /// The attributes at offset (dx, dy) from the triangle's anchor, into `out`.
+    #[inline]
+    pub fn at(&self, dx: f32, dy: f32, out: &mut [f32]) {
+        let w = 1.0 / self.inv_w.at(dx, dy);
+        for (o, p) in out.iter_mut().zip(&self.over_w) {
+            *o = p.at(dx, dy) * w;
+        }
+    }
+}
+
 /// A set-up triangle with everything its fragments need.
 #[derive(Clone, Debug)]
 pub struct TriangleJob {
@@ -57,6 +87,7 @@ pub struct TriangleJob {
     pub anchor: [f32; 2],
     pub z: Plane,
     pub shading: Shading,
+    pub varyings: Varyings,
 }
 
 /// The window-space inputs of one vertex.
@@ -67,15 +98,28 @@ pub struct WindowVertex {
     pub z: f32,
     pub inv_w: f32,
     pub color: [f32; 4],
+    /// The attributes later stages may read; [`TriangleJob::new`] interpolates the ones a
+    /// draw asks for.
+    pub secondary_color: [f32; 4],
+    pub tex_coords: [[f32; 4]; MAX_TEXTURE_UNITS],
+    pub fog_coord: f32,
 }
 
 impl TriangleJob {
     /// Sets up a triangle; `None` when it covers no pixel centre (zero area).
     /// `flat` is the flat-shading color, if flat shaded. `depth_offset` is added to z.
-    pub fn new(v: [WindowVertex; 3], flat: Option<[f32; 4]>, depth_offset: f32) -> Option<TriangleJob> {
+    /// `varyings` holds, for each extra attribute the draw needs, its value at the three
+    /// vertices (in the order of `v`).
+    pub fn new(
+        v: [WindowVertex; 3],
+        flat: Option<[f32; 4]>,
+        depth_offset: f32,
+        varyings: &[[f32; 3]],
+    ) -> Option<TriangleJob> {
         let setup = TriangleSetup::new(v.map(|p| [p.x, p.y]))?;
         // Attribute values in the setup's (counter-clockwise) vertex order.
-        let v = if setup.was_clockwise { [v[0], v[2], v[1]] } else { v };
+        let order = if setup.was_clockwise { [0, 2, 1] } else { [0, 1, 2] };
+        let v = order.map(|i| v[i]);
         let fixed = setup.vertices;
         let px = |i: usize| [fixed[i][0] as f64 / ONE as f64, fixed[i][1] as f64 / ONE as f64];
         let (p0, p1, p2) = (px(0), px(1), px(2));
@@ -97,7 +141,22 @@ impl TriangleJob {
                 inv_w: plane([v[0].inv_w, v[1].inv_w, v[2].inv_w]),
             },
         };
-        Some(TriangleJob { setup, anchor: [p0[0] as f32, p0[1] as f32], z, shading })
+        let inv_w = [v[0].inv_w, v[1].inv_w, v[2].inv_w];
+        let varyings = if varyings.is_empty() {
+            Varyings::default()
+        } else {
+            Varyings {
+                over_w: varyings
+                    .iter()
+                    .map(|a| {
+                        let a = order.map(|i| a[i]);
+                        plane([a[0] * inv_w[0], a[1] * inv_w[1], a[2] * inv_w[2]])
+                    })
+                    .collect(),
+                inv_w: plane(inv_w),
+            }
+        };
+        Some(TriangleJob { setup, anchor: [p0[0] as f32, p0[1] as f32], z, shading, varyings })
     }
 
     /// The pixel rectangle that may contain covered centres.
@@ -187,5 +246,58 @@ mod tests {
         assert_eq!(stipple_mask(&pattern, 5, 4), 0);
         // Negative coordinates wrap like positive ones (x = −1 is column 31).
         assert_eq!(stipple_mask(&pattern, -1, -29) & 3, 3);
+    }
+}
+
+#[cfg(test)]
+mod varying_tests {
+    use super::*;
+
+    fn vertex(x: f32, y: f32, w: f32) -> WindowVertex {
+        WindowVertex {
+            x,
+            y,
+            z: 0.5,
+            inv_w: 1.0 / w,
+            color: [1.0; 4],
+            secondary_color: [0.0; 4],
+            tex_coords: [[0.0; 4]; MAX_TEXTURE_UNITS],
+            fog_coord: 0.0,
+        }
+    }
+
+    #[test]
+    fn varyings_are_perspective_correct() {
+        let v = [vertex(1.0, 1.0, 1.0), vertex(60.0, 4.0, 8.0), vertex(10.0, 50.0, 2.5)];
+        let attribute = [0.0f32, 1.0, 0.25];
+        for order in [[0, 1, 2], [0, 2, 1], [2, 1, 0]] {
+            let job = TriangleJob::new(order.map(|i| v[i]), None, 0.0, &[order.map(|i| attribute[i])]).unwrap();
+            assert_eq!(job.varyings.len(), 1);
+            for (px, py) in [(20, 10), (12, 30), (40, 9)] {
+                // Screen-space barycentrics at the pixel centre, then the perspective-correct
+                // value Σ λᵢ aᵢ/wᵢ / Σ λᵢ /wᵢ.
+                let (x, y) = (px as f64 + 0.5, py as f64 + 0.5);
+                let p = v.map(|q| (q.x as f64, q.y as f64));
+                let area =
+                    |a: (f64, f64), b: (f64, f64), c: (f64, f64)| (b.0 - a.0) * (c.1 - a.1) - (c.0 - a.0) * (b.1 - a.1);
+                let total = area(p[0], p[1], p[2]);
+                let l = [
+                    area((x, y), p[1], p[2]) / total,
+                    area(p[0], (x, y), p[2]) / total,
+                    area(p[0], p[1], (x, y)) / total,
+                ];
+                let num: f64 = (0..3).map(|i| l[i] * attribute[i] as f64 * v[i].inv_w as f64).sum();
+                let den: f64 = (0..3).map(|i| l[i] * v[i].inv_w as f64).sum();
+                let mut out = [0.0f32];
+                job.varyings.at(x as f32 - job.anchor[0], y as f32 - job.anchor[1], &mut out);
+                assert!((out[0] as f64 - num / den).abs() < 1e-5, "{order:?} ({px},{py}): {} vs {}", out[0], num / den);
+            }
+        }
+    }
+
+    #[test]
+    fn draws_without_varyings_carry_none() {
+        let v = [vertex(1.0, 1.0, 1.0), vertex(60.0, 4.0, 8.0), vertex(10.0, 50.0, 2.5)];
+        assert!(TriangleJob::new(v, None, 0.0, &[]).unwrap().varyings.is_empty());
     }
 }
