@@ -133,3 +133,33 @@ pub fn write_colors(
         }
     }
 }
+
+/// Writes one color to every fragment of `live` in the `n` pixels from `row_start`: the flat
+/// shaded case, converted once per span instead of once per pixel.
+pub fn write_uniform_color(
+    target: &mut ColorBand<'_>,
+    row_start: usize,
+    n: usize,
+    color: [f32; 4],
+    live: u64,
+    mask: [bool; 4],
+    clamp_float: bool,
+) {
+    let all_live = n == 64 && live == !0 || n < 64 && live == (1u64 << n) - 1;
+    if let (ColorBand::Unorm8(px), [true, true, true, true]) = (&mut *target, mask) {
+        let v = color.map(|x| float_to_unorm(x, 8) as u8);
+        if all_live {
+            px[row_start..row_start + n].fill(v);
+        } else {
+            let mut bits = live;
+            while bits != 0 {
+                let i = bits.trailing_zeros() as usize;
+                px[row_start + i] = v;
+                bits &= bits - 1;
+            }
+        }
+        return;
+    }
+    let colors = [color; MAX_SPAN];
+    write_colors(target, row_start, &colors[..n], live, mask, clamp_float);
+}

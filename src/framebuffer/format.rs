@@ -93,7 +93,17 @@ pub fn unorm_max(bits: u32) -> u32 {
 pub fn float_to_unorm(value: f32, bits: u32) -> u32 {
     let max = unorm_max(bits) as f32;
     let clamped = if value > 0.0 { value.min(1.0) } else { 0.0 };
-    (clamped * max).round_ties_even() as u32
+    round_half_even(clamped * max)
+}
+
+/// Rounds a non-negative single-precision value to the nearest integer, ties to even,
+/// exactly as `f32::round_ties_even` but without a rounding instruction, which baseline
+/// x86-64 lacks: adding 2⁵² in double precision leaves no fraction bits, and the FPU's
+/// default rounding is to nearest even. Exact for every finite `v` in [0, 2⁵²).
+#[inline]
+pub fn round_half_even(v: f32) -> u32 {
+    const MAGIC: f64 = (1u64 << 52) as f64;
+    ((v as f64 + MAGIC) - MAGIC) as u32
 }
 
 /// float → 16-bit unorm as Mesa's clears of 16-bit buffers compute it: the product in single
@@ -126,7 +136,7 @@ pub fn depth_to_fixed(depth: f64, bits: u32) -> u32 {
 #[inline]
 pub fn fragment_depth_to_fixed(z: f32, bits: u32) -> u32 {
     let clamped = if z > 0.0 { z.min(1.0) } else { 0.0 };
-    (clamped * unorm_max(bits) as f32).round_ties_even() as u32
+    round_half_even(clamped * unorm_max(bits) as f32)
 }
 
 /// Widens an n-bit unorm value to 32 bits by bit replication (exact rounding of the ratio).
@@ -193,6 +203,17 @@ mod tests {
         assert_eq!(fragment_depth_to_fixed(f32::NAN, 16), 0);
         // 0.1f · 65535 = 6553.5 exactly in single precision: ties go to the even 6554.
         assert_eq!(fragment_depth_to_fixed(0.1, 16), 0x199a);
+    }
+
+    #[test]
+    fn magic_rounding_equals_round_ties_even() {
+        for i in 0..=(1u32 << 20) {
+            let v = i as f32 / 4096.0;
+            assert_eq!(round_half_even(v), v.round_ties_even() as u32, "{v}");
+        }
+        for v in [0.5f32, 1.5, 2.5, 254.5, 255.0, 16777215.0, 4294967040.0] {
+            assert_eq!(round_half_even(v), v.round_ties_even() as u32, "{v}");
+        }
     }
 
     #[test]

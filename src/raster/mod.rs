@@ -13,7 +13,7 @@ pub mod line;
 pub mod point;
 pub mod triangle;
 
-use crate::fragment::{write_colors, FragmentState};
+use crate::fragment::{write_colors, write_uniform_color, FragmentState};
 use crate::framebuffer::band::Band;
 use crate::framebuffer::{ColorSlot, Framebuffer, Rect};
 use line::LineJob;
@@ -66,6 +66,23 @@ pub fn write_span_colors(
     for (target, mask) in band.colors.iter_mut().zip(&fragment.color_masks) {
         if let Some(mask) = mask {
             write_colors(&mut target.pixels, row_start, colors, live, *mask, fragment.clamp_float);
+        }
+    }
+}
+
+/// As [`write_span_colors`] for a span of one color (flat shading).
+#[inline]
+pub fn write_span_uniform(
+    fragment: &FragmentState,
+    band: &mut Band<'_>,
+    row_start: usize,
+    n: usize,
+    color: [f32; 4],
+    live: u64,
+) {
+    for (target, mask) in band.colors.iter_mut().zip(&fragment.color_masks) {
+        if let Some(mask) = mask {
+            write_uniform_color(&mut target.pixels, row_start, n, color, live, *mask, fragment.clamp_float);
         }
     }
 }

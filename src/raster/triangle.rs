@@ -5,7 +5,7 @@
 //! their precision does not depend on where the triangle lies. Colors are interpolated
 //! perspective-correctly (planes of c/w and 1/w), window z linearly; when all three w are
 //! equal the divide is skipped, which changes nothing but time.
-use super::{write_span_colors, Band, DrawState, Scratch};
+use super::{write_span_colors, write_span_uniform, Band, DrawState, Scratch};
 use crate::context::state::MAX_TEXTURE_UNITS;
 use crate::fragment::{depth_test, MAX_SPAN};
 use crate::framebuffer::Rect;
@@ -207,7 +207,7 @@ impl TriangleJob {
         }
         scratch.colors.clear();
         match &self.shading {
-            Shading::Flat(c) => scratch.colors.resize(n, *c),
+            Shading::Flat(c) => return write_span_uniform(fragment, band, row_start, n, *c, live),
             Shading::Affine(planes) => {
                 scratch.colors.extend((0..n).map(|i| planes.map(|p| p.at(dx0 + i as f32, dy))));
             }
