@@ -145,7 +145,7 @@ pub fn write_uniform_color(
     mask: [bool; 4],
     clamp_float: bool,
 ) {
-    let all_live = n == 64 && live == !0 || n < 64 && live == (1u64 << n) - 1;
+    let all_live = live == if n >= 64 { !0 } else { (1u64 << n) - 1 };
     if let (ColorBand::Unorm8(px), [true, true, true, true]) = (&mut *target, mask) {
         let v = color.map(|x| float_to_unorm(x, 8) as u8);
         if all_live {

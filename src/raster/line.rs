@@ -3,8 +3,8 @@
 //!
 //! Attributes follow llvmpipe's line planes: they vary along the major axis only, linearly
 //! in window space for z and perspective-correctly (planes of c/w and 1/w) for colors.
-use super::{write_span_colors, Band, DrawState, Scratch};
-use crate::fragment::{depth_test, MAX_SPAN};
+use super::{span_mask, walk_spans, write_span_colors, Band, DrawState, Scratch};
+use crate::fragment::depth_test;
 use crate::framebuffer::Rect;
 use crate::setup::line::{LinePlane, LineSetup};
 
@@ -73,17 +73,11 @@ impl LineJob {
         if area.is_empty() {
             return;
         }
-        for y in area.y0..area.y1 {
-            let Some((x0, x1)) = self.setup.row_span(y, area.x0, area.x1) else {
-                continue;
-            };
-            let mut start = x0;
-            while start < x1 {
-                let end = (start + MAX_SPAN as i32).min(x1);
-                self.shade_span(state, band, y, start, end, scratch);
-                start = end;
-            }
-        }
+        walk_spans(
+            area,
+            |y, x0, x1| self.setup.row_span(y, x0, x1),
+            |y, x0, x1| self.shade_span(state, band, y, x0, x1, scratch),
+        );
     }
 
     fn shade_span(&self, state: &DrawState, band: &mut Band<'_>, y: i32, x0: i32, x1: i32, scratch: &mut Scratch) {
@@ -92,7 +86,7 @@ impl LineJob {
         let py = self.setup.row_down(y) as f32;
         let px0 = x0 as f32;
         let row_start = (y - band.y0) as usize * band.width + x0 as usize;
-        let mut live: u64 = if n == 64 { !0 } else { (1u64 << n) - 1 };
+        let mut live = span_mask(n);
         let fragment = &state.fragment;
         if let Some(test) = &fragment.depth {
             scratch.z.clear();

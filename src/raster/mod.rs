@@ -13,7 +13,7 @@ pub mod line;
 pub mod point;
 pub mod triangle;
 
-use crate::fragment::{write_colors, write_uniform_color, FragmentState};
+use crate::fragment::{write_colors, write_uniform_color, FragmentState, MAX_SPAN};
 use crate::framebuffer::band::Band;
 use crate::framebuffer::{ColorSlot, Framebuffer, Rect};
 use line::LineJob;
@@ -67,6 +67,38 @@ pub fn write_span_colors(
         if let Some(mask) = mask {
             write_colors(&mut target.pixels, row_start, colors, live, *mask, fragment.clamp_float);
         }
+    }
+}
+
+/// Calls `shade(y, x0, x1)` for every covered span of `area`, row by row, in pieces of at
+/// most [`MAX_SPAN`] pixels; `row_span(y, x0, x1)` gives a row's covered pixels within
+/// `[x0, x1)`.
+#[inline]
+pub fn walk_spans(
+    area: Rect,
+    row_span: impl Fn(i32, i32, i32) -> Option<(i32, i32)>,
+    mut shade: impl FnMut(i32, i32, i32),
+) {
+    for y in area.y0..area.y1 {
+        let Some((x0, x1)) = row_span(y, area.x0, area.x1) else {
+            continue;
+        };
+        let mut start = x0;
+        while start < x1 {
+            let end = (start + MAX_SPAN as i32).min(x1);
+            shade(y, start, end);
+            start = end;
+        }
+    }
+}
+
+/// The live-fragment mask of an `n`-pixel span (bit i: pixel i), n ≤ 64.
+#[inline]
+pub fn span_mask(n: usize) -> u64 {
+    if n >= 64 {
+        !0
+    } else {
+        (1u64 << n) - 1
     }
 }
 

@@ -1,6 +1,6 @@
 //! Points inside one tile: an aliased point is a square of pixels with one depth and one
 //! color, so every row of it is a constant span.
-use super::{write_span_colors, Band, DrawState, Scratch};
+use super::{span_mask, write_span_colors, Band, DrawState, Scratch};
 use crate::fragment::{depth_test, MAX_SPAN};
 use crate::framebuffer::Rect;
 
@@ -30,7 +30,7 @@ impl PointJob {
                 let x1 = (x0 + MAX_SPAN as i32).min(area.x1);
                 let n = (x1 - x0) as usize;
                 let row_start = (y - band.y0) as usize * band.width + x0 as usize;
-                let mut live: u64 = if n == 64 { !0 } else { (1u64 << n) - 1 };
+                let mut live = span_mask(n);
                 if let Some(test) = &fragment.depth {
                     scratch.z.clear();
                     scratch.z.resize(n, self.z);

@@ -5,9 +5,9 @@
 //! their precision does not depend on where the triangle lies. Colors are interpolated
 //! perspective-correctly (planes of c/w and 1/w), window z linearly; when all three w are
 //! equal the divide is skipped, which changes nothing but time.
-use super::{write_span_colors, write_span_uniform, Band, DrawState, Scratch};
+use super::{span_mask, walk_spans, write_span_colors, write_span_uniform, Band, DrawState, Scratch};
 use crate::context::state::MAX_TEXTURE_UNITS;
-use crate::fragment::{depth_test, MAX_SPAN};
+use crate::fragment::depth_test;
 use crate::framebuffer::Rect;
 use crate::setup::triangle::{TriangleSetup, ONE};
 
@@ -171,17 +171,11 @@ impl TriangleJob {
         if area.is_empty() {
             return;
         }
-        for y in area.y0..area.y1 {
-            let Some((x0, x1)) = self.setup.row_span(y, area.x0, area.x1) else {
-                continue;
-            };
-            let mut start = x0;
-            while start < x1 {
-                let end = (start + MAX_SPAN as i32).min(x1);
-                self.shade_span(state, band, y, start, end, scratch);
-                start = end;
-            }
-        }
+        walk_spans(
+            area,
+            |y, x0, x1| self.setup.row_span(y, x0, x1),
+            |y, x0, x1| self.shade_span(state, band, y, x0, x1, scratch),
+        );
     }
 
     fn shade_span(&self, state: &DrawState, band: &mut Band<'_>, y: i32, x0: i32, x1: i32, scratch: &mut Scratch) {
@@ -189,7 +183,7 @@ impl TriangleJob {
         let dy = y as f32 + 0.5 - self.anchor[1];
         let dx0 = x0 as f32 + 0.5 - self.anchor[0];
         let row_start = (y - band.y0) as usize * band.width + x0 as usize;
-        let mut live: u64 = if n == 64 { !0 } else { (1u64 << n) - 1 };
+        let mut live = span_mask(n);
         if let Some(pattern) = &state.polygon_stipple {
             live &= stipple_mask(pattern, x0, y);
             if live == 0 {
