@@ -61,6 +61,32 @@ int main(void)
         }
     glDisable(GL_CULL_FACE);
     capi_save_framebuffer("culling", W, H);
+
+    /* Coplanar polygons z-fight; glPolygonOffset pushes the second one in front. */
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glFrustum(-1, 1, -0.5, 0.5, 1, 50);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    glRotatef(-60, 1, 0, 0);
+    for (int pass = 0; pass < 3; pass++) {
+        if (pass == 2) {
+            glEnable(GL_POLYGON_OFFSET_FILL);
+            glPolygonOffset(-1.5f, -2.0f);
+        }
+        float x0 = pass == 0 ? -6 : -2, y0 = pass == 0 ? -8 : -5;
+        glColor3f(pass == 0, pass == 1, pass == 2);
+        glBegin(GL_QUADS);
+        glVertex3f(x0, y0, -4);
+        glVertex3f(x0 + 8, y0, -4);
+        glVertex3f(x0 + 8, y0 + 12, -4);
+        glVertex3f(x0, y0 + 12, -4);
+        glEnd();
+    }
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    capi_save_framebuffer("polygon_offset", W, H);
     capi_check(glGetError() == GL_NO_ERROR, "no GL error");
     return capi_finish();
 }
