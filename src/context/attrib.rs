@@ -281,7 +281,7 @@ mod tests {
         (d.test, d.func, d.write_mask, d.clear) = (!d.test, CompareFunc::Greater, !d.write_mask, 0.5);
         let s = &mut t.stencil;
         (s.test, s.two_side, s.active_face_back, s.clear) = (!s.test, !s.two_side, !s.active_face_back, 9);
-        for (face, reference) in [(&mut s.front, 3), (&mut s.back, 4)] {
+        for (face, reference) in [(&mut s.front, 3), (&mut s.back, 4), (&mut s.ext_back, 5)] {
             *face = StencilFace {
                 func: CompareFunc::Equal,
                 reference,
@@ -304,7 +304,18 @@ mod tests {
         h.generate_mipmap = GL_NICEST;
         h.texture_compression = GL_FASTEST;
         h.fragment_shader_derivative = GL_NICEST;
-        t.fog = FogState { enabled: !t.fog.enabled, color_sum: !t.fog.color_sum };
+        t.fog = FogState {
+            enabled: !t.fog.enabled,
+            color_sum: !t.fog.color_sum,
+            mode: GL_LINEAR,
+            density: 0.5,
+            start: -1.0,
+            end: 9.0,
+            index: 3.0,
+            color: [0.1, 0.2, 0.3, 0.4],
+            coord_src: GL_FOG_COORD,
+            distance_mode: GL_EYE_RADIAL_NV,
+        };
         let l = &mut t.lighting;
         (l.enabled, l.color_material, l.clamp_vertex_color) = (!l.enabled, !l.color_material, GL_FALSE as GLenum);
         l.lights = [true, false, true, false, true, false, true, true];
@@ -382,7 +393,7 @@ mod tests {
             e.stencil.test = o.stencil.test;
             e.stencil.two_side = o.stencil.two_side;
             e.scissor.test = o.scissor.test;
-            e.fog = o.fog.clone();
+            (e.fog.enabled, e.fog.color_sum) = (o.fog.enabled, o.fog.color_sum);
             e.lighting.enabled = o.lighting.enabled;
             e.lighting.lights = o.lighting.lights;
             e.lighting.color_material = o.lighting.color_material;
