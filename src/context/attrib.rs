@@ -17,6 +17,9 @@
 //! GL_FOG_BIT restore GL_COLOR_SUM (fog/enable in table 6.11), and GL_HINT_BIT restores
 //! GL_GENERATE_MIPMAP_HINT and GL_FRAGMENT_SHADER_DERIVATIVE_HINT, and GL_LIGHTING_BIT restores
 //! GL_PROVOKING_VERTEX (ARB_provoking_vertex puts it in the lighting group; Mesa 22 leaves it).
+//! GL_STENCIL_BUFFER_BIT restores the EXT_stencil_two_side back face (Mesa 22 restores its
+//! front and back faces only), and GL_FOG_BIT restores GL_FOG_COORD_SRC (table 6.11) and
+//! GL_FOG_DISTANCE_MODE_NV (NV_fog_distance puts it in the fog group); Mesa 22 leaves both.
 use super::capabilities::{self, CAPABILITIES};
 use super::state::*;
 use super::Context;
