@@ -6350,6 +6350,64 @@ void glAccum(GLenum op, GLfloat value);
 
 void glDepthFunc(GLenum func);
 
+void glAlphaFunc(GLenum func, GLclampf ref_);
+
+void glStencilFunc(GLenum func, GLint ref_, GLuint mask);
+
+void glStencilOp(GLenum fail, GLenum zfail, GLenum zpass);
+
+void glStencilFuncSeparate(GLenum face, GLenum func, GLint ref_, GLuint mask);
+
+void glStencilOpSeparate(GLenum face, GLenum sfail, GLenum dpfail, GLenum dppass);
+
+void glStencilFuncSeparateATI(GLenum frontfunc, GLenum backfunc, GLint ref_, GLuint mask);
+
+void glActiveStencilFaceEXT(GLenum face);
+
+void glBlendFunc(GLenum sfactor, GLenum dfactor);
+
+void glBlendFuncSeparate(GLenum sfactorRGB, GLenum dfactorRGB, GLenum sfactorAlpha, GLenum dfactorAlpha);
+
+void glBlendFuncSeparateEXT(GLenum sfactorRGB, GLenum dfactorRGB, GLenum sfactorAlpha, GLenum dfactorAlpha);
+
+void glBlendEquation(GLenum mode);
+
+void glBlendEquationEXT(GLenum mode);
+
+void glBlendEquationSeparate(GLenum modeRGB, GLenum modeAlpha);
+
+void glBlendEquationSeparateEXT(GLenum modeRGB, GLenum modeAlpha);
+
+void glBlendColor(GLclampf red, GLclampf green, GLclampf blue, GLclampf alpha);
+
+void glBlendColorEXT(GLfloat red, GLfloat green, GLfloat blue, GLfloat alpha);
+
+void glBlendFunci(GLuint buf, GLenum src, GLenum dst);
+
+void glBlendFunciARB(GLuint buf, GLenum src, GLenum dst);
+
+void glBlendFuncSeparatei(GLuint buf, GLenum srcRGB, GLenum dstRGB, GLenum srcAlpha, GLenum dstAlpha);
+
+void glBlendFuncSeparateiARB(GLuint buf, GLenum srcRGB, GLenum dstRGB, GLenum srcAlpha, GLenum dstAlpha);
+
+void glBlendEquationi(GLuint buf, GLenum mode);
+
+void glBlendEquationiARB(GLuint buf, GLenum mode);
+
+void glBlendEquationSeparatei(GLuint buf, GLenum modeRGB, GLenum modeAlpha);
+
+void glBlendEquationSeparateiARB(GLuint buf, GLenum modeRGB, GLenum modeAlpha);
+
+void glLogicOp(GLenum opcode);
+
+void glFogf(GLenum pname, GLfloat param);
+
+void glFogi(GLenum pname, GLint param);
+
+void glFogfv(GLenum pname, const GLfloat *params);
+
+void glFogiv(GLenum pname, const GLint *params);
+
 void glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, GLenum type_, GLvoid *pixels);
 
 void glPixelStorei(GLenum pname, GLint param);

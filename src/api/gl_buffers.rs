@@ -60,7 +60,7 @@ pub extern "C" fn glDepthMask(flag: GLboolean) {
 
 #[no_mangle]
 pub extern "C" fn glStencilMask(mask: GLuint) {
-    with_context((), |ctx| ctx.stencil_mask(GL_FRONT_AND_BACK, mask))
+    with_context((), |ctx| ctx.stencil_mask_active(mask))
 }
 
 #[no_mangle]

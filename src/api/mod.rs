@@ -15,6 +15,7 @@ pub mod enums;
 pub mod gl_arrays;
 pub mod gl_buffer_objects;
 pub mod gl_buffers;
+pub mod gl_fragment;
 pub mod gl_pixels;
 pub mod gl_raster_state;
 pub mod gl_state;

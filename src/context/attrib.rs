@@ -17,6 +17,9 @@
 //! GL_FOG_BIT restore GL_COLOR_SUM (fog/enable in table 6.11), and GL_HINT_BIT restores
 //! GL_GENERATE_MIPMAP_HINT and GL_FRAGMENT_SHADER_DERIVATIVE_HINT, and GL_LIGHTING_BIT restores
 //! GL_PROVOKING_VERTEX (ARB_provoking_vertex puts it in the lighting group; Mesa 22 leaves it).
+//! GL_STENCIL_BUFFER_BIT restores the EXT_stencil_two_side back face (Mesa 22 restores its
+//! front and back faces only), and GL_FOG_BIT restores GL_FOG_COORD_SRC (table 6.11) and
+//! GL_FOG_DISTANCE_MODE_NV (NV_fog_distance puts it in the fog group); Mesa 22 leaves both.
 use super::capabilities::{self, CAPABILITIES};
 use super::state::*;
 use super::Context;
@@ -281,7 +284,7 @@ mod tests {
         (d.test, d.func, d.write_mask, d.clear) = (!d.test, CompareFunc::Greater, !d.write_mask, 0.5);
         let s = &mut t.stencil;
         (s.test, s.two_side, s.active_face_back, s.clear) = (!s.test, !s.two_side, !s.active_face_back, 9);
-        for (face, reference) in [(&mut s.front, 3), (&mut s.back, 4)] {
+        for (face, reference) in [(&mut s.front, 3), (&mut s.back, 4), (&mut s.ext_back, 5)] {
             *face = StencilFace {
                 func: CompareFunc::Equal,
                 reference,
@@ -304,7 +307,18 @@ mod tests {
         h.generate_mipmap = GL_NICEST;
         h.texture_compression = GL_FASTEST;
         h.fragment_shader_derivative = GL_NICEST;
-        t.fog = FogState { enabled: !t.fog.enabled, color_sum: !t.fog.color_sum };
+        t.fog = FogState {
+            enabled: !t.fog.enabled,
+            color_sum: !t.fog.color_sum,
+            mode: GL_LINEAR,
+            density: 0.5,
+            start: -1.0,
+            end: 9.0,
+            index: 3.0,
+            color: [0.1, 0.2, 0.3, 0.4],
+            coord_src: GL_FOG_COORD,
+            distance_mode: GL_EYE_RADIAL_NV,
+        };
         let l = &mut t.lighting;
         (l.enabled, l.color_material, l.clamp_vertex_color) = (!l.enabled, !l.color_material, GL_FALSE as GLenum);
         l.lights = [true, false, true, false, true, false, true, true];
@@ -382,7 +396,7 @@ mod tests {
             e.stencil.test = o.stencil.test;
             e.stencil.two_side = o.stencil.two_side;
             e.scissor.test = o.scissor.test;
-            e.fog = o.fog.clone();
+            (e.fog.enabled, e.fog.color_sum) = (o.fog.enabled, o.fog.color_sum);
             e.lighting.enabled = o.lighting.enabled;
             e.lighting.lights = o.lighting.lights;
             e.lighting.color_material = o.lighting.color_material;

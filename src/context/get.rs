@@ -173,7 +173,9 @@ impl Context {
         let [red, green, blue, alpha] = fb.color.channel_bits().map(|b| b as i32);
         let accum = fb.accum_bits as i32;
         let stencil_max = (1i32 << fb.depth_stencil.stencil_bits()) - 1;
-        let face: &StencilFace = if s.stencil.active_face_back { &s.stencil.back } else { &s.stencil.front };
+        // GL_STENCIL_* answer the active face (the EXT back face when it is active, as in
+        // Mesa); GL_STENCIL_BACK_* always the GL 2.0 back face.
+        let face: &StencilFace = s.stencil.active_face();
         let back = &s.stencil.back;
         let (pack, unpack) = (&self.pixel_store.pack, &self.pixel_store.unpack);
         let texture_stack = StackId::Texture(s.texture.active_unit);
@@ -230,6 +232,16 @@ impl Context {
             GL_LOGIC_OP_MODE => one(Enum(s.color.logic_op)),
             GL_CLAMP_FRAGMENT_COLOR => one(Enum(s.color.clamp_fragment_color)),
             GL_CLAMP_READ_COLOR => one(Enum(s.color.clamp_read_color)),
+
+            // Fog (GL_FOG_BIT). GL_FOG_COORD_SRC has the value of GL_FOG_COORDINATE_SOURCE.
+            GL_FOG_MODE => one(Enum(s.fog.mode)),
+            GL_FOG_DENSITY => one(Float(s.fog.density)),
+            GL_FOG_START => one(Float(s.fog.start)),
+            GL_FOG_END => one(Float(s.fog.end)),
+            GL_FOG_INDEX => one(Float(s.fog.index)),
+            GL_FOG_COLOR => norm_floats(s.fog.color.map(clamped)),
+            GL_FOG_COORD_SRC => one(Enum(s.fog.coord_src)),
+            GL_FOG_DISTANCE_MODE_NV => one(Enum(s.fog.distance_mode)),
 
             // Depth, stencil, accumulation buffers.
             GL_DEPTH_FUNC => one(Enum(s.depth.func.to_gl())),
@@ -501,6 +513,8 @@ mod tests {
         ctx.state.stencil.back.func = CompareFunc::Equal;
         ctx.state.stencil.back.reference = -3;
         ctx.state.stencil.back.fail = GL_INCR_WRAP;
+        ctx.state.stencil.ext_back = ctx.state.stencil.back;
+        ctx.state.stencil.ext_back.func = CompareFunc::Greater;
         assert_eq!(ctx.get_integers(GL_STENCIL_FUNC), Some(vec![GL_LESS as i32]));
         assert_eq!(ctx.get_integers(GL_STENCIL_REF), Some(vec![255]));
         assert_eq!(ctx.get_integers(GL_STENCIL_BACK_REF), Some(vec![0]));
@@ -509,7 +523,8 @@ mod tests {
         assert_eq!(ctx.get_integers(GL_ACTIVE_STENCIL_FACE_EXT), Some(vec![GL_FRONT as i32]));
         ctx.state.stencil.active_face_back = true;
         assert_eq!(ctx.get_integers(GL_ACTIVE_STENCIL_FACE_EXT), Some(vec![GL_BACK as i32]));
-        assert_eq!(ctx.get_integers(GL_STENCIL_FUNC), Some(vec![GL_EQUAL as i32]));
+        assert_eq!(ctx.get_integers(GL_STENCIL_FUNC), Some(vec![GL_GREATER as i32]));
+        assert_eq!(ctx.get_integers(GL_STENCIL_BACK_FUNC), Some(vec![GL_EQUAL as i32]));
         assert_eq!(ctx.get_integers(GL_STENCIL_FAIL), Some(vec![GL_INCR_WRAP as i32]));
         assert_eq!(ctx.get_integers(GL_STENCIL_BACK_FAIL), Some(vec![GL_INCR_WRAP as i32]));
     }

@@ -175,6 +175,11 @@ impl Default for StencilFace {
 }
 
 /// GL_STENCIL_BUFFER_BIT.
+///
+/// As in Mesa, there are three faces: `front`, `back` (what glStencil*Separate(GL_BACK) and
+/// GL_STENCIL_BACK_* address) and `ext_back`, the back face of EXT_stencil_two_side, which
+/// the non-separate calls set while GL_ACTIVE_STENCIL_FACE_EXT is GL_BACK and which back
+/// faces use while GL_STENCIL_TEST_TWO_SIDE_EXT is enabled.
 #[derive(Clone, Debug, PartialEq, Default)]
 pub struct StencilState {
     pub test: bool,
@@ -184,7 +189,28 @@ pub struct StencilState {
     pub active_face_back: bool,
     pub front: StencilFace,
     pub back: StencilFace,
+    pub ext_back: StencilFace,
     pub clear: i32,
+}
+
+impl StencilState {
+    /// The face that back-facing primitives are tested against.
+    pub fn back_face_in_use(&self) -> &StencilFace {
+        if self.two_side {
+            &self.ext_back
+        } else {
+            &self.back
+        }
+    }
+
+    /// The face GL_STENCIL_FUNC & co. report: the EXT back face when it is active.
+    pub fn active_face(&self) -> &StencilFace {
+        if self.active_face_back {
+            &self.ext_back
+        } else {
+            &self.front
+        }
+    }
 }
 
 /// GL_SCISSOR_BIT.
@@ -243,11 +269,40 @@ impl Default for HintState {
     }
 }
 
-/// GL_FOG_BIT (enable only, so far).
-#[derive(Clone, Debug, PartialEq, Default)]
+/// GL_FOG_BIT.
+#[derive(Clone, Debug, PartialEq)]
 pub struct FogState {
     pub enabled: bool,
     pub color_sum: bool,
+    /// GL_FOG_MODE: GL_LINEAR, GL_EXP or GL_EXP2.
+    pub mode: GLenum,
+    pub density: f32,
+    pub start: f32,
+    pub end: f32,
+    pub index: f32,
+    /// GL_FOG_COLOR as given; clamped where fragment colors are (see `get.rs`).
+    pub color: [f32; 4],
+    /// GL_FOG_COORD_SRC: GL_FOG_COORD or GL_FRAGMENT_DEPTH.
+    pub coord_src: GLenum,
+    /// GL_FOG_DISTANCE_MODE_NV: GL_EYE_RADIAL_NV, GL_EYE_PLANE or GL_EYE_PLANE_ABSOLUTE_NV.
+    pub distance_mode: GLenum,
+}
+
+impl Default for FogState {
+    fn default() -> Self {
+        FogState {
+            enabled: false,
+            color_sum: false,
+            mode: GL_EXP,
+            density: 1.0,
+            start: 0.0,
+            end: 1.0,
+            index: 0.0,
+            color: [0.0; 4],
+            coord_src: GL_FRAGMENT_DEPTH,
+            distance_mode: GL_EYE_PLANE_ABSOLUTE_NV,
+        }
+    }
 }
 
 /// GL_LIGHTING_BIT (enables and vertex color clamping, so far).
