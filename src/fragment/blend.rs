@@ -98,8 +98,16 @@ impl Blend {
             return self;
         }
         let opaque = |f: BlendFunc, keep_saturate: bool| BlendFunc {
-            src: if keep_saturate && f.src == BlendFactor::SrcAlphaSaturate { f.src } else { f.src.with_opaque_destination() },
-            dst: if keep_saturate && f.dst == BlendFactor::SrcAlphaSaturate { f.dst } else { f.dst.with_opaque_destination() },
+            src: if keep_saturate && f.src == BlendFactor::SrcAlphaSaturate {
+                f.src
+            } else {
+                f.src.with_opaque_destination()
+            },
+            dst: if keep_saturate && f.dst == BlendFactor::SrcAlphaSaturate {
+                f.dst
+            } else {
+                f.dst.with_opaque_destination()
+            },
             equation: f.equation,
         };
         Blend { rgb: opaque(self.rgb, false), alpha: opaque(self.alpha, true) }
@@ -435,7 +443,9 @@ mod tests {
                         }
                     }
                     if bad > 0 {
-                        println!("{e:?} {sf:?} {df:?}: {bad}/65536 differ, e.g. {example:?} (src, dst, llvmpipe, ours)");
+                        println!(
+                            "{e:?} {sf:?} {df:?}: {bad}/65536 differ, e.g. {example:?} (src, dst, llvmpipe, ours)"
+                        );
                     }
                     total_bad += bad;
                     plane += 1;
