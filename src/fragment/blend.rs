@@ -218,31 +218,70 @@ pub fn blend_unorm8(blend: &Blend, constant: [u8; 4], src: &[[u8; 4]], dst: &mut
     }
 }
 
-/// Evaluates `factor` for one channel `k` in single precision.
-#[inline(always)]
-fn factor_f32(factor: BlendFactor, s: &[f32; 4], d: &[f32; 4], c: &[f32; 4], k: usize) -> f32 {
-    match factor {
-        BlendFactor::Zero => 0.0,
-        BlendFactor::One => 1.0,
-        BlendFactor::SrcColor => s[k],
-        BlendFactor::OneMinusSrcColor => 1.0 - s[k],
-        BlendFactor::DstColor => d[k],
-        BlendFactor::OneMinusDstColor => 1.0 - d[k],
-        BlendFactor::SrcAlpha => s[3],
-        BlendFactor::OneMinusSrcAlpha => 1.0 - s[3],
-        BlendFactor::DstAlpha => d[3],
-        BlendFactor::OneMinusDstAlpha => 1.0 - d[3],
-        BlendFactor::ConstantColor => c[k],
-        BlendFactor::OneMinusConstantColor => 1.0 - c[k],
-        BlendFactor::ConstantAlpha => c[3],
-        BlendFactor::OneMinusConstantAlpha => 1.0 - c[3],
-        BlendFactor::SrcAlphaSaturate => {
-            if k == 3 {
-                1.0
-            } else {
-                s[3].min(1.0 - d[3])
+/// Fills channels `channels` of `out[i]` with `factor` evaluated in single precision.
+fn factor_f32(
+    factor: BlendFactor,
+    src: &[[f32; 4]],
+    dst: &[[f32; 4]],
+    c: [f32; 4],
+    channels: std::ops::Range<usize>,
+    out: &mut [[f32; 4]],
+) {
+    macro_rules! each {
+        (|$s:ident, $d:ident, $k:ident| $e:expr) => {
+            for ((o, $s), $d) in out.iter_mut().zip(src).zip(dst) {
+                for $k in channels.clone() {
+                    o[$k] = $e;
+                }
             }
-        }
+        };
+    }
+    match factor {
+        BlendFactor::Zero => each!(|_s, _d, k| 0.0),
+        BlendFactor::One => each!(|_s, _d, k| 1.0),
+        BlendFactor::SrcColor => each!(|s, _d, k| s[k]),
+        BlendFactor::OneMinusSrcColor => each!(|s, _d, k| 1.0 - s[k]),
+        BlendFactor::DstColor => each!(|_s, d, k| d[k]),
+        BlendFactor::OneMinusDstColor => each!(|_s, d, k| 1.0 - d[k]),
+        BlendFactor::SrcAlpha => each!(|s, _d, k| s[3]),
+        BlendFactor::OneMinusSrcAlpha => each!(|s, _d, k| 1.0 - s[3]),
+        BlendFactor::DstAlpha => each!(|_s, d, k| d[3]),
+        BlendFactor::OneMinusDstAlpha => each!(|_s, d, k| 1.0 - d[3]),
+        BlendFactor::ConstantColor => each!(|_s, _d, k| c[k]),
+        BlendFactor::OneMinusConstantColor => each!(|_s, _d, k| 1.0 - c[k]),
+        BlendFactor::ConstantAlpha => each!(|_s, _d, k| c[3]),
+        BlendFactor::OneMinusConstantAlpha => each!(|_s, _d, k| 1.0 - c[3]),
+        BlendFactor::SrcAlphaSaturate => each!(|s, d, k| if k == 3 { 1.0 } else { s[3].min(1.0 - d[3]) }),
+    }
+}
+
+/// Combines source and destination with their factors on `channels` in single precision.
+fn equation_f32(
+    equation: BlendEquation,
+    src: &[[f32; 4]],
+    dst: &[[f32; 4]],
+    sf: &[[f32; 4]],
+    df: &[[f32; 4]],
+    channels: std::ops::Range<usize>,
+    out: &mut [[f32; 4]],
+) {
+    macro_rules! each {
+        (|$s:ident, $d:ident, $i:ident, $k:ident| $e:expr) => {
+            for $i in 0..out.len() {
+                for $k in channels.clone() {
+                    let $s = src[$i][$k] * sf[$i][$k];
+                    let $d = dst[$i][$k] * df[$i][$k];
+                    out[$i][$k] = $e;
+                }
+            }
+        };
+    }
+    match equation {
+        BlendEquation::Add => each!(|s, d, i, k| s + d),
+        BlendEquation::Subtract => each!(|s, d, i, k| s - d),
+        BlendEquation::ReverseSubtract => each!(|s, d, i, k| d - s),
+        BlendEquation::Min => each!(|_s, _d, i, k| src[i][k].min(dst[i][k])),
+        BlendEquation::Max => each!(|_s, _d, i, k| src[i][k].max(dst[i][k])),
     }
 }
 
@@ -267,30 +306,26 @@ pub fn blend_f32(
     live: u64,
     fixed_point: bool,
 ) {
-    let n = src.len().min(dst.len()).min(super::MAX_SPAN);
+    const N: usize = super::MAX_SPAN;
+    let n = src.len().min(dst.len()).min(N);
     let c = if fixed_point { constant.map(clamp01) } else { constant };
-    let halves = [(blend.rgb, 0..3), (blend.alpha, 3..4)];
-    for (i, (s, d)) in src[..n].iter().zip(dst[..n].iter_mut()).enumerate() {
-        if live & (1 << i) == 0 {
-            continue;
+    let (mut s, mut d) = ([[0f32; 4]; N], [[0f32; 4]; N]);
+    s[..n].copy_from_slice(&src[..n]);
+    d[..n].copy_from_slice(&dst[..n]);
+    if fixed_point {
+        s[..n].iter_mut().chain(d[..n].iter_mut()).for_each(|p| *p = p.map(clamp01));
+    }
+    let (s, d) = (&s[..n], &d[..n]);
+    let (mut sf, mut df, mut out) = ([[0f32; 4]; N], [[0f32; 4]; N], [[0f32; 4]; N]);
+    for (f, channels) in [(blend.rgb, 0..3), (blend.alpha, 3..4)] {
+        factor_f32(f.src, s, d, c, channels.clone(), &mut sf[..n]);
+        factor_f32(f.dst, s, d, c, channels.clone(), &mut df[..n]);
+        equation_f32(f.equation, s, d, &sf[..n], &df[..n], channels, &mut out[..n]);
+    }
+    for (i, (cell, v)) in dst[..n].iter_mut().zip(&out[..n]).enumerate() {
+        if live & (1 << i) != 0 {
+            *cell = if fixed_point { v.map(clamp01) } else { *v };
         }
-        let (s, dv) = if fixed_point { (s.map(clamp01), d.map(clamp01)) } else { (*s, *d) };
-        let mut out = dv;
-        for (func, channels) in halves.iter().cloned() {
-            for k in channels {
-                let ps = s[k] * factor_f32(func.src, &s, &dv, &c, k);
-                let pd = dv[k] * factor_f32(func.dst, &s, &dv, &c, k);
-                let v = match func.equation {
-                    BlendEquation::Add => ps + pd,
-                    BlendEquation::Subtract => ps - pd,
-                    BlendEquation::ReverseSubtract => pd - ps,
-                    BlendEquation::Min => s[k].min(dv[k]),
-                    BlendEquation::Max => s[k].max(dv[k]),
-                };
-                out[k] = if fixed_point { clamp01(v) } else { v };
-            }
-        }
-        *d = out;
     }
 }
 
