@@ -5,6 +5,13 @@
 //! function, with the write mask) and writes colors to every draw target with its color
 //! mask; the full pipeline of the seeds (alpha, stencil, blending, logic op, fog, dither)
 //! builds on the same span interface.
+pub mod alpha;
+pub mod blend;
+pub mod dither;
+pub mod fog;
+pub mod logic_op;
+pub mod stencil;
+
 use crate::context::state::CompareFunc;
 use crate::framebuffer::band::{ColorBand, DepthBand};
 use crate::framebuffer::format::{float_to_unorm, fragment_depth_to_fixed};
@@ -31,8 +38,9 @@ pub struct FragmentState {
     pub clamp_float: bool,
 }
 
+/// Whether `fragment func stored` holds; shared by the depth, stencil and alpha tests.
 #[inline]
-fn passes(func: CompareFunc, fragment: u32, stored: u32) -> bool {
+pub(crate) fn passes(func: CompareFunc, fragment: u32, stored: u32) -> bool {
     match func {
         CompareFunc::Never => false,
         CompareFunc::Less => fragment < stored,
