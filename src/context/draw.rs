@@ -26,7 +26,7 @@ use crate::api::enums::*;
 use crate::api::types::GLenum;
 use crate::context::state::{LinePointState, MAX_LINE_WIDTH, MAX_POINT_SIZE};
 use crate::fragment::{DepthTest, FragmentState};
-use crate::framebuffer::Rect;
+use crate::framebuffer::{ColorFormat, Rect};
 use crate::raster::line::{LineJob, LineVertex};
 use crate::raster::point::PointJob;
 use crate::raster::triangle::{TriangleJob, WindowVertex};
@@ -148,14 +148,22 @@ impl Context {
     /// Draws `vertices` as primitives of `mode` (GL_POINTS … GL_POLYGON, already validated),
     /// with the current state. Vertex sources (glBegin/glEnd, glDrawArrays, …) call this.
     pub fn draw_vertices(&mut self, mode: GLenum, vertices: &[Vertex]) {
-        let Some((width, height, float_color, depth_bits)) = self.with_framebuffer(|fb| {
-            (fb.width(), fb.height(), fb.config().color.is_float(), fb.config().depth_stencil.depth_bits())
+        let Some((width, height, color_format, depth_bits, stencil_bits)) = self.with_framebuffer(|fb| {
+            let config = fb.config();
+            (
+                fb.width(),
+                fb.height(),
+                config.color,
+                config.depth_stencil.depth_bits(),
+                config.depth_stencil.stencil_bits(),
+            )
         }) else {
             return;
         };
         if vertices.is_empty() {
             return;
         }
+        let float_color = color_format.is_float();
         let mut scene = match self.scene.take() {
             Some(scene) if scene.size() == (width, height) => scene,
             other => {
@@ -168,7 +176,7 @@ impl Context {
         };
         // Mesa analyses changed matrices at draw time; their flags decide how products round.
         self.matrices.validate();
-        let state = self.draw_state(&mut scene, width, height, float_color, depth_bits);
+        let state = self.draw_state(&mut scene, width, height, color_format, depth_bits, stencil_bits);
         let state_index = scene.add_state(state);
         let clip_vertices = self.transform(vertices, float_color);
         let geometry = self.geometry(depth_bits, height);
@@ -290,18 +298,23 @@ impl Context {
         scene: &mut Scene,
         width: usize,
         height: usize,
-        float_color: bool,
+        color_format: ColorFormat,
         depth_bits: u32,
+        stencil_bits: u32,
     ) -> DrawState {
+        let float_color = color_format.is_float();
         let depth = (self.state.depth.test && depth_bits > 0)
             .then_some(DepthTest { func: self.state.depth.func, write: self.state.depth.write_mask });
         let mut color_masks = vec![None; scene.target_count()];
+        let mut buffer_of = vec![None; scene.target_count()];
         for (slot, index) in self.draw_targets() {
             let target = scene.target_index(slot);
             if color_masks.len() <= target {
                 color_masks.resize(target + 1, None);
+                buffer_of.resize(target + 1, None);
             }
             color_masks[target] = Some(self.state.color.color_mask[index]);
+            buffer_of[target] = Some(index);
         }
         let clamp_float = match self.state.color.clamp_fragment_color {
             GL_FIXED_ONLY => !float_color,
@@ -311,7 +324,9 @@ impl Context {
         let [vx, vy, vw, vh] = self.state.viewport.rect;
         let fill_clip = clip.intersect(Rect::from_xywh(vx, vy, vw, vh));
         let polygon_stipple = self.state.polygon.stipple.then_some(self.state.polygon_stipple);
-        DrawState { fragment: FragmentState { depth, color_masks, clamp_float }, clip, fill_clip, polygon_stipple }
+        let mut fragment = FragmentState::plain(depth, color_masks, clamp_float);
+        self.compile_fragment_ops(&mut fragment, &buffer_of, color_format, stencil_bits);
+        DrawState { fragment, clip, fill_clip, polygon_stipple }
     }
 
     /// GL_LINE_STIPPLE's state at the start of a draw, when enabled.
@@ -711,7 +726,8 @@ fn emit_triangle(scene: &mut Scene, state: u32, g: &Geometry, w: [WindowVertex; 
     }
     let offset = g.offset.map_or(0.0, |(factor, units)| polygon_offset(&w, factor, units, g.depth_bits));
     let varyings: Vec<[f32; 3]> = g.varyings.iter().map(|a| w.map(|v| a.of(&v))).collect();
-    if let Some(job) = TriangleJob::new(w, flat, offset, &varyings) {
+    if let Some(mut job) = TriangleJob::new(w, flat, offset, &varyings) {
+        job.front_facing = front;
         let bounds = job.bounds();
         scene.add(state, bounds, RasterPrimitive::Triangle(job));
     }

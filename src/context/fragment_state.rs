@@ -17,6 +17,11 @@ use super::state::{CompareFunc, StencilFace, StencilState, MAX_DRAW_BUFFERS};
 use super::Context;
 use crate::api::enums::*;
 use crate::api::types::GLenum;
+use crate::fragment::blend::{Blend, BlendEquation, BlendFactor, BlendFunc};
+use crate::fragment::logic_op::LogicOp;
+use crate::fragment::stencil::{StencilFace as CompiledStencilFace, StencilOp};
+use crate::fragment::{AlphaTest, FragmentState, StencilTest};
+use crate::framebuffer::ColorFormat;
 
 /// Whether `factor` is a legal GL 2.1 blend factor, as source (`source`) or destination.
 pub fn is_blend_factor(factor: GLenum, source: bool) -> bool {
@@ -62,6 +67,66 @@ pub fn int_to_normalized_float(i: i32) -> f32 {
     (2.0 * i as f32 + 1.0) * (1.0 / 4294967294.0)
 }
 
+/// The blend factor a validated GLenum names.
+pub fn blend_factor(factor: GLenum) -> BlendFactor {
+    match factor {
+        GL_ZERO => BlendFactor::Zero,
+        GL_SRC_COLOR => BlendFactor::SrcColor,
+        GL_ONE_MINUS_SRC_COLOR => BlendFactor::OneMinusSrcColor,
+        GL_DST_COLOR => BlendFactor::DstColor,
+        GL_ONE_MINUS_DST_COLOR => BlendFactor::OneMinusDstColor,
+        GL_SRC_ALPHA => BlendFactor::SrcAlpha,
+        GL_ONE_MINUS_SRC_ALPHA => BlendFactor::OneMinusSrcAlpha,
+        GL_DST_ALPHA => BlendFactor::DstAlpha,
+        GL_ONE_MINUS_DST_ALPHA => BlendFactor::OneMinusDstAlpha,
+        GL_CONSTANT_COLOR => BlendFactor::ConstantColor,
+        GL_ONE_MINUS_CONSTANT_COLOR => BlendFactor::OneMinusConstantColor,
+        GL_CONSTANT_ALPHA => BlendFactor::ConstantAlpha,
+        GL_ONE_MINUS_CONSTANT_ALPHA => BlendFactor::OneMinusConstantAlpha,
+        GL_SRC_ALPHA_SATURATE => BlendFactor::SrcAlphaSaturate,
+        _ => BlendFactor::One,
+    }
+}
+
+/// The blend equation a validated GLenum names.
+pub fn blend_equation(mode: GLenum) -> BlendEquation {
+    match mode {
+        GL_FUNC_SUBTRACT => BlendEquation::Subtract,
+        GL_FUNC_REVERSE_SUBTRACT => BlendEquation::ReverseSubtract,
+        GL_MIN => BlendEquation::Min,
+        GL_MAX => BlendEquation::Max,
+        _ => BlendEquation::Add,
+    }
+}
+
+/// The stencil operation a validated GLenum names.
+pub fn stencil_op(op: GLenum) -> StencilOp {
+    match op {
+        GL_ZERO => StencilOp::Zero,
+        GL_REPLACE => StencilOp::Replace,
+        GL_INCR => StencilOp::Incr,
+        GL_DECR => StencilOp::Decr,
+        GL_INCR_WRAP => StencilOp::IncrWrap,
+        GL_DECR_WRAP => StencilOp::DecrWrap,
+        GL_INVERT => StencilOp::Invert,
+        _ => StencilOp::Keep,
+    }
+}
+
+/// One face's stencil state for an 8-bit stencil buffer: the reference clamped to
+/// [0, 255] (GL 2.1 §4.1.5), the masks cut to 8 bits.
+pub fn compile_stencil_face(face: &StencilFace) -> CompiledStencilFace {
+    CompiledStencilFace {
+        func: face.func,
+        reference: face.reference.clamp(0, 255) as u8,
+        value_mask: face.value_mask as u8,
+        write_mask: face.write_mask as u8,
+        sfail: stencil_op(face.fail),
+        zfail: stencil_op(face.depth_fail),
+        zpass: stencil_op(face.depth_pass),
+    }
+}
+
 /// The faces a glStencil*Separate `face` names (front, back), or `None` if it is not a face.
 fn separate_faces(face: GLenum) -> Option<(bool, bool)> {
     match face {
@@ -96,6 +161,52 @@ impl StencilState {
 }
 
 impl Context {
+    /// Compiles the alpha test, stencil, blending, logic op and dither state into
+    /// `fragment`, whose color targets are written from the draw buffers `buffer_of[i]`
+    /// (`None`: not written) of a framebuffer of `format` with `stencil_bits`.
+    pub fn compile_fragment_ops(
+        &self,
+        fragment: &mut FragmentState,
+        buffer_of: &[Option<usize>],
+        format: ColorFormat,
+        stencil_bits: u32,
+    ) {
+        let c = &self.state.color;
+        fragment.alpha = c.alpha_test.then_some(AlphaTest {
+            func: c.alpha_func,
+            reference: c.alpha_ref,
+            unorm8: matches!(format, ColorFormat::Unorm8 { .. } | ColorFormat::Rgb565),
+        });
+        let st = &self.state.stencil;
+        fragment.stencil = (st.test && stencil_bits > 0).then(|| StencilTest {
+            front: compile_stencil_face(&st.front),
+            back: compile_stencil_face(st.back_face_in_use()),
+        });
+        // The logic op replaces blending; it does not apply to float buffers, which blend.
+        fragment.logic_op =
+            (c.color_logic_op && !format.is_float()).then(|| LogicOp::from_truth_table(c.logic_op as u8));
+        fragment.blend = buffer_of
+            .iter()
+            .map(|buffer| {
+                let i = (*buffer)?;
+                (c.blend[i] && fragment.logic_op.is_none()).then(|| {
+                    let func = |src, dst, equation| BlendFunc {
+                        src: blend_factor(src),
+                        dst: blend_factor(dst),
+                        equation: blend_equation(equation),
+                    };
+                    Blend {
+                        rgb: func(c.blend_src_rgb[i], c.blend_dst_rgb[i], c.blend_equation_rgb[i]),
+                        alpha: func(c.blend_src_alpha[i], c.blend_dst_alpha[i], c.blend_equation_alpha[i]),
+                    }
+                    .for_target(format.has_alpha())
+                })
+            })
+            .collect();
+        fragment.blend_color = c.blend_color;
+        fragment.dither = c.dither && format == ColorFormat::Rgb565;
+    }
+
     /// glDepthFunc.
     pub fn depth_func(&mut self, func: GLenum) {
         if !self.check_outside_begin_end() {

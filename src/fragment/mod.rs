@@ -1,20 +1,24 @@
 //! The per-fragment operations, applied to one span of a tile row at a time.
 //!
 //! A draw's state is compiled into a [`FragmentState`] once; disabled operations are absent
-//! from it rather than tested per pixel. This first path does the depth test (every
-//! function, with the write mask) and writes colors to every draw target with its color
-//! mask; the full pipeline of the seeds (alpha, stencil, blending, logic op, fog, dither)
-//! builds on the same span interface.
+//! from it rather than tested per pixel. The span path (driven by `raster::shade_span`)
+//! runs them in GL order: alpha test, stencil test, depth test and the stencil operations
+//! ([`stencil_depth_test`]), then per color target blending or the logic op, dither and the
+//! masked write ([`output`]). Fog and the color sum are not wired yet.
 pub mod alpha;
 pub mod blend;
 pub mod dither;
 pub mod fog;
 pub mod logic_op;
+pub mod output;
 pub mod stencil;
 
 use crate::context::state::CompareFunc;
 use crate::framebuffer::band::{ColorBand, DepthBand};
 use crate::framebuffer::format::{float_to_unorm, fragment_depth_to_fixed};
+use blend::Blend;
+use logic_op::LogicOp;
+use stencil::StencilFace;
 
 /// Longest span the fragment stage processes at once (one tile row).
 pub const MAX_SPAN: usize = 64;
@@ -36,6 +40,136 @@ pub struct FragmentState {
     pub color_masks: Vec<Option<[bool; 4]>>,
     /// Clamp colors written to float buffers to [0, 1].
     pub clamp_float: bool,
+    /// `None` when GL_ALPHA_TEST is disabled.
+    pub alpha: Option<AlphaTest>,
+    /// `None` when GL_STENCIL_TEST is disabled or there are no stencil bits.
+    pub stencil: Option<StencilTest>,
+    /// For each color target (as `color_masks`): its draw buffer's blend state, `None` when
+    /// blending is disabled for it or the logic op replaces it.
+    pub blend: Vec<Option<Blend>>,
+    /// GL_BLEND_COLOR, as given (the blend functions clamp it where GL says so).
+    pub blend_color: [f32; 4],
+    /// GL_COLOR_LOGIC_OP's operation when enabled (it replaces blending).
+    pub logic_op: Option<LogicOp>,
+    /// GL_DITHER on an RGB565 framebuffer (the only format tessera dithers).
+    pub dither: bool,
+}
+
+impl FragmentState {
+    /// A state with only the given depth test and color masks (every other stage off).
+    pub fn plain(depth: Option<DepthTest>, color_masks: Vec<Option<[bool; 4]>>, clamp_float: bool) -> Self {
+        let blend = vec![None; color_masks.len()];
+        FragmentState {
+            depth,
+            color_masks,
+            clamp_float,
+            alpha: None,
+            stencil: None,
+            blend,
+            blend_color: [0.0; 4],
+            logic_op: None,
+            dither: false,
+        }
+    }
+
+    /// Whether target `index` needs more than a plain masked write (blend, logic op, dither).
+    #[inline]
+    pub fn target_has_ops(&self, index: usize) -> bool {
+        self.dither || self.logic_op.is_some() || self.blend.get(index).is_some_and(|b| b.is_some())
+    }
+
+    /// The operations of target `index`, written with channel mask `mask`.
+    pub fn target_ops(&self, index: usize, mask: [bool; 4]) -> output::TargetOps<'_> {
+        output::TargetOps {
+            blend: self.blend.get(index).and_then(|b| b.as_ref()),
+            logic_op: self.logic_op,
+            dither: self.dither,
+            blend_color: self.blend_color,
+            mask,
+            clamp_float: self.clamp_float,
+        }
+    }
+}
+
+/// The alpha test of a draw.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AlphaTest {
+    pub func: CompareFunc,
+    pub reference: f32,
+    /// Compare in 8 bits (the first color target is 8-bit unorm or RGB565), see [`alpha`].
+    pub unorm8: bool,
+}
+
+impl AlphaTest {
+    /// The fragments of `live` whose alpha passes.
+    pub fn test(&self, colors: &[[f32; 4]], live: u64) -> u64 {
+        let n = colors.len().min(MAX_SPAN);
+        if self.unorm8 {
+            let mut alphas = [0u8; MAX_SPAN];
+            for (a, c) in alphas.iter_mut().zip(&colors[..n]) {
+                *a = float_to_unorm(c[3], 8) as u8;
+            }
+            alpha::alpha_test_unorm8(self.func, alpha::reference_unorm8(self.reference), &alphas[..n], live)
+        } else {
+            let mut alphas = [0f32; MAX_SPAN];
+            for (a, c) in alphas.iter_mut().zip(&colors[..n]) {
+                *a = c[3];
+            }
+            alpha::alpha_test_f32(self.func, self.reference, &alphas[..n], live)
+        }
+    }
+
+    /// Whether a fragment of alpha `a` passes (one test for a whole flat span).
+    pub fn passes_one(&self, a: f32) -> bool {
+        self.test(&[[0.0, 0.0, 0.0, a]], 1) != 0
+    }
+}
+
+/// The stencil state of a draw: the face front-facing primitives use and the one
+/// back-facing polygons use.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct StencilTest {
+    pub front: StencilFace,
+    pub back: StencilFace,
+}
+
+/// The stencil test, the depth test and the stencil operations on the fragments of `live`
+/// (the `n` pixels from `row_start`), in GL order: fragments failing the stencil test take
+/// `sfail`; the survivors are depth-tested (depth written only where both pass) and take
+/// `zfail` or `zpass`. Without `stencil` this is the depth test alone. Returns the survivors.
+pub fn stencil_depth_test(
+    stencil: Option<&StencilFace>,
+    depth: Option<&DepthTest>,
+    band: &mut DepthBand<'_>,
+    row_start: usize,
+    n: usize,
+    z: &[f32],
+    live: u64,
+) -> u64 {
+    let Some(face) = stencil else {
+        return match depth {
+            Some(test) => depth_test(test, band, row_start, z, live),
+            None => live,
+        };
+    };
+    let mut values = [0u8; MAX_SPAN];
+    let values = &mut values[..n];
+    match band {
+        DepthBand::Packed24(px) => stencil::load_packed(&px[row_start..row_start + n], values),
+        DepthBand::Depth32(_, Some(s)) => values.copy_from_slice(&s[row_start..row_start + n]),
+        // No stencil bits: the context compiles no stencil test then.
+        _ => return live,
+    }
+    let pass = stencil::stencil_and_depth(face, values, live, |m| match depth {
+        Some(test) => depth_test(test, band, row_start, z, m),
+        None => m,
+    });
+    match band {
+        DepthBand::Packed24(px) => stencil::store_packed(values, &mut px[row_start..row_start + n]),
+        DepthBand::Depth32(_, Some(s)) => s[row_start..row_start + n].copy_from_slice(values),
+        _ => {}
+    }
+    pass
 }
 
 /// Whether `fragment func stored` holds; shared by the depth, stencil and alpha tests.

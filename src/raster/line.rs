@@ -3,8 +3,7 @@
 //!
 //! Attributes follow llvmpipe's line planes: they vary along the major axis only, linearly
 //! in window space for z and perspective-correctly (planes of c/w and 1/w) for colors.
-use super::{span_mask, walk_spans, write_span_colors, Band, DrawState, Scratch};
-use crate::fragment::depth_test;
+use super::{shade_span, span_mask, walk_spans, Band, DrawState, Scratch, Span};
 use crate::framebuffer::Rect;
 use crate::setup::line::{LinePlane, LineSetup};
 
@@ -86,30 +85,31 @@ impl LineJob {
         let py = self.setup.row_down(y) as f32;
         let px0 = x0 as f32;
         let row_start = (y - band.y0) as usize * band.width + x0 as usize;
-        let mut live = span_mask(n);
-        let fragment = &state.fragment;
-        if let Some(test) = &fragment.depth {
-            scratch.z.clear();
-            scratch.z.extend((0..n).map(|i| self.z.at(px0 + i as f32, py)));
-            live = depth_test(test, &mut band.depth, row_start, &scratch.z, live);
-            if live == 0 {
-                return;
-            }
-        }
-        scratch.colors.clear();
-        match &self.shading {
-            LineShading::Flat(c) => scratch.colors.resize(n, *c),
-            LineShading::Affine(planes) => {
-                scratch.colors.extend((0..n).map(|i| planes.map(|p| p.at(px0 + i as f32, py))));
-            }
-            LineShading::Perspective { color_over_w, inv_w } => {
-                scratch.colors.extend((0..n).map(|i| {
-                    let px = px0 + i as f32;
-                    let w = 1.0 / inv_w.at(px, py);
-                    color_over_w.map(|p| p.at(px, py) * w)
-                }));
-            }
-        }
-        write_span_colors(fragment, band, row_start, &scratch.colors, live);
+        // Lines are front-facing (GL 2.1 §4.1.5).
+        let span = Span { y, x0, n, row_start, front_facing: true };
+        shade_span(
+            state,
+            band,
+            scratch,
+            span,
+            span_mask(n),
+            |i| self.z.at(px0 + i as f32, py),
+            |colors| {
+                match &self.shading {
+                    LineShading::Flat(c) => return Some(*c),
+                    LineShading::Affine(planes) => {
+                        colors.extend((0..n).map(|i| planes.map(|p| p.at(px0 + i as f32, py))));
+                    }
+                    LineShading::Perspective { color_over_w, inv_w } => {
+                        colors.extend((0..n).map(|i| {
+                            let px = px0 + i as f32;
+                            let w = 1.0 / inv_w.at(px, py);
+                            color_over_w.map(|p| p.at(px, py) * w)
+                        }));
+                    }
+                }
+                None
+            },
+        );
     }
 }

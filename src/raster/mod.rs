@@ -13,7 +13,8 @@ pub mod line;
 pub mod point;
 pub mod triangle;
 
-use crate::fragment::{write_colors, write_uniform_color, FragmentState, MAX_SPAN};
+use crate::fragment::output::write_target;
+use crate::fragment::{stencil_depth_test, write_colors, write_uniform_color, FragmentState, MAX_SPAN};
 use crate::framebuffer::band::Band;
 use crate::framebuffer::{ColorSlot, Framebuffer, Rect};
 use line::LineJob;
@@ -53,19 +54,87 @@ pub struct Scratch {
     pub colors: Vec<[f32; 4]>,
 }
 
-/// Writes a shaded span (`colors[i]` for every bit `i` of `live`, starting at `row_start`
-/// of the band) to every color target the draw writes.
+/// Where a span lies: window row `y`, columns `x0..x0 + n`, starting at pixel `row_start`
+/// of the band, and the facing of the primitive it belongs to (for two-sided stencil).
+#[derive(Clone, Copy, Debug)]
+pub struct Span {
+    pub y: i32,
+    pub x0: i32,
+    pub n: usize,
+    pub row_start: usize,
+    pub front_facing: bool,
+}
+
+/// Runs the per-fragment operations on the fragments of `live` of one span, in GL order:
+/// alpha test, stencil and depth tests, then for each color target blending or the logic
+/// op, dither and the masked write. `z_at(i)` is pixel i's window depth; `colors` fills
+/// `scratch.colors` with the span's colors, or returns the one color of a flat span. Colors
+/// are computed before the tests only when the alpha test needs them.
 #[inline]
-pub fn write_span_colors(
-    fragment: &FragmentState,
+pub fn shade_span(
+    state: &DrawState,
     band: &mut Band<'_>,
-    row_start: usize,
-    colors: &[[f32; 4]],
-    live: u64,
+    scratch: &mut Scratch,
+    span: Span,
+    mut live: u64,
+    z_at: impl Fn(usize) -> f32,
+    colors: impl FnOnce(&mut Vec<[f32; 4]>) -> Option<[f32; 4]>,
 ) {
-    for (target, mask) in band.colors.iter_mut().zip(&fragment.color_masks) {
-        if let Some(mask) = mask {
-            write_colors(&mut target.pixels, row_start, colors, live, *mask, fragment.clamp_float);
+    let fragment = &state.fragment;
+    let mut colors = Some(colors);
+    let mut uniform = None;
+    if let Some(alpha) = &fragment.alpha {
+        scratch.colors.clear();
+        uniform = colors.take().and_then(|c| c(&mut scratch.colors));
+        live = match uniform {
+            Some(c) if alpha.passes_one(c[3]) => live,
+            Some(_) => 0,
+            None => alpha.test(&scratch.colors, live),
+        };
+        if live == 0 {
+            return;
+        }
+    }
+    if fragment.depth.is_some() || fragment.stencil.is_some() {
+        scratch.z.clear();
+        if fragment.depth.is_some() {
+            scratch.z.extend((0..span.n).map(&z_at));
+        }
+        let face = fragment.stencil.as_ref().map(|s| if span.front_facing { &s.front } else { &s.back });
+        live = stencil_depth_test(
+            face,
+            fragment.depth.as_ref(),
+            &mut band.depth,
+            span.row_start,
+            span.n,
+            &scratch.z,
+            live,
+        );
+        if live == 0 {
+            return;
+        }
+    }
+    if let Some(c) = colors {
+        scratch.colors.clear();
+        uniform = c(&mut scratch.colors);
+    }
+    match uniform {
+        Some(color) => write_span_uniform(fragment, band, &span, color, live),
+        None => write_span_colors(fragment, band, &span, &scratch.colors, live),
+    }
+}
+
+/// Writes a shaded span (`colors[i]` for every bit `i` of `live`) to every color target the
+/// draw writes, blending, logic-opping and dithering where the draw says so.
+#[inline]
+pub fn write_span_colors(fragment: &FragmentState, band: &mut Band<'_>, span: &Span, colors: &[[f32; 4]], live: u64) {
+    for (index, (target, mask)) in band.colors.iter_mut().zip(&fragment.color_masks).enumerate() {
+        let Some(mask) = *mask else { continue };
+        if fragment.target_has_ops(index) {
+            let ops = fragment.target_ops(index, mask);
+            write_target(&mut target.pixels, span.row_start, span.x0, span.y, colors, live, &ops);
+        } else {
+            write_colors(&mut target.pixels, span.row_start, colors, live, mask, fragment.clamp_float);
         }
     }
 }
@@ -104,17 +173,17 @@ pub fn span_mask(n: usize) -> u64 {
 
 /// As [`write_span_colors`] for a span of one color (flat shading).
 #[inline]
-pub fn write_span_uniform(
-    fragment: &FragmentState,
-    band: &mut Band<'_>,
-    row_start: usize,
-    n: usize,
-    color: [f32; 4],
-    live: u64,
-) {
-    for (target, mask) in band.colors.iter_mut().zip(&fragment.color_masks) {
-        if let Some(mask) = mask {
-            write_uniform_color(&mut target.pixels, row_start, n, color, live, *mask, fragment.clamp_float);
+pub fn write_span_uniform(fragment: &FragmentState, band: &mut Band<'_>, span: &Span, color: [f32; 4], live: u64) {
+    let n = span.n;
+    let mut expanded = None;
+    for (index, (target, mask)) in band.colors.iter_mut().zip(&fragment.color_masks).enumerate() {
+        let Some(mask) = *mask else { continue };
+        if fragment.target_has_ops(index) {
+            let colors: &[[f32; 4]; MAX_SPAN] = expanded.get_or_insert([color; MAX_SPAN]);
+            let ops = fragment.target_ops(index, mask);
+            write_target(&mut target.pixels, span.row_start, span.x0, span.y, &colors[..n], live, &ops);
+        } else {
+            write_uniform_color(&mut target.pixels, span.row_start, n, color, live, mask, fragment.clamp_float);
         }
     }
 }

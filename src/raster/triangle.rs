@@ -5,9 +5,8 @@
 //! their precision does not depend on where the triangle lies. Colors are interpolated
 //! perspective-correctly (planes of c/w and 1/w), window z linearly; when all three w are
 //! equal the divide is skipped, which changes nothing but time.
-use super::{span_mask, walk_spans, write_span_colors, write_span_uniform, Band, DrawState, Scratch};
+use super::{shade_span, span_mask, walk_spans, Band, DrawState, Scratch, Span};
 use crate::context::state::MAX_TEXTURE_UNITS;
-use crate::fragment::depth_test;
 use crate::framebuffer::Rect;
 use crate::setup::triangle::{TriangleSetup, ONE};
 
@@ -88,6 +87,9 @@ pub struct TriangleJob {
     pub z: Plane,
     pub shading: Shading,
     pub varyings: Varyings,
+    /// Whether the triangle faces front (it selects the stencil face); set by the caller,
+    /// true from [`TriangleJob::new`].
+    pub front_facing: bool,
 }
 
 /// The window-space inputs of one vertex.
@@ -156,7 +158,7 @@ impl TriangleJob {
                 inv_w: plane(inv_w),
             }
         };
-        Some(TriangleJob { setup, anchor: [p0[0] as f32, p0[1] as f32], z, shading, varyings })
+        Some(TriangleJob { setup, anchor: [p0[0] as f32, p0[1] as f32], z, shading, varyings, front_facing: true })
     }
 
     /// The pixel rectangle that may contain covered centres.
@@ -190,30 +192,31 @@ impl TriangleJob {
                 return;
             }
         }
-        let fragment = &state.fragment;
-        if let Some(test) = &fragment.depth {
-            scratch.z.clear();
-            scratch.z.extend((0..n).map(|i| self.z.at(dx0 + i as f32, dy)));
-            live = depth_test(test, &mut band.depth, row_start, &scratch.z, live);
-            if live == 0 {
-                return;
-            }
-        }
-        scratch.colors.clear();
-        match &self.shading {
-            Shading::Flat(c) => return write_span_uniform(fragment, band, row_start, n, *c, live),
-            Shading::Affine(planes) => {
-                scratch.colors.extend((0..n).map(|i| planes.map(|p| p.at(dx0 + i as f32, dy))));
-            }
-            Shading::Perspective { color_over_w, inv_w } => {
-                scratch.colors.extend((0..n).map(|i| {
-                    let dx = dx0 + i as f32;
-                    let w = 1.0 / inv_w.at(dx, dy);
-                    color_over_w.map(|p| p.at(dx, dy) * w)
-                }));
-            }
-        }
-        write_span_colors(fragment, band, row_start, &scratch.colors, live);
+        let span = Span { y, x0, n, row_start, front_facing: self.front_facing };
+        shade_span(
+            state,
+            band,
+            scratch,
+            span,
+            live,
+            |i| self.z.at(dx0 + i as f32, dy),
+            |colors| {
+                match &self.shading {
+                    Shading::Flat(c) => return Some(*c),
+                    Shading::Affine(planes) => {
+                        colors.extend((0..n).map(|i| planes.map(|p| p.at(dx0 + i as f32, dy))));
+                    }
+                    Shading::Perspective { color_over_w, inv_w } => {
+                        colors.extend((0..n).map(|i| {
+                            let dx = dx0 + i as f32;
+                            let w = 1.0 / inv_w.at(dx, dy);
+                            color_over_w.map(|p| p.at(dx, dy) * w)
+                        }));
+                    }
+                }
+                None
+            },
+        );
     }
 }
 
