@@ -947,6 +947,81 @@ mod tests {
     const RED: [f32; 4] = [1.0, 0.0, 0.0, 1.0];
     const GREEN: [f32; 4] = [0.0, 1.0, 0.0, 1.0];
 
+    fn slot_pixel(ctx: &mut Context, d: &Arc<Mutex<Drawable>>, slot: ColorSlot, x: i32, y: i32) -> [u8; 4] {
+        ctx.flush_rendering();
+        let mut row = Vec::new();
+        d.lock().unwrap().framebuffer.color(slot).unwrap().read_row_f32(y, x, x + 1, &mut row);
+        row[0].map(|c| (c * 255.0).round() as u8)
+    }
+
+    fn square(ctx: &mut Context, x0: f32, y0: f32, x1: f32, y1: f32, color: [f32; 4]) {
+        let v = |x, y| vertex(x, y, 0.0, color);
+        ctx.draw_vertices(GL_QUADS, &[v(x0, y0), v(x1, y0), v(x1, y1), v(x0, y1)]);
+    }
+
+    #[test]
+    fn each_draw_buffer_blends_with_its_own_state() {
+        let visual = FramebufferConfig {
+            aux_buffers: 2,
+            ..FramebufferConfig::single_buffered(ColorFormat::Unorm8 { alpha: true }, DepthStencilFormat::None, 0)
+        };
+        let (mut ctx, d) = Context::with_test_drawable(visual, 4, 4);
+        ctx.matrix_mode(GL_PROJECTION);
+        ctx.ortho(0.0, 4.0, 0.0, 4.0, -1.0, 1.0);
+        ctx.draw_buffers(&[GL_FRONT_LEFT, GL_AUX0, GL_AUX0 + 1]);
+        assert_eq!(ctx.take_error(), GL_NO_ERROR);
+        ctx.clear_color([0.5; 4]);
+        ctx.clear(GL_COLOR_BUFFER_BIT);
+        // Buffer 0 adds, buffer 1 modulates (glBlendFunci), buffer 2 does not blend.
+        ctx.set_capability_indexed(GL_BLEND, 0, true);
+        ctx.set_capability_indexed(GL_BLEND, 1, true);
+        ctx.blend_func(Some(0), GL_ONE, GL_ONE, GL_ONE, GL_ONE);
+        ctx.blend_func(Some(1), GL_ZERO, GL_SRC_COLOR, GL_ZERO, GL_SRC_COLOR);
+        assert_eq!(ctx.take_error(), GL_NO_ERROR);
+        let mut scene = Scene::new(4, 4);
+        let state = ctx.draw_state(&mut scene, 4, 4, ColorFormat::Unorm8 { alpha: true }, 0, 0);
+        assert!(state.fragment.blend[0].is_some() && state.fragment.blend[1].is_some());
+        assert_eq!(state.fragment.blend[2], None, "a buffer with blending off has no blend stage");
+        square(&mut ctx, 0.0, 0.0, 4.0, 4.0, [0.25, 0.5, 0.75, 0.5]);
+        // The source is (64, 128, 191, 128) in 8 bits, the destination 128.
+        assert_eq!(slot_pixel(&mut ctx, &d, ColorSlot::FrontLeft, 1, 1), [192, 255, 255, 255]);
+        assert_eq!(slot_pixel(&mut ctx, &d, ColorSlot::Aux(0), 1, 1), [32, 64, 96, 64]);
+        assert_eq!(slot_pixel(&mut ctx, &d, ColorSlot::Aux(1), 1, 1), [64, 128, 191, 128]);
+        // The logic op replaces blending on every buffer.
+        ctx.set_capability(GL_COLOR_LOGIC_OP, true);
+        ctx.logic_op(GL_XOR);
+        square(&mut ctx, 0.0, 0.0, 4.0, 4.0, [1.0, 0.0, 1.0, 0.0]);
+        assert_eq!(slot_pixel(&mut ctx, &d, ColorSlot::FrontLeft, 1, 1), [63, 255, 0, 255]);
+        assert_eq!(slot_pixel(&mut ctx, &d, ColorSlot::Aux(0), 1, 1), [223, 64, 159, 64]);
+        assert_eq!(slot_pixel(&mut ctx, &d, ColorSlot::Aux(1), 1, 1), [191, 128, 64, 128]);
+    }
+
+    #[test]
+    fn disabled_stages_are_absent_from_the_compiled_state() {
+        let (mut ctx, _d) = context(4, 4);
+        let mut scene = Scene::new(4, 4);
+        let compile = |ctx: &Context, scene: &mut Scene, format, stencil_bits| {
+            ctx.draw_state(scene, 4, 4, format, 24, stencil_bits).fragment
+        };
+        let rgba8 = ColorFormat::Unorm8 { alpha: true };
+        let f = compile(&ctx, &mut scene, rgba8, 8);
+        assert_eq!((f.alpha, f.stencil, f.logic_op, f.dither), (None, None, None, false));
+        assert!(f.blend.iter().all(|b| b.is_none()));
+        // GL_DITHER is on by default but only RGB565 targets dither.
+        assert!(compile(&ctx, &mut scene, ColorFormat::Rgb565, 8).dither);
+        ctx.set_capability(GL_STENCIL_TEST, true);
+        ctx.set_capability(GL_ALPHA_TEST, true);
+        ctx.set_capability(GL_BLEND, true);
+        ctx.set_capability(GL_COLOR_LOGIC_OP, true);
+        let f = compile(&ctx, &mut scene, rgba8, 8);
+        assert!(f.alpha.is_some() && f.stencil.is_some() && f.logic_op.is_some());
+        assert!(f.blend.iter().all(|b| b.is_none()), "the logic op replaces blending");
+        assert_eq!(compile(&ctx, &mut scene, rgba8, 0).stencil, None, "no stencil bits, no stencil test");
+        // Float buffers blend: the logic op does not apply to them.
+        let f = compile(&ctx, &mut scene, ColorFormat::Float32 { alpha: true }, 8);
+        assert!(f.logic_op.is_none() && f.blend.iter().all(|b| b.is_some()));
+    }
+
     #[test]
     fn a_triangle_covers_exactly_the_centres_inside_it() {
         let (mut ctx, d) = context(8, 8);

@@ -305,3 +305,43 @@ pub fn write_uniform_color(
     let colors = [color; MAX_SPAN];
     write_colors(target, row_start, &colors[..n], live, mask, clamp_float);
 }
+
+#[cfg(test)]
+mod tests {
+    use super::stencil::StencilOp as O;
+    use super::*;
+
+    const FACE: StencilFace = StencilFace {
+        func: CompareFunc::Equal,
+        reference: 3,
+        value_mask: 0xff,
+        write_mask: 0xff,
+        sfail: O::Zero,
+        zfail: O::Incr,
+        zpass: O::Invert,
+    };
+
+    #[test]
+    fn stencil_then_depth_on_packed_and_separate_storage() {
+        // Pixels: stencil fails; stencil passes, depth fails; both pass.
+        let depth = DepthTest { func: CompareFunc::Less, write: true };
+        let z = [0.25f32, 0.75, 0.25];
+        let mut packed = [0x0100_0000 | 0x80_0000u32, 0x0380_0000, 0x0380_0000];
+        let pass =
+            stencil_depth_test(Some(&FACE), Some(&depth), &mut DepthBand::Packed24(&mut packed), 0, 3, &z, 0b111);
+        assert_eq!(pass, 0b100);
+        let q = fragment_depth_to_fixed(0.25, 24);
+        assert_eq!(packed, [0x0080_0000, 0x0480_0000, 0xfc00_0000 | q]);
+        let mut depth32 = [0x8000_0000u32; 3];
+        let mut stencil = [1u8, 3, 3];
+        let band = &mut DepthBand::Depth32(&mut depth32, Some(&mut stencil));
+        assert_eq!(stencil_depth_test(Some(&FACE), Some(&depth), band, 0, 3, &z, 0b111), 0b100);
+        assert_eq!(stencil, [0, 4, 0xfc]);
+        assert_eq!(depth32, [0x8000_0000, 0x8000_0000, fragment_depth_to_fixed(0.25, 32)]);
+        // Without a depth test every stencil survivor takes zpass.
+        let mut stencil = [1u8, 3, 3];
+        let band = &mut DepthBand::Depth32(&mut depth32, Some(&mut stencil));
+        assert_eq!(stencil_depth_test(Some(&FACE), None, band, 0, 3, &z, 0b011), 0b010);
+        assert_eq!(stencil, [0, 0xfc, 3]);
+    }
+}
