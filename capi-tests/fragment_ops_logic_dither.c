@@ -131,6 +131,23 @@ static void rgb565(void)
         }
     capi_check(bad == 0, "%d pixels differ from the expected dither", bad);
     capi_check(dithered_differs > W * H / 4, "the pattern is exercised (%d)", dithered_differs);
+    /* The alpha test on RGB565 compares in float (not in 8 bits as on RGBA8): alpha
+     * 126/255 against GEQUAL references between 8-bit steps. */
+    glDisable(GL_DITHER);
+    glClearColor(0, 0, 0, 0);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glEnable(GL_ALPHA_TEST);
+    static const float refs[4] = {126.5f / 255, 125.5f / 255, 127.5f / 255, 126.2f / 255};
+    for (int i = 0; i < 4; i++) {
+        glAlphaFunc(GL_GEQUAL, refs[i]);
+        glColor4f(1, 1, 1, 126.0f / 255);
+        glBegin(GL_POINTS);
+        glVertex2f(i + 0.5f, 0.5f);
+        glEnd();
+    }
+    glDisable(GL_ALPHA_TEST);
+    glFinish();
+    capi_value("alpha_rgb565", "%04x %04x %04x %04x", px[0], px[1], px[2], px[3]);
     capi_expect_error(GL_NO_ERROR, "rgb565");
 }
 

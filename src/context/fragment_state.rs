@@ -175,7 +175,9 @@ impl Context {
         fragment.alpha = c.alpha_test.then_some(AlphaTest {
             func: c.alpha_func,
             reference: c.alpha_ref,
-            unorm8: matches!(format, ColorFormat::Unorm8 { .. } | ColorFormat::Rgb565),
+            // llvmpipe compares in 8 bits only for 8-bit targets: on RGB565 alpha 126/255
+            // fails GEQUAL 126.2/255 (measured on Mesa 22.3.6), a float comparison.
+            unorm8: matches!(format, ColorFormat::Unorm8 { .. }),
         });
         let st = &self.state.stencil;
         fragment.stencil = (st.test && stencil_bits > 0).then(|| StencilTest {

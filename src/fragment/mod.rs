@@ -96,7 +96,7 @@ impl FragmentState {
 pub struct AlphaTest {
     pub func: CompareFunc,
     pub reference: f32,
-    /// Compare in 8 bits (the first color target is 8-bit unorm or RGB565), see [`alpha`].
+    /// Compare in 8 bits (the color targets are 8-bit unorm), see [`alpha`].
     pub unorm8: bool,
 }
 

@@ -85,7 +85,8 @@ impl LineJob {
         let py = self.setup.row_down(y) as f32;
         let px0 = x0 as f32;
         let row_start = (y - band.y0) as usize * band.width + x0 as usize;
-        // Lines are front-facing (GL 2.1 §4.1.5).
+        // Lines are front-facing (GL 2.1 §4.1.5); so are the edges of polygons in GL_LINE mode, as in
+        // Mesa 22 (llvmpipe and softpipe), though §4.1.5 gives them their polygon's facing.
         let span = Span { y, x0, n, row_start, front_facing: true };
         shade_span(
             state,
