@@ -29,8 +29,9 @@ impl PointJob {
                 let x1 = (x0 + MAX_SPAN as i32).min(area.x1);
                 let n = (x1 - x0) as usize;
                 let row_start = (y - band.y0) as usize * band.width + x0 as usize;
-                // Points are front-facing (GL 2.1 §4.1.5); so are the vertices of polygons in GL_POINT mode, as in
-                // Mesa 22 (llvmpipe and softpipe), though §4.1.5 gives them their polygon's facing.
+                // Points are front-facing (GL 2.1 §4.1.5); so are the vertices of polygons in
+                // GL_POINT mode, as in Mesa 22 (llvmpipe and softpipe), though §4.1.5 gives
+                // them their polygon's facing.
                 let span = Span { y, x0, n, row_start, front_facing: true };
                 shade_span(state, band, scratch, span, span_mask(n), |_| self.z, |_| Some(self.color));
                 x0 = x1;
