@@ -82,6 +82,8 @@ impl Viewport {
             z: map(ndc[2], self.scale[2], self.offset[2]),
             inv_w,
             color: v.color,
+            secondary_color: v.secondary_color,
+            fog_coord: v.fog_coord,
         }
     }
 }
@@ -112,6 +114,15 @@ impl Attribute {
             Attribute::SecondaryColor(c) => v.secondary_color[c],
             Attribute::FogCoord => v.fog_coord,
             Attribute::TexCoord(unit, c) => v.tex_coords[unit][c],
+        }
+    }
+
+    /// The attribute at a line or point vertex (which carries no texture coordinates yet).
+    fn of_line(self, v: &LineVertex) -> f32 {
+        match self {
+            Attribute::SecondaryColor(c) => v.secondary_color[c],
+            Attribute::FogCoord => v.fog_coord,
+            Attribute::TexCoord(..) => 0.0,
         }
     }
 }
@@ -278,7 +289,7 @@ impl Context {
     /// every unit with a texture target enabled. Nothing else is interpolated.
     pub(super) fn varyings_needed(&self) -> Vec<Attribute> {
         let mut needed = Vec::new();
-        if self.state.fog.color_sum {
+        if self.color_sum_active() {
             needed.extend((0..3).map(Attribute::SecondaryColor));
         }
         if self.state.fog.enabled {
@@ -290,6 +301,12 @@ impl Context {
             }
         }
         needed
+    }
+
+    /// Whether GL_COLOR_SUM adds the secondary color (with lighting on, the secondary color
+    /// is the lighting's, which tessera does not compute yet).
+    pub(super) fn color_sum_active(&self) -> bool {
+        self.state.fog.color_sum && !self.state.lighting.enabled
     }
 
     /// The fragment state and clip rectangle of a draw.
@@ -348,17 +365,29 @@ impl Context {
             c => c == GL_TRUE as GLenum,
         };
         let clamp4 = |c: [f32; 4]| if clamp { c.map(|x| if x > 0.0 { x.min(1.0) } else { 0.0 }) } else { c };
+        // The fog coordinate of each vertex, interpolated to the fragments: Mesa's
+        // fixed-function vertex program computes the eye distance per vertex too. The fog
+        // factor is per fragment whatever GL_FOG_HINT says: Mesa 22 draws identical images
+        // under GL_NICEST and GL_FASTEST (capi fragment_ops_fog).
+        let fog = &self.state.fog;
+        let fog_coord = |v: &Vertex, eye: Vec4| match (fog.coord_src, fog.distance_mode) {
+            (GL_FOG_COORD, _) => v.fog_coord,
+            (_, GL_EYE_RADIAL_NV) => eye.truncate().length(),
+            (_, GL_EYE_PLANE) => eye.z,
+            _ => eye.z.abs(),
+        };
         vertices
             .iter()
             .map(|v| {
                 let p = Vec4::from_array(v.position);
+                let eye = modelview * p;
                 ClipVertex {
                     clip: (mvp * p).to_array(),
-                    eye: (modelview * p).to_array(),
+                    eye: eye.to_array(),
                     color: clamp4(v.color),
                     secondary_color: clamp4(v.secondary_color),
                     tex_coords: v.tex_coords,
-                    fog_coord: v.fog_coord,
+                    fog_coord: if fog.enabled { fog_coord(v, eye) } else { v.fog_coord },
                     edge_flag: v.edge_flag,
                 }
             })
@@ -699,6 +728,9 @@ fn clip_outline(planes: &ClipPlanes, poly: &mut Vec<ClipVertex>, scratch: &mut V
                 scratch.push(ClipVertex {
                     clip: mix(from.clip, to.clip),
                     color: mix(from.color, to.color),
+                    secondary_color: mix(from.secondary_color, to.secondary_color),
+                    tex_coords: std::array::from_fn(|u| mix(from.tex_coords[u], to.tex_coords[u])),
+                    fog_coord: from.fog_coord + t * (to.fog_coord - from.fog_coord),
                     edge_flag,
                     ..cur
                 });
@@ -787,10 +819,16 @@ fn emit_clip_line(
     emit_window_line(scene, state, g, wa, wb, flat, stipple);
 }
 
-/// `from + t · (to − from)` for the clip position and color of a clipped line end.
+/// `from + t · (to − from)` for the clip position and attributes of a clipped line end.
 fn lerp_clip(from: &ClipVertex, to: &ClipVertex, t: f32) -> ClipVertex {
     let mix = |a: [f32; 4], b: [f32; 4]| std::array::from_fn(|i| a[i] + t * (b[i] - a[i]));
-    ClipVertex { clip: mix(from.clip, to.clip), color: mix(from.color, to.color), ..*from }
+    ClipVertex {
+        clip: mix(from.clip, to.clip),
+        color: mix(from.color, to.color),
+        secondary_color: mix(from.secondary_color, to.secondary_color),
+        fog_coord: from.fog_coord + t * (to.fog_coord - from.fog_coord),
+        ..*from
+    }
 }
 
 /// Emits a window-space line, cut into its stippled dashes when stippled.
@@ -855,6 +893,8 @@ fn emit_dash(
             z: mix(a.z, b.z),
             inv_w: mix(a.inv_w, b.inv_w),
             color: std::array::from_fn(|i| mix(a.color[i], b.color[i])),
+            secondary_color: std::array::from_fn(|i| mix(a.secondary_color[i], b.secondary_color[i])),
+            fog_coord: mix(a.fog_coord, b.fog_coord),
         }
     };
     let start = if t0 > 0.0 { at(t0) } else { *a };
@@ -863,7 +903,8 @@ fn emit_dash(
 }
 
 fn emit_line_job(scene: &mut Scene, state: u32, g: &Geometry, a: &LineVertex, b: &LineVertex, flat: Option<[f32; 4]>) {
-    if let Some(job) = LineJob::new(a, b, g.line_width, g.height, flat) {
+    let varyings: Vec<[f32; 2]> = g.varyings.iter().map(|v| [v.of_line(a), v.of_line(b)]).collect();
+    if let Some(job) = LineJob::new(a, b, g.line_width, g.height, flat, &varyings) {
         let (bounds, setup) = (job.bounds(), job.setup().clone());
         scene.add_narrow(state, bounds, RasterPrimitive::Line(job), |y0, y1| setup.columns(y0, y1));
     }
@@ -879,7 +920,8 @@ fn emit_window_point(scene: &mut Scene, state: u32, g: &Geometry, w: &LineVertex
     let rect = point_rect(w.x, w.y_down, g.point_size, g.height);
     // llvmpipe interpolates point colors perspective-correctly too: (c/w)·w.
     let color = if w.inv_w == 1.0 { w.color } else { w.color.map(|c| c * w.inv_w * (1.0 / w.inv_w)) };
-    scene.add(state, rect, RasterPrimitive::Point(PointJob { rect, z: w.z, color }));
+    let varyings = g.varyings.iter().map(|v| v.of_line(w)).collect();
+    scene.add(state, rect, RasterPrimitive::Point(PointJob { rect, z: w.z, color, varyings }));
 }
 
 /// glPolygonOffset's depth offset for a triangle: factor × max depth slope + units × r,

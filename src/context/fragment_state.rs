@@ -18,6 +18,7 @@ use super::Context;
 use crate::api::enums::*;
 use crate::api::types::GLenum;
 use crate::fragment::blend::{Blend, BlendEquation, BlendFactor, BlendFunc};
+use crate::fragment::fog::{Fog, FogMode};
 use crate::fragment::logic_op::LogicOp;
 use crate::fragment::stencil::{StencilFace as CompiledStencilFace, StencilOp};
 use crate::fragment::{AlphaTest, FragmentState, StencilTest};
@@ -171,6 +172,19 @@ impl Context {
         format: ColorFormat,
         stencil_bits: u32,
     ) {
+        let fog = &self.state.fog;
+        fragment.color_sum = self.color_sum_active();
+        fragment.fog = fog.enabled.then(|| Fog {
+            mode: match fog.mode {
+                GL_LINEAR => FogMode::Linear,
+                GL_EXP2 => FogMode::Exp2,
+                _ => FogMode::Exp,
+            },
+            start: fog.start,
+            end: fog.end,
+            density: fog.density,
+            color: fog.color.map(|x| if x > 0.0 { x.min(1.0) } else { 0.0 }),
+        });
         let c = &self.state.color;
         fragment.alpha = c.alpha_test.then_some(AlphaTest {
             func: c.alpha_func,

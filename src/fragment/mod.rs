@@ -4,7 +4,8 @@
 //! from it rather than tested per pixel. The span path (driven by `raster::shade_span`)
 //! runs them in GL order: alpha test, stencil test, depth test and the stencil operations
 //! ([`stencil_depth_test`]), then per color target blending or the logic op, dither and the
-//! masked write ([`output`]). Fog and the color sum are not wired yet.
+//! masked write ([`output`]). Before them, the color sum and fog
+//! ([`fog`]) finish the fragment colors (`raster::shade_span` applies them once colors are known).
 pub mod alpha;
 pub mod blend;
 pub mod dither;
@@ -53,6 +54,10 @@ pub struct FragmentState {
     pub logic_op: Option<LogicOp>,
     /// GL_DITHER on an RGB565 framebuffer (the only format tessera dithers).
     pub dither: bool,
+    /// GL_COLOR_SUM with lighting off: the secondary color (varyings 0..3) is added to RGB.
+    pub color_sum: bool,
+    /// GL_FOG when enabled: the fog coordinate is varying 3 with the color sum, else 0.
+    pub fog: Option<fog::Fog>,
 }
 
 impl FragmentState {
@@ -69,6 +74,47 @@ impl FragmentState {
             blend_color: [0.0; 4],
             logic_op: None,
             dither: false,
+            color_sum: false,
+            fog: None,
+        }
+    }
+
+    /// Whether the fragment colors need the interpolated varyings (color sum or fog).
+    #[inline]
+    pub fn needs_varyings(&self) -> bool {
+        self.color_sum || self.fog.is_some()
+    }
+
+    /// Adds the secondary color (clamped to [0, 1] when `clamp_float` says fragment colors
+    /// are clamped) and fogs the fragments of `live`; `varyings(i, out)` gives fragment i's
+    /// varyings. The color sum precedes fog (GL 2.1 §3.10, §3.11).
+    pub fn sum_and_fog(
+        &self,
+        colors: &mut [[f32; 4]],
+        live: u64,
+        scratch: &mut [f32],
+        varyings: impl Fn(usize, &mut [f32]),
+    ) {
+        let n = colors.len().min(MAX_SPAN);
+        let mut coords = [0f32; MAX_SPAN];
+        let fog_index = if self.color_sum { 3 } else { 0 };
+        for (i, color) in colors[..n].iter_mut().enumerate() {
+            if live & (1 << i) == 0 {
+                continue;
+            }
+            varyings(i, scratch);
+            if self.color_sum {
+                for (c, &s) in color[..3].iter_mut().zip(&scratch[..3]) {
+                    *c += s;
+                    if self.clamp_float {
+                        *c = if *c > 0.0 { c.min(1.0) } else { 0.0 };
+                    }
+                }
+            }
+            coords[i] = scratch.get(fog_index).copied().unwrap_or(0.0);
+        }
+        if let Some(fog) = &self.fog {
+            fog::apply_fog(fog, &coords[..n], &mut colors[..n], live);
         }
     }
 
@@ -320,6 +366,30 @@ mod tests {
         zfail: O::Incr,
         zpass: O::Invert,
     };
+
+    #[test]
+    fn color_sum_clamps_before_fog() {
+        let mut state = FragmentState::plain(None, vec![], true);
+        state.color_sum = true;
+        state.fog = Some(fog::Fog {
+            mode: fog::FogMode::Linear,
+            start: 0.0,
+            end: 1.0,
+            density: 1.0,
+            color: [0.0, 0.0, 1.0, 1.0],
+        });
+        let mut colors = [[0.75, 0.25, 0.0, 0.5], [0.75, 0.25, 0.0, 0.5]];
+        let mut scratch = [0.0; 4];
+        // Secondary (0.5, 0.25, 0) and fog coordinate 0.5 (f = 0.5); pixel 1 is not live.
+        state.sum_and_fog(&mut colors, 0b01, &mut scratch, |_, out| out.copy_from_slice(&[0.5, 0.25, 0.0, 0.5]));
+        assert_eq!(colors[0], [0.5, 0.25, 0.5, 0.5]);
+        assert_eq!(colors[1], [0.75, 0.25, 0.0, 0.5]);
+        // Without fog the fog coordinate is not read; unclamped float colors keep the full sum.
+        state.fog = None;
+        state.clamp_float = false;
+        state.sum_and_fog(&mut colors, 0b10, &mut scratch[..3], |_, out| out.copy_from_slice(&[0.5, 0.0, 0.25]));
+        assert_eq!(colors[1], [1.25, 0.25, 0.25, 0.5]);
+    }
 
     #[test]
     fn stencil_then_depth_on_packed_and_separate_storage() {

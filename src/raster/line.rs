@@ -28,6 +28,9 @@ pub struct LineVertex {
     pub z: f32,
     pub inv_w: f32,
     pub color: [f32; 4],
+    /// Read for the varyings a draw needs.
+    pub secondary_color: [f32; 4],
+    pub fog_coord: f32,
 }
 
 /// A set-up line with everything its fragments need.
@@ -36,12 +39,23 @@ pub struct LineJob {
     setup: LineSetup,
     z: LinePlane,
     shading: LineShading,
+    /// Planes of a/w for the draw's varyings, and of 1/w (perspective-correct, as colors).
+    varyings_over_w: Vec<LinePlane>,
+    varyings_inv_w: LinePlane,
 }
 
 impl LineJob {
     /// Sets up the line `a`–`b` of GL width `width` in a framebuffer `height` rows high;
-    /// `flat` is the flat-shading color if flat shaded. `None` if it draws nothing.
-    pub fn new(a: &LineVertex, b: &LineVertex, width: f32, height: i32, flat: Option<[f32; 4]>) -> Option<LineJob> {
+    /// `flat` is the flat-shading color if flat shaded; `varyings` the values of the draw's
+    /// varyings at `a` and `b`. `None` if it draws nothing.
+    pub fn new(
+        a: &LineVertex,
+        b: &LineVertex,
+        width: f32,
+        height: i32,
+        flat: Option<[f32; 4]>,
+        varyings: &[[f32; 2]],
+    ) -> Option<LineJob> {
         let setup = LineSetup::new([a.x, a.y_down], [b.x, b.y_down], width, height)?;
         let g = setup.gradient;
         let z = g.plane(a.z, b.z);
@@ -54,7 +68,9 @@ impl LineJob {
                 inv_w: g.plane(a.inv_w, b.inv_w),
             },
         };
-        Some(LineJob { setup, z, shading })
+        let varyings_over_w = varyings.iter().map(|v| g.plane(v[0] * a.inv_w, v[1] * b.inv_w)).collect();
+        let varyings_inv_w = g.plane(a.inv_w, b.inv_w);
+        Some(LineJob { setup, z, shading, varyings_over_w, varyings_inv_w })
     }
 
     pub fn setup(&self) -> &LineSetup {
@@ -110,6 +126,11 @@ impl LineJob {
                     }
                 }
                 None
+            },
+            |i, out| {
+                let px = px0 + i as f32;
+                let w = 1.0 / self.varyings_inv_w.at(px, py);
+                out.iter_mut().zip(&self.varyings_over_w).for_each(|(o, p)| *o = p.at(px, py) * w);
             },
         );
     }

@@ -52,6 +52,8 @@ pub enum Primitive {
 pub struct Scratch {
     pub z: Vec<f32>,
     pub colors: Vec<[f32; 4]>,
+    /// One fragment's varyings (color sum and fog).
+    pub varyings: Vec<f32>,
 }
 
 /// Where a span lies: window row `y`, columns `x0..x0 + n`, starting at pixel `row_start`
@@ -68,9 +70,13 @@ pub struct Span {
 /// Runs the per-fragment operations on the fragments of `live` of one span, in GL order:
 /// alpha test, stencil and depth tests, then for each color target blending or the logic
 /// op, dither and the masked write. `z_at(i)` is pixel i's window depth; `colors` fills
-/// `scratch.colors` with the span's colors, or returns the one color of a flat span. Colors
-/// are computed before the tests only when the alpha test needs them.
+/// `scratch.colors` with the span's colors, or returns the one color of a flat span;
+/// `varyings(i, out)` gives pixel i's varyings, read only for the color sum and fog, which
+/// finish the colors after the tests (they change no alpha, so the alpha test may run
+/// first). Colors are computed before the tests only when the alpha test needs them.
 #[inline]
+// The per-primitive inputs are separate closures so that each primitive's are inlined.
+#[allow(clippy::too_many_arguments)]
 pub fn shade_span(
     state: &DrawState,
     band: &mut Band<'_>,
@@ -79,6 +85,7 @@ pub fn shade_span(
     mut live: u64,
     z_at: impl Fn(usize) -> f32,
     colors: impl FnOnce(&mut Vec<[f32; 4]>) -> Option<[f32; 4]>,
+    varyings: impl Fn(usize, &mut [f32]),
 ) {
     let fragment = &state.fragment;
     let mut colors = Some(colors);
@@ -117,6 +124,15 @@ pub fn shade_span(
     if let Some(c) = colors {
         scratch.colors.clear();
         uniform = c(&mut scratch.colors);
+    }
+    if fragment.needs_varyings() {
+        if let Some(color) = uniform.take() {
+            scratch.colors.clear();
+            scratch.colors.resize(span.n, color);
+        }
+        let fog_slot = usize::from(fragment.color_sum) * 3;
+        scratch.varyings.resize(fog_slot + 1, 0.0);
+        fragment.sum_and_fog(&mut scratch.colors, live, &mut scratch.varyings, varyings);
     }
     match uniform {
         Some(color) => write_span_uniform(fragment, band, &span, color, live),

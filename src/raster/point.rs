@@ -10,6 +10,8 @@ pub struct PointJob {
     pub rect: Rect,
     pub z: f32,
     pub color: [f32; 4],
+    /// The varyings the draw needs (one value each over the whole point).
+    pub varyings: Vec<f32>,
 }
 
 impl PointJob {
@@ -33,7 +35,16 @@ impl PointJob {
                 // GL_POINT mode, as in Mesa 22 (llvmpipe and softpipe), though §4.1.5 gives
                 // them their polygon's facing.
                 let span = Span { y, x0, n, row_start, front_facing: true };
-                shade_span(state, band, scratch, span, span_mask(n), |_| self.z, |_| Some(self.color));
+                shade_span(
+                    state,
+                    band,
+                    scratch,
+                    span,
+                    span_mask(n),
+                    |_| self.z,
+                    |_| Some(self.color),
+                    |_, out| out.iter_mut().zip(&self.varyings).for_each(|(o, &v)| *o = v),
+                );
                 x0 = x1;
             }
         }

@@ -216,6 +216,7 @@ impl TriangleJob {
                 }
                 None
             },
+            |i, out| self.varyings.at(dx0 + i as f32, dy, out),
         );
     }
 }
