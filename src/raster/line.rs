@@ -3,22 +3,20 @@
 //!
 //! Attributes follow llvmpipe's line planes: they vary along the major axis only, linearly
 //! in window space for z and perspective-correctly (planes of c/w and 1/w) for colors.
+use super::interpolate::{Interpolant, Shading, Varyings};
 use super::{shade_span, span_mask, walk_spans, Band, DrawState, Scratch, Span};
 use crate::framebuffer::Rect;
 use crate::setup::line::{LinePlane, LineSetup};
 
-/// How a line's color varies along it.
-#[derive(Clone, Debug, PartialEq)]
-pub enum LineShading {
-    Flat([f32; 4]),
-    /// Linear in window space (equal w at both ends).
-    Affine([LinePlane; 4]),
-    /// Planes of color/w and of 1/w.
-    Perspective {
-        color_over_w: [LinePlane; 4],
-        inv_w: LinePlane,
-    },
+impl Interpolant for LinePlane {
+    #[inline]
+    fn at(&self, px: f32, py: f32) -> f32 {
+        LinePlane::at(self, px, py)
+    }
 }
+
+/// How a line's color varies along it (planes over y-down pixel coordinates).
+pub type LineShading = Shading<LinePlane>;
 
 /// One endpoint of a line in window space (y down, as the line setup wants it).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -40,8 +38,7 @@ pub struct LineJob {
     z: LinePlane,
     shading: LineShading,
     /// Planes of a/w for the draw's varyings, and of 1/w (perspective-correct, as colors).
-    varyings_over_w: Vec<LinePlane>,
-    varyings_inv_w: LinePlane,
+    varyings: Varyings<LinePlane>,
 }
 
 impl LineJob {
@@ -68,9 +65,9 @@ impl LineJob {
                 inv_w: g.plane(a.inv_w, b.inv_w),
             },
         };
-        let varyings_over_w = varyings.iter().map(|v| g.plane(v[0] * a.inv_w, v[1] * b.inv_w)).collect();
-        let varyings_inv_w = g.plane(a.inv_w, b.inv_w);
-        Some(LineJob { setup, z, shading, varyings_over_w, varyings_inv_w })
+        let over_w = varyings.iter().map(|v| g.plane(v[0] * a.inv_w, v[1] * b.inv_w)).collect();
+        let varyings = Varyings::new(over_w, g.plane(a.inv_w, b.inv_w));
+        Some(LineJob { setup, z, shading, varyings })
     }
 
     pub fn setup(&self) -> &LineSetup {
@@ -111,27 +108,8 @@ impl LineJob {
             span,
             span_mask(n),
             |i| self.z.at(px0 + i as f32, py),
-            |colors| {
-                match &self.shading {
-                    LineShading::Flat(c) => return Some(*c),
-                    LineShading::Affine(planes) => {
-                        colors.extend((0..n).map(|i| planes.map(|p| p.at(px0 + i as f32, py))));
-                    }
-                    LineShading::Perspective { color_over_w, inv_w } => {
-                        colors.extend((0..n).map(|i| {
-                            let px = px0 + i as f32;
-                            let w = 1.0 / inv_w.at(px, py);
-                            color_over_w.map(|p| p.at(px, py) * w)
-                        }));
-                    }
-                }
-                None
-            },
-            |i, out| {
-                let px = px0 + i as f32;
-                let w = 1.0 / self.varyings_inv_w.at(px, py);
-                out.iter_mut().zip(&self.varyings_over_w).for_each(|(o, p)| *o = p.at(px, py) * w);
-            },
+            |colors| self.shading.span_colors(px0, py, n, colors),
+            |i, out| self.varyings.at(px0 + i as f32, py, out),
         );
     }
 }

@@ -5,6 +5,7 @@
 //! their precision does not depend on where the triangle lies. Colors are interpolated
 //! perspective-correctly (planes of c/w and 1/w), window z linearly; when all three w are
 //! equal the divide is skipped, which changes nothing but time.
+use super::interpolate::{self, Interpolant};
 use super::{shade_span, span_mask, walk_spans, Band, DrawState, Scratch, Span};
 use crate::context::state::MAX_TEXTURE_UNITS;
 use crate::framebuffer::Rect;
@@ -38,45 +39,18 @@ impl Plane {
     }
 }
 
-/// How a triangle's color varies over it.
-#[derive(Clone, Debug, PartialEq)]
-pub enum Shading {
-    /// One color (flat shading, or all three vertices equal).
-    Flat([f32; 4]),
-    /// Linear in window space (all w equal: orthographic projections).
-    Affine([Plane; 4]),
-    /// Planes of color/w and of 1/w.
-    Perspective { color_over_w: [Plane; 4], inv_w: Plane },
-}
-
-/// The attributes beyond color that a draw's later stages read (secondary color, fog
-/// coordinate, texture coordinates), interpolated perspective-correctly: planes of a/w and
-/// the plane of 1/w. Empty (and free) when the draw needs none.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct Varyings {
-    over_w: Vec<Plane>,
-    inv_w: Plane,
-}
-
-impl Varyings {
-    /// How many scalar attributes are interpolated.
-    pub fn len(&self) -> usize {
-        self.over_w.len()
-    }
-
-    pub fn is_empty(&self) -> bool {
-        self.over_w.is_empty()
-    }
-
-    /// The attributes at offset (dx, dy) from the triangle's anchor, into `out`.
+impl Interpolant for Plane {
     #[inline]
-    pub fn at(&self, dx: f32, dy: f32, out: &mut [f32]) {
-        let w = 1.0 / self.inv_w.at(dx, dy);
-        for (o, p) in out.iter_mut().zip(&self.over_w) {
-            *o = p.at(dx, dy) * w;
-        }
+    fn at(&self, dx: f32, dy: f32) -> f32 {
+        Plane::at(self, dx, dy)
     }
 }
+
+/// How a triangle's color varies over it (planes around its anchor).
+pub type Shading = interpolate::Shading<Plane>;
+
+/// A triangle's extra attributes (planes around its anchor).
+pub type Varyings = interpolate::Varyings<Plane>;
 
 /// A set-up triangle with everything its fragments need.
 #[derive(Clone, Debug)]
@@ -147,16 +121,14 @@ impl TriangleJob {
         let varyings = if varyings.is_empty() {
             Varyings::default()
         } else {
-            Varyings {
-                over_w: varyings
-                    .iter()
-                    .map(|a| {
-                        let a = order.map(|i| a[i]);
-                        plane([a[0] * inv_w[0], a[1] * inv_w[1], a[2] * inv_w[2]])
-                    })
-                    .collect(),
-                inv_w: plane(inv_w),
-            }
+            let over_w = varyings
+                .iter()
+                .map(|a| {
+                    let a = order.map(|i| a[i]);
+                    plane([a[0] * inv_w[0], a[1] * inv_w[1], a[2] * inv_w[2]])
+                })
+                .collect();
+            Varyings::new(over_w, plane(inv_w))
         };
         Some(TriangleJob { setup, anchor: [p0[0] as f32, p0[1] as f32], z, shading, varyings, front_facing: true })
     }
@@ -200,22 +172,7 @@ impl TriangleJob {
             span,
             live,
             |i| self.z.at(dx0 + i as f32, dy),
-            |colors| {
-                match &self.shading {
-                    Shading::Flat(c) => return Some(*c),
-                    Shading::Affine(planes) => {
-                        colors.extend((0..n).map(|i| planes.map(|p| p.at(dx0 + i as f32, dy))));
-                    }
-                    Shading::Perspective { color_over_w, inv_w } => {
-                        colors.extend((0..n).map(|i| {
-                            let dx = dx0 + i as f32;
-                            let w = 1.0 / inv_w.at(dx, dy);
-                            color_over_w.map(|p| p.at(dx, dy) * w)
-                        }));
-                    }
-                }
-                None
-            },
+            |colors| self.shading.span_colors(dx0, dy, n, colors),
             |i, out| self.varyings.at(dx0 + i as f32, dy, out),
         );
     }
