@@ -49,6 +49,27 @@ void capi_value(const char *key, const char *fmt, ...)
     fflush(stdout); /* keep the line if the program crashes later */
 }
 
+void capi_value_query(const char *stage, const char *name, GLenum pname, int count)
+{
+    GLboolean b[16];
+    GLint i[16];
+    GLfloat f[16];
+    GLdouble d[16];
+    char key[128], line[2048];
+    int n = 0;
+    if (count > 16)
+        count = 16;
+    glGetBooleanv(pname, b);
+    glGetIntegerv(pname, i);
+    glGetFloatv(pname, f);
+    glGetDoublev(pname, d);
+    for (int k = 0; k < count; k++)
+        n += snprintf(line + n, sizeof line - n, "b=%d i=%d f=%a d=%a ", b[k], i[k], f[k], d[k]);
+    line[n] = 0;
+    snprintf(key, sizeof key, "%s.%s", stage, name);
+    capi_value(key, "%s", line);
+}
+
 void capi_expect_error_at(GLenum expected, const char *what, const char *file, int line)
 {
     GLenum got = glGetError();

@@ -43,6 +43,10 @@ void capi_check_at(int cond, const char *file, int line, const char *fmt, ...)
 /* Prints "VALUE <key> <formatted value>": compared between Mesa and tessera. */
 void capi_value(const char *key, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 
+/* Queries pname (count values, at most 16) with glGetBooleanv/Integerv/Floatv/Doublev and
+ * prints all four as one VALUE line keyed "<stage>.<name>" (floats as %a, bit for bit). */
+void capi_value_query(const char *stage, const char *name, GLenum pname, int count);
+
 /* Checks glGetError() == expected (an assertion) and prints it as a VALUE. */
 #define capi_expect_error(expected, what) capi_expect_error_at((expected), (what), __FILE__, __LINE__)
 void capi_expect_error_at(GLenum expected, const char *what, const char *file, int line);

@@ -74,20 +74,7 @@ static PFNGLSTENCILFUNCSEPARATEATIPROC stencil_func_separate_ati;
 static void print_all(const char *stage)
 {
     for (int q = 0; q < NQUERIES; q++) {
-        GLboolean b[4];
-        GLint i[4];
-        GLfloat f[4];
-        GLdouble d[4];
-        char key[128], line[512];
-        int n = 0;
-        glGetBooleanv(queries[q].pname, b);
-        glGetIntegerv(queries[q].pname, i);
-        glGetFloatv(queries[q].pname, f);
-        glGetDoublev(queries[q].pname, d);
-        for (int k = 0; k < queries[q].count; k++)
-            n += snprintf(line + n, sizeof line - n, "b=%d i=%d f=%a d=%a ", b[k], i[k], f[k], d[k]);
-        snprintf(key, sizeof key, "%s.%s", stage, queries[q].name);
-        capi_value(key, "%s", line);
+        capi_value_query(stage, queries[q].name, queries[q].pname, queries[q].count);
     }
     capi_expect_error(GL_NO_ERROR, stage);
 }
