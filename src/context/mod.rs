@@ -15,6 +15,7 @@ pub mod draw;
 pub mod fragment_state;
 pub mod get;
 pub mod hints;
+pub mod lighting;
 pub mod matrix;
 pub mod raster_state;
 pub mod read_pixels;
