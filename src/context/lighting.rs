@@ -36,7 +36,10 @@ pub fn light_param_count(pname: GLenum) -> usize {
     match pname {
         GL_AMBIENT | GL_DIFFUSE | GL_SPECULAR | GL_POSITION => 4,
         GL_SPOT_DIRECTION => 3,
-        GL_SPOT_EXPONENT | GL_SPOT_CUTOFF | GL_CONSTANT_ATTENUATION | GL_LINEAR_ATTENUATION
+        GL_SPOT_EXPONENT
+        | GL_SPOT_CUTOFF
+        | GL_CONSTANT_ATTENUATION
+        | GL_LINEAR_ATTENUATION
         | GL_QUADRATIC_ATTENUATION => 1,
         _ => 0,
     }
@@ -63,7 +66,10 @@ pub fn material_param_count(pname: GLenum) -> usize {
 
 /// Whether a parameter's integer form is a normalized color.
 fn is_color(pname: GLenum) -> bool {
-    matches!(pname, GL_AMBIENT | GL_DIFFUSE | GL_SPECULAR | GL_EMISSION | GL_AMBIENT_AND_DIFFUSE | GL_LIGHT_MODEL_AMBIENT)
+    matches!(
+        pname,
+        GL_AMBIENT | GL_DIFFUSE | GL_SPECULAR | GL_EMISSION | GL_AMBIENT_AND_DIFFUSE | GL_LIGHT_MODEL_AMBIENT
+    )
 }
 
 /// Integer parameters as floats: colors as normalized values, the rest by a cast.
@@ -330,7 +336,8 @@ mod tests {
     use crate::framebuffer::{ColorFormat, DepthStencilFormat, FramebufferConfig};
 
     fn context() -> Context {
-        let visual = FramebufferConfig::single_buffered(ColorFormat::Unorm8 { alpha: true }, DepthStencilFormat::None, 0);
+        let visual =
+            FramebufferConfig::single_buffered(ColorFormat::Unorm8 { alpha: true }, DepthStencilFormat::None, 0);
         Context::with_test_drawable(visual, 4, 4).0
     }
 

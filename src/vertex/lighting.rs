@@ -12,10 +12,12 @@
 //! precision, because llvmpipe's pictures are the reference: constants that Mesa computes on
 //! the CPU (normalized light directions, half vectors, scene colors, light products) use its
 //! C expressions; per-vertex values use its program's order, each light's contribution
-//! accumulated with multiply-adds (`mul_add`, as llvmpipe fuses them), directions normalized
-//! by multiplying with `1/√(v·v)`, `1/d` and the attenuation's reciprocal as divisions.
-//! Mesa's `pow` is a polynomial approximation in llvmpipe; here it is `powf`, which can move
-//! a channel across a rounding boundary (the capi manifest gives the measured tolerance).
+//! accumulated with multiplies and adds (llvmpipe does not fuse them: its NIR options lower
+//! `ffma`), directions normalized by multiplying with `1/√(v·v)`, `1/d` and the
+//! attenuation's reciprocal as divisions. Mesa's `pow` is a polynomial approximation in
+//! llvmpipe, here it is `powf`. Flat-shaded lit pictures match Mesa's bytes exactly in the
+//! capi tests (lighting_render); smooth ones differ by the 1-LSB interpolation differences
+//! every smooth-shaded picture has.
 //!
 //! One deliberate difference: Mesa's program, for a material shininess of zero and a light
 //! that is attenuated (local with attenuation, or a spotlight), raises N·H to the power N·L
@@ -125,9 +127,10 @@ fn normalize(v: [f32; 3]) -> [f32; 3] {
     scale3(v, 1.0 / dot3(v, v).sqrt())
 }
 
-/// `a · b + c` per channel, fused as llvmpipe's multiply-add.
+/// `a · b + c` per channel: a multiply and an add, as llvmpipe runs the program's
+/// multiply-adds (its NIR options lower `ffma`).
 fn mad3(a: f32, b: [f32; 3], c: [f32; 3]) -> [f32; 3] {
-    [a.mul_add(b[0], c[0]), a.mul_add(b[1], c[1]), a.mul_add(b[2], c[2])]
+    [a * b[0] + c[0], a * b[1] + c[1], a * b[2] + c[2]]
 }
 
 impl LightSetup {
@@ -156,16 +159,10 @@ impl LightSetup {
     }
 }
 
-/// The scene color and light products of `m`; `fused` computes the scene color with the
-/// program's multiply-add (tracked materials) instead of Mesa's C expression (constants).
-fn face_setup(m: &Material, model_ambient: [f32; 4], lights: &[LightSetup], fused: bool) -> FaceSetup {
-    let scene_channel = |i: usize| {
-        if fused {
-            model_ambient[i].mul_add(m.ambient[i], m.emission[i])
-        } else {
-            model_ambient[i] * m.ambient[i] + m.emission[i]
-        }
-    };
+/// The scene color and light products of `m` (a multiply and an add per channel, whether
+/// Mesa computes them on the CPU or, for tracked materials, in the program).
+fn face_setup(m: &Material, model_ambient: [f32; 4], lights: &[LightSetup]) -> FaceSetup {
+    let scene_channel = |i: usize| model_ambient[i] * m.ambient[i] + m.emission[i];
     let mut products = [[[0.0; 3]; 3]; MAX_LIGHTS];
     for (product, light) in products.iter_mut().zip(lights) {
         for (k, material) in [m.ambient, m.diffuse, m.specular].iter().enumerate() {
@@ -226,7 +223,7 @@ impl Lighting {
             },
             mode: state.color_material_mode,
         });
-        let faces = state.materials.map(|m| face_setup(&m, state.model_ambient, &lights, false));
+        let faces = state.materials.map(|m| face_setup(&m, state.model_ambient, &lights));
         Lighting {
             lights,
             model_ambient: state.model_ambient,
@@ -255,7 +252,7 @@ impl Lighting {
     /// Replaces the materials (glMaterial between glBegin and glEnd).
     pub fn set_materials(&mut self, materials: &[Material; 2]) {
         self.materials = *materials;
-        self.faces = materials.map(|m| face_setup(&m, self.model_ambient, &self.lights, false));
+        self.faces = materials.map(|m| face_setup(&m, self.model_ambient, &self.lights));
         self.tracked = None;
     }
 
@@ -273,7 +270,7 @@ impl Lighting {
             if tracking.face[f] {
                 let mut m = self.materials[f];
                 set_material_parameter(&mut m, tracking.mode, &color);
-                faces[f] = face_setup(&m, self.model_ambient, &self.lights, true);
+                faces[f] = face_setup(&m, self.model_ambient, &self.lights);
             }
         }
         self.tracked = Some((color, faces));
@@ -284,7 +281,7 @@ impl Lighting {
     pub fn eye_normal(&self, normal: [f32; 3]) -> [f32; 3] {
         let m = &self.inverse_modelview;
         // Component j is column j of the inverse (row j of its transpose) · normal.
-        let n = [0, 1, 2].map(|j| m[4 * j] * normal[0] + m[4 * j + 1] * normal[1] + m[4 * j + 2] * normal[2]);
+        let n = [0, 1, 2].map(|j| dot3([m[4 * j], m[4 * j + 1], m[4 * j + 2]], normal));
         match self.normals {
             NormalScaling::None => n,
             NormalScaling::Normalize => normalize(n),
