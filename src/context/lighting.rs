@@ -333,7 +333,7 @@ pub fn values_to_integers(values: &[Value], round: bool) -> Vec<i32> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::framebuffer::{ColorFormat, DepthStencilFormat, FramebufferConfig};
+    use crate::framebuffer::{ColorFormat, ColorSlot, DepthStencilFormat, FramebufferConfig};
 
     fn context() -> Context {
         let visual =
@@ -398,6 +398,46 @@ mod tests {
         ctx.set_color([0.5; 4]);
         assert_eq!(ctx.state.lighting.materials[1].specular, [0.5; 4]);
         assert_eq!(ctx.state.lighting.materials[0], Material::default());
+    }
+
+    /// glMaterial before each vertex of a long GL_POINTS primitive (delivered in several
+    /// batches): every point is lit with the material given just before it.
+    #[test]
+    fn material_between_begin_and_end_applies_from_the_next_vertex_across_batches() {
+        let visual = FramebufferConfig::single_buffered(ColorFormat::Unorm8 { alpha: true }, DepthStencilFormat::None, 0);
+        let (w, h) = (96usize, 80usize);
+        let (mut ctx, d) = Context::with_test_drawable(visual, w, h);
+        ctx.matrix_mode(GL_PROJECTION);
+        ctx.ortho(0.0, w as f64, 0.0, h as f64, -1.0, 1.0);
+        ctx.set_capability(GL_LIGHTING, true);
+        ctx.set_capability(GL_LIGHT0, true);
+        ctx.light_model(GL_LIGHT_MODEL_AMBIENT, &[0.0; 4]);
+        ctx.material(GL_FRONT, GL_AMBIENT, &[0.0, 0.0, 0.0, 1.0]);
+        let diffuse = |i: usize| [(i % 251) as f32 / 255.0, (i / 251) as f32 / 255.0, 0.5, 1.0];
+        ctx.begin(GL_POINTS);
+        for i in 0..w * h {
+            // Every third vertex keeps the previous material.
+            if i % 3 != 2 {
+                ctx.material(GL_FRONT, GL_DIFFUSE, &diffuse(i));
+            }
+            ctx.vertex([(i % w) as f32 + 0.5, (i / w) as f32 + 0.5, 0.0, 1.0]);
+        }
+        ctx.end();
+        assert_eq!(ctx.take_error(), GL_NO_ERROR);
+        ctx.flush_rendering();
+        let guard = d.lock().unwrap();
+        for y in 0..h {
+            let mut row = Vec::new();
+            guard.framebuffer.color(ColorSlot::FrontLeft).unwrap().read_row_f32(y as i32, 0, w as i32, &mut row);
+            for (x, p) in row.iter().enumerate() {
+                let i = y * w + x;
+                let expected = diffuse(if i % 3 == 2 { i - 1 } else { i });
+                let got = p.map(|c| (c * 255.0).round());
+                let want = expected.map(|c| (c * 255.0).round());
+                assert_eq!(got, want, "point {i}");
+            }
+        }
+        assert_eq!(ctx.state.lighting.materials[0].diffuse, diffuse(w * h - 2), "the last material stays");
     }
 
     #[test]
