@@ -233,17 +233,16 @@ impl Context {
                         s.counter = 0;
                     }
                 }
-                let flat_color = geometry.flat.then(|| clip_vertices[provoking as usize].color);
+                let provoking = &clip_vertices[provoking as usize];
+                let flat_color = geometry.flat.then_some(provoking.color);
                 let (a, b) = (a as usize, b as usize);
-                emit_clip_line(
-                    &mut scene,
-                    state_index,
-                    &geometry,
-                    [&clip_vertices[a], &clip_vertices[b]],
-                    [outcodes[a], outcodes[b]],
-                    flat_color,
-                    stipple.as_mut(),
-                );
+                let (mut ends, codes) = ([clip_vertices[a], clip_vertices[b]], [outcodes[a], outcodes[b]]);
+                if geometry.flat {
+                    // Flat shading covers the secondary color too (the lit specular term).
+                    ends.iter_mut().for_each(|e| e.secondary_color = provoking.secondary_color);
+                }
+                let [ea, eb] = &ends;
+                emit_clip_line(&mut scene, state_index, &geometry, [ea, eb], codes, flat_color, stipple.as_mut());
             }
             Primitive::Triangle { v, provoking, .. } => {
                 let [a, b, c] = v.map(|i| i as usize);

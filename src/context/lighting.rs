@@ -404,7 +404,8 @@ mod tests {
     /// batches): every point is lit with the material given just before it.
     #[test]
     fn material_between_begin_and_end_applies_from_the_next_vertex_across_batches() {
-        let visual = FramebufferConfig::single_buffered(ColorFormat::Unorm8 { alpha: true }, DepthStencilFormat::None, 0);
+        let visual =
+            FramebufferConfig::single_buffered(ColorFormat::Unorm8 { alpha: true }, DepthStencilFormat::None, 0);
         let (w, h) = (96usize, 80usize);
         let (mut ctx, d) = Context::with_test_drawable(visual, w, h);
         ctx.matrix_mode(GL_PROJECTION);

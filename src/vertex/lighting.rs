@@ -100,8 +100,9 @@ pub struct Lighting {
     materials: [Material; 2],
     faces: [FaceSetup; 2],
     tracking: Option<Tracking>,
-    /// The last vertex color a tracked material was made from, and its faces.
-    tracked: Option<([f32; 4], [FaceSetup; 2])>,
+    /// The vertex color `tracked_faces` were made from (GL_COLOR_MATERIAL), if any yet.
+    tracked_color: Option<[f32; 4]>,
+    tracked_faces: [FaceSetup; 2],
 }
 
 fn dot3(a: [f32; 3], b: [f32; 3]) -> f32 {
@@ -235,7 +236,8 @@ impl Lighting {
             materials: state.materials,
             faces,
             tracking,
-            tracked: None,
+            tracked_color: None,
+            tracked_faces: faces,
         }
     }
 
@@ -253,28 +255,26 @@ impl Lighting {
     pub fn set_materials(&mut self, materials: &[Material; 2]) {
         self.materials = *materials;
         self.faces = materials.map(|m| face_setup(&m, self.model_ambient, &self.lights));
-        self.tracked = None;
+        self.tracked_color = None;
     }
 
-    /// The face constants for a vertex of color `color`: the draw's, or those of the
-    /// materials with the tracked parameters replaced by `color`.
-    fn faces_for(&mut self, color: [f32; 4]) -> [FaceSetup; 2] {
-        let Some(tracking) = self.tracking else { return self.faces };
-        if let Some((c, faces)) = self.tracked {
-            if c == color {
-                return faces;
+    /// Under GL_COLOR_MATERIAL, makes `tracked_faces` the face constants of the materials
+    /// with the tracked parameters replaced by `color`, recomputed only when the color
+    /// changes from one vertex to the next.
+    fn track(&mut self, color: [f32; 4]) {
+        let Some(tracking) = self.tracking else { return };
+        if self.tracked_color != Some(color) {
+            for f in 0..2 {
+                self.tracked_faces[f] = if tracking.face[f] {
+                    let mut m = self.materials[f];
+                    set_material_parameter(&mut m, tracking.mode, &color);
+                    face_setup(&m, self.model_ambient, &self.lights)
+                } else {
+                    self.faces[f]
+                };
             }
+            self.tracked_color = Some(color);
         }
-        let mut faces = self.faces;
-        for f in 0..2 {
-            if tracking.face[f] {
-                let mut m = self.materials[f];
-                set_material_parameter(&mut m, tracking.mode, &color);
-                faces[f] = face_setup(&m, self.model_ambient, &self.lights);
-            }
-        }
-        self.tracked = Some((color, faces));
-        faces
     }
 
     /// The eye-space normal of an object-space `normal`, normalized or rescaled as enabled.
@@ -292,7 +292,8 @@ impl Lighting {
     /// The lit colors of a vertex at `eye` (eye coordinates) with object-space `normal` and
     /// vertex color `color` (used by GL_COLOR_MATERIAL). Not clamped.
     pub fn shade(&mut self, eye: [f32; 4], normal: [f32; 3], color: [f32; 4]) -> LitColors {
-        let faces = self.faces_for(color);
+        self.track(color);
+        let faces = if self.tracking.is_some() { &self.tracked_faces } else { &self.faces };
         let n = self.eye_normal(normal);
         let eye3 = [eye[0], eye[1], eye[2]];
         let sides = if self.two_side { 2 } else { 1 };
