@@ -23,6 +23,7 @@
 //! that is attenuated (local with attenuation, or a spotlight), raises N·H to the power N·L
 //! instead of 0 (its dot product fills the exponent's slot); here the specular factor is
 //! then 1, as the specification's 0⁰ = 1 says.
+use crate::api::enums::{GL_BACK, GL_FRONT, GL_SEPARATE_SPECULAR_COLOR};
 use crate::context::state::{Light, LightingState, Material, MAX_LIGHTS};
 
 /// What happens to transformed normals: GL_NORMALIZE, GL_RESCALE_NORMAL (with the factor
@@ -216,10 +217,10 @@ impl Lighting {
     pub fn new(state: &LightingState, inverse_modelview: [f32; 16], normals: NormalScaling) -> Self {
         let lights: Vec<LightSetup> =
             (0..MAX_LIGHTS).filter(|&i| state.lights[i]).map(|i| LightSetup::new(&state.light[i])).collect();
-        let tracking = state.color_material.then(|| Tracking {
+        let tracking = state.color_material.then_some(Tracking {
             face: match state.color_material_face {
-                crate::api::enums::GL_FRONT => [true, false],
-                crate::api::enums::GL_BACK => [false, true],
+                GL_FRONT => [true, false],
+                GL_BACK => [false, true],
                 _ => [true, true],
             },
             mode: state.color_material_mode,
@@ -230,7 +231,7 @@ impl Lighting {
             model_ambient: state.model_ambient,
             local_viewer: state.local_viewer,
             two_side: state.two_side,
-            separate_specular: state.color_control == crate::api::enums::GL_SEPARATE_SPECULAR_COLOR,
+            separate_specular: state.color_control == GL_SEPARATE_SPECULAR_COLOR,
             inverse_modelview,
             normals,
             materials: state.materials,
@@ -382,7 +383,7 @@ impl Lighting {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::api::enums::*;
+    use crate::api::enums::{GL_DIFFUSE, GL_EMISSION};
 
     const IDENTITY: [f32; 16] = [1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0];
 
