@@ -106,8 +106,10 @@ pub struct Lighting {
     tracked_faces: [FaceSetup; 2],
 }
 
+/// The program's DP3 as llvmpipe runs it: NIR lowers the reduction from the last
+/// component, (z·z' + y·y') + x·x' (measured bit for bit in capi lighting_float).
 fn dot3(a: [f32; 3], b: [f32; 3]) -> f32 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+    a[2] * b[2] + a[1] * b[1] + a[0] * b[0]
 }
 
 fn scale3(v: [f32; 3], s: f32) -> [f32; 3] {
@@ -308,8 +310,9 @@ impl Lighting {
         for (index, light) in self.lights.iter().enumerate() {
             let (vp, inv_dist) = if light.local {
                 let d = [light.position[0] - eye3[0], light.position[1] - eye3[1], light.position[2] - eye3[2]];
-                let inv = 1.0 / dot3(d, d).sqrt();
-                (scale3(d, inv), Some(inv))
+                let d2 = dot3(d, d);
+                let inv = 1.0 / d2.sqrt();
+                (scale3(d, inv), Some((inv, d2)))
             } else {
                 (light.position, None)
             };
@@ -322,9 +325,12 @@ impl Lighting {
                 }
             });
             let distance = match (light.attenuation, inv_dist) {
-                (Some(k), Some(inv)) => {
-                    let d = 1.0 / inv;
-                    Some(1.0 / (k[0] + k[1] * d + k[2] * (d * d)))
+                (Some(k), Some((inv, d2))) => {
+                    // Mesa 22's program builds (1, d, d²) from 1/d as (1/d · d, d, d · d);
+                    // NIR's algebraic rules turn its d = 1/(1/√x) into √x and d · d into x.
+                    // The first term is then 1/√x · √x, not always exactly 1.
+                    let d = d2.sqrt();
+                    Some(1.0 / dot3(k, [inv * d, d, d2]))
                 }
                 _ => None,
             };
