@@ -1,4 +1,4 @@
-/* Per-vertex lighting results compared bit for bit with Mesa: on a float color buffer with
+/* Per-vertex lighting results compared bit for bit with Mesa (llvmpipe): on a float color buffer with
  * every color clamp off, a grid of flat-shaded quads (each showing its provoking vertex's lit
  * color unchanged) with pseudo-random normals and depths, under directional lights with an
  * infinite viewer, a local light with attenuation and a spotlight under a local viewer,

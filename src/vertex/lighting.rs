@@ -8,16 +8,14 @@
 //! vertex only what depends on the vertex: the normal's transformation, the directions to
 //! local lights, attenuation, the spotlight factor, the diffuse and specular terms.
 //!
-//! The arithmetic follows Mesa's fixed-function vertex program (`ffvertex_prog.c`) in single
-//! precision, because llvmpipe's pictures are the reference: constants that Mesa computes on
-//! the CPU (normalized light directions, half vectors, scene colors, light products) use its
-//! C expressions; per-vertex values use its program's order, each light's contribution
-//! accumulated with multiplies and adds (llvmpipe does not fuse them: its NIR options lower
-//! `ffma`), directions normalized by multiplying with `1/√(v·v)`, `1/d` and the
-//! attenuation's reciprocal as divisions. Mesa's `pow` is a polynomial approximation in
-//! llvmpipe, here it is `powf`. Flat-shaded lit pictures match Mesa's bytes exactly in the
-//! capi tests (lighting_render); smooth ones differ by the 1-LSB interpolation differences
-//! every smooth-shaded picture has.
+//! The arithmetic is that of Mesa's fixed-function vertex program (`ffvertex_prog.c`) as
+//! llvmpipe runs it, in single precision, because llvmpipe's pictures are the reference:
+//! constants that Mesa computes on the CPU (normalized light directions, half vectors, scene
+//! colors, light products) use its C expressions; per-vertex values follow the program's
+//! order with NIR's lowering (DP3 summed from the last component, multiply-adds not fused,
+//! 1/√x and divisions exact, the attenuation's 1/(1/√x) simplified to √x), and POW uses
+//! llvmpipe's own exp2/log2 polynomials. The capi test lighting_float compares the results
+//! bit for bit as floats.
 //!
 //! One deliberate difference: Mesa's program, for a material shininess of zero and a light
 //! that is attenuated (local with attenuation, or a spotlight), raises N·H to the power N·L
@@ -197,6 +195,82 @@ pub fn set_material_parameter(m: &mut Material, pname: u32, p: &[f32]) {
     }
 }
 
+/// Coefficients of llvmpipe's polynomial for 2^x on [0, 1) (degree 5).
+const EXP2_POLYNOMIAL: [f64; 6] = [
+    1.0,
+    0.693153073200168932794,
+    0.240153617044375388211,
+    0.0558263180532956664775,
+    0.00898934009049466391101,
+    0.00187757667519147912699,
+];
+
+/// Coefficients of llvmpipe's polynomial P(z) with log2(m) = y · P(y²), y = (m − 1)/(m + 1)
+/// (degree 4).
+const LOG2_POLYNOMIAL: [f64; 5] = [
+    2.88539009343309178325,
+    0.961791550404184197881,
+    0.577440339438736392009,
+    0.403343858251329912514,
+    0.406718052498846252698,
+];
+
+/// llvmpipe's polynomial evaluation: odd and even terms in x² separately, with fused
+/// multiply-adds (its `fmuladd`, fused on the FMA hardware the reference ran on).
+fn polynomial(x: f32, coefficients: &[f64]) -> f32 {
+    let x2 = x * x;
+    let (mut even, mut odd): (Option<f32>, Option<f32>) = (None, None);
+    for (i, &c) in coefficients.iter().enumerate().rev() {
+        let c = c as f32;
+        let slot = if i % 2 == 0 { &mut even } else { &mut odd };
+        *slot = Some(slot.map_or(c, |acc| x2.mul_add(acc, c)));
+    }
+    match (odd, even) {
+        (Some(odd), Some(even)) => odd.mul_add(x, even),
+        (None, Some(even)) => even,
+        _ => 0.0,
+    }
+}
+
+/// llvmpipe's log2 with edge cases: NaN below 0, −∞ at 0, +∞ at +∞.
+fn log2_approx(x: f32) -> f32 {
+    if x.is_nan() || x < 0.0 {
+        return f32::NAN;
+    }
+    if x == 0.0 {
+        return f32::NEG_INFINITY;
+    }
+    if x == f32::INFINITY {
+        return f32::INFINITY;
+    }
+    let bits = x.to_bits();
+    let exponent = (((bits & 0x7f80_0000) >> 23) as i32 - 127) as f32;
+    let mantissa = f32::from_bits((bits & 0x007f_ffff) | 1.0f32.to_bits());
+    let y = (mantissa - 1.0) / (mantissa + 1.0);
+    y.mul_add(polynomial(y * y, &LOG2_POLYNOMIAL), exponent)
+}
+
+/// llvmpipe's 2^x: 2^floor(x) from the exponent bits times a polynomial of the fraction.
+fn exp2_approx(x: f32) -> f32 {
+    if x.is_nan() {
+        return x;
+    }
+    let x = x.clamp(-126.99999, 128.0);
+    let floor = x.floor();
+    let whole = f32::from_bits(((floor as i32 + 127) as u32) << 23);
+    whole * polynomial(x - floor, &EXP2_POLYNOMIAL)
+}
+
+/// The program's POW as llvmpipe evaluates it: 2^(log2(x) · y), and 0 for x = 0. Matching
+/// its approximations keeps specular highlights and spotlights bit-exact.
+fn pow(x: f32, y: f32) -> f32 {
+    if x == 0.0 {
+        0.0
+    } else {
+        exp2_approx(log2_approx(x) * y)
+    }
+}
+
 /// The diffuse and specular factors of one light for one face (GL's LIT): max(N·L, 0),
 /// and (N·H)^shininess where N·L > 0.
 fn lit(n_dot_l: f32, n_dot_h: f32, shininess: f32) -> (f32, f32) {
@@ -205,7 +279,7 @@ fn lit(n_dot_l: f32, n_dot_h: f32, shininess: f32) -> (f32, f32) {
         if shininess == 0.0 {
             1.0
         } else {
-            n_dot_h.max(0.0).powf(shininess.clamp(-128.0, 128.0))
+            pow(n_dot_h.max(0.0), shininess.clamp(-128.0, 128.0))
         }
     } else {
         0.0
@@ -319,7 +393,7 @@ impl Lighting {
             let spot = light.spot.map(|s| {
                 let cos = dot3([-vp[0], -vp[1], -vp[2]], s.direction);
                 if s.cos_cutoff < cos {
-                    cos.powf(s.exponent)
+                    pow(cos, s.exponent)
                 } else {
                     0.0
                 }
@@ -463,6 +537,24 @@ mod tests {
         let c = l.shade([0.0, 0.0, -1.0, 1.0], [0.0, 0.0, -1.0], [1.0; 4]);
         assert!(close(c.back, [0.0, 1.0, 0.0, 0.5]), "{:?}", c.back);
         assert!(close(c.front, [0.04, 0.04, 0.04, 1.0]), "{:?}", c.front);
+    }
+
+    #[test]
+    fn pow_is_llvmpipe_s_approximation() {
+        assert_eq!(pow(0.0, 5.0), 0.0);
+        assert_eq!(pow(1.0, 37.0), 1.0);
+        assert_eq!(pow(0.3, 0.0), 1.0);
+        assert_eq!(pow(2.0, 3.0), 8.0);
+        for (x, y) in [(0.5f32, 13.0f32), (0.9, 128.0), (0.123, 2.5), (0.99, 0.3)] {
+            let (got, exact) = (pow(x, y), x.powf(y));
+            assert!(((got - exact) / exact).abs() < 1e-5, "{x}^{y}: {got} vs {exact}");
+        }
+        // Not powf: the polynomials round differently somewhere in [0.5, 1).
+        assert!((0..1000).any(|i| {
+            let x = 0.5 + i as f32 / 2000.0;
+            pow(x, 20.0) != x.powf(20.0)
+        }));
+        assert!(pow(-0.5, 2.0).is_nan());
     }
 
     #[test]
