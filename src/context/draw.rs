@@ -236,13 +236,17 @@ impl Context {
                 let provoking = &clip_vertices[provoking as usize];
                 let flat_color = geometry.flat.then_some(provoking.color);
                 let (a, b) = (a as usize, b as usize);
-                let (mut ends, codes) = ([clip_vertices[a], clip_vertices[b]], [outcodes[a], outcodes[b]]);
+                let codes = [outcodes[a], outcodes[b]];
                 if geometry.flat {
                     // Flat shading covers the secondary color too (the lit specular term).
-                    ends.iter_mut().for_each(|e| e.secondary_color = provoking.secondary_color);
+                    let secondary_color = provoking.secondary_color;
+                    let ea = ClipVertex { secondary_color, ..clip_vertices[a] };
+                    let eb = ClipVertex { secondary_color, ..clip_vertices[b] };
+                    emit_clip_line(&mut scene, state_index, &geometry, [&ea, &eb], codes, flat_color, stipple.as_mut());
+                } else {
+                    let ends = [&clip_vertices[a], &clip_vertices[b]];
+                    emit_clip_line(&mut scene, state_index, &geometry, ends, codes, flat_color, stipple.as_mut());
                 }
-                let [ea, eb] = &ends;
-                emit_clip_line(&mut scene, state_index, &geometry, [ea, eb], codes, flat_color, stipple.as_mut());
             }
             Primitive::Triangle { v, provoking, .. } => {
                 let [a, b, c] = v.map(|i| i as usize);
@@ -252,9 +256,11 @@ impl Context {
                 }
                 let flat = geometry.flat.then(|| FlatColors::of(&clip_vertices[provoking as usize]));
                 if oa | ob | oc == 0 {
-                    let corners = [a, b, c].map(|i| &clip_vertices[i]);
-                    let w = corners.map(|v| geometry.viewport.window(v));
-                    emit_shaded_triangle(&mut scene, state_index, &geometry, w, corners.map(|v| v.back_colors), flat);
+                    let (va, vb, vc) = (&clip_vertices[a], &clip_vertices[b], &clip_vertices[c]);
+                    let viewport = &geometry.viewport;
+                    let w = [viewport.window(va), viewport.window(vb), viewport.window(vc)];
+                    let back = [va.back_colors, vb.back_colors, vc.back_colors];
+                    emit_shaded_triangle(&mut scene, state_index, &geometry, w, back, flat);
                 } else {
                     poly.clear();
                     poly.extend([clip_vertices[a], clip_vertices[b], clip_vertices[c]]);
