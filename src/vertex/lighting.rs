@@ -196,24 +196,13 @@ pub fn set_material_parameter(m: &mut Material, pname: u32, p: &[f32]) {
 }
 
 /// Coefficients of llvmpipe's polynomial for 2^x on [0, 1) (degree 5).
-const EXP2_POLYNOMIAL: [f64; 6] = [
-    1.0,
-    0.693153073200169,
-    0.24015361704437538,
-    0.055826318053295666,
-    0.008989340090494664,
-    0.001877576675191479,
-];
+const EXP2_POLYNOMIAL: [f64; 6] =
+    [1.0, 0.693153073200169, 0.24015361704437538, 0.055826318053295666, 0.008989340090494664, 0.001877576675191479];
 
 /// Coefficients of llvmpipe's polynomial P(z) with log2(m) = y · P(y²), y = (m − 1)/(m + 1)
 /// (degree 4).
-const LOG2_POLYNOMIAL: [f64; 5] = [
-    2.8853900934330916,
-    0.9617915504041842,
-    0.5774403394387364,
-    0.4033438582513299,
-    0.40671805249884624,
-];
+const LOG2_POLYNOMIAL: [f64; 5] =
+    [2.8853900934330916, 0.9617915504041842, 0.5774403394387364, 0.4033438582513299, 0.40671805249884624];
 
 /// llvmpipe's polynomial evaluation: odd and even terms in x² separately, with fused
 /// multiply-adds (its `fmuladd`, fused on the FMA hardware the reference ran on).
