@@ -21,7 +21,7 @@
 //! its provoking vertex under GL_FIRST_VERTEX_CONVENTION (here it stays the second vertex);
 //! and when front and back faces have different modes, Mesa applies the polygon offset of
 //! the first triangle's mode to the whole draw (here each triangle gets its own mode's).
-use super::Context;
+use super::{debug, Context};
 use crate::api::enums::*;
 use crate::api::types::GLenum;
 use crate::context::state::{LinePointState, MAX_LINE_WIDTH, MAX_POINT_SIZE};
@@ -191,7 +191,17 @@ impl Context {
         // Mesa analyses changed matrices at draw time; their flags decide how products round.
         self.matrices.validate();
         let state = self.draw_state(&mut scene, width, height, color_format, depth_bits, stencil_bits);
-        let state_index = scene.add_state(state);
+        let description = debug::enabled("pipeline").then(|| {
+            let r = state.clip;
+            let stipple = if state.polygon_stipple.is_some() { "polygon stipple → " } else { "" };
+            format!("pixels [{}, {}) x [{}, {}) → {stipple}{}", r.x0, r.x1, r.y0, r.y1, state.fragment)
+        });
+        let (state_index, cached) = scene.add_state(state);
+        if let Some(stages) = description {
+            let how = if cached { "cached" } else { "compiled" };
+            let name = debug::mode_name(mode);
+            eprintln!("tessera pipeline: {name} ({} vertices), state {state_index} {how}: {stages}", vertices.len());
+        }
         let clip_vertices = self.transform(vertices, float_color);
         let geometry = self.geometry(depth_bits, height);
         let first_vertex = self.state.lighting.provoking_vertex == GL_FIRST_VERTEX_CONVENTION;

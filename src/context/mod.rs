@@ -11,6 +11,7 @@ pub mod attrib;
 pub mod buffers;
 pub mod capabilities;
 pub mod current;
+pub mod debug;
 pub mod draw;
 pub mod fragment_state;
 pub mod get;
