@@ -21,6 +21,9 @@ pub mod gl_raster_state;
 pub mod gl_state;
 pub mod gl_transform;
 pub mod gl_vertex;
+/// GLX needs the X types of <GL/glx.h>: kept out of tessera.h.
+/// cbindgen:ignore
+pub mod glx;
 pub mod osmesa;
 pub mod procs;
 pub mod types;

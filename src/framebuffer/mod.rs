@@ -175,6 +175,20 @@ impl Framebuffer {
     pub fn accum_mut(&mut self) -> Option<&mut AccumBuffer> {
         self.accum.as_mut()
     }
+
+    /// Copies color buffer `from` into `to` (a buffer swap that leaves the back buffer as it
+    /// was); does nothing unless both exist.
+    pub fn copy_color(&mut self, from: ColorSlot, to: ColorSlot) {
+        let find = |slot| self.color.iter().position(|(s, _)| *s == slot);
+        let (Some(source), Some(target)) = (find(from), find(to)) else {
+            return;
+        };
+        if source == target {
+            return;
+        }
+        let copy = self.color[source].1.clone();
+        self.color[target].1 = copy;
+    }
 }
 
 /// Shows a framebuffer to its consumer: the OSMesa caller's memory, an X window, ...
