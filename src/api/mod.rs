@@ -12,6 +12,7 @@
 #![allow(non_snake_case)]
 
 pub mod enums;
+pub mod gl_aliases;
 pub mod gl_arrays;
 pub mod gl_buffer_objects;
 pub mod gl_buffers;

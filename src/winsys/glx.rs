@@ -579,7 +579,7 @@ thread_local! {
 /// This thread's GLX binding, if its current GL context is still the GLX one (an OSMesa
 /// context made current later replaces it).
 pub fn current_binding() -> CurrentBinding {
-    let (binding, shared) = CURRENT.with(|c| *c.borrow());
+    let (binding, shared) = CURRENT.try_with(|c| *c.borrow()).unwrap_or_default();
     // Compared by address: the registry may already have dropped a destroyed context that
     // is still current here.
     let still = current::current().is_some_and(|s| Arc::as_ptr(&s) as usize == shared);
@@ -591,7 +591,7 @@ pub fn current_binding() -> CurrentBinding {
 }
 
 fn set_binding(binding: CurrentBinding, shared: usize) {
-    CURRENT.with(|c| *c.borrow_mut() = (binding, shared));
+    let _ = CURRENT.try_with(|c| *c.borrow_mut() = (binding, shared));
 }
 
 /// Why glXMakeCurrent failed (the GLX error it stands for).
@@ -610,6 +610,20 @@ fn flush_current_rendering() {
     }
 }
 
+/// Releases this thread's current GLX context (if `except` is not it) from its drawable: its
+/// rendering is completed into tessera's buffers but not shown, because the window may
+/// already be destroyed (programs commonly destroy the window, then unbind at exit).
+fn release_current_glx(except: Option<&Arc<SharedContext>>) {
+    if current_binding().context == 0 {
+        return;
+    }
+    if let Some(shared) = current::current() {
+        if !except.is_some_and(|e| Arc::ptr_eq(e, &shared)) {
+            shared.lock().bind_drawable(None);
+        }
+    }
+}
+
 /// glXMakeContextCurrent (glXMakeCurrent: draw == read). Rendering goes to `draw`; reads
 /// come from the same buffers (a separate read drawable is accepted but not used yet).
 pub fn make_current(display: DisplayAddr, draw: u64, read: u64, context: usize) -> Result<(), MakeCurrentError> {
@@ -617,6 +631,7 @@ pub fn make_current(display: DisplayAddr, draw: u64, read: u64, context: usize) 
         if draw != 0 || read != 0 {
             return Err(MakeCurrentError::BadMatch);
         }
+        release_current_glx(None);
         let _ = current::make_current(None);
         set_binding(CurrentBinding::default(), 0);
         return Ok(());
@@ -631,6 +646,7 @@ pub fn make_current(display: DisplayAddr, draw: u64, read: u64, context: usize) 
     }
     flush_current_rendering();
     drawable.follow_size();
+    release_current_glx(Some(&glx.shared));
     current::make_current(Some(glx.shared.clone())).map_err(|_| MakeCurrentError::BadAccess)?;
     glx.shared.lock().bind_drawable(Some(drawable.surface.clone()));
     set_binding(CurrentBinding { context, draw, read, display }, Arc::as_ptr(&glx.shared) as usize);
