@@ -17,7 +17,7 @@ list=../shared/piglit/fragment-ops.txt
 expected=tests/piglit/expected.txt
 
 missing=()
-for tool in Xvfb glxinfo glxgears xwd gcc python3; do
+for tool in Xvfb glxinfo glxgears xwd gcc python3 pkg-config; do
     command -v "$tool" >/dev/null || missing+=("$tool")
 done
 [[ -x $piglit_bin/depthfunc ]] || missing+=("piglit")
@@ -70,8 +70,18 @@ else
 fi
 
 # 2. two contexts, two windows, two threads
-gcc -std=c11 -O1 -Wall -Werror tests/glx/two_threads.c -lGL -lX11 -lpthread -o "$work/two_threads"
+# (built with tessera's gl.pc: its headers and its libGL.so)
+gl_flags=$(PKG_CONFIG_PATH=$lib/pkgconfig pkg-config --cflags --libs gl) || fail "no $lib/pkgconfig/gl.pc"
+gcc -std=c11 -O1 -Wall -Werror tests/glx/two_threads.c $gl_flags -lX11 -lpthread -o "$work/two_threads"
 "${on_tessera[@]}" timeout 60 "$work/two_threads" || fail "tests/glx/two_threads.c"
+
+# The install layout: Debian's libGLU reaches tessera through libOpenGL.so.0.
+glu=$(ldconfig -p 2>/dev/null | awk '/libGLU.so.1 / {print $NF}' | head -1 || true)
+if [[ -n $glu ]]; then
+    "${on_tessera[@]}" ldd "$glu" | grep -q "libOpenGL.so.0 => $lib/libOpenGL.so.0" ||
+        fail "libGLU does not load tessera's libOpenGL.so.0"
+fi
+[[ -e $lib/libOSMesa.so && -e $lib/pkgconfig/osmesa.pc ]] || fail "libOSMesa.so or osmesa.pc missing"
 
 # Programs linked with immediate binding (Debian builds glxgears and libglut with -z now)
 # cannot even start while a GL function they import is missing from tessera. For the
