@@ -11,6 +11,9 @@
 //!
 //! These prototypes need the X types of `<GL/glx.h>`, so they stay out of `tessera.h`
 //! (`cbindgen:ignore` on the module in `api/mod.rs`).
+// XIDs and visual ids are C `unsigned long`, kept as u64 inside: the casts are no-ops only
+// where `unsigned long` is 64 bits.
+#![allow(clippy::unnecessary_cast)]
 use super::guard;
 use super::types::*;
 use crate::context::strings;
@@ -221,7 +224,12 @@ pub unsafe extern "C" fn glXChooseVisual(dpy: *mut Display, screen: c_int, attri
 /// # Safety
 /// `vis` must be NULL or an XVisualInfo; `value` NULL or writable.
 #[no_mangle]
-pub unsafe extern "C" fn glXGetConfig(dpy: *mut Display, vis: *mut XVisualInfo, attrib: c_int, value: *mut c_int) -> c_int {
+pub unsafe extern "C" fn glXGetConfig(
+    dpy: *mut Display,
+    vis: *mut XVisualInfo,
+    attrib: c_int,
+    value: *mut c_int,
+) -> c_int {
     // SAFETY: forwarded contract.
     let config = guard(None, || unsafe { config_of_visual(dpy, vis) });
     let Some(config) = config else {
@@ -247,7 +255,12 @@ fn context_handle(handle: Option<usize>) -> GLXContext {
 /// # Safety
 /// `vis` must be NULL or an XVisualInfo.
 #[no_mangle]
-pub unsafe extern "C" fn glXCreateContext(dpy: *mut Display, vis: *mut XVisualInfo, shareList: GLXContext, direct: Bool) -> GLXContext {
+pub unsafe extern "C" fn glXCreateContext(
+    dpy: *mut Display,
+    vis: *mut XVisualInfo,
+    shareList: GLXContext,
+    direct: Bool,
+) -> GLXContext {
     let _ = direct;
     // SAFETY: forwarded contract.
     let config = guard(None, || unsafe { config_of_visual(dpy, vis) });
@@ -348,7 +361,12 @@ pub extern "C" fn glXMakeCurrent(dpy: *mut Display, drawable: GLXDrawable, ctx: 
 }
 
 #[no_mangle]
-pub extern "C" fn glXMakeContextCurrent(dpy: *mut Display, draw: GLXDrawable, read: GLXDrawable, ctx: GLXContext) -> Bool {
+pub extern "C" fn glXMakeContextCurrent(
+    dpy: *mut Display,
+    draw: GLXDrawable,
+    read: GLXDrawable,
+    ctx: GLXContext,
+) -> Bool {
     make_current(dpy, draw, read, ctx)
 }
 
@@ -432,7 +450,12 @@ pub unsafe extern "C" fn glXGetFBConfigs(dpy: *mut Display, screen: c_int, nelem
 /// # Safety
 /// `value` must be NULL or writable.
 #[no_mangle]
-pub unsafe extern "C" fn glXGetFBConfigAttrib(dpy: *mut Display, config: GLXFBConfig, attribute: c_int, value: *mut c_int) -> c_int {
+pub unsafe extern "C" fn glXGetFBConfigAttrib(
+    dpy: *mut Display,
+    config: GLXFBConfig,
+    attribute: c_int,
+    value: *mut c_int,
+) -> c_int {
     let Some(config) = guard(None, || config_of(dpy, config)) else {
         return GLX_BAD_ATTRIBUTE;
     };
@@ -468,7 +491,12 @@ fn create_drawable(dpy: *mut Display, config: GLXFBConfig, xid: c_ulong, kind: D
 
 /// The GLXWindow is the X window's own XID (as in Mesa's Xlib driver).
 #[no_mangle]
-pub extern "C" fn glXCreateWindow(dpy: *mut Display, config: GLXFBConfig, win: c_ulong, attribList: *const c_int) -> c_ulong {
+pub extern "C" fn glXCreateWindow(
+    dpy: *mut Display,
+    config: GLXFBConfig,
+    win: c_ulong,
+    attribList: *const c_int,
+) -> c_ulong {
     let _ = attribList;
     create_drawable(dpy, config, win, DrawableKind::Window)
 }
@@ -480,7 +508,12 @@ pub extern "C" fn glXDestroyWindow(dpy: *mut Display, win: c_ulong) {
 
 /// The GLXPixmap is the X pixmap's own XID.
 #[no_mangle]
-pub extern "C" fn glXCreatePixmap(dpy: *mut Display, config: GLXFBConfig, pixmap: c_ulong, attribList: *const c_int) -> c_ulong {
+pub extern "C" fn glXCreatePixmap(
+    dpy: *mut Display,
+    config: GLXFBConfig,
+    pixmap: c_ulong,
+    attribList: *const c_int,
+) -> c_ulong {
     let _ = attribList;
     create_drawable(dpy, config, pixmap, DrawableKind::Pixmap)
 }
@@ -566,7 +599,12 @@ pub unsafe extern "C" fn glXQueryDrawable(dpy: *mut Display, draw: GLXDrawable, 
 /// # Safety
 /// `value` must be NULL or writable.
 #[no_mangle]
-pub unsafe extern "C" fn glXQueryContext(dpy: *mut Display, ctx: GLXContext, attribute: c_int, value: *mut c_int) -> c_int {
+pub unsafe extern "C" fn glXQueryContext(
+    dpy: *mut Display,
+    ctx: GLXContext,
+    attribute: c_int,
+    value: *mut c_int,
+) -> c_int {
     let _ = dpy;
     let Some(context) = guard(None, || glx::lookup_context(ctx as usize)) else {
         return GLX_BAD_CONTEXT;
@@ -677,7 +715,10 @@ mod tests {
         assert_eq!(unsafe { attribute_list(pairs.as_ptr(), false) }, vec![GLX_DOUBLEBUFFER, 1, GLX_DEPTH_SIZE, 24]);
         let singles = [GLX_RGBA, GLX_DOUBLEBUFFER, GLX_RED_SIZE, 1, 0];
         // SAFETY: a None-terminated list.
-        assert_eq!(unsafe { attribute_list(singles.as_ptr(), true) }, vec![GLX_RGBA, GLX_DOUBLEBUFFER, GLX_RED_SIZE, 1]);
+        assert_eq!(
+            unsafe { attribute_list(singles.as_ptr(), true) },
+            vec![GLX_RGBA, GLX_DOUBLEBUFFER, GLX_RED_SIZE, 1]
+        );
         // SAFETY: NULL is allowed.
         assert!(unsafe { attribute_list(std::ptr::null(), false) }.is_empty());
     }

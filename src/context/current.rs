@@ -70,8 +70,7 @@ pub fn make_current(context: Option<Arc<SharedContext>>) -> Result<(), BindError
     }
     // At process exit (atexit handlers releasing their context) the slot may already be
     // destroyed: then nothing is current any more and nothing needs releasing.
-    let previous =
-        CURRENT.try_with(|slot| std::mem::replace(&mut slot.borrow_mut().0, context.clone())).ok().flatten();
+    let previous = CURRENT.try_with(|slot| std::mem::replace(&mut slot.borrow_mut().0, context.clone())).ok().flatten();
     if let Some(prev) = previous {
         let same = context.as_ref().is_some_and(|c| Arc::ptr_eq(c, &prev));
         if !same {

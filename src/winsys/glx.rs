@@ -12,6 +12,9 @@
 //!
 //! Handles given to C (GLXContext, GLXFBConfig) are identifiers looked up in registries here,
 //! never dereferenced by tessera, so a stale or forged handle is refused instead of crashing.
+// XIDs and visual ids are C `unsigned long`, kept as u64 inside: the casts are no-ops only
+// where `unsigned long` is 64 bits.
+#![allow(clippy::unnecessary_cast)]
 use super::glx_config::{configs_for, FbConfig, VisualDesc};
 use crate::context::current::{self, SharedContext};
 use crate::context::{Context, ContextConfig};
@@ -345,8 +348,11 @@ pub struct GlxDrawable {
     pub surface: Arc<Mutex<Drawable>>,
 }
 
-fn drawables() -> MutexGuard<'static, HashMap<(DisplayAddr, u64), Arc<GlxDrawable>>> {
-    static DRAWABLES: OnceLock<Mutex<HashMap<(DisplayAddr, u64), Arc<GlxDrawable>>>> = OnceLock::new();
+/// The GLX drawables by display and XID.
+type DrawableTable = HashMap<(DisplayAddr, u64), Arc<GlxDrawable>>;
+
+fn drawables() -> MutexGuard<'static, DrawableTable> {
+    static DRAWABLES: OnceLock<Mutex<DrawableTable>> = OnceLock::new();
     lock(DRAWABLES.get_or_init(|| Mutex::new(HashMap::new())))
 }
 

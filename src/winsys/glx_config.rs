@@ -148,7 +148,12 @@ impl FbConfig {
     /// The most capable configuration of a visual: what a context created for a visual that
     /// glXChooseVisual never returned gets.
     pub fn is_default_for_visual(&self) -> bool {
-        self.double_buffered && !self.stereo && self.depth == 24 && self.stencil == 8 && self.accum == 16 && self.alpha == 8
+        self.double_buffered
+            && !self.stereo
+            && self.depth == 24
+            && self.stencil == 8
+            && self.accum == 16
+            && self.alpha == 8
     }
 }
 
@@ -370,7 +375,7 @@ impl Criteria {
             .filter(|&i| self.color[i] > 0)
             .map(|i| config.attrib(GLX_RED_SIZE + i as i32).unwrap_or(0) as i64)
             .sum();
-        let accum_sum = (config.accum * 4) as i32;
+        let accum_sum = config.accum * 4;
         let accum_requested = self.accum.iter().any(|&a| a > 0) as i32;
         let depth = if self.visual_rules { prefer(self.depth, config.depth) } else { -(config.depth as i64) };
         let visual_type = if config.visual.class == X_TRUE_COLOR { 0 } else { 1 };
