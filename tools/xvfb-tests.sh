@@ -2,6 +2,7 @@
 # The GLX checks, on tessera's libGL.so.1 (target/release) under a private Xvfb:
 #   1. glxinfo names tessera as the renderer and lists its extensions;
 #   2. tests/glx/two_threads.c: two windows, two contexts, two threads render independently;
+#      tests/glx/glx_api.c: the GLX API (configs, context rules, drawables, resizing, stereo);
 #   3. examples-c/glut_scene.c (freeglut): a screenshot (xwd) shows the expected picture;
 #   4. glxgears runs and its window is shown (not blank once display lists exist);
 #   5. piglit: every command of ../shared/piglit/fragment-ops.txt is run; each one
@@ -74,6 +75,10 @@ fi
 gl_flags=$(PKG_CONFIG_PATH=$lib/pkgconfig pkg-config --cflags --libs gl) || fail "no $lib/pkgconfig/gl.pc"
 gcc -std=c11 -O1 -Wall -Werror tests/glx/two_threads.c $gl_flags -lX11 -lpthread -o "$work/two_threads"
 "${on_tessera[@]}" timeout 60 "$work/two_threads" || fail "tests/glx/two_threads.c"
+
+# The GLX API: configs, context rules, windows, resizing, pbuffers, pixmaps, stereo
+gcc -std=c11 -O1 -Wall -Werror tests/glx/glx_api.c $gl_flags -lX11 -o "$work/glx_api"
+"${on_tessera[@]}" timeout 60 "$work/glx_api" || fail "tests/glx/glx_api.c"
 
 # The install layout: Debian's libGLU reaches tessera through libOpenGL.so.0.
 glu=$(ldconfig -p 2>/dev/null | awk '/libGLU.so.1 / {print $NF}' | head -1 || true)
