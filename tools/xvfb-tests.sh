@@ -3,7 +3,7 @@
 #   1. glxinfo names tessera as the renderer and lists its extensions;
 #   2. tests/glx/two_threads.c: two windows, two contexts, two threads render independently;
 #      tests/glx/glx_api.c: the GLX API (configs, context rules, drawables, resizing, stereo);
-#   3. examples-c/glut_scene.c (freeglut): a screenshot (xwd) shows the expected picture;
+#   3. tests/glx/glut_scene.c (freeglut): a screenshot (xwd) shows the expected picture;
 #   4. glxgears runs and its window is shown (not blank once display lists exist);
 #   5. piglit: every command of ../shared/piglit/fragment-ops.txt is run; each one
 #      tests/piglit/expected.txt marks "pass" must pass (a skip is not a pass).
@@ -132,8 +132,8 @@ screenshot_program() {
     return $ok
 }
 
-# 3. freeglut: the picture at known places (see examples-c/glut_scene.c; window 300x300)
-gcc -std=c11 -O1 -Wall -Werror examples-c/glut_scene.c -lglut -lGL -o "$work/glut_scene"
+# 3. freeglut: the picture at known places (see tests/glx/glut_scene.c; window 300x300)
+gcc -std=c11 -O1 -Wall -Werror tests/glx/glut_scene.c -lglut -lGL -o "$work/glut_scene"
 stub_missing glut "$work/glut_scene" "$(ldd "$work/glut_scene" | awk '/libglut/ {print $3}')"
 if screenshot_program "tessera glut_scene" "frame shown" env LD_PRELOAD="$work/libglut-stubs.so" "$work/glut_scene"; then
     cp "$work/tessera glut_scene.xwd" "$work/glut_scene.xwd"

@@ -1,9 +1,11 @@
 /* A freeglut program drawing with the fragment operations tessera has (no lighting, no
- * texturing): a smooth-shaded triangle over a blue background, a depth-tested green quad
- * behind a blended yellow one, and a stippled line. tools/xvfb-tests.sh runs it on tessera
+ * texturing): a smooth-shaded triangle over a blue background, a green quad hiding a magenta
+ * one by the depth test, a half-transparent yellow rectangle blended over the background, and
+ * a stippled line. tools/xvfb-tests.sh runs it on tessera
  * under Xvfb and checks a screenshot of its window.
  *
- * Build: gcc examples-c/glut_scene.c -lglut -lGL -o glut_scene
+ * (Not in examples-c/: tools/main-job.sh builds those as OSMesa programs.)
+ * Build: gcc tests/glx/glut_scene.c -lglut -lGL -o glut_scene
  * Run:   LD_LIBRARY_PATH=target/release ./glut_scene [--frames N]
  * After the first frame it prints "frame shown" (the screenshot may be taken); it exits after
  * N frames (default: runs until the window is closed). */
