@@ -79,6 +79,9 @@ gcc -std=c11 -O1 -Wall -Werror tests/glx/two_threads.c $gl_flags -lX11 -lpthread
 # The GLX API: configs, context rules, windows, resizing, pbuffers, pixmaps, stereo
 gcc -std=c11 -O1 -Wall -Werror tests/glx/glx_api.c $gl_flags -lX11 -o "$work/glx_api"
 "${on_tessera[@]}" timeout 60 "$work/glx_api" || fail "tests/glx/glx_api.c"
+# The same two programs presenting with XPutImage instead of MIT-SHM
+"${on_tessera[@]}" TESSERA_XSHM=0 timeout 60 "$work/two_threads" || fail "two_threads.c with TESSERA_XSHM=0"
+"${on_tessera[@]}" TESSERA_XSHM=0 timeout 60 "$work/glx_api" || fail "glx_api.c with TESSERA_XSHM=0"
 
 # The install layout: Debian's libGLU reaches tessera through libOpenGL.so.0.
 glu=$(ldconfig -p 2>/dev/null | awk '/libGLU.so.1 / {print $NF}' | head -1 || true)

@@ -16,6 +16,7 @@
 // where `unsigned long` is 64 bits.
 #![allow(clippy::unnecessary_cast)]
 use super::glx_config::{configs_for, FbConfig, VisualDesc};
+use super::xshm::ShmImage;
 use crate::context::current::{self, SharedContext};
 use crate::context::{Context, ContextConfig};
 use crate::framebuffer::surface::ColorPixels;
@@ -177,8 +178,11 @@ struct XPresenter {
     visual: usize,
     depth: i32,
     masks: [u64; 3],
-    /// The XImage data, reused between presentations.
+    /// The XImage data, reused between presentations (XPutImage path).
     bytes: Vec<u8>,
+    /// The MIT-SHM image of the current size, while the server accepts it.
+    shm: Option<ShmImage>,
+    shm_refused: bool,
 }
 
 impl XPresenter {
@@ -201,6 +205,8 @@ impl XPresenter {
                     depth: attributes.depth,
                     masks: [v.red_mask as u64, v.green_mask as u64, v.blue_mask as u64],
                     bytes: Vec::new(),
+                    shm: None,
+                    shm_refused: false,
                 });
             }
         }
@@ -228,6 +234,8 @@ impl XPresenter {
             depth: config.visual.depth,
             masks: config.visual.masks,
             bytes: Vec::new(),
+            shm: None,
+            shm_refused: false,
         })
     }
 }
@@ -243,26 +251,58 @@ fn pack_pixel(p: [u8; 4], masks: &[u64; 3]) -> u32 {
     value
 }
 
-impl Present for XPresenter {
-    fn present(&mut self, framebuffer: &Framebuffer) {
-        let Some(x) = xlib() else {
-            return;
-        };
-        let Some(color) = framebuffer.color(ColorSlot::FrontLeft) else {
-            return;
-        };
-        let ColorPixels::Unorm8(pixels) = color.pixels() else {
-            return;
-        };
-        let (width, height) = (framebuffer.width(), framebuffer.height());
-        if width == 0 || height == 0 {
-            return;
+/// Writes `pixels` (GL rows, bottom-up) into an X image's bytes (top-down rows of
+/// `bytes_per_line`), packing each pixel for `masks` in the image's byte order.
+fn fill_image(
+    out: &mut [u8],
+    layout: (usize, i32, i32),
+    pixels: &[[u8; 4]],
+    width: usize,
+    height: usize,
+    masks: &[u64; 3],
+) {
+    let (bytes_per_line, bits_per_pixel, byte_order) = layout;
+    let n = ((bits_per_pixel / 8).max(1) as usize).min(4);
+    for y in 0..height {
+        let src = &pixels[(height - 1 - y) * width..(height - y) * width];
+        let row = &mut out[y * bytes_per_line..(y + 1) * bytes_per_line];
+        for (dst, &p) in row.chunks_exact_mut(n).zip(src) {
+            let value = pack_pixel(p, masks);
+            if byte_order == xlib::MSBFirst {
+                dst.copy_from_slice(&value.to_be_bytes()[4 - n..]);
+            } else {
+                dst.copy_from_slice(&value.to_le_bytes()[..n]);
+            }
+        }
+    }
+}
+
+impl XPresenter {
+    /// MIT-SHM presentation; false when the server does not take it (XPutImage then).
+    fn present_shm(&mut self, x: &Xlib, pixels: &[[u8; 4]], width: usize, height: usize) -> bool {
+        if self.shm_refused {
+            return false;
         }
         let display = dpy(self.display);
-        if self.gc == 0 {
-            // SAFETY: valid display and drawable; no GC values passed.
-            self.gc = unsafe { (x.XCreateGC)(display, self.target as c_ulong, 0, std::ptr::null_mut()) } as usize;
+        if self.shm.as_ref().map(|s| (s.width, s.height)) != Some((width, height)) {
+            if let Some(mut old) = self.shm.take() {
+                old.detach(display);
+            }
+            self.shm = ShmImage::new(x, display, self.visual as *mut xlib::Visual, self.depth, width, height);
+            self.shm_refused = self.shm.is_none();
         }
+        let Some(shm) = self.shm.as_mut() else {
+            return false;
+        };
+        let (bytes_per_line, bits_per_pixel, byte_order) = shm.layout();
+        fill_image(shm.bytes_mut(), (bytes_per_line, bits_per_pixel, byte_order), pixels, width, height, &self.masks);
+        shm.put(x, display, self.target as c_ulong, self.gc as xlib::GC);
+        true
+    }
+
+    /// Plain XPutImage presentation.
+    fn present_put(&mut self, x: &Xlib, pixels: &[[u8; 4]], width: usize, height: usize) {
+        let display = dpy(self.display);
         // SAFETY: XCreateImage only allocates the XImage header (no data: null) for the
         // display's format of this visual and depth.
         let image = unsafe {
@@ -285,18 +325,16 @@ impl Present for XPresenter {
         // SAFETY: `image` is a valid XImage header just created.
         let (bytes_per_line, bits_per_pixel) =
             unsafe { ((*image).bytes_per_line.max(0) as usize, (*image).bits_per_pixel) };
-        let bytes_per_pixel = (bits_per_pixel / 8).max(1) as usize;
         self.bytes.clear();
         self.bytes.resize(bytes_per_line * height, 0);
-        for y in 0..height {
-            // X rows go top-down, GL rows bottom-up.
-            let src = &pixels[(height - 1 - y) * width..(height - y) * width];
-            let row = &mut self.bytes[y * bytes_per_line..(y + 1) * bytes_per_line];
-            for (out, &p) in row.chunks_exact_mut(bytes_per_pixel).zip(src) {
-                let value = pack_pixel(p, &self.masks).to_le_bytes();
-                out.copy_from_slice(&value[..bytes_per_pixel.min(4)]);
-            }
-        }
+        fill_image(
+            &mut self.bytes,
+            (bytes_per_line, bits_per_pixel, xlib::LSBFirst),
+            pixels,
+            width,
+            height,
+            &self.masks,
+        );
         // SAFETY: the data pointer lives in `self.bytes` (bytes_per_line × height bytes, the
         // layout XCreateImage computed) for the duration of XPutImage; it is detached before
         // the header is freed so that Xlib never frees our memory.
@@ -318,6 +356,32 @@ impl Present for XPresenter {
             (*image).data = std::ptr::null_mut();
             (x.XFree)(image.cast());
             (x.XFlush)(display);
+        }
+    }
+}
+
+impl Present for XPresenter {
+    fn present(&mut self, framebuffer: &Framebuffer) {
+        let Some(x) = xlib() else {
+            return;
+        };
+        let Some(color) = framebuffer.color(ColorSlot::FrontLeft) else {
+            return;
+        };
+        let ColorPixels::Unorm8(pixels) = color.pixels() else {
+            return;
+        };
+        let (width, height) = (framebuffer.width(), framebuffer.height());
+        if width == 0 || height == 0 {
+            return;
+        }
+        if self.gc == 0 {
+            // SAFETY: valid display and drawable; no GC values passed.
+            self.gc =
+                unsafe { (x.XCreateGC)(dpy(self.display), self.target as c_ulong, 0, std::ptr::null_mut()) } as usize;
+        }
+        if !self.present_shm(x, pixels, width, height) {
+            self.present_put(x, pixels, width, height);
         }
     }
 }

@@ -4,3 +4,4 @@
 pub mod glx;
 pub mod glx_config;
 pub mod osmesa;
+mod xshm;
