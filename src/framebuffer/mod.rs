@@ -195,6 +195,10 @@ impl Framebuffer {
 /// Called at the flush points of the API (glFlush, glFinish, swap) after rendering completed.
 pub trait Present: Send {
     fn present(&mut self, framebuffer: &Framebuffer);
+
+    /// Frees what the presenter holds in another process (an X server's GC, a shared
+    /// segment) while that is still possible; called when its target is destroyed.
+    fn release(&mut self) {}
 }
 
 /// A framebuffer together with the way it is presented: what a GL context draws into.

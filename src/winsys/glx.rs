@@ -361,6 +361,20 @@ impl XPresenter {
 }
 
 impl Present for XPresenter {
+    fn release(&mut self) {
+        let Some(x) = xlib() else {
+            return;
+        };
+        if let Some(mut shm) = self.shm.take() {
+            shm.detach(dpy(self.display));
+        }
+        if self.gc != 0 {
+            // SAFETY: the GC this presenter created on the (still open) display.
+            unsafe { (x.XFreeGC)(dpy(self.display), self.gc as xlib::GC) };
+            self.gc = 0;
+        }
+    }
+
     fn present(&mut self, framebuffer: &Framebuffer) {
         let Some(x) = xlib() else {
             return;
@@ -572,6 +586,14 @@ pub fn destroy_drawable(display: DisplayAddr, xid: u64, kind: DrawableKind) {
             _ => None,
         }
     };
+    if let Some(d) = &removed {
+        // The X drawable goes away: free the presenter's X resources now, and present no
+        // more (a context still bound to it keeps rendering into tessera's buffers).
+        let presenter = lock(&d.surface).presenter.take();
+        if let Some(mut presenter) = presenter {
+            presenter.release();
+        }
+    }
     if let (Some(d), Some(x)) = (removed, xlib()) {
         if d.kind == DrawableKind::Pbuffer {
             // SAFETY: the name pixmap created by create_pbuffer.
