@@ -732,6 +732,10 @@ pub fn make_current(display: DisplayAddr, draw: u64, read: u64, context: usize) 
     if draw == 0 || read == 0 {
         return Err(MakeCurrentError::BadMatch);
     }
+    // Refused before anything changes: the calling thread keeps its current context.
+    if glx.shared.bound_thread().is_some_and(|t| t != std::thread::current().id()) {
+        return Err(MakeCurrentError::BadAccess);
+    }
     let drawable = drawable_for_binding(display, draw, glx.config).ok_or(MakeCurrentError::BadDrawable)?;
     if read != draw {
         drawable_for_binding(display, read, glx.config).ok_or(MakeCurrentError::BadDrawable)?;

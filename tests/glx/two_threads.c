@@ -3,7 +3,11 @@
  * with glReadPixels (front buffer after the swap) and with XGetImage (what the X server shows)
  * that it sees its own picture and never the other thread's. Exit status 0 on success.
  *
+ * Then a context current in another thread cannot be made current here (BadAccess), and the
+ * refusal leaves this thread's own context current and working.
+ *
  * Build: gcc -std=c11 -O1 -Wall tests/glx/two_threads.c -lGL -lX11 -lpthread */
+#define _POSIX_C_SOURCE 200112L
 #include <GL/gl.h>
 #include <GL/glx.h>
 #include <X11/Xlib.h>
@@ -65,6 +69,63 @@ static void *render(void *arg)
     return NULL;
 }
 
+static pthread_barrier_t barrier;
+
+/* Keeps a context current in its own thread until the main thread has tried to take it. */
+struct holder {
+    Display *dpy;
+    Window win;
+    GLXContext ctx;
+    int ok;
+};
+
+static void *hold(void *arg)
+{
+    struct holder *h = arg;
+    h->ok = glXMakeCurrent(h->dpy, h->win, h->ctx);
+    pthread_barrier_wait(&barrier); /* current now */
+    pthread_barrier_wait(&barrier); /* main thread has tried */
+    glXMakeCurrent(h->dpy, None, NULL);
+    return NULL;
+}
+
+static int check_busy_context(Display *dpy, XVisualInfo *vis, Window a, Window b)
+{
+    int failures = 0;
+    GLXContext busy = glXCreateContext(dpy, vis, NULL, True), mine = glXCreateContext(dpy, vis, NULL, True);
+    struct holder h = {dpy, a, busy, 0};
+    pthread_t t;
+    pthread_barrier_init(&barrier, NULL, 2);
+    pthread_create(&t, NULL, hold, &h);
+    pthread_barrier_wait(&barrier);
+    if (!glXMakeCurrent(dpy, b, mine))
+        failures++;
+    if (glXMakeCurrent(dpy, b, busy)) {
+        fprintf(stderr, "a context current in another thread was made current here\n");
+        failures++;
+    }
+    if (glXGetCurrentContext() != mine) {
+        fprintf(stderr, "the refused glXMakeCurrent changed the current context\n");
+        failures++;
+    }
+    unsigned char px[4] = {0};
+    glClearColor(1, 0, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glReadPixels(1, 1, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
+    if (px[0] != 255 || px[1] != 0) {
+        fprintf(stderr, "own context no longer renders after the refusal: %u,%u\n", px[0], px[1]);
+        failures++;
+    }
+    pthread_barrier_wait(&barrier);
+    pthread_join(t, NULL);
+    if (!h.ok)
+        failures++;
+    glXMakeCurrent(dpy, None, NULL);
+    glXDestroyContext(dpy, busy);
+    glXDestroyContext(dpy, mine);
+    return failures;
+}
+
 int main(void)
 {
     if (!XInitThreads())
@@ -116,6 +177,7 @@ int main(void)
         }
         XDestroyImage(img);
     }
+    failures += check_busy_context(dpy, vis, jobs[0].win, jobs[1].win);
     GLXContext probe = glXCreateContext(dpy, vis, NULL, True);
     if (probe && glXMakeCurrent(dpy, jobs[0].win, probe))
         renderer = (const char *)glGetString(GL_RENDERER);
