@@ -1,13 +1,15 @@
 #!/usr/bin/env bash
 # Everything CI checks: set-up, the release build (the drop-in libraries the capi tests
 # load), the tests (Rust unit tests and tests/capi.rs, which runs every capi-tests/*.c on
-# Mesa and on tessera), formatting and clippy.
+# Mesa and on tessera), the GLX checks under Xvfb (tools/xvfb-tests.sh, piglit included),
+# formatting and clippy.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 bash tools/setup-debian.sh
 cargo build --release
 cargo test --release
+bash tools/xvfb-tests.sh   # GLX under a private Xvfb: glxinfo, glxgears, freeglut, two threads, piglit
 cargo fmt --check
 cargo clippy --all-targets --release -- -D warnings
 echo "test.sh: all checks passed"

@@ -6190,6 +6190,8 @@ typedef void (*OSMESAproc)();
 extern "C" {
 #endif // __cplusplus
 
+void glStencilOpSeparateATI(GLenum face, GLenum sfail, GLenum dpfail, GLenum dppass);
+
 void glVertexPointer(GLint size, GLenum type_, GLsizei stride, const GLvoid *ptr);
 
 void glNormalPointer(GLenum type_, GLsizei stride, const GLvoid *ptr);

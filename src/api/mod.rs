@@ -12,6 +12,7 @@
 #![allow(non_snake_case)]
 
 pub mod enums;
+pub mod gl_aliases;
 pub mod gl_arrays;
 pub mod gl_buffer_objects;
 pub mod gl_buffers;
@@ -22,6 +23,9 @@ pub mod gl_raster_state;
 pub mod gl_state;
 pub mod gl_transform;
 pub mod gl_vertex;
+/// GLX needs the X types of <GL/glx.h>: kept out of tessera.h.
+/// cbindgen:ignore
+pub mod glx;
 pub mod osmesa;
 pub mod procs;
 pub mod types;

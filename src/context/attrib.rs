@@ -180,6 +180,12 @@ pub struct SavedClientAttribs {
 }
 
 impl Context {
+    /// glXCopyContext: copies the attribute groups `mask` names (as glPushAttrib would save
+    /// them) from `source` into this context.
+    pub fn copy_attribs_from(&mut self, source: &mut Context, mask: u32) {
+        SavedAttribs::save(&mut source.state, mask).restore(&mut self.state);
+    }
+
     /// glPushAttrib.
     pub fn push_attrib(&mut self, mask: u32) {
         if !self.check_outside_begin_end() {
