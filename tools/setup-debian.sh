@@ -3,11 +3,15 @@
 #   gcc               compiles the C tests and examples
 #   libosmesa6-dev    Mesa's libOSMesa.so.8 (the reference implementation) and <GL/osmesa.h>
 #   libgl1-mesa-dev   <GL/gl.h> and <GL/glext.h>
+#   chromium          only with --test (tools/test.sh): opens tessera-compare's HTML report
 # Runs `apt-get update` once (only if something is missing), as root or through sudo.
 # The Rust toolchain is not installed here (Debian's is too old): see README.md.
 set -euo pipefail
 
 packages=(gcc libosmesa6-dev libgl1-mesa-dev)
+if [[ ${1:-} == --test ]]; then
+    packages+=(chromium)
+fi
 missing=()
 for package in "${packages[@]}"; do
     if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed"; then

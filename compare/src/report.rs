@@ -261,9 +261,9 @@ pub fn write_html(report: &Report, dir: &Path) -> Result<(), String> {
 
 fn program_html(html: &mut String, program: &ProgramReport, img_dir: &Path) -> Result<(), String> {
     let failures = program.failures();
-    let _ = write!(
+    let _ = writeln!(
         html,
-        "<section class=\"{}\" id=\"{}\"><h2>{} — {}</h2>\n",
+        "<section class=\"{}\" id=\"{}\"><h2>{} — {}</h2>",
         if failures.is_empty() { "pass" } else { "fail" },
         html_escape(&program.name),
         html_escape(&program.name),
