@@ -187,7 +187,11 @@ fn progress_line(index: usize, count: usize, program: &ProgramReport) -> String 
         if runs.is_empty() { "not run".to_string() } else { runs.join(", ") },
         program.images.len(),
         worst.map_or("-".to_string(), |w| w.to_string()),
-        if failures.is_empty() { "pass".to_string() } else { format!("FAIL ({})", failures.join("; ")) }
+        match failures.len() {
+            0 => "pass".to_string(),
+            1..=2 => format!("FAIL ({})", failures.join("; ")),
+            n => format!("FAIL ({}; and {} more)", failures[..2].join("; "), n - 2),
+        }
     )
 }
 
