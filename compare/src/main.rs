@@ -199,10 +199,12 @@ fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let options = match parse_args(&args) {
         Ok(options) => options,
+        Err(message) if message.is_empty() => {
+            println!("{}", usage());
+            return ExitCode::SUCCESS;
+        }
         Err(message) => {
-            if !message.is_empty() {
-                eprintln!("tessera-compare: {message}");
-            }
+            eprintln!("tessera-compare: {message}");
             eprintln!("{}", usage());
             return ExitCode::from(2);
         }
