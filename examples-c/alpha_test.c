@@ -50,6 +50,7 @@ int main(int argc, char **argv)
 {
     static const GLenum functions[8] = {GL_NEVER, GL_LESS, GL_EQUAL, GL_LEQUAL,
                                         GL_GREATER, GL_NOTEQUAL, GL_GEQUAL, GL_ALWAYS};
+    static const char *names[8] = {"NEVER", "LESS", "EQUAL", "LEQUAL", "GREATER", "NOTEQUAL", "GEQUAL", "ALWAYS"};
     Example ex;
     example_start(&ex, "alpha_test", argc, argv, 640, 320, 0, 0);
     glShadeModel(GL_SMOOTH);
@@ -68,6 +69,7 @@ int main(int argc, char **argv)
         glVertex2f(16, 144);
         glEnd();
         glDisable(GL_ALPHA_TEST);
+        panel_label(&ex, i, 4, 2, names[i]);
     }
     example_save(&ex, "alpha_test_functions");
     glDisable(GL_SCISSOR_TEST);
@@ -85,6 +87,7 @@ int main(int argc, char **argv)
         }
         leaf();
         glDisable(GL_ALPHA_TEST);
+        panel_label(&cut, with_test, 2, 1, with_test ? "GREATER 0.5" : "NO ALPHA TEST");
     }
     example_save(&cut, "alpha_test_cutout");
     return example_finish(&cut);

@@ -43,6 +43,8 @@ int main(int argc, char **argv)
     cyan_triangle();
     yellow_triangle();
 
+    panel_label(&ex, 0, 2, 1, "YELLOW, THEN CYAN");
+    panel_label(&ex, 1, 2, 1, "CYAN, THEN YELLOW");
     example_save(&ex, "blend_draw_order");
     return example_finish(&ex);
 }

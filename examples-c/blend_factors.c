@@ -23,6 +23,7 @@ int main(int argc, char **argv)
     static const float alphas[4] = {0.01f, 0.30f, 0.70f, 1.00f};
     static const char *images[4] = {"blend_factors_a001", "blend_factors_a030", "blend_factors_a070",
                                     "blend_factors_a100"};
+    static const char *captions[4] = {"ALPHA 0.01", "ALPHA 0.30", "ALPHA 0.70", "ALPHA 1.00"};
     Example ex;
     example_start(&ex, "blend_factors", argc, argv, 450, 450, 0, 0);
     ortho(450, 450);
@@ -37,6 +38,7 @@ int main(int argc, char **argv)
         for (int y = 0; y < 6; y++)
             for (int x = 0; x < 6; x++)
                 square_with_blending(50 + 60 * x, 50 + 60 * y, sfactors[y], dfactors[x], alphas[a]);
+        label(&ex, 14, 426, 2, captions[a]);
         example_save(&ex, images[a]);
     }
     return example_finish(&ex);

@@ -88,6 +88,10 @@ int main(int argc, char **argv)
     perspective(FOVY, 1.0, NEAR, FAR);
     triangle();
 
+    panel_label(&ex, 0, 3, 1, "SIDE VIEW");
+    panel_label(&ex, 1, 3, 1, "WRONG: DIVIDE FIRST");
+    panel_label(&ex, 2, 3, 1, "RIGHT: CLIPPED");
+
     example_save(&ex, "clip_behind_camera");
     return example_finish(&ex);
 }

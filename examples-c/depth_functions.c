@@ -12,6 +12,7 @@ int main(int argc, char **argv)
 {
     static const GLenum functions[8] = {GL_NEVER, GL_LESS, GL_EQUAL, GL_LEQUAL,
                                         GL_GREATER, GL_NOTEQUAL, GL_GEQUAL, GL_ALWAYS};
+    static const char *names[8] = {"NEVER", "LESS", "EQUAL", "LEQUAL", "GREATER", "NOTEQUAL", "GEQUAL", "ALWAYS"};
     Example ex;
     example_start(&ex, "depth_functions", argc, argv, 640, 320, 24, 0);
     glEnable(GL_DEPTH_TEST);
@@ -30,6 +31,7 @@ int main(int argc, char **argv)
         rect_z(5, 55, 55, 95, 0.6f);
         rect_z(55, 55, 105, 95, 0.0f);
         rect_z(105, 55, 155, 95, -0.6f);
+        panel_label(&ex, i, 4, 2, names[i]);
     }
     example_save(&ex, "depth_functions");
     return example_finish(&ex);

@@ -26,6 +26,7 @@ int main(int argc, char **argv)
         glDepthMask(GL_TRUE);
         glColor3f(0.9f, 0.15f, 0.1f);
         rect_z(70, 70, 180, 180, -0.4f); /* depth 0.7 */
+        panel_label(&ex, mode, 3, 1, mode == 0 ? "TEST OFF" : mode == 1 ? "TEST ON, MASK ON" : "GREEN MASK OFF");
     }
     example_save(&ex, "depth_mask");
     return example_finish(&ex);

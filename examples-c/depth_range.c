@@ -32,6 +32,7 @@ static void triangle(void)
 
 int main(int argc, char **argv)
 {
+    static const char *names[4] = {"0,1 LESS", "1,0 GREATER", "LAYERS", "SELECTIVE CLEAR"};
     Example ex;
     example_start(&ex, "depth_range", argc, argv, 640, 160, 24, 0);
     glEnable(GL_DEPTH_TEST);
@@ -70,6 +71,7 @@ int main(int argc, char **argv)
             triangle();
             break;
         }
+        panel_label(&ex, use, 4, 1, names[use]);
     }
     example_save(&ex, "depth_range");
     return example_finish(&ex);

@@ -4,6 +4,7 @@
  *   example_start(&ex, "stencil_triangle", argc, argv, 600, 200, 24, 8);  // RGBA8 + depth + stencil
  *   panel(&ex, 0, 3, 1, 0.1f, 0.1f, 0.1f);   // viewport + scissor on panel 0 of 3x1, cleared
  *   ...draw...
+ *   panel_label(&ex, 0, 3, 1, "STEP 1");        // a caption in the panel's corner
  *   example_save(&ex, "stencil_triangle");    // writes <dir>/stencil_triangle.png
  *   return example_finish(&ex);
  *
@@ -174,6 +175,71 @@ static inline void box(float x0, float y0, float z0, float x1, float y1, float z
             glVertex3fv(v[faces[f][k]]);
     }
     glEnd();
+}
+
+/* Labels: a 3x5 pixel font (rows top to bottom, '1' = lit), drawn as axis-aligned quads
+ * with integer corners, so every implementation covers exactly the same pixels. */
+static const char *const label_glyphs[][2] = {
+    {"A", "010101111101101"}, {"B", "110101110101110"}, {"C", "011100100100011"}, {"D", "110101101101110"},
+    {"E", "111100110100111"}, {"F", "111100110100100"}, {"G", "011100101101011"}, {"H", "101101111101101"},
+    {"I", "111010010010111"}, {"J", "001001001101010"}, {"K", "101101110101101"}, {"L", "100100100100111"},
+    {"M", "101111111101101"}, {"N", "110101101101101"}, {"O", "010101101101010"}, {"P", "110101110100100"},
+    {"Q", "010101101110011"}, {"R", "110101110101101"}, {"S", "011100010001110"}, {"T", "111010010010010"},
+    {"U", "101101101101111"}, {"V", "101101101101010"}, {"W", "101101111111101"}, {"X", "101101010101101"},
+    {"Y", "101101010010010"}, {"Z", "111001010100111"}, {"0", "111101101101111"}, {"1", "010110010010111"},
+    {"2", "110001010100111"}, {"3", "110001010001110"}, {"4", "101101111001001"}, {"5", "111100110001110"},
+    {"6", "011100111101111"}, {"7", "111001010010010"}, {"8", "111101111101111"}, {"9", "111101111001110"},
+    {"_", "000000000000111"}, {"-", "000000111000000"}, {".", "000000000000010"}, {",", "000000000010100"},
+    {"+", "000010111010000"}, {"(", "001010010010001"}, {")", "100010010010100"}, {"/", "001001010100100"},
+    {"=", "000111000111000"}, {":", "000010000010000"}, {">", "100010001010100"}, {"<", "001010100010001"},
+};
+
+/* Writes `text` (upper case, digits, _-.,+()/=:<> and spaces) with its lower left corner at
+ * window pixel (x, y), `scale` pixels per font pixel, white on a black box. GL state and
+ * matrices are saved and restored, so a label can be drawn at any point. */
+static inline void label(const Example *ex, int x, int y, int scale, const char *text)
+{
+    glPushAttrib(GL_ALL_ATTRIB_BITS);
+    glMatrixMode(GL_PROJECTION);
+    glPushMatrix();
+    glMatrixMode(GL_MODELVIEW);
+    glPushMatrix();
+    glDisable(GL_SCISSOR_TEST), glDisable(GL_DEPTH_TEST), glDisable(GL_STENCIL_TEST);
+    glDisable(GL_BLEND), glDisable(GL_COLOR_LOGIC_OP), glDisable(GL_ALPHA_TEST), glDisable(GL_FOG);
+    glDisable(GL_CULL_FACE), glDisable(GL_CLIP_PLANE0), glDisable(GL_DITHER);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    glShadeModel(GL_FLAT);
+    glViewport(0, 0, ex->width, ex->height);
+    ortho((float)ex->width, (float)ex->height);
+    int n = (int)strlen(text);
+    glColor3f(0, 0, 0);
+    rect((float)x - scale, (float)y - scale, (float)(x + n * 4 * scale), (float)(y + 6 * scale));
+    glColor3f(1, 1, 1);
+    for (int i = 0; i < n; i++) {
+        const char *bits = NULL;
+        for (size_t g = 0; g < sizeof label_glyphs / sizeof label_glyphs[0]; g++)
+            if (label_glyphs[g][0][0] == text[i])
+                bits = label_glyphs[g][1];
+        for (int k = 0; bits && k < 15; k++)
+            if (bits[k] == '1') {
+                int px = x + (i * 4 + k % 3) * scale, py = y + (4 - k / 3) * scale;
+                rect((float)px, (float)py, (float)(px + scale), (float)(py + scale));
+            }
+    }
+    glMatrixMode(GL_PROJECTION);
+    glPopMatrix();
+    glMatrixMode(GL_MODELVIEW);
+    glPopMatrix();
+    glPopAttrib();
+}
+
+/* A label in the top left corner of panel `index` of a columns x rows grid (see panel()). */
+static inline void panel_label(const Example *ex, int index, int columns, int rows, const char *text)
+{
+    int w = ex->width / columns, h = ex->height / rows;
+    int x = (index % columns) * w, y = ex->height - (index / columns) * h;
+    label(ex, x + 6, y - 16, 2, text);
 }
 
 #endif

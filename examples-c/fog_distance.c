@@ -40,6 +40,7 @@ int main(int argc, char **argv)
         look_at(0, 2.0, 0.0, 0, 2.0, -10, 0, 1, 0);
         fog_scene();
         wall();
+        panel_label(&ex, i, 2, 1, i == 0 ? "EYE PLANE" : "RADIAL");
     }
     example_save(&ex, "fog_distance");
     return example_finish(&ex);

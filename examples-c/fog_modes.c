@@ -25,6 +25,7 @@ int main(int argc, char **argv)
         perspective(60.0, 1.0, 0.5, 100.0);
         look_at(0, 2.0, 4.0, 0, 1.0, -10, 0, 1, 0);
         fog_scene();
+        panel_label(&ex, i, 3, 1, i == 0 ? "GL_LINEAR" : i == 1 ? "GL_EXP" : "GL_EXP2");
     }
     example_save(&ex, "fog_modes");
     return example_finish(&ex);

@@ -13,6 +13,9 @@ int main(int argc, char **argv)
                                    GL_AND, GL_OR, GL_NAND, GL_NOR,
                                    GL_XOR, GL_EQUIV, GL_AND_INVERTED, GL_OR_INVERTED};
     static const unsigned char stripes[4][3] = {{0, 0, 0}, {255, 255, 255}, {255, 160, 0}, {40, 80, 220}};
+    static const char *names[16] = {"CLEAR", "COPY", "NOOP", "SET", "COPY_INVERTED", "INVERT", "AND_REVERSE",
+                                    "OR_REVERSE", "AND", "OR", "NAND", "NOR", "XOR", "EQUIV", "AND_INVERTED",
+                                    "OR_INVERTED"};
     Example ex;
     example_start(&ex, "logic_ops", argc, argv, 480, 480, 0, 0);
     for (int i = 0; i < 16; i++) {
@@ -29,6 +32,7 @@ int main(int argc, char **argv)
         glColor3ub(0, 160, 150);
         rect(20, 20, 100, 60);
         glDisable(GL_COLOR_LOGIC_OP);
+        panel_label(&ex, i, 4, 4, names[i]);
     }
     example_save(&ex, "logic_ops");
     return example_finish(&ex);

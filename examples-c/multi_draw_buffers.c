@@ -32,6 +32,8 @@ static void the_draw(void)
 
 int main(int argc, char **argv)
 {
+    static const char *names[6] = {"SLOT 0: OFF", "SLOT 1: ALPHA", "SLOT 2: ADD", "SLOT 3: REV SUB",
+                                   "FRONT_AND_BACK", "NONE"};
     Example ex;
     example_start(&ex, "multi_draw_buffers", argc, argv, 480, 320, 0, 0);
 
@@ -58,6 +60,7 @@ int main(int argc, char **argv)
             glDrawBuffer(i == 4 ? GL_FRONT_AND_BACK : GL_NONE);
         }
         the_draw();
+        panel_label(&ex, i, 3, 2, names[i]);
     }
     glDrawBuffer(GL_FRONT_LEFT);
     example_save(&ex, "multi_draw_buffers");

@@ -95,6 +95,7 @@ int main(int argc, char **argv)
             glEnable(GL_DEPTH_TEST);
         }
         glDisable(GL_STENCIL_TEST);
+        panel_label(&ex, capped, 2, 1, capped ? "CAPPED (GL_INVERT)" : "CUT, NO CAP");
     }
     example_save(&ex, "stencil_capping");
     return example_finish(&ex);

@@ -79,6 +79,7 @@ int main(int argc, char **argv)
         if (!with_stencil)
             blue_sphere(); /* without the stencil the sphere just lies on top */
         glDisable(GL_STENCIL_TEST);
+        panel_label(&ex, with_stencil, 2, 1, with_stencil ? "WITH STENCIL" : "WITHOUT STENCIL");
     }
     example_save(&ex, "stencil_diamond");
     return example_finish(&ex);

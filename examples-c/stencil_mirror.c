@@ -127,6 +127,10 @@ int main(int argc, char **argv)
     camera();
     mirrored_picture(1);
 
+    panel_label(&ex, 0, 3, 1, "REFLECTED SCENE");
+    panel_label(&ex, 1, 3, 1, "WITHOUT STENCIL");
+    panel_label(&ex, 2, 3, 1, "LIMITED BY STENCIL");
+
     example_save(&ex, "stencil_mirror");
     return example_finish(&ex);
 }

@@ -44,6 +44,7 @@ int main(int argc, char **argv)
             glColor3f(0, 0, 1);
             square();
         }
+        panel_label(&ex, steps - 1, 3, 1, steps == 1 ? "1" : steps == 2 ? "2: EQUAL 1" : "3: NOTEQUAL 1");
     }
     example_save(&ex, "stencil_triangle");
     return example_finish(&ex);

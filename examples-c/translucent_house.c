@@ -73,6 +73,7 @@ int main(int argc, char **argv)
         roof();
         if (with_planes)
             planes();
+        panel_label(&ex, i, 2, 2, depth_test ? "DEPTH TEST ON" : "DEPTH TEST OFF");
     }
     example_save(&ex, "translucent_house");
     return example_finish(&ex);

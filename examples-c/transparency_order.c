@@ -31,6 +31,8 @@ static void red_plane(void)
 
 int main(int argc, char **argv)
 {
+    static const char *names[4] = {"BACK TO FRONT, WRITES OFF", "BACK TO FRONT, WRITES ON",
+                                   "FRONT TO BACK, WRITES ON", "FRONT TO BACK, WRITES OFF"};
     Example ex;
     example_start(&ex, "transparency_order", argc, argv, 600, 480, 24, 0);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
@@ -55,6 +57,7 @@ int main(int argc, char **argv)
             red_plane();
         }
         glDepthMask(GL_TRUE);
+        panel_label(&ex, i, 2, 2, names[i]);
     }
     example_save(&ex, "transparency_order");
     return example_finish(&ex);

@@ -35,6 +35,7 @@ static void floor_and_decal(int offset)
 
 int main(int argc, char **argv)
 {
+    static const char *names[4] = {"NEAR 0.05", "NEAR 1.0", "NEAR 0.05 + OFFSET", "NEAR 1.0 + OFFSET"};
     Example ex;
     example_start(&ex, "zfighting", argc, argv, 640, 320, 16, 0);
     glEnable(GL_DEPTH_TEST);
@@ -45,6 +46,7 @@ int main(int argc, char **argv)
             perspective(50.0, 1.0, i == 0 ? 0.05 : 1.0, 60.0);
             look_at(0, 2, 6, 0, 0, -6, 0, 1, 0);
             floor_and_decal(offset);
+            panel_label(&ex, i, 2, 1, names[offset * 2 + i]);
         }
         example_save(&ex, offset ? "zfighting_offset" : "zfighting");
     }
