@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # Everything CI checks: set-up, the release build (the drop-in libraries the capi tests
 # load), the tests (Rust unit tests and tests/capi.rs, which runs every capi-tests/*.c on
-# Mesa and on tessera), the GLX checks under Xvfb (tools/xvfb-tests.sh, piglit included),
-# formatting and clippy.
+# Mesa and on tessera; compare/tests/examples.rs, which runs tessera-compare on examples-c/
+# against Mesa and opens its HTML report in headless chromium), the GLX checks under Xvfb
+# (tools/xvfb-tests.sh, piglit included), the fuzz target (tools/fuzz.sh), formatting and clippy.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-bash tools/setup-debian.sh
+bash tools/setup-debian.sh --test   # --test: also chromium, for the HTML report check
 cargo build --release
 cargo test --release
 bash tools/xvfb-tests.sh   # GLX under a private Xvfb: glxinfo, glxgears, freeglut, two threads, piglit
