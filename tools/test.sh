@@ -8,6 +8,8 @@ cd "$(dirname "$0")/.."
 bash tools/setup-debian.sh
 cargo build --release
 cargo test --release
+# Command-stream fuzzing (fuzz/): past findings replayed, then 90 s of libFuzzer.
+bash tools/fuzz.sh 90
 cargo fmt --check
 cargo clippy --all-targets --release -- -D warnings
 echo "test.sh: all checks passed"
