@@ -11,6 +11,8 @@ bash tools/setup-debian.sh --test   # --test: also chromium, for the HTML report
 cargo build --release
 cargo test --release
 bash tools/xvfb-tests.sh   # GLX under a private Xvfb: glxinfo, glxgears, freeglut, two threads, piglit
+# Command-stream fuzzing (fuzz/): past findings replayed, then 90 s of libFuzzer.
+bash tools/fuzz.sh 90
 cargo fmt --check
 cargo clippy --all-targets --release -- -D warnings
 echo "test.sh: all checks passed"

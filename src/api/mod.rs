@@ -30,8 +30,22 @@ pub mod osmesa;
 pub mod procs;
 pub mod types;
 
+#[cfg(test)]
+mod panic_injection;
+
 use crate::context::{current, Context};
 use std::panic::{catch_unwind, AssertUnwindSafe};
+use std::sync::atomic::{AtomicU64, Ordering};
+
+/// How many panics the API edge has caught in this process (see [`caught_panics`]).
+static CAUGHT_PANICS: AtomicU64 = AtomicU64::new(0);
+
+/// How many panics the API edge has caught so far: each is a tessera bug that became an
+/// ignored call. The fuzz target and the reliability tests read it to turn such a bug into
+/// a finding.
+pub fn caught_panics() -> u64 {
+    CAUGHT_PANICS.load(Ordering::Relaxed)
+}
 
 /// Runs `f` on the calling thread's current context; returns `default` when there is none or
 /// when `f` panics (the panic is reported on stderr and becomes an ignored call).
@@ -41,6 +55,11 @@ pub(crate) fn with_context<R: Copy>(default: R, f: impl FnOnce(&mut Context) -> 
 
 /// Runs `f` with panics caught; returns `default` if it panicked.
 pub(crate) fn guard<R>(default: R, f: impl FnOnce() -> R) -> R {
+    let f = || {
+        #[cfg(test)]
+        panic_injection::maybe_panic(panic_injection::Where::AtTheEdge);
+        f()
+    };
     match catch_unwind(AssertUnwindSafe(f)) {
         Ok(value) => value,
         Err(payload) => {
@@ -49,6 +68,7 @@ pub(crate) fn guard<R>(default: R, f: impl FnOnce() -> R) -> R {
                 .map(|s| s.to_string())
                 .or_else(|| payload.downcast_ref::<String>().cloned())
                 .unwrap_or_else(|| "unknown panic".to_string());
+            CAUGHT_PANICS.fetch_add(1, Ordering::Relaxed);
             eprintln!("tessera: internal error caught at the API edge: {message}");
             default
         }

@@ -93,8 +93,19 @@ pub fn with_current<R>(f: impl FnOnce(&mut Context) -> R) -> Option<R> {
             let slot = slot.borrow();
             let shared = slot.0.as_ref()?;
             let mut gl = shared.lock();
+            #[cfg(test)]
+            if PANIC_WHILE_LOCKED.with(|p| p.get()) {
+                panic!("injected panic while holding the context");
+            }
             Some(f(&mut gl))
         })
         .ok()
         .flatten()
+}
+
+#[cfg(test)]
+thread_local! {
+    /// Test builds: make every entry point on this thread panic while it holds the current
+    /// context's lock (see `api::panic_injection`).
+    pub static PANIC_WHILE_LOCKED: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
 }
