@@ -166,18 +166,22 @@ pub unsafe extern "C" fn glXQueryExtension(dpy: *mut Display, errorBase: *mut c_
 /// `major`/`minor` must be NULL or writable.
 #[no_mangle]
 pub unsafe extern "C" fn glXQueryVersion(dpy: *mut Display, major: *mut c_int, minor: *mut c_int) -> Bool {
-    if dpy.is_null() {
-        return FALSE;
-    }
-    set(major, 1);
-    set(minor, 4);
-    TRUE
+    guard(FALSE, || {
+        if dpy.is_null() {
+            return FALSE;
+        }
+        set(major, 1);
+        set(minor, 4);
+        TRUE
+    })
 }
 
 #[no_mangle]
 pub extern "C" fn glXQueryExtensionsString(dpy: *mut Display, screen: c_int) -> *const c_char {
-    let _ = (dpy, screen);
-    EXTENSIONS.as_ptr()
+    guard(std::ptr::null(), || {
+        let _ = (dpy, screen);
+        EXTENSIONS.as_ptr()
+    })
 }
 
 fn glx_string(name: c_int) -> *const c_char {
@@ -191,14 +195,18 @@ fn glx_string(name: c_int) -> *const c_char {
 
 #[no_mangle]
 pub extern "C" fn glXGetClientString(dpy: *mut Display, name: c_int) -> *const c_char {
-    let _ = dpy;
-    glx_string(name)
+    guard(std::ptr::null(), || {
+        let _ = dpy;
+        glx_string(name)
+    })
 }
 
 #[no_mangle]
 pub extern "C" fn glXQueryServerString(dpy: *mut Display, screen: c_int, name: c_int) -> *const c_char {
-    let _ = (dpy, screen);
-    glx_string(name)
+    guard(std::ptr::null(), || {
+        let _ = (dpy, screen);
+        glx_string(name)
+    })
 }
 
 /// # Safety
@@ -624,15 +632,19 @@ pub unsafe extern "C" fn glXQueryContext(
 /// GLX events (pbuffer clobber, swap complete) are never generated: the mask is accepted.
 #[no_mangle]
 pub extern "C" fn glXSelectEvent(dpy: *mut Display, draw: GLXDrawable, event_mask: c_ulong) {
-    let _ = (dpy, draw, event_mask);
+    guard((), || {
+        let _ = (dpy, draw, event_mask);
+    })
 }
 
 /// # Safety
 /// `event_mask` must be NULL or writable.
 #[no_mangle]
 pub unsafe extern "C" fn glXGetSelectedEvent(dpy: *mut Display, draw: GLXDrawable, event_mask: *mut c_ulong) {
-    let _ = (dpy, draw);
-    set(event_mask, 0);
+    guard((), || {
+        let _ = (dpy, draw);
+        set(event_mask, 0);
+    })
 }
 
 #[no_mangle]
@@ -654,7 +666,9 @@ pub extern "C" fn glXWaitX() {
 /// have yet: no lists are created.
 #[no_mangle]
 pub extern "C" fn glXUseXFont(font: c_ulong, first: c_int, count: c_int, listBase: c_int) {
-    let _ = (font, first, count, listBase);
+    guard((), || {
+        let _ = (font, first, count, listBase);
+    })
 }
 
 /// # Safety
@@ -680,28 +694,34 @@ pub unsafe extern "C" fn glXGetProcAddressARB(procName: *const GLubyte) -> GLXex
 /// Swap intervals: tessera presents immediately; the calls succeed and change nothing.
 #[no_mangle]
 pub extern "C" fn glXSwapIntervalEXT(dpy: *mut Display, drawable: GLXDrawable, interval: c_int) {
-    let _ = (dpy, drawable, interval);
+    guard((), || {
+        let _ = (dpy, drawable, interval);
+    })
 }
 
 #[no_mangle]
 pub extern "C" fn glXSwapIntervalMESA(interval: c_uint) -> c_int {
-    let _ = interval;
-    0
+    guard(0, || {
+        let _ = interval;
+        0
+    })
 }
 
 #[no_mangle]
 pub extern "C" fn glXGetSwapIntervalMESA() -> c_int {
-    0
+    guard(0, || 0)
 }
 
 #[no_mangle]
 pub extern "C" fn glXSwapIntervalSGI(interval: c_int) -> c_int {
-    // GLX_SGI_swap_control: a non-positive interval is GLX_BAD_VALUE (6).
-    if interval <= 0 {
-        6
-    } else {
-        0
-    }
+    guard(0, || {
+        // GLX_SGI_swap_control: a non-positive interval is GLX_BAD_VALUE (6).
+        if interval <= 0 {
+            6
+        } else {
+            0
+        }
+    })
 }
 
 #[cfg(test)]
