@@ -23,6 +23,7 @@ pub mod gl_transform;
 pub mod gl_vertex;
 pub mod osmesa;
 pub mod procs;
+pub mod tessera_ext;
 pub mod types;
 
 use crate::context::{current, Context};

@@ -23,6 +23,8 @@ pub mod strings;
 pub mod transform;
 pub mod vertex_input;
 #[cfg(test)]
+mod hard_case_tests;
+#[cfg(test)]
 mod watertight_tests;
 
 use crate::api::enums::*;
@@ -59,6 +61,8 @@ pub struct Context {
     pub vertex_input: vertex_input::VertexInput,
     /// The buffer objects (one table, so that it can become shared between contexts).
     pub buffers: crate::vertex::buffer_objects::BufferTable,
+    /// The accuracy mode of the draws (`TESSERA_ACCURACY` at creation, `tesseraSetAccuracy`).
+    pub accuracy: crate::raster::accuracy::Accuracy,
 }
 
 impl Context {
@@ -78,6 +82,7 @@ impl Context {
             bound_once: false,
             vertex_input: vertex_input::VertexInput::default(),
             buffers: Default::default(),
+            accuracy: crate::raster::accuracy::Accuracy::from_env(),
         }
     }
 
