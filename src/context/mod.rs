@@ -14,6 +14,8 @@ pub mod current;
 pub mod draw;
 pub mod fragment_state;
 pub mod get;
+#[cfg(test)]
+mod hard_case_tests;
 pub mod hints;
 pub mod matrix;
 pub mod raster_state;
@@ -22,8 +24,6 @@ pub mod state;
 pub mod strings;
 pub mod transform;
 pub mod vertex_input;
-#[cfg(test)]
-mod hard_case_tests;
 #[cfg(test)]
 mod watertight_tests;
 
