@@ -960,3 +960,44 @@ fn nan_and_infinity_in_inputs_leave_buffers_finite() {
         }
     }
 }
+
+// ---------------------------------------------------------------------------------------
+// The accuracy modes' stated bounds.
+
+#[test]
+fn accuracy_modes_stay_within_their_stated_bounds() {
+    // A full-window quad whose left edge lies at w = 1 and right edge at w = r, red going
+    // from 0 (left) to 1 (right), into a float buffer. Perspective-correct red at window
+    // fraction s is s / (s + r(1 − s)); the fast mode interpolates linearly (red = s), whose
+    // worst error over s is (√r − 1)/(√r + 1) (at s = 1/(1 + √r)). Conformant is within f32
+    // rounding of exact.
+    for r in [1.0f32, 2.0, 4.0, 16.0] {
+        let render = |accuracy| {
+            let mut h = Harness::new(FLOAT, DepthStencilFormat::None, 64, 4, accuracy);
+            let v: Vec<Vertex> = [[-1.0f32, -1.0, 1.0], [1.0, -1.0, r], [1.0, 1.0, r], [-1.0, 1.0, 1.0]]
+                .iter()
+                .map(|p| {
+                    let red = if p[0] > 0.0 { 1.0 } else { 0.0 };
+                    vertex([p[0] * p[2], p[1] * p[2], 0.0, p[2]], [red, 0.5, 0.5, 1.0])
+                })
+                .collect();
+            h.draw(GL_QUADS, &v);
+            h.colors()
+        };
+        let exact = render(Accuracy::Exact);
+        for x in 0..64 {
+            let s = (x as f64 + 0.5) / 64.0;
+            let analytic = s / (s + r as f64 * (1.0 - s));
+            assert!((exact[x][0] as f64 - analytic).abs() < 1e-6, "exact r {r} x {x}: {} vs {analytic}", exact[x][0]);
+        }
+        let max_diff =
+            |a: &[[f32; 4]]| a.iter().zip(&exact).map(|(p, q)| (p[0] - q[0]).abs() as f64).fold(0.0, f64::max);
+        let conformant = max_diff(&render(Accuracy::Conformant));
+        assert!(conformant < 1e-5, "conformant r {r}: {conformant}");
+        let bound = (r.sqrt() as f64 - 1.0) / (r.sqrt() as f64 + 1.0);
+        let fast = max_diff(&render(Accuracy::Fast));
+        assert!(fast <= bound + 1e-5, "fast r {r}: {fast} above {bound}");
+        // The bound is tight: the fast mode is affine, not secretly perspective-correct.
+        assert!(fast >= 0.9 * bound, "fast r {r}: {fast} far below {bound}");
+    }
+}

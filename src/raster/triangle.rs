@@ -159,7 +159,9 @@ impl TriangleJob {
         let shading = match flat {
             Some(color) => Shading::Flat(color),
             None if v[0].color == v[1].color && v[1].color == v[2].color => Shading::Flat(v[0].color),
-            None if fast => Shading::Stepped(std::array::from_fn(|c| plane([v[0].color[c], v[1].color[c], v[2].color[c]]))),
+            None if fast => {
+                Shading::Stepped(std::array::from_fn(|c| plane([v[0].color[c], v[1].color[c], v[2].color[c]])))
+            }
             None if v[0].inv_w == v[1].inv_w && v[1].inv_w == v[2].inv_w => {
                 Shading::Affine(std::array::from_fn(|c| plane([v[0].color[c], v[1].color[c], v[2].color[c]])))
             }
