@@ -8,6 +8,8 @@ cd "$(dirname "$0")/.."
 bash tools/setup-debian.sh
 cargo build --release
 cargo test --release
+# A smoke run of the benchmark (64x64, one frame per scene: seconds; writes target/bench/quick).
+bash tools/bench.sh --quick
 cargo fmt --check
 cargo clippy --all-targets --release -- -D warnings
 echo "test.sh: all checks passed"

@@ -237,25 +237,21 @@ fn vertices_behind_the_eye_and_at_infinity_give_finite_colors_and_depths() {
             h.ctx.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
             let v: Vec<Vertex> = (0..3).map(|i| vertex(t[i], colors[i])).collect();
             h.draw(GL_TRIANGLES, &v);
-            let mut drawn = 0;
             for (i, c) in h.colors().iter().enumerate() {
                 if *c == [-7.0; 4] {
                     continue;
                 }
-                drawn += 1;
-                for ch in 0..4 {
+                for (ch, &value) in c.iter().enumerate() {
                     let (lo, hi) = (
                         colors.iter().map(|c| c[ch]).fold(1.0f32, f32::min),
                         colors.iter().map(|c| c[ch]).fold(0.0f32, f32::max),
                     );
                     assert!(
-                        c[ch].is_finite() && c[ch] >= lo - 1e-4 && c[ch] <= hi + 1e-4,
-                        "{accuracy:?} case {k}: pixel {i} channel {ch} = {}",
-                        c[ch]
+                        value.is_finite() && value >= lo - 1e-4 && value <= hi + 1e-4,
+                        "{accuracy:?} case {k}: pixel {i} channel {ch} = {value}"
                     );
                 }
             }
-            let _ = drawn;
             assert!(h.depths().iter().all(|&d| d <= 0xff_ffff));
         }
     }
@@ -985,10 +981,10 @@ fn accuracy_modes_stay_within_their_stated_bounds() {
             h.colors()
         };
         let exact = render(Accuracy::Exact);
-        for x in 0..64 {
+        for (x, pixel) in exact.iter().enumerate().take(64) {
             let s = (x as f64 + 0.5) / 64.0;
             let analytic = s / (s + r as f64 * (1.0 - s));
-            assert!((exact[x][0] as f64 - analytic).abs() < 1e-6, "exact r {r} x {x}: {} vs {analytic}", exact[x][0]);
+            assert!((pixel[0] as f64 - analytic).abs() < 1e-6, "exact r {r} x {x}: {} vs {analytic}", pixel[0]);
         }
         let max_diff =
             |a: &[[f32; 4]]| a.iter().zip(&exact).map(|(p, q)| (p[0] - q[0]).abs() as f64).fold(0.0, f64::max);
