@@ -269,6 +269,16 @@ pub fn depth_test(test: &DepthTest, depth: &mut DepthBand<'_>, row_start: usize,
     }
 }
 
+/// The mask with the low `n` bits set (n ≤ 64).
+#[inline]
+fn full_mask(n: usize) -> u64 {
+    if n >= 64 {
+        !0
+    } else {
+        (1u64 << n) - 1
+    }
+}
+
 /// Writes `colors[i]` for every bit of `live` to the row of `target` starting at
 /// `row_start`, converting to the buffer's format and honouring the channel `mask`.
 pub fn write_colors(
@@ -282,6 +292,13 @@ pub fn write_colors(
     let all = mask.iter().all(|&m| m);
     let lanes = colors.iter().enumerate().filter(|(i, _)| live & (1 << i) != 0);
     match target {
+        ColorBand::Unorm8(px) if all && live == full_mask(colors.len()) => {
+            // Every fragment written, every channel: a plain loop the compiler can unroll.
+            let cells = &mut px[row_start..row_start + colors.len()];
+            for (cell, c) in cells.iter_mut().zip(colors) {
+                *cell = c.map(|x| float_to_unorm(x, 8) as u8);
+            }
+        }
         ColorBand::Unorm8(px) => {
             for (i, c) in lanes {
                 let v = c.map(|x| float_to_unorm(x, 8) as u8);

@@ -2,7 +2,7 @@
  * and prints, per scene, the time of each repeated frame. Built once against the system's
  * Mesa headers and run once per implementation (LD_LIBRARY_PATH picks tessera or Mesa).
  *
- *   bench <out-dir> <repetitions> <size>
+ *   bench <out-dir> <repetitions> <size> [scene]   (only the scenes whose name starts with scene)
  *   bench --compare <reference.rgba> <image.rgba>   (no GL: prints the error of an image)
  *
  * Output lines (stdout):
@@ -313,8 +313,12 @@ static void save(const char *dir, const char *name)
     fclose(f);
 }
 
+static const char *only;
+
 static void run(const char *dir, const char *name, double (*scene)(void), int reps)
 {
+    if (only && strncmp(name, only, strlen(only)) != 0)
+        return;
     double fragments = 0;
     printf("scene %s", name);
     for (int r = -1; r < reps; r++) {
@@ -401,6 +405,7 @@ int main(int argc, char **argv)
     const char *dir = argv[1];
     int reps = atoi(argv[2]);
     W = H = atoi(argv[3]);
+    only = argc > 4 ? argv[4] : NULL;
     pixels = calloc((size_t)W * H, 4);
 
     double t0 = now_ms();
