@@ -323,11 +323,12 @@ static void run(const char *dir, const char *name, double (*scene)(void), int re
     printf("scene %s", name);
     for (int r = -1; r < reps; r++) {
         double t0 = now_ms();
+        /* The masks a scene left must not mask the next clear. */
+        reset_state();
         glClearColor(0.1f, 0.2f, 0.3f, 1.0f);
         glClearDepth(1.0);
         glClearStencil(0);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-        reset_state();
         fragments = scene();
         glFinish();
         double t1 = now_ms();
