@@ -237,27 +237,43 @@ pub(crate) fn passes(func: CompareFunc, fragment: u32, stored: u32) -> bool {
 /// row of `depth` starting at `offset`, updating stored depth where the test passes and
 /// writing is enabled. `z` holds window-space depths. Returns the fragments that pass.
 pub fn depth_test(test: &DepthTest, depth: &mut DepthBand<'_>, row_start: usize, z: &[f32], live: u64) -> u64 {
-    macro_rules! run {
-        ($px:expr, $bits:expr, $read:expr, $write:expr) => {{
+    // One loop per comparison function and format, so that the comparison is not chosen
+    // again at every pixel.
+    macro_rules! run_with {
+        ($px:expr, $bits:expr, $read:expr, $write:expr, $cmp:expr) => {{
             let mut pass = 0u64;
-            for (i, &zf) in z.iter().enumerate() {
+            let cells = &mut $px[row_start..row_start + z.len()];
+            for (i, (&zf, cell)) in z.iter().zip(cells.iter_mut()).enumerate() {
                 if live & (1 << i) == 0 {
                     continue;
                 }
                 let frag = fragment_depth_to_fixed(zf, $bits);
-                let cell = &mut $px[row_start + i];
                 #[allow(clippy::redundant_closure_call)]
                 let stored = ($read)(*cell);
-                if passes(test.func, frag, stored) {
+                #[allow(clippy::redundant_closure_call)]
+                if ($cmp)(frag, stored) {
                     pass |= 1 << i;
                     if test.write {
-                        #[allow(clippy::redundant_closure_call)]
                         ($write)(cell, frag);
                     }
                 }
             }
             pass
         }};
+    }
+    macro_rules! run {
+        ($px:expr, $bits:expr, $read:expr, $write:expr) => {
+            match test.func {
+                CompareFunc::Never => 0,
+                CompareFunc::Less => run_with!($px, $bits, $read, $write, |f: u32, s: u32| f < s),
+                CompareFunc::Equal => run_with!($px, $bits, $read, $write, |f: u32, s: u32| f == s),
+                CompareFunc::LessEqual => run_with!($px, $bits, $read, $write, |f: u32, s: u32| f <= s),
+                CompareFunc::Greater => run_with!($px, $bits, $read, $write, |f: u32, s: u32| f > s),
+                CompareFunc::NotEqual => run_with!($px, $bits, $read, $write, |f: u32, s: u32| f != s),
+                CompareFunc::GreaterEqual => run_with!($px, $bits, $read, $write, |f: u32, s: u32| f >= s),
+                CompareFunc::Always => run_with!($px, $bits, $read, $write, |_: u32, _: u32| true),
+            }
+        };
     }
     match depth {
         DepthBand::None => live,
