@@ -140,8 +140,8 @@ def svg_plot(path, results, impls, reference):
             one_thread = impl.endswith("-1t")
             fill = "white" if one_thread else color
             out.append(
-                f'<circle cx="{sx(t):.1f}" cy="{sy(e):.1f}" r="4" fill="{fill}" stroke="{color}" stroke-width="1.5">'
-                f"<title>{impl}: {t:.2f} ms, max error {e}</title></circle>"
+                f"<g><title>{impl}: {t:.2f} ms, max error {e}</title>"
+                f'<circle cx="{sx(t):.1f}" cy="{sy(e):.1f}" r="4" fill="{fill}" stroke="{color}" stroke-width="1.5"/></g>'
             )
     out.append("</svg>")
     with open(path, "w") as f:
