@@ -2,7 +2,8 @@
 //!
 //! Cargo names a cdylib `lib<name>.so` and has no post-link step, so this script gives the
 //! library Mesa's soname and leaves a versioned symlink (`libOSMesa.so.8 -> libOSMesa.so`)
-//! beside it in the profile directory. The link may dangle for the moment between this script
+//! beside it in the profile directory, plus `libOpenGL.so.0 -> libGL.so` and the pkg-config
+//! files `pkgconfig/gl.pc` and `pkgconfig/osmesa.pc`. The link may dangle for the moment between this script
 //! and the link step; after `cargo build` it resolves, and `LD_LIBRARY_PATH=target/release` is
 //! the install.
 use std::path::PathBuf;
@@ -23,9 +24,42 @@ fn main() {
     let Some(profile_dir) = out_dir.ancestors().nth(3) else {
         return;
     };
-    let link = profile_dir.join(&soname);
-    let _ = std::fs::remove_file(&link);
-    if let Err(err) = std::os::unix::fs::symlink(format!("lib{stem}.so"), &link) {
-        println!("cargo:warning=could not create {}: {err}", link.display());
+    let mut links = vec![soname];
+    if stem == "GL" {
+        // Debian's libGLU links glvnd's libOpenGL.so.0 (the GL half of libGL): GLU programs
+        // reach tessera through this name.
+        links.push("libOpenGL.so.0".to_string());
+    }
+    for name in &links {
+        let link = profile_dir.join(name);
+        let _ = std::fs::remove_file(&link);
+        if let Err(err) = std::os::unix::fs::symlink(format!("lib{stem}.so"), &link) {
+            println!("cargo:warning=could not create {}: {err}", link.display());
+        }
+    }
+    write_pkg_config(profile_dir, stem);
+}
+
+/// `<profile dir>/pkgconfig/gl.pc` or `osmesa.pc`, for programs built against tessera:
+/// `PKG_CONFIG_PATH=target/release/pkgconfig pkg-config --cflags --libs gl`.
+fn write_pkg_config(profile_dir: &std::path::Path, stem: &str) {
+    let manifest = PathBuf::from(std::env::var("CARGO_MANIFEST_DIR").expect("cargo sets CARGO_MANIFEST_DIR"));
+    let include = manifest.join("../../include");
+    let include = include.canonicalize().unwrap_or(include);
+    let (file, description) = match stem {
+        "GL" => ("gl.pc", "tessera's libGL: OpenGL and GLX on a software rasterizer"),
+        _ => ("osmesa.pc", "tessera's libOSMesa: off-screen OpenGL rendering into memory"),
+    };
+    let text = format!(
+        "prefix={prefix}\nlibdir=${{prefix}}\nincludedir={include}\n\nName: {name}\nDescription: {description}\nVersion: {version}\nLibs: -L${{libdir}} -l{stem}\nCflags: -I${{includedir}}\n",
+        prefix = profile_dir.display(),
+        include = include.display(),
+        name = file.trim_end_matches(".pc"),
+        version = std::env::var("CARGO_PKG_VERSION").unwrap_or_default(),
+    );
+    let dir = profile_dir.join("pkgconfig");
+    let written = std::fs::create_dir_all(&dir).and_then(|_| std::fs::write(dir.join(file), text));
+    if let Err(err) = written {
+        println!("cargo:warning=could not write {}: {err}", dir.join(file).display());
     }
 }

@@ -527,3 +527,40 @@ fn value_lines_keep_order_and_drop_free_keys() {
     assert_eq!(value_lines(stdout), [("a", "VALUE a 1 2"), ("b", "VALUE b error=0x0"), ("a", "VALUE a 3")]);
     assert_eq!(kept_values(stdout, &["a".to_string()]), ["VALUE b error=0x0"]);
 }
+
+#[test]
+fn debug_pipeline_prints_the_stages_each_draw_compiled() {
+    let Some(setup) = setup::require("TESSERA_DEBUG=pipeline") else {
+        return;
+    };
+    let binary = setup.out.join("programs/debug_pipeline");
+    std::fs::create_dir_all(binary.parent().unwrap()).unwrap();
+    let mut command = Command::new(CC);
+    command
+        .args(["-std=c11", "-Wall", "-Werror"])
+        .arg(setup.root.join("tests/programs/debug_pipeline.c"))
+        .args(["-lOSMesa", "-o"])
+        .arg(&binary);
+    let (ok, log) = process::output_of(&mut command);
+    assert!(ok, "debug_pipeline.c does not build:\n{log}");
+    let dir = setup.out.join("run/debug_pipeline");
+    std::fs::create_dir_all(&dir).unwrap();
+    let mut command = Command::new(&binary);
+    Implementation::Tessera.configure(&mut command, &setup);
+    command.env("TESSERA_DEBUG", "pipeline");
+    let finished = process::run_with_timeout(&mut command, &dir, TIMEOUT).unwrap();
+    assert_eq!(finished.exit, Exit::Code(0), "debug_pipeline failed:\n{}", finished.stderr);
+    let lines: Vec<&str> = finished.stderr.lines().filter(|l| l.starts_with("tessera pipeline:")).collect();
+    let expected = [
+        "GL_QUADS (4 vertices), state 0 compiled: pixels [0, 16) x [0, 16) → shade → target 0: write RGBA",
+        "GL_QUADS (4 vertices), state 1 compiled: pixels [0, 16) x [0, 16) → early depth Less write → shade → \
+         target 0: write RGBA",
+        "GL_QUADS (4 vertices), state 2 compiled: pixels [0, 16) x [0, 16) → shade → alpha Greater 0.5 (8-bit) → \
+         late depth Less write → target 0: blend Add(SrcAlpha, OneMinusSrcAlpha) write RGBA",
+        "GL_QUADS (4 vertices), state 0 cached: pixels [0, 16) x [0, 16) → shade → target 0: write RGBA",
+    ];
+    assert_eq!(lines.len(), expected.len(), "stderr:\n{}", finished.stderr);
+    for (line, want) in lines.iter().zip(expected) {
+        assert_eq!(line.trim_start_matches("tessera pipeline: "), want);
+    }
+}

@@ -18,3 +18,4 @@ done
 
 echo "main-job: pictures written to $PWD/out/:"
 ls -1 out/*.png
+echo "main-job: to compare them with Mesa (HTML report): target/release/tessera-compare --impl llvmpipe --impl tessera --html out/report examples-c"

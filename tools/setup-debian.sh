@@ -3,11 +3,20 @@
 #   gcc               compiles the C tests and examples
 #   libosmesa6-dev    Mesa's libOSMesa.so.8 (the reference implementation) and <GL/osmesa.h>
 #   libgl1-mesa-dev   <GL/gl.h> and <GL/glext.h>
+# and, with --test (tools/test.sh; the main job needs none of them):
+#   chromium          opens tessera-compare's HTML report
+#   xvfb piglit mesa-utils freeglut3-dev x11-apps libx11-dev python3 pkg-config
+#                     the GLX checks of tools/xvfb-tests.sh: a private X server, piglit's
+#                     tests, glxinfo/glxgears, a freeglut program, xwd screenshots
+#   g++               builds libFuzzer for tools/fuzz.sh
 # Runs `apt-get update` once (only if something is missing), as root or through sudo.
 # The Rust toolchain is not installed here (Debian's is too old): see README.md.
 set -euo pipefail
 
 packages=(gcc libosmesa6-dev libgl1-mesa-dev)
+if [[ ${1:-} == --test ]]; then
+    packages+=(chromium xvfb piglit mesa-utils freeglut3-dev x11-apps libx11-dev python3 pkg-config g++)
+fi
 missing=()
 for package in "${packages[@]}"; do
     if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed"; then

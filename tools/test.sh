@@ -1,13 +1,18 @@
 #!/usr/bin/env bash
 # Everything CI checks: set-up, the release build (the drop-in libraries the capi tests
 # load), the tests (Rust unit tests and tests/capi.rs, which runs every capi-tests/*.c on
-# Mesa and on tessera), formatting and clippy.
+# Mesa and on tessera; compare/tests/examples.rs, which runs tessera-compare on examples-c/
+# against Mesa and opens its HTML report in headless chromium), the GLX checks under Xvfb
+# (tools/xvfb-tests.sh, piglit included), the fuzz target (tools/fuzz.sh), formatting and clippy.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-bash tools/setup-debian.sh
+bash tools/setup-debian.sh --test   # --test: also chromium, for the HTML report check
 cargo build --release
 cargo test --release
+bash tools/xvfb-tests.sh   # GLX under a private Xvfb: glxinfo, glxgears, freeglut, two threads, piglit
+# Command-stream fuzzing (fuzz/): past findings replayed, then 90 s of libFuzzer.
+bash tools/fuzz.sh 90
 # A smoke run of the benchmark (64x64, one frame per scene: seconds; writes target/bench/quick).
 bash tools/bench.sh --quick
 cargo fmt --check

@@ -6196,6 +6196,8 @@ typedef void (*OSMESAproc)();
 extern "C" {
 #endif // __cplusplus
 
+void glStencilOpSeparateATI(GLenum face, GLenum sfail, GLenum dpfail, GLenum dppass);
+
 void glVertexPointer(GLint size, GLenum type_, GLsizei stride, const GLvoid *ptr);
 
 void glNormalPointer(GLenum type_, GLsizei stride, const GLvoid *ptr);
@@ -6413,6 +6415,40 @@ void glFogi(GLenum pname, GLint param);
 void glFogfv(GLenum pname, const GLfloat *params);
 
 void glFogiv(GLenum pname, const GLint *params);
+
+void glLightf(GLenum light, GLenum pname, GLfloat param);
+
+void glLighti(GLenum light, GLenum pname, GLint param);
+
+void glLightfv(GLenum light, GLenum pname, const GLfloat *params);
+
+void glLightiv(GLenum light, GLenum pname, const GLint *params);
+
+void glGetLightfv(GLenum light, GLenum pname, GLfloat *params);
+
+void glGetLightiv(GLenum light, GLenum pname, GLint *params);
+
+void glLightModelf(GLenum pname, GLfloat param);
+
+void glLightModeli(GLenum pname, GLint param);
+
+void glLightModelfv(GLenum pname, const GLfloat *params);
+
+void glLightModeliv(GLenum pname, const GLint *params);
+
+void glMaterialf(GLenum face, GLenum pname, GLfloat param);
+
+void glMateriali(GLenum face, GLenum pname, GLint param);
+
+void glMaterialfv(GLenum face, GLenum pname, const GLfloat *params);
+
+void glMaterialiv(GLenum face, GLenum pname, const GLint *params);
+
+void glGetMaterialfv(GLenum face, GLenum pname, GLfloat *params);
+
+void glGetMaterialiv(GLenum face, GLenum pname, GLint *params);
+
+void glColorMaterial(GLenum face, GLenum mode);
 
 void glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, GLenum type_, GLvoid *pixels);
 

@@ -12,22 +12,41 @@
 #![allow(non_snake_case)]
 
 pub mod enums;
+pub mod gl_aliases;
 pub mod gl_arrays;
 pub mod gl_buffer_objects;
 pub mod gl_buffers;
 pub mod gl_fragment;
+pub mod gl_lighting;
 pub mod gl_pixels;
 pub mod gl_raster_state;
 pub mod gl_state;
 pub mod gl_transform;
 pub mod gl_vertex;
+/// GLX needs the X types of <GL/glx.h>: kept out of tessera.h.
+/// cbindgen:ignore
+pub mod glx;
 pub mod osmesa;
 pub mod procs;
 pub mod tessera_ext;
 pub mod types;
 
+#[cfg(test)]
+mod panic_injection;
+
 use crate::context::{current, Context};
 use std::panic::{catch_unwind, AssertUnwindSafe};
+use std::sync::atomic::{AtomicU64, Ordering};
+
+/// How many panics the API edge has caught in this process (see [`caught_panics`]).
+static CAUGHT_PANICS: AtomicU64 = AtomicU64::new(0);
+
+/// How many panics the API edge has caught so far: each is a tessera bug that became an
+/// ignored call. The fuzz target and the reliability tests read it to turn such a bug into
+/// a finding.
+pub fn caught_panics() -> u64 {
+    CAUGHT_PANICS.load(Ordering::Relaxed)
+}
 
 /// Runs `f` on the calling thread's current context; returns `default` when there is none or
 /// when `f` panics (the panic is reported on stderr and becomes an ignored call).
@@ -37,6 +56,11 @@ pub(crate) fn with_context<R: Copy>(default: R, f: impl FnOnce(&mut Context) -> 
 
 /// Runs `f` with panics caught; returns `default` if it panicked.
 pub(crate) fn guard<R>(default: R, f: impl FnOnce() -> R) -> R {
+    let f = || {
+        #[cfg(test)]
+        panic_injection::maybe_panic(panic_injection::Where::AtTheEdge);
+        f()
+    };
     match catch_unwind(AssertUnwindSafe(f)) {
         Ok(value) => value,
         Err(payload) => {
@@ -45,6 +69,7 @@ pub(crate) fn guard<R>(default: R, f: impl FnOnce() -> R) -> R {
                 .map(|s| s.to_string())
                 .or_else(|| payload.downcast_ref::<String>().cloned())
                 .unwrap_or_else(|| "unknown panic".to_string());
+            CAUGHT_PANICS.fetch_add(1, Ordering::Relaxed);
             eprintln!("tessera: internal error caught at the API edge: {message}");
             default
         }

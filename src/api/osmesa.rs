@@ -295,11 +295,13 @@ pub extern "C" fn OSMesaColorClamp(enable: GLboolean) {
 #[no_mangle]
 pub unsafe extern "C" fn OSMesaPostprocess(osmesa: OSMesaContext, filter: *const c_char, enable_value: c_uint) {
     let _ = (osmesa, enable_value);
-    let name = if filter.is_null() {
-        String::from("(null)")
-    } else {
-        // SAFETY: non-null and NUL-terminated by the contract.
-        unsafe { CStr::from_ptr(filter) }.to_string_lossy().into_owned()
-    };
-    eprintln!("tessera: OSMesaPostprocess filter '{name}' is not supported; rendering is unchanged");
+    guard((), || {
+        let name = if filter.is_null() {
+            String::from("(null)")
+        } else {
+            // SAFETY: non-null and NUL-terminated by the contract.
+            unsafe { CStr::from_ptr(filter) }.to_string_lossy().into_owned()
+        };
+        eprintln!("tessera: OSMesaPostprocess filter '{name}' is not supported; rendering is unchanged");
+    })
 }

@@ -31,3 +31,72 @@ pub fn lookup(name: &[u8]) -> OSMESAproc {
 pub fn names() -> impl Iterator<Item = &'static [u8]> {
     table().0.iter().map(|(n, _)| *n)
 }
+
+#[cfg(test)]
+mod tests {
+    use crate::context::strings::EXTENSIONS;
+
+    /// The entry points each advertised GL extension defines (none: enums only).
+    fn entry_points(extension: &str) -> Vec<String> {
+        let list = |names: &str| names.split_whitespace().map(String::from).collect::<Vec<_>>();
+        match extension {
+            "GL_EXT_blend_color" => list("glBlendColorEXT"),
+            "GL_EXT_blend_minmax" | "GL_EXT_blend_subtract" => list("glBlendEquationEXT"),
+            "GL_EXT_blend_func_separate" => list("glBlendFuncSeparateEXT"),
+            "GL_EXT_blend_equation_separate" => list("glBlendEquationSeparateEXT"),
+            "GL_EXT_stencil_two_side" => list("glActiveStencilFaceEXT"),
+            "GL_ATI_separate_stencil" => list("glStencilOpSeparateATI glStencilFuncSeparateATI"),
+            "GL_ARB_draw_buffers" => list("glDrawBuffersARB"),
+            "GL_ARB_draw_buffers_blend" => {
+                list("glBlendEquationiARB glBlendEquationSeparateiARB glBlendFunciARB glBlendFuncSeparateiARB")
+            }
+            "GL_EXT_fog_coord" => {
+                list("glFogCoordfEXT glFogCoordfvEXT glFogCoorddEXT glFogCoorddvEXT glFogCoordPointerEXT")
+            }
+            "GL_EXT_provoking_vertex" => list("glProvokingVertexEXT"),
+            "GL_ARB_vertex_buffer_object" => list(
+                "glBindBufferARB glBufferDataARB glBufferSubDataARB glDeleteBuffersARB glGenBuffersARB \
+                 glGetBufferParameterivARB glGetBufferPointervARB glGetBufferSubDataARB glIsBufferARB \
+                 glMapBufferARB glUnmapBufferARB",
+            ),
+            "GL_EXT_secondary_color" => {
+                let mut names: Vec<String> = ["b", "d", "f", "i", "s", "ub", "ui", "us"]
+                    .iter()
+                    .flat_map(|t| [format!("glSecondaryColor3{t}EXT"), format!("glSecondaryColor3{t}vEXT")])
+                    .collect();
+                names.push("glSecondaryColorPointerEXT".into());
+                names
+            }
+            "GL_ARB_point_parameters" => list("glPointParameterfARB glPointParameterfvARB"),
+            "GL_EXT_point_parameters" => list("glPointParameterfEXT glPointParameterfvEXT"),
+            "GL_ARB_transpose_matrix" => list(
+                "glLoadTransposeMatrixfARB glLoadTransposeMatrixdARB glMultTransposeMatrixfARB glMultTransposeMatrixdARB",
+            ),
+            "GL_EXT_vertex_array" => list(
+                "glArrayElementEXT glColorPointerEXT glDrawArraysEXT glEdgeFlagPointerEXT glGetPointervEXT \
+                 glIndexPointerEXT glNormalPointerEXT glTexCoordPointerEXT glVertexPointerEXT",
+            ),
+            "GL_EXT_draw_range_elements" => list("glDrawRangeElementsEXT"),
+            "GL_EXT_multi_draw_arrays" => list("glMultiDrawArraysEXT glMultiDrawElementsEXT"),
+            "GL_EXT_stencil_wrap" | "GL_NV_fog_distance" | "GL_NV_blend_square" | "GL_EXT_blend_logic_op" => vec![],
+            other => panic!("{other}: list its entry points in this test"),
+        }
+    }
+
+    #[test]
+    fn every_advertised_extension_has_all_its_entry_points() {
+        for extension in EXTENSIONS {
+            for name in entry_points(extension) {
+                assert!(super::lookup(name.as_bytes()).is_some(), "{extension} lacks {name}");
+            }
+        }
+    }
+
+    #[test]
+    fn gl_2_0_entry_points_have_their_core_names() {
+        for name in ["glDrawBuffers", "glStencilFuncSeparate", "glStencilOpSeparate", "glStencilMaskSeparate"] {
+            assert!(super::lookup(name.as_bytes()).is_some(), "{name}");
+        }
+        assert!(super::lookup(b"glBlendEquationSeparate").is_some());
+    }
+}

@@ -180,6 +180,12 @@ pub struct SavedClientAttribs {
 }
 
 impl Context {
+    /// glXCopyContext: copies the attribute groups `mask` names (as glPushAttrib would save
+    /// them) from `source` into this context.
+    pub fn copy_attribs_from(&mut self, source: &mut Context, mask: u32) {
+        SavedAttribs::save(&mut source.state, mask).restore(&mut self.state);
+    }
+
     /// glPushAttrib.
     pub fn push_attrib(&mut self, mask: u32) {
         if !self.check_outside_begin_end() {
@@ -557,8 +563,13 @@ mod tests {
         ctx.set_capability(GL_TEXTURE_CUBE_MAP, true);
         ctx.pop_attrib();
         // Everything is back to the initial state; the active unit, which is not an enable,
-        // stays what it was set to (0) rather than what it was at the push (3).
-        assert_eq!(ctx.state, context().state);
+        // stays what it was set to (0) rather than what it was at the push (3). Enabling
+        // GL_COLOR_MATERIAL copied the current color into the materials, which stay.
+        let mut expected = context().state;
+        expected.lighting.materials[0].ambient = ctx.state.current.color;
+        expected.lighting.materials[0].diffuse = ctx.state.current.color;
+        expected.lighting.materials[1] = expected.lighting.materials[0];
+        assert_eq!(ctx.state, expected);
         assert_eq!(ctx.take_error(), GL_NO_ERROR);
     }
 

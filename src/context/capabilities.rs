@@ -157,6 +157,10 @@ impl Context {
             Some(f) => *f = on,
             None => self.error(GL_INVALID_ENUM),
         }
+        if cap == GL_COLOR_MATERIAL {
+            // Enabling starts tracking the current color at once.
+            self.update_color_material();
+        }
     }
 
     /// glIsEnabled.

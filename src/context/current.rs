@@ -68,7 +68,9 @@ pub fn make_current(context: Option<Arc<SharedContext>>) -> Result<(), BindError
             _ => *bound = Some(me),
         }
     }
-    let previous = CURRENT.with(|slot| std::mem::replace(&mut slot.borrow_mut().0, context.clone()));
+    // At process exit (atexit handlers releasing their context) the slot may already be
+    // destroyed: then nothing is current any more and nothing needs releasing.
+    let previous = CURRENT.try_with(|slot| std::mem::replace(&mut slot.borrow_mut().0, context.clone())).ok().flatten();
     if let Some(prev) = previous {
         let same = context.as_ref().is_some_and(|c| Arc::ptr_eq(c, &prev));
         if !same {
@@ -81,15 +83,29 @@ pub fn make_current(context: Option<Arc<SharedContext>>) -> Result<(), BindError
 
 /// The context current on this thread.
 pub fn current() -> Option<Arc<SharedContext>> {
-    CURRENT.with(|slot| slot.borrow().0.clone())
+    CURRENT.try_with(|slot| slot.borrow().0.clone()).ok().flatten()
 }
 
 /// Runs `f` on the current context; `None` when no context is current.
 pub fn with_current<R>(f: impl FnOnce(&mut Context) -> R) -> Option<R> {
-    CURRENT.with(|slot| {
-        let slot = slot.borrow();
-        let shared = slot.0.as_ref()?;
-        let mut gl = shared.lock();
-        Some(f(&mut gl))
-    })
+    CURRENT
+        .try_with(|slot| {
+            let slot = slot.borrow();
+            let shared = slot.0.as_ref()?;
+            let mut gl = shared.lock();
+            #[cfg(test)]
+            if PANIC_WHILE_LOCKED.with(|p| p.get()) {
+                panic!("injected panic while holding the context");
+            }
+            Some(f(&mut gl))
+        })
+        .ok()
+        .flatten()
+}
+
+#[cfg(test)]
+thread_local! {
+    /// Test builds: make every entry point on this thread panic while it holds the current
+    /// context's lock (see `api::panic_injection`).
+    pub static PANIC_WHILE_LOCKED: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
 }

@@ -21,7 +21,7 @@
 //! its provoking vertex under GL_FIRST_VERTEX_CONVENTION (here it stays the second vertex);
 //! and when front and back faces have different modes, Mesa applies the polygon offset of
 //! the first triangle's mode to the whole draw (here each triangle gets its own mode's).
-use super::Context;
+use super::{debug, Context};
 use crate::api::enums::*;
 use crate::api::types::GLenum;
 use crate::context::state::{LinePointState, MAX_LINE_WIDTH, MAX_POINT_SIZE};
@@ -36,6 +36,7 @@ use crate::setup::point::point_rect;
 use crate::setup::triangle::GUARD_BAND;
 use crate::vertex::assembly::{assemble, Primitive, QuadSplit};
 use crate::vertex::clip::{ClipPlanes, ClipVertex};
+use crate::vertex::lighting::{Lighting, NormalScaling};
 use crate::vertex::Vertex;
 use glam::{Mat4, Vec4};
 
@@ -136,6 +137,8 @@ struct Geometry {
     /// are discarded.
     line_planes: ClipPlanes,
     flat: bool,
+    /// Two-sided lighting: back-facing polygons take the back colors.
+    two_side: bool,
     cull: Option<GLenum>,
     front_ccw: bool,
     offset: Option<(f32, f32)>,
@@ -191,7 +194,17 @@ impl Context {
         // Mesa analyses changed matrices at draw time; their flags decide how products round.
         self.matrices.validate();
         let state = self.draw_state(&mut scene, width, height, color_format, depth_bits, stencil_bits);
-        let state_index = scene.add_state(state);
+        let description = debug::enabled("pipeline").then(|| {
+            let r = state.clip;
+            let stipple = if state.polygon_stipple.is_some() { "polygon stipple → " } else { "" };
+            format!("pixels [{}, {}) x [{}, {}) → {stipple}{}", r.x0, r.x1, r.y0, r.y1, state.fragment)
+        });
+        let (state_index, cached) = scene.add_state(state);
+        if let Some(stages) = description {
+            let how = if cached { "cached" } else { "compiled" };
+            let name = debug::mode_name(mode);
+            eprintln!("tessera pipeline: {name} ({} vertices), state {state_index} {how}: {stages}", vertices.len());
+        }
         let clip_vertices = self.transform(vertices, float_color);
         let geometry = self.geometry(depth_bits, height);
         let first_vertex = self.state.lighting.provoking_vertex == GL_FIRST_VERTEX_CONVENTION;
@@ -233,17 +246,20 @@ impl Context {
                         s.counter = 0;
                     }
                 }
-                let flat_color = geometry.flat.then(|| clip_vertices[provoking as usize].color);
+                let provoking = &clip_vertices[provoking as usize];
+                let flat_color = geometry.flat.then_some(provoking.color);
                 let (a, b) = (a as usize, b as usize);
-                emit_clip_line(
-                    &mut scene,
-                    state_index,
-                    &geometry,
-                    [&clip_vertices[a], &clip_vertices[b]],
-                    [outcodes[a], outcodes[b]],
-                    flat_color,
-                    stipple.as_mut(),
-                );
+                let codes = [outcodes[a], outcodes[b]];
+                if geometry.flat {
+                    // Flat shading covers the secondary color too (the lit specular term).
+                    let secondary_color = provoking.secondary_color;
+                    let ea = ClipVertex { secondary_color, ..clip_vertices[a] };
+                    let eb = ClipVertex { secondary_color, ..clip_vertices[b] };
+                    emit_clip_line(&mut scene, state_index, &geometry, [&ea, &eb], codes, flat_color, stipple.as_mut());
+                } else {
+                    let ends = [&clip_vertices[a], &clip_vertices[b]];
+                    emit_clip_line(&mut scene, state_index, &geometry, ends, codes, flat_color, stipple.as_mut());
+                }
             }
             Primitive::Triangle { v, provoking, .. } => {
                 let [a, b, c] = v.map(|i| i as usize);
@@ -251,10 +267,13 @@ impl Context {
                 if oa & ob & oc != 0 {
                     return;
                 }
-                let flat_color = geometry.flat.then(|| clip_vertices[provoking as usize].color);
+                let flat = geometry.flat.then(|| FlatColors::of(&clip_vertices[provoking as usize]));
                 if oa | ob | oc == 0 {
-                    let w = [a, b, c].map(|i| geometry.viewport.window(&clip_vertices[i]));
-                    emit_triangle(&mut scene, state_index, &geometry, w, flat_color);
+                    let (va, vb, vc) = (&clip_vertices[a], &clip_vertices[b], &clip_vertices[c]);
+                    let viewport = &geometry.viewport;
+                    let w = [viewport.window(va), viewport.window(vb), viewport.window(vc)];
+                    let back = [va.back_colors, vb.back_colors, vc.back_colors];
+                    emit_shaded_triangle(&mut scene, state_index, &geometry, w, back, flat);
                 } else {
                     poly.clear();
                     poly.extend([clip_vertices[a], clip_vertices[b], clip_vertices[c]]);
@@ -264,7 +283,8 @@ impl Context {
                     }
                     let w: Vec<WindowVertex> = poly.iter().map(|v| geometry.viewport.window(v)).collect();
                     for i in 1..w.len() - 1 {
-                        emit_triangle(&mut scene, state_index, &geometry, [w[0], w[i], w[i + 1]], flat_color);
+                        let back = [poly[0].back_colors, poly[i].back_colors, poly[i + 1].back_colors];
+                        emit_shaded_triangle(&mut scene, state_index, &geometry, [w[0], w[i], w[i + 1]], back, flat);
                     }
                 }
             }
@@ -306,10 +326,15 @@ impl Context {
         needed
     }
 
-    /// Whether GL_COLOR_SUM adds the secondary color (with lighting on, the secondary color
-    /// is the lighting's, which tessera does not compute yet).
+    /// Whether the color sum adds the secondary color: GL_COLOR_SUM without lighting; with
+    /// lighting, GL_SEPARATE_SPECULAR_COLOR (the secondary color is then the specular term;
+    /// under GL_SINGLE_COLOR it is zero and adding it changes nothing).
     pub(super) fn color_sum_active(&self) -> bool {
-        self.state.fog.color_sum && !self.state.lighting.enabled
+        if self.state.lighting.enabled {
+            self.state.lighting.color_control == GL_SEPARATE_SPECULAR_COLOR
+        } else {
+            self.state.fog.color_sum
+        }
     }
 
     /// The fragment state and clip rectangle of a draw.
@@ -382,7 +407,7 @@ impl Context {
             (_, GL_EYE_PLANE) => eye.z,
             _ => eye.z.abs(),
         };
-        vertices
+        let mut out: Vec<ClipVertex> = vertices
             .iter()
             .map(|v| {
                 let p = Vec4::from_array(v.position);
@@ -392,12 +417,46 @@ impl Context {
                     eye: eye.to_array(),
                     color: clamp4(v.color),
                     secondary_color: clamp4(v.secondary_color),
+                    back_colors: [[0.0; 4]; 2],
                     tex_coords: v.tex_coords,
                     fog_coord: if fog.enabled { fog_coord(v, eye) } else { v.fog_coord },
                     edge_flag: v.edge_flag,
                 }
             })
-            .collect()
+            .collect();
+        // Lighting is a pass of its own: unlit draws do not see it.
+        if self.state.lighting.enabled {
+            self.light_vertices(vertices, &mut out, &clamp4);
+        }
+        out
+    }
+
+    /// Replaces the colors of `out` by the lit colors of `vertices` (GL 2.1 section 2.14.1),
+    /// the back-face colors too under two-sided lighting.
+    fn light_vertices(&self, vertices: &[Vertex], out: &mut [ClipVertex], clamp4: &dyn Fn([f32; 4]) -> [f32; 4]) {
+        let transform = &self.state.transform;
+        let normals = if transform.normalize {
+            NormalScaling::Normalize
+        } else if transform.rescale_normal {
+            NormalScaling::Rescale(self.matrices.normal_rescale())
+        } else {
+            NormalScaling::None
+        };
+        let inverse = self.matrices.modelview_inverse().to_cols_array();
+        let mut lighting = Lighting::new(&self.state.lighting, inverse, normals);
+        // glMaterial between glBegin and glEnd: each mark applies from its vertex on.
+        let marks = &self.vertex_input.material_marks;
+        let mut next_mark = 0;
+        for (i, (v, c)) in vertices.iter().zip(out.iter_mut()).enumerate() {
+            while next_mark < marks.len() && marks[next_mark].0 <= i {
+                lighting.set_materials(&marks[next_mark].1);
+                next_mark += 1;
+            }
+            let lit = lighting.shade(c.eye, v.normal, v.color);
+            c.color = clamp4(lit.front);
+            c.secondary_color = clamp4(lit.front_secondary);
+            c.back_colors = [clamp4(lit.back), clamp4(lit.back_secondary)];
+        }
     }
 
     /// The per-draw geometry constants.
@@ -451,6 +510,7 @@ impl Context {
             offset_line: polygon.offset_line.then_some((polygon.offset_factor, polygon.offset_units * units_scale)),
             offset_point: polygon.offset_point.then_some((polygon.offset_factor, polygon.offset_units * units_scale)),
             flat: self.state.lighting.shade_model == GL_FLAT,
+            two_side: self.state.lighting.enabled && self.state.lighting.two_side,
             cull: polygon.cull_face.then_some(polygon.cull_face_mode),
             front_ccw: polygon.front_face == GL_CCW,
             offset: polygon.offset_fill.then_some((polygon.offset_factor, polygon.offset_units)),
@@ -584,8 +644,10 @@ impl Outline<'_> {
         }
         // An edge is drawn when the decomposition and the edge flag of its first vertex say so.
         let edges = std::array::from_fn(|i| t.edges[i] && v[i].edge_flag);
-        let flat = self.g.flat.then(|| v[if self.first_vertex { 0 } else { 2 }].color);
-        let corner = |c: &ClipVertex, fused: bool| (self.g.viewport.window_down(c, fused), self.g.viewport.window(c));
+        let flat = self.g.flat.then(|| FlatColors::of(v[if self.first_vertex { 0 } else { 2 }]));
+        let corner = |c: &ClipVertex, fused: bool| {
+            (self.g.viewport.window_down(c, fused), self.g.viewport.window(c), c.back_colors)
+        };
         if codes[0] | codes[1] | codes[2] == 0 {
             let w = v.map(|c| corner(c, true));
             self.draw(w, edges, t.first, flat);
@@ -619,7 +681,7 @@ impl Outline<'_> {
 
     /// Culls, offsets and draws one (clipped) triangle in its face's mode; `w` holds each
     /// corner in y-down and in GL window coordinates.
-    fn draw(&mut self, w: [(LineVertex, WindowVertex); 3], edges: [bool; 3], first: bool, flat: Option<[f32; 4]>) {
+    fn draw(&mut self, w: [Corner; 3], edges: [bool; 3], first: bool, flat: Option<FlatColors>) {
         let g = self.g;
         let mut l = w.map(|c| c.0);
         let (ex, ey, ez) = (l[0].x - l[2].x, l[0].y_down - l[2].y_down, l[0].z - l[2].z);
@@ -644,7 +706,7 @@ impl Outline<'_> {
                 if let Some(s) = self.stipple.as_mut() {
                     s.counter = 0;
                 }
-                emit_triangle(self.scene, self.state, g, w.map(|c| c.1), flat);
+                emit_shaded_triangle(self.scene, self.state, g, w.map(|c| c.1), w.map(|c| c.2), flat);
                 return;
             }
         };
@@ -658,11 +720,19 @@ impl Outline<'_> {
                 c.z = (c.z + z_offset).clamp(0.0, 1.0);
             }
         }
-        if let Some(color) = flat {
-            for c in &mut l {
-                c.color = color;
+        let use_back = g.two_side && !front;
+        if use_back {
+            for (c, corner) in l.iter_mut().zip(&w) {
+                (c.color, c.secondary_color) = (corner.2[0], corner.2[1]);
             }
         }
+        let flat = flat.map(|f| if use_back { f.back } else { f.front });
+        if let Some([color, secondary]) = flat {
+            for c in &mut l {
+                (c.color, c.secondary_color) = (color, secondary);
+            }
+        }
+        let flat = flat.map(|f| f[0]);
         if mode == GL_LINE {
             if first {
                 if let Some(s) = self.stipple.as_mut() {
@@ -687,6 +757,10 @@ impl Outline<'_> {
         }
     }
 }
+
+/// A corner of an outlined triangle: in llvmpipe's y-down window space, in GL window
+/// coordinates, and its back-face colors.
+type Corner = (LineVertex, WindowVertex, [[f32; 4]; 2]);
 
 /// Clips the polygon `poly` (each vertex's `edge_flag` telling whether the edge it starts
 /// is drawn) against the planes in `mask` as Mesa's clipper does for polygons it draws as
@@ -736,6 +810,7 @@ fn clip_outline(planes: &ClipPlanes, poly: &mut Vec<ClipVertex>, scratch: &mut V
                     clip: mix(from.clip, to.clip),
                     color: mix(from.color, to.color),
                     secondary_color: mix(from.secondary_color, to.secondary_color),
+                    back_colors: [0, 1].map(|k| mix(from.back_colors[k], to.back_colors[k])),
                     tex_coords: std::array::from_fn(|u| mix(from.tex_coords[u], to.tex_coords[u])),
                     fog_coord: from.fog_coord + t * (to.fog_coord - from.fog_coord),
                     edge_flag,
@@ -748,6 +823,52 @@ fn clip_outline(planes: &ClipPlanes, poly: &mut Vec<ClipVertex>, scratch: &mut V
         std::mem::swap(poly, scratch);
     }
     true
+}
+
+/// The colors of a flat-shaded primitive: its provoking vertex's front primary and
+/// secondary colors, and its back ones.
+#[derive(Clone, Copy, Debug)]
+struct FlatColors {
+    front: [[f32; 4]; 2],
+    back: [[f32; 4]; 2],
+}
+
+impl FlatColors {
+    fn of(v: &ClipVertex) -> Self {
+        FlatColors { front: [v.color, v.secondary_color], back: v.back_colors }
+    }
+}
+
+/// Whether a window-space triangle faces front (GL_FRONT_FACE).
+fn faces_front(g: &Geometry, w: &[WindowVertex; 3]) -> bool {
+    let area2 = (w[1].x - w[0].x) * (w[2].y - w[0].y) - (w[2].x - w[0].x) * (w[1].y - w[0].y);
+    (area2 > 0.0) == g.front_ccw
+}
+
+/// Emits a filled triangle with the colors of its facing: the back colors `back` of its
+/// corners when it faces back under two-sided lighting, and the provoking vertex's colors
+/// (primary and secondary) under flat shading.
+fn emit_shaded_triangle(
+    scene: &mut Scene,
+    state: u32,
+    g: &Geometry,
+    mut w: [WindowVertex; 3],
+    back: [[[f32; 4]; 2]; 3],
+    flat: Option<FlatColors>,
+) {
+    let use_back = g.two_side && !faces_front(g, &w);
+    if use_back {
+        for (c, b) in w.iter_mut().zip(back) {
+            (c.color, c.secondary_color) = (b[0], b[1]);
+        }
+    }
+    let flat = flat.map(|f| if use_back { f.back } else { f.front });
+    if let Some([_, secondary]) = flat {
+        for c in &mut w {
+            c.secondary_color = secondary;
+        }
+    }
+    emit_triangle(scene, state, g, w, flat.map(|f| f[0]));
 }
 
 /// Culls, offsets, sets up and bins one window-space triangle.

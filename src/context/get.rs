@@ -272,6 +272,12 @@ impl Context {
             GL_CLAMP_VERTEX_COLOR => one(Enum(s.lighting.clamp_vertex_color)),
             GL_SHADE_MODEL => one(Enum(s.lighting.shade_model)),
             GL_PROVOKING_VERTEX => one(Enum(s.lighting.provoking_vertex)),
+            GL_LIGHT_MODEL_AMBIENT => norm_floats(s.lighting.model_ambient),
+            GL_LIGHT_MODEL_LOCAL_VIEWER => one(Bool(s.lighting.local_viewer)),
+            GL_LIGHT_MODEL_TWO_SIDE => one(Bool(s.lighting.two_side)),
+            GL_LIGHT_MODEL_COLOR_CONTROL => one(Enum(s.lighting.color_control)),
+            GL_COLOR_MATERIAL_FACE => one(Enum(s.lighting.color_material_face)),
+            GL_COLOR_MATERIAL_PARAMETER => one(Enum(s.lighting.color_material_mode)),
 
             // Matrices.
             GL_MATRIX_MODE => one(Enum(s.transform.matrix_mode)),

@@ -767,6 +767,20 @@ impl MatrixStacks {
         Mat4::from_cols_array(top(&self.modelview).inverse())
     }
 
+    /// GL_RESCALE_NORMAL's factor as Mesa computes it: 1 for a length-preserving modelview
+    /// (rotations and translations by its flags), else 1/√(f) with f the squared length of
+    /// the inverse's third row (1 when f < 10⁻¹²). Call after [`MatrixStacks::validate`].
+    pub fn normal_rescale(&self) -> f32 {
+        let m = top(&self.modelview);
+        if m.flags_within(flag::ROTATION | flag::TRANSLATION) {
+            return 1.0;
+        }
+        let inv = m.inverse();
+        let f = inv[2] * inv[2] + inv[6] * inv[6] + inv[10] * inv[10];
+        let f = if f < 1e-12 { 1.0 } else { f };
+        1.0 / f.sqrt()
+    }
+
     /// Projection × modelview as Mesa computes its combined matrix (`_ModelProjectMatrix`):
     /// the 3×4 product when both are affine by their flags. Call after
     /// [`MatrixStacks::validate`].

@@ -11,12 +11,14 @@ pub mod attrib;
 pub mod buffers;
 pub mod capabilities;
 pub mod current;
+pub mod debug;
 pub mod draw;
 pub mod fragment_state;
 pub mod get;
 #[cfg(test)]
 mod hard_case_tests;
 pub mod hints;
+pub mod lighting;
 pub mod matrix;
 pub mod raster_state;
 pub mod read_pixels;

@@ -17,6 +17,7 @@ mod draws;
 mod immediate;
 
 use super::get::Value;
+use super::state::Material;
 use super::Context;
 use crate::api::enums::*;
 use crate::api::types::GLenum;
@@ -56,12 +57,27 @@ pub struct VertexInput {
     vertices: Vec<Vertex>,
     /// The vertices of an array draw under construction.
     batch: Vec<Vertex>,
+    /// glMaterial between glBegin and glEnd: from which open vertex on each front and back
+    /// material applies (empty when glMaterial was not called since glBegin).
+    pub material_marks: Vec<(usize, [Material; 2])>,
     /// Every batch handed to the geometry pipeline, for tests.
     #[cfg(test)]
     pub(crate) delivered: Vec<(GLenum, Vec<Vertex>)>,
 }
 
 impl Context {
+    /// Records, for glMaterial between glBegin and glEnd, that the current materials apply
+    /// from the next vertex on.
+    pub(crate) fn mark_material_change(&mut self) {
+        let at = self.vertex_input.vertices.len();
+        let materials = self.state.lighting.materials;
+        let marks = &mut self.vertex_input.material_marks;
+        match marks.last_mut() {
+            Some(last) if last.0 == at => last.1 = materials,
+            _ => marks.push((at, materials)),
+        }
+    }
+
     /// Hands finished vertices to the geometry pipeline.
     fn deliver(&mut self, mode: GLenum, vertices: &[Vertex]) {
         #[cfg(test)]

@@ -8,6 +8,7 @@
 //! ([`fog`]) finish the fragment colors (`raster::shade_span` applies them once colors are known).
 pub mod alpha;
 pub mod blend;
+pub mod describe;
 pub mod dither;
 pub mod fog;
 pub mod logic_op;

@@ -175,12 +175,30 @@ impl Framebuffer {
     pub fn accum_mut(&mut self) -> Option<&mut AccumBuffer> {
         self.accum.as_mut()
     }
+
+    /// Copies color buffer `from` into `to` (a buffer swap that leaves the back buffer as it
+    /// was); does nothing unless both exist.
+    pub fn copy_color(&mut self, from: ColorSlot, to: ColorSlot) {
+        let find = |slot| self.color.iter().position(|(s, _)| *s == slot);
+        let (Some(source), Some(target)) = (find(from), find(to)) else {
+            return;
+        };
+        if source == target {
+            return;
+        }
+        let copy = self.color[source].1.clone();
+        self.color[target].1 = copy;
+    }
 }
 
 /// Shows a framebuffer to its consumer: the OSMesa caller's memory, an X window, ...
 /// Called at the flush points of the API (glFlush, glFinish, swap) after rendering completed.
 pub trait Present: Send {
     fn present(&mut self, framebuffer: &Framebuffer);
+
+    /// Frees what the presenter holds in another process (an X server's GC, a shared
+    /// segment) while that is still possible; called when its target is destroyed.
+    fn release(&mut self) {}
 }
 
 /// A framebuffer together with the way it is presented: what a GL context draws into.

@@ -27,8 +27,13 @@ use triangle::TriangleJob;
 /// Tile side in pixels.
 pub const TILE_SIZE: usize = 64;
 
+/// How many of a scene's most recent draw states a new draw's state is compared with before
+/// it is added (see [`Scene::add_state`]).
+pub const STATE_CACHE: usize = 4;
+
 /// What a draw call's primitives share: the compiled fragment state and the scissor box.
-#[derive(Debug)]
+/// Compared whole when a scene caches states ([`Scene::add_state`]).
+#[derive(Debug, PartialEq)]
 pub struct DrawState {
     pub fragment: FragmentState,
     /// Pixels outside this rectangle (scissor box ∩ framebuffer) are never written.
@@ -257,10 +262,22 @@ impl Scene {
         self.targets.len()
     }
 
-    /// Adds a draw's state; primitives added afterwards refer to it.
-    pub fn add_state(&mut self, state: DrawState) -> u32 {
+    /// Adds a draw's state; primitives added afterwards refer to it. A state equal to one of
+    /// the last [`STATE_CACHE`] states is not added again: its index is returned, with
+    /// `true` for "cached" (a loop of glBegin/glEnd pairs with unchanged state shares one
+    /// compiled state).
+    pub fn add_state(&mut self, state: DrawState) -> (u32, bool) {
+        let recent = self.states.len().saturating_sub(STATE_CACHE);
+        if let Some(i) = self.states[recent..].iter().rposition(|s| **s == state) {
+            return ((recent + i) as u32, true);
+        }
         self.states.push(Arc::new(state));
-        (self.states.len() - 1) as u32
+        ((self.states.len() - 1) as u32, false)
+    }
+
+    /// How many distinct draw states the scene holds.
+    pub fn state_count(&self) -> usize {
+        self.states.len()
     }
 
     /// Bins a primitive covering at most the pixel rectangle `bounds` (inclusive min,
@@ -390,4 +407,79 @@ fn run_parallel<T: Send>(items: Vec<T>, threads: usize, work: impl Fn(T) + Sync)
         }
         worker();
     });
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::context::state::CompareFunc;
+    use crate::fragment::{AlphaTest, DepthTest};
+    use crate::framebuffer::band::{ColorBand, ColorTarget, DepthBand};
+    use crate::framebuffer::{ColorFormat, DepthStencilFormat};
+    use std::cell::Cell;
+
+    fn state(alpha: bool) -> DrawState {
+        let depth = Some(DepthTest { func: CompareFunc::Less, write: true });
+        let mut fragment = FragmentState::plain(depth, vec![Some([true; 4])], false);
+        fragment.alpha = alpha.then_some(AlphaTest { func: CompareFunc::Always, reference: 0.0, unorm8: true });
+        let clip = Rect::from_xywh(0, 0, 4, 1);
+        DrawState { fragment, clip, fill_clip: clip, polygon_stipple: None }
+    }
+
+    /// Runs one 4-pixel span at depth 0.5 over stored depths `stored`; returns how often the
+    /// span's colors were computed and the color buffer afterwards.
+    fn run_span(state: &DrawState, stored: [u16; 4]) -> (usize, [[u8; 4]; 4]) {
+        let mut colors = [[0u8; 4]; 4];
+        let mut depth = stored;
+        let mut band = Band {
+            y0: 0,
+            rows: 1,
+            width: 4,
+            colors: vec![ColorTarget {
+                slot: ColorSlot::FrontLeft,
+                format: ColorFormat::Unorm8 { alpha: true },
+                pixels: ColorBand::Unorm8(&mut colors),
+            }],
+            depth: DepthBand::Depth16(&mut depth),
+            depth_format: DepthStencilFormat::Depth16,
+        };
+        let computed = Cell::new(0);
+        let span = Span { y: 0, x0: 0, n: 4, row_start: 0, front_facing: true };
+        shade_span(
+            state,
+            &mut band,
+            &mut Scratch::default(),
+            span,
+            span_mask(4),
+            |_| 0.5,
+            |out| {
+                computed.set(computed.get() + 1);
+                out.extend([[1.0, 0.0, 0.0, 1.0]; 4]);
+                None
+            },
+            |_, _| {},
+        );
+        drop(band);
+        (computed.get(), colors)
+    }
+
+    #[test]
+    fn depth_runs_before_shading_unless_the_alpha_test_comes_first() {
+        // Early: a span that loses the depth test everywhere is never shaded.
+        assert_eq!(run_span(&state(false), [0; 4]).0, 0);
+        let (computed, colors) = run_span(&state(false), [0, 0xffff, 0, 0xffff]);
+        assert_eq!(computed, 1);
+        assert_eq!(colors, [[0; 4], [255, 0, 0, 255], [0; 4], [255, 0, 0, 255]]);
+        // Late: the alpha test needs the colors before the depth test can run.
+        assert_eq!(run_span(&state(true), [0; 4]).0, 1);
+    }
+
+    #[test]
+    fn equal_states_share_one_entry_of_the_scene() {
+        let mut scene = Scene::new(4, 1);
+        assert_eq!(scene.add_state(state(false)), (0, false));
+        assert_eq!(scene.add_state(state(true)), (1, false));
+        assert_eq!(scene.add_state(state(false)), (0, true));
+        assert_eq!(scene.state_count(), 2);
+    }
 }

@@ -92,8 +92,14 @@ fn div_ceil(n: i64, d: i64) -> i64 {
 
 impl TriangleSetup {
     /// Sets up a triangle from window coordinates (within the guard band). Returns `None`
-    /// for a degenerate (zero-area) triangle, which covers no pixel.
+    /// for a degenerate (zero-area) triangle, which covers no pixel, and for one outside the
+    /// guard band or with a non-finite coordinate: clipping keeps coordinates inside it
+    /// unless the viewport itself lies far outside (glViewport accepts any origin), where
+    /// nothing can reach a framebuffer (at most 16384 pixels wide).
     pub fn new(window: [[f32; 2]; 3]) -> Option<TriangleSetup> {
+        if !window.iter().flatten().all(|c| c.abs() <= GUARD_BAND) {
+            return None;
+        }
         let mut v = window.map(|p| [to_fixed(p[0]), to_fixed(p[1])]);
         let area2 = (v[1][0] - v[0][0]) * (v[2][1] - v[0][1]) - (v[2][0] - v[0][0]) * (v[1][1] - v[0][1]);
         if area2 == 0 {

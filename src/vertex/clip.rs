@@ -21,6 +21,8 @@ pub struct ClipVertex {
     pub eye: [f32; 4],
     pub color: [f32; 4],
     pub secondary_color: [f32; 4],
+    /// The back-face primary and secondary colors (two-sided lighting; else unused).
+    pub back_colors: [[f32; 4]; 2],
     pub tex_coords: [[f32; 4]; MAX_TEXTURE_UNITS],
     pub fog_coord: f32,
     /// Whether the edge from this vertex to the next one of its polygon is a boundary edge.
@@ -41,6 +43,7 @@ impl ClipVertex {
             eye: mix4(self.eye, other.eye),
             color: mix4(self.color, other.color),
             secondary_color: mix4(self.secondary_color, other.secondary_color),
+            back_colors: [0, 1].map(|k| mix4(self.back_colors[k], other.back_colors[k])),
             tex_coords,
             fog_coord: mix(self.fog_coord, other.fog_coord),
             edge_flag: self.edge_flag,
@@ -186,6 +189,7 @@ mod tests {
             eye: [x, y, z, w],
             color: [x, y, z, 1.0],
             secondary_color: [0.0; 4],
+            back_colors: [[0.0; 4]; 2],
             tex_coords: [[0.0; 4]; MAX_TEXTURE_UNITS],
             fog_coord: 0.0,
             edge_flag: true,

@@ -8,6 +8,7 @@ pub mod arrays;
 pub mod buffer_objects;
 pub mod components;
 pub mod immediate;
+pub mod lighting;
 
 use crate::context::state::MAX_TEXTURE_UNITS;
 

@@ -28,6 +28,7 @@ impl Context {
         }
         self.vertex_input.begin_mode = mode;
         self.vertex_input.vertices.clear();
+        self.vertex_input.material_marks.clear();
         self.inside_begin_end = true;
     }
 
@@ -38,6 +39,9 @@ impl Context {
         }
         self.inside_begin_end = false;
         self.deliver_open_vertices();
+        self.vertex_input.material_marks.clear();
+        // Mesa updates tracked materials when it flushes the current attributes.
+        self.update_color_material();
     }
 
     /// glVertex: appends a vertex at `position` with the current attributes (object
@@ -65,6 +69,15 @@ impl Context {
         if !vertices.is_empty() {
             self.deliver(self.vertex_input.begin_mode, &vertices);
         }
+        // Material changes after the delivered vertices now count from the next batch.
+        let delivered = vertices.len();
+        let marks = &mut self.vertex_input.material_marks;
+        if let Some(last_applied) = marks.iter().rposition(|m| m.0 <= delivered) {
+            marks.drain(..last_applied);
+            for (i, m) in marks.iter_mut().enumerate() {
+                m.0 = if i == 0 { 0 } else { m.0 - delivered };
+            }
+        }
         self.vertex_input.vertices = vertices;
         self.vertex_input.vertices.clear();
     }
@@ -73,6 +86,9 @@ impl Context {
     #[inline]
     pub fn set_color(&mut self, color: [f32; 4]) {
         self.state.current.color = color;
+        if self.state.lighting.color_material && !self.inside_begin_end {
+            self.update_color_material();
+        }
     }
 
     /// glSecondaryColor3: the alpha of the secondary color is always 1.

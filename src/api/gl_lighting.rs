@@ -1,0 +1,169 @@
+//! Entry points for lights, the light model, materials and color material.
+use super::types::*;
+use super::{guard, with_context};
+use crate::context::lighting::{
+    int_params_to_float, light_model_param_count, light_param_count, material_param_count, values_to_integers,
+};
+use crate::context::Context;
+
+/// Reads the `count` values a parameter pointer holds; `None` for NULL.
+///
+/// # Safety
+/// `params` is NULL or points to `count` values.
+unsafe fn read_params<T: Copy>(params: *const T, count: usize) -> Option<Vec<T>> {
+    if params.is_null() {
+        return None;
+    }
+    // SAFETY: the caller passes a pointer to `count` values (GL's contract for the pname).
+    Some((0..count).map(|i| unsafe { params.add(i).read_unaligned() }).collect())
+}
+
+/// Writes query results through `params` (nothing for NULL or an empty answer).
+///
+/// # Safety
+/// `params` is NULL or has room for `values.len()` elements.
+unsafe fn write_params<T: Copy>(params: *mut T, values: &[T]) {
+    if params.is_null() {
+        return;
+    }
+    for (i, v) in values.iter().enumerate() {
+        // SAFETY: the caller provides room for every value of the pname (GL's contract).
+        unsafe { params.add(i).write_unaligned(*v) }
+    }
+}
+
+#[no_mangle]
+pub extern "C" fn glLightf(light: GLenum, pname: GLenum, param: GLfloat) {
+    with_context((), |ctx| ctx.light_scalar(light, pname, param))
+}
+
+#[no_mangle]
+pub extern "C" fn glLighti(light: GLenum, pname: GLenum, param: GLint) {
+    with_context((), |ctx| ctx.light_scalar(light, pname, param as GLfloat))
+}
+
+/// # Safety
+/// `params` is NULL (ignored) or points to as many floats as `pname` takes.
+#[no_mangle]
+pub unsafe extern "C" fn glLightfv(light: GLenum, pname: GLenum, params: *const GLfloat) {
+    // SAFETY: forwarded contract of this entry point.
+    if let Some(p) = unsafe { read_params(params, light_param_count(pname)) } {
+        with_context((), |ctx| ctx.light(light, pname, &p))
+    }
+}
+
+/// # Safety
+/// `params` is NULL (ignored) or points to as many integers as `pname` takes.
+#[no_mangle]
+pub unsafe extern "C" fn glLightiv(light: GLenum, pname: GLenum, params: *const GLint) {
+    // SAFETY: forwarded contract of this entry point.
+    if let Some(p) = unsafe { read_params(params, light_param_count(pname)) } {
+        with_context((), |ctx| ctx.light(light, pname, &int_params_to_float(pname, &p)))
+    }
+}
+
+/// # Safety
+/// `params` is NULL or has room for as many floats as `pname` returns.
+#[no_mangle]
+pub unsafe extern "C" fn glGetLightfv(light: GLenum, pname: GLenum, params: *mut GLfloat) {
+    let values = query(|ctx| ctx.get_light(light, pname).iter().map(|v| v.to_float()).collect());
+    // SAFETY: forwarded contract of this entry point.
+    unsafe { write_params(params, &values) }
+}
+
+/// # Safety
+/// `params` is NULL or has room for as many integers as `pname` returns.
+#[no_mangle]
+pub unsafe extern "C" fn glGetLightiv(light: GLenum, pname: GLenum, params: *mut GLint) {
+    let values = query(|ctx| values_to_integers(&ctx.get_light(light, pname), false));
+    // SAFETY: forwarded contract of this entry point.
+    unsafe { write_params(params, &values) }
+}
+
+#[no_mangle]
+pub extern "C" fn glLightModelf(pname: GLenum, param: GLfloat) {
+    with_context((), |ctx| ctx.light_model_scalar(pname, param))
+}
+
+#[no_mangle]
+pub extern "C" fn glLightModeli(pname: GLenum, param: GLint) {
+    with_context((), |ctx| ctx.light_model_scalar(pname, param as GLfloat))
+}
+
+/// # Safety
+/// `params` is NULL (ignored) or points to as many floats as `pname` takes.
+#[no_mangle]
+pub unsafe extern "C" fn glLightModelfv(pname: GLenum, params: *const GLfloat) {
+    // SAFETY: forwarded contract of this entry point.
+    if let Some(p) = unsafe { read_params(params, light_model_param_count(pname)) } {
+        with_context((), |ctx| ctx.light_model(pname, &p))
+    }
+}
+
+/// # Safety
+/// `params` is NULL (ignored) or points to as many integers as `pname` takes.
+#[no_mangle]
+pub unsafe extern "C" fn glLightModeliv(pname: GLenum, params: *const GLint) {
+    // SAFETY: forwarded contract of this entry point.
+    if let Some(p) = unsafe { read_params(params, light_model_param_count(pname)) } {
+        with_context((), |ctx| ctx.light_model(pname, &int_params_to_float(pname, &p)))
+    }
+}
+
+#[no_mangle]
+pub extern "C" fn glMaterialf(face: GLenum, pname: GLenum, param: GLfloat) {
+    with_context((), |ctx| ctx.material_scalar(face, pname, param))
+}
+
+#[no_mangle]
+pub extern "C" fn glMateriali(face: GLenum, pname: GLenum, param: GLint) {
+    with_context((), |ctx| ctx.material_scalar(face, pname, param as GLfloat))
+}
+
+/// # Safety
+/// `params` is NULL (ignored) or points to as many floats as `pname` takes.
+#[no_mangle]
+pub unsafe extern "C" fn glMaterialfv(face: GLenum, pname: GLenum, params: *const GLfloat) {
+    // SAFETY: forwarded contract of this entry point.
+    if let Some(p) = unsafe { read_params(params, material_param_count(pname)) } {
+        with_context((), |ctx| ctx.material(face, pname, &p))
+    }
+}
+
+/// # Safety
+/// `params` is NULL (ignored) or points to as many integers as `pname` takes.
+#[no_mangle]
+pub unsafe extern "C" fn glMaterialiv(face: GLenum, pname: GLenum, params: *const GLint) {
+    // SAFETY: forwarded contract of this entry point.
+    if let Some(p) = unsafe { read_params(params, material_param_count(pname)) } {
+        with_context((), |ctx| ctx.material(face, pname, &int_params_to_float(pname, &p)))
+    }
+}
+
+/// # Safety
+/// `params` is NULL or has room for as many floats as `pname` returns.
+#[no_mangle]
+pub unsafe extern "C" fn glGetMaterialfv(face: GLenum, pname: GLenum, params: *mut GLfloat) {
+    let values = query(|ctx| ctx.get_material(face, pname).iter().map(|v| v.to_float()).collect());
+    // SAFETY: forwarded contract of this entry point.
+    unsafe { write_params(params, &values) }
+}
+
+/// # Safety
+/// `params` is NULL or has room for as many integers as `pname` returns.
+#[no_mangle]
+pub unsafe extern "C" fn glGetMaterialiv(face: GLenum, pname: GLenum, params: *mut GLint) {
+    let values = query(|ctx| values_to_integers(&ctx.get_material(face, pname), true));
+    // SAFETY: forwarded contract of this entry point.
+    unsafe { write_params(params, &values) }
+}
+
+#[no_mangle]
+pub extern "C" fn glColorMaterial(face: GLenum, mode: GLenum) {
+    with_context((), |ctx| ctx.color_material(face, mode))
+}
+
+/// Runs a query returning a vector; empty when there is no context.
+fn query<T>(f: impl FnOnce(&mut Context) -> Vec<T>) -> Vec<T> {
+    guard(Vec::new(), || crate::context::current::with_current(f).unwrap_or_default())
+}

@@ -1,0 +1,200 @@
+#!/usr/bin/env bash
+# The GLX checks, on tessera's libGL.so.1 (target/release) under a private Xvfb:
+#   1. glxinfo names tessera as the renderer and lists its extensions;
+#   2. tests/glx/two_threads.c: two windows, two contexts, two threads render independently;
+#      tests/glx/glx_api.c: the GLX API (configs, context rules, drawables, resizing, stereo);
+#   3. tests/glx/glut_scene.c (freeglut): a screenshot (xwd) shows the expected picture;
+#   4. glxgears runs and its window is shown (not blank once display lists exist);
+#   5. piglit: every command of ../shared/piglit/fragment-ops.txt is run; each one
+#      tests/piglit/expected.txt marks "pass" must pass (a skip is not a pass).
+# Needs xvfb, piglit, mesa-utils, freeglut3-dev, x11-apps, libx11-dev, python3 (installed by
+# tools/setup-debian.sh). Without them it skips loudly, except under CI=true where it fails.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+root=$PWD
+lib=${TESSERA_LIB_DIR:-$root/target/release}
+piglit_bin=/usr/lib/x86_64-linux-gnu/piglit/bin
+list=../shared/piglit/fragment-ops.txt
+expected=tests/piglit/expected.txt
+
+missing=()
+for tool in Xvfb glxinfo glxgears xwd gcc python3 pkg-config; do
+    command -v "$tool" >/dev/null || missing+=("$tool")
+done
+[[ -x $piglit_bin/depthfunc ]] || missing+=("piglit")
+[[ -f /usr/include/GL/glut.h ]] || missing+=("freeglut3-dev")
+[[ -f $list ]] || missing+=("$list")
+[[ -e $lib/libGL.so.1 ]] || missing+=("$lib/libGL.so.1 (cargo build --release)")
+if ((${#missing[@]})); then
+    if [[ ${CI:-} == true ]]; then
+        echo "xvfb-tests: FAILED: missing ${missing[*]}" >&2
+        exit 1
+    fi
+    echo "xvfb-tests: SKIPPED (missing ${missing[*]}); CI=true makes this a failure" >&2
+    exit 0
+fi
+
+work=$(mktemp -d)
+xvfb_pid=
+cleanup() {
+    [[ -n $xvfb_pid ]] && kill "$xvfb_pid" 2>/dev/null || true
+    rm -rf "$work"
+}
+trap cleanup EXIT
+
+# A private server on a free display number (-displayfd lets Xvfb pick and tell it).
+Xvfb -displayfd 3 -noreset -nolisten tcp -screen 0 1024x768x24 3>"$work/display" 2>"$work/xvfb.log" &
+xvfb_pid=$!
+for _ in $(seq 100); do
+    [[ -s $work/display ]] && break
+    sleep 0.1
+done
+[[ -s $work/display ]] || { echo "xvfb-tests: Xvfb did not start" >&2; cat "$work/xvfb.log" >&2; exit 1; }
+export DISPLAY=:$(head -1 "$work/display")
+export PIGLIT_PLATFORM=glx
+echo "xvfb-tests: Xvfb on $DISPLAY"
+on_tessera=(env "LD_LIBRARY_PATH=$lib")
+failures=0
+fail() {
+    echo "xvfb-tests: FAIL: $*" >&2
+    failures=$((failures + 1))
+}
+
+# 1. glxinfo
+if "${on_tessera[@]}" glxinfo >"$work/glxinfo.txt" 2>&1; then
+    grep -q "OpenGL renderer string: tessera" "$work/glxinfo.txt" || fail "glxinfo does not name tessera"
+    grep -q "GL_EXT_blend_minmax" "$work/glxinfo.txt" || fail "glxinfo lists no tessera extensions"
+    grep -E "OpenGL (renderer|version) string" "$work/glxinfo.txt"
+else
+    fail "glxinfo exited with an error"
+    tail -5 "$work/glxinfo.txt" >&2
+fi
+
+# 2. two contexts, two windows, two threads
+# (built with tessera's gl.pc: its headers and its libGL.so)
+gl_flags=$(PKG_CONFIG_PATH=$lib/pkgconfig pkg-config --cflags --libs gl) || fail "no $lib/pkgconfig/gl.pc"
+gcc -std=c11 -O1 -Wall -Werror tests/glx/two_threads.c $gl_flags -lX11 -lpthread -o "$work/two_threads"
+"${on_tessera[@]}" timeout 60 "$work/two_threads" || fail "tests/glx/two_threads.c"
+
+# The GLX API: configs, context rules, windows, resizing, pbuffers, pixmaps, stereo
+gcc -std=c11 -O1 -Wall -Werror tests/glx/glx_api.c $gl_flags -lX11 -o "$work/glx_api"
+"${on_tessera[@]}" timeout 60 "$work/glx_api" || fail "tests/glx/glx_api.c"
+# The same two programs presenting with XPutImage instead of MIT-SHM
+"${on_tessera[@]}" TESSERA_XSHM=0 timeout 60 "$work/two_threads" || fail "two_threads.c with TESSERA_XSHM=0"
+"${on_tessera[@]}" TESSERA_XSHM=0 timeout 60 "$work/glx_api" || fail "glx_api.c with TESSERA_XSHM=0"
+
+# The install layout: Debian's libGLU reaches tessera through libOpenGL.so.0.
+glu=$(ldconfig -p 2>/dev/null | awk '/libGLU.so.1 / {print $NF}' | head -1 || true)
+if [[ -n $glu ]]; then
+    "${on_tessera[@]}" ldd "$glu" | grep -q "libOpenGL.so.0 => $lib/libOpenGL.so.0" ||
+        fail "libGLU does not load tessera's libOpenGL.so.0"
+fi
+[[ -e $lib/libOSMesa.so && -e $lib/pkgconfig/osmesa.pc ]] || fail "libOSMesa.so or osmesa.pc missing"
+
+# Programs linked with immediate binding (Debian builds glxgears and libglut with -z now)
+# cannot even start while a GL function they import is missing from tessera. For the
+# functions tessera does not export yet (display lists, lighting, glBitmap: other issues),
+# a preloaded library of no-op stubs returning 0 is built, with only those names, so it
+# never hides a real tessera entry point; the list is printed.
+stub_missing() {
+    local name=$1
+    shift
+    local missing=()
+    nm -D --defined-only "$lib/libGL.so.1" | awk '{print $3}' >"$work/tessera-symbols.txt"
+    for symbol in $(nm -D --undefined-only "$@" | awk '{print $2}' | sed 's/@.*//' | grep '^gl[A-Z]' | sort -u); do
+        grep -qx "$symbol" "$work/tessera-symbols.txt" || missing+=("$symbol")
+    done
+    : >"$work/$name-stubs.c"
+    for symbol in "${missing[@]}"; do echo "long $symbol(void) { return 0; }" >>"$work/$name-stubs.c"; done
+    gcc -shared -fPIC "$work/$name-stubs.c" -o "$work/lib$name-stubs.so"
+    echo "xvfb-tests: $name: GL functions not in tessera yet, stubbed: ${missing[*]:-none}"
+}
+
+# Runs a windowed program in the background until it printed `marker` (or 20 s passed),
+# takes a screenshot of the window named `name` into $work/<name>.xwd, then stops it.
+screenshot_program() {
+    local name=$1 marker=$2
+    shift 2
+    "${on_tessera[@]}" "$@" >"$work/$name.out" 2>&1 &
+    local pid=$!
+    for _ in $(seq 200); do
+        grep -q "$marker" "$work/$name.out" 2>/dev/null && break
+        kill -0 $pid 2>/dev/null || break
+        sleep 0.1
+    done
+    sleep 0.5
+    local ok=0
+    xwd -silent -name "$name" -out "$work/$name.xwd" || ok=1
+    if ! kill -0 $pid 2>/dev/null; then
+        echo "xvfb-tests: $name exited early:" >&2
+        cat "$work/$name.out" >&2
+        ok=1
+    fi
+    kill $pid 2>/dev/null || true
+    wait $pid 2>/dev/null || true
+    return $ok
+}
+
+# 3. freeglut: the picture at known places (see tests/glx/glut_scene.c; window 300x300)
+gcc -std=c11 -O1 -Wall -Werror tests/glx/glut_scene.c -lglut -lGL -o "$work/glut_scene"
+stub_missing glut "$work/glut_scene" "$(ldd "$work/glut_scene" | awk '/libglut/ {print $3}')"
+if screenshot_program "tessera glut_scene" "frame shown" env LD_PRELOAD="$work/libglut-stubs.so" "$work/glut_scene"; then
+    cp "$work/tessera glut_scene.xwd" "$work/glut_scene.xwd"
+    python3 tools/xwd_check.py "$work/glut_scene.xwd" not-blank \
+        pixel 75 30 0 0 153 1 \
+        pixel 225 75 0 255 0 1 \
+        pixel 270 225 128 128 77 2 \
+        pixel 75 250 180 140 60 100 || fail "glut_scene's window does not show its picture"
+else
+    fail "glut_scene did not run"
+fi
+
+# 4. glxgears: its gears are display lists; until tessera has them the window is only
+# cleared (black), so the check is that it runs and presents; non-blank once lists exist.
+stub_missing glxgears "$(command -v glxgears)"
+if screenshot_program glxgears "GL_RENDERER" env LD_PRELOAD="$work/libglxgears-stubs.so" glxgears -info; then
+    grep -q "GL_RENDERER *= tessera" "$work/glxgears.out" || fail "glxgears does not run on tessera"
+    if grep -qx glNewList "$work/tessera-symbols.txt"; then
+        python3 tools/xwd_check.py "$work/glxgears.xwd" not-blank || fail "glxgears' window is blank"
+    else
+        echo "xvfb-tests: glxgears runs (its window stays black until display lists exist)"
+    fi
+else
+    fail "glxgears did not run"
+fi
+
+# 5. piglit
+declare -A want
+while read -r status command; do
+    [[ -z $status || $status == \#* ]] && continue
+    command=${command%%#*}
+    command=$(echo $command)
+    want[$command]=$status
+done <"$expected"
+declare -A count=()
+unexpected_passes=()
+while IFS= read -r line; do
+    [[ -z $line || $line == \#* ]] && continue
+    command=$(echo ${line%%#*})
+    output=$(cd "$piglit_bin" && "${on_tessera[@]}" timeout 120 ./$command 2>&1) || true
+    result=$(grep -o '"result": *"[a-z]*"' <<<"$output" | tail -1 | sed 's/.*"\([a-z]*\)"$/\1/')
+    result=${result:-crash}
+    count[$result]=$((${count[$result]:-0} + 1))
+    case ${want[$command]:-} in
+    pass) [[ $result == pass ]] || fail "piglit $command: $result (expected pass)" ;;
+    excluded) [[ $result == pass ]] && unexpected_passes+=("$command") ;;
+    *) fail "piglit $command is not in $expected" ;;
+    esac
+done <"$list"
+summary=""
+for r in "${!count[@]}"; do summary+="$r=${count[$r]} "; done
+echo "xvfb-tests: piglit summary: $summary(expected to pass: $(grep -c '^pass' "$expected"))"
+for c in "${unexpected_passes[@]}"; do
+    echo "xvfb-tests: piglit $c now passes: mark it 'pass' in $expected"
+done
+
+if ((failures)); then
+    echo "xvfb-tests: $failures check(s) FAILED" >&2
+    exit 1
+fi
+echo "xvfb-tests: all GLX checks passed"
