@@ -449,7 +449,9 @@ fn abi_tessera_header_agrees_with_system_headers() {
         coverage.push_str(&format!("#ifndef {m}\n#error \"{m} is not in the system headers\"\n#endif\n"));
     }
     coverage.push_str("typedef void (*any_function)(void);\nconst any_function declared[] = {\n");
-    for f in &functions {
+    // tessera's own extension entry points (tesseraSetAccuracy, ...) are in no system
+    // header; they are checked by tessera_headers.c instead.
+    for f in functions.iter().filter(|f| !f.starts_with("tessera")) {
         coverage.push_str(&format!("    (any_function){f},\n"));
     }
     coverage.push_str("};\n");

@@ -13,6 +13,8 @@ cargo test --release
 bash tools/xvfb-tests.sh   # GLX under a private Xvfb: glxinfo, glxgears, freeglut, two threads, piglit
 # Command-stream fuzzing (fuzz/): past findings replayed, then 90 s of libFuzzer.
 bash tools/fuzz.sh 90
+# A smoke run of the benchmark (64x64, one frame per scene: seconds; writes target/bench/quick).
+bash tools/bench.sh --quick
 cargo fmt --check
 cargo clippy --all-targets --release -- -D warnings
 echo "test.sh: all checks passed"

@@ -5,6 +5,7 @@
 #include <GL/gl.h>
 #include <GL/glext.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #ifndef TESSERA_GL_H
@@ -37,6 +38,23 @@ int main(void)
     }
     if (glGetError() != GL_NO_ERROR) {
         printf("FAIL unexpected GL error\n");
+        return 1;
+    }
+    /* tessera's own extension: the accuracy mode (TESSERA_ACCURACY unset: conformant). */
+    const char *env_mode = getenv("TESSERA_ACCURACY");
+    if (!env_mode && tesseraGetAccuracy() != TESSERA_ACCURACY_CONFORMANT) {
+        printf("FAIL default accuracy is %d\n", tesseraGetAccuracy());
+        return 1;
+    }
+    tesseraSetAccuracy(TESSERA_ACCURACY_EXACT);
+    tesseraSetAccuracy(42);
+    if (tesseraGetAccuracy() != TESSERA_ACCURACY_EXACT || glGetError() != GL_INVALID_ENUM) {
+        printf("FAIL tesseraSetAccuracy: mode %d\n", tesseraGetAccuracy());
+        return 1;
+    }
+    tesseraSetAccuracy(TESSERA_ACCURACY_FAST);
+    if (tesseraGetAccuracy() != TESSERA_ACCURACY_FAST || glGetError() != GL_NO_ERROR) {
+        printf("FAIL tesseraSetAccuracy(TESSERA_ACCURACY_FAST)\n");
         return 1;
     }
     OSMesaMakeCurrent(NULL, NULL, 0, 0, 0);

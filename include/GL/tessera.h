@@ -6186,6 +6186,12 @@ typedef void (*OSMESAproc)();
 #error "OSMESA_MAX_HEIGHT differs from the system GL headers"
 #endif
 
+#define TESSERA_ACCURACY_CONFORMANT 0
+
+#define TESSERA_ACCURACY_FAST 1
+
+#define TESSERA_ACCURACY_EXACT 2
+
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
@@ -7071,6 +7077,10 @@ OSMESAproc OSMesaGetProcAddress(const char *funcName);
 void OSMesaColorClamp(GLboolean enable);
 
 void OSMesaPostprocess(OSMesaContext osmesa, const char *filter, unsigned int enable_value);
+
+void tesseraSetAccuracy(GLint mode);
+
+GLint tesseraGetAccuracy(void);
 
 #ifdef __cplusplus
 }  // extern "C"

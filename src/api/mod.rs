@@ -28,6 +28,7 @@ pub mod gl_vertex;
 pub mod glx;
 pub mod osmesa;
 pub mod procs;
+pub mod tessera_ext;
 pub mod types;
 
 #[cfg(test)]

@@ -27,6 +27,7 @@ use crate::api::types::GLenum;
 use crate::context::state::{LinePointState, MAX_LINE_WIDTH, MAX_POINT_SIZE};
 use crate::fragment::{DepthTest, FragmentState};
 use crate::framebuffer::{ColorFormat, Rect};
+use crate::raster::accuracy::Accuracy;
 use crate::raster::line::{LineJob, LineVertex};
 use crate::raster::point::PointJob;
 use crate::raster::triangle::{TriangleJob, WindowVertex};
@@ -156,6 +157,8 @@ struct Geometry {
     /// The attributes interpolated over filled polygons for the stages this draw enables
     /// (none when only color is needed).
     varyings: Vec<Attribute>,
+    /// How filled triangles interpolate.
+    accuracy: Accuracy,
 }
 
 impl Context {
@@ -368,6 +371,9 @@ impl Context {
         let polygon_stipple = self.state.polygon.stipple.then_some(self.state.polygon_stipple);
         let mut fragment = FragmentState::plain(depth, color_masks, clamp_float);
         self.compile_fragment_ops(&mut fragment, &buffer_of, color_format, stencil_bits);
+        if self.accuracy == Accuracy::Fast {
+            fragment.dither = false;
+        }
         DrawState { fragment, clip, fill_clip, polygon_stipple }
     }
 
@@ -477,6 +483,7 @@ impl Context {
         // Mesa's offset stage scales units by twice the depth buffer's resolution.
         let units_scale = if depth_bits > 0 { (2.0 / ((1u64 << depth_bits) - 1) as f64) as f32 } else { 0.0 };
         Geometry {
+            accuracy: self.accuracy,
             varyings: self.varyings_needed(),
             viewport: Viewport {
                 scale: [half[0], half[1], ((far - near) * 0.5) as f32],
@@ -879,7 +886,7 @@ fn emit_triangle(scene: &mut Scene, state: u32, g: &Geometry, w: [WindowVertex; 
     }
     let offset = g.offset.map_or(0.0, |(factor, units)| polygon_offset(&w, factor, units, g.depth_bits));
     let varyings: Vec<[f32; 3]> = g.varyings.iter().map(|a| w.map(|v| a.of(&v))).collect();
-    if let Some(mut job) = TriangleJob::new(w, flat, offset, &varyings) {
+    if let Some(mut job) = TriangleJob::with_accuracy(g.accuracy, w, flat, offset, &varyings) {
         job.front_facing = front;
         let bounds = job.bounds();
         scene.add(state, bounds, RasterPrimitive::Triangle(job));

@@ -15,6 +15,8 @@ pub mod debug;
 pub mod draw;
 pub mod fragment_state;
 pub mod get;
+#[cfg(test)]
+mod hard_case_tests;
 pub mod hints;
 pub mod lighting;
 pub mod matrix;
@@ -61,6 +63,8 @@ pub struct Context {
     pub vertex_input: vertex_input::VertexInput,
     /// The buffer objects (one table, so that it can become shared between contexts).
     pub buffers: crate::vertex::buffer_objects::BufferTable,
+    /// The accuracy mode of the draws (`TESSERA_ACCURACY` at creation, `tesseraSetAccuracy`).
+    pub accuracy: crate::raster::accuracy::Accuracy,
 }
 
 impl Context {
@@ -80,6 +84,7 @@ impl Context {
             bound_once: false,
             vertex_input: vertex_input::VertexInput::default(),
             buffers: Default::default(),
+            accuracy: crate::raster::accuracy::Accuracy::from_env(),
         }
     }
 

@@ -133,9 +133,18 @@ fn factor_unorm8(
     let n = out.len();
     macro_rules! each {
         (|$s:ident, $d:ident, $k:ident| $e:expr) => {
-            for ((o, $s), $d) in out.iter_mut().zip(&src[..n]).zip(&dst[..n]) {
-                for $k in channels.clone() {
-                    o[$k] = $e;
+            if channels == (0..4) {
+                // A fixed-length inner loop (a variable range became a memset call per pixel).
+                for ((o, $s), $d) in out.iter_mut().zip(&src[..n]).zip(&dst[..n]) {
+                    for $k in 0..4 {
+                        o[$k] = $e;
+                    }
+                }
+            } else {
+                for ((o, $s), $d) in out.iter_mut().zip(&src[..n]).zip(&dst[..n]) {
+                    for $k in channels.clone() {
+                        o[$k] = $e;
+                    }
                 }
             }
         };
@@ -172,11 +181,24 @@ fn equation_unorm8(
     let n = out.len();
     macro_rules! each {
         (|$s:ident, $d:ident| $e:expr) => {
-            for i in 0..n {
-                for k in channels.clone() {
-                    let $s = mul_unorm8(src[i][k] as u32, sf[i][k] as u32);
-                    let $d = mul_unorm8(dst[i][k] as u32, df[i][k] as u32);
-                    out[i][k] = $e as u8;
+            if channels == (0..4) {
+                // All four channels: fixed-length inner loops without bounds checks, which
+                // the compiler unrolls (the same arithmetic as below).
+                let lanes = out.iter_mut().zip(src).zip(dst).zip(sf).zip(df);
+                for ((((o, s), d), a), b) in lanes {
+                    for k in 0..4 {
+                        let $s = mul_unorm8(s[k] as u32, a[k] as u32);
+                        let $d = mul_unorm8(d[k] as u32, b[k] as u32);
+                        o[k] = $e as u8;
+                    }
+                }
+            } else {
+                for i in 0..n {
+                    for k in channels.clone() {
+                        let $s = mul_unorm8(src[i][k] as u32, sf[i][k] as u32);
+                        let $d = mul_unorm8(dst[i][k] as u32, df[i][k] as u32);
+                        out[i][k] = $e as u8;
+                    }
                 }
             }
         };

@@ -238,27 +238,43 @@ pub(crate) fn passes(func: CompareFunc, fragment: u32, stored: u32) -> bool {
 /// row of `depth` starting at `offset`, updating stored depth where the test passes and
 /// writing is enabled. `z` holds window-space depths. Returns the fragments that pass.
 pub fn depth_test(test: &DepthTest, depth: &mut DepthBand<'_>, row_start: usize, z: &[f32], live: u64) -> u64 {
-    macro_rules! run {
-        ($px:expr, $bits:expr, $read:expr, $write:expr) => {{
+    // One loop per comparison function and format, so that the comparison is not chosen
+    // again at every pixel.
+    macro_rules! run_with {
+        ($px:expr, $bits:expr, $read:expr, $write:expr, $cmp:expr) => {{
             let mut pass = 0u64;
-            for (i, &zf) in z.iter().enumerate() {
+            let cells = &mut $px[row_start..row_start + z.len()];
+            for (i, (&zf, cell)) in z.iter().zip(cells.iter_mut()).enumerate() {
                 if live & (1 << i) == 0 {
                     continue;
                 }
                 let frag = fragment_depth_to_fixed(zf, $bits);
-                let cell = &mut $px[row_start + i];
                 #[allow(clippy::redundant_closure_call)]
                 let stored = ($read)(*cell);
-                if passes(test.func, frag, stored) {
+                #[allow(clippy::redundant_closure_call)]
+                if ($cmp)(frag, stored) {
                     pass |= 1 << i;
                     if test.write {
-                        #[allow(clippy::redundant_closure_call)]
                         ($write)(cell, frag);
                     }
                 }
             }
             pass
         }};
+    }
+    macro_rules! run {
+        ($px:expr, $bits:expr, $read:expr, $write:expr) => {
+            match test.func {
+                CompareFunc::Never => 0,
+                CompareFunc::Less => run_with!($px, $bits, $read, $write, |f: u32, s: u32| f < s),
+                CompareFunc::Equal => run_with!($px, $bits, $read, $write, |f: u32, s: u32| f == s),
+                CompareFunc::LessEqual => run_with!($px, $bits, $read, $write, |f: u32, s: u32| f <= s),
+                CompareFunc::Greater => run_with!($px, $bits, $read, $write, |f: u32, s: u32| f > s),
+                CompareFunc::NotEqual => run_with!($px, $bits, $read, $write, |f: u32, s: u32| f != s),
+                CompareFunc::GreaterEqual => run_with!($px, $bits, $read, $write, |f: u32, s: u32| f >= s),
+                CompareFunc::Always => run_with!($px, $bits, $read, $write, |_: u32, _: u32| true),
+            }
+        };
     }
     match depth {
         DepthBand::None => live,
@@ -267,6 +283,16 @@ pub fn depth_test(test: &DepthTest, depth: &mut DepthBand<'_>, row_start: usize,
             run!(px, 24, |v: u32| v & 0x00ff_ffff, |c: &mut u32, f: u32| *c = (*c & 0xff00_0000) | f)
         }
         DepthBand::Depth32(px, _) => run!(px, 32, |v: u32| v, |c: &mut u32, f: u32| *c = f),
+    }
+}
+
+/// The mask with the low `n` bits set (n ≤ 64).
+#[inline]
+fn full_mask(n: usize) -> u64 {
+    if n >= 64 {
+        !0
+    } else {
+        (1u64 << n) - 1
     }
 }
 
@@ -283,6 +309,13 @@ pub fn write_colors(
     let all = mask.iter().all(|&m| m);
     let lanes = colors.iter().enumerate().filter(|(i, _)| live & (1 << i) != 0);
     match target {
+        ColorBand::Unorm8(px) if all && live == full_mask(colors.len()) => {
+            // Every fragment written, every channel: a plain loop the compiler can unroll.
+            let cells = &mut px[row_start..row_start + colors.len()];
+            for (cell, c) in cells.iter_mut().zip(colors) {
+                *cell = c.map(|x| float_to_unorm(x, 8) as u8);
+            }
+        }
         ColorBand::Unorm8(px) => {
             for (i, c) in lanes {
                 let v = c.map(|x| float_to_unorm(x, 8) as u8);

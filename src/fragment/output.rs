@@ -27,6 +27,16 @@ pub struct TargetOps<'a> {
     pub clamp_float: bool,
 }
 
+/// The live mask of a whole `n`-pixel span.
+#[inline]
+fn full_span(n: usize) -> u64 {
+    if n >= 64 {
+        !0
+    } else {
+        (1u64 << n) - 1
+    }
+}
+
 /// Blends (or logic-ops), dithers and writes `colors[i]` for every bit `i` of `live` to the
 /// pixels of `target` from `row_start`, which is window pixel (`x0`, `y`).
 pub fn write_target(
@@ -55,7 +65,11 @@ pub fn write_target(
             } else {
                 out[..n].copy_from_slice(&src[..n]);
             }
-            for_live(live, n, |i| (0..4).filter(|&k| mask[k]).for_each(|k| px[i][k] = out[i][k]));
+            if mask == [true; 4] && live == full_span(n) {
+                px.copy_from_slice(&out[..n]);
+            } else {
+                for_live(live, n, |i| (0..4).filter(|&k| mask[k]).for_each(|k| px[i][k] = out[i][k]));
+            }
         }
         ColorBand::Rgb565(px) => {
             let px = &mut px[row_start..row_start + n];

@@ -9,6 +9,11 @@
 pub trait Interpolant {
     /// The value at (x, y) in the plane's own coordinates.
     fn at(&self, x: f32, y: f32) -> f32;
+
+    /// How much the value grows from one pixel to the next along x.
+    fn step_x(&self) -> f32 {
+        self.at(1.0, 0.0) - self.at(0.0, 0.0)
+    }
 }
 
 /// How a primitive's color varies over it.
@@ -20,6 +25,10 @@ pub enum Shading<P> {
     Affine([P; 4]),
     /// Planes of color/w and of 1/w.
     Perspective { color_over_w: [P; 4], inv_w: P },
+    /// Linear in window space, evaluated as the row's start value plus `i` steps (the fast
+    /// accuracy mode: cheaper than evaluating each plane at each pixel, and affine even when
+    /// w varies).
+    Stepped([P; 4]),
 }
 
 impl<P: Interpolant> Shading<P> {
@@ -35,6 +44,14 @@ impl<P: Interpolant> Shading<P> {
                 let w = 1.0 / inv_w.at(x, y);
                 color_over_w.each_ref().map(|p| p.at(x, y) * w)
             })),
+            Shading::Stepped(planes) => {
+                let start = planes.each_ref().map(|p| p.at(x0, y));
+                let step = planes.each_ref().map(|p| p.step_x());
+                colors.extend((0..n).map(|i| {
+                    let i = i as f32;
+                    std::array::from_fn(|c| start[c] + step[c] * i)
+                }))
+            }
         }
         None
     }

@@ -9,6 +9,7 @@
 //! A pixel is only ever touched by the one worker owning its band, in submission order, so
 //! the bytes are identical for any number of threads.
 
+pub mod accuracy;
 pub mod interpolate;
 pub mod line;
 pub mod point;

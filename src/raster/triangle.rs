@@ -4,7 +4,10 @@
 //! Attribute planes are anchored at the triangle's first vertex (not the window origin), so
 //! their precision does not depend on where the triangle lies. Colors are interpolated
 //! perspective-correctly (planes of c/w and 1/w), window z linearly; when all three w are
-//! equal the divide is skipped, which changes nothing but time.
+//! equal the divide is skipped, which changes nothing but time. The accuracy mode
+//! ([`Accuracy`]) may instead interpolate affinely (fast) or compute every attribute from
+//! f64 barycentric coordinates at each pixel (exact).
+use super::accuracy::Accuracy;
 use super::interpolate::{self, Interpolant};
 use super::{shade_span, span_mask, walk_spans, Band, DrawState, Scratch, Span};
 use crate::context::state::MAX_TEXTURE_UNITS;
@@ -44,6 +47,11 @@ impl Interpolant for Plane {
     fn at(&self, dx: f32, dy: f32) -> f32 {
         Plane::at(self, dx, dy)
     }
+
+    #[inline]
+    fn step_x(&self) -> f32 {
+        self.dadx
+    }
 }
 
 /// How a triangle's color varies over it (planes around its anchor).
@@ -64,6 +72,38 @@ pub struct TriangleJob {
     /// Whether the triangle faces front (it selects the stencil face); set by the caller,
     /// true from [`TriangleJob::new`].
     pub front_facing: bool,
+    /// The exact accuracy mode's inputs; when present they replace the planes.
+    exact: Option<Box<ExactAttributes>>,
+}
+
+/// What the exact accuracy mode interpolates: the vertices (pixels, counter-clockwise) and
+/// their attributes in f64.
+#[derive(Clone, Debug)]
+struct ExactAttributes {
+    p: [[f64; 2]; 3],
+    /// Twice the signed area, (p1 − p0) × (p2 − p0) (positive).
+    area: f64,
+    z: [f64; 3],
+    inv_w: [f64; 3],
+    /// `None` when flat: the planes' [`Shading::Flat`] color is used.
+    colors: Option<[[f64; 4]; 3]>,
+    varyings: Vec<[f64; 3]>,
+}
+
+impl ExactAttributes {
+    /// The barycentric coordinates of pixel centre (x, y) and their perspective weights
+    /// λᵢ/wᵢ normalised to sum to one.
+    #[inline]
+    fn weights(&self, x: i32, y: i32) -> ([f64; 3], [f64; 3]) {
+        let (px, py) = (x as f64 + 0.5, y as f64 + 0.5);
+        let cross = |a: [f64; 2], b: [f64; 2]| a[0] * b[1] - a[1] * b[0];
+        let rel = |q: [f64; 2]| [q[0] - px, q[1] - py];
+        let (r0, r1, r2) = (rel(self.p[0]), rel(self.p[1]), rel(self.p[2]));
+        let l = [cross(r1, r2) / self.area, cross(r2, r0) / self.area, cross(r0, r1) / self.area];
+        let persp = [l[0] * self.inv_w[0], l[1] * self.inv_w[1], l[2] * self.inv_w[2]];
+        let sum = persp[0] + persp[1] + persp[2];
+        (l, persp.map(|q| q / sum))
+    }
 }
 
 /// The window-space inputs of one vertex.
@@ -92,6 +132,17 @@ impl TriangleJob {
         depth_offset: f32,
         varyings: &[[f32; 3]],
     ) -> Option<TriangleJob> {
+        Self::with_accuracy(Accuracy::Conformant, v, flat, depth_offset, varyings)
+    }
+
+    /// As [`TriangleJob::new`], interpolating as `accuracy` says.
+    pub fn with_accuracy(
+        accuracy: Accuracy,
+        v: [WindowVertex; 3],
+        flat: Option<[f32; 4]>,
+        depth_offset: f32,
+        varyings: &[[f32; 3]],
+    ) -> Option<TriangleJob> {
         let setup = TriangleSetup::new(v.map(|p| [p.x, p.y]))?;
         // Attribute values in the setup's (counter-clockwise) vertex order.
         let order = if setup.was_clockwise { [0, 2, 1] } else { [0, 1, 2] };
@@ -104,9 +155,13 @@ impl TriangleJob {
         let plane = |values: [f32; 3]| Plane::through(d1, d2, values);
         let mut z = plane([v[0].z, v[1].z, v[2].z]);
         z.a0 += depth_offset;
+        let fast = accuracy == Accuracy::Fast;
         let shading = match flat {
             Some(color) => Shading::Flat(color),
             None if v[0].color == v[1].color && v[1].color == v[2].color => Shading::Flat(v[0].color),
+            None if fast => {
+                Shading::Stepped(std::array::from_fn(|c| plane([v[0].color[c], v[1].color[c], v[2].color[c]])))
+            }
             None if v[0].inv_w == v[1].inv_w && v[1].inv_w == v[2].inv_w => {
                 Shading::Affine(std::array::from_fn(|c| plane([v[0].color[c], v[1].color[c], v[2].color[c]])))
             }
@@ -118,8 +173,25 @@ impl TriangleJob {
             },
         };
         let inv_w = [v[0].inv_w, v[1].inv_w, v[2].inv_w];
+        let exact = (accuracy == Accuracy::Exact).then(|| {
+            let f = |a: [f32; 3]| a.map(|x| x as f64);
+            Box::new(ExactAttributes {
+                p: [p0, p1, p2],
+                area: d1[0] * d2[1] - d2[0] * d1[1],
+                z: [v[0].z, v[1].z, v[2].z].map(|z| z as f64 + depth_offset as f64),
+                inv_w: f(inv_w),
+                colors: match shading {
+                    Shading::Flat(_) => None,
+                    _ => Some(v.map(|q| q.color.map(|c| c as f64))),
+                },
+                varyings: varyings.iter().map(|a| f(order.map(|i| a[i]))).collect(),
+            })
+        });
         let varyings = if varyings.is_empty() {
             Varyings::default()
+        } else if fast {
+            let linear = varyings.iter().map(|a| plane(order.map(|i| a[i]))).collect();
+            Varyings::new(linear, Plane { a0: 1.0, dadx: 0.0, dady: 0.0 })
         } else {
             let over_w = varyings
                 .iter()
@@ -130,7 +202,15 @@ impl TriangleJob {
                 .collect();
             Varyings::new(over_w, plane(inv_w))
         };
-        Some(TriangleJob { setup, anchor: [p0[0] as f32, p0[1] as f32], z, shading, varyings, front_facing: true })
+        Some(TriangleJob {
+            setup,
+            anchor: [p0[0] as f32, p0[1] as f32],
+            z,
+            shading,
+            varyings,
+            front_facing: true,
+            exact,
+        })
     }
 
     /// The pixel rectangle that may contain covered centres.
@@ -165,6 +245,43 @@ impl TriangleJob {
             }
         }
         let span = Span { y, x0, n, row_start, front_facing: self.front_facing };
+        if let Some(exact) = &self.exact {
+            let flat = match self.shading {
+                Shading::Flat(c) => Some(c),
+                _ => None,
+            };
+            shade_span(
+                state,
+                band,
+                scratch,
+                span,
+                live,
+                |i| {
+                    let (l, _) = exact.weights(x0 + i as i32, y);
+                    (l[0] * exact.z[0] + l[1] * exact.z[1] + l[2] * exact.z[2]) as f32
+                },
+                |colors| {
+                    let Some(vertex_colors) = &exact.colors else {
+                        return flat;
+                    };
+                    colors.extend((0..n).map(|i| {
+                        let (_, q) = exact.weights(x0 + i as i32, y);
+                        std::array::from_fn(|c| {
+                            (q[0] * vertex_colors[0][c] + q[1] * vertex_colors[1][c] + q[2] * vertex_colors[2][c])
+                                as f32
+                        })
+                    }));
+                    flat
+                },
+                |i, out| {
+                    let (_, q) = exact.weights(x0 + i as i32, y);
+                    for (o, a) in out.iter_mut().zip(&exact.varyings) {
+                        *o = (q[0] * a[0] + q[1] * a[1] + q[2] * a[2]) as f32;
+                    }
+                },
+            );
+            return;
+        }
         shade_span(
             state,
             band,

@@ -163,6 +163,8 @@ impl Present for CallerPresenter {
             };
             let src = y * width..(y + 1) * width;
             match color.pixels() {
+                // RGBA bytes are stored in the caller's order: one copy per row.
+                ColorPixels::Unorm8(px) if order == [0, 1, 2, 3] => dst.copy_from_slice(px[src].as_flattened()),
                 ColorPixels::Unorm8(px) => {
                     for (out, p) in dst.chunks_exact_mut(order.len()).zip(&px[src]) {
                         for (o, &c) in out.iter_mut().zip(order) {

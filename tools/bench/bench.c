@@ -1,0 +1,446 @@
+/* The benchmark program behind tools/bench.sh: renders a fixed set of scenes through OSMesa
+ * and prints, per scene, the time of each repeated frame. Built once against the system's
+ * Mesa headers and run once per implementation (LD_LIBRARY_PATH picks tessera or Mesa).
+ *
+ *   bench <out-dir> <repetitions> <size> [scene]   (only the scenes whose name starts with scene)
+ *   bench --compare <reference.rgba> <image.rgba>   (no GL: prints the error of an image)
+ *
+ * Output lines (stdout):
+ *   context <ms>          context creation + bind + first clear + glFinish
+ *   first_frame <ms>      the same plus the first frame of the flat scene, from process start
+ *                         of the measurement (so it includes context creation)
+ *   scene <name> <pixels> <ms> <ms> ...   one time per repetition, after one warm-up frame
+ * Each scene's last frame is written to <out-dir>/<name>.rgba (raw RGBA8, bottom row first).
+ */
+#define _POSIX_C_SOURCE 199309L
+#define GL_GLEXT_PROTOTYPES 1
+#include <GL/gl.h>
+#include <GL/glext.h>
+#include <GL/osmesa.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+static int W = 1024, H = 1024;
+static unsigned char *pixels;
+
+static double now_ms(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return t.tv_sec * 1e3 + t.tv_nsec / 1e6;
+}
+
+/* A deterministic generator so that every implementation draws the same scene. */
+static unsigned rng_state = 12345u;
+static float rnd(void)
+{
+    rng_state = rng_state * 1664525u + 1013904223u;
+    return (rng_state >> 8) / 16777216.0f;
+}
+
+/* A full-screen quad in clip space whose right half lies at w = 1 and left half at w = wl, so
+ * that perspective-correct and affine interpolation differ; z from z0 (left) to z1 (right). */
+static void quad(float wl, float z0, float z1, const float c[4][4])
+{
+    const float xs[4] = {-1, 1, 1, -1}, ys[4] = {-1, -1, 1, 1};
+    glBegin(GL_QUADS);
+    for (int i = 0; i < 4; i++) {
+        float w = xs[i] < 0 ? wl : 1.0f;
+        float z = xs[i] < 0 ? z0 : z1;
+        glColor4fv(c[i]);
+        glVertex4f(xs[i] * w, ys[i] * w, z * w, w);
+    }
+    glEnd();
+}
+
+static void layer_colors(int layer, float alpha, float c[4][4])
+{
+    for (int i = 0; i < 4; i++) {
+        c[i][0] = (float)((layer * 37 + i * 61) % 256) / 255.0f;
+        c[i][1] = (float)((layer * 91 + i * 17 + 80) % 256) / 255.0f;
+        c[i][2] = (float)((layer * 13 + i * 111 + 160) % 256) / 255.0f;
+        c[i][3] = alpha;
+    }
+}
+
+static void reset_state(void)
+{
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_STENCIL_TEST);
+    glDisable(GL_BLEND);
+    glDisable(GL_ALPHA_TEST);
+    glDisable(GL_FOG);
+    glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_COLOR_LOGIC_OP);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_DITHER);
+    glShadeModel(GL_SMOOTH);
+    glColorMask(1, 1, 1, 1);
+    glDepthMask(1);
+    glDepthFunc(GL_LESS);
+    glStencilMask(0xff);
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+}
+
+#define LAYERS 8
+
+/* Scenes: each draws one frame and returns the number of fragments it generates. */
+
+static double scene_flat(void)
+{
+    glShadeModel(GL_FLAT);
+    for (int l = 0; l < LAYERS; l++) {
+        float c[4][4];
+        layer_colors(l, 1.0f, c);
+        for (int i = 0; i < 4; i++)
+            memcpy(c[i], c[3], sizeof c[3]);
+        quad(1.0f, 0, 0, c);
+    }
+    return (double)LAYERS * W * H;
+}
+
+static double scene_smooth(void)
+{
+    for (int l = 0; l < LAYERS; l++) {
+        float c[4][4];
+        layer_colors(l, 1.0f, c);
+        quad(1.0f + 0.25f * l, 0, 0, c);
+    }
+    return (double)LAYERS * W * H;
+}
+
+static double scene_blend(void)
+{
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    for (int l = 0; l < LAYERS; l++) {
+        float c[4][4];
+        layer_colors(l, 0.3f + 0.05f * l, c);
+        quad(1.0f + 0.25f * l, 0, 0, c);
+    }
+    return (double)LAYERS * W * H;
+}
+
+static double scene_depth(void)
+{
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    for (int l = 0; l < LAYERS; l++) {
+        float c[4][4];
+        layer_colors(l, 1.0f, c);
+        /* Planes that cross each other: half of each layer passes. */
+        float z0 = (l % 2) ? -0.8f + 0.1f * l : 0.8f - 0.1f * l;
+        quad(1.0f + 0.25f * l, z0, -z0, c);
+    }
+    return (double)LAYERS * W * H;
+}
+
+static double scene_stencil(void)
+{
+    float c[4][4];
+    /* The scene: a depth-tested floor. */
+    glEnable(GL_DEPTH_TEST);
+    layer_colors(1, 1.0f, c);
+    quad(1.5f, 0.2f, 0.6f, c);
+    /* Shadow volumes: two-sided stencil, increment on back faces failing depth, decrement on
+     * front faces failing depth (z-fail), no color or depth writes. */
+    glColorMask(0, 0, 0, 0);
+    glDepthMask(0);
+    glEnable(GL_STENCIL_TEST);
+    glStencilFunc(GL_ALWAYS, 0, 0xff);
+    glEnable(GL_CULL_FACE);
+    for (int v = 0; v < 3; v++) {
+        float z = -0.5f + 0.4f * v;
+        glCullFace(GL_FRONT);
+        glStencilOp(GL_KEEP, GL_INCR_WRAP, GL_KEEP);
+        glBegin(GL_QUADS); /* back faces (clockwise) */
+        glVertex3f(-0.9f + 0.3f * v, -0.9f, z);
+        glVertex3f(-0.9f + 0.3f * v, 0.9f, z);
+        glVertex3f(0.5f + 0.1f * v, 0.9f, z);
+        glVertex3f(0.5f + 0.1f * v, -0.9f, z);
+        glEnd();
+        glCullFace(GL_BACK);
+        glStencilOp(GL_KEEP, GL_DECR_WRAP, GL_KEEP);
+        glBegin(GL_QUADS); /* front faces */
+        glVertex3f(-0.7f + 0.3f * v, -0.7f, z + 0.5f);
+        glVertex3f(0.7f + 0.1f * v, -0.7f, z + 0.5f);
+        glVertex3f(0.7f + 0.1f * v, 0.7f, z + 0.5f);
+        glVertex3f(-0.7f + 0.3f * v, 0.7f, z + 0.5f);
+        glEnd();
+    }
+    glDisable(GL_CULL_FACE);
+    /* The lit pass where the stencil is 0. */
+    glColorMask(1, 1, 1, 1);
+    glDepthFunc(GL_LEQUAL);
+    glStencilFunc(GL_EQUAL, 0, 0xff);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ONE);
+    layer_colors(5, 1.0f, c);
+    quad(1.5f, 0.2f, 0.6f, c);
+    return (double)W * H * (2 + 3 * (0.7 * 0.9 + 0.49 * 0.75));
+}
+
+static float *mesh_xy, *mesh_rgb;
+static int mesh_vertices;
+
+static double scene_small_triangles(void)
+{
+    /* 250 × 200 cells, two triangles each: 100 000 triangles over the whole window. */
+    const int nx = 250, ny = 200;
+    if (!mesh_xy) {
+        mesh_vertices = nx * ny * 6;
+        mesh_xy = malloc(sizeof(float) * 2 * mesh_vertices);
+        mesh_rgb = malloc(sizeof(float) * 3 * mesh_vertices);
+        int k = 0;
+        for (int j = 0; j < ny; j++)
+            for (int i = 0; i < nx; i++) {
+                const int corner[6][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 0}, {1, 1}, {0, 1}};
+                for (int v = 0; v < 6; v++, k++) {
+                    int gi = i + corner[v][0], gj = j + corner[v][1];
+                    mesh_xy[2 * k] = -1.0f + 2.0f * gi / nx;
+                    mesh_xy[2 * k + 1] = -1.0f + 2.0f * gj / ny;
+                    mesh_rgb[3 * k] = (float)((gi * 7 + gj * 3) % 256) / 255.0f;
+                    mesh_rgb[3 * k + 1] = (float)((gi * 5 + gj * 11) % 256) / 255.0f;
+                    mesh_rgb[3 * k + 2] = (float)((gi + gj * 13) % 256) / 255.0f;
+                }
+            }
+    }
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glEnableClientState(GL_COLOR_ARRAY);
+    glVertexPointer(2, GL_FLOAT, 0, mesh_xy);
+    glColorPointer(3, GL_FLOAT, 0, mesh_rgb);
+    glDrawArrays(GL_TRIANGLES, 0, mesh_vertices);
+    glDisableClientState(GL_VERTEX_ARRAY);
+    glDisableClientState(GL_COLOR_ARRAY);
+    return (double)W * H;
+}
+
+static double scene_thin_triangles(void)
+{
+    /* 2000 slivers across the window, each about 0.7 pixel tall. */
+    const int n = 2000;
+    double area = 0;
+    rng_state = 777u;
+    glBegin(GL_TRIANGLES);
+    for (int i = 0; i < n; i++) {
+        float y0 = rnd() * 2 - 1, y1 = rnd() * 2 - 1, t = 1.4f / H;
+        glColor3f(rnd(), rnd(), rnd());
+        glVertex2f(-1.0f, y0);
+        glColor3f(rnd(), rnd(), rnd());
+        glVertex2f(1.0f, y1);
+        glColor3f(rnd(), rnd(), rnd());
+        glVertex2f(1.0f, y1 + t);
+        area += 0.5 * W * 0.7;
+    }
+    glEnd();
+    return area;
+}
+
+static double scene_fog_blend(void)
+{
+    glEnable(GL_FOG);
+    glFogi(GL_FOG_MODE, GL_LINEAR);
+    glFogf(GL_FOG_START, 0.0f);
+    glFogf(GL_FOG_END, 1.0f);
+    const float fog_color[4] = {0.5f, 0.6f, 0.7f, 1.0f};
+    glFogfv(GL_FOG_COLOR, fog_color);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    for (int l = 0; l < LAYERS; l++) {
+        float c[4][4];
+        layer_colors(l, 0.5f, c);
+        quad(1.0f + 0.25f * l, -0.9f + 0.1f * l, 0.1f * l, c);
+    }
+    return (double)LAYERS * W * H;
+}
+
+/* The per-stage scene: the smooth scene with one fragment stage enabled (all passing). */
+static const char *stage_name = "none";
+static double scene_stage(void)
+{
+    if (!strcmp(stage_name, "scissor")) {
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(1, 1, W - 2, H - 2);
+    } else if (!strcmp(stage_name, "alpha")) {
+        glEnable(GL_ALPHA_TEST);
+        glAlphaFunc(GL_GREATER, 0.1f);
+    } else if (!strcmp(stage_name, "stencil")) {
+        glEnable(GL_STENCIL_TEST);
+        glStencilFunc(GL_ALWAYS, 1, 0xff);
+        glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+    } else if (!strcmp(stage_name, "depth")) {
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_LEQUAL);
+    } else if (!strcmp(stage_name, "blend")) {
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    } else if (!strcmp(stage_name, "logic_op")) {
+        glEnable(GL_COLOR_LOGIC_OP);
+        glLogicOp(GL_XOR);
+    } else if (!strcmp(stage_name, "fog")) {
+        glEnable(GL_FOG);
+        glFogi(GL_FOG_MODE, GL_LINEAR);
+        glFogf(GL_FOG_START, 0.0f);
+        glFogf(GL_FOG_END, 2.0f);
+    } else if (!strcmp(stage_name, "dither")) {
+        glEnable(GL_DITHER);
+    }
+    for (int l = 0; l < LAYERS; l++) {
+        float c[4][4];
+        layer_colors(l, 0.75f, c);
+        quad(1.0f + 0.25f * l, 0.5f, 0.5f, c);
+    }
+    return (double)LAYERS * W * H;
+}
+
+static void save(const char *dir, const char *name)
+{
+    char path[1024];
+    snprintf(path, sizeof path, "%s/%s.rgba", dir, name);
+    FILE *f = fopen(path, "wb");
+    if (!f) {
+        fprintf(stderr, "bench: cannot write %s\n", path);
+        exit(1);
+    }
+    fwrite(pixels, 4, (size_t)W * H, f);
+    fclose(f);
+}
+
+static const char *only;
+
+static void run(const char *dir, const char *name, double (*scene)(void), int reps)
+{
+    if (only && strncmp(name, only, strlen(only)) != 0)
+        return;
+    double fragments = 0;
+    printf("scene %s", name);
+    for (int r = -1; r < reps; r++) {
+        double t0 = now_ms();
+        /* The masks a scene left must not mask the next clear. */
+        reset_state();
+        glClearColor(0.1f, 0.2f, 0.3f, 1.0f);
+        glClearDepth(1.0);
+        glClearStencil(0);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+        fragments = scene();
+        glFinish();
+        double t1 = now_ms();
+        if (r == -1)
+            printf(" %.0f", fragments);
+        else
+            printf(" %.4f", t1 - t0);
+    }
+    printf("\n");
+    fflush(stdout);
+    if (glGetError() != GL_NO_ERROR)
+        fprintf(stderr, "bench: GL error in scene %s\n", name);
+    save(dir, name);
+}
+
+static unsigned char *read_all(const char *path, long *size)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return NULL;
+    fseek(f, 0, SEEK_END);
+    *size = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    unsigned char *data = malloc(*size > 0 ? *size : 1);
+    if (fread(data, 1, *size, f) != (size_t)*size) {
+        free(data);
+        data = NULL;
+    }
+    fclose(f);
+    return data;
+}
+
+/* Prints "max_error <m> over_1lsb <pixels> psnr <dB>" of an RGBA8 image against a reference
+ * (every channel; PSNR "inf" when identical). */
+static int compare(const char *reference, const char *image)
+{
+    long na, nb;
+    unsigned char *a = read_all(reference, &na), *b = read_all(image, &nb);
+    if (!a || !b || na != nb) {
+        printf("max_error - over_1lsb - psnr -\n");
+        return 0;
+    }
+    int max_error = 0;
+    long over = 0;
+    double squares = 0;
+    for (long p = 0; p < na / 4; p++) {
+        int worst = 0;
+        for (int c = 0; c < 4; c++) {
+            int d = abs((int)a[4 * p + c] - (int)b[4 * p + c]);
+            squares += (double)d * d;
+            if (d > worst)
+                worst = d;
+        }
+        if (worst > max_error)
+            max_error = worst;
+        if (worst > 1)
+            over++;
+    }
+    if (squares == 0)
+        printf("max_error 0 over_1lsb 0 psnr inf\n");
+    else
+        printf("max_error %d over_1lsb %ld psnr %.2f\n", max_error, over,
+               10.0 * log10(255.0 * 255.0 / (squares / (double)na)));
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc == 4 && !strcmp(argv[1], "--compare"))
+        return compare(argv[2], argv[3]);
+    if (argc < 4) {
+        fprintf(stderr, "usage: bench <out-dir> <repetitions> <size>\n");
+        return 2;
+    }
+    const char *dir = argv[1];
+    int reps = atoi(argv[2]);
+    W = H = atoi(argv[3]);
+    only = argc > 4 ? argv[4] : NULL;
+    pixels = calloc((size_t)W * H, 4);
+
+    double t0 = now_ms();
+    OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
+    if (!ctx || !OSMesaMakeCurrent(ctx, pixels, GL_UNSIGNED_BYTE, W, H)) {
+        fprintf(stderr, "bench: no context\n");
+        return 1;
+    }
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    glFinish();
+    double t1 = now_ms();
+    reset_state();
+    scene_flat();
+    glFinish();
+    double t2 = now_ms();
+    printf("renderer %s\n", (const char *)glGetString(GL_RENDERER));
+    printf("context %.4f\nfirst_frame %.4f\n", t1 - t0, t2 - t0);
+
+    run(dir, "flat_fill", scene_flat, reps);
+    run(dir, "smooth_fill", scene_smooth, reps);
+    run(dir, "blend_fill", scene_blend, reps);
+    run(dir, "depth_overdraw", scene_depth, reps);
+    run(dir, "stencil_shadow", scene_stencil, reps);
+    run(dir, "small_triangles", scene_small_triangles, reps);
+    run(dir, "thin_triangles", scene_thin_triangles, reps);
+    run(dir, "fog_blend", scene_fog_blend, reps);
+    const char *stages[] = {"none", "scissor", "alpha", "stencil", "depth", "blend", "logic_op", "fog", "dither"};
+    for (unsigned s = 0; s < sizeof stages / sizeof *stages; s++) {
+        char name[64];
+        stage_name = stages[s];
+        snprintf(name, sizeof name, "stage_%s", stage_name);
+        run(dir, name, scene_stage, reps);
+    }
+    OSMesaMakeCurrent(NULL, NULL, 0, 0, 0);
+    OSMesaDestroyContext(ctx);
+    return 0;
+}
