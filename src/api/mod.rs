@@ -19,6 +19,7 @@ pub mod gl_fragment;
 pub mod gl_pixels;
 pub mod gl_raster_state;
 pub mod gl_state;
+pub mod gl_texture;
 pub mod gl_transform;
 pub mod gl_vertex;
 pub mod osmesa;

@@ -20,6 +20,8 @@ pub mod raster_state;
 pub mod read_pixels;
 pub mod state;
 pub mod strings;
+pub mod texture;
+pub mod texture_env;
 pub mod transform;
 pub mod vertex_input;
 #[cfg(test)]
@@ -59,6 +61,8 @@ pub struct Context {
     pub vertex_input: vertex_input::VertexInput,
     /// The buffer objects (one table, so that it can become shared between contexts).
     pub buffers: crate::vertex::buffer_objects::BufferTable,
+    /// The texture objects (`texture`).
+    pub textures: texture::TextureTable,
 }
 
 impl Context {
@@ -78,6 +82,7 @@ impl Context {
             bound_once: false,
             vertex_input: vertex_input::VertexInput::default(),
             buffers: Default::default(),
+            textures: texture::TextureTable::new(),
         }
     }
 

@@ -173,7 +173,7 @@ impl TriangleJob {
             live,
             |i| self.z.at(dx0 + i as f32, dy),
             |colors| self.shading.span_colors(dx0, dy, n, colors),
-            |i, out| self.varyings.at(dx0 + i as f32, dy, out),
+            |i, j, out| self.varyings.at(dx0 + i as f32, dy + j as f32, out),
         );
     }
 }
