@@ -93,11 +93,12 @@ struct Axis {
     wf: f32,
 }
 
-/// The fixed-point position of a coordinate in texels: 8 fractional bits.
+/// The fixed-point position of a coordinate in texels: 8 fractional bits, rounded to
+/// nearest even as llvmpipe's float → int conversion does.
 #[inline]
 fn fixed(u: f32) -> i32 {
-    let v = (u * 256.0).floor();
-    v.clamp(-1.0e9, 1.0e9) as i32
+    let v = crate::pixel::convert::round_even((u * 256.0).clamp(-1.0e9, 1.0e9));
+    v as i32
 }
 
 /// Mirrors `s` for GL_MIRRORED_REPEAT: `s − floor(s)` on even periods, `1 − (s − floor(s))`
@@ -148,10 +149,23 @@ fn axis(s: f32, size: i32, wrap: Wrap, filter: Filter) -> Axis {
     }
 }
 
-/// Integer lerp of 8-bit values with a weight in 1/256.
+/// log₂ x approximated as llvmpipe's `lp_build_fast_log2`: the exponent plus the mantissa
+/// minus one (exact at powers of two, linear in between).
+#[inline]
+pub fn fast_log2(x: f32) -> f32 {
+    if !(x > 0.0) || !x.is_finite() {
+        return x.log2();
+    }
+    let bits = x.to_bits();
+    let exponent = ((bits >> 23) & 0xff) as i32 - 127;
+    let mantissa = f32::from_bits((bits & 0x007f_ffff) | 0x3f80_0000);
+    exponent as f32 + mantissa - 1.0
+}
+
+/// Integer lerp of 8-bit values with a weight in 1/256, rounded to nearest (llvmpipe's).
 #[inline]
 fn lerp8(a: i32, b: i32, w: i32) -> i32 {
-    a + (((b - a) * w) >> 8)
+    a + (((b - a) * w + 128) >> 8)
 }
 
 /// Cube map face selection (GL 2.1 table 3.21): the face index (+X, −X, +Y, −Y, +Z, −Z) and
@@ -242,24 +256,22 @@ impl Sampler {
         if self.dim == Dim::D3 {
             size[2] = (base.depth - b2) as f32;
         }
-        let mut rho = 0.0f32;
-        if self.dim == Dim::Cube {
+        // ρ² = the larger squared length of the scaled derivative vectors along x and y.
+        let scale: [f32; 3] = if self.dim == Dim::Cube {
             // Derivatives on the face: the major axis scales the others by 1/(2|ma|).
             let (_, _, _, ma) = cube_face(c[0], c[1], c[2]);
-            let scale = if ma > 0.0 { size[0] * 0.5 / ma } else { 0.0 };
-            for d in [ddx, ddy] {
-                for v in d {
-                    rho = rho.max(v.abs() * scale);
-                }
-            }
+            let k = if ma > 0.0 { size[0] * 0.5 / ma } else { 0.0 };
+            [k; 3]
         } else {
-            for d in [ddx, ddy] {
-                for k in 0..dims {
-                    rho = rho.max((d[k] * size[k]).abs());
-                }
-            }
-        }
-        let lambda = rho.log2() + self.lod_bias;
+            std::array::from_fn(|k| if k < dims { size[k] } else { 0.0 })
+        };
+        let length2 = |d: [f32; 3]| (0..3).map(|k| (d[k] * scale[k]) * (d[k] * scale[k])).sum::<f32>();
+        let rho2 = length2(ddx).max(length2(ddy));
+        // With a mipmap blend, llvmpipe takes log₂ piecewise linearly between powers of two
+        // (exponent plus mantissa − 1) of ρ², and halves it; the level choice of the other
+        // filters is exact.
+        let log2 = if self.mip == Some(Filter::Linear) { 0.5 * fast_log2(rho2) } else { 0.5 * rho2.log2() };
+        let lambda = log2 + self.lod_bias;
         lambda.clamp(self.min_lod, self.max_lod)
     }
 
