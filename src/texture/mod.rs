@@ -153,25 +153,36 @@ pub fn downsample(src: &TexImage, dims: usize) -> Result<TexImage, OutOfMemory> 
     let (fx, fy, fz) = (if w > 1 { 2 } else { 1 }, if h > 1 { 2 } else { 1 }, if d > 1 { 2 } else { 1 });
     let by = if dims >= 2 { b } else { 0 };
     let bz = if dims >= 3 { b } else { 0 };
+    // Halves as llvmpipe's mipmap blit samples them: bilinear at the centre of each 2×2
+    // (×2) box, each lerp an 8-bit lerp at weight 1/2 rounded (x + ⌊(y − x + 1) / 2⌋).
+    let half = |p: [f32; 4], q: [f32; 4], eight_bit: bool| -> [f32; 4] {
+        if eight_bit {
+            std::array::from_fn(|k| {
+                let (a, b) = ((p[k] * 255.0).round() as i32, (q[k] * 255.0).round() as i32);
+                (a + (((b - a) * 128 + 128) >> 8)) as f32 / 255.0
+            })
+        } else {
+            std::array::from_fn(|k| (p[k] + q[k]) * 0.5)
+        }
+    };
+    let eight_bit = matches!(src.texels, Texels::Rgba8(_));
     for z in 0..nd {
         for y in 0..nh {
             for x in 0..nw {
-                let mut sum = [0f32; 4];
-                let mut n = 0.0;
-                for dz in 0..fz {
-                    for dy in 0..fy {
-                        for dx in 0..fx {
-                            let i = src.index(x * fx + dx + b, y * fy + dy + by, z * fz + dz + bz);
-                            let t = src.texel_f32(i);
-                            (0..4).for_each(|c| sum[c] += t[c]);
-                            n += 1.0;
-                        }
-                    }
-                }
+                let texel = |dx: usize, dy: usize, dz: usize| {
+                    src.texel_f32(src.index(
+                        x * fx + dx.min(fx - 1) + b,
+                        y * fy + dy.min(fy - 1) + by,
+                        z * fz + dz.min(fz - 1) + bz,
+                    ))
+                };
+                let row = |dy, dz| half(texel(0, dy, dz), texel(1, dy, dz), eight_bit);
+                let plane = |dz| half(row(0, dz), row(1, dz), eight_bit);
+                let v = half(plane(0), plane(1), eight_bit);
                 let o = out.index(x, y, z);
                 match &mut out.texels {
-                    Texels::Rgba8(t) => t[o] = sum.map(|s| (s / n * 255.0 + 0.5) as u8),
-                    Texels::Depth(t) => t[o] = sum[0] / n,
+                    Texels::Rgba8(t) => t[o] = v.map(|c| (c * 255.0).round() as u8),
+                    Texels::Depth(t) => t[o] = v[0],
                 }
             }
         }
