@@ -1240,8 +1240,11 @@ fn generate_mipmaps(obj: &mut TextureObject, face: usize, dims: usize) -> Result
     Ok(())
 }
 
-/// Packs `count` texels of `image` from index `start` as `format`/`ty` (glGetTexImage):
-/// luminance is read from R (GL 2.1 §6.1.4), depth as depth.
+/// Packs `count` texels of `image` from index `start` as `format`/`ty` (glGetTexImage).
+/// The texels are first given the components GL 2.1 §6.1.4 returns for their base format
+/// (luminance and intensity as (L, 0, 0, 1), alpha as (0, 0, 0, A)), and luminance is read
+/// back from R. 8-bit texels convert to other integer sizes by Mesa's bit replication
+/// (`unorm_to_unorm`) and to float as `u · (1/255)`; depth converts from float.
 fn pack_texels_row(
     image: &TexImage,
     start: usize,
@@ -1251,7 +1254,7 @@ fn pack_texels_row(
     swap: bool,
     out: &mut [u8],
 ) {
-    use crate::pixel::convert::{float_to_half, float_to_snorm, float_to_unorm};
+    use crate::pixel::convert::{float_to_half, float_to_snorm, float_to_unorm, unorm_to_float, unorm_to_unorm};
     let put = |out: &mut [u8], bytes: &[u8]| {
         let n = bytes.len();
         out[..n].copy_from_slice(bytes);
@@ -1265,14 +1268,32 @@ fn pack_texels_row(
         f => f.color_channels(),
     };
     let pixel_bytes = ty.pixel_bytes(format);
+    // A texel as 8-bit values (color) or a float (depth), in the returned components.
+    let texel = |i: usize| -> Result<[u8; 4], f32> {
+        match &image.texels {
+            Texels::Rgba8(t) => {
+                let c = t[start + i];
+                Ok(match image.base {
+                    BaseFormat::Luminance | BaseFormat::Intensity => [c[0], 0, 0, 255],
+                    BaseFormat::LuminanceAlpha => [c[0], 0, 0, c[3]],
+                    _ => c,
+                })
+            }
+            Texels::Depth(d) => Err(d[start + i]),
+        }
+    };
     for i in 0..count {
-        let c = image.texel_f32(start + i);
+        let t = texel(i);
         let o = &mut out[i * pixel_bytes..(i + 1) * pixel_bytes];
         match ty {
             ClientType::Packed(p) => {
                 let mut word = 0u32;
                 for ((&ch, &bits), shift) in channels.iter().zip(p.component_bits()).zip(p.shifts()) {
-                    word |= float_to_unorm(c[ch], bits) << shift;
+                    let field = match t {
+                        Ok(c) => unorm_to_unorm(c[ch] as u32, 8, bits),
+                        Err(d) => float_to_unorm(d, bits),
+                    };
+                    word |= field << shift;
                 }
                 match p.bytes() {
                     1 => o[0] = word as u8,
@@ -1283,18 +1304,35 @@ fn pack_texels_row(
             _ => {
                 let size = ty.element_bytes();
                 for (k, &ch) in channels.iter().enumerate() {
-                    let v = c[ch];
                     let slot = &mut o[k * size..(k + 1) * size];
-                    match ty {
-                        ClientType::UnsignedByte => slot[0] = float_to_unorm(v, 8) as u8,
-                        ClientType::Byte => slot[0] = float_to_snorm(v, 8) as i8 as u8,
-                        ClientType::UnsignedShort => put(slot, &(float_to_unorm(v, 16) as u16).to_ne_bytes()),
-                        ClientType::Short => put(slot, &(float_to_snorm(v, 16) as i16).to_ne_bytes()),
-                        ClientType::UnsignedInt => put(slot, &float_to_unorm(v, 32).to_ne_bytes()),
-                        ClientType::Int => put(slot, &float_to_snorm(v, 32).to_ne_bytes()),
-                        ClientType::Float => put(slot, &v.to_ne_bytes()),
-                        ClientType::HalfFloat => put(slot, &float_to_half(v).to_ne_bytes()),
-                        _ => {}
+                    match t {
+                        Ok(c) => {
+                            let v = c[ch] as u32;
+                            match ty {
+                                ClientType::UnsignedByte => slot[0] = v as u8,
+                                ClientType::Byte => slot[0] = unorm_to_unorm(v, 8, 7) as u8,
+                                ClientType::UnsignedShort => {
+                                    put(slot, &(unorm_to_unorm(v, 8, 16) as u16).to_ne_bytes())
+                                }
+                                ClientType::Short => put(slot, &(unorm_to_unorm(v, 8, 15) as u16).to_ne_bytes()),
+                                ClientType::UnsignedInt => put(slot, &unorm_to_unorm(v, 8, 32).to_ne_bytes()),
+                                ClientType::Int => put(slot, &unorm_to_unorm(v, 8, 31).to_ne_bytes()),
+                                ClientType::Float => put(slot, &unorm_to_float(v, 8).to_ne_bytes()),
+                                ClientType::HalfFloat => put(slot, &float_to_half(unorm_to_float(v, 8)).to_ne_bytes()),
+                                _ => {}
+                            }
+                        }
+                        Err(d) => match ty {
+                            ClientType::UnsignedByte => slot[0] = float_to_unorm(d, 8) as u8,
+                            ClientType::Byte => slot[0] = float_to_snorm(d, 8) as i8 as u8,
+                            ClientType::UnsignedShort => put(slot, &(float_to_unorm(d, 16) as u16).to_ne_bytes()),
+                            ClientType::Short => put(slot, &(float_to_snorm(d, 16) as i16).to_ne_bytes()),
+                            ClientType::UnsignedInt => put(slot, &float_to_unorm(d, 32).to_ne_bytes()),
+                            ClientType::Int => put(slot, &float_to_snorm(d, 32).to_ne_bytes()),
+                            ClientType::Float => put(slot, &d.to_ne_bytes()),
+                            ClientType::HalfFloat => put(slot, &float_to_half(d).to_ne_bytes()),
+                            _ => {}
+                        },
                     }
                 }
             }

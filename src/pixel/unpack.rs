@@ -6,7 +6,7 @@
 //! they are), then extended to RGBA: missing R, G, B are 0, missing A is 1, and a luminance
 //! value is copied to R, G and B. Where the client pixels lie (alignment, row length, skips)
 //! is [`super::layout`]'s business; this module converts one row at a time.
-use super::convert::unorm_max;
+use super::convert::{unorm_max, unorm_to_unorm};
 use super::{ClientFormat, ClientType};
 
 /// Reads the `N` bytes at the start of `bytes` as a native-endian integer, swapped first
@@ -71,8 +71,11 @@ pub fn unpack_color_row(format: ClientFormat, ty: ClientType, swap: bool, row: &
                     2 => read_uint::<2>(bytes, swap),
                     _ => read_uint::<4>(bytes, swap),
                 };
+                // Fields widen to 8 bits by replication (or narrow by rounding), as Mesa converts
+                // packed data to 8-bit texels, then become floats that round back to them.
                 for ((&channel, &bits), shift) in channels.iter().zip(packed.component_bits()).zip(packed.shifts()) {
-                    rgba[channel] = ((word >> shift) & unorm_max(bits)) as f32 / unorm_max(bits) as f32;
+                    let field = (word >> shift) & unorm_max(bits);
+                    rgba[channel] = unorm_to_unorm(field, bits, 8) as f32 / 255.0;
                 }
             }
             _ => {
@@ -124,7 +127,7 @@ mod tests {
         assert_eq!(out[0], [1.0, 0.0, 0.0, 1.0]);
         // Swapped bytes: 0x00f8 read as 0xf800 → only blue's low bits.
         unpack_color_row(ClientFormat::Rgb, ty, true, &word, &mut out);
-        assert_eq!(out[0], [0.0, 7.0 / 63.0, 24.0 / 31.0, 1.0]);
+        assert_eq!(out[0], [0.0, 28.0 / 255.0, 198.0 / 255.0, 1.0]);
         let word = 0x1122_33ffu32.to_ne_bytes();
         unpack_color_row(
             ClientFormat::Rgba,

@@ -80,7 +80,8 @@ pub fn quantize_to_u8(value: f32, bits: u32) -> u8 {
 pub fn quantize_depth(value: f32, bits: u32) -> f32 {
     let v = if value > 0.0 { value.min(1.0) } else { 0.0 };
     let max = crate::pixel::convert::unorm_max(bits) as f64;
-    ((v as f64 * max).round() / max) as f32
+    let q = (v as f64 * max).round() as u32;
+    crate::pixel::convert::depth_to_float(q, bits)
 }
 
 impl TexImage {
@@ -306,7 +307,7 @@ mod tests {
         assert_eq!(quantize_to_u8(0.5, 1), 255);
         assert_eq!(quantize_to_u8(0.2, 8), 51);
         assert_eq!(quantize_to_u8(-1.0, 8), 0);
-        assert_eq!(quantize_depth(0.5, 16), (32768.0 / 65535.0f64) as f32);
+        assert_eq!(quantize_depth(0.5, 16), 32768.0 * (1.0 / 65535.0f32));
     }
 
     #[test]
