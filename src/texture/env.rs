@@ -196,10 +196,17 @@ fn combine(
             [d; 3]
         }
     };
-    let rgb = rgb.map(|x| clamp01(x * comb.scale_rgb));
     if comb.rgb == CombineFn::Dot3Rgba {
-        return [rgb[0], rgb[1], rgb[2], rgb[0]];
+        // The dot product goes to alpha too, scaled by GL_ALPHA_SCALE (as Mesa does).
+        let d = rgb[0];
+        return [
+            clamp01(d * comb.scale_rgb),
+            clamp01(d * comb.scale_rgb),
+            clamp01(d * comb.scale_rgb),
+            clamp01(d * comb.scale_alpha),
+        ];
     }
+    let rgb = rgb.map(|x| clamp01(x * comb.scale_rgb));
     let m = args_needed(comb.alpha);
     let b: Vec<f32> = (0..m).map(arg_alpha).collect();
     let alpha = match comb.alpha {
