@@ -209,6 +209,9 @@ impl TextureTable {
     }
 }
 
+/// A validated image command: its target, internal format and client format/type.
+type CheckedImage = (ImageTarget, FormatInfo, Option<(ClientFormat, ClientType)>);
+
 /// Which object an image command addresses: a bound object's face, or a proxy.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 struct ImageTarget {
@@ -511,7 +514,7 @@ impl Context {
         a: &ImageArgs,
         client: Option<(GLenum, GLenum)>,
         proxy_ok: bool,
-    ) -> Option<(ImageTarget, FormatInfo, Option<(ClientFormat, ClientType)>)> {
+    ) -> Option<CheckedImage> {
         if !self.check_outside_begin_end() {
             return None;
         }
@@ -698,6 +701,7 @@ impl Context {
     }
 
     /// glTexSubImage1D/2D/3D.
+    #[allow(clippy::too_many_arguments)]
     pub fn tex_sub_image<'a>(
         &mut self,
         dims: usize,

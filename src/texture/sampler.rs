@@ -153,7 +153,7 @@ fn axis(s: f32, size: i32, wrap: Wrap, filter: Filter) -> Axis {
 /// minus one (exact at powers of two, linear in between).
 #[inline]
 pub fn fast_log2(x: f32) -> f32 {
-    if !(x > 0.0) || !x.is_finite() {
+    if x.is_nan() || x <= 0.0 || !x.is_finite() {
         return x.log2();
     }
     let bits = x.to_bits();
@@ -438,13 +438,16 @@ mod tests {
     fn linear_filtering_uses_8_bit_weights() {
         let img = image(2, 1, vec![[0, 0, 0, 0], [255, 255, 255, 255]]);
         let lin = |wrap, x: f32| sampler(vec![img.clone()], wrap, Filter::Linear).sample([x, 0.5, 0.0], ZERO, ZERO);
-        // Between the two texel centres: a quarter of the way.
-        assert_eq!(lin(Wrap::ClampToEdge, 0.375)[0], 63.0 / 255.0);
-        assert_eq!(lin(Wrap::ClampToEdge, 0.5)[0], 127.0 / 255.0);
+        // Between the two texel centres: a quarter of the way (255 · 64 / 256 rounded).
+        assert_eq!(lin(Wrap::ClampToEdge, 0.375)[0], 64.0 / 255.0);
+        assert_eq!(lin(Wrap::ClampToEdge, 0.5)[0], 128.0 / 255.0);
+        // A weight of 1/512 texel rounds to 1/256 (half to even: 0.5 → 0, 1.5 → 2).
+        assert_eq!(lin(Wrap::ClampToEdge, 0.25 + 1.5 / 512.0)[0], 2.0 / 255.0);
+        assert_eq!(lin(Wrap::ClampToEdge, 0.25 + 0.5 / 512.0)[0], 0.0);
         // GL_CLAMP at the edge mixes in the border color half and half.
-        assert_eq!(lin(Wrap::Clamp, 1.0), [127.0 / 255.0, 127.0 / 255.0, 1.0, 1.0]);
+        assert_eq!(lin(Wrap::Clamp, 1.0), [128.0 / 255.0, 128.0 / 255.0, 1.0, 1.0]);
         // Repeat wraps the second texel to the first.
-        assert_eq!(lin(Wrap::Repeat, 1.0)[0], 127.0 / 255.0);
+        assert_eq!(lin(Wrap::Repeat, 1.0)[0], 128.0 / 255.0);
     }
 
     #[test]
@@ -459,9 +462,13 @@ mod tests {
         assert_eq!(s.sample([0.5; 3], d(2.0), ZERO), [0.0, 1.0, 0.0, 1.0]);
         assert_eq!(s.sample([0.5; 3], d(64.0), ZERO), [0.0, 0.0, 1.0, 1.0]);
         s.mip = Some(Filter::Linear);
-        // λ = 0.5: halfway between red and green.
-        let half = s.sample([0.5; 3], d(2f32.sqrt()), ZERO);
-        assert_eq!(half, [127.0 / 255.0, 127.0 / 255.0, 0.0, 1.0]);
+        // ρ² = 2, λ = 0.5: halfway between red and green.
+        let half = s.sample([0.5; 3], [0.25, 0.25, 0.0], ZERO);
+        assert_eq!(half, [128.0 / 255.0, 128.0 / 255.0, 0.0, 1.0]);
+        // ρ = 1.5: llvmpipe's λ is 0.5 · fast_log2(2.25) = 0.5625 (exact: 0.585), weight 144.
+        let blend = s.sample([0.5; 3], [0.375, 0.0, 0.0], ZERO);
+        assert_eq!(blend[1], (((255 * 144 + 128) >> 8) as f32) / 255.0);
+        assert_eq!(fast_log2(2.25), 1.125);
     }
 
     #[test]
