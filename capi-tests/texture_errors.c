@@ -252,6 +252,9 @@ static void queries(void)
 
     /* GL_TEXTURE_BIT restores the active unit, enables, bindings, environment and texgen. */
     glPushAttrib(GL_TEXTURE_BIT);
+    /* The bound object's parameters are part of the group too. */
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_GREATER);
     glBindTexture(GL_TEXTURE_2D, names[2]);
     glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_DECAL);
     glDisable(GL_TEXTURE_GEN_T);
@@ -264,6 +267,9 @@ static void queries(void)
     glGetTexEnviv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, iv);
     glGetTexGeniv(GL_T, GL_TEXTURE_GEN_MODE, iv + 1);
     capi_value("popped_env_gen", "0x%x 0x%x", iv[0], iv[1]);
+    glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, iv);
+    glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, iv + 1);
+    capi_value("popped_object", "0x%x 0x%x", iv[0], iv[1]);
     glDisable(GL_TEXTURE_GEN_T);
     glActiveTexture(GL_TEXTURE0);
 
