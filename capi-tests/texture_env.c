@@ -153,6 +153,28 @@ static void multitexture(void)
     glMatrixMode(GL_MODELVIEW);
 }
 
+/* Texturing precedes the color sum, fog and the alpha test: a cut-out texture under the
+ * alpha test, with a secondary color and fog, in front of a depth-tested quad. */
+static void with_fragment_ops(void)
+{
+    random_texture(0, GL_RGBA);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+    glEnable(GL_ALPHA_TEST);
+    glAlphaFunc(GL_GREATER, 0.4f);
+    glEnable(GL_COLOR_SUM);
+    glSecondaryColor3f(0.2f, 0.1f, 0.0f);
+    glEnable(GL_FOG);
+    glFogi(GL_FOG_MODE, GL_LINEAR);
+    glFogf(GL_FOG_START, 0.0f);
+    glFogf(GL_FOG_END, 2.0f);
+    textured_quad();
+    capi_save_framebuffer("alpha_test_sum_fog", W, H);
+    glDisable(GL_ALPHA_TEST);
+    glDisable(GL_COLOR_SUM);
+    glDisable(GL_FOG);
+    glDisable(GL_TEXTURE_2D);
+}
+
 int main(void)
 {
     capi_make_context(OSMESA_RGBA, GL_UNSIGNED_BYTE, 0, 0, 0, W, H, NULL);
@@ -161,5 +183,6 @@ int main(void)
     classic_modes();
     combine();
     multitexture();
+    with_fragment_ops();
     return capi_finish();
 }
