@@ -226,26 +226,22 @@ impl Sampler {
                 let d1 = lambda.floor().min(last);
                 let d2 = (d1 + 1.0).min(last);
                 let frac = lambda - lambda.floor();
-                let a = self.filter_level(&levels[d1 as usize], coords, self.min);
                 if d1 == d2 || frac == 0.0 {
-                    return a;
+                    return self.filter_level(&levels[d1 as usize], coords, self.min);
                 }
-                let b = self.filter_level(&levels[d2 as usize], coords, self.min);
-                if self.is_8bit() {
-                    let w = (frac * 256.0) as i32;
-                    std::array::from_fn(|k| {
-                        let (x, y) = ((a[k] * 255.0).round() as i32, (b[k] * 255.0).round() as i32);
-                        lerp8(x, y, w) as f32 / 255.0
-                    })
-                } else {
-                    std::array::from_fn(|k| a[k] + frac * (b[k] - a[k]))
+                let a = self.filter_level_raw(&levels[d1 as usize], coords, self.min);
+                let b = self.filter_level_raw(&levels[d2 as usize], coords, self.min);
+                match (a, b) {
+                    (Ok(a), Ok(b)) => {
+                        let w = (frac * 256.0) as i32;
+                        std::array::from_fn(|k| lerp8(a[k], b[k], w) as f32 * (1.0 / 255.0))
+                    }
+                    (Err(a), Err(b)) => std::array::from_fn(|k| a[k] + frac * (b[k] - a[k])),
+                    // Every level of a complete texture has the same format.
+                    (a, _) => a.map_or_else(|f| f, |v| v.map(|x| x as f32 / 255.0)),
                 }
             }
         }
-    }
-
-    fn is_8bit(&self) -> bool {
-        self.compare.is_none() && self.base != BaseFormat::Depth
     }
 
     /// λ: log₂ of the largest scaled derivative, biased and clamped.
@@ -277,6 +273,15 @@ impl Sampler {
 
     /// One filtered lookup in one image.
     fn filter_level(&self, img: &TexImage, c: [f32; 3], filter: Filter) -> [f32; 4] {
+        match self.filter_level_raw(img, c, filter) {
+            Ok(v) => v.map(|x| x as f32 / 255.0),
+            Err(f) => f,
+        }
+    }
+
+    /// One filtered lookup: 8-bit values from RGBA8 images (`Ok`), floats from depth ones.
+    #[inline]
+    fn filter_level_raw(&self, img: &TexImage, c: [f32; 3], filter: Filter) -> Result<[i32; 4], [f32; 4]> {
         let b = img.border as i32;
         let dims = self.dim.coords();
         let size = [img.width as i32 - 2 * b, if dims >= 2 { img.height as i32 - 2 * b } else { 1 }, {
@@ -302,8 +307,19 @@ impl Sampler {
         };
         match (&img.texels, self.compare) {
             (Texels::Rgba8(t), _) => {
-                let border8 = self.border.map(|c| (c.clamp(0.0, 1.0) * 255.0).round() as i32);
-                let fetch = |x, y, z| at(x, y, z).map_or(border8, |i| t[i].map(|c| c as i32));
+                let border8 = self.border.map(|c| (c.clamp(0.0, 1.0) * 255.0 + 0.5) as i32);
+                // Repeat, edge clamping and mirroring keep every index inside a borderless
+                // image: no border test and no Option per texel.
+                let inside_only = b == 0 && (0..dims).all(|k| !matches!(wrap(k), Wrap::Clamp | Wrap::ClampToBorder));
+                let (w, h) = (img.width, img.height);
+                let fetch = |x: i32, y: i32, z: i32| {
+                    if inside_only {
+                        let p = t[(z as usize * h + y as usize) * w + x as usize];
+                        [p[0] as i32, p[1] as i32, p[2] as i32, p[3] as i32]
+                    } else {
+                        at(x, y, z).map_or(border8, |i| t[i].map(|c| c as i32))
+                    }
+                };
                 let row = |y, z| -> [i32; 4] {
                     let (p, q) = (fetch(ax.i0, y, z), fetch(ax.i1, y, z));
                     std::array::from_fn(|k| lerp8(p[k], q[k], ax.w))
@@ -322,7 +338,7 @@ impl Sampler {
                     let (p, q) = (plane(az.i0), plane(az.i1));
                     std::array::from_fn(|k| lerp8(p[k], q[k], az.w))
                 };
-                v.map(|x| x as f32 / 255.0)
+                Ok(v)
             }
             (Texels::Depth(t), compare) => {
                 let reference = c_ref(c, self.dim);
@@ -351,11 +367,11 @@ impl Sampler {
                 } else {
                     lerp(plane(az.i0), plane(az.i1), az.wf)
                 };
-                match self.depth_mode {
+                Err(match self.depth_mode {
                     DepthMode::Luminance => [d, d, d, 1.0],
                     DepthMode::Intensity => [d; 4],
                     DepthMode::Alpha => [0.0, 0.0, 0.0, d],
-                }
+                })
             }
         }
     }
