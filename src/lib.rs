@@ -15,5 +15,6 @@ pub mod framebuffer;
 pub mod pixel;
 pub mod raster;
 pub mod setup;
+pub mod texture;
 pub mod vertex;
 pub mod winsys;

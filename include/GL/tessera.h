@@ -6548,6 +6548,106 @@ void glGetFloatv(GLenum pname, GLfloat *data);
 
 void glGetDoublev(GLenum pname, GLdouble *data);
 
+void glGenTextures(GLsizei n, GLuint *textures);
+
+void glDeleteTextures(GLsizei n, const GLuint *textures);
+
+void glBindTexture(GLenum target, GLuint texture);
+
+GLboolean glIsTexture(GLuint texture);
+
+void glPrioritizeTextures(GLsizei n, const GLuint *textures, const GLclampf *priorities);
+
+GLboolean glAreTexturesResident(GLsizei n, const GLuint *textures, GLboolean *residences);
+
+void glTexImage1D(GLenum target, GLint level, GLint internalformat, GLsizei width, GLint border, GLenum format, GLenum type_, const GLvoid *pixels);
+
+void glTexImage2D(GLenum target, GLint level, GLint internalformat, GLsizei width, GLsizei height, GLint border, GLenum format, GLenum type_, const GLvoid *pixels);
+
+void glTexImage3D(GLenum target, GLint level, GLint internalformat, GLsizei width, GLsizei height, GLsizei depth, GLint border, GLenum format, GLenum type_, const GLvoid *pixels);
+
+void glTexSubImage1D(GLenum target, GLint level, GLint xoffset, GLsizei width, GLenum format, GLenum type_, const GLvoid *pixels);
+
+void glTexSubImage2D(GLenum target, GLint level, GLint xoffset, GLint yoffset, GLsizei width, GLsizei height, GLenum format, GLenum type_, const GLvoid *pixels);
+
+void glTexSubImage3D(GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint zoffset, GLsizei width, GLsizei height, GLsizei depth, GLenum format, GLenum type_, const GLvoid *pixels);
+
+void glCopyTexImage1D(GLenum target, GLint level, GLenum internalformat, GLint x, GLint y, GLsizei width, GLint border);
+
+void glCopyTexImage2D(GLenum target, GLint level, GLenum internalformat, GLint x, GLint y, GLsizei width, GLsizei height, GLint border);
+
+void glCopyTexSubImage1D(GLenum target, GLint level, GLint xoffset, GLint x, GLint y, GLsizei width);
+
+void glCopyTexSubImage2D(GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint x, GLint y, GLsizei width, GLsizei height);
+
+void glCopyTexSubImage3D(GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint zoffset, GLint x, GLint y, GLsizei width, GLsizei height);
+
+void glGetTexImage(GLenum target, GLint level, GLenum format, GLenum type_, GLvoid *pixels);
+
+void glGenerateMipmap(GLenum target);
+
+void glGenerateMipmapEXT(GLenum target);
+
+void glGetTexLevelParameteriv(GLenum target, GLint level, GLenum pname, GLint *params);
+
+void glGetTexLevelParameterfv(GLenum target, GLint level, GLenum pname, GLfloat *params);
+
+void glTexParameterf(GLenum target, GLenum pname, GLfloat param);
+
+void glTexParameteri(GLenum target, GLenum pname, GLint param);
+
+void glTexParameterfv(GLenum target, GLenum pname, const GLfloat *params);
+
+void glTexParameteriv(GLenum target, GLenum pname, const GLint *params);
+
+void glGetTexParameterfv(GLenum target, GLenum pname, GLfloat *params);
+
+void glGetTexParameteriv(GLenum target, GLenum pname, GLint *params);
+
+void glTexEnvf(GLenum target, GLenum pname, GLfloat param);
+
+void glTexEnvi(GLenum target, GLenum pname, GLint param);
+
+void glTexEnvfv(GLenum target, GLenum pname, const GLfloat *params);
+
+void glTexEnviv(GLenum target, GLenum pname, const GLint *params);
+
+void glGetTexEnvfv(GLenum target, GLenum pname, GLfloat *params);
+
+void glGetTexEnviv(GLenum target, GLenum pname, GLint *params);
+
+void glTexGend(GLenum coord, GLenum pname, GLdouble param);
+
+void glTexGenf(GLenum coord, GLenum pname, GLfloat param);
+
+void glTexGeni(GLenum coord, GLenum pname, GLint param);
+
+void glTexGendv(GLenum coord, GLenum pname, const GLdouble *params);
+
+void glTexGenfv(GLenum coord, GLenum pname, const GLfloat *params);
+
+void glTexGeniv(GLenum coord, GLenum pname, const GLint *params);
+
+void glGetTexGendv(GLenum coord, GLenum pname, GLdouble *params);
+
+void glGetTexGenfv(GLenum coord, GLenum pname, GLfloat *params);
+
+void glGetTexGeniv(GLenum coord, GLenum pname, GLint *params);
+
+void glCompressedTexImage1D(GLenum _target, GLint _level, GLenum _internalformat, GLsizei _width, GLint _border, GLsizei _imageSize, const GLvoid *_data);
+
+void glCompressedTexImage2D(GLenum _target, GLint _level, GLenum _internalformat, GLsizei _width, GLsizei _height, GLint _border, GLsizei _imageSize, const GLvoid *_data);
+
+void glCompressedTexImage3D(GLenum _target, GLint _level, GLenum _internalformat, GLsizei _width, GLsizei _height, GLsizei _depth, GLint _border, GLsizei _imageSize, const GLvoid *_data);
+
+void glCompressedTexSubImage1D(GLenum _target, GLint _level, GLint _xoffset, GLsizei _width, GLenum _format, GLsizei _imageSize, const GLvoid *_data);
+
+void glCompressedTexSubImage2D(GLenum _target, GLint _level, GLint _xoffset, GLint _yoffset, GLsizei _width, GLsizei _height, GLenum _format, GLsizei _imageSize, const GLvoid *_data);
+
+void glCompressedTexSubImage3D(GLenum _target, GLint _level, GLint _xoffset, GLint _yoffset, GLint _zoffset, GLsizei _width, GLsizei _height, GLsizei _depth, GLenum _format, GLsizei _imageSize, const GLvoid *_data);
+
+void glGetCompressedTexImage(GLenum _target, GLint _level, GLvoid *_img);
+
 void glMatrixMode(GLenum mode);
 
 void glActiveTexture(GLenum texture);

@@ -21,6 +21,7 @@ pub mod gl_lighting;
 pub mod gl_pixels;
 pub mod gl_raster_state;
 pub mod gl_state;
+pub mod gl_texture;
 pub mod gl_transform;
 pub mod gl_vertex;
 /// GLX needs the X types of <GL/glx.h>: kept out of tessera.h.

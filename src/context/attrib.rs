@@ -94,6 +94,9 @@ pub struct SavedAttribs {
     pixel_mode: Option<PixelModeState>,
     polygon_stipple: Option<[u32; 32]>,
     enable: Option<Enables>,
+    /// GL_TEXTURE_BIT: the parameters of the texture objects bound to every target of every
+    /// unit (GL 2.1 table 6.20 puts texture object state in the texture group).
+    texture_objects: Vec<(u32, usize, super::texture::TexParams)>,
 }
 
 /// Clones `group` when `mask` names `bit`.
@@ -124,6 +127,7 @@ impl SavedAttribs {
             pixel_mode: saved(mask, GL_PIXEL_MODE_BIT, &state.pixel_mode),
             polygon_stipple: saved(mask, GL_POLYGON_STIPPLE_BIT, &state.polygon_stipple),
             enable: (mask & GL_ENABLE_BIT != 0).then(|| Enables::save(state)),
+            texture_objects: Vec::new(),
         }
     }
 
@@ -194,7 +198,16 @@ impl Context {
         if self.attrib_stack.len() >= MAX_ATTRIB_STACK_DEPTH {
             return self.error(GL_STACK_OVERFLOW);
         }
-        let saved = SavedAttribs::save(&mut self.state, mask);
+        let mut saved = SavedAttribs::save(&mut self.state, mask);
+        if mask & GL_TEXTURE_BIT != 0 {
+            for unit in &self.state.texture.unit_state {
+                for (t, &name) in unit.bindings.iter().enumerate() {
+                    if let Some(obj) = self.textures.get(name, t) {
+                        saved.texture_objects.push((name, t, obj.params.clone()));
+                    }
+                }
+            }
+        }
         self.attrib_stack.push(saved);
     }
 
@@ -204,7 +217,15 @@ impl Context {
             return;
         }
         match self.attrib_stack.pop() {
-            Some(saved) => saved.restore(&mut self.state),
+            Some(mut saved) => {
+                // Objects deleted since the push are gone; the others get their parameters back.
+                for (name, t, params) in std::mem::take(&mut saved.texture_objects) {
+                    if let Some(obj) = self.textures.get_mut(name, t) {
+                        obj.params = params;
+                    }
+                }
+                saved.restore(&mut self.state)
+            }
             None => self.error(GL_STACK_UNDERFLOW),
         }
     }

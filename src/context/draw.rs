@@ -85,6 +85,7 @@ impl Viewport {
             inv_w,
             color: v.color,
             secondary_color: v.secondary_color,
+            tex_coords: v.tex_coords,
             fog_coord: v.fog_coord,
         }
     }
@@ -119,12 +120,12 @@ impl Attribute {
         }
     }
 
-    /// The attribute at a line or point vertex (which carries no texture coordinates yet).
+    /// The attribute at a line or point vertex.
     fn of_line(self, v: &LineVertex) -> f32 {
         match self {
             Attribute::SecondaryColor(c) => v.secondary_color[c],
             Attribute::FogCoord => v.fog_coord,
-            Attribute::TexCoord(..) => 0.0,
+            Attribute::TexCoord(unit, c) => v.tex_coords[unit][c],
         }
     }
 }
@@ -318,10 +319,8 @@ impl Context {
         if self.state.fog.enabled {
             needed.push(Attribute::FogCoord);
         }
-        for (unit, e) in self.state.texture.units.iter().enumerate() {
-            if e.texture_1d || e.texture_2d || e.texture_3d || e.texture_cube_map {
-                needed.extend((0..4).map(|c| Attribute::TexCoord(unit, c)));
-            }
+        for (unit, _) in self.enabled_texture_units() {
+            needed.extend((0..4).map(|c| Attribute::TexCoord(unit, c)));
         }
         needed
     }
@@ -374,6 +373,10 @@ impl Context {
         if self.accuracy == Accuracy::Fast {
             fragment.dither = false;
         }
+        // Texture coordinates follow the secondary color and the fog coordinate among the
+        // varyings (`varyings_needed`).
+        let first_slot = 3 * usize::from(self.color_sum_active()) + usize::from(self.state.fog.enabled);
+        fragment.texturing = self.compile_texturing(first_slot, height as i32).map(std::sync::Arc::new);
         DrawState { fragment, clip, fill_clip, polygon_stipple }
     }
 
@@ -400,6 +403,7 @@ impl Context {
         // fixed-function vertex program computes the eye distance per vertex too. The fog
         // factor is per fragment whatever GL_FOG_HINT says: Mesa 22 draws identical images
         // under GL_NICEST and GL_FASTEST (capi fragment_ops_fog).
+        let tex_units = self.tex_coord_units();
         let fog = &self.state.fog;
         let fog_coord = |v: &Vertex, eye: Vec4| match (fog.coord_src, fog.distance_mode) {
             (GL_FOG_COORD, _) => v.fog_coord,
@@ -418,7 +422,11 @@ impl Context {
                     color: clamp4(v.color),
                     secondary_color: clamp4(v.secondary_color),
                     back_colors: [[0.0; 4]; 2],
-                    tex_coords: v.tex_coords,
+                    tex_coords: if tex_units.is_empty() {
+                        v.tex_coords
+                    } else {
+                        self.vertex_tex_coords(v, eye, &tex_units)
+                    },
                     fog_coord: if fog.enabled { fog_coord(v, eye) } else { v.fog_coord },
                     edge_flag: v.edge_flag,
                 }
@@ -954,6 +962,7 @@ fn lerp_clip(from: &ClipVertex, to: &ClipVertex, t: f32) -> ClipVertex {
         clip: mix(from.clip, to.clip),
         color: mix(from.color, to.color),
         secondary_color: mix(from.secondary_color, to.secondary_color),
+        tex_coords: std::array::from_fn(|u| mix(from.tex_coords[u], to.tex_coords[u])),
         fog_coord: from.fog_coord + t * (to.fog_coord - from.fog_coord),
         ..*from
     }
@@ -1022,6 +1031,7 @@ fn emit_dash(
             inv_w: mix(a.inv_w, b.inv_w),
             color: std::array::from_fn(|i| mix(a.color[i], b.color[i])),
             secondary_color: std::array::from_fn(|i| mix(a.secondary_color[i], b.secondary_color[i])),
+            tex_coords: std::array::from_fn(|u| std::array::from_fn(|i| mix(a.tex_coords[u][i], b.tex_coords[u][i]))),
             fog_coord: mix(a.fog_coord, b.fog_coord),
         }
     };

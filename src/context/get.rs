@@ -208,6 +208,23 @@ impl Context {
             GL_MAX_CLIP_PLANES => one(Int(MAX_CLIP_PLANES as i32)),
             GL_MAX_LIGHTS => one(Int(MAX_LIGHTS as i32)),
             GL_MAX_TEXTURE_UNITS => one(Int(MAX_TEXTURE_UNITS as i32)),
+            // Textures (`texture`).
+            GL_MAX_TEXTURE_SIZE => one(Int(super::texture::MAX_TEXTURE_SIZE as i32)),
+            GL_MAX_3D_TEXTURE_SIZE => one(Int(super::texture::MAX_3D_TEXTURE_SIZE as i32)),
+            GL_MAX_CUBE_MAP_TEXTURE_SIZE => one(Int(super::texture::MAX_CUBE_MAP_TEXTURE_SIZE as i32)),
+            GL_MAX_TEXTURE_LOD_BIAS => one(Float(super::texture::MAX_TEXTURE_LOD_BIAS)),
+            GL_NUM_COMPRESSED_TEXTURE_FORMATS => one(Int(0)),
+            GL_MAX_TEXTURE_COORDS | GL_MAX_TEXTURE_IMAGE_UNITS => one(Int(MAX_TEXTURE_UNITS as i32)),
+            GL_COMPRESSED_TEXTURE_FORMATS => Vec::new(),
+            GL_TEXTURE_BINDING_1D | GL_TEXTURE_BINDING_2D | GL_TEXTURE_BINDING_3D | GL_TEXTURE_BINDING_CUBE_MAP => {
+                let t = match pname {
+                    GL_TEXTURE_BINDING_1D => 0,
+                    GL_TEXTURE_BINDING_2D => 1,
+                    GL_TEXTURE_BINDING_3D => 2,
+                    _ => 3,
+                };
+                one(Int(s.texture.unit_state[s.texture.active_unit].bindings[t] as i32))
+            }
             GL_SUBPIXEL_BITS => one(Int(SUBPIXEL_BITS)),
             GL_ATTRIB_STACK_DEPTH => one(Int(self.attrib_stack.len() as i32)),
             GL_CLIENT_ATTRIB_STACK_DEPTH => one(Int(self.client_attrib_stack.len() as i32)),

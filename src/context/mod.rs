@@ -24,6 +24,8 @@ pub mod raster_state;
 pub mod read_pixels;
 pub mod state;
 pub mod strings;
+pub mod texture;
+pub mod texture_env;
 pub mod transform;
 pub mod vertex_input;
 #[cfg(test)]
@@ -65,6 +67,8 @@ pub struct Context {
     pub buffers: crate::vertex::buffer_objects::BufferTable,
     /// The accuracy mode of the draws (`TESSERA_ACCURACY` at creation, `tesseraSetAccuracy`).
     pub accuracy: crate::raster::accuracy::Accuracy,
+    /// The texture objects (`texture`).
+    pub textures: texture::TextureTable,
 }
 
 impl Context {
@@ -85,6 +89,7 @@ impl Context {
             vertex_input: vertex_input::VertexInput::default(),
             buffers: Default::default(),
             accuracy: crate::raster::accuracy::Accuracy::from_env(),
+            textures: texture::TextureTable::new(),
         }
     }
 

@@ -63,7 +63,7 @@ fn read_format(format: GLenum) -> Option<ReadFormat> {
     }))
 }
 
-fn client_type(ty: GLenum) -> Option<ClientType> {
+pub(super) fn client_type(ty: GLenum) -> Option<ClientType> {
     use PackedType::*;
     Some(match ty {
         GL_UNSIGNED_BYTE => ClientType::UnsignedByte,

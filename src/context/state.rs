@@ -558,11 +558,13 @@ pub struct TextureUnitEnables {
     pub gen: [bool; 4],
 }
 
-/// GL_TEXTURE_BIT (enables and the active unit, so far).
+/// GL_TEXTURE_BIT: the active unit, and per unit the enables, the bindings, the texture
+/// environment and texture coordinate generation (`context::texture_env`).
 #[derive(Clone, Debug, PartialEq, Default)]
 pub struct TextureState {
     pub active_unit: usize,
     pub units: [TextureUnitEnables; MAX_TEXTURE_UNITS],
+    pub unit_state: [super::texture_env::TextureUnitState; MAX_TEXTURE_UNITS],
 }
 
 /// GL_EVAL_BIT enables: GL_MAP1_* and GL_MAP2_* (in enum order) and GL_AUTO_NORMAL.

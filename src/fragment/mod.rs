@@ -59,6 +59,9 @@ pub struct FragmentState {
     pub color_sum: bool,
     /// GL_FOG when enabled: the fog coordinate is varying 3 with the color sum, else 0.
     pub fog: Option<fog::Fog>,
+    /// The enabled texture units (their coordinates follow the color sum and fog varyings);
+    /// `None` for an untextured draw.
+    pub texturing: Option<std::sync::Arc<crate::texture::Texturing>>,
 }
 
 impl FragmentState {
@@ -77,6 +80,7 @@ impl FragmentState {
             dither: false,
             color_sum: false,
             fog: None,
+            texturing: None,
         }
     }
 

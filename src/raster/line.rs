@@ -28,6 +28,7 @@ pub struct LineVertex {
     pub color: [f32; 4],
     /// Read for the varyings a draw needs.
     pub secondary_color: [f32; 4],
+    pub tex_coords: [[f32; 4]; crate::context::state::MAX_TEXTURE_UNITS],
     pub fog_coord: f32,
 }
 
@@ -109,7 +110,8 @@ impl LineJob {
             span_mask(n),
             |i| self.z.at(px0 + i as f32, py),
             |colors| self.shading.span_colors(px0, py, n, colors),
-            |i, out| self.varyings.at(px0 + i as f32, py, out),
+            // Planes are over y-down rows: a row above is one less.
+            |i, j, out| self.varyings.at(px0 + i as f32, py - j as f32, out),
         );
     }
 }

@@ -61,6 +61,8 @@ pub struct Scratch {
     pub colors: Vec<[f32; 4]>,
     /// One fragment's varyings (color sum and fog).
     pub varyings: Vec<f32>,
+    /// Texturing: the varyings of a fragment and of its quad's neighbours.
+    pub texture: Vec<f32>,
 }
 
 /// Where a span lies: window row `y`, columns `x0..x0 + n`, starting at pixel `row_start`
@@ -75,12 +77,15 @@ pub struct Span {
 }
 
 /// Runs the per-fragment operations on the fragments of `live` of one span, in GL order:
-/// alpha test, stencil and depth tests, then for each color target blending or the logic
-/// op, dither and the masked write. `z_at(i)` is pixel i's window depth; `colors` fills
-/// `scratch.colors` with the span's colors, or returns the one color of a flat span;
-/// `varyings(i, out)` gives pixel i's varyings, read only for the color sum and fog, which
-/// finish the colors after the tests (they change no alpha, so the alpha test may run
-/// first). Colors are computed before the tests only when the alpha test needs them.
+/// texturing, alpha test, stencil and depth tests, then for each color target blending or
+/// the logic op, dither and the masked write. `z_at(i)` is pixel i's window depth; `colors`
+/// fills `scratch.colors` with the span's colors, or returns the one color of a flat span;
+/// `varyings(dx, dy, out)` gives the varyings of the pixel `dx` columns right of the span's
+/// first and `dy` rows above it, read for texturing (which also reads the pixel's 2×2 quad
+/// neighbours), the color sum and fog. The color sum and fog finish the colors after the
+/// tests (they change no alpha, so the alpha test may run first). Colors (and texturing)
+/// are computed before the tests only when the alpha test needs them; an untextured draw
+/// does no texture work at all.
 #[inline]
 // The per-primitive inputs are separate closures so that each primitive's are inlined.
 #[allow(clippy::too_many_arguments)]
@@ -92,14 +97,15 @@ pub fn shade_span(
     mut live: u64,
     z_at: impl Fn(usize) -> f32,
     colors: impl FnOnce(&mut Vec<[f32; 4]>) -> Option<[f32; 4]>,
-    varyings: impl Fn(usize, &mut [f32]),
+    varyings: impl Fn(i32, i32, &mut [f32]),
 ) {
     let fragment = &state.fragment;
     let mut colors = Some(colors);
     let mut uniform = None;
     if let Some(alpha) = &fragment.alpha {
-        scratch.colors.clear();
-        uniform = colors.take().and_then(|c| c(&mut scratch.colors));
+        if let Some(c) = colors.take() {
+            uniform = shade_colors(fragment, &span, scratch, live, c, &varyings);
+        }
         live = match uniform {
             Some(c) if alpha.passes_one(c[3]) => live,
             Some(_) => 0,
@@ -129,8 +135,7 @@ pub fn shade_span(
         }
     }
     if let Some(c) = colors {
-        scratch.colors.clear();
-        uniform = c(&mut scratch.colors);
+        uniform = shade_colors(fragment, &span, scratch, live, c, &varyings);
     }
     if fragment.needs_varyings() {
         if let Some(color) = uniform.take() {
@@ -139,12 +144,35 @@ pub fn shade_span(
         }
         let fog_slot = usize::from(fragment.color_sum) * 3;
         scratch.varyings.resize(fog_slot + 1, 0.0);
-        fragment.sum_and_fog(&mut scratch.colors, live, &mut scratch.varyings, varyings);
+        fragment.sum_and_fog(&mut scratch.colors, live, &mut scratch.varyings, |i, out| varyings(i as i32, 0, out));
     }
     match uniform {
         Some(color) => write_span_uniform(fragment, band, &span, color, live),
         None => write_span_colors(fragment, band, &span, &scratch.colors, live),
     }
+}
+
+/// The colors of a span's fragments before the tests: the interpolated (or flat) colors,
+/// textured when the draw textures (then never uniform).
+#[inline]
+fn shade_colors(
+    fragment: &FragmentState,
+    span: &Span,
+    scratch: &mut Scratch,
+    live: u64,
+    colors: impl FnOnce(&mut Vec<[f32; 4]>) -> Option<[f32; 4]>,
+    varyings: &impl Fn(i32, i32, &mut [f32]),
+) -> Option<[f32; 4]> {
+    scratch.colors.clear();
+    let uniform = colors(&mut scratch.colors);
+    let Some(texturing) = &fragment.texturing else {
+        return uniform;
+    };
+    if let Some(color) = uniform {
+        scratch.colors.resize(span.n, color);
+    }
+    texturing.texture_span(&mut scratch.colors, live, span.x0, span.y, &mut scratch.texture, varyings);
+    None
 }
 
 /// Writes a shaded span (`colors[i]` for every bit `i` of `live`) to every color target the

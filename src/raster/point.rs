@@ -43,7 +43,7 @@ impl PointJob {
                     span_mask(n),
                     |_| self.z,
                     |_| Some(self.color),
-                    |_, out| out.iter_mut().zip(&self.varyings).for_each(|(o, &v)| *o = v),
+                    |_, _, out| out.iter_mut().zip(&self.varyings).for_each(|(o, &v)| *o = v),
                 );
                 x0 = x1;
             }

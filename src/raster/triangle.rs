@@ -273,8 +273,8 @@ impl TriangleJob {
                     }));
                     flat
                 },
-                |i, out| {
-                    let (_, q) = exact.weights(x0 + i as i32, y);
+                |i, j, out| {
+                    let (_, q) = exact.weights(x0 + i, y + j);
                     for (o, a) in out.iter_mut().zip(&exact.varyings) {
                         *o = (q[0] * a[0] + q[1] * a[1] + q[2] * a[2]) as f32;
                     }
@@ -290,7 +290,7 @@ impl TriangleJob {
             live,
             |i| self.z.at(dx0 + i as f32, dy),
             |colors| self.shading.span_colors(dx0, dy, n, colors),
-            |i, out| self.varyings.at(dx0 + i as f32, dy, out),
+            |i, j, out| self.varyings.at(dx0 + i as f32, dy + j as f32, out),
         );
     }
 }

@@ -1,0 +1,667 @@
+//! Entry points for textures: objects, images, parameters, the texture environment and
+//! texture coordinate generation. Compressed images are refused (no compressed format is
+//! supported or advertised).
+use super::types::*;
+use super::{guard, with_context};
+use crate::context::texture::{ImageArgs, Region};
+
+/// `n` elements at `ptr`, or none for NULL or a non-positive count.
+///
+/// # Safety
+/// A non-null `ptr` must point to `n` readable elements.
+unsafe fn slice<'a, T>(ptr: *const T, n: GLsizei) -> &'a [T] {
+    if ptr.is_null() || n <= 0 {
+        &[]
+    } else {
+        // SAFETY: forwarded contract: `ptr` points to `n` elements.
+        unsafe { std::slice::from_raw_parts(ptr, n as usize) }
+    }
+}
+
+/// The client bytes `span` of an image at `pixels` (NULL: none).
+///
+/// # Safety
+/// A non-null `pixels` must hold the bytes the unpack parameters place the image in.
+unsafe fn image_bytes<'a>(pixels: *const GLvoid, span: std::ops::Range<usize>) -> Option<&'a [u8]> {
+    // SAFETY: the context computed `span` from the unpack parameters as the bytes of the
+    // client image the call reads; by the command's contract the caller's image holds them.
+    (!pixels.is_null())
+        .then(|| unsafe { std::slice::from_raw_parts((pixels as *const u8).add(span.start), span.len()) })
+}
+
+/// # Safety
+/// `textures` must have room for `n` names.
+#[no_mangle]
+pub unsafe extern "C" fn glGenTextures(n: GLsizei, textures: *mut GLuint) {
+    let names = guard(None, || crate::context::current::with_current(|ctx| ctx.gen_textures(n)).flatten());
+    if let Some(names) = names {
+        if !textures.is_null() && !names.is_empty() {
+            // SAFETY: the caller provides room for `n` names, and `names` holds `n`.
+            unsafe { std::ptr::copy_nonoverlapping(names.as_ptr(), textures, names.len()) }
+        }
+    }
+}
+
+/// # Safety
+/// `textures` must point to `n` names.
+#[no_mangle]
+pub unsafe extern "C" fn glDeleteTextures(n: GLsizei, textures: *const GLuint) {
+    // SAFETY: forwarded contract.
+    let names = unsafe { slice(textures, n) };
+    with_context((), |ctx| ctx.delete_textures(n, names))
+}
+
+#[no_mangle]
+pub extern "C" fn glBindTexture(target: GLenum, texture: GLuint) {
+    with_context((), |ctx| ctx.bind_texture(target, texture))
+}
+
+#[no_mangle]
+pub extern "C" fn glIsTexture(texture: GLuint) -> GLboolean {
+    with_context(0, |ctx| ctx.is_texture(texture) as GLboolean)
+}
+
+/// # Safety
+/// `textures` and `priorities` must point to `n` elements each.
+#[no_mangle]
+pub unsafe extern "C" fn glPrioritizeTextures(n: GLsizei, textures: *const GLuint, priorities: *const GLclampf) {
+    // SAFETY: forwarded contract.
+    let (names, values) = unsafe { (slice(textures, n), slice(priorities, n)) };
+    with_context((), |ctx| ctx.prioritize_textures(n, names, values))
+}
+
+/// # Safety
+/// `textures` must point to `n` names (`residences` is not written: every texture is resident).
+#[no_mangle]
+pub unsafe extern "C" fn glAreTexturesResident(
+    n: GLsizei,
+    textures: *const GLuint,
+    residences: *mut GLboolean,
+) -> GLboolean {
+    let _ = residences;
+    // SAFETY: forwarded contract.
+    let names = unsafe { slice(textures, n) };
+    with_context(0, |ctx| ctx.are_textures_resident(n, names) as GLboolean)
+}
+
+/// # Safety
+/// A non-null `pixels` must hold the image as the unpack parameters describe it.
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn glTexImage1D(
+    target: GLenum,
+    level: GLint,
+    internalformat: GLint,
+    width: GLsizei,
+    border: GLint,
+    format: GLenum,
+    type_: GLenum,
+    pixels: *const GLvoid,
+) {
+    let a = ImageArgs { target, level, internal_format: internalformat, width, height: 1, depth: 1, border };
+    // SAFETY: forwarded contract.
+    with_context((), |ctx| ctx.tex_image(1, a, format, type_, |span| unsafe { image_bytes(pixels, span) }))
+}
+
+/// # Safety
+/// A non-null `pixels` must hold the image as the unpack parameters describe it.
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn glTexImage2D(
+    target: GLenum,
+    level: GLint,
+    internalformat: GLint,
+    width: GLsizei,
+    height: GLsizei,
+    border: GLint,
+    format: GLenum,
+    type_: GLenum,
+    pixels: *const GLvoid,
+) {
+    let a = ImageArgs { target, level, internal_format: internalformat, width, height, depth: 1, border };
+    // SAFETY: forwarded contract.
+    with_context((), |ctx| ctx.tex_image(2, a, format, type_, |span| unsafe { image_bytes(pixels, span) }))
+}
+
+/// # Safety
+/// A non-null `pixels` must hold the image as the unpack parameters describe it.
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn glTexImage3D(
+    target: GLenum,
+    level: GLint,
+    internalformat: GLint,
+    width: GLsizei,
+    height: GLsizei,
+    depth: GLsizei,
+    border: GLint,
+    format: GLenum,
+    type_: GLenum,
+    pixels: *const GLvoid,
+) {
+    let a = ImageArgs { target, level, internal_format: internalformat, width, height, depth, border };
+    // SAFETY: forwarded contract.
+    with_context((), |ctx| ctx.tex_image(3, a, format, type_, |span| unsafe { image_bytes(pixels, span) }))
+}
+
+/// # Safety
+/// A non-null `pixels` must hold the image as the unpack parameters describe it.
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn glTexSubImage1D(
+    target: GLenum,
+    level: GLint,
+    xoffset: GLint,
+    width: GLsizei,
+    format: GLenum,
+    type_: GLenum,
+    pixels: *const GLvoid,
+) {
+    let r = Region { x: xoffset, y: 0, z: 0, width, height: 1, depth: 1 };
+    // SAFETY: forwarded contract.
+    with_context((), |ctx| {
+        ctx.tex_sub_image(1, target, level, r, format, type_, |span| unsafe { image_bytes(pixels, span) })
+    })
+}
+
+/// # Safety
+/// A non-null `pixels` must hold the image as the unpack parameters describe it.
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn glTexSubImage2D(
+    target: GLenum,
+    level: GLint,
+    xoffset: GLint,
+    yoffset: GLint,
+    width: GLsizei,
+    height: GLsizei,
+    format: GLenum,
+    type_: GLenum,
+    pixels: *const GLvoid,
+) {
+    let r = Region { x: xoffset, y: yoffset, z: 0, width, height, depth: 1 };
+    // SAFETY: forwarded contract.
+    with_context((), |ctx| {
+        ctx.tex_sub_image(2, target, level, r, format, type_, |span| unsafe { image_bytes(pixels, span) })
+    })
+}
+
+/// # Safety
+/// A non-null `pixels` must hold the image as the unpack parameters describe it.
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn glTexSubImage3D(
+    target: GLenum,
+    level: GLint,
+    xoffset: GLint,
+    yoffset: GLint,
+    zoffset: GLint,
+    width: GLsizei,
+    height: GLsizei,
+    depth: GLsizei,
+    format: GLenum,
+    type_: GLenum,
+    pixels: *const GLvoid,
+) {
+    let r = Region { x: xoffset, y: yoffset, z: zoffset, width, height, depth };
+    // SAFETY: forwarded contract.
+    with_context((), |ctx| {
+        ctx.tex_sub_image(3, target, level, r, format, type_, |span| unsafe { image_bytes(pixels, span) })
+    })
+}
+
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub extern "C" fn glCopyTexImage1D(
+    target: GLenum,
+    level: GLint,
+    internalformat: GLenum,
+    x: GLint,
+    y: GLint,
+    width: GLsizei,
+    border: GLint,
+) {
+    let a = ImageArgs { target, level, internal_format: internalformat as GLint, width, height: 1, depth: 1, border };
+    with_context((), |ctx| ctx.copy_tex_image(1, a, x, y))
+}
+
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub extern "C" fn glCopyTexImage2D(
+    target: GLenum,
+    level: GLint,
+    internalformat: GLenum,
+    x: GLint,
+    y: GLint,
+    width: GLsizei,
+    height: GLsizei,
+    border: GLint,
+) {
+    let a = ImageArgs { target, level, internal_format: internalformat as GLint, width, height, depth: 1, border };
+    with_context((), |ctx| ctx.copy_tex_image(2, a, x, y))
+}
+
+#[no_mangle]
+pub extern "C" fn glCopyTexSubImage1D(
+    target: GLenum,
+    level: GLint,
+    xoffset: GLint,
+    x: GLint,
+    y: GLint,
+    width: GLsizei,
+) {
+    let r = Region { x: xoffset, y: 0, z: 0, width, height: 1, depth: 1 };
+    with_context((), |ctx| ctx.copy_tex_sub_image(1, target, level, r, x, y))
+}
+
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub extern "C" fn glCopyTexSubImage2D(
+    target: GLenum,
+    level: GLint,
+    xoffset: GLint,
+    yoffset: GLint,
+    x: GLint,
+    y: GLint,
+    width: GLsizei,
+    height: GLsizei,
+) {
+    let r = Region { x: xoffset, y: yoffset, z: 0, width, height, depth: 1 };
+    with_context((), |ctx| ctx.copy_tex_sub_image(2, target, level, r, x, y))
+}
+
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub extern "C" fn glCopyTexSubImage3D(
+    target: GLenum,
+    level: GLint,
+    xoffset: GLint,
+    yoffset: GLint,
+    zoffset: GLint,
+    x: GLint,
+    y: GLint,
+    width: GLsizei,
+    height: GLsizei,
+) {
+    let r = Region { x: xoffset, y: yoffset, z: zoffset, width, height, depth: 1 };
+    with_context((), |ctx| ctx.copy_tex_sub_image(3, target, level, r, x, y))
+}
+
+/// # Safety
+/// A non-null `pixels` must have room for the image as the pack parameters lay it out.
+#[no_mangle]
+pub unsafe extern "C" fn glGetTexImage(
+    target: GLenum,
+    level: GLint,
+    format: GLenum,
+    type_: GLenum,
+    pixels: *mut GLvoid,
+) {
+    with_context((), |ctx| {
+        ctx.get_tex_image(target, level, format, type_, |span| {
+            // SAFETY: the context computed `span` from the pack parameters as the bytes of
+            // the client image the call writes; by glGetTexImage's contract the caller's
+            // memory holds them.
+            (!pixels.is_null())
+                .then(|| unsafe { std::slice::from_raw_parts_mut((pixels as *mut u8).add(span.start), span.len()) })
+        })
+    })
+}
+
+#[no_mangle]
+pub extern "C" fn glGenerateMipmap(target: GLenum) {
+    with_context((), |ctx| ctx.generate_mipmap(target))
+}
+
+#[no_mangle]
+pub extern "C" fn glGenerateMipmapEXT(target: GLenum) {
+    glGenerateMipmap(target)
+}
+
+/// Normalized-integer form of a color value (as glGet* returns colors).
+fn color_to_int(x: f32) -> GLint {
+    (x as f64 * 2147483647.0) as GLint
+}
+
+/// # Safety
+/// `params` must have room for the values of `pname`.
+#[no_mangle]
+pub unsafe extern "C" fn glGetTexLevelParameteriv(target: GLenum, level: GLint, pname: GLenum, params: *mut GLint) {
+    if let Some(v) = with_context(None, |ctx| ctx.get_tex_level_parameter(target, level, pname)) {
+        if !params.is_null() {
+            // SAFETY: forwarded contract (one value).
+            unsafe { *params = v }
+        }
+    }
+}
+
+/// # Safety
+/// `params` must have room for the values of `pname`.
+#[no_mangle]
+pub unsafe extern "C" fn glGetTexLevelParameterfv(target: GLenum, level: GLint, pname: GLenum, params: *mut GLfloat) {
+    if let Some(v) = with_context(None, |ctx| ctx.get_tex_level_parameter(target, level, pname)) {
+        if !params.is_null() {
+            // SAFETY: forwarded contract (one value).
+            unsafe { *params = v as GLfloat }
+        }
+    }
+}
+
+#[no_mangle]
+pub extern "C" fn glTexParameterf(target: GLenum, pname: GLenum, param: GLfloat) {
+    with_context((), |ctx| ctx.tex_parameter(target, pname, &[param], false))
+}
+
+#[no_mangle]
+pub extern "C" fn glTexParameteri(target: GLenum, pname: GLenum, param: GLint) {
+    with_context((), |ctx| ctx.tex_parameter(target, pname, &[param as f32], true))
+}
+
+/// How many values a texture or environment parameter takes.
+fn count(pname: GLenum) -> GLsizei {
+    use super::enums::*;
+    if pname == GL_TEXTURE_BORDER_COLOR || pname == GL_TEXTURE_ENV_COLOR {
+        4
+    } else {
+        1
+    }
+}
+
+/// # Safety
+/// `params` must point to the values of `pname`.
+#[no_mangle]
+pub unsafe extern "C" fn glTexParameterfv(target: GLenum, pname: GLenum, params: *const GLfloat) {
+    // SAFETY: forwarded contract.
+    let v = unsafe { slice(params, count(pname)) };
+    with_context((), |ctx| ctx.tex_parameter(target, pname, v, false))
+}
+
+/// # Safety
+/// `params` must point to the values of `pname`.
+#[no_mangle]
+pub unsafe extern "C" fn glTexParameteriv(target: GLenum, pname: GLenum, params: *const GLint) {
+    // SAFETY: forwarded contract.
+    let v: Vec<f32> = unsafe { slice(params, count(pname)) }.iter().map(|&x| x as f32).collect();
+    with_context((), |ctx| ctx.tex_parameter(target, pname, &v, true))
+}
+
+/// # Safety
+/// `params` must have room for the values of `pname`.
+#[no_mangle]
+pub unsafe extern "C" fn glGetTexParameterfv(target: GLenum, pname: GLenum, params: *mut GLfloat) {
+    if let Some((v, _)) = with_context_values(|ctx| ctx.get_tex_parameter(target, pname)) {
+        // SAFETY: forwarded contract.
+        unsafe { write(params, &v, |x| x) }
+    }
+}
+
+/// # Safety
+/// `params` must have room for the values of `pname`.
+#[no_mangle]
+pub unsafe extern "C" fn glGetTexParameteriv(target: GLenum, pname: GLenum, params: *mut GLint) {
+    if let Some((v, normalized)) = with_context_values(|ctx| ctx.get_tex_parameter(target, pname)) {
+        let convert = |x: f32| if normalized { color_to_int(x) } else { x.round() as GLint };
+        // SAFETY: forwarded contract.
+        unsafe { write(params, &v, convert) }
+    }
+}
+
+fn with_context_values<T: Clone>(f: impl FnOnce(&mut crate::context::Context) -> Option<T>) -> Option<T> {
+    guard(None, || crate::context::current::with_current(f).flatten())
+}
+
+/// Writes converted `values` to `out` (nothing for NULL).
+///
+/// # Safety
+/// A non-null `out` must have room for `values.len()` elements.
+unsafe fn write<S: Copy, T>(out: *mut T, values: &[S], convert: impl Fn(S) -> T) {
+    if out.is_null() {
+        return;
+    }
+    for (i, &v) in values.iter().enumerate() {
+        // SAFETY: forwarded contract: room for every value.
+        unsafe { out.add(i).write(convert(v)) }
+    }
+}
+
+#[no_mangle]
+pub extern "C" fn glTexEnvf(target: GLenum, pname: GLenum, param: GLfloat) {
+    with_context((), |ctx| ctx.tex_env(target, pname, &[param], false))
+}
+
+#[no_mangle]
+pub extern "C" fn glTexEnvi(target: GLenum, pname: GLenum, param: GLint) {
+    with_context((), |ctx| ctx.tex_env(target, pname, &[param as f32], true))
+}
+
+/// # Safety
+/// `params` must point to the values of `pname`.
+#[no_mangle]
+pub unsafe extern "C" fn glTexEnvfv(target: GLenum, pname: GLenum, params: *const GLfloat) {
+    // SAFETY: forwarded contract.
+    let v = unsafe { slice(params, count(pname)) };
+    with_context((), |ctx| ctx.tex_env(target, pname, v, false))
+}
+
+/// # Safety
+/// `params` must point to the values of `pname`.
+#[no_mangle]
+pub unsafe extern "C" fn glTexEnviv(target: GLenum, pname: GLenum, params: *const GLint) {
+    // SAFETY: forwarded contract.
+    let v: Vec<f32> = unsafe { slice(params, count(pname)) }.iter().map(|&x| x as f32).collect();
+    with_context((), |ctx| ctx.tex_env(target, pname, &v, true))
+}
+
+/// # Safety
+/// `params` must have room for the values of `pname`.
+#[no_mangle]
+pub unsafe extern "C" fn glGetTexEnvfv(target: GLenum, pname: GLenum, params: *mut GLfloat) {
+    if let Some((v, _)) = with_context_values(|ctx| ctx.get_tex_env(target, pname)) {
+        // SAFETY: forwarded contract.
+        unsafe { write(params, &v, |x| x) }
+    }
+}
+
+/// # Safety
+/// `params` must have room for the values of `pname`.
+#[no_mangle]
+pub unsafe extern "C" fn glGetTexEnviv(target: GLenum, pname: GLenum, params: *mut GLint) {
+    if let Some((v, normalized)) = with_context_values(|ctx| ctx.get_tex_env(target, pname)) {
+        let convert = |x: f32| if normalized { color_to_int(x) } else { x.round() as GLint };
+        // SAFETY: forwarded contract.
+        unsafe { write(params, &v, convert) }
+    }
+}
+
+#[no_mangle]
+pub extern "C" fn glTexGend(coord: GLenum, pname: GLenum, param: GLdouble) {
+    with_context((), |ctx| ctx.tex_gen(coord, pname, &[param], false))
+}
+
+#[no_mangle]
+pub extern "C" fn glTexGenf(coord: GLenum, pname: GLenum, param: GLfloat) {
+    with_context((), |ctx| ctx.tex_gen(coord, pname, &[param as f64], false))
+}
+
+#[no_mangle]
+pub extern "C" fn glTexGeni(coord: GLenum, pname: GLenum, param: GLint) {
+    with_context((), |ctx| ctx.tex_gen(coord, pname, &[param as f64], false))
+}
+
+/// Values a texgen parameter takes.
+fn gen_count(pname: GLenum) -> GLsizei {
+    if pname == super::enums::GL_TEXTURE_GEN_MODE {
+        1
+    } else {
+        4
+    }
+}
+
+/// # Safety
+/// `params` must point to the values of `pname`.
+#[no_mangle]
+pub unsafe extern "C" fn glTexGendv(coord: GLenum, pname: GLenum, params: *const GLdouble) {
+    // SAFETY: forwarded contract.
+    let v = unsafe { slice(params, gen_count(pname)) };
+    with_context((), |ctx| ctx.tex_gen(coord, pname, v, true))
+}
+
+/// # Safety
+/// `params` must point to the values of `pname`.
+#[no_mangle]
+pub unsafe extern "C" fn glTexGenfv(coord: GLenum, pname: GLenum, params: *const GLfloat) {
+    // SAFETY: forwarded contract.
+    let v: Vec<f64> = unsafe { slice(params, gen_count(pname)) }.iter().map(|&x| x as f64).collect();
+    with_context((), |ctx| ctx.tex_gen(coord, pname, &v, true))
+}
+
+/// # Safety
+/// `params` must point to the values of `pname`.
+#[no_mangle]
+pub unsafe extern "C" fn glTexGeniv(coord: GLenum, pname: GLenum, params: *const GLint) {
+    // SAFETY: forwarded contract.
+    let v: Vec<f64> = unsafe { slice(params, gen_count(pname)) }.iter().map(|&x| x as f64).collect();
+    with_context((), |ctx| ctx.tex_gen(coord, pname, &v, true))
+}
+
+/// # Safety
+/// `params` must have room for the values of `pname`.
+#[no_mangle]
+pub unsafe extern "C" fn glGetTexGendv(coord: GLenum, pname: GLenum, params: *mut GLdouble) {
+    if let Some(v) = with_context_values(|ctx| ctx.get_tex_gen(coord, pname)) {
+        // SAFETY: forwarded contract.
+        unsafe { write(params, &v, |x| x) }
+    }
+}
+
+/// # Safety
+/// `params` must have room for the values of `pname`.
+#[no_mangle]
+pub unsafe extern "C" fn glGetTexGenfv(coord: GLenum, pname: GLenum, params: *mut GLfloat) {
+    if let Some(v) = with_context_values(|ctx| ctx.get_tex_gen(coord, pname)) {
+        // SAFETY: forwarded contract.
+        unsafe { write(params, &v, |x| x as GLfloat) }
+    }
+}
+
+/// # Safety
+/// `params` must have room for the values of `pname`.
+#[no_mangle]
+pub unsafe extern "C" fn glGetTexGeniv(coord: GLenum, pname: GLenum, params: *mut GLint) {
+    if let Some(v) = with_context_values(|ctx| ctx.get_tex_gen(coord, pname)) {
+        // SAFETY: forwarded contract.
+        unsafe { write(params, &v, |x| x.round() as GLint) }
+    }
+}
+
+/// Refuses a compressed image: no compressed internal format is supported.
+fn refuse_compressed() {
+    with_context((), |ctx| {
+        if ctx.check_outside_begin_end() {
+            ctx.error(super::enums::GL_INVALID_ENUM)
+        }
+    })
+}
+
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub extern "C" fn glCompressedTexImage1D(
+    _target: GLenum,
+    _level: GLint,
+    _internalformat: GLenum,
+    _width: GLsizei,
+    _border: GLint,
+    _imageSize: GLsizei,
+    _data: *const GLvoid,
+) {
+    refuse_compressed()
+}
+
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub extern "C" fn glCompressedTexImage2D(
+    _target: GLenum,
+    _level: GLint,
+    _internalformat: GLenum,
+    _width: GLsizei,
+    _height: GLsizei,
+    _border: GLint,
+    _imageSize: GLsizei,
+    _data: *const GLvoid,
+) {
+    refuse_compressed()
+}
+
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub extern "C" fn glCompressedTexImage3D(
+    _target: GLenum,
+    _level: GLint,
+    _internalformat: GLenum,
+    _width: GLsizei,
+    _height: GLsizei,
+    _depth: GLsizei,
+    _border: GLint,
+    _imageSize: GLsizei,
+    _data: *const GLvoid,
+) {
+    refuse_compressed()
+}
+
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub extern "C" fn glCompressedTexSubImage1D(
+    _target: GLenum,
+    _level: GLint,
+    _xoffset: GLint,
+    _width: GLsizei,
+    _format: GLenum,
+    _imageSize: GLsizei,
+    _data: *const GLvoid,
+) {
+    refuse_compressed()
+}
+
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub extern "C" fn glCompressedTexSubImage2D(
+    _target: GLenum,
+    _level: GLint,
+    _xoffset: GLint,
+    _yoffset: GLint,
+    _width: GLsizei,
+    _height: GLsizei,
+    _format: GLenum,
+    _imageSize: GLsizei,
+    _data: *const GLvoid,
+) {
+    refuse_compressed()
+}
+
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub extern "C" fn glCompressedTexSubImage3D(
+    _target: GLenum,
+    _level: GLint,
+    _xoffset: GLint,
+    _yoffset: GLint,
+    _zoffset: GLint,
+    _width: GLsizei,
+    _height: GLsizei,
+    _depth: GLsizei,
+    _format: GLenum,
+    _imageSize: GLsizei,
+    _data: *const GLvoid,
+) {
+    refuse_compressed()
+}
+
+/// No image is ever compressed: GL_INVALID_OPERATION.
+#[no_mangle]
+pub extern "C" fn glGetCompressedTexImage(_target: GLenum, _level: GLint, _img: *mut GLvoid) {
+    with_context((), |ctx| {
+        if ctx.check_outside_begin_end() {
+            ctx.error(super::enums::GL_INVALID_OPERATION)
+        }
+    })
+}

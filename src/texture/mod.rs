@@ -1,0 +1,324 @@
+//! Texturing: texture images as stored ([`TexImage`]), the samplers a draw compiles from
+//! texture objects ([`sampler`]), and the texture environments that combine texels with the
+//! fragment color ([`env`]).
+//!
+//! Like `fragment`, this room knows no GL enums and no context: the context validates and
+//! converts, then hands over images, compiled samplers and compiled environments.
+//!
+//! Storage is compact and chosen for sampling: every color format is kept as RGBA8 in the
+//! texture-color form of its base format (GL 2.1 table 3.20: ALPHA as (0, 0, 0, A),
+//! LUMINANCE as (L, L, L, 1), INTENSITY as (I, I, I, I), RGB with A = 1), quantized to the
+//! bits of the format Mesa 22 chooses for the internal format (GL_RGBA4 keeps 4 bits per
+//! channel, widened back to 8 by replication); depth formats are kept as f32 quantized to
+//! their 16, 24 or 32 bits. Formats of more than 8 bits per color channel are stored with 8.
+pub mod env;
+pub mod sampler;
+
+/// The base internal format of a texture image (GL 2.1 table 3.15).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum BaseFormat {
+    Alpha,
+    Luminance,
+    LuminanceAlpha,
+    Intensity,
+    Rgb,
+    Rgba,
+    Depth,
+}
+
+impl BaseFormat {
+    /// The texture color of an RGBA group (after unpacking) in this base format: the
+    /// components the format keeps, the others as table 3.20 fills them in.
+    pub fn texture_color(self, c: [f32; 4]) -> [f32; 4] {
+        match self {
+            BaseFormat::Alpha => [0.0, 0.0, 0.0, c[3]],
+            BaseFormat::Luminance => [c[0], c[0], c[0], 1.0],
+            BaseFormat::LuminanceAlpha => [c[0], c[0], c[0], c[3]],
+            BaseFormat::Intensity => [c[0]; 4],
+            BaseFormat::Rgb => [c[0], c[1], c[2], 1.0],
+            BaseFormat::Rgba | BaseFormat::Depth => c,
+        }
+    }
+}
+
+/// The texels of one image, row-major (x fastest, then y, then z), border included.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Texels {
+    Rgba8(Vec<[u8; 4]>),
+    Depth(Vec<f32>),
+}
+
+/// One mipmap level of one face: its size (border included), border width and texels.
+#[derive(Clone, Debug, PartialEq)]
+pub struct TexImage {
+    pub width: usize,
+    pub height: usize,
+    pub depth: usize,
+    pub border: usize,
+    pub base: BaseFormat,
+    pub texels: Texels,
+}
+
+/// Why an image could not be made.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct OutOfMemory;
+
+/// Rounds `value` (clamped to [0, 1]) to `bits` bits and widens it back to 8 by bit
+/// replication, as an n-bit texel reads back through an 8-bit channel.
+#[inline]
+pub fn quantize_to_u8(value: f32, bits: u32) -> u8 {
+    let v = if value > 0.0 { value.min(1.0) } else { 0.0 };
+    if bits >= 8 || bits == 0 {
+        return crate::pixel::convert::float_to_unorm(v, 8) as u8;
+    }
+    let n = crate::pixel::convert::float_to_unorm(v, bits);
+    crate::pixel::convert::unorm_to_unorm(n, bits, 8) as u8
+}
+
+/// Quantizes depth to `bits` bits (16, 24 or 32) and returns it as a float.
+#[inline]
+pub fn quantize_depth(value: f32, bits: u32) -> f32 {
+    let v = if value > 0.0 { value.min(1.0) } else { 0.0 };
+    let max = crate::pixel::convert::unorm_max(bits) as f64;
+    let q = (v as f64 * max).round() as u32;
+    crate::pixel::convert::depth_to_float(q, bits)
+}
+
+impl TexImage {
+    /// A `width` × `height` × `depth` image (border included) of zero texels.
+    pub fn new(
+        width: usize,
+        height: usize,
+        depth: usize,
+        border: usize,
+        base: BaseFormat,
+    ) -> Result<TexImage, OutOfMemory> {
+        let count = width.checked_mul(height).and_then(|n| n.checked_mul(depth)).ok_or(OutOfMemory)?;
+        let texels = if base == BaseFormat::Depth {
+            let mut v = Vec::new();
+            v.try_reserve_exact(count).map_err(|_| OutOfMemory)?;
+            v.resize(count, 0.0);
+            Texels::Depth(v)
+        } else {
+            let mut v = Vec::new();
+            v.try_reserve_exact(count).map_err(|_| OutOfMemory)?;
+            v.resize(count, base_texel(base));
+            Texels::Rgba8(v)
+        };
+        Ok(TexImage { width, height, depth, border, base, texels })
+    }
+
+    /// Index of texel (x, y, z) (border included).
+    #[inline]
+    pub fn index(&self, x: usize, y: usize, z: usize) -> usize {
+        (z * self.height + y) * self.width + x
+    }
+
+    /// The texel at (x, y, z) as RGBA floats (depth in R, G, B and A).
+    pub fn texel_f32(&self, i: usize) -> [f32; 4] {
+        match &self.texels {
+            Texels::Rgba8(t) => t[i].map(|c| c as f32 / 255.0),
+            Texels::Depth(d) => [d[i]; 4],
+        }
+    }
+}
+
+/// The stored value of a texel no data has been given for: zero in the format's channels.
+fn base_texel(base: BaseFormat) -> [u8; 4] {
+    match base {
+        BaseFormat::Luminance | BaseFormat::Rgb => [0, 0, 0, 255],
+        _ => [0; 4],
+    }
+}
+
+/// The size of mipmap level `level` of a dimension whose base size is `size` (border
+/// excluded): ⌊size / 2^level⌋, at least 1.
+pub fn level_size(size: usize, level: usize) -> usize {
+    if level >= usize::BITS as usize {
+        1
+    } else {
+        (size >> level).max(1)
+    }
+}
+
+/// The next level of a mipmap chain (GL_GENERATE_MIPMAP): each texel the average of the
+/// 2×2×2 (or fewer, for dimensions already 1) texels below it. Borders are not filtered
+/// (the new level gets none).
+pub fn downsample(src: &TexImage, dims: usize) -> Result<TexImage, OutOfMemory> {
+    let b = src.border;
+    let (w, h, d) = (src.width - 2 * b, src.height - 2 * b.min(usize::from(dims >= 2)), src.depth);
+    let h = if dims >= 2 { h } else { 1 };
+    let d = if dims >= 3 { d - 2 * b } else { 1 };
+    let (nw, nh, nd) = ((w / 2).max(1), (h / 2).max(1), (d / 2).max(1));
+    let mut out = TexImage::new(nw, nh, nd, 0, src.base)?;
+    let (fx, fy, fz) = (if w > 1 { 2 } else { 1 }, if h > 1 { 2 } else { 1 }, if d > 1 { 2 } else { 1 });
+    let by = if dims >= 2 { b } else { 0 };
+    let bz = if dims >= 3 { b } else { 0 };
+    // Halves as llvmpipe's mipmap blit samples them: bilinear at the centre of each 2×2
+    // (×2) box, each lerp an 8-bit lerp at weight 1/2 rounded (x + ⌊(y − x + 1) / 2⌋).
+    let half = |p: [f32; 4], q: [f32; 4], eight_bit: bool| -> [f32; 4] {
+        if eight_bit {
+            std::array::from_fn(|k| {
+                let (a, b) = ((p[k] * 255.0).round() as i32, (q[k] * 255.0).round() as i32);
+                (a + (((b - a) * 128 + 128) >> 8)) as f32 / 255.0
+            })
+        } else {
+            std::array::from_fn(|k| (p[k] + q[k]) * 0.5)
+        }
+    };
+    let eight_bit = matches!(src.texels, Texels::Rgba8(_));
+    for z in 0..nd {
+        for y in 0..nh {
+            for x in 0..nw {
+                let texel = |dx: usize, dy: usize, dz: usize| {
+                    src.texel_f32(src.index(
+                        x * fx + dx.min(fx - 1) + b,
+                        y * fy + dy.min(fy - 1) + by,
+                        z * fz + dz.min(fz - 1) + bz,
+                    ))
+                };
+                let row = |dy, dz| half(texel(0, dy, dz), texel(1, dy, dz), eight_bit);
+                let plane = |dz| half(row(0, dz), row(1, dz), eight_bit);
+                let v = half(plane(0), plane(1), eight_bit);
+                let o = out.index(x, y, z);
+                match &mut out.texels {
+                    Texels::Rgba8(t) => t[o] = v.map(|c| (c * 255.0).round() as u8),
+                    Texels::Depth(t) => t[o] = v[0],
+                }
+            }
+        }
+    }
+    Ok(out)
+}
+
+/// One enabled unit of a draw: its sampler (chosen once per draw), its environment and
+/// where its texture coordinates are among the draw's varyings (s, t, r, q from `slot`).
+#[derive(Clone, Debug)]
+pub struct TextureStage {
+    pub unit: usize,
+    pub sampler: sampler::Sampler,
+    pub env: env::TexEnv,
+    pub slot: usize,
+}
+
+/// The texturing of a draw: only the units that are enabled and complete, in unit order.
+#[derive(Clone, Debug)]
+pub struct Texturing {
+    pub stages: Vec<TextureStage>,
+    /// Framebuffer height: derivatives are taken per 2×2 quad of llvmpipe's y-down rows.
+    pub fb_height: i32,
+}
+
+impl PartialEq for Texturing {
+    /// Two draws texture alike only if they share the very same images.
+    fn eq(&self, other: &Self) -> bool {
+        self.fb_height == other.fb_height
+            && self.stages.len() == other.stages.len()
+            && self.stages.iter().zip(&other.stages).all(|(a, b)| {
+                a.unit == b.unit
+                    && a.slot == b.slot
+                    && a.env == b.env
+                    && a.sampler.faces.len() == b.sampler.faces.len()
+                    && a.sampler
+                        .faces
+                        .iter()
+                        .zip(&b.sampler.faces)
+                        .all(|(x, y)| x.len() == y.len() && x.iter().zip(y).all(|(p, q)| std::sync::Arc::ptr_eq(p, q)))
+            })
+    }
+}
+
+/// Most texture units a draw can use.
+pub const MAX_UNITS: usize = crate::context::state::MAX_TEXTURE_UNITS;
+
+/// The projected coordinates (s/q, t/q, r/q) of a stage from a fragment's varyings.
+#[inline]
+fn projected(v: &[f32], slot: usize) -> [f32; 3] {
+    let q = v[slot + 3];
+    let inv = if q != 0.0 { 1.0 / q } else { 0.0 };
+    [v[slot] * inv, v[slot + 1] * inv, v[slot + 2] * inv]
+}
+
+impl Texturing {
+    /// Textures the fragments of `live` of the span at window row `y`, columns `x0..`:
+    /// `colors` holds the primary colors and receives the last unit's output.
+    /// `varyings_at(dx, dy, out)` evaluates the draw's varyings at the pixel `dx` columns
+    /// right of the span's first and `dy` rows above it (the quad neighbours of a pixel
+    /// give the derivatives).
+    pub fn texture_span(
+        &self,
+        colors: &mut [[f32; 4]],
+        live: u64,
+        x0: i32,
+        y: i32,
+        scratch: &mut Vec<f32>,
+        varyings_at: impl Fn(i32, i32, &mut [f32]),
+    ) {
+        let n = self.stages.iter().map(|s| s.slot + 4).max().unwrap_or(0);
+        scratch.resize(4 * n, 0.0);
+        let (here, rest) = scratch.split_at_mut(n);
+        let (tl, rest) = rest.split_at_mut(n);
+        let (tr, bl) = rest.split_at_mut(n);
+        // Quad rows in llvmpipe's y-down numbering: the quad's top row, and the one below.
+        let y_down = self.fb_height - 1 - y;
+        let top = self.fb_height - 1 - (y_down & !1);
+        let mut quad_x = i32::MIN;
+        let mut derivatives = [([0f32; 3], [0f32; 3]); MAX_UNITS];
+        let mut texels = [[0.0, 0.0, 0.0, 1.0]; MAX_UNITS];
+        for (i, color) in colors.iter_mut().enumerate() {
+            if live & (1 << i) == 0 {
+                continue;
+            }
+            let x = x0 + i as i32;
+            let qx = x & !1;
+            if qx != quad_x {
+                quad_x = qx;
+                varyings_at(qx - x0, top - y, tl);
+                varyings_at(qx + 1 - x0, top - y, tr);
+                varyings_at(qx - x0, top - 1 - y, bl);
+                for (k, s) in self.stages.iter().enumerate() {
+                    let (a, b, c) = (projected(tl, s.slot), projected(tr, s.slot), projected(bl, s.slot));
+                    derivatives[k] = (std::array::from_fn(|j| b[j] - a[j]), std::array::from_fn(|j| c[j] - a[j]));
+                }
+            }
+            varyings_at(i as i32, 0, here);
+            for (k, s) in self.stages.iter().enumerate() {
+                let (ddx, ddy) = derivatives[k];
+                texels[s.unit] = s.sampler.sample(projected(here, s.slot), ddx, ddy);
+            }
+            let primary = *color;
+            let mut previous = primary;
+            for s in &self.stages {
+                previous = s.env.apply(s.unit, previous, primary, &texels);
+            }
+            *color = previous;
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn quantization_replicates_low_bits() {
+        assert_eq!(quantize_to_u8(1.0, 4), 255);
+        assert_eq!(quantize_to_u8(0.5, 4), 0x88);
+        assert_eq!(quantize_to_u8(0.5, 1), 0); // ties to even
+        assert_eq!(quantize_to_u8(0.75, 1), 255);
+        assert_eq!(quantize_to_u8(0.2, 8), 51);
+        assert_eq!(quantize_to_u8(-1.0, 8), 0);
+        assert_eq!(quantize_depth(0.5, 16), 32768.0 * (1.0 / 65535.0f32));
+    }
+
+    #[test]
+    fn downsampling_averages_boxes() {
+        let mut img = TexImage::new(2, 2, 1, 0, BaseFormat::Rgba).unwrap();
+        img.texels = Texels::Rgba8(vec![[0, 0, 0, 0], [255, 0, 0, 0], [0, 255, 0, 0], [255, 255, 4, 0]]);
+        let next = downsample(&img, 2).unwrap();
+        assert_eq!((next.width, next.height), (1, 1));
+        assert_eq!(next.texels, Texels::Rgba8(vec![[128, 128, 1, 0]]));
+        assert_eq!(level_size(5, 1), 2);
+        assert_eq!(level_size(5, 9), 1);
+    }
+}

@@ -1,0 +1,523 @@
+//! Sampling a texture (GL 2.1 §3.8.8-§3.8.9): a [`Sampler`] is compiled per draw from a
+//! complete texture object, its levels shared with the object (`Arc`), and answers one
+//! texture lookup at a time given the coordinates and their screen-space derivatives.
+//!
+//! Level of detail: ρ is the largest scaled derivative, `max(|∂u/∂x|, |∂v/∂x|, |∂w/∂x|,
+//! |∂u/∂y|, …)` (llvmpipe's default approximation of the spec's lengths), with derivatives
+//! taken per 2×2 quad as llvmpipe does; λ = log₂ ρ + bias, clamped to [min_lod, max_lod].
+//!
+//! Filtering of RGBA8 images uses 8-bit fixed-point weights as llvmpipe's AoS path does: the
+//! texel position is taken to 1/256 of a texel and the lerps are integer; depth images (and
+//! depth comparison) filter in float.
+use super::{BaseFormat, TexImage, Texels};
+use crate::context::state::CompareFunc;
+use std::sync::Arc;
+
+/// Dimensionality of a texture target.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Dim {
+    D1,
+    D2,
+    D3,
+    Cube,
+}
+
+impl Dim {
+    /// Coordinates that address the image (1, 2 or 3; cube maps are addressed by 2 per face).
+    pub fn coords(self) -> usize {
+        match self {
+            Dim::D1 => 1,
+            Dim::D2 | Dim::Cube => 2,
+            Dim::D3 => 3,
+        }
+    }
+}
+
+/// A wrap mode (GL_TEXTURE_WRAP_S/T/R).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Wrap {
+    Repeat,
+    Clamp,
+    ClampToEdge,
+    ClampToBorder,
+    MirroredRepeat,
+}
+
+/// A filter within one level.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Filter {
+    Nearest,
+    Linear,
+}
+
+/// What a depth texture returns: GL_DEPTH_TEXTURE_MODE.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum DepthMode {
+    Luminance,
+    Intensity,
+    Alpha,
+}
+
+/// A compiled texture lookup.
+#[derive(Clone, Debug)]
+pub struct Sampler {
+    pub dim: Dim,
+    /// `faces[face][k]`: level base + k of each face (one face unless a cube map).
+    pub faces: Vec<Vec<Arc<TexImage>>>,
+    pub wrap: [Wrap; 3],
+    pub mag: Filter,
+    pub min: Filter,
+    /// The mipmap filter of the minification filter, `None` without mipmapping.
+    pub mip: Option<Filter>,
+    /// The border color in the image's texture-color form.
+    pub border: [f32; 4],
+    /// Texture object bias plus the unit's GL_TEXTURE_LOD_BIAS (clamped).
+    pub lod_bias: f32,
+    pub min_lod: f32,
+    pub max_lod: f32,
+    /// GL_TEXTURE_COMPARE_MODE COMPARE_R_TO_TEXTURE on a depth image.
+    pub compare: Option<CompareFunc>,
+    pub depth_mode: DepthMode,
+    /// The base format of the base level (for the texture environment).
+    pub base: BaseFormat,
+}
+
+/// The texels of one lookup and their weights along one axis.
+#[derive(Clone, Copy, Debug)]
+struct Axis {
+    i0: i32,
+    i1: i32,
+    /// Weight of `i1` in 1/256 (0 for nearest).
+    w: i32,
+    /// The same weight as a float.
+    wf: f32,
+}
+
+/// The fixed-point position of a coordinate in texels: 8 fractional bits, rounded to
+/// nearest even as llvmpipe's float → int conversion does.
+#[inline]
+fn fixed(u: f32) -> i32 {
+    let v = crate::pixel::convert::round_even((u * 256.0).clamp(-1.0e9, 1.0e9));
+    v as i32
+}
+
+/// Mirrors `s` for GL_MIRRORED_REPEAT: `s − floor(s)` on even periods, `1 − (s − floor(s))`
+/// on odd ones.
+#[inline]
+fn mirror(s: f32) -> f32 {
+    let f = s.floor();
+    let frac = s - f;
+    if (f as i64).rem_euclid(2) == 0 {
+        frac
+    } else {
+        1.0 - frac
+    }
+}
+
+/// The texel indices of coordinate `s` along an axis of `size` texels (border excluded).
+/// Indices may be −1 or `size` for the border; [`Sampler`] maps them.
+#[inline]
+fn axis(s: f32, size: i32, wrap: Wrap, filter: Filter) -> Axis {
+    let sizef = size as f32;
+    let s = match wrap {
+        Wrap::Clamp => s.clamp(0.0, 1.0),
+        Wrap::MirroredRepeat => mirror(s),
+        _ => s,
+    };
+    match filter {
+        Filter::Nearest => {
+            let u = s * sizef;
+            let i = if u.is_finite() { u.floor().clamp(-1.0e9, 1.0e9) as i32 } else { 0 };
+            let i = match wrap {
+                Wrap::Repeat => i.rem_euclid(size),
+                Wrap::Clamp | Wrap::ClampToEdge | Wrap::MirroredRepeat => i.clamp(0, size - 1),
+                Wrap::ClampToBorder => i.clamp(-1, size),
+            };
+            Axis { i0: i, i1: i, w: 0, wf: 0.0 }
+        }
+        Filter::Linear => {
+            let u = if s.is_finite() { s * sizef - 0.5 } else { 0.0 };
+            let f = fixed(u);
+            let (i0, w) = (f >> 8, f & 0xff);
+            let (i0, i1) = match wrap {
+                Wrap::Repeat => (i0.rem_euclid(size), (i0 + 1).rem_euclid(size)),
+                Wrap::ClampToEdge | Wrap::MirroredRepeat => (i0.clamp(0, size - 1), (i0 + 1).clamp(0, size - 1)),
+                Wrap::Clamp | Wrap::ClampToBorder => (i0.clamp(-1, size), (i0 + 1).clamp(-1, size)),
+            };
+            Axis { i0, i1, w, wf: w as f32 / 256.0 }
+        }
+    }
+}
+
+/// log₂ x approximated as llvmpipe's `lp_build_fast_log2`: the exponent plus the mantissa
+/// minus one (exact at powers of two, linear in between).
+#[inline]
+pub fn fast_log2(x: f32) -> f32 {
+    if x.is_nan() || x <= 0.0 || !x.is_finite() {
+        return x.log2();
+    }
+    let bits = x.to_bits();
+    let exponent = ((bits >> 23) & 0xff) as i32 - 127;
+    let mantissa = f32::from_bits((bits & 0x007f_ffff) | 0x3f80_0000);
+    exponent as f32 + mantissa - 1.0
+}
+
+/// Integer lerp of 8-bit values with a weight in 1/256, rounded to nearest (llvmpipe's).
+#[inline]
+fn lerp8(a: i32, b: i32, w: i32) -> i32 {
+    a + (((b - a) * w + 128) >> 8)
+}
+
+/// Cube map face selection (GL 2.1 table 3.21): the face index (+X, −X, +Y, −Y, +Z, −Z) and
+/// the 2D coordinates on it.
+pub fn cube_face(s: f32, t: f32, r: f32) -> (usize, f32, f32, f32) {
+    let (ax, ay, az) = (s.abs(), t.abs(), r.abs());
+    let (face, sc, tc, ma) = if ax >= ay && ax >= az {
+        if s >= 0.0 {
+            (0, -r, -t, ax)
+        } else {
+            (1, r, -t, ax)
+        }
+    } else if ay >= az {
+        if t >= 0.0 {
+            (2, s, r, ay)
+        } else {
+            (3, s, -r, ay)
+        }
+    } else if r >= 0.0 {
+        (4, s, -t, az)
+    } else {
+        (5, -s, -t, az)
+    };
+    let inv = if ma > 0.0 { 0.5 / ma } else { 0.0 };
+    (face, sc * inv + 0.5, tc * inv + 0.5, ma)
+}
+
+impl Sampler {
+    /// The texture color of coordinates `c` (s, t, r already divided by q), given their
+    /// derivatives along x and y (`ddx`, `ddy`, in coordinate units per pixel).
+    pub fn sample(&self, c: [f32; 3], ddx: [f32; 3], ddy: [f32; 3]) -> [f32; 4] {
+        let (face, coords) = match self.dim {
+            Dim::Cube => {
+                let (face, s, t, _) = cube_face(c[0], c[1], c[2]);
+                (face, [s, t, c[2]])
+            }
+            _ => (0, c),
+        };
+        let levels = &self.faces[face.min(self.faces.len() - 1)];
+        let lambda = self.lambda(&levels[0], ddx, ddy, c);
+        // c: the magnification/minification switch-over point (§3.8.9).
+        let switch = if self.mag == Filter::Linear && self.mip == Some(Filter::Nearest) && self.min == Filter::Nearest {
+            0.5
+        } else {
+            0.0
+        };
+        let last = (levels.len() - 1) as f32;
+        if lambda <= switch || lambda.is_nan() {
+            return self.filter_level(&levels[0], coords, self.mag);
+        }
+        match self.mip {
+            None => self.filter_level(&levels[0], coords, self.min),
+            Some(Filter::Nearest) => {
+                let d = if lambda <= 0.5 { 0.0 } else { ((lambda + 0.5).ceil() - 1.0).min(last) };
+                self.filter_level(&levels[d as usize], coords, self.min)
+            }
+            Some(Filter::Linear) => {
+                let d1 = lambda.floor().min(last);
+                let d2 = (d1 + 1.0).min(last);
+                let frac = lambda - lambda.floor();
+                if d1 == d2 || frac == 0.0 {
+                    return self.filter_level(&levels[d1 as usize], coords, self.min);
+                }
+                let a = self.filter_level_raw(&levels[d1 as usize], coords, self.min);
+                let b = self.filter_level_raw(&levels[d2 as usize], coords, self.min);
+                match (a, b) {
+                    (Ok(a), Ok(b)) => {
+                        let w = (frac * 256.0) as i32;
+                        std::array::from_fn(|k| lerp8(a[k], b[k], w) as f32 * (1.0 / 255.0))
+                    }
+                    (Err(a), Err(b)) => std::array::from_fn(|k| a[k] + frac * (b[k] - a[k])),
+                    // Every level of a complete texture has the same format.
+                    (a, _) => a.map_or_else(|f| f, |v| v.map(|x| x as f32 / 255.0)),
+                }
+            }
+        }
+    }
+
+    /// λ: log₂ of the largest scaled derivative, biased and clamped.
+    fn lambda(&self, base: &TexImage, ddx: [f32; 3], ddy: [f32; 3], c: [f32; 3]) -> f32 {
+        let b2 = 2 * base.border;
+        let mut size = [(base.width - b2) as f32, (base.height - b2.min(base.height - 1)) as f32, 1.0];
+        let dims = self.dim.coords();
+        if self.dim == Dim::D3 {
+            size[2] = (base.depth - b2) as f32;
+        }
+        // ρ² = the larger squared length of the scaled derivative vectors along x and y.
+        let scale: [f32; 3] = if self.dim == Dim::Cube {
+            // Derivatives on the face: the major axis scales the others by 1/(2|ma|).
+            let (_, _, _, ma) = cube_face(c[0], c[1], c[2]);
+            let k = if ma > 0.0 { size[0] * 0.5 / ma } else { 0.0 };
+            [k; 3]
+        } else {
+            std::array::from_fn(|k| if k < dims { size[k] } else { 0.0 })
+        };
+        let length2 = |d: [f32; 3]| (0..3).map(|k| (d[k] * scale[k]) * (d[k] * scale[k])).sum::<f32>();
+        let rho2 = length2(ddx).max(length2(ddy));
+        // With a mipmap blend, llvmpipe takes log₂ piecewise linearly between powers of two
+        // (exponent plus mantissa − 1) of ρ², and halves it; the level choice of the other
+        // filters is exact.
+        let log2 = if self.mip == Some(Filter::Linear) { 0.5 * fast_log2(rho2) } else { 0.5 * rho2.log2() };
+        let lambda = log2 + self.lod_bias;
+        lambda.clamp(self.min_lod, self.max_lod)
+    }
+
+    /// One filtered lookup in one image.
+    fn filter_level(&self, img: &TexImage, c: [f32; 3], filter: Filter) -> [f32; 4] {
+        match self.filter_level_raw(img, c, filter) {
+            Ok(v) => v.map(|x| x as f32 / 255.0),
+            Err(f) => f,
+        }
+    }
+
+    /// One filtered lookup: 8-bit values from RGBA8 images (`Ok`), floats from depth ones.
+    #[inline]
+    fn filter_level_raw(&self, img: &TexImage, c: [f32; 3], filter: Filter) -> Result<[i32; 4], [f32; 4]> {
+        let b = img.border as i32;
+        let dims = self.dim.coords();
+        let size = [img.width as i32 - 2 * b, if dims >= 2 { img.height as i32 - 2 * b } else { 1 }, {
+            if dims >= 3 {
+                img.depth as i32 - 2 * b
+            } else {
+                1
+            }
+        }];
+        let wrap = |k: usize| if self.dim == Dim::Cube { Wrap::ClampToEdge } else { self.wrap[k] };
+        let ax = axis(c[0], size[0], wrap(0), filter);
+        let ay = if dims >= 2 { axis(c[1], size[1], wrap(1), filter) } else { Axis { i0: 0, i1: 0, w: 0, wf: 0.0 } };
+        let az = if dims >= 3 { axis(c[2], size[2], wrap(2), filter) } else { Axis { i0: 0, i1: 0, w: 0, wf: 0.0 } };
+        // Index of a texel, or None for the border color.
+        let at = |x: i32, y: i32, z: i32| -> Option<usize> {
+            let inside = |i: i32, n: i32, k: usize| k >= dims || (i >= -b && i < n + b);
+            if !(inside(x, size[0], 0) && inside(y, size[1], 1) && inside(z, size[2], 2)) {
+                return None;
+            }
+            let by = if dims >= 2 { b } else { 0 };
+            let bz = if dims >= 3 { b } else { 0 };
+            Some(img.index((x + b) as usize, (y + by) as usize, (z + bz) as usize))
+        };
+        match (&img.texels, self.compare) {
+            (Texels::Rgba8(t), _) => {
+                let border8 = self.border.map(|c| (c.clamp(0.0, 1.0) * 255.0 + 0.5) as i32);
+                // Repeat, edge clamping and mirroring keep every index inside a borderless
+                // image: no border test and no Option per texel.
+                let inside_only = b == 0 && (0..dims).all(|k| !matches!(wrap(k), Wrap::Clamp | Wrap::ClampToBorder));
+                let (w, h) = (img.width, img.height);
+                let fetch = |x: i32, y: i32, z: i32| {
+                    if inside_only {
+                        let p = t[(z as usize * h + y as usize) * w + x as usize];
+                        [p[0] as i32, p[1] as i32, p[2] as i32, p[3] as i32]
+                    } else {
+                        at(x, y, z).map_or(border8, |i| t[i].map(|c| c as i32))
+                    }
+                };
+                let row = |y, z| -> [i32; 4] {
+                    let (p, q) = (fetch(ax.i0, y, z), fetch(ax.i1, y, z));
+                    std::array::from_fn(|k| lerp8(p[k], q[k], ax.w))
+                };
+                let plane = |z| -> [i32; 4] {
+                    let (p, q) = (row(ay.i0, z), row(ay.i1, z));
+                    std::array::from_fn(|k| lerp8(p[k], q[k], ay.w))
+                };
+                let v = if filter == Filter::Nearest {
+                    fetch(ax.i0, ay.i0, az.i0)
+                } else if dims == 1 {
+                    row(0, 0)
+                } else if dims == 2 {
+                    plane(0)
+                } else {
+                    let (p, q) = (plane(az.i0), plane(az.i1));
+                    std::array::from_fn(|k| lerp8(p[k], q[k], az.w))
+                };
+                Ok(v)
+            }
+            (Texels::Depth(t), compare) => {
+                let reference = c_ref(c, self.dim);
+                let fetch = |x, y, z| -> f32 {
+                    let d = at(x, y, z).map_or(self.border[0], |i| t[i]);
+                    match compare {
+                        Some(func) => {
+                            if depth_passes(func, reference, d) {
+                                1.0
+                            } else {
+                                0.0
+                            }
+                        }
+                        None => d,
+                    }
+                };
+                let lerp = |a: f32, b: f32, w: f32| a + w * (b - a);
+                let row = |y, z| lerp(fetch(ax.i0, y, z), fetch(ax.i1, y, z), ax.wf);
+                let plane = |z| lerp(row(ay.i0, z), row(ay.i1, z), ay.wf);
+                let d = if filter == Filter::Nearest {
+                    fetch(ax.i0, ay.i0, az.i0)
+                } else if dims == 1 {
+                    row(0, 0)
+                } else if dims == 2 {
+                    plane(0)
+                } else {
+                    lerp(plane(az.i0), plane(az.i1), az.wf)
+                };
+                Err(match self.depth_mode {
+                    DepthMode::Luminance => [d, d, d, 1.0],
+                    DepthMode::Intensity => [d; 4],
+                    DepthMode::Alpha => [0.0, 0.0, 0.0, d],
+                })
+            }
+        }
+    }
+}
+
+/// The reference value of a depth comparison: r (the third coordinate) for 1D and 2D
+/// textures, clamped to [0, 1] as fixed-point depth formats require.
+fn c_ref(c: [f32; 3], _dim: Dim) -> f32 {
+    c[2].clamp(0.0, 1.0)
+}
+
+/// Whether the comparison `r func d` holds (GL_TEXTURE_COMPARE_FUNC).
+#[inline]
+pub fn depth_passes(func: CompareFunc, r: f32, d: f32) -> bool {
+    match func {
+        CompareFunc::Never => false,
+        CompareFunc::Less => r < d,
+        CompareFunc::Equal => r == d,
+        CompareFunc::LessEqual => r <= d,
+        CompareFunc::Greater => r > d,
+        CompareFunc::NotEqual => r != d,
+        CompareFunc::GreaterEqual => r >= d,
+        CompareFunc::Always => true,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn image(w: usize, h: usize, texels: Vec<[u8; 4]>) -> Arc<TexImage> {
+        Arc::new(TexImage {
+            width: w,
+            height: h,
+            depth: 1,
+            border: 0,
+            base: BaseFormat::Rgba,
+            texels: Texels::Rgba8(texels),
+        })
+    }
+
+    fn sampler(levels: Vec<Arc<TexImage>>, wrap: Wrap, filter: Filter) -> Sampler {
+        Sampler {
+            dim: Dim::D2,
+            faces: vec![levels],
+            wrap: [wrap; 3],
+            mag: filter,
+            min: filter,
+            mip: None,
+            border: [0.0, 0.0, 1.0, 1.0],
+            lod_bias: 0.0,
+            min_lod: -1000.0,
+            max_lod: 1000.0,
+            compare: None,
+            depth_mode: DepthMode::Luminance,
+            base: BaseFormat::Rgba,
+        }
+    }
+
+    const ZERO: [f32; 3] = [0.0; 3];
+
+    #[test]
+    fn wrap_modes_address_the_right_texels() {
+        let img = image(2, 1, vec![[255, 0, 0, 255], [0, 255, 0, 255]]);
+        let red = [1.0, 0.0, 0.0, 1.0];
+        let green = [0.0, 1.0, 0.0, 1.0];
+        let blue = [0.0, 0.0, 1.0, 1.0];
+        let s = |wrap, x: f32| sampler(vec![img.clone()], wrap, Filter::Nearest).sample([x, 0.5, 0.0], ZERO, ZERO);
+        assert_eq!(s(Wrap::Repeat, 1.25), red);
+        assert_eq!(s(Wrap::Repeat, -0.25), green);
+        assert_eq!(s(Wrap::ClampToEdge, 7.0), green);
+        assert_eq!(s(Wrap::ClampToBorder, 1.2), blue);
+        assert_eq!(s(Wrap::ClampToBorder, -0.01), blue);
+        assert_eq!(s(Wrap::MirroredRepeat, 1.25), green);
+        assert_eq!(s(Wrap::MirroredRepeat, 1.75), red);
+        assert_eq!(s(Wrap::Clamp, 1.5), green);
+    }
+
+    #[test]
+    fn linear_filtering_uses_8_bit_weights() {
+        let img = image(2, 1, vec![[0, 0, 0, 0], [255, 255, 255, 255]]);
+        let lin = |wrap, x: f32| sampler(vec![img.clone()], wrap, Filter::Linear).sample([x, 0.5, 0.0], ZERO, ZERO);
+        // Between the two texel centres: a quarter of the way (255 · 64 / 256 rounded).
+        assert_eq!(lin(Wrap::ClampToEdge, 0.375)[0], 64.0 / 255.0);
+        assert_eq!(lin(Wrap::ClampToEdge, 0.5)[0], 128.0 / 255.0);
+        // A weight of 1/512 texel rounds to 1/256 (half to even: 0.5 → 0, 1.5 → 2).
+        assert_eq!(lin(Wrap::ClampToEdge, 0.25 + 1.5 / 512.0)[0], 2.0 / 255.0);
+        assert_eq!(lin(Wrap::ClampToEdge, 0.25 + 0.5 / 512.0)[0], 0.0);
+        // GL_CLAMP at the edge mixes in the border color half and half.
+        assert_eq!(lin(Wrap::Clamp, 1.0), [128.0 / 255.0, 128.0 / 255.0, 1.0, 1.0]);
+        // Repeat wraps the second texel to the first.
+        assert_eq!(lin(Wrap::Repeat, 1.0)[0], 128.0 / 255.0);
+    }
+
+    #[test]
+    fn mipmap_levels_follow_lambda() {
+        let l0 = image(4, 4, vec![[255, 0, 0, 255]; 16]);
+        let l1 = image(2, 2, vec![[0, 255, 0, 255]; 4]);
+        let l2 = image(1, 1, vec![[0, 0, 255, 255]]);
+        let mut s = sampler(vec![l0, l1, l2], Wrap::Repeat, Filter::Nearest);
+        s.mip = Some(Filter::Nearest);
+        let d = |rho: f32| [rho / 4.0, 0.0, 0.0];
+        assert_eq!(s.sample([0.5; 3], d(1.0), ZERO), [1.0, 0.0, 0.0, 1.0]);
+        assert_eq!(s.sample([0.5; 3], d(2.0), ZERO), [0.0, 1.0, 0.0, 1.0]);
+        assert_eq!(s.sample([0.5; 3], d(64.0), ZERO), [0.0, 0.0, 1.0, 1.0]);
+        s.mip = Some(Filter::Linear);
+        // ρ² = 2, λ = 0.5: halfway between red and green.
+        let half = s.sample([0.5; 3], [0.25, 0.25, 0.0], ZERO);
+        assert_eq!(half, [128.0 / 255.0, 128.0 / 255.0, 0.0, 1.0]);
+        // ρ = 1.5: llvmpipe's λ is 0.5 · fast_log2(2.25) = 0.5625 (exact: 0.585), weight 144.
+        let blend = s.sample([0.5; 3], [0.375, 0.0, 0.0], ZERO);
+        assert_eq!(blend[1], (((255 * 144 + 128) >> 8) as f32) / 255.0);
+        assert_eq!(fast_log2(2.25), 1.125);
+    }
+
+    #[test]
+    fn depth_comparison_and_modes() {
+        let img = Arc::new(TexImage {
+            width: 2,
+            height: 1,
+            depth: 1,
+            border: 0,
+            base: BaseFormat::Depth,
+            texels: Texels::Depth(vec![0.25, 0.75]),
+        });
+        let mut s = sampler(vec![img], Wrap::ClampToEdge, Filter::Linear);
+        s.base = BaseFormat::Depth;
+        s.compare = Some(CompareFunc::LessEqual);
+        // r = 0.5: passes against 0.75 only; halfway between the texels gives 0.5.
+        assert_eq!(s.sample([0.5, 0.5, 0.5], ZERO, ZERO), [0.5, 0.5, 0.5, 1.0]);
+        s.depth_mode = DepthMode::Alpha;
+        assert_eq!(s.sample([0.75, 0.5, 0.5], ZERO, ZERO), [0.0, 0.0, 0.0, 1.0]);
+        s.compare = None;
+        s.depth_mode = DepthMode::Intensity;
+        assert_eq!(s.sample([0.25, 0.5, 0.0], ZERO, ZERO), [0.25; 4]);
+    }
+
+    #[test]
+    fn cube_faces_follow_the_major_axis() {
+        assert_eq!(cube_face(1.0, 0.0, 0.0).0, 0);
+        assert_eq!(cube_face(-1.0, 0.2, 0.1).0, 1);
+        assert_eq!(cube_face(0.1, 1.0, 0.2).0, 2);
+        assert_eq!(cube_face(0.1, -1.0, 0.2).0, 3);
+        assert_eq!(cube_face(0.1, 0.2, 1.0).0, 4);
+        assert_eq!(cube_face(0.1, 0.2, -1.0).0, 5);
+        let (_, s, t, _) = cube_face(1.0, -0.5, 0.5);
+        assert_eq!((s, t), (0.25, 0.75));
+    }
+}
