@@ -485,7 +485,7 @@ mod tests {
                 out.extend([[1.0, 0.0, 0.0, 1.0]; 4]);
                 None
             },
-            |_, _| {},
+            |_, _, _| {},
         );
         drop(band);
         (computed.get(), colors)
