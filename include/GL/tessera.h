@@ -6408,6 +6408,22 @@ void glFogfv(GLenum pname, const GLfloat *params);
 
 void glFogiv(GLenum pname, const GLint *params);
 
+void glNewList(GLuint list, GLenum mode);
+
+void glEndList(void);
+
+void glCallList(GLuint list);
+
+void glCallLists(GLsizei n, GLenum type_, const GLvoid *lists);
+
+void glListBase(GLuint base);
+
+GLuint glGenLists(GLsizei range);
+
+void glDeleteLists(GLuint list, GLsizei range);
+
+GLboolean glIsList(GLuint list);
+
 void glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, GLenum type_, GLvoid *pixels);
 
 void glPixelStorei(GLenum pname, GLint param);

@@ -94,6 +94,7 @@ pub struct SavedAttribs {
     pixel_mode: Option<PixelModeState>,
     polygon_stipple: Option<[u32; 32]>,
     enable: Option<Enables>,
+    list_base: Option<u32>,
 }
 
 /// Clones `group` when `mask` names `bit`.
@@ -124,6 +125,7 @@ impl SavedAttribs {
             pixel_mode: saved(mask, GL_PIXEL_MODE_BIT, &state.pixel_mode),
             polygon_stipple: saved(mask, GL_POLYGON_STIPPLE_BIT, &state.polygon_stipple),
             enable: (mask & GL_ENABLE_BIT != 0).then(|| Enables::save(state)),
+            list_base: saved(mask, GL_LIST_BIT, &state.list_base),
         }
     }
 
@@ -163,6 +165,7 @@ impl SavedAttribs {
         restore(&mut state.eval, self.eval);
         restore(&mut state.pixel_mode, self.pixel_mode);
         restore(&mut state.polygon_stipple, self.polygon_stipple);
+        restore(&mut state.list_base, self.list_base);
     }
 }
 
@@ -361,6 +364,7 @@ mod tests {
             point_sprite_coord_origin: GL_LOWER_LEFT,
         };
         t.polygon_stipple[5] = 0x1234_5678;
+        t.list_base = 77;
         let m = &mut t.multisample;
         (m.enabled, m.alpha_to_coverage, m.alpha_to_one, m.coverage) =
             (!m.enabled, !m.alpha_to_coverage, !m.alpha_to_one, !m.coverage);
@@ -433,7 +437,7 @@ mod tests {
             el.point_distance_attenuation = ol.point_distance_attenuation;
             el.point_sprite_coord_origin = ol.point_sprite_coord_origin;
         }
-        let whole: [(u32, CopyGroup); 17] = [
+        let whole: [(u32, CopyGroup); 18] = [
             (GL_CURRENT_BIT, |e, o| e.current = o.current.clone()),
             (GL_COLOR_BUFFER_BIT, |e, o| e.color = o.color.clone()),
             (GL_DEPTH_BUFFER_BIT, |e, o| e.depth = o.depth.clone()),
@@ -451,6 +455,7 @@ mod tests {
             (GL_EVAL_BIT, |e, o| e.eval = o.eval.clone()),
             (GL_PIXEL_MODE_BIT, |e, o| e.pixel_mode = o.pixel_mode.clone()),
             (GL_POLYGON_STIPPLE_BIT, |e, o| e.polygon_stipple = o.polygon_stipple),
+            (GL_LIST_BIT, |e, o| e.list_base = o.list_base),
         ];
         for (bit, copy) in whole {
             if mask & bit != 0 {
@@ -509,6 +514,7 @@ mod tests {
         assert_ne!(t.eval, o.eval);
         assert_ne!(t.pixel_mode, o.pixel_mode);
         assert_ne!(t.polygon_stipple, o.polygon_stipple);
+        assert_ne!(t.list_base, o.list_base);
         // Every field of the groups with enables outside GL_ENABLE_BIT changed too.
         let only_enables = expected_after_pop(GL_ENABLE_BIT, &o);
         assert_ne!(only_enables.transform, o.transform);

@@ -15,6 +15,7 @@ pub mod draw;
 pub mod fragment_state;
 pub mod get;
 pub mod hints;
+pub mod lists;
 pub mod matrix;
 pub mod raster_state;
 pub mod read_pixels;
@@ -59,6 +60,8 @@ pub struct Context {
     pub vertex_input: vertex_input::VertexInput,
     /// The buffer objects (one table, so that it can become shared between contexts).
     pub buffers: crate::vertex::buffer_objects::BufferTable,
+    /// Display lists: the (shareable) name space and the list being compiled.
+    pub lists: lists::ListState,
 }
 
 impl Context {
@@ -78,6 +81,7 @@ impl Context {
             bound_once: false,
             vertex_input: vertex_input::VertexInput::default(),
             buffers: Default::default(),
+            lists: Default::default(),
         }
     }
 

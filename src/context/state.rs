@@ -578,6 +578,8 @@ pub struct State {
     pub texture: TextureState,
     pub eval: EvalState,
     pub pixel_mode: PixelModeState,
+    /// GL_LIST_BIT: the offset glCallLists adds to every name (glListBase).
+    pub list_base: u32,
 }
 
 impl State {
@@ -603,6 +605,7 @@ impl State {
             texture: TextureState::default(),
             eval: EvalState::default(),
             pixel_mode: PixelModeState { read_buffer: buffer },
+            list_base: 0,
         }
     }
 }

@@ -13,6 +13,7 @@
 //! is not) are listed with the commands they concern, in the submodules.
 mod arrays;
 mod buffers;
+mod compiled;
 mod draws;
 mod immediate;
 
@@ -56,6 +57,8 @@ pub struct VertexInput {
     vertices: Vec<Vertex>,
     /// The vertices of an array draw under construction.
     batch: Vec<Vertex>,
+    /// While an array draw is compiled into a display list: the batches it delivers.
+    capture: Option<Vec<(GLenum, Vec<Vertex>)>>,
     /// Every batch handed to the geometry pipeline, for tests.
     #[cfg(test)]
     pub(crate) delivered: Vec<(GLenum, Vec<Vertex>)>,
@@ -64,6 +67,9 @@ pub struct VertexInput {
 impl Context {
     /// Hands finished vertices to the geometry pipeline.
     fn deliver(&mut self, mode: GLenum, vertices: &[Vertex]) {
+        if let Some(capture) = &mut self.vertex_input.capture {
+            return capture.push((mode, vertices.to_vec()));
+        }
         #[cfg(test)]
         self.vertex_input.delivered.push((mode, vertices.to_vec()));
         self.draw_vertices(mode, vertices);
