@@ -17,6 +17,7 @@ pub mod gl_buffer_objects;
 pub mod gl_buffers;
 pub mod gl_fragment;
 pub mod gl_lists;
+pub mod gl_pixel_rect;
 pub mod gl_pixels;
 pub mod gl_raster_state;
 pub mod gl_state;

@@ -99,7 +99,7 @@ struct LineStipple {
 
 /// A scalar vertex attribute that a draw's later stages read per fragment.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(super) enum Attribute {
+pub(crate) enum Attribute {
     /// A channel of the secondary color (GL_COLOR_SUM).
     SecondaryColor(usize),
     /// The fog coordinate (GL_FOG).
@@ -266,6 +266,37 @@ impl Context {
                 }
             }
         });
+        self.scene = Some(scene);
+    }
+
+    /// Adds a pixel rectangle to the scene under the current state; `make` builds it from the
+    /// varyings the draw's stages read (none when only color is needed).
+    pub(super) fn draw_pixel_rect(&mut self, make: impl FnOnce(&[Attribute]) -> crate::raster::pixels::PixelRectJob) {
+        let Some((width, height, color_format, depth_bits, stencil_bits)) = self.with_framebuffer(|fb| {
+            let config = fb.config();
+            (
+                fb.width(),
+                fb.height(),
+                config.color,
+                config.depth_stencil.depth_bits(),
+                config.depth_stencil.stencil_bits(),
+            )
+        }) else {
+            return;
+        };
+        let mut scene = match self.scene.take() {
+            Some(scene) if scene.size() == (width, height) => scene,
+            other => {
+                if let Some(old) = other {
+                    self.run_scene(old);
+                }
+                Scene::new(width, height)
+            }
+        };
+        let state = self.draw_state(&mut scene, width, height, color_format, depth_bits, stencil_bits);
+        let state_index = scene.add_state(state);
+        let job = make(&self.varyings_needed());
+        scene.add(state_index, job.bounds(), RasterPrimitive::Pixels(job));
         self.scene = Some(scene);
     }
 

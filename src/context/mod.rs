@@ -17,6 +17,8 @@ pub mod get;
 pub mod hints;
 pub mod lists;
 pub mod matrix;
+pub mod pixel_rect;
+pub mod raster_pos;
 pub mod raster_state;
 pub mod read_pixels;
 pub mod state;

@@ -493,6 +493,8 @@ pub struct EvalState {
 #[derive(Clone, Debug, PartialEq)]
 pub struct PixelModeState {
     pub read_buffer: GLenum,
+    /// glPixelZoom's x and y factors.
+    pub zoom: [f32; 2],
 }
 
 /// One direction of glPixelStore (GL_PACK_* or GL_UNPACK_*): client state.
@@ -540,6 +542,8 @@ pub struct CurrentState {
     pub fog_coord: f32,
     pub edge_flag: bool,
     pub index: f32,
+    /// The current raster position (glRasterPos, glWindowPos) and its attributes.
+    pub raster: crate::context::raster_pos::RasterPos,
 }
 
 impl Default for CurrentState {
@@ -552,6 +556,7 @@ impl Default for CurrentState {
             fog_coord: 0.0,
             edge_flag: true,
             index: 1.0,
+            raster: Default::default(),
         }
     }
 }
@@ -604,7 +609,7 @@ impl State {
             multisample: MultisampleState::default(),
             texture: TextureState::default(),
             eval: EvalState::default(),
-            pixel_mode: PixelModeState { read_buffer: buffer },
+            pixel_mode: PixelModeState { read_buffer: buffer, zoom: [1.0, 1.0] },
             list_base: 0,
         }
     }

@@ -14,6 +14,7 @@ pub mod color;
 pub mod convert;
 pub mod depth;
 pub mod layout;
+pub mod unpack;
 
 /// A client pixel format (the `format` of glReadPixels).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

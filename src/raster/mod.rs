@@ -11,6 +11,7 @@
 
 pub mod interpolate;
 pub mod line;
+pub mod pixels;
 pub mod point;
 pub mod triangle;
 
@@ -46,6 +47,8 @@ pub enum Primitive {
     Triangle(TriangleJob),
     Line(LineJob),
     Point(PointJob),
+    /// A pixel rectangle (glBitmap, glDrawPixels).
+    Pixels(pixels::PixelRectJob),
 }
 
 /// Per-worker storage reused across spans.
@@ -350,6 +353,7 @@ impl Scene {
                     }
                     Primitive::Line(job) => job.render(state, area, &mut band, &mut scratch),
                     Primitive::Point(job) => job.render(state, area, &mut band, &mut scratch),
+                    Primitive::Pixels(job) => job.render(state, area, &mut band, &mut scratch),
                 }
             }
         }

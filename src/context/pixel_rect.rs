@@ -1,0 +1,249 @@
+//! Pixel rectangles: glBitmap and glDrawPixels (GL 2.1 sections 3.6.4 and 3.7).
+//!
+//! The client image is read when the command is issued (also when it is compiled into a
+//! display list, with the unpack modes of that moment) into owned values: bits for
+//! glBitmap, RGBA colors or window depths for glDrawPixels. Executing the command places
+//! the image at the current raster position, scaled by the pixel zoom, as one
+//! [`PixelRectJob`] of the deferred scene, so its fragments take the same per-fragment path
+//! as primitives, in submission order. Nothing is drawn while the raster position is invalid.
+//!
+//! Not yet implemented: glDrawPixels of GL_STENCIL_INDEX, GL_DEPTH_STENCIL and GL_COLOR_INDEX
+//! (validated, then nothing is drawn), glPixelTransfer and glPixelMap (identity transfer).
+use super::draw::Attribute;
+use super::read_pixels::{check_format_and_type, read_format, ReadFormat};
+use super::Context;
+use crate::api::enums::*;
+use crate::api::types::GLenum;
+use crate::pixel::layout::ImageLayout;
+use crate::pixel::unpack::{unpack_components, unpack_rgba};
+use crate::pixel::{ClientFormat, ClientType, PackModes};
+use crate::raster::pixels::{PixelRectJob, PixelSource};
+use std::ops::Range;
+use std::sync::Arc;
+
+/// Mesa nudges the raster position by this much before flooring it for glBitmap, so that
+/// positions a rounding error below an integer land on it.
+const BITMAP_EPSILON: f32 = 0.0001;
+
+/// A glDrawPixels image read from client memory.
+#[derive(Clone, Debug)]
+pub enum DrawImage {
+    Colors(Arc<Vec<[f32; 4]>>),
+    Depths(Arc<Vec<f32>>),
+    /// Formats read but not drawn yet (stencil, depth-stencil, color index).
+    Unsupported,
+}
+
+/// A glDrawPixels command's image and the buffer it needs.
+#[derive(Clone, Debug)]
+pub struct DrawPixelsData {
+    image: DrawImage,
+    format: ClientFormat,
+}
+
+impl Context {
+    /// The bits of a `width` × `height` bitmap under the unpack modes (`Ok(None)`: NULL or
+    /// an empty bitmap); `source` maps the byte span the bitmap occupies to the caller's bytes.
+    pub fn unpack_bitmap<'a>(
+        &self,
+        width: i32,
+        height: i32,
+        source: impl FnOnce(Range<usize>) -> Option<&'a [u8]>,
+    ) -> Result<Option<Arc<Vec<bool>>>, GLenum> {
+        if width < 0 || height < 0 {
+            return Err(GL_INVALID_VALUE);
+        }
+        let (w, h) = (width as usize, height as usize);
+        if w == 0 || h == 0 {
+            return Ok(None);
+        }
+        let modes = PackModes::from(&self.pixel_store.unpack);
+        let layout =
+            ImageLayout::new(ClientFormat::StencilIndex, ClientType::Bitmap, &modes, w).ok_or(GL_INVALID_VALUE)?;
+        let span = layout.span(0..w, 0..h).ok_or(GL_INVALID_VALUE)?;
+        let start = span.start;
+        let Some(client) = source(span) else {
+            return Ok(None);
+        };
+        let mut bits = Vec::new();
+        bits.try_reserve_exact(w * h).map_err(|_| GL_OUT_OF_MEMORY)?;
+        for row in 0..h {
+            let row_offset = layout.row_offset(row).ok_or(GL_INVALID_VALUE)?;
+            for col in 0..w {
+                let bit = layout.bit_index(col);
+                let byte = client.get(row_offset + bit / 8 - start).copied().unwrap_or(0);
+                let mask = if modes.lsb_first { 1 << (bit % 8) } else { 0x80 >> (bit % 8) };
+                bits.push(byte & mask != 0);
+            }
+        }
+        Ok(Some(Arc::new(bits)))
+    }
+
+    /// glBitmap with its bits already read.
+    #[allow(clippy::too_many_arguments)]
+    pub fn bitmap(
+        &mut self,
+        width: i32,
+        height: i32,
+        origin: [f32; 2],
+        advance: [f32; 2],
+        bits: &Result<Option<Arc<Vec<bool>>>, GLenum>,
+    ) {
+        if !self.check_outside_begin_end() {
+            return;
+        }
+        let bits = match bits {
+            Ok(bits) => bits,
+            Err(error) => return self.error(*error),
+        };
+        if !self.state.current.raster.valid {
+            return;
+        }
+        let raster = self.state.current.raster;
+        if let Some(bits) = bits {
+            let x = (raster.window[0] + BITMAP_EPSILON - origin[0]).floor() as f64;
+            let y = (raster.window[1] + BITMAP_EPSILON - origin[1]).floor() as f64;
+            let source = PixelSource::Bitmap { bits: bits.clone(), color: raster.color };
+            self.draw_image([x, y], [1.0, 1.0], width as usize, height as usize, source);
+        }
+        let window = &mut self.state.current.raster.window;
+        window[0] += advance[0];
+        window[1] += advance[1];
+    }
+
+    /// Adds an image at window position `origin` to the scene.
+    fn draw_image(&mut self, origin: [f64; 2], zoom: [f64; 2], width: usize, height: usize, source: PixelSource) {
+        let raster = self.state.current.raster;
+        self.draw_pixel_rect(|needed| PixelRectJob {
+            rect: PixelRectJob::window_rect(origin, zoom, width, height),
+            origin,
+            zoom,
+            width,
+            height,
+            z: raster.window[2],
+            varyings: needed
+                .iter()
+                .map(|a| match *a {
+                    Attribute::SecondaryColor(c) => raster.secondary_color[c],
+                    Attribute::FogCoord => raster.distance,
+                    Attribute::TexCoord(unit, c) => raster.tex_coords[unit][c],
+                })
+                .collect(),
+            source,
+        });
+    }
+
+    /// Reads glDrawPixels' image under the unpack modes, with the argument errors that do
+    /// not depend on the framebuffer.
+    pub fn unpack_draw_pixels<'a>(
+        &self,
+        width: i32,
+        height: i32,
+        format: GLenum,
+        ty: GLenum,
+        source: impl FnOnce(Range<usize>) -> Option<&'a [u8]>,
+    ) -> Result<Option<DrawPixelsData>, GLenum> {
+        if width < 0 || height < 0 {
+            return Err(GL_INVALID_VALUE);
+        }
+        let read = read_format(format).ok_or(GL_INVALID_ENUM)?;
+        let client_type = check_format_and_type(read, ty)?;
+        let ReadFormat::Client(format) = read else {
+            return Ok(Some(DrawPixelsData { image: DrawImage::Unsupported, format: ClientFormat::Rgba }));
+        };
+        let (w, h) = (width as usize, height as usize);
+        if w == 0 || h == 0 {
+            return Ok(None);
+        }
+        let unsupported = Ok(Some(DrawPixelsData { image: DrawImage::Unsupported, format }));
+        if matches!(format, ClientFormat::StencilIndex | ClientFormat::DepthStencil) {
+            return unsupported;
+        }
+        let modes = PackModes::from(&self.pixel_store.unpack);
+        let layout = ImageLayout::new(format, client_type, &modes, w).ok_or(GL_INVALID_VALUE)?;
+        let span = layout.span(0..w, 0..h).ok_or(GL_INVALID_VALUE)?;
+        let start = span.start;
+        let Some(client) = source(span) else {
+            return Ok(None);
+        };
+        let pixel_bytes = layout.pixel_bytes();
+        let pixel = |col: usize, row: usize| -> Option<&[u8]> {
+            let at = layout.pixel_offset(col, row)? - start;
+            client.get(at..at + pixel_bytes)
+        };
+        let count = w.checked_mul(h).ok_or(GL_OUT_OF_MEMORY)?;
+        let image = if format == ClientFormat::DepthComponent {
+            let mut depths = Vec::new();
+            depths.try_reserve_exact(count).map_err(|_| GL_OUT_OF_MEMORY)?;
+            for row in 0..h {
+                for col in 0..w {
+                    let mut d = [0.0f32];
+                    if let Some(bytes) = pixel(col, row) {
+                        unpack_components(bytes, format, client_type, modes.swap_bytes, &mut d);
+                    }
+                    // Clamped to [0, 1]; mapped onto the depth range at execution.
+                    depths.push(d[0].clamp(0.0, 1.0));
+                }
+            }
+            DrawImage::Depths(Arc::new(depths))
+        } else {
+            let mut colors = Vec::new();
+            colors.try_reserve_exact(count).map_err(|_| GL_OUT_OF_MEMORY)?;
+            for row in 0..h {
+                for col in 0..w {
+                    let rgba = pixel(col, row)
+                        .map(|bytes| unpack_rgba(bytes, format, client_type, modes.swap_bytes))
+                        .unwrap_or([0.0, 0.0, 0.0, 1.0]);
+                    colors.push(rgba);
+                }
+            }
+            DrawImage::Colors(Arc::new(colors))
+        };
+        Ok(Some(DrawPixelsData { image, format }))
+    }
+
+    /// glDrawPixels with its image already read.
+    pub fn draw_pixels(&mut self, width: i32, height: i32, data: &Result<Option<DrawPixelsData>, GLenum>) {
+        if !self.check_outside_begin_end() {
+            return;
+        }
+        let data = match data {
+            Ok(Some(data)) => data,
+            Ok(None) => return,
+            Err(error) => return self.error(*error),
+        };
+        let depth_stencil = self.config.visual.depth_stencil;
+        let missing = match data.format {
+            ClientFormat::DepthComponent => depth_stencil.depth_bits() == 0,
+            ClientFormat::StencilIndex => depth_stencil.stencil_bits() == 0,
+            ClientFormat::DepthStencil => depth_stencil.depth_bits() == 0 || depth_stencil.stencil_bits() == 0,
+            _ => false,
+        };
+        if missing {
+            return self.error(GL_INVALID_OPERATION);
+        }
+        let raster = self.state.current.raster;
+        if !raster.valid {
+            return;
+        }
+        let clamp = !self.config.visual.color.is_float();
+        let source = match &data.image {
+            DrawImage::Colors(colors) if clamp => {
+                PixelSource::Colors(Arc::new(colors.iter().map(|c| c.map(|x| x.clamp(0.0, 1.0))).collect()))
+            }
+            DrawImage::Colors(colors) => PixelSource::Colors(colors.clone()),
+            DrawImage::Depths(depths) => {
+                let [near, far] = self.state.viewport.depth_range.map(|d| d as f32);
+                let mapped = depths.iter().map(|&d| near + d * (far - near)).collect();
+                PixelSource::Depths { depths: Arc::new(mapped), color: raster.color }
+            }
+            DrawImage::Unsupported => return,
+        };
+        // The raster position rounded to the nearest pixel corner, as Mesa (and SGI's
+        // implementation) do; the specification leaves the sampling of a fractional position open.
+        let origin = raster.window.map(|c| (c as f64 + 0.5).floor());
+        let origin = [origin[0], origin[1]];
+        let zoom = self.state.pixel_mode.zoom.map(|z| z as f64);
+        self.draw_image(origin, zoom, width as usize, height as usize, source);
+    }
+}
