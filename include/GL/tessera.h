@@ -6574,6 +6574,8 @@ void glDrawPixels(GLsizei width, GLsizei height, GLenum format, GLenum type_, co
 
 void glPixelZoom(GLfloat xfactor, GLfloat yfactor);
 
+void glCopyPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum type_);
+
 void glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, GLenum type_, GLvoid *pixels);
 
 void glPixelStorei(GLenum pname, GLint param);

@@ -1,5 +1,5 @@
 //! Entry points of the raster position and pixel rectangles: glRasterPos*, glWindowPos*,
-//! glBitmap, glDrawPixels, glPixelZoom. All are compiled into display lists; glBitmap and
+//! glBitmap, glDrawPixels, glCopyPixels, glPixelZoom. All are compiled into display lists; glBitmap and
 //! glDrawPixels read their image (under the unpack modes) when issued.
 use super::types::*;
 use super::{record_or_run, with_context};
@@ -578,4 +578,9 @@ pub unsafe extern "C" fn glDrawPixels(
 #[no_mangle]
 pub extern "C" fn glPixelZoom(xfactor: GLfloat, yfactor: GLfloat) {
     record_or_run(move |ctx| ctx.pixel_zoom(xfactor, yfactor))
+}
+
+#[no_mangle]
+pub extern "C" fn glCopyPixels(x: GLint, y: GLint, width: GLsizei, height: GLsizei, type_: GLenum) {
+    record_or_run(move |ctx| ctx.copy_pixels(x, y, width, height, type_))
 }

@@ -7,8 +7,12 @@
 //! [`PixelRectJob`] of the deferred scene, so its fragments take the same per-fragment path
 //! as primitives, in submission order. Nothing is drawn while the raster position is invalid.
 //!
-//! Not yet implemented: glDrawPixels of GL_STENCIL_INDEX, GL_DEPTH_STENCIL and GL_COLOR_INDEX
-//! (validated, then nothing is drawn), glPixelTransfer and glPixelMap (identity transfer).
+//! glCopyPixels reads the source rectangle at execution (after flushing the scene) and
+//! draws it as glDrawPixels would. Stencil indices are written to the stencil buffer
+//! under the stencil write mask; only the scissor box limits them.
+//!
+//! Not yet implemented: glDrawPixels of GL_DEPTH_STENCIL and GL_COLOR_INDEX (validated, then
+//! nothing is drawn), glPixelTransfer and glPixelMap (identity transfer).
 use super::draw::Attribute;
 use super::read_pixels::{check_format_and_type, read_format, ReadFormat};
 use super::Context;
@@ -30,7 +34,8 @@ const BITMAP_EPSILON: f32 = 0.0001;
 pub enum DrawImage {
     Colors(Arc<Vec<[f32; 4]>>),
     Depths(Arc<Vec<f32>>),
-    /// Formats read but not drawn yet (stencil, depth-stencil, color index).
+    Stencil(Arc<Vec<u8>>),
+    /// Formats read but not drawn yet (depth-stencil, color index).
     Unsupported,
 }
 
@@ -39,6 +44,27 @@ pub enum DrawImage {
 pub struct DrawPixelsData {
     image: DrawImage,
     format: ClientFormat,
+}
+
+/// A stencil index of an integer or float type, kept to the stencil buffer's 8 bits.
+fn stencil_index(bytes: &[u8], ty: ClientType, swap: bool) -> u8 {
+    let size = ty.element_bytes();
+    let mut raw = [0u8; 4];
+    raw[..size].copy_from_slice(&bytes[..size]);
+    if swap {
+        raw[..size].reverse();
+    }
+    let value: i64 = match ty {
+        ClientType::UnsignedByte => raw[0] as i64,
+        ClientType::Byte => raw[0] as i8 as i64,
+        ClientType::UnsignedShort => u16::from_ne_bytes([raw[0], raw[1]]) as i64,
+        ClientType::Short => i16::from_ne_bytes([raw[0], raw[1]]) as i64,
+        ClientType::UnsignedInt => u32::from_ne_bytes(raw) as i64,
+        ClientType::Int => i32::from_ne_bytes(raw) as i64,
+        ClientType::Float => f32::from_ne_bytes(raw) as i64,
+        _ => 0,
+    };
+    value as u8
 }
 
 impl Context {
@@ -156,7 +182,7 @@ impl Context {
             return Ok(None);
         }
         let unsupported = Ok(Some(DrawPixelsData { image: DrawImage::Unsupported, format }));
-        if matches!(format, ClientFormat::StencilIndex | ClientFormat::DepthStencil) {
+        if format == ClientFormat::DepthStencil {
             return unsupported;
         }
         let modes = PackModes::from(&self.pixel_store.unpack);
@@ -172,7 +198,25 @@ impl Context {
             client.get(at..at + pixel_bytes)
         };
         let count = w.checked_mul(h).ok_or(GL_OUT_OF_MEMORY)?;
-        let image = if format == ClientFormat::DepthComponent {
+        let image = if format == ClientFormat::StencilIndex {
+            let mut values = Vec::new();
+            values.try_reserve_exact(count).map_err(|_| GL_OUT_OF_MEMORY)?;
+            for row in 0..h {
+                for col in 0..w {
+                    let value = if client_type == ClientType::Bitmap {
+                        let at = layout.pixel_offset(col, row).map(|o| o - start);
+                        let byte = at.and_then(|o| client.get(o)).copied().unwrap_or(0);
+                        let bit = layout.bit_index(col);
+                        let mask = if modes.lsb_first { 1 << (bit % 8) } else { 0x80 >> (bit % 8) };
+                        (byte & mask != 0) as u8
+                    } else {
+                        pixel(col, row).map_or(0, |bytes| stencil_index(bytes, client_type, modes.swap_bytes))
+                    };
+                    values.push(value);
+                }
+            }
+            DrawImage::Stencil(Arc::new(values))
+        } else if format == ClientFormat::DepthComponent {
             let mut depths = Vec::new();
             depths.try_reserve_exact(count).map_err(|_| GL_OUT_OF_MEMORY)?;
             for row in 0..h {
@@ -181,7 +225,7 @@ impl Context {
                     if let Some(bytes) = pixel(col, row) {
                         unpack_components(bytes, format, client_type, modes.swap_bytes, &mut d);
                     }
-                    // Clamped to [0, 1]; mapped onto the depth range at execution.
+                    // Clamped to [0, 1].
                     depths.push(d[0].clamp(0.0, 1.0));
                 }
             }
@@ -232,10 +276,11 @@ impl Context {
                 PixelSource::Colors(Arc::new(colors.iter().map(|c| c.map(|x| x.clamp(0.0, 1.0))).collect()))
             }
             DrawImage::Colors(colors) => PixelSource::Colors(colors.clone()),
-            DrawImage::Depths(depths) => {
-                let [near, far] = self.state.viewport.depth_range.map(|d| d as f32);
-                let mapped = depths.iter().map(|&d| near + d * (far - near)).collect();
-                PixelSource::Depths { depths: Arc::new(mapped), color: raster.color }
+            // Depth components become window depths as they are (no depth range mapping).
+            DrawImage::Depths(depths) => PixelSource::Depths { depths: depths.clone(), color: raster.color },
+            DrawImage::Stencil(values) => {
+                let write_mask = self.state.stencil.front.write_mask as u8;
+                PixelSource::Stencil { values: values.clone(), write_mask }
             }
             DrawImage::Unsupported => return,
         };
@@ -245,5 +290,54 @@ impl Context {
         let origin = [origin[0], origin[1]];
         let zoom = self.state.pixel_mode.zoom.map(|z| z as f64);
         self.draw_image(origin, zoom, width as usize, height as usize, source);
+    }
+}
+
+impl Context {
+    /// glCopyPixels: the rectangle at (x, y) of the read buffer (GL_COLOR), the depth buffer
+    /// (GL_DEPTH) or the stencil buffer (GL_STENCIL) drawn at the raster position.
+    pub fn copy_pixels(&mut self, x: i32, y: i32, width: i32, height: i32, ty: GLenum) {
+        if !self.check_outside_begin_end() {
+            return;
+        }
+        if width < 0 || height < 0 {
+            return self.error(GL_INVALID_VALUE);
+        }
+        let ds = self.config.visual.depth_stencil;
+        let (format, pixel_bytes) = match ty {
+            GL_COLOR => (GL_RGBA, 16),
+            GL_DEPTH if ds.depth_bits() > 0 => (GL_DEPTH_COMPONENT, 4),
+            GL_STENCIL if ds.stencil_bits() > 0 => (GL_STENCIL_INDEX, 4),
+            GL_DEPTH | GL_STENCIL => return self.error(GL_INVALID_OPERATION),
+            _ => return self.error(GL_INVALID_ENUM),
+        };
+        if !self.state.current.raster.valid || width == 0 || height == 0 {
+            return;
+        }
+        let Some(len) = (width as usize).checked_mul(height as usize).and_then(|n| n.checked_mul(pixel_bytes)) else {
+            return self.error(GL_OUT_OF_MEMORY);
+        };
+        let mut bytes = Vec::new();
+        if bytes.try_reserve_exact(len).is_err() {
+            return self.error(GL_OUT_OF_MEMORY);
+        }
+        bytes.resize(len, 0);
+        // Read as glReadPixels with tightly packed floats (integers for stencil), then
+        // unpacked as glDrawPixels with the same layout.
+        let tight = crate::context::state::PixelStoreModes { alignment: 1, ..Default::default() };
+        let saved = std::mem::replace(&mut self.pixel_store.pack, tight);
+        let read_type = if ty == GL_STENCIL { GL_UNSIGNED_INT } else { GL_FLOAT };
+        let earlier = self.take_error();
+        self.read_pixels(x, y, width, height, format, read_type, |span| bytes.get_mut(span));
+        let read_error = self.take_error();
+        self.error(earlier);
+        self.pixel_store.pack = saved;
+        if read_error != GL_NO_ERROR {
+            return self.error(read_error);
+        }
+        let saved = std::mem::replace(&mut self.pixel_store.unpack, tight);
+        let data = self.unpack_draw_pixels(width, height, format, read_type, |span| bytes.get(span));
+        self.pixel_store.unpack = saved;
+        self.draw_pixels(width, height, &data);
     }
 }

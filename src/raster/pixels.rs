@@ -8,6 +8,7 @@
 //! zooms (the image then extends left of or below the raster position).
 use super::{shade_span, Band, DrawState, Scratch, Span};
 use crate::fragment::MAX_SPAN;
+use crate::framebuffer::band::DepthBand;
 use crate::framebuffer::Rect;
 use std::sync::Arc;
 
@@ -20,6 +21,9 @@ pub enum PixelSource {
     Colors(Arc<Vec<[f32; 4]>>),
     /// glDrawPixels of depths: one window depth per image pixel, fragments of `color`.
     Depths { depths: Arc<Vec<f32>>, color: [f32; 4] },
+    /// glDrawPixels of stencil indices: written straight to the stencil buffer under
+    /// `write_mask` (only the scissor box limits them; no fragment tests apply).
+    Stencil { values: Arc<Vec<u8>>, write_mask: u8 },
 }
 
 /// A pixel rectangle ready for rasterization.
@@ -88,11 +92,14 @@ impl PixelRectJob {
                     *column = row * self.width + col;
                     let on = match &self.source {
                         PixelSource::Bitmap { bits, .. } => bits[*column],
-                        PixelSource::Colors(_) | PixelSource::Depths { .. } => true,
+                        _ => true,
                     };
                     live |= (on as u64) << k;
                 }
-                if live != 0 {
+                if let PixelSource::Stencil { values, write_mask } = &self.source {
+                    let row_start = (y - band.y0) as usize * band.width + x0 as usize;
+                    write_stencil(band, row_start, &columns[..n], live, values, *write_mask);
+                } else if live != 0 {
                     let row_start = (y - band.y0) as usize * band.width + x0 as usize;
                     let span = Span { y, x0, n, row_start, front_facing: true };
                     let columns = &columns;
@@ -108,6 +115,7 @@ impl PixelRectJob {
                         },
                         |out| match &self.source {
                             PixelSource::Bitmap { color, .. } | PixelSource::Depths { color, .. } => Some(*color),
+                            PixelSource::Stencil { .. } => None,
                             PixelSource::Colors(colors) => {
                                 out.extend(
                                     (0..n).map(|k| if live >> k & 1 != 0 { colors[columns[k]] } else { [0.0; 4] }),
@@ -120,6 +128,29 @@ impl PixelRectJob {
                 }
                 x0 = x1;
             }
+        }
+    }
+}
+
+/// Writes `values[columns[k]]` to the stencil of pixel `row_start + k` for each live `k`.
+fn write_stencil(band: &mut Band<'_>, row_start: usize, columns: &[usize], live: u64, values: &[u8], write_mask: u8) {
+    let mask = write_mask as u32;
+    for (k, &column) in columns.iter().enumerate() {
+        if live >> k & 1 == 0 {
+            continue;
+        }
+        let v = values[column] as u32;
+        match &mut band.depth {
+            DepthBand::Packed24(px) => {
+                let old = px[row_start + k];
+                let stencil = ((old >> 24) & !mask) | (v & mask);
+                px[row_start + k] = (old & 0x00ff_ffff) | stencil << 24;
+            }
+            DepthBand::Depth32(_, Some(s)) => {
+                let old = s[row_start + k] as u32;
+                s[row_start + k] = ((old & !mask) | (v & mask)) as u8;
+            }
+            _ => return,
         }
     }
 }
