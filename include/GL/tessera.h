@@ -6582,6 +6582,38 @@ void glPixelStorei(GLenum pname, GLint param);
 
 void glPixelStoref(GLenum pname, GLfloat param);
 
+void glGenQueries(GLsizei n, GLuint *ids);
+
+void glDeleteQueries(GLsizei n, const GLuint *ids);
+
+GLboolean glIsQuery(GLuint id);
+
+void glBeginQuery(GLenum target, GLuint id);
+
+void glEndQuery(GLenum target);
+
+void glGetQueryiv(GLenum target, GLenum pname, GLint *params);
+
+void glGetQueryObjectiv(GLuint id, GLenum pname, GLint *params);
+
+void glGetQueryObjectuiv(GLuint id, GLenum pname, GLuint *params);
+
+void glGenQueriesARB(GLsizei n, GLuint *ids);
+
+void glDeleteQueriesARB(GLsizei n, const GLuint *ids);
+
+GLboolean glIsQueryARB(GLuint id);
+
+void glBeginQueryARB(GLenum target, GLuint id);
+
+void glEndQueryARB(GLenum target);
+
+void glGetQueryivARB(GLenum target, GLenum pname, GLint *params);
+
+void glGetQueryObjectivARB(GLuint id, GLenum pname, GLint *params);
+
+void glGetQueryObjectuivARB(GLuint id, GLenum pname, GLuint *params);
+
 void glShadeModel(GLenum mode);
 
 void glProvokingVertex(GLenum mode);

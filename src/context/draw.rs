@@ -374,7 +374,8 @@ impl Context {
         let polygon_stipple = self.state.polygon.stipple.then_some(self.state.polygon_stipple);
         let mut fragment = FragmentState::plain(depth, color_masks, clamp_float);
         self.compile_fragment_ops(&mut fragment, &buffer_of, color_format, stencil_bits);
-        DrawState { fragment, clip, fill_clip, polygon_stipple }
+        let samples_passed = self.queries.active_counter();
+        DrawState { fragment, clip, fill_clip, polygon_stipple, samples_passed }
     }
 
     /// GL_LINE_STIPPLE's state at the start of a draw, when enabled.

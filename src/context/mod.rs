@@ -18,6 +18,7 @@ pub mod hints;
 pub mod lists;
 pub mod matrix;
 pub mod pixel_rect;
+pub mod queries;
 pub mod raster_pos;
 pub mod raster_state;
 pub mod read_pixels;
@@ -64,6 +65,8 @@ pub struct Context {
     pub buffers: crate::vertex::buffer_objects::BufferTable,
     /// Display lists: the (shareable) name space and the list being compiled.
     pub lists: lists::ListState,
+    /// Occlusion queries.
+    pub queries: queries::QueryState,
 }
 
 impl Context {
@@ -84,6 +87,7 @@ impl Context {
             vertex_input: vertex_input::VertexInput::default(),
             buffers: Default::default(),
             lists: Default::default(),
+            queries: Default::default(),
         }
     }
 

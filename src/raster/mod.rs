@@ -21,6 +21,7 @@ use crate::framebuffer::band::Band;
 use crate::framebuffer::{ColorSlot, Framebuffer, Rect};
 use line::LineJob;
 use point::PointJob;
+use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::{Arc, Mutex, OnceLock};
 use triangle::TriangleJob;
 
@@ -40,6 +41,9 @@ pub struct DrawState {
     /// GL_POLYGON_STIPPLE's pattern when enabled (filled polygons only): row `y % 32`
     /// from the bottom of the window, bit `31 − x % 32` for column `x`.
     pub polygon_stipple: Option<[u32; 32]>,
+    /// The active occlusion query's counter: fragments passing the depth and stencil tests
+    /// are added per span (a sum, so the same for any thread count).
+    pub samples_passed: Option<Arc<AtomicU64>>,
 }
 
 /// A primitive ready for rasterization.
@@ -124,6 +128,9 @@ pub fn shade_span(
         if live == 0 {
             return;
         }
+    }
+    if let Some(counter) = &state.samples_passed {
+        counter.fetch_add(live.count_ones() as u64, Ordering::Relaxed);
     }
     if let Some(c) = colors {
         scratch.colors.clear();
