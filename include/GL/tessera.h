@@ -6658,6 +6658,18 @@ void glPolygonStipple(const GLubyte *mask);
 
 void glGetPolygonStipple(GLubyte *mask);
 
+GLint glRenderMode(GLenum mode);
+
+void glSelectBuffer(GLsizei size, GLuint *buffer);
+
+void glInitNames(void);
+
+void glPushName(GLuint name);
+
+void glPopName(void);
+
+void glLoadName(GLuint name);
+
 void glEnable(GLenum cap);
 
 void glDisable(GLenum cap);

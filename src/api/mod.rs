@@ -21,6 +21,7 @@ pub mod gl_pixel_rect;
 pub mod gl_pixels;
 pub mod gl_queries;
 pub mod gl_raster_state;
+pub mod gl_selection;
 pub mod gl_state;
 pub mod gl_transform;
 pub mod gl_vertex;

@@ -21,6 +21,8 @@
 //! its provoking vertex under GL_FIRST_VERTEX_CONVENTION (here it stays the second vertex);
 //! and when front and back faces have different modes, Mesa applies the polygon offset of
 //! the first triangle's mode to the whole draw (here each triangle gets its own mode's).
+mod select;
+
 use super::Context;
 use crate::api::enums::*;
 use crate::api::types::GLenum;
@@ -159,6 +161,9 @@ impl Context {
     /// Draws `vertices` as primitives of `mode` (GL_POINTS … GL_POLYGON, already validated),
     /// with the current state. Vertex sources (glBegin/glEnd, glDrawArrays, …) call this.
     pub fn draw_vertices(&mut self, mode: GLenum, vertices: &[Vertex]) {
+        if !self.rendering() {
+            return self.select_vertices(mode, vertices);
+        }
         let Some((width, height, color_format, depth_bits, stencil_bits)) = self.with_framebuffer(|fb| {
             let config = fb.config();
             (

@@ -22,6 +22,7 @@ pub mod queries;
 pub mod raster_pos;
 pub mod raster_state;
 pub mod read_pixels;
+pub mod selection;
 pub mod state;
 pub mod strings;
 pub mod transform;
@@ -67,6 +68,8 @@ pub struct Context {
     pub lists: lists::ListState,
     /// Occlusion queries.
     pub queries: queries::QueryState,
+    /// The render mode and selection state.
+    pub selection: selection::Selection,
 }
 
 impl Context {
@@ -88,6 +91,7 @@ impl Context {
             buffers: Default::default(),
             lists: Default::default(),
             queries: Default::default(),
+            selection: Default::default(),
         }
     }
 

@@ -139,6 +139,9 @@ impl Context {
 
     /// Adds an image at window position `origin` to the scene.
     fn draw_image(&mut self, origin: [f64; 2], zoom: [f64; 2], width: usize, height: usize, source: PixelSource) {
+        if !self.rendering() {
+            return;
+        }
         let raster = self.state.current.raster;
         self.draw_pixel_rect(|needed| PixelRectJob {
             rect: PixelRectJob::window_rect(origin, zoom, width, height),

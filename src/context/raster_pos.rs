@@ -90,6 +90,9 @@ impl Context {
         } else {
             eye.truncate().length()
         };
+        if self.selection.mode == GL_SELECT {
+            self.selection.hit(window[2]);
+        }
         let (color, secondary_color) = self.raster_colors();
         let current = &self.state.current;
         self.state.current.raster = RasterPos {
@@ -111,6 +114,9 @@ impl Context {
         let [near, far] = self.state.viewport.depth_range.map(|d| d as f32);
         let z = near + z.clamp(0.0, 1.0) * (far - near);
         let distance = if self.state.fog.coord_src == GL_FOG_COORD { self.state.current.fog_coord } else { 0.0 };
+        if self.selection.mode == GL_SELECT {
+            self.selection.hit(z);
+        }
         let (color, secondary_color) = self.raster_colors();
         let current = &self.state.current;
         self.state.current.raster = RasterPos {
