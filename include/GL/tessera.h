@@ -6670,6 +6670,10 @@ void glPopName(void);
 
 void glLoadName(GLuint name);
 
+void glFeedbackBuffer(GLsizei size, GLenum type_, GLfloat *buffer);
+
+void glPassThrough(GLfloat token);
+
 void glEnable(GLenum cap);
 
 void glDisable(GLenum cap);

@@ -1,5 +1,6 @@
-//! Selection entry points: glRenderMode, glSelectBuffer and the name stack. The name stack
-//! commands are compiled into display lists; glRenderMode and glSelectBuffer always execute.
+//! Selection and feedback entry points: glRenderMode, glSelectBuffer, the name stack,
+//! glFeedbackBuffer and glPassThrough. The name stack commands and glPassThrough are compiled
+//! into display lists; glRenderMode, glSelectBuffer and glFeedbackBuffer always execute.
 use super::types::*;
 use super::{record_or_run, with_context};
 
@@ -16,6 +17,11 @@ pub extern "C" fn glRenderMode(mode: GLenum) -> GLint {
         let result = ctx.render_mode(mode);
         if let Some((address, words)) = &result.copy {
             copy_records(*address, words);
+        }
+        if let Some((address, values)) = &result.feedback {
+            // SAFETY: `address` is the buffer the caller gave glFeedbackBuffer, with room for
+            // its `size` floats; `values` holds at most that many.
+            unsafe { std::ptr::copy_nonoverlapping(values.as_ptr(), *address as *mut GLfloat, values.len()) }
         }
         result.value
     })
@@ -46,4 +52,16 @@ pub extern "C" fn glPopName() {
 #[no_mangle]
 pub extern "C" fn glLoadName(name: GLuint) {
     record_or_run(move |ctx| ctx.load_name(name))
+}
+
+/// # Safety
+/// `buffer` must have room for `size` GLfloats until feedback ends.
+#[no_mangle]
+pub unsafe extern "C" fn glFeedbackBuffer(size: GLsizei, type_: GLenum, buffer: *mut GLfloat) {
+    with_context((), |ctx| ctx.feedback_buffer(size, type_, buffer as usize))
+}
+
+#[no_mangle]
+pub extern "C" fn glPassThrough(token: GLfloat) {
+    record_or_run(move |ctx| ctx.pass_through(token))
 }

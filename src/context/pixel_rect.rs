@@ -15,6 +15,7 @@
 //! nothing is drawn), glPixelTransfer and glPixelMap (identity transfer).
 use super::draw::Attribute;
 use super::read_pixels::{check_format_and_type, read_format, ReadFormat};
+use super::selection::FeedbackVertex;
 use super::Context;
 use crate::api::enums::*;
 use crate::api::types::GLenum;
@@ -126,6 +127,7 @@ impl Context {
             return;
         }
         let raster = self.state.current.raster;
+        self.feedback_raster(GL_BITMAP_TOKEN);
         if let Some(bits) = bits {
             let x = (raster.window[0] + BITMAP_EPSILON - origin[0]).floor() as f64;
             let y = (raster.window[1] + BITMAP_EPSILON - origin[1]).floor() as f64;
@@ -135,6 +137,15 @@ impl Context {
         let window = &mut self.state.current.raster.window;
         window[0] += advance[0];
         window[1] += advance[1];
+    }
+
+    /// In feedback mode, reports a pixel command's token and the raster position.
+    fn feedback_raster(&mut self, token: GLenum) {
+        if self.selection.mode == GL_FEEDBACK {
+            let r = self.state.current.raster;
+            let vertex = FeedbackVertex { window: r.window, color: r.color, tex: r.tex_coords[0] };
+            self.feedback_token(token, None, &[vertex]);
+        }
     }
 
     /// Adds an image at window position `origin` to the scene.
@@ -273,6 +284,7 @@ impl Context {
         if !raster.valid {
             return;
         }
+        self.feedback_raster(GL_DRAW_PIXEL_TOKEN);
         let clamp = !self.config.visual.color.is_float();
         let source = match &data.image {
             DrawImage::Colors(colors) if clamp => {
@@ -314,7 +326,13 @@ impl Context {
             GL_DEPTH | GL_STENCIL => return self.error(GL_INVALID_OPERATION),
             _ => return self.error(GL_INVALID_ENUM),
         };
-        if !self.state.current.raster.valid || width == 0 || height == 0 {
+        if !self.state.current.raster.valid {
+            return;
+        }
+        if !self.rendering() {
+            return self.feedback_raster(GL_COPY_PIXEL_TOKEN);
+        }
+        if width == 0 || height == 0 {
             return;
         }
         let Some(len) = (width as usize).checked_mul(height as usize).and_then(|n| n.checked_mul(pixel_bytes)) else {

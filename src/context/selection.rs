@@ -26,6 +26,11 @@ pub struct Selection {
     max_z: f32,
     records: Vec<u32>,
     hits: u32,
+    feedback_type: GLenum,
+    feedback_address: usize,
+    feedback_size: usize,
+    /// The feedback values since entering GL_FEEDBACK.
+    pub feedback: Vec<f32>,
 }
 
 impl Default for Selection {
@@ -40,6 +45,10 @@ impl Default for Selection {
             max_z: 0.0,
             records: Vec::new(),
             hits: 0,
+            feedback_type: GL_2D,
+            feedback_address: 0,
+            feedback_size: 0,
+            feedback: Vec::new(),
         }
     }
 }
@@ -78,6 +87,17 @@ impl Selection {
 pub struct RenderModeResult {
     pub value: i32,
     pub copy: Option<(usize, Vec<u32>)>,
+    /// Feedback values to copy to the feedback buffer at the address.
+    pub feedback: Option<(usize, Vec<f32>)>,
+}
+
+/// One vertex as feedback reports it: window x, y, z, the clip w, color and texture
+/// coordinates of unit 0.
+#[derive(Clone, Copy, Debug)]
+pub struct FeedbackVertex {
+    pub window: [f32; 4],
+    pub color: [f32; 4],
+    pub tex: [f32; 4],
 }
 
 impl Context {
@@ -104,7 +124,7 @@ impl Context {
 
     /// glRenderMode.
     pub fn render_mode(&mut self, mode: GLenum) -> RenderModeResult {
-        let none = RenderModeResult { value: 0, copy: None };
+        let none = RenderModeResult { value: 0, copy: None, feedback: None };
         if !self.check_outside_begin_end() {
             return none;
         }
@@ -122,6 +142,7 @@ impl Context {
             result = RenderModeResult {
                 value: if overflow { -1 } else { s.hits as i32 },
                 copy: (s.buffer_address != 0 && !words.is_empty()).then_some((s.buffer_address, words)),
+                feedback: None,
             };
             s.hits = 0;
             s.names.clear();
@@ -129,16 +150,76 @@ impl Context {
             s.min_z = 1.0;
             s.max_z = 0.0;
         }
-        if mode == GL_SELECT && s.buffer_size == 0 {
-            // As Mesa: an error, but the mode changes.
-            self.error(GL_INVALID_OPERATION);
+        if s.mode == GL_FEEDBACK {
+            let overflow = s.feedback.len() > s.feedback_size;
+            let mut values = std::mem::take(&mut s.feedback);
+            values.truncate(s.feedback_size);
+            let count = values.len() as i32;
+            result = RenderModeResult {
+                value: if overflow { -1 } else { count },
+                copy: None,
+                feedback: (s.feedback_address != 0 && !values.is_empty()).then_some((s.feedback_address, values)),
+            };
         }
-        if mode == GL_FEEDBACK {
-            // Feedback is not implemented: nothing is drawn, nothing is returned.
+        // As Mesa: entering a mode without its buffer is an error, but the mode changes.
+        let no_buffer = match mode {
+            GL_SELECT => self.selection.buffer_size == 0,
+            GL_FEEDBACK => self.selection.feedback_size == 0,
+            _ => false,
+        };
+        if no_buffer {
+            self.error(GL_INVALID_OPERATION);
         }
         self.flush_rendering();
         self.selection.mode = mode;
         result
+    }
+
+    /// glFeedbackBuffer: `address` is the caller's buffer of `size` floats.
+    pub fn feedback_buffer(&mut self, size: i32, ty: GLenum, address: usize) {
+        if !self.check_outside_begin_end() {
+            return;
+        }
+        if !matches!(ty, GL_2D | GL_3D | GL_3D_COLOR | GL_3D_COLOR_TEXTURE | GL_4D_COLOR_TEXTURE) {
+            return self.error(GL_INVALID_ENUM);
+        }
+        if size < 0 {
+            return self.error(GL_INVALID_VALUE);
+        }
+        if self.selection.mode == GL_FEEDBACK {
+            return self.error(GL_INVALID_OPERATION);
+        }
+        let s = &mut self.selection;
+        (s.feedback_type, s.feedback_size, s.feedback_address) = (ty, size as usize, address);
+    }
+
+    /// glPassThrough.
+    pub fn pass_through(&mut self, token: f32) {
+        if !self.check_outside_begin_end() {
+            return;
+        }
+        if self.selection.mode == GL_FEEDBACK {
+            self.selection.feedback.extend([GL_PASS_THROUGH_TOKEN as f32, token]);
+        }
+    }
+
+    /// Appends a feedback token and its vertices in the feedback buffer's type.
+    pub fn feedback_token(&mut self, token: GLenum, count: Option<usize>, vertices: &[FeedbackVertex]) {
+        let s = &mut self.selection;
+        s.feedback.push(token as f32);
+        if let Some(n) = count {
+            s.feedback.push(n as f32);
+        }
+        for v in vertices {
+            let [x, y, z, w] = v.window;
+            match s.feedback_type {
+                GL_2D => s.feedback.extend([x, y]),
+                GL_3D => s.feedback.extend([x, y, z]),
+                GL_3D_COLOR => s.feedback.extend([x, y, z].iter().chain(&v.color)),
+                GL_3D_COLOR_TEXTURE => s.feedback.extend([x, y, z].iter().chain(&v.color).chain(&v.tex)),
+                _ => s.feedback.extend([x, y, z, w].iter().chain(&v.color).chain(&v.tex)),
+            }
+        }
     }
 
     /// glInitNames.
@@ -201,6 +282,8 @@ impl Context {
             GL_NAME_STACK_DEPTH => Int(self.selection.names.len() as i32),
             GL_MAX_NAME_STACK_DEPTH => Int(MAX_NAME_STACK_DEPTH as i32),
             GL_SELECTION_BUFFER_SIZE => Int(self.selection.buffer_size as i32),
+            GL_FEEDBACK_BUFFER_SIZE => Int(self.selection.feedback_size as i32),
+            GL_FEEDBACK_BUFFER_TYPE => Enum(self.selection.feedback_type),
             _ => return None,
         }])
     }
