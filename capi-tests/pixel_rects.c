@@ -113,6 +113,22 @@ int main(void)
     glDrawPixels(4, 4, GL_RGB, GL_UNSIGNED_SHORT_5_6_5, rgb565);
     glPixelZoom(1, 1);
     capi_value_query("zoom", "zoom_x", GL_ZOOM_X, 1);
+    /* Pixel transfer scale and bias (then clamped). */
+    glPixelTransferf(GL_RED_SCALE, 0.5f);
+    glPixelTransferf(GL_GREEN_BIAS, 0.25f);
+    glPixelTransferi(GL_BLUE_SCALE, 3);
+    capi_value_query("transfer", "green_bias", GL_GREEN_BIAS, 1);
+    glRasterPos2i(2, 30);
+    glDrawPixels(6, 4, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+    glPushAttrib(GL_PIXEL_MODE_BIT);
+    glPixelTransferf(GL_RED_SCALE, 1);
+    glPopAttrib();
+    capi_value_query("popped", "red_scale", GL_RED_SCALE, 1);
+    glPixelTransferf(GL_RED_SCALE, 1);
+    glPixelTransferf(GL_GREEN_BIAS, 0);
+    glPixelTransferf(GL_BLUE_SCALE, 1);
+    glPixelTransferf(GL_ZOOM_X, 1);
+    capi_expect_error(GL_INVALID_ENUM, "glPixelTransfer bad pname");
     /* Through the depth test: a quad at z = 0, then pixels at raster z -0.5 (nearer) and
      * +0.5 (farther) with GL_LESS. */
     glEnable(GL_DEPTH_TEST);

@@ -6576,6 +6576,10 @@ void glPixelZoom(GLfloat xfactor, GLfloat yfactor);
 
 void glCopyPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum type_);
 
+void glPixelTransferf(GLenum pname, GLfloat param);
+
+void glPixelTransferi(GLenum pname, GLint param);
+
 void glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, GLenum type_, GLvoid *pixels);
 
 void glPixelStorei(GLenum pname, GLint param);

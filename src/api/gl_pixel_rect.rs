@@ -584,3 +584,13 @@ pub extern "C" fn glPixelZoom(xfactor: GLfloat, yfactor: GLfloat) {
 pub extern "C" fn glCopyPixels(x: GLint, y: GLint, width: GLsizei, height: GLsizei, type_: GLenum) {
     record_or_run(move |ctx| ctx.copy_pixels(x, y, width, height, type_))
 }
+
+#[no_mangle]
+pub extern "C" fn glPixelTransferf(pname: GLenum, param: GLfloat) {
+    record_or_run(move |ctx| ctx.pixel_transfer(pname, param))
+}
+
+#[no_mangle]
+pub extern "C" fn glPixelTransferi(pname: GLenum, param: GLint) {
+    record_or_run(move |ctx| ctx.pixel_transfer(pname, param as f32))
+}

@@ -11,11 +11,16 @@
 //! draws it as glDrawPixels would. Stencil indices are written to the stencil buffer
 //! under the stencil write mask; only the scissor box limits them.
 //!
+//! glPixelTransfer applies at execution: RGBA and depth scale and bias (then clamped to
+//! [0, 1]), and the index shift and offset of stencil indices.
+//!
 //! Not yet implemented: glDrawPixels of GL_DEPTH_STENCIL and GL_COLOR_INDEX (validated, then
-//! nothing is drawn), glPixelTransfer and glPixelMap (identity transfer).
+//! nothing is drawn), and the pixel maps (glPixelMap, GL_MAP_COLOR, GL_MAP_STENCIL: the
+//! flags are kept and queried, the maps are not applied).
 use super::draw::Attribute;
 use super::read_pixels::{check_format_and_type, read_format, ReadFormat};
 use super::selection::FeedbackVertex;
+use super::state::PixelTransfer;
 use super::Context;
 use crate::api::enums::*;
 use crate::api::types::GLenum;
@@ -45,6 +50,12 @@ pub enum DrawImage {
 pub struct DrawPixelsData {
     image: DrawImage,
     format: ClientFormat,
+}
+
+/// GL_INDEX_SHIFT and GL_INDEX_OFFSET applied to a stencil index, kept to 8 bits.
+fn shift_index(value: i64, shift: i32, offset: i32) -> u8 {
+    let shifted = if shift >= 0 { value << shift.min(62) } else { value >> (-shift).min(62) };
+    shifted.wrapping_add(offset as i64) as u8
 }
 
 /// A stencil index of an integer or float type, kept to the stencil buffer's 8 bits.
@@ -286,16 +297,31 @@ impl Context {
         }
         self.feedback_raster(GL_DRAW_PIXEL_TOKEN);
         let clamp = !self.config.visual.color.is_float();
+        let t = self.state.pixel_mode.transfer;
+        let identity = t == PixelTransfer::default();
         let source = match &data.image {
-            DrawImage::Colors(colors) if clamp => {
-                PixelSource::Colors(Arc::new(colors.iter().map(|c| c.map(|x| x.clamp(0.0, 1.0))).collect()))
+            DrawImage::Colors(colors) if clamp || !identity => {
+                // The transfer's final conversion clamps to [0, 1]; so do fixed-point buffers.
+                let transfer = |c: &[f32; 4]| std::array::from_fn(|i| (c[i] * t.scale[i] + t.bias[i]).clamp(0.0, 1.0));
+                PixelSource::Colors(Arc::new(colors.iter().map(transfer).collect()))
             }
             DrawImage::Colors(colors) => PixelSource::Colors(colors.clone()),
             // Depth components become window depths as they are (no depth range mapping).
-            DrawImage::Depths(depths) => PixelSource::Depths { depths: depths.clone(), color: raster.color },
+            DrawImage::Depths(depths) if identity => {
+                PixelSource::Depths { depths: depths.clone(), color: raster.color }
+            }
+            DrawImage::Depths(depths) => {
+                let mapped = depths.iter().map(|&d| (d * t.depth_scale + t.depth_bias).clamp(0.0, 1.0)).collect();
+                PixelSource::Depths { depths: Arc::new(mapped), color: raster.color }
+            }
             DrawImage::Stencil(values) => {
                 let write_mask = self.state.stencil.front.write_mask as u8;
-                PixelSource::Stencil { values: values.clone(), write_mask }
+                let values = if t.index_shift == 0 && t.index_offset == 0 {
+                    values.clone()
+                } else {
+                    Arc::new(values.iter().map(|&v| shift_index(v as i64, t.index_shift, t.index_offset)).collect())
+                };
+                PixelSource::Stencil { values, write_mask }
             }
             DrawImage::Unsupported => return,
         };
@@ -360,5 +386,55 @@ impl Context {
         let data = self.unpack_draw_pixels(width, height, format, read_type, |span| bytes.get(span));
         self.pixel_store.unpack = saved;
         self.draw_pixels(width, height, &data);
+    }
+}
+
+impl Context {
+    /// glPixelTransfer.
+    pub fn pixel_transfer(&mut self, pname: GLenum, param: f32) {
+        if !self.check_outside_begin_end() {
+            return;
+        }
+        let t = &mut self.state.pixel_mode.transfer;
+        match pname {
+            GL_RED_SCALE => t.scale[0] = param,
+            GL_GREEN_SCALE => t.scale[1] = param,
+            GL_BLUE_SCALE => t.scale[2] = param,
+            GL_ALPHA_SCALE => t.scale[3] = param,
+            GL_RED_BIAS => t.bias[0] = param,
+            GL_GREEN_BIAS => t.bias[1] = param,
+            GL_BLUE_BIAS => t.bias[2] = param,
+            GL_ALPHA_BIAS => t.bias[3] = param,
+            GL_DEPTH_SCALE => t.depth_scale = param,
+            GL_DEPTH_BIAS => t.depth_bias = param,
+            GL_INDEX_SHIFT => t.index_shift = param.round() as i32,
+            GL_INDEX_OFFSET => t.index_offset = param.round() as i32,
+            GL_MAP_COLOR => t.map_color = param != 0.0,
+            GL_MAP_STENCIL => t.map_stencil = param != 0.0,
+            _ => self.error(GL_INVALID_ENUM),
+        }
+    }
+
+    /// The glGet values of glPixelTransfer's state; `None` for other pnames.
+    pub(crate) fn pixel_transfer_values(&self, pname: GLenum) -> Option<Vec<super::get::Value>> {
+        use super::get::Value::*;
+        let t = &self.state.pixel_mode.transfer;
+        Some(vec![match pname {
+            GL_RED_SCALE => Float(t.scale[0]),
+            GL_GREEN_SCALE => Float(t.scale[1]),
+            GL_BLUE_SCALE => Float(t.scale[2]),
+            GL_ALPHA_SCALE => Float(t.scale[3]),
+            GL_RED_BIAS => Float(t.bias[0]),
+            GL_GREEN_BIAS => Float(t.bias[1]),
+            GL_BLUE_BIAS => Float(t.bias[2]),
+            GL_ALPHA_BIAS => Float(t.bias[3]),
+            GL_DEPTH_SCALE => Float(t.depth_scale),
+            GL_DEPTH_BIAS => Float(t.depth_bias),
+            GL_INDEX_SHIFT => Int(t.index_shift),
+            GL_INDEX_OFFSET => Int(t.index_offset),
+            GL_MAP_COLOR => Bool(t.map_color),
+            GL_MAP_STENCIL => Bool(t.map_stencil),
+            _ => return None,
+        }])
     }
 }

@@ -495,6 +495,37 @@ pub struct PixelModeState {
     pub read_buffer: GLenum,
     /// glPixelZoom's x and y factors.
     pub zoom: [f32; 2],
+    /// glPixelTransfer's values.
+    pub transfer: PixelTransfer,
+}
+
+/// glPixelTransfer's state (part of GL_PIXEL_MODE_BIT).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PixelTransfer {
+    /// RGBA scale and bias.
+    pub scale: [f32; 4],
+    pub bias: [f32; 4],
+    pub depth_scale: f32,
+    pub depth_bias: f32,
+    pub index_shift: i32,
+    pub index_offset: i32,
+    pub map_color: bool,
+    pub map_stencil: bool,
+}
+
+impl Default for PixelTransfer {
+    fn default() -> Self {
+        PixelTransfer {
+            scale: [1.0; 4],
+            bias: [0.0; 4],
+            depth_scale: 1.0,
+            depth_bias: 0.0,
+            index_shift: 0,
+            index_offset: 0,
+            map_color: false,
+            map_stencil: false,
+        }
+    }
 }
 
 /// One direction of glPixelStore (GL_PACK_* or GL_UNPACK_*): client state.
@@ -609,7 +640,7 @@ impl State {
             multisample: MultisampleState::default(),
             texture: TextureState::default(),
             eval: EvalState::default(),
-            pixel_mode: PixelModeState { read_buffer: buffer, zoom: [1.0, 1.0] },
+            pixel_mode: PixelModeState { read_buffer: buffer, zoom: [1.0, 1.0], transfer: PixelTransfer::default() },
             list_base: 0,
         }
     }
