@@ -77,6 +77,9 @@ int main(void)
     for (int t = 0; t < 5; t++) {
         memset(buffer, 0, sizeof buffer);
         glFeedbackBuffer(2048, types[t], buffer);
+        void *pointer = NULL;
+        glGetPointerv(GL_FEEDBACK_BUFFER_POINTER, &pointer);
+        capi_check(pointer == buffer, "GL_FEEDBACK_BUFFER_POINTER");
         glRenderMode(GL_FEEDBACK);
         scene();
         GLint n = glRenderMode(GL_RENDER);

@@ -73,6 +73,9 @@ int main(void)
     GLuint buffer[256];
     memset(buffer, 0xff, sizeof buffer);
     glSelectBuffer(256, buffer);
+    void *pointer = NULL;
+    glGetPointerv(GL_SELECTION_BUFFER_POINTER, &pointer);
+    capi_check(pointer == buffer, "GL_SELECTION_BUFFER_POINTER");
     capi_check(glRenderMode(GL_SELECT) == 0, "leaving GL_RENDER returns 0");
     capi_value_query("select", "render_mode", GL_RENDER_MODE, 1);
     /* A pick matrix: a 4x4 pixel region around (32, 32) fills the view volume. */

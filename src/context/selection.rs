@@ -60,6 +60,15 @@ pub fn scaled_depth(z: f32) -> u32 {
 }
 
 impl Selection {
+    /// The address glSelectBuffer or glFeedbackBuffer was given (glGetPointerv).
+    pub fn buffer_pointer(&self, pname: GLenum) -> usize {
+        if pname == GL_FEEDBACK_BUFFER_POINTER {
+            self.feedback_address
+        } else {
+            self.buffer_address
+        }
+    }
+
     /// Records a hit at window depth `z`.
     pub fn hit(&mut self, z: f32) {
         self.hit = true;
