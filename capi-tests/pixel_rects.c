@@ -129,6 +129,46 @@ int main(void)
     glPixelTransferf(GL_BLUE_SCALE, 1);
     glPixelTransferf(GL_ZOOM_X, 1);
     capi_expect_error(GL_INVALID_ENUM, "glPixelTransfer bad pname");
+    /* Pixel maps: red inverted, green through a 4-entry ramp, blue from GLushort values. */
+    {
+        static const GLfloat invert[2] = {1, 0};
+        static const GLfloat ramp[4] = {0.1f, 0.9f, 0.3f, 0.6f};
+        static const GLushort blue[3] = {65535, 0, 32768};
+        GLfloat back[4];
+        GLuint back_ui[4];
+        GLushort back_us[3];
+        glPixelMapfv(GL_PIXEL_MAP_R_TO_R, 2, invert);
+        glPixelMapfv(GL_PIXEL_MAP_G_TO_G, 4, ramp);
+        glPixelMapusv(GL_PIXEL_MAP_B_TO_B, 3, blue);
+        glPixelMapfv(GL_PIXEL_MAP_S_TO_S, 3, ramp);
+        capi_expect_error(GL_INVALID_VALUE, "index map size not a power of two");
+        glPixelMapfv(GL_PIXEL_MAP_R_TO_R, 0, invert);
+        capi_expect_error(GL_INVALID_VALUE, "empty map");
+        capi_value_query("maps", "g_to_g_size", GL_PIXEL_MAP_G_TO_G_SIZE, 1);
+        capi_value_query("maps", "max_table", GL_MAX_PIXEL_MAP_TABLE, 1);
+        glGetPixelMapfv(GL_PIXEL_MAP_G_TO_G, back);
+        capi_value("maps.g_to_g", "%a %a %a %a", back[0], back[1], back[2], back[3]);
+        glGetPixelMapuiv(GL_PIXEL_MAP_G_TO_G, back_ui);
+        capi_value("maps.g_to_g_ui", "%u %u %u %u", back_ui[0], back_ui[1], back_ui[2], back_ui[3]);
+        glGetPixelMapusv(GL_PIXEL_MAP_B_TO_B, back_us);
+        capi_value("maps.b_to_b_us", "%u %u %u", back_us[0], back_us[1], back_us[2]);
+        /* llvmpipe looks the maps up in a filtered texture (blue and alpha between entries);
+         * tessera looks each component up in its table at round(c * (size - 1)), as GL 2.1
+         * section 3.6.5 says. Checked on tessera only, then cleared. */
+        glPixelTransferi(GL_MAP_COLOR, GL_TRUE);
+        glRasterPos2i(2, 36);
+        glDrawPixels(6, 4, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+        glPixelTransferi(GL_MAP_COLOR, GL_FALSE);
+        GLubyte mapped[4];
+        glReadPixels(2, 36, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, mapped);
+        if (capi_is_tessera())
+            capi_check(mapped[0] == 255 && mapped[1] == 153 && mapped[2] == 255 && mapped[3] == 0,
+                       "mapped %u %u %u %u", mapped[0], mapped[1], mapped[2], mapped[3]);
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(2, 36, 6, 4);
+        glClear(GL_COLOR_BUFFER_BIT);
+        glDisable(GL_SCISSOR_TEST);
+    }
     /* Through the depth test: a quad at z = 0, then pixels at raster z -0.5 (nearer) and
      * +0.5 (farther) with GL_LESS. */
     glEnable(GL_DEPTH_TEST);

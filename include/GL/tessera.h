@@ -6580,6 +6580,18 @@ void glPixelTransferf(GLenum pname, GLfloat param);
 
 void glPixelTransferi(GLenum pname, GLint param);
 
+void glPixelMapfv(GLenum map, GLsizei mapsize, const GLfloat *values);
+
+void glPixelMapuiv(GLenum map, GLsizei mapsize, const GLuint *values);
+
+void glPixelMapusv(GLenum map, GLsizei mapsize, const GLushort *values);
+
+void glGetPixelMapfv(GLenum map, GLfloat *values);
+
+void glGetPixelMapuiv(GLenum map, GLuint *values);
+
+void glGetPixelMapusv(GLenum map, GLushort *values);
+
 void glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, GLenum type_, GLvoid *pixels);
 
 void glPixelStorei(GLenum pname, GLint param);

@@ -594,3 +594,92 @@ pub extern "C" fn glPixelTransferf(pname: GLenum, param: GLfloat) {
 pub extern "C" fn glPixelTransferi(pname: GLenum, param: GLint) {
     record_or_run(move |ctx| ctx.pixel_transfer(pname, param as f32))
 }
+
+/// The `mapsize` values of a glPixelMap call as floats (`None`: a negative size or NULL).
+///
+/// # Safety
+/// A non-null `values` must point to `mapsize` values.
+unsafe fn map_values<T: Copy>(mapsize: GLsizei, values: *const T, convert: impl Fn(T) -> f32) -> Vec<f32> {
+    if values.is_null() || mapsize <= 0 || mapsize as usize > crate::context::pixel_rect::MAX_PIXEL_MAP_TABLE {
+        // Invalid sizes still reach the context (as an empty or oversized table) for the error.
+        return vec![
+            0.0;
+            if mapsize > 0 { mapsize as usize } else { 0 }
+                .min(crate::context::pixel_rect::MAX_PIXEL_MAP_TABLE + 1)
+        ];
+    }
+    // SAFETY: the caller passes `mapsize` values at `values`.
+    unsafe { std::slice::from_raw_parts(values, mapsize as usize) }.iter().map(|&v| convert(v)).collect()
+}
+
+/// # Safety
+/// `values` must point to `mapsize` floats.
+#[no_mangle]
+pub unsafe extern "C" fn glPixelMapfv(map: GLenum, mapsize: GLsizei, values: *const GLfloat) {
+    // SAFETY: forwarded contract of this entry point.
+    let table = unsafe { map_values(mapsize, values, |v| v) };
+    record_or_run(move |ctx| ctx.pixel_map(map, &table))
+}
+
+/// # Safety
+/// `values` must point to `mapsize` GLuints.
+#[no_mangle]
+pub unsafe extern "C" fn glPixelMapuiv(map: GLenum, mapsize: GLsizei, values: *const GLuint) {
+    use crate::context::pixel_rect::pixel_map_from_integer;
+    // SAFETY: forwarded contract of this entry point.
+    let table = unsafe { map_values(mapsize, values, |v| pixel_map_from_integer(map, v, 4294967295.0)) };
+    record_or_run(move |ctx| ctx.pixel_map(map, &table))
+}
+
+/// # Safety
+/// `values` must point to `mapsize` GLushorts.
+#[no_mangle]
+pub unsafe extern "C" fn glPixelMapusv(map: GLenum, mapsize: GLsizei, values: *const GLushort) {
+    use crate::context::pixel_rect::pixel_map_from_integer;
+    // SAFETY: forwarded contract of this entry point.
+    let table = unsafe { map_values(mapsize, values, |v| pixel_map_from_integer(map, v as u32, 65535.0)) };
+    record_or_run(move |ctx| ctx.pixel_map(map, &table))
+}
+
+/// Writes a pixel map table to the caller's array, each entry converted by `convert`.
+///
+/// # Safety
+/// `values` must have room for the table (GL_PIXEL_MAP_*_SIZE entries).
+unsafe fn write_map<T>(map: GLenum, values: *mut T, convert: impl Fn(f32, bool) -> T) {
+    with_context((), |ctx| {
+        if let Some(table) = ctx.get_pixel_map(map) {
+            if values.is_null() {
+                return;
+            }
+            let color = !matches!(map, super::enums::GL_PIXEL_MAP_I_TO_I | super::enums::GL_PIXEL_MAP_S_TO_S);
+            for (i, &v) in table.iter().enumerate() {
+                // SAFETY: the caller provides room for the whole table.
+                unsafe { values.add(i).write_unaligned(convert(v, color)) }
+            }
+        }
+    })
+}
+
+/// # Safety
+/// `values` must have room for the table.
+#[no_mangle]
+pub unsafe extern "C" fn glGetPixelMapfv(map: GLenum, values: *mut GLfloat) {
+    // SAFETY: forwarded contract of this entry point.
+    unsafe { write_map(map, values, |v, _| v) }
+}
+
+/// # Safety
+/// `values` must have room for the table.
+#[no_mangle]
+pub unsafe extern "C" fn glGetPixelMapuiv(map: GLenum, values: *mut GLuint) {
+    // SAFETY: forwarded contract of this entry point.
+    unsafe { write_map(map, values, |v, color| if color { (v as f64 * 4294967295.0) as u32 } else { v as u32 }) }
+}
+
+/// # Safety
+/// `values` must have room for the table.
+#[no_mangle]
+pub unsafe extern "C" fn glGetPixelMapusv(map: GLenum, values: *mut GLushort) {
+    // SAFETY: forwarded contract of this entry point.
+    unsafe { write_map(map, values, |v, color| if color { (v * 65535.0) as u16 } else { v as u16 }) }
+}

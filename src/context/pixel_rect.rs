@@ -14,9 +14,11 @@
 //! glPixelTransfer applies at execution: RGBA and depth scale and bias (then clamped to
 //! [0, 1]), and the index shift and offset of stencil indices.
 //!
+//! GL_MAP_COLOR and GL_MAP_STENCIL look colors and stencil indices up in the glPixelMap
+//! tables.
+//!
 //! Not yet implemented: glDrawPixels of GL_DEPTH_STENCIL and GL_COLOR_INDEX (validated, then
-//! nothing is drawn), and the pixel maps (glPixelMap, GL_MAP_COLOR, GL_MAP_STENCIL: the
-//! flags are kept and queried, the maps are not applied).
+//! nothing is drawn).
 use super::draw::Attribute;
 use super::read_pixels::{check_format_and_type, read_format, ReadFormat};
 use super::selection::FeedbackVertex;
@@ -302,7 +304,22 @@ impl Context {
         let source = match &data.image {
             DrawImage::Colors(colors) if clamp || !identity => {
                 // The transfer's final conversion clamps to [0, 1]; so do fixed-point buffers.
-                let transfer = |c: &[f32; 4]| std::array::from_fn(|i| (c[i] * t.scale[i] + t.bias[i]).clamp(0.0, 1.0));
+                // GL_MAP_COLOR looks each clamped component up in its [RGBA]_TO_[RGBA] table.
+                let maps = &self.state.pixel_mode.maps;
+                let lookup = |i: usize, c: f32| {
+                    let table = &maps[6 + i];
+                    table[(c * (table.len() - 1) as f32).round() as usize]
+                };
+                let transfer = |c: &[f32; 4]| {
+                    std::array::from_fn(|i| {
+                        let c = (c[i] * t.scale[i] + t.bias[i]).clamp(0.0, 1.0);
+                        if t.map_color {
+                            lookup(i, c)
+                        } else {
+                            c
+                        }
+                    })
+                };
                 PixelSource::Colors(Arc::new(colors.iter().map(transfer).collect()))
             }
             DrawImage::Colors(colors) => PixelSource::Colors(colors.clone()),
@@ -316,10 +333,21 @@ impl Context {
             }
             DrawImage::Stencil(values) => {
                 let write_mask = self.state.stencil.front.write_mask as u8;
-                let values = if t.index_shift == 0 && t.index_offset == 0 {
+                let values = if t.index_shift == 0 && t.index_offset == 0 && !t.map_stencil {
                     values.clone()
                 } else {
-                    Arc::new(values.iter().map(|&v| shift_index(v as i64, t.index_shift, t.index_offset)).collect())
+                    // GL_MAP_STENCIL: the shifted index, masked to the table size, looked up in
+                    // GL_PIXEL_MAP_S_TO_S.
+                    let table = &self.state.pixel_mode.maps[1];
+                    let map = |v: u8| {
+                        let shifted = shift_index(v as i64, t.index_shift, t.index_offset);
+                        if t.map_stencil {
+                            table[shifted as usize & (table.len() - 1)] as i64 as u8
+                        } else {
+                            shifted
+                        }
+                    };
+                    Arc::new(values.iter().map(|&v| map(v)).collect())
                 };
                 PixelSource::Stencil { values, write_mask }
             }
@@ -436,5 +464,72 @@ impl Context {
             GL_MAP_STENCIL => Bool(t.map_stencil),
             _ => return None,
         }])
+    }
+}
+
+/// GL_MAX_PIXEL_MAP_TABLE (Mesa's value).
+pub const MAX_PIXEL_MAP_TABLE: usize = 256;
+
+/// The table index of a glPixelMap `map` enum, and whether it is indexed by color or
+/// stencil indices (GL_PIXEL_MAP_I_TO_*, S_TO_S), whose sizes must be powers of two (GL 2.1;
+/// Mesa 22 does not check GL_PIXEL_MAP_I_TO_I).
+fn pixel_map_index(map: GLenum) -> Option<(usize, bool)> {
+    (GL_PIXEL_MAP_I_TO_I..=GL_PIXEL_MAP_A_TO_A)
+        .contains(&map)
+        .then(|| ((map - GL_PIXEL_MAP_I_TO_I) as usize, map <= GL_PIXEL_MAP_I_TO_A))
+}
+
+/// How glPixelMapuiv/usv values become table entries: color maps are normalized (`max` is
+/// 2³²−1 or 2¹⁶−1), index maps keep their values.
+pub fn pixel_map_from_integer(map: GLenum, value: u32, max: f64) -> f32 {
+    match pixel_map_index(map) {
+        Some((i, _)) if i >= 2 && map != GL_PIXEL_MAP_S_TO_S => (value as f64 / max) as f32,
+        _ => value as f32,
+    }
+}
+
+impl Context {
+    /// glPixelMap with the values as floats (already normalized for the integer forms).
+    pub fn pixel_map(&mut self, map: GLenum, values: &[f32]) {
+        if !self.check_outside_begin_end() {
+            return;
+        }
+        let Some((index, power_of_two)) = pixel_map_index(map) else {
+            return self.error(GL_INVALID_ENUM);
+        };
+        let size = values.len();
+        if !(1..=MAX_PIXEL_MAP_TABLE).contains(&size) || (power_of_two && !size.is_power_of_two()) {
+            return self.error(GL_INVALID_VALUE);
+        }
+        // Color maps (I_TO_[RGBA], [RGBA]_TO_[RGBA]) hold values clamped to [0, 1].
+        let clamp = index >= 2;
+        let table = values.iter().map(|&v| if clamp { v.clamp(0.0, 1.0) } else { v }).collect();
+        self.state.pixel_mode.maps[index] = table;
+    }
+
+    /// glGetPixelMap: the table of `map` (`None` with GL_INVALID_ENUM for another enum).
+    pub fn get_pixel_map(&mut self, map: GLenum) -> Option<Vec<f32>> {
+        if !self.check_outside_begin_end() {
+            return None;
+        }
+        match pixel_map_index(map) {
+            Some((index, _)) => Some(self.state.pixel_mode.maps[index].clone()),
+            None => {
+                self.error(GL_INVALID_ENUM);
+                None
+            }
+        }
+    }
+
+    /// The glGet values of the pixel map sizes; `None` for other pnames.
+    pub(crate) fn pixel_map_values(&self, pname: GLenum) -> Option<Vec<super::get::Value>> {
+        use super::get::Value::Int;
+        if pname == GL_MAX_PIXEL_MAP_TABLE {
+            return Some(vec![Int(MAX_PIXEL_MAP_TABLE as i32)]);
+        }
+        let index = (GL_PIXEL_MAP_I_TO_I_SIZE..=GL_PIXEL_MAP_A_TO_A_SIZE)
+            .contains(&pname)
+            .then(|| (pname - GL_PIXEL_MAP_I_TO_I_SIZE) as usize)?;
+        Some(vec![Int(self.state.pixel_mode.maps[index].len() as i32)])
     }
 }

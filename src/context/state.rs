@@ -497,6 +497,9 @@ pub struct PixelModeState {
     pub zoom: [f32; 2],
     /// glPixelTransfer's values.
     pub transfer: PixelTransfer,
+    /// glPixelMap's ten tables, in the order of their enums (GL_PIXEL_MAP_I_TO_I ...
+    /// GL_PIXEL_MAP_A_TO_A); each holds at least one entry.
+    pub maps: [Vec<f32>; 10],
 }
 
 /// glPixelTransfer's state (part of GL_PIXEL_MODE_BIT).
@@ -640,7 +643,12 @@ impl State {
             multisample: MultisampleState::default(),
             texture: TextureState::default(),
             eval: EvalState::default(),
-            pixel_mode: PixelModeState { read_buffer: buffer, zoom: [1.0, 1.0], transfer: PixelTransfer::default() },
+            pixel_mode: PixelModeState {
+                read_buffer: buffer,
+                zoom: [1.0, 1.0],
+                transfer: PixelTransfer::default(),
+                maps: std::array::from_fn(|_| vec![0.0]),
+            },
             list_base: 0,
         }
     }
