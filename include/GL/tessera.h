@@ -6450,11 +6450,227 @@ void glGetMaterialiv(GLenum face, GLenum pname, GLint *params);
 
 void glColorMaterial(GLenum face, GLenum mode);
 
+void glNewList(GLuint list, GLenum mode);
+
+void glEndList(void);
+
+void glCallList(GLuint list);
+
+void glCallLists(GLsizei n, GLenum type_, const GLvoid *lists);
+
+void glListBase(GLuint base);
+
+GLuint glGenLists(GLsizei range);
+
+void glDeleteLists(GLuint list, GLsizei range);
+
+GLboolean glIsList(GLuint list);
+
+void glRasterPos2s(GLshort x, GLshort y);
+
+void glRasterPos2sv(const GLshort *v);
+
+void glRasterPos2i(GLint x, GLint y);
+
+void glRasterPos2iv(const GLint *v);
+
+void glRasterPos2f(GLfloat x, GLfloat y);
+
+void glRasterPos2fv(const GLfloat *v);
+
+void glRasterPos2d(GLdouble x, GLdouble y);
+
+void glRasterPos2dv(const GLdouble *v);
+
+void glRasterPos3s(GLshort x, GLshort y, GLshort z);
+
+void glRasterPos3sv(const GLshort *v);
+
+void glRasterPos3i(GLint x, GLint y, GLint z);
+
+void glRasterPos3iv(const GLint *v);
+
+void glRasterPos3f(GLfloat x, GLfloat y, GLfloat z);
+
+void glRasterPos3fv(const GLfloat *v);
+
+void glRasterPos3d(GLdouble x, GLdouble y, GLdouble z);
+
+void glRasterPos3dv(const GLdouble *v);
+
+void glRasterPos4s(GLshort x, GLshort y, GLshort z, GLshort w);
+
+void glRasterPos4sv(const GLshort *v);
+
+void glRasterPos4i(GLint x, GLint y, GLint z, GLint w);
+
+void glRasterPos4iv(const GLint *v);
+
+void glRasterPos4f(GLfloat x, GLfloat y, GLfloat z, GLfloat w);
+
+void glRasterPos4fv(const GLfloat *v);
+
+void glRasterPos4d(GLdouble x, GLdouble y, GLdouble z, GLdouble w);
+
+void glRasterPos4dv(const GLdouble *v);
+
+void glWindowPos2s(GLshort x, GLshort y);
+
+void glWindowPos2sv(const GLshort *v);
+
+void glWindowPos2sARB(GLshort x, GLshort y);
+
+void glWindowPos2svARB(const GLshort *v);
+
+void glWindowPos2sMESA(GLshort x, GLshort y);
+
+void glWindowPos2svMESA(const GLshort *v);
+
+void glWindowPos2i(GLint x, GLint y);
+
+void glWindowPos2iv(const GLint *v);
+
+void glWindowPos2iARB(GLint x, GLint y);
+
+void glWindowPos2ivARB(const GLint *v);
+
+void glWindowPos2iMESA(GLint x, GLint y);
+
+void glWindowPos2ivMESA(const GLint *v);
+
+void glWindowPos2f(GLfloat x, GLfloat y);
+
+void glWindowPos2fv(const GLfloat *v);
+
+void glWindowPos2fARB(GLfloat x, GLfloat y);
+
+void glWindowPos2fvARB(const GLfloat *v);
+
+void glWindowPos2fMESA(GLfloat x, GLfloat y);
+
+void glWindowPos2fvMESA(const GLfloat *v);
+
+void glWindowPos2d(GLdouble x, GLdouble y);
+
+void glWindowPos2dv(const GLdouble *v);
+
+void glWindowPos2dARB(GLdouble x, GLdouble y);
+
+void glWindowPos2dvARB(const GLdouble *v);
+
+void glWindowPos2dMESA(GLdouble x, GLdouble y);
+
+void glWindowPos2dvMESA(const GLdouble *v);
+
+void glWindowPos3s(GLshort x, GLshort y, GLshort z);
+
+void glWindowPos3sv(const GLshort *v);
+
+void glWindowPos3sARB(GLshort x, GLshort y, GLshort z);
+
+void glWindowPos3svARB(const GLshort *v);
+
+void glWindowPos3sMESA(GLshort x, GLshort y, GLshort z);
+
+void glWindowPos3svMESA(const GLshort *v);
+
+void glWindowPos3i(GLint x, GLint y, GLint z);
+
+void glWindowPos3iv(const GLint *v);
+
+void glWindowPos3iARB(GLint x, GLint y, GLint z);
+
+void glWindowPos3ivARB(const GLint *v);
+
+void glWindowPos3iMESA(GLint x, GLint y, GLint z);
+
+void glWindowPos3ivMESA(const GLint *v);
+
+void glWindowPos3f(GLfloat x, GLfloat y, GLfloat z);
+
+void glWindowPos3fv(const GLfloat *v);
+
+void glWindowPos3fARB(GLfloat x, GLfloat y, GLfloat z);
+
+void glWindowPos3fvARB(const GLfloat *v);
+
+void glWindowPos3fMESA(GLfloat x, GLfloat y, GLfloat z);
+
+void glWindowPos3fvMESA(const GLfloat *v);
+
+void glWindowPos3d(GLdouble x, GLdouble y, GLdouble z);
+
+void glWindowPos3dv(const GLdouble *v);
+
+void glWindowPos3dARB(GLdouble x, GLdouble y, GLdouble z);
+
+void glWindowPos3dvARB(const GLdouble *v);
+
+void glWindowPos3dMESA(GLdouble x, GLdouble y, GLdouble z);
+
+void glWindowPos3dvMESA(const GLdouble *v);
+
+void glBitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yorig, GLfloat xmove, GLfloat ymove, const GLubyte *bitmap);
+
+void glDrawPixels(GLsizei width, GLsizei height, GLenum format, GLenum type_, const GLvoid *pixels);
+
+void glPixelZoom(GLfloat xfactor, GLfloat yfactor);
+
+void glCopyPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum type_);
+
+void glPixelTransferf(GLenum pname, GLfloat param);
+
+void glPixelTransferi(GLenum pname, GLint param);
+
+void glPixelMapfv(GLenum map, GLsizei mapsize, const GLfloat *values);
+
+void glPixelMapuiv(GLenum map, GLsizei mapsize, const GLuint *values);
+
+void glPixelMapusv(GLenum map, GLsizei mapsize, const GLushort *values);
+
+void glGetPixelMapfv(GLenum map, GLfloat *values);
+
+void glGetPixelMapuiv(GLenum map, GLuint *values);
+
+void glGetPixelMapusv(GLenum map, GLushort *values);
+
 void glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, GLenum type_, GLvoid *pixels);
 
 void glPixelStorei(GLenum pname, GLint param);
 
 void glPixelStoref(GLenum pname, GLfloat param);
+
+void glGenQueries(GLsizei n, GLuint *ids);
+
+void glDeleteQueries(GLsizei n, const GLuint *ids);
+
+GLboolean glIsQuery(GLuint id);
+
+void glBeginQuery(GLenum target, GLuint id);
+
+void glEndQuery(GLenum target);
+
+void glGetQueryiv(GLenum target, GLenum pname, GLint *params);
+
+void glGetQueryObjectiv(GLuint id, GLenum pname, GLint *params);
+
+void glGetQueryObjectuiv(GLuint id, GLenum pname, GLuint *params);
+
+void glGenQueriesARB(GLsizei n, GLuint *ids);
+
+void glDeleteQueriesARB(GLsizei n, const GLuint *ids);
+
+GLboolean glIsQueryARB(GLuint id);
+
+void glBeginQueryARB(GLenum target, GLuint id);
+
+void glEndQueryARB(GLenum target);
+
+void glGetQueryivARB(GLenum target, GLenum pname, GLint *params);
+
+void glGetQueryObjectivARB(GLuint id, GLenum pname, GLint *params);
+
+void glGetQueryObjectuivARB(GLuint id, GLenum pname, GLuint *params);
 
 void glShadeModel(GLenum mode);
 
@@ -6499,6 +6715,22 @@ void glPointParameterfvEXT(GLenum pname, const GLfloat *params);
 void glPolygonStipple(const GLubyte *mask);
 
 void glGetPolygonStipple(GLubyte *mask);
+
+GLint glRenderMode(GLenum mode);
+
+void glSelectBuffer(GLsizei size, GLuint *buffer);
+
+void glInitNames(void);
+
+void glPushName(GLuint name);
+
+void glPopName(void);
+
+void glLoadName(GLuint name);
+
+void glFeedbackBuffer(GLsizei size, GLenum type_, GLfloat *buffer);
+
+void glPassThrough(GLfloat token);
 
 void glEnable(GLenum cap);
 

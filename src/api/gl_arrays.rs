@@ -186,7 +186,7 @@ pub unsafe extern "C" fn glGetPointervEXT(pname: GLenum, params: *mut *mut GLvoi
 
 #[no_mangle]
 pub extern "C" fn glArrayElement(i: GLint) {
-    with_context((), |ctx| ctx.array_element(i, &CallerMemory))
+    with_context((), |ctx| ctx.array_element_or_compile(i, &CallerMemory))
 }
 
 #[no_mangle]
@@ -196,7 +196,7 @@ pub extern "C" fn glArrayElementEXT(i: GLint) {
 
 #[no_mangle]
 pub extern "C" fn glDrawArrays(mode: GLenum, first: GLint, count: GLsizei) {
-    with_context((), |ctx| ctx.draw_arrays(mode, first, count, &CallerMemory))
+    with_context((), |ctx| ctx.draw_or_compile(|ctx| ctx.draw_arrays(mode, first, count, &CallerMemory)))
 }
 
 #[no_mangle]
@@ -206,7 +206,9 @@ pub extern "C" fn glDrawArraysEXT(mode: GLenum, first: GLint, count: GLsizei) {
 
 #[no_mangle]
 pub extern "C" fn glDrawElements(mode: GLenum, count: GLsizei, type_: GLenum, indices: *const GLvoid) {
-    with_context((), |ctx| ctx.draw_elements(mode, count, type_, indices as usize, &CallerMemory))
+    with_context((), |ctx| {
+        ctx.draw_or_compile(|ctx| ctx.draw_elements(mode, count, type_, indices as usize, &CallerMemory))
+    })
 }
 
 #[no_mangle]
@@ -218,7 +220,11 @@ pub extern "C" fn glDrawRangeElements(
     type_: GLenum,
     indices: *const GLvoid,
 ) {
-    with_context((), |ctx| ctx.draw_range_elements(mode, start, end, count, type_, indices as usize, &CallerMemory))
+    with_context((), |ctx| {
+        ctx.draw_or_compile(|ctx| {
+            ctx.draw_range_elements(mode, start, end, count, type_, indices as usize, &CallerMemory)
+        })
+    })
 }
 
 #[no_mangle]
@@ -244,7 +250,9 @@ pub unsafe extern "C" fn glMultiDrawArrays(
 ) {
     // SAFETY: the caller provides `drawcount` values in each array.
     let (firsts, counts) = unsafe { (caller_slice(first, drawcount), caller_slice(count, drawcount)) };
-    with_context((), |ctx| ctx.multi_draw_arrays(mode, firsts, counts, drawcount, &CallerMemory))
+    with_context((), |ctx| {
+        ctx.draw_or_compile(|ctx| ctx.multi_draw_arrays(mode, firsts, counts, drawcount, &CallerMemory))
+    })
 }
 
 /// # Safety
@@ -274,7 +282,9 @@ pub unsafe extern "C" fn glMultiDrawElements(
     let (counts, pointers) = unsafe { (caller_slice(count, drawcount), caller_slice(indices, drawcount)) };
     // Addresses (or element buffer offsets), so the context never holds caller pointers.
     let addresses: Vec<usize> = pointers.iter().map(|&p| p as usize).collect();
-    with_context((), |ctx| ctx.multi_draw_elements(mode, counts, type_, &addresses, drawcount, &CallerMemory))
+    with_context((), |ctx| {
+        ctx.draw_or_compile(|ctx| ctx.multi_draw_elements(mode, counts, type_, &addresses, drawcount, &CallerMemory))
+    })
 }
 
 /// # Safety

@@ -1,47 +1,47 @@
 //! Entry points for the per-fragment operations' state: alpha test, stencil, blending, logic
 //! op and fog (glDepthFunc, glStencilMask and the masks live with the buffers).
+use super::record_or_run;
 use super::types::*;
-use super::with_context;
 use crate::context::Context;
 
 #[no_mangle]
 pub extern "C" fn glAlphaFunc(func: GLenum, ref_: GLclampf) {
-    with_context((), |ctx| ctx.alpha_func(func, ref_))
+    record_or_run(move |ctx| ctx.alpha_func(func, ref_))
 }
 
 #[no_mangle]
 pub extern "C" fn glStencilFunc(func: GLenum, ref_: GLint, mask: GLuint) {
-    with_context((), |ctx| ctx.stencil_func(func, ref_, mask))
+    record_or_run(move |ctx| ctx.stencil_func(func, ref_, mask))
 }
 
 #[no_mangle]
 pub extern "C" fn glStencilOp(fail: GLenum, zfail: GLenum, zpass: GLenum) {
-    with_context((), |ctx| ctx.stencil_op(fail, zfail, zpass))
+    record_or_run(move |ctx| ctx.stencil_op(fail, zfail, zpass))
 }
 
 #[no_mangle]
 pub extern "C" fn glStencilFuncSeparate(face: GLenum, func: GLenum, ref_: GLint, mask: GLuint) {
-    with_context((), |ctx| ctx.stencil_func_separate(face, func, ref_, mask))
+    record_or_run(move |ctx| ctx.stencil_func_separate(face, func, ref_, mask))
 }
 
 #[no_mangle]
 pub extern "C" fn glStencilOpSeparate(face: GLenum, sfail: GLenum, dpfail: GLenum, dppass: GLenum) {
-    with_context((), |ctx| ctx.stencil_op_separate(face, sfail, dpfail, dppass))
+    record_or_run(move |ctx| ctx.stencil_op_separate(face, sfail, dpfail, dppass))
 }
 
 #[no_mangle]
 pub extern "C" fn glStencilFuncSeparateATI(frontfunc: GLenum, backfunc: GLenum, ref_: GLint, mask: GLuint) {
-    with_context((), |ctx| ctx.stencil_func_separate_ati(frontfunc, backfunc, ref_, mask))
+    record_or_run(move |ctx| ctx.stencil_func_separate_ati(frontfunc, backfunc, ref_, mask))
 }
 
 #[no_mangle]
 pub extern "C" fn glActiveStencilFaceEXT(face: GLenum) {
-    with_context((), |ctx| ctx.active_stencil_face(face))
+    record_or_run(move |ctx| ctx.active_stencil_face(face))
 }
 
 #[no_mangle]
 pub extern "C" fn glBlendFunc(sfactor: GLenum, dfactor: GLenum) {
-    with_context((), |ctx| ctx.blend_func(None, sfactor, dfactor, sfactor, dfactor))
+    record_or_run(move |ctx| ctx.blend_func(None, sfactor, dfactor, sfactor, dfactor))
 }
 
 #[no_mangle]
@@ -51,7 +51,7 @@ pub extern "C" fn glBlendFuncSeparate(
     sfactorAlpha: GLenum,
     dfactorAlpha: GLenum,
 ) {
-    with_context((), |ctx| ctx.blend_func(None, sfactorRGB, dfactorRGB, sfactorAlpha, dfactorAlpha))
+    record_or_run(move |ctx| ctx.blend_func(None, sfactorRGB, dfactorRGB, sfactorAlpha, dfactorAlpha))
 }
 
 #[no_mangle]
@@ -66,7 +66,7 @@ pub extern "C" fn glBlendFuncSeparateEXT(
 
 #[no_mangle]
 pub extern "C" fn glBlendEquation(mode: GLenum) {
-    with_context((), |ctx| ctx.blend_equation(None, mode, mode))
+    record_or_run(move |ctx| ctx.blend_equation(None, mode, mode))
 }
 
 #[no_mangle]
@@ -76,7 +76,7 @@ pub extern "C" fn glBlendEquationEXT(mode: GLenum) {
 
 #[no_mangle]
 pub extern "C" fn glBlendEquationSeparate(modeRGB: GLenum, modeAlpha: GLenum) {
-    with_context((), |ctx| ctx.blend_equation(None, modeRGB, modeAlpha))
+    record_or_run(move |ctx| ctx.blend_equation(None, modeRGB, modeAlpha))
 }
 
 #[no_mangle]
@@ -86,7 +86,7 @@ pub extern "C" fn glBlendEquationSeparateEXT(modeRGB: GLenum, modeAlpha: GLenum)
 
 #[no_mangle]
 pub extern "C" fn glBlendColor(red: GLclampf, green: GLclampf, blue: GLclampf, alpha: GLclampf) {
-    with_context((), |ctx| ctx.blend_color([red, green, blue, alpha]))
+    record_or_run(move |ctx| ctx.blend_color([red, green, blue, alpha]))
 }
 
 #[no_mangle]
@@ -96,7 +96,7 @@ pub extern "C" fn glBlendColorEXT(red: GLfloat, green: GLfloat, blue: GLfloat, a
 
 #[no_mangle]
 pub extern "C" fn glBlendFunci(buf: GLuint, src: GLenum, dst: GLenum) {
-    with_context((), |ctx| ctx.blend_func(Some(buf), src, dst, src, dst))
+    record_or_run(move |ctx| ctx.blend_func(Some(buf), src, dst, src, dst))
 }
 
 #[no_mangle]
@@ -112,7 +112,7 @@ pub extern "C" fn glBlendFuncSeparatei(
     srcAlpha: GLenum,
     dstAlpha: GLenum,
 ) {
-    with_context((), |ctx| ctx.blend_func(Some(buf), srcRGB, dstRGB, srcAlpha, dstAlpha))
+    record_or_run(move |ctx| ctx.blend_func(Some(buf), srcRGB, dstRGB, srcAlpha, dstAlpha))
 }
 
 #[no_mangle]
@@ -128,7 +128,7 @@ pub extern "C" fn glBlendFuncSeparateiARB(
 
 #[no_mangle]
 pub extern "C" fn glBlendEquationi(buf: GLuint, mode: GLenum) {
-    with_context((), |ctx| ctx.blend_equation(Some(buf), mode, mode))
+    record_or_run(move |ctx| ctx.blend_equation(Some(buf), mode, mode))
 }
 
 #[no_mangle]
@@ -138,7 +138,7 @@ pub extern "C" fn glBlendEquationiARB(buf: GLuint, mode: GLenum) {
 
 #[no_mangle]
 pub extern "C" fn glBlendEquationSeparatei(buf: GLuint, modeRGB: GLenum, modeAlpha: GLenum) {
-    with_context((), |ctx| ctx.blend_equation(Some(buf), modeRGB, modeAlpha))
+    record_or_run(move |ctx| ctx.blend_equation(Some(buf), modeRGB, modeAlpha))
 }
 
 #[no_mangle]
@@ -148,17 +148,17 @@ pub extern "C" fn glBlendEquationSeparateiARB(buf: GLuint, modeRGB: GLenum, mode
 
 #[no_mangle]
 pub extern "C" fn glLogicOp(opcode: GLenum) {
-    with_context((), |ctx| ctx.logic_op(opcode))
+    record_or_run(move |ctx| ctx.logic_op(opcode))
 }
 
 #[no_mangle]
 pub extern "C" fn glFogf(pname: GLenum, param: GLfloat) {
-    with_context((), |ctx| ctx.fog(pname, [param, 0.0, 0.0, 0.0]))
+    record_or_run(move |ctx| ctx.fog(pname, [param, 0.0, 0.0, 0.0]))
 }
 
 #[no_mangle]
 pub extern "C" fn glFogi(pname: GLenum, param: GLint) {
-    with_context((), |ctx| ctx.fog(pname, [param as GLfloat, 0.0, 0.0, 0.0]))
+    record_or_run(move |ctx| ctx.fog(pname, [param as GLfloat, 0.0, 0.0, 0.0]))
 }
 
 /// The number of values glFog*v reads for `pname`: four for the color, else one.
@@ -193,7 +193,7 @@ unsafe fn read_fog_params<T: Copy + Default>(pname: GLenum, params: *const T) ->
 pub unsafe extern "C" fn glFogfv(pname: GLenum, params: *const GLfloat) {
     // SAFETY: the GL contract of glFogfv, passed on to our caller.
     if let Some(values) = unsafe { read_fog_params(pname, params) } {
-        with_context((), |ctx| ctx.fog(pname, values))
+        record_or_run(move |ctx| ctx.fog(pname, values))
     }
 }
 
@@ -203,6 +203,6 @@ pub unsafe extern "C" fn glFogfv(pname: GLenum, params: *const GLfloat) {
 pub unsafe extern "C" fn glFogiv(pname: GLenum, params: *const GLint) {
     // SAFETY: the GL contract of glFogiv, passed on to our caller.
     if let Some(values) = unsafe { read_fog_params(pname, params) } {
-        with_context((), |ctx: &mut Context| ctx.fog_integers(pname, values))
+        record_or_run(move |ctx: &mut Context| ctx.fog_integers(pname, values))
     }
 }

@@ -1,6 +1,6 @@
 //! Entry points for lights, the light model, materials and color material.
 use super::types::*;
-use super::{guard, with_context};
+use super::{guard, record_or_run};
 use crate::context::lighting::{
     int_params_to_float, light_model_param_count, light_param_count, material_param_count, values_to_integers,
 };
@@ -34,12 +34,12 @@ unsafe fn write_params<T: Copy>(params: *mut T, values: &[T]) {
 
 #[no_mangle]
 pub extern "C" fn glLightf(light: GLenum, pname: GLenum, param: GLfloat) {
-    with_context((), |ctx| ctx.light_scalar(light, pname, param))
+    record_or_run(move |ctx| ctx.light_scalar(light, pname, param))
 }
 
 #[no_mangle]
 pub extern "C" fn glLighti(light: GLenum, pname: GLenum, param: GLint) {
-    with_context((), |ctx| ctx.light_scalar(light, pname, param as GLfloat))
+    record_or_run(move |ctx| ctx.light_scalar(light, pname, param as GLfloat))
 }
 
 /// # Safety
@@ -48,7 +48,7 @@ pub extern "C" fn glLighti(light: GLenum, pname: GLenum, param: GLint) {
 pub unsafe extern "C" fn glLightfv(light: GLenum, pname: GLenum, params: *const GLfloat) {
     // SAFETY: forwarded contract of this entry point.
     if let Some(p) = unsafe { read_params(params, light_param_count(pname)) } {
-        with_context((), |ctx| ctx.light(light, pname, &p))
+        record_or_run(move |ctx| ctx.light(light, pname, &p))
     }
 }
 
@@ -58,7 +58,7 @@ pub unsafe extern "C" fn glLightfv(light: GLenum, pname: GLenum, params: *const 
 pub unsafe extern "C" fn glLightiv(light: GLenum, pname: GLenum, params: *const GLint) {
     // SAFETY: forwarded contract of this entry point.
     if let Some(p) = unsafe { read_params(params, light_param_count(pname)) } {
-        with_context((), |ctx| ctx.light(light, pname, &int_params_to_float(pname, &p)))
+        record_or_run(move |ctx| ctx.light(light, pname, &int_params_to_float(pname, &p)))
     }
 }
 
@@ -82,12 +82,12 @@ pub unsafe extern "C" fn glGetLightiv(light: GLenum, pname: GLenum, params: *mut
 
 #[no_mangle]
 pub extern "C" fn glLightModelf(pname: GLenum, param: GLfloat) {
-    with_context((), |ctx| ctx.light_model_scalar(pname, param))
+    record_or_run(move |ctx| ctx.light_model_scalar(pname, param))
 }
 
 #[no_mangle]
 pub extern "C" fn glLightModeli(pname: GLenum, param: GLint) {
-    with_context((), |ctx| ctx.light_model_scalar(pname, param as GLfloat))
+    record_or_run(move |ctx| ctx.light_model_scalar(pname, param as GLfloat))
 }
 
 /// # Safety
@@ -96,7 +96,7 @@ pub extern "C" fn glLightModeli(pname: GLenum, param: GLint) {
 pub unsafe extern "C" fn glLightModelfv(pname: GLenum, params: *const GLfloat) {
     // SAFETY: forwarded contract of this entry point.
     if let Some(p) = unsafe { read_params(params, light_model_param_count(pname)) } {
-        with_context((), |ctx| ctx.light_model(pname, &p))
+        record_or_run(move |ctx| ctx.light_model(pname, &p))
     }
 }
 
@@ -106,18 +106,18 @@ pub unsafe extern "C" fn glLightModelfv(pname: GLenum, params: *const GLfloat) {
 pub unsafe extern "C" fn glLightModeliv(pname: GLenum, params: *const GLint) {
     // SAFETY: forwarded contract of this entry point.
     if let Some(p) = unsafe { read_params(params, light_model_param_count(pname)) } {
-        with_context((), |ctx| ctx.light_model(pname, &int_params_to_float(pname, &p)))
+        record_or_run(move |ctx| ctx.light_model(pname, &int_params_to_float(pname, &p)))
     }
 }
 
 #[no_mangle]
 pub extern "C" fn glMaterialf(face: GLenum, pname: GLenum, param: GLfloat) {
-    with_context((), |ctx| ctx.material_scalar(face, pname, param))
+    record_or_run(move |ctx| ctx.material_scalar(face, pname, param))
 }
 
 #[no_mangle]
 pub extern "C" fn glMateriali(face: GLenum, pname: GLenum, param: GLint) {
-    with_context((), |ctx| ctx.material_scalar(face, pname, param as GLfloat))
+    record_or_run(move |ctx| ctx.material_scalar(face, pname, param as GLfloat))
 }
 
 /// # Safety
@@ -126,7 +126,7 @@ pub extern "C" fn glMateriali(face: GLenum, pname: GLenum, param: GLint) {
 pub unsafe extern "C" fn glMaterialfv(face: GLenum, pname: GLenum, params: *const GLfloat) {
     // SAFETY: forwarded contract of this entry point.
     if let Some(p) = unsafe { read_params(params, material_param_count(pname)) } {
-        with_context((), |ctx| ctx.material(face, pname, &p))
+        record_or_run(move |ctx| ctx.material(face, pname, &p))
     }
 }
 
@@ -136,7 +136,7 @@ pub unsafe extern "C" fn glMaterialfv(face: GLenum, pname: GLenum, params: *cons
 pub unsafe extern "C" fn glMaterialiv(face: GLenum, pname: GLenum, params: *const GLint) {
     // SAFETY: forwarded contract of this entry point.
     if let Some(p) = unsafe { read_params(params, material_param_count(pname)) } {
-        with_context((), |ctx| ctx.material(face, pname, &int_params_to_float(pname, &p)))
+        record_or_run(move |ctx| ctx.material(face, pname, &int_params_to_float(pname, &p)))
     }
 }
 
@@ -160,7 +160,7 @@ pub unsafe extern "C" fn glGetMaterialiv(face: GLenum, pname: GLenum, params: *m
 
 #[no_mangle]
 pub extern "C" fn glColorMaterial(face: GLenum, mode: GLenum) {
-    with_context((), |ctx| ctx.color_material(face, mode))
+    record_or_run(move |ctx| ctx.color_material(face, mode))
 }
 
 /// Runs a query returning a vector; empty when there is no context.

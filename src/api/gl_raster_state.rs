@@ -1,17 +1,17 @@
 //! Entry points for the rasterization state: shading, faces, polygon modes and offset, lines,
 //! points and the polygon stipple.
 use super::types::*;
-use super::with_context;
+use super::{record_or_run, with_context};
 use crate::context::Context;
 
 #[no_mangle]
 pub extern "C" fn glShadeModel(mode: GLenum) {
-    with_context((), |ctx| ctx.shade_model(mode))
+    record_or_run(move |ctx| ctx.shade_model(mode))
 }
 
 #[no_mangle]
 pub extern "C" fn glProvokingVertex(mode: GLenum) {
-    with_context((), |ctx| ctx.provoking_vertex(mode))
+    record_or_run(move |ctx| ctx.provoking_vertex(mode))
 }
 
 #[no_mangle]
@@ -21,27 +21,27 @@ pub extern "C" fn glProvokingVertexEXT(mode: GLenum) {
 
 #[no_mangle]
 pub extern "C" fn glFrontFace(mode: GLenum) {
-    with_context((), |ctx| ctx.front_face(mode))
+    record_or_run(move |ctx| ctx.front_face(mode))
 }
 
 #[no_mangle]
 pub extern "C" fn glCullFace(mode: GLenum) {
-    with_context((), |ctx| ctx.cull_face(mode))
+    record_or_run(move |ctx| ctx.cull_face(mode))
 }
 
 #[no_mangle]
 pub extern "C" fn glPolygonMode(face: GLenum, mode: GLenum) {
-    with_context((), |ctx| ctx.polygon_mode(face, mode))
+    record_or_run(move |ctx| ctx.polygon_mode(face, mode))
 }
 
 #[no_mangle]
 pub extern "C" fn glPolygonOffset(factor: GLfloat, units: GLfloat) {
-    with_context((), |ctx| ctx.polygon_offset(factor, units, 0.0))
+    record_or_run(move |ctx| ctx.polygon_offset(factor, units, 0.0))
 }
 
 #[no_mangle]
 pub extern "C" fn glPolygonOffsetClamp(factor: GLfloat, units: GLfloat, clamp: GLfloat) {
-    with_context((), |ctx| ctx.polygon_offset(factor, units, clamp))
+    record_or_run(move |ctx| ctx.polygon_offset(factor, units, clamp))
 }
 
 #[no_mangle]
@@ -51,22 +51,22 @@ pub extern "C" fn glPolygonOffsetClampEXT(factor: GLfloat, units: GLfloat, clamp
 
 #[no_mangle]
 pub extern "C" fn glLineWidth(width: GLfloat) {
-    with_context((), |ctx| ctx.line_width(width))
+    record_or_run(move |ctx| ctx.line_width(width))
 }
 
 #[no_mangle]
 pub extern "C" fn glLineStipple(factor: GLint, pattern: GLushort) {
-    with_context((), |ctx| ctx.line_stipple(factor, pattern))
+    record_or_run(move |ctx| ctx.line_stipple(factor, pattern))
 }
 
 #[no_mangle]
 pub extern "C" fn glPointSize(size: GLfloat) {
-    with_context((), |ctx| ctx.point_size(size))
+    record_or_run(move |ctx| ctx.point_size(size))
 }
 
 #[no_mangle]
 pub extern "C" fn glPointParameterf(pname: GLenum, param: GLfloat) {
-    with_context((), |ctx| ctx.point_parameter(pname, [param, 0.0, 0.0]))
+    record_or_run(move |ctx| ctx.point_parameter(pname, [param, 0.0, 0.0]))
 }
 
 #[no_mangle]
@@ -97,7 +97,7 @@ unsafe fn read_point_params<T: Copy + Into<f64>>(pname: GLenum, params: *const T
 pub unsafe extern "C" fn glPointParameterfv(pname: GLenum, params: *const GLfloat) {
     // SAFETY: forwarded contract of this entry point.
     if let Some(values) = unsafe { read_point_params(pname, params) } {
-        with_context((), |ctx| ctx.point_parameter(pname, values))
+        record_or_run(move |ctx| ctx.point_parameter(pname, values))
     }
 }
 
@@ -107,7 +107,7 @@ pub unsafe extern "C" fn glPointParameterfv(pname: GLenum, params: *const GLfloa
 pub unsafe extern "C" fn glPointParameteriv(pname: GLenum, params: *const GLint) {
     // SAFETY: forwarded contract of this entry point.
     if let Some(values) = unsafe { read_point_params(pname, params) } {
-        with_context((), |ctx| ctx.point_parameter(pname, values))
+        record_or_run(move |ctx| ctx.point_parameter(pname, values))
     }
 }
 
@@ -143,14 +143,15 @@ pub unsafe extern "C" fn glPointParameterfvEXT(pname: GLenum, params: *const GLf
 #[no_mangle]
 pub unsafe extern "C" fn glPolygonStipple(mask: *const GLubyte) {
     with_context((), |ctx| {
-        ctx.polygon_stipple(|span| {
+        let pattern = ctx.unpack_polygon_stipple(|span| {
             if mask.is_null() {
                 return None;
             }
             // SAFETY: the context computed `span` from the unpack parameters as the bytes the
             // 32×32 bitmap occupies; by glPolygonStipple's contract the caller's image holds them.
             Some(unsafe { std::slice::from_raw_parts(mask.add(span.start), span.len()) })
-        })
+        });
+        ctx.record_or_run(move |ctx| ctx.set_polygon_stipple(pattern))
     })
 }
 

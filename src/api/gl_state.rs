@@ -1,15 +1,15 @@
 //! Entry points for capabilities, errors, queries, hints, attribute stacks and flushing.
 use super::types::*;
-use super::{guard, with_context};
+use super::{guard, record_or_run, with_context};
 
 #[no_mangle]
 pub extern "C" fn glEnable(cap: GLenum) {
-    with_context((), |ctx| ctx.set_capability(cap, true))
+    record_or_run(move |ctx| ctx.set_capability(cap, true))
 }
 
 #[no_mangle]
 pub extern "C" fn glDisable(cap: GLenum) {
-    with_context((), |ctx| ctx.set_capability(cap, false))
+    record_or_run(move |ctx| ctx.set_capability(cap, false))
 }
 
 #[no_mangle]
@@ -19,12 +19,12 @@ pub extern "C" fn glIsEnabled(cap: GLenum) -> GLboolean {
 
 #[no_mangle]
 pub extern "C" fn glEnablei(target: GLenum, index: GLuint) {
-    with_context((), |ctx| ctx.set_capability_indexed(target, index, true))
+    record_or_run(move |ctx| ctx.set_capability_indexed(target, index, true))
 }
 
 #[no_mangle]
 pub extern "C" fn glDisablei(target: GLenum, index: GLuint) {
-    with_context((), |ctx| ctx.set_capability_indexed(target, index, false))
+    record_or_run(move |ctx| ctx.set_capability_indexed(target, index, false))
 }
 
 #[no_mangle]
@@ -61,12 +61,12 @@ pub extern "C" fn glGetString(name: GLenum) -> *const GLubyte {
 
 #[no_mangle]
 pub extern "C" fn glHint(target: GLenum, mode: GLenum) {
-    with_context((), |ctx| ctx.hint(target, mode))
+    record_or_run(move |ctx| ctx.hint(target, mode))
 }
 
 #[no_mangle]
 pub extern "C" fn glClampColor(target: GLenum, clamp: GLenum) {
-    with_context((), |ctx| ctx.clamp_color(target, clamp))
+    record_or_run(move |ctx| ctx.clamp_color(target, clamp))
 }
 
 #[no_mangle]
@@ -94,12 +94,12 @@ pub extern "C" fn glFinish() {
 
 #[no_mangle]
 pub extern "C" fn glPushAttrib(mask: GLbitfield) {
-    with_context((), |ctx| ctx.push_attrib(mask))
+    record_or_run(move |ctx| ctx.push_attrib(mask))
 }
 
 #[no_mangle]
 pub extern "C" fn glPopAttrib() {
-    with_context((), |ctx| ctx.pop_attrib())
+    record_or_run(move |ctx| ctx.pop_attrib())
 }
 
 #[no_mangle]

@@ -2,7 +2,8 @@
 //! texture coordinate generation. Compressed images are refused (no compressed format is
 //! supported or advertised).
 use super::types::*;
-use super::{guard, with_context};
+use super::{guard, record_or_run, with_context};
+use std::ops::Range;
 use crate::context::texture::{ImageArgs, Region};
 
 /// `n` elements at `ptr`, or none for NULL or a non-positive count.
@@ -29,6 +30,45 @@ unsafe fn image_bytes<'a>(pixels: *const GLvoid, span: std::ops::Range<usize>) -
         .then(|| unsafe { std::slice::from_raw_parts((pixels as *const u8).add(span.start), span.len()) })
 }
 
+/// Runs an image command now, or, while a display list is compiled, records it with a copy
+/// of the client image read under the unpack state of this moment (GL 2.1 §5.4), which is
+/// restored around the command when the list runs.
+///
+/// # Safety
+/// A non-null `pixels` must hold the image as the unpack parameters describe it.
+unsafe fn image_command(
+    pixels: *const GLvoid,
+    dims: usize,
+    format: GLenum,
+    ty: GLenum,
+    size: [GLsizei; 3],
+    run: impl for<'b> Fn(&mut crate::context::Context, &'b dyn Fn(Range<usize>) -> Option<&'b [u8]>)
+        + Send
+        + Sync
+        + 'static,
+) {
+    with_context((), |ctx| {
+        if !ctx.lists.compiling() {
+            // SAFETY: forwarded contract.
+            return run(ctx, &|span| unsafe { image_bytes(pixels, span) });
+        }
+        let unpack = ctx.pixel_store.unpack;
+        let copy = ctx.client_image_span(dims, format, ty, size).and_then(|span| {
+            // SAFETY: forwarded contract.
+            unsafe { image_bytes(pixels, span.clone()) }.map(|bytes| (span.start, bytes.to_vec()))
+        });
+        ctx.record_or_run(move |ctx| {
+            let saved = std::mem::replace(&mut ctx.pixel_store.unpack, unpack);
+            let read = |span: Range<usize>| {
+                let (start, bytes) = copy.as_ref()?;
+                bytes.get(span.start.checked_sub(*start)?..span.end.checked_sub(*start)?)
+            };
+            run(ctx, &read);
+            ctx.pixel_store.unpack = saved;
+        })
+    })
+}
+
 /// # Safety
 /// `textures` must have room for `n` names.
 #[no_mangle]
@@ -53,7 +93,7 @@ pub unsafe extern "C" fn glDeleteTextures(n: GLsizei, textures: *const GLuint) {
 
 #[no_mangle]
 pub extern "C" fn glBindTexture(target: GLenum, texture: GLuint) {
-    with_context((), |ctx| ctx.bind_texture(target, texture))
+    record_or_run(move |ctx| ctx.bind_texture(target, texture))
 }
 
 #[no_mangle]
@@ -100,7 +140,11 @@ pub unsafe extern "C" fn glTexImage1D(
 ) {
     let a = ImageArgs { target, level, internal_format: internalformat, width, height: 1, depth: 1, border };
     // SAFETY: forwarded contract.
-    with_context((), |ctx| ctx.tex_image(1, a, format, type_, |span| unsafe { image_bytes(pixels, span) }))
+    unsafe {
+        image_command(pixels, 1, format, type_, [a.width, a.height, a.depth], move |ctx, data| {
+            ctx.tex_image(1, a, format, type_, data)
+        })
+    }
 }
 
 /// # Safety
@@ -120,7 +164,11 @@ pub unsafe extern "C" fn glTexImage2D(
 ) {
     let a = ImageArgs { target, level, internal_format: internalformat, width, height, depth: 1, border };
     // SAFETY: forwarded contract.
-    with_context((), |ctx| ctx.tex_image(2, a, format, type_, |span| unsafe { image_bytes(pixels, span) }))
+    unsafe {
+        image_command(pixels, 2, format, type_, [a.width, a.height, a.depth], move |ctx, data| {
+            ctx.tex_image(2, a, format, type_, data)
+        })
+    }
 }
 
 /// # Safety
@@ -141,7 +189,11 @@ pub unsafe extern "C" fn glTexImage3D(
 ) {
     let a = ImageArgs { target, level, internal_format: internalformat, width, height, depth, border };
     // SAFETY: forwarded contract.
-    with_context((), |ctx| ctx.tex_image(3, a, format, type_, |span| unsafe { image_bytes(pixels, span) }))
+    unsafe {
+        image_command(pixels, 3, format, type_, [a.width, a.height, a.depth], move |ctx, data| {
+            ctx.tex_image(3, a, format, type_, data)
+        })
+    }
 }
 
 /// # Safety
@@ -159,9 +211,11 @@ pub unsafe extern "C" fn glTexSubImage1D(
 ) {
     let r = Region { x: xoffset, y: 0, z: 0, width, height: 1, depth: 1 };
     // SAFETY: forwarded contract.
-    with_context((), |ctx| {
-        ctx.tex_sub_image(1, target, level, r, format, type_, |span| unsafe { image_bytes(pixels, span) })
-    })
+    unsafe {
+        image_command(pixels, 1, format, type_, [r.width, r.height, r.depth], move |ctx, data| {
+            ctx.tex_sub_image(1, target, level, r, format, type_, data)
+        })
+    }
 }
 
 /// # Safety
@@ -181,9 +235,11 @@ pub unsafe extern "C" fn glTexSubImage2D(
 ) {
     let r = Region { x: xoffset, y: yoffset, z: 0, width, height, depth: 1 };
     // SAFETY: forwarded contract.
-    with_context((), |ctx| {
-        ctx.tex_sub_image(2, target, level, r, format, type_, |span| unsafe { image_bytes(pixels, span) })
-    })
+    unsafe {
+        image_command(pixels, 2, format, type_, [r.width, r.height, r.depth], move |ctx, data| {
+            ctx.tex_sub_image(2, target, level, r, format, type_, data)
+        })
+    }
 }
 
 /// # Safety
@@ -205,9 +261,11 @@ pub unsafe extern "C" fn glTexSubImage3D(
 ) {
     let r = Region { x: xoffset, y: yoffset, z: zoffset, width, height, depth };
     // SAFETY: forwarded contract.
-    with_context((), |ctx| {
-        ctx.tex_sub_image(3, target, level, r, format, type_, |span| unsafe { image_bytes(pixels, span) })
-    })
+    unsafe {
+        image_command(pixels, 3, format, type_, [r.width, r.height, r.depth], move |ctx, data| {
+            ctx.tex_sub_image(3, target, level, r, format, type_, data)
+        })
+    }
 }
 
 #[no_mangle]
@@ -222,7 +280,7 @@ pub extern "C" fn glCopyTexImage1D(
     border: GLint,
 ) {
     let a = ImageArgs { target, level, internal_format: internalformat as GLint, width, height: 1, depth: 1, border };
-    with_context((), |ctx| ctx.copy_tex_image(1, a, x, y))
+    record_or_run(move |ctx| ctx.copy_tex_image(1, a, x, y))
 }
 
 #[no_mangle]
@@ -238,7 +296,7 @@ pub extern "C" fn glCopyTexImage2D(
     border: GLint,
 ) {
     let a = ImageArgs { target, level, internal_format: internalformat as GLint, width, height, depth: 1, border };
-    with_context((), |ctx| ctx.copy_tex_image(2, a, x, y))
+    record_or_run(move |ctx| ctx.copy_tex_image(2, a, x, y))
 }
 
 #[no_mangle]
@@ -251,7 +309,7 @@ pub extern "C" fn glCopyTexSubImage1D(
     width: GLsizei,
 ) {
     let r = Region { x: xoffset, y: 0, z: 0, width, height: 1, depth: 1 };
-    with_context((), |ctx| ctx.copy_tex_sub_image(1, target, level, r, x, y))
+    record_or_run(move |ctx| ctx.copy_tex_sub_image(1, target, level, r, x, y))
 }
 
 #[no_mangle]
@@ -267,7 +325,7 @@ pub extern "C" fn glCopyTexSubImage2D(
     height: GLsizei,
 ) {
     let r = Region { x: xoffset, y: yoffset, z: 0, width, height, depth: 1 };
-    with_context((), |ctx| ctx.copy_tex_sub_image(2, target, level, r, x, y))
+    record_or_run(move |ctx| ctx.copy_tex_sub_image(2, target, level, r, x, y))
 }
 
 #[no_mangle]
@@ -284,7 +342,7 @@ pub extern "C" fn glCopyTexSubImage3D(
     height: GLsizei,
 ) {
     let r = Region { x: xoffset, y: yoffset, z: zoffset, width, height, depth: 1 };
-    with_context((), |ctx| ctx.copy_tex_sub_image(3, target, level, r, x, y))
+    record_or_run(move |ctx| ctx.copy_tex_sub_image(3, target, level, r, x, y))
 }
 
 /// # Safety
@@ -349,12 +407,12 @@ pub unsafe extern "C" fn glGetTexLevelParameterfv(target: GLenum, level: GLint, 
 
 #[no_mangle]
 pub extern "C" fn glTexParameterf(target: GLenum, pname: GLenum, param: GLfloat) {
-    with_context((), |ctx| ctx.tex_parameter(target, pname, &[param], false))
+    record_or_run(move |ctx| ctx.tex_parameter(target, pname, &[param], false))
 }
 
 #[no_mangle]
 pub extern "C" fn glTexParameteri(target: GLenum, pname: GLenum, param: GLint) {
-    with_context((), |ctx| ctx.tex_parameter(target, pname, &[param as f32], true))
+    record_or_run(move |ctx| ctx.tex_parameter(target, pname, &[param as f32], true))
 }
 
 /// How many values a texture or environment parameter takes.
@@ -373,7 +431,7 @@ fn count(pname: GLenum) -> GLsizei {
 pub unsafe extern "C" fn glTexParameterfv(target: GLenum, pname: GLenum, params: *const GLfloat) {
     // SAFETY: forwarded contract.
     let v = unsafe { slice(params, count(pname)) };
-    with_context((), |ctx| ctx.tex_parameter(target, pname, v, false))
+    record_or_run(move |ctx| ctx.tex_parameter(target, pname, &v, false))
 }
 
 /// # Safety
@@ -382,7 +440,7 @@ pub unsafe extern "C" fn glTexParameterfv(target: GLenum, pname: GLenum, params:
 pub unsafe extern "C" fn glTexParameteriv(target: GLenum, pname: GLenum, params: *const GLint) {
     // SAFETY: forwarded contract.
     let v: Vec<f32> = unsafe { slice(params, count(pname)) }.iter().map(|&x| x as f32).collect();
-    with_context((), |ctx| ctx.tex_parameter(target, pname, &v, true))
+    record_or_run(move |ctx| ctx.tex_parameter(target, pname, &v, true))
 }
 
 /// # Safety
@@ -426,12 +484,12 @@ unsafe fn write<S: Copy, T>(out: *mut T, values: &[S], convert: impl Fn(S) -> T)
 
 #[no_mangle]
 pub extern "C" fn glTexEnvf(target: GLenum, pname: GLenum, param: GLfloat) {
-    with_context((), |ctx| ctx.tex_env(target, pname, &[param], false))
+    record_or_run(move |ctx| ctx.tex_env(target, pname, &[param], false))
 }
 
 #[no_mangle]
 pub extern "C" fn glTexEnvi(target: GLenum, pname: GLenum, param: GLint) {
-    with_context((), |ctx| ctx.tex_env(target, pname, &[param as f32], true))
+    record_or_run(move |ctx| ctx.tex_env(target, pname, &[param as f32], true))
 }
 
 /// # Safety
@@ -440,7 +498,7 @@ pub extern "C" fn glTexEnvi(target: GLenum, pname: GLenum, param: GLint) {
 pub unsafe extern "C" fn glTexEnvfv(target: GLenum, pname: GLenum, params: *const GLfloat) {
     // SAFETY: forwarded contract.
     let v = unsafe { slice(params, count(pname)) };
-    with_context((), |ctx| ctx.tex_env(target, pname, v, false))
+    record_or_run(move |ctx| ctx.tex_env(target, pname, &v, false))
 }
 
 /// # Safety
@@ -449,7 +507,7 @@ pub unsafe extern "C" fn glTexEnvfv(target: GLenum, pname: GLenum, params: *cons
 pub unsafe extern "C" fn glTexEnviv(target: GLenum, pname: GLenum, params: *const GLint) {
     // SAFETY: forwarded contract.
     let v: Vec<f32> = unsafe { slice(params, count(pname)) }.iter().map(|&x| x as f32).collect();
-    with_context((), |ctx| ctx.tex_env(target, pname, &v, true))
+    record_or_run(move |ctx| ctx.tex_env(target, pname, &v, true))
 }
 
 /// # Safety
@@ -475,17 +533,17 @@ pub unsafe extern "C" fn glGetTexEnviv(target: GLenum, pname: GLenum, params: *m
 
 #[no_mangle]
 pub extern "C" fn glTexGend(coord: GLenum, pname: GLenum, param: GLdouble) {
-    with_context((), |ctx| ctx.tex_gen(coord, pname, &[param], false))
+    record_or_run(move |ctx| ctx.tex_gen(coord, pname, &[param], false))
 }
 
 #[no_mangle]
 pub extern "C" fn glTexGenf(coord: GLenum, pname: GLenum, param: GLfloat) {
-    with_context((), |ctx| ctx.tex_gen(coord, pname, &[param as f64], false))
+    record_or_run(move |ctx| ctx.tex_gen(coord, pname, &[param as f64], false))
 }
 
 #[no_mangle]
 pub extern "C" fn glTexGeni(coord: GLenum, pname: GLenum, param: GLint) {
-    with_context((), |ctx| ctx.tex_gen(coord, pname, &[param as f64], false))
+    record_or_run(move |ctx| ctx.tex_gen(coord, pname, &[param as f64], false))
 }
 
 /// Values a texgen parameter takes.
@@ -503,7 +561,7 @@ fn gen_count(pname: GLenum) -> GLsizei {
 pub unsafe extern "C" fn glTexGendv(coord: GLenum, pname: GLenum, params: *const GLdouble) {
     // SAFETY: forwarded contract.
     let v = unsafe { slice(params, gen_count(pname)) };
-    with_context((), |ctx| ctx.tex_gen(coord, pname, v, true))
+    record_or_run(move |ctx| ctx.tex_gen(coord, pname, &v, true))
 }
 
 /// # Safety
@@ -512,7 +570,7 @@ pub unsafe extern "C" fn glTexGendv(coord: GLenum, pname: GLenum, params: *const
 pub unsafe extern "C" fn glTexGenfv(coord: GLenum, pname: GLenum, params: *const GLfloat) {
     // SAFETY: forwarded contract.
     let v: Vec<f64> = unsafe { slice(params, gen_count(pname)) }.iter().map(|&x| x as f64).collect();
-    with_context((), |ctx| ctx.tex_gen(coord, pname, &v, true))
+    record_or_run(move |ctx| ctx.tex_gen(coord, pname, &v, true))
 }
 
 /// # Safety
@@ -521,7 +579,7 @@ pub unsafe extern "C" fn glTexGenfv(coord: GLenum, pname: GLenum, params: *const
 pub unsafe extern "C" fn glTexGeniv(coord: GLenum, pname: GLenum, params: *const GLint) {
     // SAFETY: forwarded contract.
     let v: Vec<f64> = unsafe { slice(params, gen_count(pname)) }.iter().map(|&x| x as f64).collect();
-    with_context((), |ctx| ctx.tex_gen(coord, pname, &v, true))
+    record_or_run(move |ctx| ctx.tex_gen(coord, pname, &v, true))
 }
 
 /// # Safety

@@ -1,6 +1,6 @@
 //! Entry points for matrices, glActiveTexture and user clip planes.
 use super::types::*;
-use super::with_context;
+use super::{record_or_run, with_context};
 
 /// Reads the 16 elements a matrix pointer names; `None` for NULL.
 ///
@@ -22,12 +22,12 @@ fn to_float(m: [GLdouble; 16]) -> [GLfloat; 16] {
 
 #[no_mangle]
 pub extern "C" fn glMatrixMode(mode: GLenum) {
-    with_context((), |ctx| ctx.matrix_mode(mode))
+    record_or_run(move |ctx| ctx.matrix_mode(mode))
 }
 
 #[no_mangle]
 pub extern "C" fn glActiveTexture(texture: GLenum) {
-    with_context((), |ctx| ctx.active_texture(texture))
+    record_or_run(move |ctx| ctx.active_texture(texture))
 }
 
 #[no_mangle]
@@ -37,17 +37,17 @@ pub extern "C" fn glActiveTextureARB(texture: GLenum) {
 
 #[no_mangle]
 pub extern "C" fn glPushMatrix() {
-    with_context((), |ctx| ctx.push_matrix())
+    record_or_run(move |ctx| ctx.push_matrix())
 }
 
 #[no_mangle]
 pub extern "C" fn glPopMatrix() {
-    with_context((), |ctx| ctx.pop_matrix())
+    record_or_run(move |ctx| ctx.pop_matrix())
 }
 
 #[no_mangle]
 pub extern "C" fn glLoadIdentity() {
-    with_context((), |ctx| ctx.load_identity())
+    record_or_run(move |ctx| ctx.load_identity())
 }
 
 /// # Safety
@@ -56,7 +56,7 @@ pub extern "C" fn glLoadIdentity() {
 pub unsafe extern "C" fn glLoadMatrixf(m: *const GLfloat) {
     // SAFETY: forwarded contract of this entry point.
     if let Some(m) = unsafe { read_matrix(m) } {
-        with_context((), |ctx| ctx.load_matrix(&m))
+        record_or_run(move |ctx| ctx.load_matrix(&m))
     }
 }
 
@@ -66,7 +66,7 @@ pub unsafe extern "C" fn glLoadMatrixf(m: *const GLfloat) {
 pub unsafe extern "C" fn glLoadMatrixd(m: *const GLdouble) {
     // SAFETY: forwarded contract of this entry point.
     if let Some(m) = unsafe { read_matrix(m) } {
-        with_context((), |ctx| ctx.load_matrix(&to_float(m)))
+        record_or_run(move |ctx| ctx.load_matrix(&to_float(m)))
     }
 }
 
@@ -76,7 +76,7 @@ pub unsafe extern "C" fn glLoadMatrixd(m: *const GLdouble) {
 pub unsafe extern "C" fn glMultMatrixf(m: *const GLfloat) {
     // SAFETY: forwarded contract of this entry point.
     if let Some(m) = unsafe { read_matrix(m) } {
-        with_context((), |ctx| ctx.mult_matrix(&m))
+        record_or_run(move |ctx| ctx.mult_matrix(&m))
     }
 }
 
@@ -86,7 +86,7 @@ pub unsafe extern "C" fn glMultMatrixf(m: *const GLfloat) {
 pub unsafe extern "C" fn glMultMatrixd(m: *const GLdouble) {
     // SAFETY: forwarded contract of this entry point.
     if let Some(m) = unsafe { read_matrix(m) } {
-        with_context((), |ctx| ctx.mult_matrix(&to_float(m)))
+        record_or_run(move |ctx| ctx.mult_matrix(&to_float(m)))
     }
 }
 
@@ -99,7 +99,7 @@ pub unsafe extern "C" fn glMultMatrixd(m: *const GLdouble) {
 pub unsafe extern "C" fn glLoadTransposeMatrixf(m: *const GLfloat) {
     // SAFETY: forwarded contract of this entry point.
     if let Some(m) = unsafe { read_matrix(m) } {
-        with_context((), |ctx| ctx.load_transpose_matrix(&m))
+        record_or_run(move |ctx| ctx.load_transpose_matrix(&m))
     }
 }
 
@@ -112,7 +112,7 @@ pub unsafe extern "C" fn glLoadTransposeMatrixf(m: *const GLfloat) {
 pub unsafe extern "C" fn glLoadTransposeMatrixd(m: *const GLdouble) {
     // SAFETY: forwarded contract of this entry point.
     if let Some(m) = unsafe { read_matrix(m) } {
-        with_context((), |ctx| ctx.load_transpose_matrix(&to_float(m)))
+        record_or_run(move |ctx| ctx.load_transpose_matrix(&to_float(m)))
     }
 }
 
@@ -125,7 +125,7 @@ pub unsafe extern "C" fn glLoadTransposeMatrixd(m: *const GLdouble) {
 pub unsafe extern "C" fn glMultTransposeMatrixf(m: *const GLfloat) {
     // SAFETY: forwarded contract of this entry point.
     if let Some(m) = unsafe { read_matrix(m) } {
-        with_context((), |ctx| ctx.mult_transpose_matrix(&m))
+        record_or_run(move |ctx| ctx.mult_transpose_matrix(&m))
     }
 }
 
@@ -138,7 +138,7 @@ pub unsafe extern "C" fn glMultTransposeMatrixf(m: *const GLfloat) {
 pub unsafe extern "C" fn glMultTransposeMatrixd(m: *const GLdouble) {
     // SAFETY: forwarded contract of this entry point.
     if let Some(m) = unsafe { read_matrix(m) } {
-        with_context((), |ctx| ctx.mult_transpose_matrix(&to_float(m)))
+        record_or_run(move |ctx| ctx.mult_transpose_matrix(&to_float(m)))
     }
 }
 
@@ -176,7 +176,7 @@ pub unsafe extern "C" fn glMultTransposeMatrixdARB(m: *const GLdouble) {
 
 #[no_mangle]
 pub extern "C" fn glRotatef(angle: GLfloat, x: GLfloat, y: GLfloat, z: GLfloat) {
-    with_context((), |ctx| ctx.rotate(angle, x, y, z))
+    record_or_run(move |ctx| ctx.rotate(angle, x, y, z))
 }
 
 #[no_mangle]
@@ -186,7 +186,7 @@ pub extern "C" fn glRotated(angle: GLdouble, x: GLdouble, y: GLdouble, z: GLdoub
 
 #[no_mangle]
 pub extern "C" fn glScalef(x: GLfloat, y: GLfloat, z: GLfloat) {
-    with_context((), |ctx| ctx.scale(x, y, z))
+    record_or_run(move |ctx| ctx.scale(x, y, z))
 }
 
 #[no_mangle]
@@ -196,7 +196,7 @@ pub extern "C" fn glScaled(x: GLdouble, y: GLdouble, z: GLdouble) {
 
 #[no_mangle]
 pub extern "C" fn glTranslatef(x: GLfloat, y: GLfloat, z: GLfloat) {
-    with_context((), |ctx| ctx.translate(x, y, z))
+    record_or_run(move |ctx| ctx.translate(x, y, z))
 }
 
 #[no_mangle]
@@ -213,7 +213,7 @@ pub extern "C" fn glFrustum(
     near_val: GLdouble,
     far_val: GLdouble,
 ) {
-    with_context((), |ctx| ctx.frustum(left, right, bottom, top, near_val, far_val))
+    record_or_run(move |ctx| ctx.frustum(left, right, bottom, top, near_val, far_val))
 }
 
 #[no_mangle]
@@ -225,7 +225,7 @@ pub extern "C" fn glOrtho(
     near_val: GLdouble,
     far_val: GLdouble,
 ) {
-    with_context((), |ctx| ctx.ortho(left, right, bottom, top, near_val, far_val))
+    record_or_run(move |ctx| ctx.ortho(left, right, bottom, top, near_val, far_val))
 }
 
 /// # Safety
@@ -237,7 +237,7 @@ pub unsafe extern "C" fn glClipPlane(plane: GLenum, equation: *const GLdouble) {
     }
     // SAFETY: GL's contract: a plane equation is 4 doubles.
     let equation = unsafe { std::ptr::read_unaligned(equation as *const [GLdouble; 4]) };
-    with_context((), |ctx| ctx.clip_plane(plane, equation))
+    record_or_run(move |ctx| ctx.clip_plane(plane, equation))
 }
 
 /// # Safety

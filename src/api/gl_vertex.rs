@@ -7,8 +7,8 @@
 //! them to the context; the vector (`v`) forms read their array and call the scalar form.
 //! Extension aliases (`EXT`, `ARB`) call the core function. The variants differ only in types
 //! and counts; they are written out one by one because cbindgen and build.rs read them.
+use super::record_or_run;
 use super::types::*;
-use super::with_context;
 use crate::vertex::components::Component;
 
 /// The `N` values a C array starts with; `None` for NULL.
@@ -26,17 +26,17 @@ unsafe fn read<T: Copy, const N: usize>(v: *const T) -> Option<[T; N]> {
 
 #[no_mangle]
 pub extern "C" fn glBegin(mode: GLenum) {
-    with_context((), |ctx| ctx.begin(mode))
+    record_or_run(move |ctx| ctx.begin(mode))
 }
 
 #[no_mangle]
 pub extern "C" fn glEnd() {
-    with_context((), |ctx| ctx.end())
+    record_or_run(move |ctx| ctx.end())
 }
 
 #[no_mangle]
 pub extern "C" fn glVertex2s(x: GLshort, y: GLshort) {
-    with_context((), |ctx| ctx.vertex([x.to_f32(), y.to_f32(), 0.0, 1.0]))
+    record_or_run(move |ctx| ctx.vertex([x.to_f32(), y.to_f32(), 0.0, 1.0]))
 }
 
 /// # Safety
@@ -51,7 +51,7 @@ pub unsafe extern "C" fn glVertex2sv(v: *const GLshort) {
 
 #[no_mangle]
 pub extern "C" fn glVertex2i(x: GLint, y: GLint) {
-    with_context((), |ctx| ctx.vertex([x.to_f32(), y.to_f32(), 0.0, 1.0]))
+    record_or_run(move |ctx| ctx.vertex([x.to_f32(), y.to_f32(), 0.0, 1.0]))
 }
 
 /// # Safety
@@ -66,7 +66,7 @@ pub unsafe extern "C" fn glVertex2iv(v: *const GLint) {
 
 #[no_mangle]
 pub extern "C" fn glVertex2f(x: GLfloat, y: GLfloat) {
-    with_context((), |ctx| ctx.vertex([x, y, 0.0, 1.0]))
+    record_or_run(move |ctx| ctx.vertex([x, y, 0.0, 1.0]))
 }
 
 /// # Safety
@@ -81,7 +81,7 @@ pub unsafe extern "C" fn glVertex2fv(v: *const GLfloat) {
 
 #[no_mangle]
 pub extern "C" fn glVertex2d(x: GLdouble, y: GLdouble) {
-    with_context((), |ctx| ctx.vertex([x.to_f32(), y.to_f32(), 0.0, 1.0]))
+    record_or_run(move |ctx| ctx.vertex([x.to_f32(), y.to_f32(), 0.0, 1.0]))
 }
 
 /// # Safety
@@ -96,7 +96,7 @@ pub unsafe extern "C" fn glVertex2dv(v: *const GLdouble) {
 
 #[no_mangle]
 pub extern "C" fn glVertex3s(x: GLshort, y: GLshort, z: GLshort) {
-    with_context((), |ctx| ctx.vertex([x.to_f32(), y.to_f32(), z.to_f32(), 1.0]))
+    record_or_run(move |ctx| ctx.vertex([x.to_f32(), y.to_f32(), z.to_f32(), 1.0]))
 }
 
 /// # Safety
@@ -111,7 +111,7 @@ pub unsafe extern "C" fn glVertex3sv(v: *const GLshort) {
 
 #[no_mangle]
 pub extern "C" fn glVertex3i(x: GLint, y: GLint, z: GLint) {
-    with_context((), |ctx| ctx.vertex([x.to_f32(), y.to_f32(), z.to_f32(), 1.0]))
+    record_or_run(move |ctx| ctx.vertex([x.to_f32(), y.to_f32(), z.to_f32(), 1.0]))
 }
 
 /// # Safety
@@ -126,7 +126,7 @@ pub unsafe extern "C" fn glVertex3iv(v: *const GLint) {
 
 #[no_mangle]
 pub extern "C" fn glVertex3f(x: GLfloat, y: GLfloat, z: GLfloat) {
-    with_context((), |ctx| ctx.vertex([x, y, z, 1.0]))
+    record_or_run(move |ctx| ctx.vertex([x, y, z, 1.0]))
 }
 
 /// # Safety
@@ -141,7 +141,7 @@ pub unsafe extern "C" fn glVertex3fv(v: *const GLfloat) {
 
 #[no_mangle]
 pub extern "C" fn glVertex3d(x: GLdouble, y: GLdouble, z: GLdouble) {
-    with_context((), |ctx| ctx.vertex([x.to_f32(), y.to_f32(), z.to_f32(), 1.0]))
+    record_or_run(move |ctx| ctx.vertex([x.to_f32(), y.to_f32(), z.to_f32(), 1.0]))
 }
 
 /// # Safety
@@ -156,7 +156,7 @@ pub unsafe extern "C" fn glVertex3dv(v: *const GLdouble) {
 
 #[no_mangle]
 pub extern "C" fn glVertex4s(x: GLshort, y: GLshort, z: GLshort, w: GLshort) {
-    with_context((), |ctx| ctx.vertex([x.to_f32(), y.to_f32(), z.to_f32(), w.to_f32()]))
+    record_or_run(move |ctx| ctx.vertex([x.to_f32(), y.to_f32(), z.to_f32(), w.to_f32()]))
 }
 
 /// # Safety
@@ -171,7 +171,7 @@ pub unsafe extern "C" fn glVertex4sv(v: *const GLshort) {
 
 #[no_mangle]
 pub extern "C" fn glVertex4i(x: GLint, y: GLint, z: GLint, w: GLint) {
-    with_context((), |ctx| ctx.vertex([x.to_f32(), y.to_f32(), z.to_f32(), w.to_f32()]))
+    record_or_run(move |ctx| ctx.vertex([x.to_f32(), y.to_f32(), z.to_f32(), w.to_f32()]))
 }
 
 /// # Safety
@@ -186,7 +186,7 @@ pub unsafe extern "C" fn glVertex4iv(v: *const GLint) {
 
 #[no_mangle]
 pub extern "C" fn glVertex4f(x: GLfloat, y: GLfloat, z: GLfloat, w: GLfloat) {
-    with_context((), |ctx| ctx.vertex([x, y, z, w]))
+    record_or_run(move |ctx| ctx.vertex([x, y, z, w]))
 }
 
 /// # Safety
@@ -201,7 +201,7 @@ pub unsafe extern "C" fn glVertex4fv(v: *const GLfloat) {
 
 #[no_mangle]
 pub extern "C" fn glVertex4d(x: GLdouble, y: GLdouble, z: GLdouble, w: GLdouble) {
-    with_context((), |ctx| ctx.vertex([x.to_f32(), y.to_f32(), z.to_f32(), w.to_f32()]))
+    record_or_run(move |ctx| ctx.vertex([x.to_f32(), y.to_f32(), z.to_f32(), w.to_f32()]))
 }
 
 /// # Safety
@@ -216,7 +216,7 @@ pub unsafe extern "C" fn glVertex4dv(v: *const GLdouble) {
 
 #[no_mangle]
 pub extern "C" fn glColor3b(red: GLbyte, green: GLbyte, blue: GLbyte) {
-    with_context((), |ctx| ctx.set_color([red.normalized(), green.normalized(), blue.normalized(), 1.0]))
+    record_or_run(move |ctx| ctx.set_color([red.normalized(), green.normalized(), blue.normalized(), 1.0]))
 }
 
 /// # Safety
@@ -231,7 +231,7 @@ pub unsafe extern "C" fn glColor3bv(v: *const GLbyte) {
 
 #[no_mangle]
 pub extern "C" fn glColor3s(red: GLshort, green: GLshort, blue: GLshort) {
-    with_context((), |ctx| ctx.set_color([red.normalized(), green.normalized(), blue.normalized(), 1.0]))
+    record_or_run(move |ctx| ctx.set_color([red.normalized(), green.normalized(), blue.normalized(), 1.0]))
 }
 
 /// # Safety
@@ -246,7 +246,7 @@ pub unsafe extern "C" fn glColor3sv(v: *const GLshort) {
 
 #[no_mangle]
 pub extern "C" fn glColor3i(red: GLint, green: GLint, blue: GLint) {
-    with_context((), |ctx| ctx.set_color([red.normalized(), green.normalized(), blue.normalized(), 1.0]))
+    record_or_run(move |ctx| ctx.set_color([red.normalized(), green.normalized(), blue.normalized(), 1.0]))
 }
 
 /// # Safety
@@ -261,7 +261,7 @@ pub unsafe extern "C" fn glColor3iv(v: *const GLint) {
 
 #[no_mangle]
 pub extern "C" fn glColor3f(red: GLfloat, green: GLfloat, blue: GLfloat) {
-    with_context((), |ctx| ctx.set_color([red.normalized(), green.normalized(), blue.normalized(), 1.0]))
+    record_or_run(move |ctx| ctx.set_color([red.normalized(), green.normalized(), blue.normalized(), 1.0]))
 }
 
 /// # Safety
@@ -276,7 +276,7 @@ pub unsafe extern "C" fn glColor3fv(v: *const GLfloat) {
 
 #[no_mangle]
 pub extern "C" fn glColor3d(red: GLdouble, green: GLdouble, blue: GLdouble) {
-    with_context((), |ctx| ctx.set_color([red.normalized(), green.normalized(), blue.normalized(), 1.0]))
+    record_or_run(move |ctx| ctx.set_color([red.normalized(), green.normalized(), blue.normalized(), 1.0]))
 }
 
 /// # Safety
@@ -291,7 +291,7 @@ pub unsafe extern "C" fn glColor3dv(v: *const GLdouble) {
 
 #[no_mangle]
 pub extern "C" fn glColor3ub(red: GLubyte, green: GLubyte, blue: GLubyte) {
-    with_context((), |ctx| ctx.set_color([red.normalized(), green.normalized(), blue.normalized(), 1.0]))
+    record_or_run(move |ctx| ctx.set_color([red.normalized(), green.normalized(), blue.normalized(), 1.0]))
 }
 
 /// # Safety
@@ -306,7 +306,7 @@ pub unsafe extern "C" fn glColor3ubv(v: *const GLubyte) {
 
 #[no_mangle]
 pub extern "C" fn glColor3us(red: GLushort, green: GLushort, blue: GLushort) {
-    with_context((), |ctx| ctx.set_color([red.normalized(), green.normalized(), blue.normalized(), 1.0]))
+    record_or_run(move |ctx| ctx.set_color([red.normalized(), green.normalized(), blue.normalized(), 1.0]))
 }
 
 /// # Safety
@@ -321,7 +321,7 @@ pub unsafe extern "C" fn glColor3usv(v: *const GLushort) {
 
 #[no_mangle]
 pub extern "C" fn glColor3ui(red: GLuint, green: GLuint, blue: GLuint) {
-    with_context((), |ctx| ctx.set_color([red.normalized(), green.normalized(), blue.normalized(), 1.0]))
+    record_or_run(move |ctx| ctx.set_color([red.normalized(), green.normalized(), blue.normalized(), 1.0]))
 }
 
 /// # Safety
@@ -336,7 +336,9 @@ pub unsafe extern "C" fn glColor3uiv(v: *const GLuint) {
 
 #[no_mangle]
 pub extern "C" fn glColor4b(red: GLbyte, green: GLbyte, blue: GLbyte, alpha: GLbyte) {
-    with_context((), |ctx| ctx.set_color([red.normalized(), green.normalized(), blue.normalized(), alpha.normalized()]))
+    record_or_run(move |ctx| {
+        ctx.set_color([red.normalized(), green.normalized(), blue.normalized(), alpha.normalized()])
+    })
 }
 
 /// # Safety
@@ -351,7 +353,9 @@ pub unsafe extern "C" fn glColor4bv(v: *const GLbyte) {
 
 #[no_mangle]
 pub extern "C" fn glColor4s(red: GLshort, green: GLshort, blue: GLshort, alpha: GLshort) {
-    with_context((), |ctx| ctx.set_color([red.normalized(), green.normalized(), blue.normalized(), alpha.normalized()]))
+    record_or_run(move |ctx| {
+        ctx.set_color([red.normalized(), green.normalized(), blue.normalized(), alpha.normalized()])
+    })
 }
 
 /// # Safety
@@ -366,7 +370,9 @@ pub unsafe extern "C" fn glColor4sv(v: *const GLshort) {
 
 #[no_mangle]
 pub extern "C" fn glColor4i(red: GLint, green: GLint, blue: GLint, alpha: GLint) {
-    with_context((), |ctx| ctx.set_color([red.normalized(), green.normalized(), blue.normalized(), alpha.normalized()]))
+    record_or_run(move |ctx| {
+        ctx.set_color([red.normalized(), green.normalized(), blue.normalized(), alpha.normalized()])
+    })
 }
 
 /// # Safety
@@ -381,7 +387,9 @@ pub unsafe extern "C" fn glColor4iv(v: *const GLint) {
 
 #[no_mangle]
 pub extern "C" fn glColor4f(red: GLfloat, green: GLfloat, blue: GLfloat, alpha: GLfloat) {
-    with_context((), |ctx| ctx.set_color([red.normalized(), green.normalized(), blue.normalized(), alpha.normalized()]))
+    record_or_run(move |ctx| {
+        ctx.set_color([red.normalized(), green.normalized(), blue.normalized(), alpha.normalized()])
+    })
 }
 
 /// # Safety
@@ -396,7 +404,9 @@ pub unsafe extern "C" fn glColor4fv(v: *const GLfloat) {
 
 #[no_mangle]
 pub extern "C" fn glColor4d(red: GLdouble, green: GLdouble, blue: GLdouble, alpha: GLdouble) {
-    with_context((), |ctx| ctx.set_color([red.normalized(), green.normalized(), blue.normalized(), alpha.normalized()]))
+    record_or_run(move |ctx| {
+        ctx.set_color([red.normalized(), green.normalized(), blue.normalized(), alpha.normalized()])
+    })
 }
 
 /// # Safety
@@ -411,7 +421,9 @@ pub unsafe extern "C" fn glColor4dv(v: *const GLdouble) {
 
 #[no_mangle]
 pub extern "C" fn glColor4ub(red: GLubyte, green: GLubyte, blue: GLubyte, alpha: GLubyte) {
-    with_context((), |ctx| ctx.set_color([red.normalized(), green.normalized(), blue.normalized(), alpha.normalized()]))
+    record_or_run(move |ctx| {
+        ctx.set_color([red.normalized(), green.normalized(), blue.normalized(), alpha.normalized()])
+    })
 }
 
 /// # Safety
@@ -426,7 +438,9 @@ pub unsafe extern "C" fn glColor4ubv(v: *const GLubyte) {
 
 #[no_mangle]
 pub extern "C" fn glColor4us(red: GLushort, green: GLushort, blue: GLushort, alpha: GLushort) {
-    with_context((), |ctx| ctx.set_color([red.normalized(), green.normalized(), blue.normalized(), alpha.normalized()]))
+    record_or_run(move |ctx| {
+        ctx.set_color([red.normalized(), green.normalized(), blue.normalized(), alpha.normalized()])
+    })
 }
 
 /// # Safety
@@ -441,7 +455,9 @@ pub unsafe extern "C" fn glColor4usv(v: *const GLushort) {
 
 #[no_mangle]
 pub extern "C" fn glColor4ui(red: GLuint, green: GLuint, blue: GLuint, alpha: GLuint) {
-    with_context((), |ctx| ctx.set_color([red.normalized(), green.normalized(), blue.normalized(), alpha.normalized()]))
+    record_or_run(move |ctx| {
+        ctx.set_color([red.normalized(), green.normalized(), blue.normalized(), alpha.normalized()])
+    })
 }
 
 /// # Safety
@@ -456,7 +472,7 @@ pub unsafe extern "C" fn glColor4uiv(v: *const GLuint) {
 
 #[no_mangle]
 pub extern "C" fn glSecondaryColor3b(red: GLbyte, green: GLbyte, blue: GLbyte) {
-    with_context((), |ctx| ctx.set_secondary_color([red.normalized(), green.normalized(), blue.normalized()]))
+    record_or_run(move |ctx| ctx.set_secondary_color([red.normalized(), green.normalized(), blue.normalized()]))
 }
 
 /// # Safety
@@ -471,7 +487,7 @@ pub unsafe extern "C" fn glSecondaryColor3bv(v: *const GLbyte) {
 
 #[no_mangle]
 pub extern "C" fn glSecondaryColor3s(red: GLshort, green: GLshort, blue: GLshort) {
-    with_context((), |ctx| ctx.set_secondary_color([red.normalized(), green.normalized(), blue.normalized()]))
+    record_or_run(move |ctx| ctx.set_secondary_color([red.normalized(), green.normalized(), blue.normalized()]))
 }
 
 /// # Safety
@@ -486,7 +502,7 @@ pub unsafe extern "C" fn glSecondaryColor3sv(v: *const GLshort) {
 
 #[no_mangle]
 pub extern "C" fn glSecondaryColor3i(red: GLint, green: GLint, blue: GLint) {
-    with_context((), |ctx| ctx.set_secondary_color([red.normalized(), green.normalized(), blue.normalized()]))
+    record_or_run(move |ctx| ctx.set_secondary_color([red.normalized(), green.normalized(), blue.normalized()]))
 }
 
 /// # Safety
@@ -501,7 +517,7 @@ pub unsafe extern "C" fn glSecondaryColor3iv(v: *const GLint) {
 
 #[no_mangle]
 pub extern "C" fn glSecondaryColor3f(red: GLfloat, green: GLfloat, blue: GLfloat) {
-    with_context((), |ctx| ctx.set_secondary_color([red.normalized(), green.normalized(), blue.normalized()]))
+    record_or_run(move |ctx| ctx.set_secondary_color([red.normalized(), green.normalized(), blue.normalized()]))
 }
 
 /// # Safety
@@ -516,7 +532,7 @@ pub unsafe extern "C" fn glSecondaryColor3fv(v: *const GLfloat) {
 
 #[no_mangle]
 pub extern "C" fn glSecondaryColor3d(red: GLdouble, green: GLdouble, blue: GLdouble) {
-    with_context((), |ctx| ctx.set_secondary_color([red.normalized(), green.normalized(), blue.normalized()]))
+    record_or_run(move |ctx| ctx.set_secondary_color([red.normalized(), green.normalized(), blue.normalized()]))
 }
 
 /// # Safety
@@ -531,7 +547,7 @@ pub unsafe extern "C" fn glSecondaryColor3dv(v: *const GLdouble) {
 
 #[no_mangle]
 pub extern "C" fn glSecondaryColor3ub(red: GLubyte, green: GLubyte, blue: GLubyte) {
-    with_context((), |ctx| ctx.set_secondary_color([red.normalized(), green.normalized(), blue.normalized()]))
+    record_or_run(move |ctx| ctx.set_secondary_color([red.normalized(), green.normalized(), blue.normalized()]))
 }
 
 /// # Safety
@@ -546,7 +562,7 @@ pub unsafe extern "C" fn glSecondaryColor3ubv(v: *const GLubyte) {
 
 #[no_mangle]
 pub extern "C" fn glSecondaryColor3us(red: GLushort, green: GLushort, blue: GLushort) {
-    with_context((), |ctx| ctx.set_secondary_color([red.normalized(), green.normalized(), blue.normalized()]))
+    record_or_run(move |ctx| ctx.set_secondary_color([red.normalized(), green.normalized(), blue.normalized()]))
 }
 
 /// # Safety
@@ -561,7 +577,7 @@ pub unsafe extern "C" fn glSecondaryColor3usv(v: *const GLushort) {
 
 #[no_mangle]
 pub extern "C" fn glSecondaryColor3ui(red: GLuint, green: GLuint, blue: GLuint) {
-    with_context((), |ctx| ctx.set_secondary_color([red.normalized(), green.normalized(), blue.normalized()]))
+    record_or_run(move |ctx| ctx.set_secondary_color([red.normalized(), green.normalized(), blue.normalized()]))
 }
 
 /// # Safety
@@ -680,7 +696,7 @@ pub unsafe extern "C" fn glSecondaryColor3uivEXT(v: *const GLuint) {
 
 #[no_mangle]
 pub extern "C" fn glNormal3b(nx: GLbyte, ny: GLbyte, nz: GLbyte) {
-    with_context((), |ctx| ctx.set_normal([nx.normalized(), ny.normalized(), nz.normalized()]))
+    record_or_run(move |ctx| ctx.set_normal([nx.normalized(), ny.normalized(), nz.normalized()]))
 }
 
 /// # Safety
@@ -695,7 +711,7 @@ pub unsafe extern "C" fn glNormal3bv(v: *const GLbyte) {
 
 #[no_mangle]
 pub extern "C" fn glNormal3s(nx: GLshort, ny: GLshort, nz: GLshort) {
-    with_context((), |ctx| ctx.set_normal([nx.normalized(), ny.normalized(), nz.normalized()]))
+    record_or_run(move |ctx| ctx.set_normal([nx.normalized(), ny.normalized(), nz.normalized()]))
 }
 
 /// # Safety
@@ -710,7 +726,7 @@ pub unsafe extern "C" fn glNormal3sv(v: *const GLshort) {
 
 #[no_mangle]
 pub extern "C" fn glNormal3i(nx: GLint, ny: GLint, nz: GLint) {
-    with_context((), |ctx| ctx.set_normal([nx.normalized(), ny.normalized(), nz.normalized()]))
+    record_or_run(move |ctx| ctx.set_normal([nx.normalized(), ny.normalized(), nz.normalized()]))
 }
 
 /// # Safety
@@ -725,7 +741,7 @@ pub unsafe extern "C" fn glNormal3iv(v: *const GLint) {
 
 #[no_mangle]
 pub extern "C" fn glNormal3f(nx: GLfloat, ny: GLfloat, nz: GLfloat) {
-    with_context((), |ctx| ctx.set_normal([nx.normalized(), ny.normalized(), nz.normalized()]))
+    record_or_run(move |ctx| ctx.set_normal([nx.normalized(), ny.normalized(), nz.normalized()]))
 }
 
 /// # Safety
@@ -740,7 +756,7 @@ pub unsafe extern "C" fn glNormal3fv(v: *const GLfloat) {
 
 #[no_mangle]
 pub extern "C" fn glNormal3d(nx: GLdouble, ny: GLdouble, nz: GLdouble) {
-    with_context((), |ctx| ctx.set_normal([nx.normalized(), ny.normalized(), nz.normalized()]))
+    record_or_run(move |ctx| ctx.set_normal([nx.normalized(), ny.normalized(), nz.normalized()]))
 }
 
 /// # Safety
@@ -755,7 +771,7 @@ pub unsafe extern "C" fn glNormal3dv(v: *const GLdouble) {
 
 #[no_mangle]
 pub extern "C" fn glTexCoord1s(s: GLshort) {
-    with_context((), |ctx| ctx.set_tex_coords(0, [s.to_f32(), 0.0, 0.0, 1.0]))
+    record_or_run(move |ctx| ctx.set_tex_coords(0, [s.to_f32(), 0.0, 0.0, 1.0]))
 }
 
 /// # Safety
@@ -770,7 +786,7 @@ pub unsafe extern "C" fn glTexCoord1sv(v: *const GLshort) {
 
 #[no_mangle]
 pub extern "C" fn glTexCoord1i(s: GLint) {
-    with_context((), |ctx| ctx.set_tex_coords(0, [s.to_f32(), 0.0, 0.0, 1.0]))
+    record_or_run(move |ctx| ctx.set_tex_coords(0, [s.to_f32(), 0.0, 0.0, 1.0]))
 }
 
 /// # Safety
@@ -785,7 +801,7 @@ pub unsafe extern "C" fn glTexCoord1iv(v: *const GLint) {
 
 #[no_mangle]
 pub extern "C" fn glTexCoord1f(s: GLfloat) {
-    with_context((), |ctx| ctx.set_tex_coords(0, [s, 0.0, 0.0, 1.0]))
+    record_or_run(move |ctx| ctx.set_tex_coords(0, [s, 0.0, 0.0, 1.0]))
 }
 
 /// # Safety
@@ -800,7 +816,7 @@ pub unsafe extern "C" fn glTexCoord1fv(v: *const GLfloat) {
 
 #[no_mangle]
 pub extern "C" fn glTexCoord1d(s: GLdouble) {
-    with_context((), |ctx| ctx.set_tex_coords(0, [s.to_f32(), 0.0, 0.0, 1.0]))
+    record_or_run(move |ctx| ctx.set_tex_coords(0, [s.to_f32(), 0.0, 0.0, 1.0]))
 }
 
 /// # Safety
@@ -815,7 +831,7 @@ pub unsafe extern "C" fn glTexCoord1dv(v: *const GLdouble) {
 
 #[no_mangle]
 pub extern "C" fn glTexCoord2s(s: GLshort, t: GLshort) {
-    with_context((), |ctx| ctx.set_tex_coords(0, [s.to_f32(), t.to_f32(), 0.0, 1.0]))
+    record_or_run(move |ctx| ctx.set_tex_coords(0, [s.to_f32(), t.to_f32(), 0.0, 1.0]))
 }
 
 /// # Safety
@@ -830,7 +846,7 @@ pub unsafe extern "C" fn glTexCoord2sv(v: *const GLshort) {
 
 #[no_mangle]
 pub extern "C" fn glTexCoord2i(s: GLint, t: GLint) {
-    with_context((), |ctx| ctx.set_tex_coords(0, [s.to_f32(), t.to_f32(), 0.0, 1.0]))
+    record_or_run(move |ctx| ctx.set_tex_coords(0, [s.to_f32(), t.to_f32(), 0.0, 1.0]))
 }
 
 /// # Safety
@@ -845,7 +861,7 @@ pub unsafe extern "C" fn glTexCoord2iv(v: *const GLint) {
 
 #[no_mangle]
 pub extern "C" fn glTexCoord2f(s: GLfloat, t: GLfloat) {
-    with_context((), |ctx| ctx.set_tex_coords(0, [s, t, 0.0, 1.0]))
+    record_or_run(move |ctx| ctx.set_tex_coords(0, [s, t, 0.0, 1.0]))
 }
 
 /// # Safety
@@ -860,7 +876,7 @@ pub unsafe extern "C" fn glTexCoord2fv(v: *const GLfloat) {
 
 #[no_mangle]
 pub extern "C" fn glTexCoord2d(s: GLdouble, t: GLdouble) {
-    with_context((), |ctx| ctx.set_tex_coords(0, [s.to_f32(), t.to_f32(), 0.0, 1.0]))
+    record_or_run(move |ctx| ctx.set_tex_coords(0, [s.to_f32(), t.to_f32(), 0.0, 1.0]))
 }
 
 /// # Safety
@@ -875,7 +891,7 @@ pub unsafe extern "C" fn glTexCoord2dv(v: *const GLdouble) {
 
 #[no_mangle]
 pub extern "C" fn glTexCoord3s(s: GLshort, t: GLshort, r: GLshort) {
-    with_context((), |ctx| ctx.set_tex_coords(0, [s.to_f32(), t.to_f32(), r.to_f32(), 1.0]))
+    record_or_run(move |ctx| ctx.set_tex_coords(0, [s.to_f32(), t.to_f32(), r.to_f32(), 1.0]))
 }
 
 /// # Safety
@@ -890,7 +906,7 @@ pub unsafe extern "C" fn glTexCoord3sv(v: *const GLshort) {
 
 #[no_mangle]
 pub extern "C" fn glTexCoord3i(s: GLint, t: GLint, r: GLint) {
-    with_context((), |ctx| ctx.set_tex_coords(0, [s.to_f32(), t.to_f32(), r.to_f32(), 1.0]))
+    record_or_run(move |ctx| ctx.set_tex_coords(0, [s.to_f32(), t.to_f32(), r.to_f32(), 1.0]))
 }
 
 /// # Safety
@@ -905,7 +921,7 @@ pub unsafe extern "C" fn glTexCoord3iv(v: *const GLint) {
 
 #[no_mangle]
 pub extern "C" fn glTexCoord3f(s: GLfloat, t: GLfloat, r: GLfloat) {
-    with_context((), |ctx| ctx.set_tex_coords(0, [s, t, r, 1.0]))
+    record_or_run(move |ctx| ctx.set_tex_coords(0, [s, t, r, 1.0]))
 }
 
 /// # Safety
@@ -920,7 +936,7 @@ pub unsafe extern "C" fn glTexCoord3fv(v: *const GLfloat) {
 
 #[no_mangle]
 pub extern "C" fn glTexCoord3d(s: GLdouble, t: GLdouble, r: GLdouble) {
-    with_context((), |ctx| ctx.set_tex_coords(0, [s.to_f32(), t.to_f32(), r.to_f32(), 1.0]))
+    record_or_run(move |ctx| ctx.set_tex_coords(0, [s.to_f32(), t.to_f32(), r.to_f32(), 1.0]))
 }
 
 /// # Safety
@@ -935,7 +951,7 @@ pub unsafe extern "C" fn glTexCoord3dv(v: *const GLdouble) {
 
 #[no_mangle]
 pub extern "C" fn glTexCoord4s(s: GLshort, t: GLshort, r: GLshort, q: GLshort) {
-    with_context((), |ctx| ctx.set_tex_coords(0, [s.to_f32(), t.to_f32(), r.to_f32(), q.to_f32()]))
+    record_or_run(move |ctx| ctx.set_tex_coords(0, [s.to_f32(), t.to_f32(), r.to_f32(), q.to_f32()]))
 }
 
 /// # Safety
@@ -950,7 +966,7 @@ pub unsafe extern "C" fn glTexCoord4sv(v: *const GLshort) {
 
 #[no_mangle]
 pub extern "C" fn glTexCoord4i(s: GLint, t: GLint, r: GLint, q: GLint) {
-    with_context((), |ctx| ctx.set_tex_coords(0, [s.to_f32(), t.to_f32(), r.to_f32(), q.to_f32()]))
+    record_or_run(move |ctx| ctx.set_tex_coords(0, [s.to_f32(), t.to_f32(), r.to_f32(), q.to_f32()]))
 }
 
 /// # Safety
@@ -965,7 +981,7 @@ pub unsafe extern "C" fn glTexCoord4iv(v: *const GLint) {
 
 #[no_mangle]
 pub extern "C" fn glTexCoord4f(s: GLfloat, t: GLfloat, r: GLfloat, q: GLfloat) {
-    with_context((), |ctx| ctx.set_tex_coords(0, [s, t, r, q]))
+    record_or_run(move |ctx| ctx.set_tex_coords(0, [s, t, r, q]))
 }
 
 /// # Safety
@@ -980,7 +996,7 @@ pub unsafe extern "C" fn glTexCoord4fv(v: *const GLfloat) {
 
 #[no_mangle]
 pub extern "C" fn glTexCoord4d(s: GLdouble, t: GLdouble, r: GLdouble, q: GLdouble) {
-    with_context((), |ctx| ctx.set_tex_coords(0, [s.to_f32(), t.to_f32(), r.to_f32(), q.to_f32()]))
+    record_or_run(move |ctx| ctx.set_tex_coords(0, [s.to_f32(), t.to_f32(), r.to_f32(), q.to_f32()]))
 }
 
 /// # Safety
@@ -995,7 +1011,7 @@ pub unsafe extern "C" fn glTexCoord4dv(v: *const GLdouble) {
 
 #[no_mangle]
 pub extern "C" fn glMultiTexCoord1s(target: GLenum, s: GLshort) {
-    with_context((), |ctx| ctx.multi_tex_coord(target, [s.to_f32(), 0.0, 0.0, 1.0]))
+    record_or_run(move |ctx| ctx.multi_tex_coord(target, [s.to_f32(), 0.0, 0.0, 1.0]))
 }
 
 /// # Safety
@@ -1010,7 +1026,7 @@ pub unsafe extern "C" fn glMultiTexCoord1sv(target: GLenum, v: *const GLshort) {
 
 #[no_mangle]
 pub extern "C" fn glMultiTexCoord1i(target: GLenum, s: GLint) {
-    with_context((), |ctx| ctx.multi_tex_coord(target, [s.to_f32(), 0.0, 0.0, 1.0]))
+    record_or_run(move |ctx| ctx.multi_tex_coord(target, [s.to_f32(), 0.0, 0.0, 1.0]))
 }
 
 /// # Safety
@@ -1025,7 +1041,7 @@ pub unsafe extern "C" fn glMultiTexCoord1iv(target: GLenum, v: *const GLint) {
 
 #[no_mangle]
 pub extern "C" fn glMultiTexCoord1f(target: GLenum, s: GLfloat) {
-    with_context((), |ctx| ctx.multi_tex_coord(target, [s, 0.0, 0.0, 1.0]))
+    record_or_run(move |ctx| ctx.multi_tex_coord(target, [s, 0.0, 0.0, 1.0]))
 }
 
 /// # Safety
@@ -1040,7 +1056,7 @@ pub unsafe extern "C" fn glMultiTexCoord1fv(target: GLenum, v: *const GLfloat) {
 
 #[no_mangle]
 pub extern "C" fn glMultiTexCoord1d(target: GLenum, s: GLdouble) {
-    with_context((), |ctx| ctx.multi_tex_coord(target, [s.to_f32(), 0.0, 0.0, 1.0]))
+    record_or_run(move |ctx| ctx.multi_tex_coord(target, [s.to_f32(), 0.0, 0.0, 1.0]))
 }
 
 /// # Safety
@@ -1055,7 +1071,7 @@ pub unsafe extern "C" fn glMultiTexCoord1dv(target: GLenum, v: *const GLdouble) 
 
 #[no_mangle]
 pub extern "C" fn glMultiTexCoord2s(target: GLenum, s: GLshort, t: GLshort) {
-    with_context((), |ctx| ctx.multi_tex_coord(target, [s.to_f32(), t.to_f32(), 0.0, 1.0]))
+    record_or_run(move |ctx| ctx.multi_tex_coord(target, [s.to_f32(), t.to_f32(), 0.0, 1.0]))
 }
 
 /// # Safety
@@ -1070,7 +1086,7 @@ pub unsafe extern "C" fn glMultiTexCoord2sv(target: GLenum, v: *const GLshort) {
 
 #[no_mangle]
 pub extern "C" fn glMultiTexCoord2i(target: GLenum, s: GLint, t: GLint) {
-    with_context((), |ctx| ctx.multi_tex_coord(target, [s.to_f32(), t.to_f32(), 0.0, 1.0]))
+    record_or_run(move |ctx| ctx.multi_tex_coord(target, [s.to_f32(), t.to_f32(), 0.0, 1.0]))
 }
 
 /// # Safety
@@ -1085,7 +1101,7 @@ pub unsafe extern "C" fn glMultiTexCoord2iv(target: GLenum, v: *const GLint) {
 
 #[no_mangle]
 pub extern "C" fn glMultiTexCoord2f(target: GLenum, s: GLfloat, t: GLfloat) {
-    with_context((), |ctx| ctx.multi_tex_coord(target, [s, t, 0.0, 1.0]))
+    record_or_run(move |ctx| ctx.multi_tex_coord(target, [s, t, 0.0, 1.0]))
 }
 
 /// # Safety
@@ -1100,7 +1116,7 @@ pub unsafe extern "C" fn glMultiTexCoord2fv(target: GLenum, v: *const GLfloat) {
 
 #[no_mangle]
 pub extern "C" fn glMultiTexCoord2d(target: GLenum, s: GLdouble, t: GLdouble) {
-    with_context((), |ctx| ctx.multi_tex_coord(target, [s.to_f32(), t.to_f32(), 0.0, 1.0]))
+    record_or_run(move |ctx| ctx.multi_tex_coord(target, [s.to_f32(), t.to_f32(), 0.0, 1.0]))
 }
 
 /// # Safety
@@ -1115,7 +1131,7 @@ pub unsafe extern "C" fn glMultiTexCoord2dv(target: GLenum, v: *const GLdouble) 
 
 #[no_mangle]
 pub extern "C" fn glMultiTexCoord3s(target: GLenum, s: GLshort, t: GLshort, r: GLshort) {
-    with_context((), |ctx| ctx.multi_tex_coord(target, [s.to_f32(), t.to_f32(), r.to_f32(), 1.0]))
+    record_or_run(move |ctx| ctx.multi_tex_coord(target, [s.to_f32(), t.to_f32(), r.to_f32(), 1.0]))
 }
 
 /// # Safety
@@ -1130,7 +1146,7 @@ pub unsafe extern "C" fn glMultiTexCoord3sv(target: GLenum, v: *const GLshort) {
 
 #[no_mangle]
 pub extern "C" fn glMultiTexCoord3i(target: GLenum, s: GLint, t: GLint, r: GLint) {
-    with_context((), |ctx| ctx.multi_tex_coord(target, [s.to_f32(), t.to_f32(), r.to_f32(), 1.0]))
+    record_or_run(move |ctx| ctx.multi_tex_coord(target, [s.to_f32(), t.to_f32(), r.to_f32(), 1.0]))
 }
 
 /// # Safety
@@ -1145,7 +1161,7 @@ pub unsafe extern "C" fn glMultiTexCoord3iv(target: GLenum, v: *const GLint) {
 
 #[no_mangle]
 pub extern "C" fn glMultiTexCoord3f(target: GLenum, s: GLfloat, t: GLfloat, r: GLfloat) {
-    with_context((), |ctx| ctx.multi_tex_coord(target, [s, t, r, 1.0]))
+    record_or_run(move |ctx| ctx.multi_tex_coord(target, [s, t, r, 1.0]))
 }
 
 /// # Safety
@@ -1160,7 +1176,7 @@ pub unsafe extern "C" fn glMultiTexCoord3fv(target: GLenum, v: *const GLfloat) {
 
 #[no_mangle]
 pub extern "C" fn glMultiTexCoord3d(target: GLenum, s: GLdouble, t: GLdouble, r: GLdouble) {
-    with_context((), |ctx| ctx.multi_tex_coord(target, [s.to_f32(), t.to_f32(), r.to_f32(), 1.0]))
+    record_or_run(move |ctx| ctx.multi_tex_coord(target, [s.to_f32(), t.to_f32(), r.to_f32(), 1.0]))
 }
 
 /// # Safety
@@ -1175,7 +1191,7 @@ pub unsafe extern "C" fn glMultiTexCoord3dv(target: GLenum, v: *const GLdouble) 
 
 #[no_mangle]
 pub extern "C" fn glMultiTexCoord4s(target: GLenum, s: GLshort, t: GLshort, r: GLshort, q: GLshort) {
-    with_context((), |ctx| ctx.multi_tex_coord(target, [s.to_f32(), t.to_f32(), r.to_f32(), q.to_f32()]))
+    record_or_run(move |ctx| ctx.multi_tex_coord(target, [s.to_f32(), t.to_f32(), r.to_f32(), q.to_f32()]))
 }
 
 /// # Safety
@@ -1190,7 +1206,7 @@ pub unsafe extern "C" fn glMultiTexCoord4sv(target: GLenum, v: *const GLshort) {
 
 #[no_mangle]
 pub extern "C" fn glMultiTexCoord4i(target: GLenum, s: GLint, t: GLint, r: GLint, q: GLint) {
-    with_context((), |ctx| ctx.multi_tex_coord(target, [s.to_f32(), t.to_f32(), r.to_f32(), q.to_f32()]))
+    record_or_run(move |ctx| ctx.multi_tex_coord(target, [s.to_f32(), t.to_f32(), r.to_f32(), q.to_f32()]))
 }
 
 /// # Safety
@@ -1205,7 +1221,7 @@ pub unsafe extern "C" fn glMultiTexCoord4iv(target: GLenum, v: *const GLint) {
 
 #[no_mangle]
 pub extern "C" fn glMultiTexCoord4f(target: GLenum, s: GLfloat, t: GLfloat, r: GLfloat, q: GLfloat) {
-    with_context((), |ctx| ctx.multi_tex_coord(target, [s, t, r, q]))
+    record_or_run(move |ctx| ctx.multi_tex_coord(target, [s, t, r, q]))
 }
 
 /// # Safety
@@ -1220,7 +1236,7 @@ pub unsafe extern "C" fn glMultiTexCoord4fv(target: GLenum, v: *const GLfloat) {
 
 #[no_mangle]
 pub extern "C" fn glMultiTexCoord4d(target: GLenum, s: GLdouble, t: GLdouble, r: GLdouble, q: GLdouble) {
-    with_context((), |ctx| ctx.multi_tex_coord(target, [s.to_f32(), t.to_f32(), r.to_f32(), q.to_f32()]))
+    record_or_run(move |ctx| ctx.multi_tex_coord(target, [s.to_f32(), t.to_f32(), r.to_f32(), q.to_f32()]))
 }
 
 /// # Safety
@@ -1443,7 +1459,7 @@ pub unsafe extern "C" fn glMultiTexCoord4dvARB(target: GLenum, v: *const GLdoubl
 
 #[no_mangle]
 pub extern "C" fn glFogCoordf(coord: GLfloat) {
-    with_context((), |ctx| ctx.set_fog_coord(coord))
+    record_or_run(move |ctx| ctx.set_fog_coord(coord))
 }
 
 /// # Safety
@@ -1458,7 +1474,7 @@ pub unsafe extern "C" fn glFogCoordfv(coord: *const GLfloat) {
 
 #[no_mangle]
 pub extern "C" fn glFogCoordd(coord: GLdouble) {
-    with_context((), |ctx| ctx.set_fog_coord(coord.to_f32()))
+    record_or_run(move |ctx| ctx.set_fog_coord(coord.to_f32()))
 }
 
 /// # Safety
@@ -1499,7 +1515,7 @@ pub unsafe extern "C" fn glFogCoorddvEXT(coord: *const GLdouble) {
 
 #[no_mangle]
 pub extern "C" fn glEdgeFlag(flag: GLboolean) {
-    with_context((), |ctx| ctx.set_edge_flag(flag != 0))
+    record_or_run(move |ctx| ctx.set_edge_flag(flag != 0))
 }
 
 /// # Safety
@@ -1514,7 +1530,7 @@ pub unsafe extern "C" fn glEdgeFlagv(flag: *const GLboolean) {
 
 #[no_mangle]
 pub extern "C" fn glIndexs(c: GLshort) {
-    with_context((), |ctx| ctx.set_index(c.to_f32()))
+    record_or_run(move |ctx| ctx.set_index(c.to_f32()))
 }
 
 /// # Safety
@@ -1529,7 +1545,7 @@ pub unsafe extern "C" fn glIndexsv(c: *const GLshort) {
 
 #[no_mangle]
 pub extern "C" fn glIndexi(c: GLint) {
-    with_context((), |ctx| ctx.set_index(c.to_f32()))
+    record_or_run(move |ctx| ctx.set_index(c.to_f32()))
 }
 
 /// # Safety
@@ -1544,7 +1560,7 @@ pub unsafe extern "C" fn glIndexiv(c: *const GLint) {
 
 #[no_mangle]
 pub extern "C" fn glIndexf(c: GLfloat) {
-    with_context((), |ctx| ctx.set_index(c))
+    record_or_run(move |ctx| ctx.set_index(c))
 }
 
 /// # Safety
@@ -1559,7 +1575,7 @@ pub unsafe extern "C" fn glIndexfv(c: *const GLfloat) {
 
 #[no_mangle]
 pub extern "C" fn glIndexd(c: GLdouble) {
-    with_context((), |ctx| ctx.set_index(c.to_f32()))
+    record_or_run(move |ctx| ctx.set_index(c.to_f32()))
 }
 
 /// # Safety
@@ -1574,7 +1590,7 @@ pub unsafe extern "C" fn glIndexdv(c: *const GLdouble) {
 
 #[no_mangle]
 pub extern "C" fn glIndexub(c: GLubyte) {
-    with_context((), |ctx| ctx.set_index(c.to_f32()))
+    record_or_run(move |ctx| ctx.set_index(c.to_f32()))
 }
 
 /// # Safety
@@ -1589,7 +1605,7 @@ pub unsafe extern "C" fn glIndexubv(c: *const GLubyte) {
 
 #[no_mangle]
 pub extern "C" fn glRects(x1: GLshort, y1: GLshort, x2: GLshort, y2: GLshort) {
-    with_context((), |ctx| ctx.rect([x1.to_f32(), y1.to_f32()], [x2.to_f32(), y2.to_f32()]))
+    record_or_run(move |ctx| ctx.rect([x1.to_f32(), y1.to_f32()], [x2.to_f32(), y2.to_f32()]))
 }
 
 /// # Safety
@@ -1604,7 +1620,7 @@ pub unsafe extern "C" fn glRectsv(v1: *const GLshort, v2: *const GLshort) {
 
 #[no_mangle]
 pub extern "C" fn glRecti(x1: GLint, y1: GLint, x2: GLint, y2: GLint) {
-    with_context((), |ctx| ctx.rect([x1.to_f32(), y1.to_f32()], [x2.to_f32(), y2.to_f32()]))
+    record_or_run(move |ctx| ctx.rect([x1.to_f32(), y1.to_f32()], [x2.to_f32(), y2.to_f32()]))
 }
 
 /// # Safety
@@ -1619,7 +1635,7 @@ pub unsafe extern "C" fn glRectiv(v1: *const GLint, v2: *const GLint) {
 
 #[no_mangle]
 pub extern "C" fn glRectf(x1: GLfloat, y1: GLfloat, x2: GLfloat, y2: GLfloat) {
-    with_context((), |ctx| ctx.rect([x1, y1], [x2, y2]))
+    record_or_run(move |ctx| ctx.rect([x1, y1], [x2, y2]))
 }
 
 /// # Safety
@@ -1634,7 +1650,7 @@ pub unsafe extern "C" fn glRectfv(v1: *const GLfloat, v2: *const GLfloat) {
 
 #[no_mangle]
 pub extern "C" fn glRectd(x1: GLdouble, y1: GLdouble, x2: GLdouble, y2: GLdouble) {
-    with_context((), |ctx| ctx.rect([x1.to_f32(), y1.to_f32()], [x2.to_f32(), y2.to_f32()]))
+    record_or_run(move |ctx| ctx.rect([x1.to_f32(), y1.to_f32()], [x2.to_f32(), y2.to_f32()]))
 }
 
 /// # Safety

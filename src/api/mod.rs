@@ -18,8 +18,12 @@ pub mod gl_buffer_objects;
 pub mod gl_buffers;
 pub mod gl_fragment;
 pub mod gl_lighting;
+pub mod gl_lists;
+pub mod gl_pixel_rect;
 pub mod gl_pixels;
+pub mod gl_queries;
 pub mod gl_raster_state;
+pub mod gl_selection;
 pub mod gl_state;
 pub mod gl_texture;
 pub mod gl_transform;
@@ -53,6 +57,14 @@ pub fn caught_panics() -> u64 {
 /// when `f` panics (the panic is reported on stderr and becomes an ignored call).
 pub(crate) fn with_context<R: Copy>(default: R, f: impl FnOnce(&mut Context) -> R) -> R {
     guard(default, || current::with_current(f).unwrap_or(default))
+}
+
+/// The path of every command that display lists compile: runs `command` on the current
+/// context, or records it in the list being compiled (see `context::lists`). The closure owns
+/// its arguments (`move`), so anything a pointer argument designates must be read into owned
+/// values before (vector forms call the scalar form; arrays are copied).
+pub(crate) fn record_or_run(command: impl Fn(&mut Context) + Send + Sync + 'static) {
+    with_context((), |ctx| ctx.record_or_run(command))
 }
 
 /// Runs `f` with panics caught; returns `default` if it panicked.

@@ -97,6 +97,7 @@ pub struct SavedAttribs {
     /// GL_TEXTURE_BIT: the parameters of the texture objects bound to every target of every
     /// unit (GL 2.1 table 6.20 puts texture object state in the texture group).
     texture_objects: Vec<(u32, usize, super::texture::TexParams)>,
+    list_base: Option<u32>,
 }
 
 /// Clones `group` when `mask` names `bit`.
@@ -128,6 +129,7 @@ impl SavedAttribs {
             polygon_stipple: saved(mask, GL_POLYGON_STIPPLE_BIT, &state.polygon_stipple),
             enable: (mask & GL_ENABLE_BIT != 0).then(|| Enables::save(state)),
             texture_objects: Vec::new(),
+            list_base: saved(mask, GL_LIST_BIT, &state.list_base),
         }
     }
 
@@ -167,6 +169,7 @@ impl SavedAttribs {
         restore(&mut state.eval, self.eval);
         restore(&mut state.pixel_mode, self.pixel_mode);
         restore(&mut state.polygon_stipple, self.polygon_stipple);
+        restore(&mut state.list_base, self.list_base);
     }
 }
 
@@ -388,6 +391,7 @@ mod tests {
             point_sprite_coord_origin: GL_LOWER_LEFT,
         };
         t.polygon_stipple[5] = 0x1234_5678;
+        t.list_base = 77;
         let m = &mut t.multisample;
         (m.enabled, m.alpha_to_coverage, m.alpha_to_one, m.coverage) =
             (!m.enabled, !m.alpha_to_coverage, !m.alpha_to_one, !m.coverage);
@@ -460,7 +464,7 @@ mod tests {
             el.point_distance_attenuation = ol.point_distance_attenuation;
             el.point_sprite_coord_origin = ol.point_sprite_coord_origin;
         }
-        let whole: [(u32, CopyGroup); 17] = [
+        let whole: [(u32, CopyGroup); 18] = [
             (GL_CURRENT_BIT, |e, o| e.current = o.current.clone()),
             (GL_COLOR_BUFFER_BIT, |e, o| e.color = o.color.clone()),
             (GL_DEPTH_BUFFER_BIT, |e, o| e.depth = o.depth.clone()),
@@ -478,6 +482,7 @@ mod tests {
             (GL_EVAL_BIT, |e, o| e.eval = o.eval.clone()),
             (GL_PIXEL_MODE_BIT, |e, o| e.pixel_mode = o.pixel_mode.clone()),
             (GL_POLYGON_STIPPLE_BIT, |e, o| e.polygon_stipple = o.polygon_stipple),
+            (GL_LIST_BIT, |e, o| e.list_base = o.list_base),
         ];
         for (bit, copy) in whole {
             if mask & bit != 0 {
@@ -536,6 +541,7 @@ mod tests {
         assert_ne!(t.eval, o.eval);
         assert_ne!(t.pixel_mode, o.pixel_mode);
         assert_ne!(t.polygon_stipple, o.polygon_stipple);
+        assert_ne!(t.list_base, o.list_base);
         // Every field of the groups with enables outside GL_ENABLE_BIT changed too.
         let only_enables = expected_after_pop(GL_ENABLE_BIT, &o);
         assert_ne!(only_enables.transform, o.transform);

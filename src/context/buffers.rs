@@ -144,6 +144,10 @@ impl Context {
         if mask & !known != 0 {
             return self.error(GL_INVALID_VALUE);
         }
+        // Selection and feedback modes write no pixels (as Mesa).
+        if !self.rendering() {
+            return;
+        }
         // Clears run immediately, so the draws recorded before them run first.
         self.flush_rendering();
         let targets = self.draw_targets();

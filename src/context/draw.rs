@@ -21,6 +21,8 @@
 //! its provoking vertex under GL_FIRST_VERTEX_CONVENTION (here it stays the second vertex);
 //! and when front and back faces have different modes, Mesa applies the polygon offset of
 //! the first triangle's mode to the whole draw (here each triangle gets its own mode's).
+mod select;
+
 use super::{debug, Context};
 use crate::api::enums::*;
 use crate::api::types::GLenum;
@@ -102,7 +104,7 @@ struct LineStipple {
 
 /// A scalar vertex attribute that a draw's later stages read per fragment.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(super) enum Attribute {
+pub(crate) enum Attribute {
     /// A channel of the secondary color (GL_COLOR_SUM).
     SecondaryColor(usize),
     /// The fog coordinate (GL_FOG).
@@ -166,6 +168,9 @@ impl Context {
     /// Draws `vertices` as primitives of `mode` (GL_POINTS … GL_POLYGON, already validated),
     /// with the current state. Vertex sources (glBegin/glEnd, glDrawArrays, …) call this.
     pub fn draw_vertices(&mut self, mode: GLenum, vertices: &[Vertex]) {
+        if !self.rendering() {
+            return self.select_vertices(mode, vertices);
+        }
         let Some((width, height, color_format, depth_bits, stencil_bits)) = self.with_framebuffer(|fb| {
             let config = fb.config();
             (
@@ -293,6 +298,37 @@ impl Context {
         self.scene = Some(scene);
     }
 
+    /// Adds a pixel rectangle to the scene under the current state; `make` builds it from the
+    /// varyings the draw's stages read (none when only color is needed).
+    pub(super) fn draw_pixel_rect(&mut self, make: impl FnOnce(&[Attribute]) -> crate::raster::pixels::PixelRectJob) {
+        let Some((width, height, color_format, depth_bits, stencil_bits)) = self.with_framebuffer(|fb| {
+            let config = fb.config();
+            (
+                fb.width(),
+                fb.height(),
+                config.color,
+                config.depth_stencil.depth_bits(),
+                config.depth_stencil.stencil_bits(),
+            )
+        }) else {
+            return;
+        };
+        let mut scene = match self.scene.take() {
+            Some(scene) if scene.size() == (width, height) => scene,
+            other => {
+                if let Some(old) = other {
+                    self.run_scene(old);
+                }
+                Scene::new(width, height)
+            }
+        };
+        let state = self.draw_state(&mut scene, width, height, color_format, depth_bits, stencil_bits);
+        let (state_index, _) = scene.add_state(state);
+        let job = make(&self.varyings_needed());
+        scene.add(state_index, job.bounds(), RasterPrimitive::Pixels(job));
+        self.scene = Some(scene);
+    }
+
     /// Rasterizes everything recorded so far into the bound framebuffer.
     pub fn flush_rendering(&mut self) {
         if let Some(scene) = self.scene.take() {
@@ -377,7 +413,8 @@ impl Context {
         // varyings (`varyings_needed`).
         let first_slot = 3 * usize::from(self.color_sum_active()) + usize::from(self.state.fog.enabled);
         fragment.texturing = self.compile_texturing(first_slot, height as i32).map(std::sync::Arc::new);
-        DrawState { fragment, clip, fill_clip, polygon_stipple }
+        let samples_passed = self.queries.active_counter();
+        DrawState { fragment, clip, fill_clip, polygon_stipple, samples_passed }
     }
 
     /// GL_LINE_STIPPLE's state at the start of a draw, when enabled.

@@ -167,6 +167,21 @@ impl Context {
         if let Some(values) = self.vertex_input_values(pname) {
             return Some(values);
         }
+        if let Some(values) = self.list_values(pname) {
+            return Some(values);
+        }
+        if let Some(values) = self.raster_pos_values(pname) {
+            return Some(values);
+        }
+        if let Some(values) = self.selection_values(pname) {
+            return Some(values);
+        }
+        if let Some(values) = self.pixel_transfer_values(pname) {
+            return Some(values);
+        }
+        if let Some(values) = self.pixel_map_values(pname) {
+            return Some(values);
+        }
         let clamp = self.fragment_clamping();
         let clamped = |c: f32| if clamp { c.clamp(0.0, 1.0) } else { c };
         let (s, fb) = (&self.state, &self.config.visual);

@@ -19,9 +19,14 @@ pub mod get;
 mod hard_case_tests;
 pub mod hints;
 pub mod lighting;
+pub mod lists;
 pub mod matrix;
+pub mod pixel_rect;
+pub mod queries;
+pub mod raster_pos;
 pub mod raster_state;
 pub mod read_pixels;
+pub mod selection;
 pub mod state;
 pub mod strings;
 pub mod texture;
@@ -69,6 +74,12 @@ pub struct Context {
     pub accuracy: crate::raster::accuracy::Accuracy,
     /// The texture objects (`texture`).
     pub textures: texture::TextureTable,
+    /// Display lists: the (shareable) name space and the list being compiled.
+    pub lists: lists::ListState,
+    /// Occlusion queries.
+    pub queries: queries::QueryState,
+    /// The render mode and selection state.
+    pub selection: selection::Selection,
 }
 
 impl Context {
@@ -90,6 +101,9 @@ impl Context {
             buffers: Default::default(),
             accuracy: crate::raster::accuracy::Accuracy::from_env(),
             textures: texture::TextureTable::new(),
+            lists: Default::default(),
+            queries: Default::default(),
+            selection: Default::default(),
         }
     }
 

@@ -228,19 +228,31 @@ impl Context {
     /// glPolygonStipple: `source` maps the span of client bytes the pattern occupies under the
     /// unpack modes to those bytes (`None`: a NULL pointer, which changes nothing).
     pub fn polygon_stipple<'a>(&mut self, source: impl FnOnce(Range<usize>) -> Option<&'a [u8]>) {
+        let pattern = self.unpack_polygon_stipple(source);
+        self.set_polygon_stipple(pattern)
+    }
+
+    /// The pattern glPolygonStipple reads under the unpack modes (`Ok(None)`: a NULL pointer),
+    /// read when the command is issued (also when it is compiled into a display list).
+    pub fn unpack_polygon_stipple<'a>(
+        &self,
+        source: impl FnOnce(Range<usize>) -> Option<&'a [u8]>,
+    ) -> Result<Option<[u32; 32]>, GLenum> {
+        let modes = PackModes::from(&self.pixel_store.unpack);
+        let (layout, span) = stipple_layout(&modes).ok_or(GL_INVALID_VALUE)?;
+        let start = span.start;
+        Ok(source(span).and_then(|client| unpack_stipple(client, &layout, start, modes.lsb_first)))
+    }
+
+    /// glPolygonStipple with its pattern already read.
+    pub fn set_polygon_stipple(&mut self, pattern: Result<Option<[u32; 32]>, GLenum>) {
         if !self.check_outside_begin_end() {
             return;
         }
-        let modes = PackModes::from(&self.pixel_store.unpack);
-        let Some((layout, span)) = stipple_layout(&modes) else {
-            return self.error(GL_INVALID_VALUE);
-        };
-        let start = span.start;
-        let Some(client) = source(span) else {
-            return;
-        };
-        if let Some(pattern) = unpack_stipple(client, &layout, start, modes.lsb_first) {
-            self.state.polygon_stipple = pattern;
+        match pattern {
+            Ok(Some(pattern)) => self.state.polygon_stipple = pattern,
+            Ok(None) => {}
+            Err(error) => self.error(error),
         }
     }
 

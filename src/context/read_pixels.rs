@@ -37,12 +37,12 @@ use std::ops::Range;
 /// A glReadPixels `format`: a client format, or GL_COLOR_INDEX (valid, but never readable
 /// from RGBA buffers).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum ReadFormat {
+pub(crate) enum ReadFormat {
     Client(ClientFormat),
     ColorIndex,
 }
 
-fn read_format(format: GLenum) -> Option<ReadFormat> {
+pub(crate) fn read_format(format: GLenum) -> Option<ReadFormat> {
     use ClientFormat::*;
     Some(ReadFormat::Client(match format {
         GL_RGBA => Rgba,
@@ -63,7 +63,7 @@ fn read_format(format: GLenum) -> Option<ReadFormat> {
     }))
 }
 
-pub(super) fn client_type(ty: GLenum) -> Option<ClientType> {
+pub(crate) fn client_type(ty: GLenum) -> Option<ClientType> {
     use PackedType::*;
     Some(match ty {
         GL_UNSIGNED_BYTE => ClientType::UnsignedByte,
@@ -94,7 +94,7 @@ pub(super) fn client_type(ty: GLenum) -> Option<ClientType> {
 
 /// The format/type rules of glReadPixels (Mesa's `_mesa_error_check_format_and_type` for
 /// desktop GL, restricted to what GL 2.1 and ARB_half_float_pixel define).
-fn check_format_and_type(format: ReadFormat, ty: GLenum) -> Result<ClientType, GLenum> {
+pub(crate) fn check_format_and_type(format: ReadFormat, ty: GLenum) -> Result<ClientType, GLenum> {
     use ClientFormat::*;
     if format == ReadFormat::Client(DepthStencil) && ty != GL_UNSIGNED_INT_24_8 {
         return Err(GL_INVALID_ENUM);

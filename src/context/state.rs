@@ -579,6 +579,42 @@ pub struct EvalState {
 #[derive(Clone, Debug, PartialEq)]
 pub struct PixelModeState {
     pub read_buffer: GLenum,
+    /// glPixelZoom's x and y factors.
+    pub zoom: [f32; 2],
+    /// glPixelTransfer's values.
+    pub transfer: PixelTransfer,
+    /// glPixelMap's ten tables, in the order of their enums (GL_PIXEL_MAP_I_TO_I ...
+    /// GL_PIXEL_MAP_A_TO_A); each holds at least one entry.
+    pub maps: [Vec<f32>; 10],
+}
+
+/// glPixelTransfer's state (part of GL_PIXEL_MODE_BIT).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PixelTransfer {
+    /// RGBA scale and bias.
+    pub scale: [f32; 4],
+    pub bias: [f32; 4],
+    pub depth_scale: f32,
+    pub depth_bias: f32,
+    pub index_shift: i32,
+    pub index_offset: i32,
+    pub map_color: bool,
+    pub map_stencil: bool,
+}
+
+impl Default for PixelTransfer {
+    fn default() -> Self {
+        PixelTransfer {
+            scale: [1.0; 4],
+            bias: [0.0; 4],
+            depth_scale: 1.0,
+            depth_bias: 0.0,
+            index_shift: 0,
+            index_offset: 0,
+            map_color: false,
+            map_stencil: false,
+        }
+    }
 }
 
 /// One direction of glPixelStore (GL_PACK_* or GL_UNPACK_*): client state.
@@ -626,6 +662,8 @@ pub struct CurrentState {
     pub fog_coord: f32,
     pub edge_flag: bool,
     pub index: f32,
+    /// The current raster position (glRasterPos, glWindowPos) and its attributes.
+    pub raster: crate::context::raster_pos::RasterPos,
 }
 
 impl Default for CurrentState {
@@ -638,6 +676,7 @@ impl Default for CurrentState {
             fog_coord: 0.0,
             edge_flag: true,
             index: 1.0,
+            raster: Default::default(),
         }
     }
 }
@@ -664,6 +703,8 @@ pub struct State {
     pub texture: TextureState,
     pub eval: EvalState,
     pub pixel_mode: PixelModeState,
+    /// GL_LIST_BIT: the offset glCallLists adds to every name (glListBase).
+    pub list_base: u32,
 }
 
 impl State {
@@ -688,7 +729,13 @@ impl State {
             multisample: MultisampleState::default(),
             texture: TextureState::default(),
             eval: EvalState::default(),
-            pixel_mode: PixelModeState { read_buffer: buffer },
+            pixel_mode: PixelModeState {
+                read_buffer: buffer,
+                zoom: [1.0, 1.0],
+                transfer: PixelTransfer::default(),
+                maps: std::array::from_fn(|_| vec![0.0]),
+            },
+            list_base: 0,
         }
     }
 }

@@ -598,6 +598,19 @@ impl Context {
         }
     }
 
+    /// The bytes of a `size` (width, height, depth) client image of `format`/`ty` under the
+    /// current unpack state: what an image command reads. `None` when the arguments are
+    /// invalid (the command reports that when it runs). Display lists copy these bytes.
+    pub fn client_image_span(&self, dims: usize, format: GLenum, ty: GLenum, size: [i32; 3]) -> Option<Range<usize>> {
+        let (cf, ct) = check_texture_format_type(format, ty).ok()?;
+        if size.iter().any(|&s| s < 0) {
+            return None;
+        }
+        let [w, h, d] = size.map(|s| s.max(1) as usize);
+        let client = ClientImage::new(cf, ct, &self.pixel_store.unpack, size[0] as usize, h, dims)?;
+        client.span(w.min(size[0] as usize), h, d)
+    }
+
     /// glTexImage1D/2D/3D. `data` gives the client bytes of the image's span (relative to
     /// the pointer); `None` (a NULL pointer) leaves the texels zero.
     pub fn tex_image<'a>(

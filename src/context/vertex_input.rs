@@ -13,6 +13,7 @@
 //! is not) are listed with the commands they concern, in the submodules.
 mod arrays;
 mod buffers;
+mod compiled;
 mod draws;
 mod immediate;
 
@@ -60,6 +61,8 @@ pub struct VertexInput {
     /// glMaterial between glBegin and glEnd: from which open vertex on each front and back
     /// material applies (empty when glMaterial was not called since glBegin).
     pub material_marks: Vec<(usize, [Material; 2])>,
+    /// While an array draw is compiled into a display list: the batches it delivers.
+    capture: Option<Vec<(GLenum, Vec<Vertex>)>>,
     /// Every batch handed to the geometry pipeline, for tests.
     #[cfg(test)]
     pub(crate) delivered: Vec<(GLenum, Vec<Vertex>)>,
@@ -80,6 +83,9 @@ impl Context {
 
     /// Hands finished vertices to the geometry pipeline.
     fn deliver(&mut self, mode: GLenum, vertices: &[Vertex]) {
+        if let Some(capture) = &mut self.vertex_input.capture {
+            return capture.push((mode, vertices.to_vec()));
+        }
         #[cfg(test)]
         self.vertex_input.delivered.push((mode, vertices.to_vec()));
         self.draw_vertices(mode, vertices);

@@ -15,6 +15,7 @@ pub mod convert;
 pub mod depth;
 pub mod layout;
 pub mod unpack;
+pub mod unpack_rect;
 
 /// A client pixel format (the `format` of glReadPixels).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

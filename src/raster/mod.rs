@@ -12,6 +12,7 @@
 pub mod accuracy;
 pub mod interpolate;
 pub mod line;
+pub mod pixels;
 pub mod point;
 pub mod triangle;
 
@@ -21,6 +22,7 @@ use crate::framebuffer::band::Band;
 use crate::framebuffer::{ColorSlot, Framebuffer, Rect};
 use line::LineJob;
 use point::PointJob;
+use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::{Arc, Mutex, OnceLock};
 use triangle::TriangleJob;
 
@@ -33,7 +35,7 @@ pub const STATE_CACHE: usize = 4;
 
 /// What a draw call's primitives share: the compiled fragment state and the scissor box.
 /// Compared whole when a scene caches states ([`Scene::add_state`]).
-#[derive(Debug, PartialEq)]
+#[derive(Debug)]
 pub struct DrawState {
     pub fragment: FragmentState,
     /// Pixels outside this rectangle (scissor box ∩ framebuffer) are never written.
@@ -45,6 +47,26 @@ pub struct DrawState {
     /// GL_POLYGON_STIPPLE's pattern when enabled (filled polygons only): row `y % 32`
     /// from the bottom of the window, bit `31 − x % 32` for column `x`.
     pub polygon_stipple: Option<[u32; 32]>,
+    /// The active occlusion query's counter: fragments passing the depth and stencil tests
+    /// are added per span (a sum, so the same for any thread count).
+    pub samples_passed: Option<Arc<AtomicU64>>,
+}
+
+impl PartialEq for DrawState {
+    /// Equal states compile to the same pipeline; two draws count into the same occlusion
+    /// query only if they share its counter.
+    fn eq(&self, other: &Self) -> bool {
+        let same_counter = match (&self.samples_passed, &other.samples_passed) {
+            (Some(a), Some(b)) => Arc::ptr_eq(a, b),
+            (None, None) => true,
+            _ => false,
+        };
+        same_counter
+            && self.fragment == other.fragment
+            && self.clip == other.clip
+            && self.fill_clip == other.fill_clip
+            && self.polygon_stipple == other.polygon_stipple
+    }
 }
 
 /// A primitive ready for rasterization.
@@ -52,6 +74,8 @@ pub enum Primitive {
     Triangle(TriangleJob),
     Line(LineJob),
     Point(PointJob),
+    /// A pixel rectangle (glBitmap, glDrawPixels).
+    Pixels(pixels::PixelRectJob),
 }
 
 /// Per-worker storage reused across spans.
@@ -133,6 +157,9 @@ pub fn shade_span(
         if live == 0 {
             return;
         }
+    }
+    if let Some(counter) = &state.samples_passed {
+        counter.fetch_add(live.count_ones() as u64, Ordering::Relaxed);
     }
     if let Some(c) = colors {
         uniform = shade_colors(fragment, &span, scratch, live, c, &varyings);
@@ -396,6 +423,7 @@ impl Scene {
                     }
                     Primitive::Line(job) => job.render(state, area, &mut band, &mut scratch),
                     Primitive::Point(job) => job.render(state, area, &mut band, &mut scratch),
+                    Primitive::Pixels(job) => job.render(state, area, &mut band, &mut scratch),
                 }
             }
         }
@@ -451,7 +479,7 @@ mod tests {
         let mut fragment = FragmentState::plain(depth, vec![Some([true; 4])], false);
         fragment.alpha = alpha.then_some(AlphaTest { func: CompareFunc::Always, reference: 0.0, unorm8: true });
         let clip = Rect::from_xywh(0, 0, 4, 1);
-        DrawState { fragment, clip, fill_clip: clip, polygon_stipple: None }
+        DrawState { fragment, clip, fill_clip: clip, polygon_stipple: None, samples_passed: None }
     }
 
     /// Runs one 4-pixel span at depth 0.5 over stored depths `stored`; returns how often the

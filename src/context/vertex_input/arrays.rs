@@ -145,7 +145,7 @@ impl Context {
             return None;
         }
         if matches!(pname, GL_FEEDBACK_BUFFER_POINTER | GL_SELECTION_BUFFER_POINTER) {
-            return Some(0);
+            return Some(self.selection.buffer_pointer(pname));
         }
         match self.vertex_input.arrays.array_of_pointer_name(pname) {
             Some(id) => Some(self.vertex_input.arrays.get(id).pointer),

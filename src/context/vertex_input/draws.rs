@@ -31,6 +31,9 @@ use crate::vertex::Vertex;
 /// How many arrays there are (`ClientArrays::all`).
 const ARRAY_COUNT: usize = 7 + MAX_TEXTURE_UNITS;
 
+/// The values of one glArrayElement, per enabled array.
+pub(crate) type FetchedElement = [Option<(ArrayId, [f32; 4])>; ARRAY_COUNT];
+
 /// A draw's batch vector keeps at most this many vertices of capacity between draws (strips
 /// and the other connected modes are delivered whole, and may be long).
 const KEPT_BATCH_CAPACITY: usize = 4 * BATCH_VERTICES;
@@ -250,23 +253,42 @@ impl Context {
     /// glArrayElement: as the attribute commands with element `index` of every enabled array,
     /// then glVertex when the vertex array is enabled. Legal between glBegin and glEnd.
     pub fn array_element(&mut self, index: i32, memory: &dyn ClientMemory) {
+        match self.fetch_array_element(index, memory) {
+            Ok(Some(fetched)) => self.apply_array_element(&fetched),
+            Ok(None) => {}
+            Err(error) => self.error(error),
+        }
+    }
+
+    /// What glArrayElement reads: element `index` of every enabled array (`Ok(None)` where GL
+    /// leaves it undefined and nothing happens).
+    pub(crate) fn fetch_array_element(
+        &self,
+        index: i32,
+        memory: &dyn ClientMemory,
+    ) -> Result<Option<FetchedElement>, GLenum> {
         if self.sources_mapped_buffer(false) {
-            return self.error(GL_INVALID_OPERATION);
+            return Err(GL_INVALID_OPERATION);
         }
         let Ok(index) = u32::try_from(index) else {
-            return;
+            return Ok(None);
         };
-        let mut fetched: [Option<(ArrayId, [f32; 4])>; ARRAY_COUNT] = [None; ARRAY_COUNT];
+        let mut fetched: FetchedElement = [None; ARRAY_COUNT];
         for (slot, (id, array)) in fetched.iter_mut().zip(self.vertex_input.arrays.all()) {
             if array.enabled {
                 let Ok(bytes) = array_bytes(array, &self.buffers, memory, index, index) else {
-                    return;
+                    return Ok(None);
                 };
                 *slot = Some((id, BoundArray::new(id, array, bytes, index).fetch(index)));
             }
         }
+        Ok(Some(fetched))
+    }
+
+    /// The second half of glArrayElement: the attribute commands, then glVertex.
+    pub(crate) fn apply_array_element(&mut self, fetched: &FetchedElement) {
         let mut position = None;
-        for (id, value) in fetched.into_iter().flatten() {
+        for &(id, value) in fetched.iter().flatten() {
             let current = &mut self.state.current;
             match id {
                 ArrayId::Vertex => position = Some(value),

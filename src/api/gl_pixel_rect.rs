@@ -1,0 +1,685 @@
+//! Entry points of the raster position and pixel rectangles: glRasterPos*, glWindowPos*,
+//! glBitmap, glDrawPixels, glCopyPixels, glPixelZoom. All are compiled into display lists; glBitmap and
+//! glDrawPixels read their image (under the unpack modes) when issued.
+use super::types::*;
+use super::{record_or_run, with_context};
+use crate::vertex::components::Component;
+
+/// The `N` values a C array starts with; `None` for NULL.
+///
+/// # Safety
+/// A non-null `v` must point to `N` readable values of `T`.
+unsafe fn read<T: Copy, const N: usize>(v: *const T) -> Option<[T; N]> {
+    if v.is_null() {
+        return None;
+    }
+    // SAFETY: the caller guarantees `N` readable values at `v` (unaligned read).
+    Some(unsafe { std::ptr::read_unaligned(v as *const [T; N]) })
+}
+
+#[no_mangle]
+pub extern "C" fn glRasterPos2s(x: GLshort, y: GLshort) {
+    record_or_run(move |ctx| ctx.raster_pos([x.to_f32(), y.to_f32(), 0.0, 1.0]))
+}
+
+/// # Safety
+/// `v` must point to 2 values (NULL is ignored).
+#[no_mangle]
+pub unsafe extern "C" fn glRasterPos2sv(v: *const GLshort) {
+    // SAFETY: forwarded contract of this entry point.
+    if let Some([x, y]) = unsafe { read(v) } {
+        glRasterPos2s(x, y)
+    }
+}
+
+#[no_mangle]
+pub extern "C" fn glRasterPos2i(x: GLint, y: GLint) {
+    record_or_run(move |ctx| ctx.raster_pos([x.to_f32(), y.to_f32(), 0.0, 1.0]))
+}
+
+/// # Safety
+/// `v` must point to 2 values (NULL is ignored).
+#[no_mangle]
+pub unsafe extern "C" fn glRasterPos2iv(v: *const GLint) {
+    // SAFETY: forwarded contract of this entry point.
+    if let Some([x, y]) = unsafe { read(v) } {
+        glRasterPos2i(x, y)
+    }
+}
+
+#[no_mangle]
+pub extern "C" fn glRasterPos2f(x: GLfloat, y: GLfloat) {
+    record_or_run(move |ctx| ctx.raster_pos([x, y, 0.0, 1.0]))
+}
+
+/// # Safety
+/// `v` must point to 2 values (NULL is ignored).
+#[no_mangle]
+pub unsafe extern "C" fn glRasterPos2fv(v: *const GLfloat) {
+    // SAFETY: forwarded contract of this entry point.
+    if let Some([x, y]) = unsafe { read(v) } {
+        glRasterPos2f(x, y)
+    }
+}
+
+#[no_mangle]
+pub extern "C" fn glRasterPos2d(x: GLdouble, y: GLdouble) {
+    record_or_run(move |ctx| ctx.raster_pos([x.to_f32(), y.to_f32(), 0.0, 1.0]))
+}
+
+/// # Safety
+/// `v` must point to 2 values (NULL is ignored).
+#[no_mangle]
+pub unsafe extern "C" fn glRasterPos2dv(v: *const GLdouble) {
+    // SAFETY: forwarded contract of this entry point.
+    if let Some([x, y]) = unsafe { read(v) } {
+        glRasterPos2d(x, y)
+    }
+}
+
+#[no_mangle]
+pub extern "C" fn glRasterPos3s(x: GLshort, y: GLshort, z: GLshort) {
+    record_or_run(move |ctx| ctx.raster_pos([x.to_f32(), y.to_f32(), z.to_f32(), 1.0]))
+}
+
+/// # Safety
+/// `v` must point to 3 values (NULL is ignored).
+#[no_mangle]
+pub unsafe extern "C" fn glRasterPos3sv(v: *const GLshort) {
+    // SAFETY: forwarded contract of this entry point.
+    if let Some([x, y, z]) = unsafe { read(v) } {
+        glRasterPos3s(x, y, z)
+    }
+}
+
+#[no_mangle]
+pub extern "C" fn glRasterPos3i(x: GLint, y: GLint, z: GLint) {
+    record_or_run(move |ctx| ctx.raster_pos([x.to_f32(), y.to_f32(), z.to_f32(), 1.0]))
+}
+
+/// # Safety
+/// `v` must point to 3 values (NULL is ignored).
+#[no_mangle]
+pub unsafe extern "C" fn glRasterPos3iv(v: *const GLint) {
+    // SAFETY: forwarded contract of this entry point.
+    if let Some([x, y, z]) = unsafe { read(v) } {
+        glRasterPos3i(x, y, z)
+    }
+}
+
+#[no_mangle]
+pub extern "C" fn glRasterPos3f(x: GLfloat, y: GLfloat, z: GLfloat) {
+    record_or_run(move |ctx| ctx.raster_pos([x, y, z, 1.0]))
+}
+
+/// # Safety
+/// `v` must point to 3 values (NULL is ignored).
+#[no_mangle]
+pub unsafe extern "C" fn glRasterPos3fv(v: *const GLfloat) {
+    // SAFETY: forwarded contract of this entry point.
+    if let Some([x, y, z]) = unsafe { read(v) } {
+        glRasterPos3f(x, y, z)
+    }
+}
+
+#[no_mangle]
+pub extern "C" fn glRasterPos3d(x: GLdouble, y: GLdouble, z: GLdouble) {
+    record_or_run(move |ctx| ctx.raster_pos([x.to_f32(), y.to_f32(), z.to_f32(), 1.0]))
+}
+
+/// # Safety
+/// `v` must point to 3 values (NULL is ignored).
+#[no_mangle]
+pub unsafe extern "C" fn glRasterPos3dv(v: *const GLdouble) {
+    // SAFETY: forwarded contract of this entry point.
+    if let Some([x, y, z]) = unsafe { read(v) } {
+        glRasterPos3d(x, y, z)
+    }
+}
+
+#[no_mangle]
+pub extern "C" fn glRasterPos4s(x: GLshort, y: GLshort, z: GLshort, w: GLshort) {
+    record_or_run(move |ctx| ctx.raster_pos([x.to_f32(), y.to_f32(), z.to_f32(), w.to_f32()]))
+}
+
+/// # Safety
+/// `v` must point to 4 values (NULL is ignored).
+#[no_mangle]
+pub unsafe extern "C" fn glRasterPos4sv(v: *const GLshort) {
+    // SAFETY: forwarded contract of this entry point.
+    if let Some([x, y, z, w]) = unsafe { read(v) } {
+        glRasterPos4s(x, y, z, w)
+    }
+}
+
+#[no_mangle]
+pub extern "C" fn glRasterPos4i(x: GLint, y: GLint, z: GLint, w: GLint) {
+    record_or_run(move |ctx| ctx.raster_pos([x.to_f32(), y.to_f32(), z.to_f32(), w.to_f32()]))
+}
+
+/// # Safety
+/// `v` must point to 4 values (NULL is ignored).
+#[no_mangle]
+pub unsafe extern "C" fn glRasterPos4iv(v: *const GLint) {
+    // SAFETY: forwarded contract of this entry point.
+    if let Some([x, y, z, w]) = unsafe { read(v) } {
+        glRasterPos4i(x, y, z, w)
+    }
+}
+
+#[no_mangle]
+pub extern "C" fn glRasterPos4f(x: GLfloat, y: GLfloat, z: GLfloat, w: GLfloat) {
+    record_or_run(move |ctx| ctx.raster_pos([x, y, z, w]))
+}
+
+/// # Safety
+/// `v` must point to 4 values (NULL is ignored).
+#[no_mangle]
+pub unsafe extern "C" fn glRasterPos4fv(v: *const GLfloat) {
+    // SAFETY: forwarded contract of this entry point.
+    if let Some([x, y, z, w]) = unsafe { read(v) } {
+        glRasterPos4f(x, y, z, w)
+    }
+}
+
+#[no_mangle]
+pub extern "C" fn glRasterPos4d(x: GLdouble, y: GLdouble, z: GLdouble, w: GLdouble) {
+    record_or_run(move |ctx| ctx.raster_pos([x.to_f32(), y.to_f32(), z.to_f32(), w.to_f32()]))
+}
+
+/// # Safety
+/// `v` must point to 4 values (NULL is ignored).
+#[no_mangle]
+pub unsafe extern "C" fn glRasterPos4dv(v: *const GLdouble) {
+    // SAFETY: forwarded contract of this entry point.
+    if let Some([x, y, z, w]) = unsafe { read(v) } {
+        glRasterPos4d(x, y, z, w)
+    }
+}
+
+#[no_mangle]
+pub extern "C" fn glWindowPos2s(x: GLshort, y: GLshort) {
+    record_or_run(move |ctx| ctx.window_pos([x.to_f32(), y.to_f32(), 0.0]))
+}
+
+/// # Safety
+/// `v` must point to 2 values (NULL is ignored).
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos2sv(v: *const GLshort) {
+    // SAFETY: forwarded contract of this entry point.
+    if let Some([x, y]) = unsafe { read(v) } {
+        glWindowPos2s(x, y)
+    }
+}
+
+#[no_mangle]
+pub extern "C" fn glWindowPos2sARB(x: GLshort, y: GLshort) {
+    glWindowPos2s(x, y)
+}
+
+/// # Safety
+/// As the core function.
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos2svARB(v: *const GLshort) {
+    // SAFETY: forwarded contract of this entry point.
+    unsafe { glWindowPos2sv(v) }
+}
+
+#[no_mangle]
+pub extern "C" fn glWindowPos2sMESA(x: GLshort, y: GLshort) {
+    glWindowPos2s(x, y)
+}
+
+/// # Safety
+/// As the core function.
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos2svMESA(v: *const GLshort) {
+    // SAFETY: forwarded contract of this entry point.
+    unsafe { glWindowPos2sv(v) }
+}
+
+#[no_mangle]
+pub extern "C" fn glWindowPos2i(x: GLint, y: GLint) {
+    record_or_run(move |ctx| ctx.window_pos([x.to_f32(), y.to_f32(), 0.0]))
+}
+
+/// # Safety
+/// `v` must point to 2 values (NULL is ignored).
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos2iv(v: *const GLint) {
+    // SAFETY: forwarded contract of this entry point.
+    if let Some([x, y]) = unsafe { read(v) } {
+        glWindowPos2i(x, y)
+    }
+}
+
+#[no_mangle]
+pub extern "C" fn glWindowPos2iARB(x: GLint, y: GLint) {
+    glWindowPos2i(x, y)
+}
+
+/// # Safety
+/// As the core function.
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos2ivARB(v: *const GLint) {
+    // SAFETY: forwarded contract of this entry point.
+    unsafe { glWindowPos2iv(v) }
+}
+
+#[no_mangle]
+pub extern "C" fn glWindowPos2iMESA(x: GLint, y: GLint) {
+    glWindowPos2i(x, y)
+}
+
+/// # Safety
+/// As the core function.
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos2ivMESA(v: *const GLint) {
+    // SAFETY: forwarded contract of this entry point.
+    unsafe { glWindowPos2iv(v) }
+}
+
+#[no_mangle]
+pub extern "C" fn glWindowPos2f(x: GLfloat, y: GLfloat) {
+    record_or_run(move |ctx| ctx.window_pos([x, y, 0.0]))
+}
+
+/// # Safety
+/// `v` must point to 2 values (NULL is ignored).
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos2fv(v: *const GLfloat) {
+    // SAFETY: forwarded contract of this entry point.
+    if let Some([x, y]) = unsafe { read(v) } {
+        glWindowPos2f(x, y)
+    }
+}
+
+#[no_mangle]
+pub extern "C" fn glWindowPos2fARB(x: GLfloat, y: GLfloat) {
+    glWindowPos2f(x, y)
+}
+
+/// # Safety
+/// As the core function.
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos2fvARB(v: *const GLfloat) {
+    // SAFETY: forwarded contract of this entry point.
+    unsafe { glWindowPos2fv(v) }
+}
+
+#[no_mangle]
+pub extern "C" fn glWindowPos2fMESA(x: GLfloat, y: GLfloat) {
+    glWindowPos2f(x, y)
+}
+
+/// # Safety
+/// As the core function.
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos2fvMESA(v: *const GLfloat) {
+    // SAFETY: forwarded contract of this entry point.
+    unsafe { glWindowPos2fv(v) }
+}
+
+#[no_mangle]
+pub extern "C" fn glWindowPos2d(x: GLdouble, y: GLdouble) {
+    record_or_run(move |ctx| ctx.window_pos([x.to_f32(), y.to_f32(), 0.0]))
+}
+
+/// # Safety
+/// `v` must point to 2 values (NULL is ignored).
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos2dv(v: *const GLdouble) {
+    // SAFETY: forwarded contract of this entry point.
+    if let Some([x, y]) = unsafe { read(v) } {
+        glWindowPos2d(x, y)
+    }
+}
+
+#[no_mangle]
+pub extern "C" fn glWindowPos2dARB(x: GLdouble, y: GLdouble) {
+    glWindowPos2d(x, y)
+}
+
+/// # Safety
+/// As the core function.
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos2dvARB(v: *const GLdouble) {
+    // SAFETY: forwarded contract of this entry point.
+    unsafe { glWindowPos2dv(v) }
+}
+
+#[no_mangle]
+pub extern "C" fn glWindowPos2dMESA(x: GLdouble, y: GLdouble) {
+    glWindowPos2d(x, y)
+}
+
+/// # Safety
+/// As the core function.
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos2dvMESA(v: *const GLdouble) {
+    // SAFETY: forwarded contract of this entry point.
+    unsafe { glWindowPos2dv(v) }
+}
+
+#[no_mangle]
+pub extern "C" fn glWindowPos3s(x: GLshort, y: GLshort, z: GLshort) {
+    record_or_run(move |ctx| ctx.window_pos([x.to_f32(), y.to_f32(), z.to_f32()]))
+}
+
+/// # Safety
+/// `v` must point to 3 values (NULL is ignored).
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos3sv(v: *const GLshort) {
+    // SAFETY: forwarded contract of this entry point.
+    if let Some([x, y, z]) = unsafe { read(v) } {
+        glWindowPos3s(x, y, z)
+    }
+}
+
+#[no_mangle]
+pub extern "C" fn glWindowPos3sARB(x: GLshort, y: GLshort, z: GLshort) {
+    glWindowPos3s(x, y, z)
+}
+
+/// # Safety
+/// As the core function.
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos3svARB(v: *const GLshort) {
+    // SAFETY: forwarded contract of this entry point.
+    unsafe { glWindowPos3sv(v) }
+}
+
+#[no_mangle]
+pub extern "C" fn glWindowPos3sMESA(x: GLshort, y: GLshort, z: GLshort) {
+    glWindowPos3s(x, y, z)
+}
+
+/// # Safety
+/// As the core function.
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos3svMESA(v: *const GLshort) {
+    // SAFETY: forwarded contract of this entry point.
+    unsafe { glWindowPos3sv(v) }
+}
+
+#[no_mangle]
+pub extern "C" fn glWindowPos3i(x: GLint, y: GLint, z: GLint) {
+    record_or_run(move |ctx| ctx.window_pos([x.to_f32(), y.to_f32(), z.to_f32()]))
+}
+
+/// # Safety
+/// `v` must point to 3 values (NULL is ignored).
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos3iv(v: *const GLint) {
+    // SAFETY: forwarded contract of this entry point.
+    if let Some([x, y, z]) = unsafe { read(v) } {
+        glWindowPos3i(x, y, z)
+    }
+}
+
+#[no_mangle]
+pub extern "C" fn glWindowPos3iARB(x: GLint, y: GLint, z: GLint) {
+    glWindowPos3i(x, y, z)
+}
+
+/// # Safety
+/// As the core function.
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos3ivARB(v: *const GLint) {
+    // SAFETY: forwarded contract of this entry point.
+    unsafe { glWindowPos3iv(v) }
+}
+
+#[no_mangle]
+pub extern "C" fn glWindowPos3iMESA(x: GLint, y: GLint, z: GLint) {
+    glWindowPos3i(x, y, z)
+}
+
+/// # Safety
+/// As the core function.
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos3ivMESA(v: *const GLint) {
+    // SAFETY: forwarded contract of this entry point.
+    unsafe { glWindowPos3iv(v) }
+}
+
+#[no_mangle]
+pub extern "C" fn glWindowPos3f(x: GLfloat, y: GLfloat, z: GLfloat) {
+    record_or_run(move |ctx| ctx.window_pos([x, y, z]))
+}
+
+/// # Safety
+/// `v` must point to 3 values (NULL is ignored).
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos3fv(v: *const GLfloat) {
+    // SAFETY: forwarded contract of this entry point.
+    if let Some([x, y, z]) = unsafe { read(v) } {
+        glWindowPos3f(x, y, z)
+    }
+}
+
+#[no_mangle]
+pub extern "C" fn glWindowPos3fARB(x: GLfloat, y: GLfloat, z: GLfloat) {
+    glWindowPos3f(x, y, z)
+}
+
+/// # Safety
+/// As the core function.
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos3fvARB(v: *const GLfloat) {
+    // SAFETY: forwarded contract of this entry point.
+    unsafe { glWindowPos3fv(v) }
+}
+
+#[no_mangle]
+pub extern "C" fn glWindowPos3fMESA(x: GLfloat, y: GLfloat, z: GLfloat) {
+    glWindowPos3f(x, y, z)
+}
+
+/// # Safety
+/// As the core function.
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos3fvMESA(v: *const GLfloat) {
+    // SAFETY: forwarded contract of this entry point.
+    unsafe { glWindowPos3fv(v) }
+}
+
+#[no_mangle]
+pub extern "C" fn glWindowPos3d(x: GLdouble, y: GLdouble, z: GLdouble) {
+    record_or_run(move |ctx| ctx.window_pos([x.to_f32(), y.to_f32(), z.to_f32()]))
+}
+
+/// # Safety
+/// `v` must point to 3 values (NULL is ignored).
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos3dv(v: *const GLdouble) {
+    // SAFETY: forwarded contract of this entry point.
+    if let Some([x, y, z]) = unsafe { read(v) } {
+        glWindowPos3d(x, y, z)
+    }
+}
+
+#[no_mangle]
+pub extern "C" fn glWindowPos3dARB(x: GLdouble, y: GLdouble, z: GLdouble) {
+    glWindowPos3d(x, y, z)
+}
+
+/// # Safety
+/// As the core function.
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos3dvARB(v: *const GLdouble) {
+    // SAFETY: forwarded contract of this entry point.
+    unsafe { glWindowPos3dv(v) }
+}
+
+#[no_mangle]
+pub extern "C" fn glWindowPos3dMESA(x: GLdouble, y: GLdouble, z: GLdouble) {
+    glWindowPos3d(x, y, z)
+}
+
+/// # Safety
+/// As the core function.
+#[no_mangle]
+pub unsafe extern "C" fn glWindowPos3dvMESA(v: *const GLdouble) {
+    // SAFETY: forwarded contract of this entry point.
+    unsafe { glWindowPos3dv(v) }
+}
+
+/// # Safety
+/// `bitmap` is NULL or points to a `width` × `height` bitmap laid out as the unpack
+/// parameters of glPixelStore describe.
+#[no_mangle]
+pub unsafe extern "C" fn glBitmap(
+    width: GLsizei,
+    height: GLsizei,
+    xorig: GLfloat,
+    yorig: GLfloat,
+    xmove: GLfloat,
+    ymove: GLfloat,
+    bitmap: *const GLubyte,
+) {
+    with_context((), |ctx| {
+        let bits = ctx.unpack_bitmap(width, height, |span| {
+            if bitmap.is_null() {
+                return None;
+            }
+            // SAFETY: the context computed `span` from the unpack parameters as the bytes the
+            // bitmap occupies; by glBitmap's contract the caller's image holds them.
+            Some(unsafe { std::slice::from_raw_parts(bitmap.add(span.start), span.len()) })
+        });
+        ctx.record_or_run(move |ctx| ctx.bitmap(width, height, [xorig, yorig], [xmove, ymove], &bits))
+    })
+}
+
+/// # Safety
+/// `pixels` is NULL or points to a `width` × `height` image of `format`/`type_` laid out as
+/// the unpack parameters of glPixelStore describe.
+#[no_mangle]
+pub unsafe extern "C" fn glDrawPixels(
+    width: GLsizei,
+    height: GLsizei,
+    format: GLenum,
+    type_: GLenum,
+    pixels: *const GLvoid,
+) {
+    with_context((), |ctx| {
+        let data = ctx.unpack_draw_pixels(width, height, format, type_, |span| {
+            if pixels.is_null() {
+                return None;
+            }
+            // SAFETY: the context computed `span` from the unpack parameters as the bytes the
+            // image occupies; by glDrawPixels' contract the caller's image holds them.
+            Some(unsafe { std::slice::from_raw_parts((pixels as *const u8).add(span.start), span.len()) })
+        });
+        ctx.record_or_run(move |ctx| ctx.draw_pixels(width, height, &data))
+    })
+}
+
+#[no_mangle]
+pub extern "C" fn glPixelZoom(xfactor: GLfloat, yfactor: GLfloat) {
+    record_or_run(move |ctx| ctx.pixel_zoom(xfactor, yfactor))
+}
+
+#[no_mangle]
+pub extern "C" fn glCopyPixels(x: GLint, y: GLint, width: GLsizei, height: GLsizei, type_: GLenum) {
+    record_or_run(move |ctx| ctx.copy_pixels(x, y, width, height, type_))
+}
+
+#[no_mangle]
+pub extern "C" fn glPixelTransferf(pname: GLenum, param: GLfloat) {
+    record_or_run(move |ctx| ctx.pixel_transfer(pname, param))
+}
+
+#[no_mangle]
+pub extern "C" fn glPixelTransferi(pname: GLenum, param: GLint) {
+    record_or_run(move |ctx| ctx.pixel_transfer(pname, param as f32))
+}
+
+/// The `mapsize` values of a glPixelMap call as floats (`None`: a negative size or NULL).
+///
+/// # Safety
+/// A non-null `values` must point to `mapsize` values.
+unsafe fn map_values<T: Copy>(mapsize: GLsizei, values: *const T, convert: impl Fn(T) -> f32) -> Vec<f32> {
+    if values.is_null() || mapsize <= 0 || mapsize as usize > crate::context::pixel_rect::MAX_PIXEL_MAP_TABLE {
+        // Invalid sizes still reach the context (as an empty or oversized table) for the error.
+        return vec![
+            0.0;
+            if mapsize > 0 { mapsize as usize } else { 0 }
+                .min(crate::context::pixel_rect::MAX_PIXEL_MAP_TABLE + 1)
+        ];
+    }
+    // SAFETY: the caller passes `mapsize` values at `values`.
+    unsafe { std::slice::from_raw_parts(values, mapsize as usize) }.iter().map(|&v| convert(v)).collect()
+}
+
+/// # Safety
+/// `values` must point to `mapsize` floats.
+#[no_mangle]
+pub unsafe extern "C" fn glPixelMapfv(map: GLenum, mapsize: GLsizei, values: *const GLfloat) {
+    // SAFETY: forwarded contract of this entry point.
+    let table = unsafe { map_values(mapsize, values, |v| v) };
+    record_or_run(move |ctx| ctx.pixel_map(map, &table))
+}
+
+/// # Safety
+/// `values` must point to `mapsize` GLuints.
+#[no_mangle]
+pub unsafe extern "C" fn glPixelMapuiv(map: GLenum, mapsize: GLsizei, values: *const GLuint) {
+    use crate::context::pixel_rect::pixel_map_from_integer;
+    // SAFETY: forwarded contract of this entry point.
+    let table = unsafe { map_values(mapsize, values, |v| pixel_map_from_integer(map, v, 4294967295.0)) };
+    record_or_run(move |ctx| ctx.pixel_map(map, &table))
+}
+
+/// # Safety
+/// `values` must point to `mapsize` GLushorts.
+#[no_mangle]
+pub unsafe extern "C" fn glPixelMapusv(map: GLenum, mapsize: GLsizei, values: *const GLushort) {
+    use crate::context::pixel_rect::pixel_map_from_integer;
+    // SAFETY: forwarded contract of this entry point.
+    let table = unsafe { map_values(mapsize, values, |v| pixel_map_from_integer(map, v as u32, 65535.0)) };
+    record_or_run(move |ctx| ctx.pixel_map(map, &table))
+}
+
+/// Writes a pixel map table to the caller's array, each entry converted by `convert`.
+///
+/// # Safety
+/// `values` must have room for the table (GL_PIXEL_MAP_*_SIZE entries).
+unsafe fn write_map<T>(map: GLenum, values: *mut T, convert: impl Fn(f32, bool) -> T) {
+    with_context((), |ctx| {
+        if let Some(table) = ctx.get_pixel_map(map) {
+            if values.is_null() {
+                return;
+            }
+            let color = !matches!(map, super::enums::GL_PIXEL_MAP_I_TO_I | super::enums::GL_PIXEL_MAP_S_TO_S);
+            for (i, &v) in table.iter().enumerate() {
+                // SAFETY: the caller provides room for the whole table.
+                unsafe { values.add(i).write_unaligned(convert(v, color)) }
+            }
+        }
+    })
+}
+
+/// # Safety
+/// `values` must have room for the table.
+#[no_mangle]
+pub unsafe extern "C" fn glGetPixelMapfv(map: GLenum, values: *mut GLfloat) {
+    // SAFETY: forwarded contract of this entry point.
+    unsafe { write_map(map, values, |v, _| v) }
+}
+
+/// # Safety
+/// `values` must have room for the table.
+#[no_mangle]
+pub unsafe extern "C" fn glGetPixelMapuiv(map: GLenum, values: *mut GLuint) {
+    // SAFETY: forwarded contract of this entry point.
+    unsafe { write_map(map, values, |v, color| if color { (v as f64 * 4294967295.0) as u32 } else { v as u32 }) }
+}
+
+/// # Safety
+/// `values` must have room for the table.
+#[no_mangle]
+pub unsafe extern "C" fn glGetPixelMapusv(map: GLenum, values: *mut GLushort) {
+    // SAFETY: forwarded contract of this entry point.
+    unsafe { write_map(map, values, |v, color| if color { (v * 65535.0) as u16 } else { v as u16 }) }
+}

@@ -1,0 +1,159 @@
+//! The current raster position: glRasterPos, glWindowPos and the GL_CURRENT_RASTER_*
+//! queries (GL 2.1 section 2.13).
+//!
+//! glRasterPos transforms its point as a vertex is transformed; a point outside the view
+//! volume (or cut by an enabled user clip plane) makes the raster position invalid, and
+//! glBitmap, glDrawPixels and glCopyPixels then do nothing. The raster color, secondary color
+//! and texture coordinates are the current ones when the position is set (clamped as vertex
+//! colors are); the raster distance is the fog coordinate under GL_FOG_COORD, else the eye
+//! distance. glWindowPos sets window coordinates directly and is always valid.
+use super::get::Value;
+use super::Context;
+use crate::api::enums::*;
+use crate::api::types::GLenum;
+use crate::context::state::MAX_TEXTURE_UNITS;
+use glam::Vec4;
+
+/// The raster position and the attributes it carries (part of GL_CURRENT_BIT).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RasterPos {
+    pub valid: bool,
+    /// Window x, y, z and the clip w.
+    pub window: [f32; 4],
+    pub distance: f32,
+    pub color: [f32; 4],
+    pub secondary_color: [f32; 4],
+    pub tex_coords: [[f32; 4]; MAX_TEXTURE_UNITS],
+    pub index: f32,
+}
+
+impl Default for RasterPos {
+    fn default() -> Self {
+        RasterPos {
+            valid: true,
+            window: [0.0, 0.0, 0.0, 1.0],
+            distance: 0.0,
+            color: [1.0; 4],
+            secondary_color: [0.0, 0.0, 0.0, 1.0],
+            tex_coords: [[0.0, 0.0, 0.0, 1.0]; MAX_TEXTURE_UNITS],
+            index: 1.0,
+        }
+    }
+}
+
+impl Context {
+    /// The current colors clamped as vertex colors are for the current framebuffer.
+    fn raster_colors(&self) -> ([f32; 4], [f32; 4]) {
+        let clamp = match self.state.lighting.clamp_vertex_color {
+            GL_FIXED_ONLY => !self.config.visual.color.is_float(),
+            c => c == GL_TRUE as GLenum,
+        };
+        let clamp4 = |c: [f32; 4]| if clamp { c.map(|x| x.clamp(0.0, 1.0)) } else { c };
+        (clamp4(self.state.current.color), clamp4(self.state.current.secondary_color))
+    }
+
+    /// glRasterPos with object coordinates (x, y, z, w).
+    pub fn raster_pos(&mut self, position: [f32; 4]) {
+        if !self.check_outside_begin_end() {
+            return;
+        }
+        self.matrices.validate();
+        let object = Vec4::from_array(position);
+        let eye = self.matrices.modelview() * object;
+        let clip = self.matrices.model_project() * object;
+        let transform = &self.state.transform;
+        let mut inside = [clip.x, clip.y].iter().all(|&c| -clip.w <= c && c <= clip.w)
+            && (transform.depth_clamp || (-clip.w <= clip.z && clip.z <= clip.w));
+        for (plane, &on) in transform.clip_plane_equations.iter().zip(&transform.clip_planes) {
+            if on {
+                let p = plane.map(|c| c as f32);
+                inside &= p[0] * eye.x + p[1] * eye.y + p[2] * eye.z + p[3] * eye.w >= 0.0;
+            }
+        }
+        let raster = &mut self.state.current.raster;
+        if !inside {
+            raster.valid = false;
+            return;
+        }
+        let [vx, vy, vw, vh] = self.state.viewport.rect;
+        let [near, far] = self.state.viewport.depth_range.map(|d| d as f32);
+        let inv_w = 1.0 / clip.w;
+        let ndc = [clip.x * inv_w, clip.y * inv_w, clip.z * inv_w];
+        let (half_w, half_h) = (vw as f32 * 0.5, vh as f32 * 0.5);
+        let mut z = ndc[2] * ((far - near) * 0.5) + (near + far) * 0.5;
+        if transform.depth_clamp {
+            z = z.clamp(near.min(far), near.max(far));
+        }
+        let window = [ndc[0] * half_w + (vx as f32 + half_w), ndc[1] * half_h + (vy as f32 + half_h), z, clip.w];
+        let distance = if self.state.fog.coord_src == GL_FOG_COORD {
+            self.state.current.fog_coord
+        } else {
+            eye.truncate().length()
+        };
+        if self.selection.mode == GL_SELECT {
+            self.selection.hit(window[2]);
+        }
+        let (color, secondary_color) = self.raster_colors();
+        let current = &self.state.current;
+        self.state.current.raster = RasterPos {
+            valid: true,
+            window,
+            distance,
+            color,
+            secondary_color,
+            tex_coords: current.tex_coords,
+            index: current.index,
+        };
+    }
+
+    /// glWindowPos with window coordinates (x, y, z): z in [0, 1] maps onto the depth range.
+    pub fn window_pos(&mut self, [x, y, z]: [f32; 3]) {
+        if !self.check_outside_begin_end() {
+            return;
+        }
+        let [near, far] = self.state.viewport.depth_range.map(|d| d as f32);
+        let z = near + z.clamp(0.0, 1.0) * (far - near);
+        let distance = if self.state.fog.coord_src == GL_FOG_COORD { self.state.current.fog_coord } else { 0.0 };
+        if self.selection.mode == GL_SELECT {
+            self.selection.hit(z);
+        }
+        let (color, secondary_color) = self.raster_colors();
+        let current = &self.state.current;
+        self.state.current.raster = RasterPos {
+            valid: true,
+            window: [x, y, z, 1.0],
+            distance,
+            color,
+            secondary_color,
+            tex_coords: current.tex_coords,
+            index: current.index,
+        };
+    }
+
+    /// The glGet values of the raster position; `None` for other pnames.
+    pub(crate) fn raster_pos_values(&self, pname: GLenum) -> Option<Vec<Value>> {
+        let r = &self.state.current.raster;
+        Some(match pname {
+            GL_CURRENT_RASTER_POSITION => r.window.map(Value::Float).to_vec(),
+            GL_CURRENT_RASTER_POSITION_VALID => vec![Value::Bool(r.valid)],
+            GL_CURRENT_RASTER_DISTANCE => vec![Value::Float(r.distance)],
+            GL_CURRENT_RASTER_COLOR => r.color.map(Value::NormFloat).to_vec(),
+            GL_CURRENT_RASTER_SECONDARY_COLOR => r.secondary_color.map(Value::NormFloat).to_vec(),
+            GL_CURRENT_RASTER_INDEX => vec![Value::Float(r.index)],
+            GL_CURRENT_RASTER_TEXTURE_COORDS => {
+                let unit = self.state.texture.active_unit.min(MAX_TEXTURE_UNITS - 1);
+                r.tex_coords[unit].map(Value::Float).to_vec()
+            }
+            GL_ZOOM_X => vec![Value::Float(self.state.pixel_mode.zoom[0])],
+            GL_ZOOM_Y => vec![Value::Float(self.state.pixel_mode.zoom[1])],
+            _ => return None,
+        })
+    }
+
+    /// glPixelZoom.
+    pub fn pixel_zoom(&mut self, x: f32, y: f32) {
+        if self.check_outside_begin_end() {
+            self.state.pixel_mode.zoom = [x, y];
+        }
+    }
+}

@@ -1,0 +1,134 @@
+//! Array draws compiled into display lists (GL 2.1 section 5.4: the arrays are dereferenced
+//! when the command is compiled).
+//!
+//! The draw runs at compile time with its batches captured instead of drawn, and its error (if
+//! any) held back; the recorded command raises that error, or delivers the captured vertices,
+//! when the list runs. Only what the enabled arrays supplied is kept from the captured
+//! vertices: the other attributes are the current values at execution, as for the same draw
+//! executed then. glArrayElement keeps the fetched values and replays the attribute commands
+//! and glVertex.
+use super::draws::FetchedElement;
+use super::Context;
+use crate::api::enums::*;
+use crate::api::types::GLenum;
+use crate::context::state::MAX_TEXTURE_UNITS;
+use crate::vertex::arrays::ArrayId;
+use crate::vertex::immediate::vertex_from_current;
+use crate::vertex::Vertex;
+
+/// Which attributes of a captured vertex came from arrays.
+#[derive(Clone, Copy, Debug, Default)]
+struct ArraySupplied {
+    normal: bool,
+    color: bool,
+    secondary_color: bool,
+    fog_coord: bool,
+    edge_flag: bool,
+    tex_coords: [bool; MAX_TEXTURE_UNITS],
+}
+
+impl ArraySupplied {
+    /// Writes the array-supplied attributes of `captured` over `vertex`.
+    fn merge(&self, vertex: &mut Vertex, captured: &Vertex) {
+        vertex.position = captured.position;
+        if self.normal {
+            vertex.normal = captured.normal;
+        }
+        if self.color {
+            vertex.color = captured.color;
+        }
+        if self.secondary_color {
+            vertex.secondary_color = captured.secondary_color;
+        }
+        if self.fog_coord {
+            vertex.fog_coord = captured.fog_coord;
+        }
+        if self.edge_flag {
+            vertex.edge_flag = captured.edge_flag;
+        }
+        for (unit, &on) in self.tex_coords.iter().enumerate() {
+            if on {
+                vertex.tex_coords[unit] = captured.tex_coords[unit];
+            }
+        }
+    }
+}
+
+/// A compiled array draw: the error it raised, or the batches it delivered.
+struct CompiledDraw {
+    error: GLenum,
+    supplied: ArraySupplied,
+    batches: Vec<(GLenum, Vec<Vertex>)>,
+}
+
+impl Context {
+    /// Runs the array draw `draw` now, or compiles it when a list is being compiled.
+    pub fn draw_or_compile(&mut self, draw: impl FnOnce(&mut Context)) {
+        if !self.lists.compiling() {
+            return draw(self);
+        }
+        let earlier_error = std::mem::replace(&mut self.error, GL_NO_ERROR);
+        // The glBegin/glEnd check belongs to execution time.
+        let inside = std::mem::replace(&mut self.inside_begin_end, false);
+        self.vertex_input.capture = Some(Vec::new());
+        draw(self);
+        let batches = self.vertex_input.capture.take().unwrap_or_default();
+        self.inside_begin_end = inside;
+        let error = std::mem::replace(&mut self.error, earlier_error);
+        let mut supplied = ArraySupplied::default();
+        for (id, array) in self.vertex_input.arrays.all() {
+            if !array.enabled {
+                continue;
+            }
+            match id {
+                ArrayId::Normal => supplied.normal = true,
+                ArrayId::Color => supplied.color = true,
+                ArrayId::SecondaryColor => supplied.secondary_color = true,
+                ArrayId::FogCoord => supplied.fog_coord = true,
+                ArrayId::EdgeFlag => supplied.edge_flag = true,
+                ArrayId::TexCoord(unit) => supplied.tex_coords[unit] = true,
+                ArrayId::Vertex | ArrayId::Index => {}
+            }
+        }
+        let compiled = CompiledDraw { error, supplied, batches };
+        self.record_or_run(move |ctx| ctx.replay_draw(&compiled));
+    }
+
+    fn replay_draw(&mut self, compiled: &CompiledDraw) {
+        if !self.check_outside_begin_end() {
+            return;
+        }
+        if compiled.error != GL_NO_ERROR {
+            return self.error(compiled.error);
+        }
+        for (mode, captured) in &compiled.batches {
+            let mut batch = std::mem::take(&mut self.vertex_input.batch);
+            batch.clear();
+            if batch.try_reserve(captured.len()).is_err() {
+                return self.error(GL_OUT_OF_MEMORY);
+            }
+            let base = vertex_from_current(&self.state.current, [0.0, 0.0, 0.0, 1.0]);
+            batch.extend(captured.iter().map(|c| {
+                let mut vertex = base;
+                compiled.supplied.merge(&mut vertex, c);
+                vertex
+            }));
+            self.deliver(*mode, &batch);
+            batch.clear();
+            self.vertex_input.batch = batch;
+        }
+    }
+
+    /// glArrayElement now, or its values compiled into the list being compiled.
+    pub fn array_element_or_compile(&mut self, index: i32, memory: &dyn crate::vertex::arrays::ClientMemory) {
+        if !self.lists.compiling() {
+            return self.array_element(index, memory);
+        }
+        let fetched: Result<Option<FetchedElement>, GLenum> = self.fetch_array_element(index, memory);
+        self.record_or_run(move |ctx| match &fetched {
+            Ok(Some(fetched)) => ctx.apply_array_element(fetched),
+            Ok(None) => {}
+            Err(error) => ctx.error(*error),
+        });
+    }
+}
