@@ -261,10 +261,16 @@ impl Fuzzer {
         if selector < 48 {
             let (name, op) = HAND[self.u16() as usize % HAND.len()];
             self.current = name;
+            if trace() {
+                eprintln!("calling {name}");
+            }
             op(self);
         } else {
             let (name, op) = GENERATED[self.u16() as usize % GENERATED.len()];
             self.current = name;
+            if trace() {
+                eprintln!("calling {name}");
+            }
             op(self);
         }
         self.after_call();

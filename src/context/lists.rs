@@ -39,6 +39,10 @@ pub struct DisplayList {
     commands: Vec<Command>,
 }
 
+/// The largest block of names one glGenLists reserves (about 4 million: a few hundred MiB of
+/// table entries); larger requests are GL_OUT_OF_MEMORY.
+pub const MAX_RESERVED_BLOCK: u32 = 1 << 22;
+
 /// The display list names of a share group: a name maps to its list (an empty list for names
 /// reserved by glGenLists).
 pub type ListNames = Arc<Mutex<BTreeMap<u32, Arc<DisplayList>>>>;
@@ -247,6 +251,12 @@ impl Context {
             return 0;
         }
         if range == 0 {
+            return 0;
+        }
+        // Reserved names are table entries: a block larger than this would take gigabytes
+        // (or abort the process), so it fails as an allocation failure would.
+        if range as u32 > MAX_RESERVED_BLOCK {
+            self.error(GL_OUT_OF_MEMORY);
             return 0;
         }
         let mut table = self.lists.table();
