@@ -3,8 +3,8 @@
 //! supported or advertised).
 use super::types::*;
 use super::{guard, record_or_run, with_context};
-use std::ops::Range;
 use crate::context::texture::{ImageArgs, Region};
+use std::ops::Range;
 
 /// `n` elements at `ptr`, or none for NULL or a non-positive count.
 ///
@@ -42,10 +42,7 @@ unsafe fn image_command(
     format: GLenum,
     ty: GLenum,
     size: [GLsizei; 3],
-    run: impl for<'b> Fn(&mut crate::context::Context, &'b dyn Fn(Range<usize>) -> Option<&'b [u8]>)
-        + Send
-        + Sync
-        + 'static,
+    run: impl for<'b> Fn(&mut crate::context::Context, &'b dyn Fn(Range<usize>) -> Option<&'b [u8]>) + Send + Sync + 'static,
 ) {
     with_context((), |ctx| {
         if !ctx.lists.compiling() {
