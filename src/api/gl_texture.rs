@@ -427,7 +427,7 @@ fn count(pname: GLenum) -> GLsizei {
 #[no_mangle]
 pub unsafe extern "C" fn glTexParameterfv(target: GLenum, pname: GLenum, params: *const GLfloat) {
     // SAFETY: forwarded contract.
-    let v = unsafe { slice(params, count(pname)) };
+    let v = unsafe { slice(params, count(pname)) }.to_vec();
     record_or_run(move |ctx| ctx.tex_parameter(target, pname, &v, false))
 }
 
@@ -494,7 +494,7 @@ pub extern "C" fn glTexEnvi(target: GLenum, pname: GLenum, param: GLint) {
 #[no_mangle]
 pub unsafe extern "C" fn glTexEnvfv(target: GLenum, pname: GLenum, params: *const GLfloat) {
     // SAFETY: forwarded contract.
-    let v = unsafe { slice(params, count(pname)) };
+    let v = unsafe { slice(params, count(pname)) }.to_vec();
     record_or_run(move |ctx| ctx.tex_env(target, pname, &v, false))
 }
 
@@ -557,7 +557,7 @@ fn gen_count(pname: GLenum) -> GLsizei {
 #[no_mangle]
 pub unsafe extern "C" fn glTexGendv(coord: GLenum, pname: GLenum, params: *const GLdouble) {
     // SAFETY: forwarded contract.
-    let v = unsafe { slice(params, gen_count(pname)) };
+    let v = unsafe { slice(params, gen_count(pname)) }.to_vec();
     record_or_run(move |ctx| ctx.tex_gen(coord, pname, &v, true))
 }
 
