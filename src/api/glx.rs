@@ -662,12 +662,51 @@ pub extern "C" fn glXWaitX() {
     guard((), glx::wait_x)
 }
 
-/// Bitmap fonts as display lists need display lists and glBitmap, which tessera does not
-/// have yet: no lists are created.
+/// Compiles display lists `listBase .. listBase + count` that draw the glyphs `first ..
+/// first + count` of the X font `font` with glBitmap (and advance the raster position), as
+/// GLX 1.4 §3.3.10 says. Needs a current context (on the context's display).
 #[no_mangle]
 pub extern "C" fn glXUseXFont(font: c_ulong, first: c_int, count: c_int, listBase: c_int) {
+    use super::enums::*;
+    use super::gl_lists::{glEndList, glNewList};
+    use super::gl_pixel_rect::glBitmap;
+    use super::gl_pixels::glPixelStorei;
+    use super::gl_state::glGetIntegerv;
     guard((), || {
-        let _ = (font, first, count, listBase);
+        let display = glXGetCurrentDisplay();
+        let Some(glyphs) = crate::winsys::xfont::glyphs(display as usize, font as u64, first, count) else {
+            return;
+        };
+        // glBitmap reads with the unpack state: tightly packed rows, most significant bit
+        // first, restored afterwards.
+        const UNPACK: [u32; 6] = [
+            GL_UNPACK_SWAP_BYTES,
+            GL_UNPACK_LSB_FIRST,
+            GL_UNPACK_ROW_LENGTH,
+            GL_UNPACK_SKIP_ROWS,
+            GL_UNPACK_SKIP_PIXELS,
+            GL_UNPACK_ALIGNMENT,
+        ];
+        let saved = UNPACK.map(|p| {
+            let mut v = 0;
+            // SAFETY: one GLint.
+            unsafe { glGetIntegerv(p, &mut v) };
+            v
+        });
+        for (p, v) in UNPACK.iter().zip([0, 0, 0, 0, 0, 1]) {
+            glPixelStorei(*p, v);
+        }
+        for (i, g) in glyphs.iter().enumerate() {
+            glNewList((listBase + i as c_int) as u32, GL_COMPILE);
+            let bits = if g.bits.is_empty() { std::ptr::null() } else { g.bits.as_ptr() };
+            // SAFETY: `bits` holds `height` rows of whole bytes for `width` bits (or is NULL
+            // for an empty glyph).
+            unsafe { glBitmap(g.width, g.height, g.x_origin, g.y_origin, g.x_move, 0.0, bits) };
+            glEndList();
+        }
+        for (p, v) in UNPACK.iter().zip(saved) {
+            glPixelStorei(*p, v);
+        }
     })
 }
 

@@ -631,13 +631,17 @@ fn contexts() -> MutexGuard<'static, HashMap<usize, Arc<GlxContext>>> {
 }
 
 /// glXCreateContext & co. after argument checks: registers a context and returns its handle.
-/// `share` must be 0 or a live context (tessera does not share objects between contexts yet:
-/// each context keeps its own buffer objects).
+/// `share` must be 0 or a live context, whose display lists the new context shares (buffer
+/// and texture objects are not shared yet: each context keeps its own).
 pub fn create_context(display: DisplayAddr, config: &'static FbConfig, share: usize) -> Option<usize> {
-    if share != 0 {
-        lookup_context(share)?;
+    let shared_lists = match share {
+        0 => None,
+        handle => Some(lookup_context(handle)?.shared.lock().lists.names()),
+    };
+    let mut context = Context::new(ContextConfig { visual: config.framebuffer_config() });
+    if let Some(names) = shared_lists {
+        context.lists.share(names);
     }
-    let context = Context::new(ContextConfig { visual: config.framebuffer_config() });
     let glx = Arc::new(GlxContext { shared: SharedContext::new(context), config, display, share });
     let handle = Arc::as_ptr(&glx) as usize;
     contexts().insert(handle, glx);

@@ -4,4 +4,5 @@
 pub mod glx;
 pub mod glx_config;
 pub mod osmesa;
+pub mod xfont;
 mod xshm;

@@ -270,6 +270,47 @@ int main(void)
         XFree(st);
     }
 
+    /* glXUseXFont: the server's "fixed" font as display lists drawing glBitmap glyphs, which
+     * advance the raster position; a context created sharing ctx sees the lists. */
+    CHECK(glXMakeContextCurrent(dpy, glxwin, glxwin, ctx), "current again for glXUseXFont");
+    Font font = XLoadFont(dpy, "fixed");
+    GLuint base = glGenLists(128);
+    glXUseXFont(font, 0, 128, base);
+    CHECK(glIsList(base + 'H') && glIsList(base + 'I'), "glXUseXFont made no lists");
+    glDisable(GL_SCISSOR_TEST);
+    glDrawBuffer(GL_BACK);
+    glReadBuffer(GL_BACK);
+    glClearColor(0, 0, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glOrtho(0, 80, 0, 60, -1, 1);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    glColor3f(1, 1, 1);
+    glRasterPos2i(4, 20);
+    GLint start[4], raster[4];
+    glGetIntegerv(GL_CURRENT_RASTER_POSITION, start);
+    glListBase(base);
+    glCallLists(2, GL_UNSIGNED_BYTE, "HI");
+    glGetIntegerv(GL_CURRENT_RASTER_POSITION, raster);
+    /* "fixed" is a 6-pixel-wide font: two glyphs advance by 12. */
+    CHECK(raster[0] - start[0] == 12 && raster[1] == start[1], "glyphs advanced the raster position by (%d, %d)",
+          raster[0] - start[0], raster[1] - start[1]);
+    static unsigned char text[80 * 60 * 4];
+    glReadPixels(0, 0, 80, 60, GL_RGBA, GL_UNSIGNED_BYTE, text);
+    int lit = 0;
+    for (int i = 0; i < 80 * 60; i++)
+        lit += text[4 * i] == 255;
+    CHECK(lit >= 15, "the glyphs drew %d pixels", lit);
+    GLXContext sharing = glXCreateNewContext(dpy, config, GLX_RGBA_TYPE, ctx, True);
+    CHECK(sharing && glXMakeContextCurrent(dpy, glxwin, glxwin, sharing) && glIsList(base + 'H'),
+          "a context sharing ctx does not see its display lists");
+    glXMakeContextCurrent(dpy, glxwin, glxwin, ctx);
+    if (sharing)
+        glXDestroyContext(dpy, sharing);
+    XUnloadFont(dpy, font);
+
     /* glXGetProcAddress reaches every exported function, GLX included */
     const char *names[] = {"glClear", "glBlendEquationSeparate", "glStencilOpSeparate", "glDrawBuffers",
                            "glXSwapIntervalMESA", "glXChooseFBConfig", "glBlendFuncSeparateEXT"};

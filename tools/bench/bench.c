@@ -77,6 +77,8 @@ static void reset_state(void)
     glDisable(GL_COLOR_LOGIC_OP);
     glDisable(GL_CULL_FACE);
     glDisable(GL_DITHER);
+    glDisable(GL_LIGHTING);
+    glDisable(GL_TEXTURE_2D);
     glShadeModel(GL_SMOOTH);
     glColorMask(1, 1, 1, 1);
     glDepthMask(1);
@@ -261,6 +263,83 @@ static double scene_fog_blend(void)
     return (double)LAYERS * W * H;
 }
 
+/* A lit mesh: a 128 x 128 grid of quads bent into a dome, two lights (one local with
+ * attenuation), specular, depth-tested; the lighting is per vertex. */
+static double scene_lit_mesh(void)
+{
+    enum { N = 128 };
+    glEnable(GL_DEPTH_TEST);
+    glEnable(GL_LIGHTING);
+    glEnable(GL_LIGHT0);
+    glEnable(GL_LIGHT1);
+    glEnable(GL_NORMALIZE);
+    const float dir[4] = {0.3f, 0.5f, 1.0f, 0.0f}, pos[4] = {-0.5f, 0.2f, 0.8f, 1.0f};
+    const float white[4] = {1, 1, 1, 1}, warm[4] = {0.9f, 0.6f, 0.3f, 1}, spec[4] = {0.8f, 0.8f, 0.8f, 1};
+    glLightfv(GL_LIGHT0, GL_POSITION, dir);
+    glLightfv(GL_LIGHT0, GL_DIFFUSE, white);
+    glLightfv(GL_LIGHT0, GL_SPECULAR, white);
+    glLightfv(GL_LIGHT1, GL_POSITION, pos);
+    glLightfv(GL_LIGHT1, GL_DIFFUSE, warm);
+    glLightf(GL_LIGHT1, GL_LINEAR_ATTENUATION, 0.5f);
+    glMaterialfv(GL_FRONT_AND_BACK, GL_SPECULAR, spec);
+    glMaterialf(GL_FRONT_AND_BACK, GL_SHININESS, 24.0f);
+    for (int j = 0; j < N; j++) {
+        glBegin(GL_QUAD_STRIP);
+        for (int i = 0; i <= N; i++)
+            for (int k = 1; k >= 0; k--) {
+                float x = -1 + 2.0f * i / N, y = -1 + 2.0f * (j + k) / N;
+                float z = 0.5f - 0.5f * (x * x + y * y);
+                glNormal3f(x, y, 1.0f);
+                glVertex3f(x, y, -z);
+            }
+        glEnd();
+    }
+    glDisable(GL_LIGHT0);
+    glDisable(GL_LIGHT1);
+    glDisable(GL_NORMALIZE);
+    return (double)W * H;
+}
+
+/* Textured fill: 8 full-window layers of a mipmapped 256 x 256 RGBA texture, trilinear,
+ * GL_MODULATE with the smooth colors, with perspective (the quads' varying w). */
+static double scene_textured(void)
+{
+    static GLuint texture;
+    if (!texture) {
+        static unsigned char texels[256 * 256 * 4];
+        for (int i = 0; i < 256 * 256; i++) {
+            int x = i % 256, y = i / 256;
+            texels[4 * i + 0] = (unsigned char)(((x / 16) ^ (y / 16)) & 1 ? 255 : 40);
+            texels[4 * i + 1] = (unsigned char)x;
+            texels[4 * i + 2] = (unsigned char)y;
+            texels[4 * i + 3] = 255;
+        }
+        glGenTextures(1, &texture);
+        glBindTexture(GL_TEXTURE_2D, texture);
+        glTexParameteri(GL_TEXTURE_2D, GL_GENERATE_MIPMAP, GL_TRUE);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 256, 256, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+    }
+    glBindTexture(GL_TEXTURE_2D, texture);
+    glEnable(GL_TEXTURE_2D);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+    for (int l = 0; l < LAYERS; l++) {
+        float c[4][4];
+        layer_colors(l, 1.0f, c);
+        const float xs[4] = {-1, 1, 1, -1}, ys[4] = {-1, -1, 1, 1}, wl = 1.0f + 0.25f * l;
+        glBegin(GL_QUADS);
+        for (int i = 0; i < 4; i++) {
+            float w = xs[i] < 0 ? wl : 1.0f;
+            glColor4fv(c[i]);
+            glTexCoord2f((xs[i] + 1) * 2 + 0.1f * l, (ys[i] + 1) * 2);
+            glVertex4f(xs[i] * w, ys[i] * w, 0, w);
+        }
+        glEnd();
+    }
+    return (double)LAYERS * W * H;
+}
+
 /* The per-stage scene: the smooth scene with one fragment stage enabled (all passing). */
 static const char *stage_name = "none";
 static double scene_stage(void)
@@ -433,6 +512,8 @@ int main(int argc, char **argv)
     run(dir, "small_triangles", scene_small_triangles, reps);
     run(dir, "thin_triangles", scene_thin_triangles, reps);
     run(dir, "fog_blend", scene_fog_blend, reps);
+    run(dir, "lit_mesh", scene_lit_mesh, reps);
+    run(dir, "textured_fill", scene_textured, reps);
     const char *stages[] = {"none", "scissor", "alpha", "stencil", "depth", "blend", "logic_op", "fog", "dither"};
     for (unsigned s = 0; s < sizeof stages / sizeof *stages; s++) {
         char name[64];

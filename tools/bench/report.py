@@ -22,6 +22,8 @@ SCENES = [
     ("small_triangles", "100k small triangles (mesh)"),
     ("thin_triangles", "2000 long thin triangles"),
     ("fog_blend", "Fog + blend (8 layers)"),
+    ("lit_mesh", "Lit mesh (128×128 quads, 2 lights, specular)"),
+    ("textured_fill", "Textured fill, trilinear (8 layers)"),
 ]
 STAGES = ["none", "scissor", "alpha", "stencil", "depth", "blend", "logic_op", "fog", "dither"]
 GOAL_FILL = {"flat_fill", "smooth_fill", "blend_fill", "depth_overdraw", "stencil_shadow", "fog_blend"}
