@@ -171,32 +171,14 @@ impl Context {
         if !self.rendering() {
             return self.select_vertices(mode, vertices);
         }
-        let Some((width, height, color_format, depth_bits, stencil_bits)) = self.with_framebuffer(|fb| {
-            let config = fb.config();
-            (
-                fb.width(),
-                fb.height(),
-                config.color,
-                config.depth_stencil.depth_bits(),
-                config.depth_stencil.stencil_bits(),
-            )
-        }) else {
+        let Some((width, height, color_format, depth_bits, stencil_bits)) = self.target_format() else {
             return;
         };
         if vertices.is_empty() {
             return;
         }
         let float_color = color_format.is_float();
-        let mut scene = match self.scene.take() {
-            Some(scene) if scene.size() == (width, height) => scene,
-            other => {
-                // A resized drawable: render what was recorded for the old size first.
-                if let Some(old) = other {
-                    self.run_scene(old);
-                }
-                Scene::new(width, height)
-            }
-        };
+        let mut scene = self.take_scene(width, height);
         // Mesa analyses changed matrices at draw time; their flags decide how products round.
         self.matrices.validate();
         let state = self.draw_state(&mut scene, width, height, color_format, depth_bits, stencil_bits);
@@ -301,7 +283,20 @@ impl Context {
     /// Adds a pixel rectangle to the scene under the current state; `make` builds it from the
     /// varyings the draw's stages read (none when only color is needed).
     pub(super) fn draw_pixel_rect(&mut self, make: impl FnOnce(&[Attribute]) -> crate::raster::pixels::PixelRectJob) {
-        let Some((width, height, color_format, depth_bits, stencil_bits)) = self.with_framebuffer(|fb| {
+        let Some((width, height, color_format, depth_bits, stencil_bits)) = self.target_format() else {
+            return;
+        };
+        let mut scene = self.take_scene(width, height);
+        let state = self.draw_state(&mut scene, width, height, color_format, depth_bits, stencil_bits);
+        let (state_index, _) = scene.add_state(state);
+        let job = make(&self.varyings_needed());
+        scene.add(state_index, job.bounds(), RasterPrimitive::Pixels(job));
+        self.scene = Some(scene);
+    }
+
+    /// The bound framebuffer's size, color format and depth/stencil bits.
+    fn target_format(&self) -> Option<(usize, usize, ColorFormat, u32, u32)> {
+        self.with_framebuffer(|fb| {
             let config = fb.config();
             (
                 fb.width(),
@@ -310,10 +305,13 @@ impl Context {
                 config.depth_stencil.depth_bits(),
                 config.depth_stencil.stencil_bits(),
             )
-        }) else {
-            return;
-        };
-        let mut scene = match self.scene.take() {
+        })
+    }
+
+    /// The scene to record into for a `width` × `height` framebuffer: the pending one, or a
+    /// new one after rendering what was recorded for a drawable that has since been resized.
+    fn take_scene(&mut self, width: usize, height: usize) -> Scene {
+        match self.scene.take() {
             Some(scene) if scene.size() == (width, height) => scene,
             other => {
                 if let Some(old) = other {
@@ -321,12 +319,7 @@ impl Context {
                 }
                 Scene::new(width, height)
             }
-        };
-        let state = self.draw_state(&mut scene, width, height, color_format, depth_bits, stencil_bits);
-        let (state_index, _) = scene.add_state(state);
-        let job = make(&self.varyings_needed());
-        scene.add(state_index, job.bounds(), RasterPrimitive::Pixels(job));
-        self.scene = Some(scene);
+        }
     }
 
     /// Rasterizes everything recorded so far into the bound framebuffer.
