@@ -254,23 +254,14 @@ fn max_level(target: usize) -> i32 {
     max_size(target).trailing_zeros() as i32
 }
 
-/// Client formats a texture image may be given in.
+/// Client formats a texture image may be given in: the color and depth formats of pixel
+/// transfers (not stencil, depth-stencil or color index).
 fn texture_client_format(format: GLenum) -> Option<ClientFormat> {
-    use ClientFormat::*;
-    Some(match format {
-        GL_RGBA => Rgba,
-        GL_BGRA => Bgra,
-        GL_RGB => Rgb,
-        GL_BGR => Bgr,
-        GL_RED => Red,
-        GL_GREEN => Green,
-        GL_BLUE => Blue,
-        GL_ALPHA => Alpha,
-        GL_LUMINANCE => Luminance,
-        GL_LUMINANCE_ALPHA => LuminanceAlpha,
-        GL_DEPTH_COMPONENT => DepthComponent,
-        _ => return None,
-    })
+    match super::read_pixels::read_format(format)? {
+        super::read_pixels::ReadFormat::Client(ClientFormat::StencilIndex | ClientFormat::DepthStencil) => None,
+        super::read_pixels::ReadFormat::Client(f) => Some(f),
+        super::read_pixels::ReadFormat::ColorIndex => None,
+    }
 }
 
 /// Checks a client format/type pair for texture data; the error when invalid.

@@ -12,7 +12,7 @@ use super::{ClientFormat, ClientType};
 /// Reads the `N` bytes at the start of `bytes` as a native-endian integer, swapped first
 /// when `swap` says so (GL_UNPACK_SWAP_BYTES).
 #[inline]
-fn read_uint<const N: usize>(bytes: &[u8], swap: bool) -> u32 {
+pub(super) fn read_uint<const N: usize>(bytes: &[u8], swap: bool) -> u32 {
     let mut b = [0u8; N];
     b.copy_from_slice(&bytes[..N]);
     if swap {
@@ -22,6 +22,16 @@ fn read_uint<const N: usize>(bytes: &[u8], swap: bool) -> u32 {
         1 => b[0] as u32,
         2 => u16::from_ne_bytes([b[0], b[1]]) as u32,
         _ => u32::from_ne_bytes([b[0], b[1], b[2], b[3]]),
+    }
+}
+
+/// The packed pixel of `size` bytes (1, 2 or 4) at the start of `bytes`.
+#[inline]
+pub(super) fn packed_word(bytes: &[u8], size: usize, swap: bool) -> u32 {
+    match size {
+        1 => bytes[0] as u32,
+        2 => read_uint::<2>(bytes, swap),
+        _ => read_uint::<4>(bytes, swap),
     }
 }
 
@@ -40,7 +50,7 @@ pub fn half_to_float(h: u16) -> f32 {
 
 /// One component of an array type at the start of `bytes`, as a float.
 #[inline]
-fn component(ty: ClientType, bytes: &[u8], swap: bool) -> f32 {
+pub(super) fn component(ty: ClientType, bytes: &[u8], swap: bool) -> f32 {
     match ty {
         ClientType::UnsignedByte => bytes[0] as f32 / 255.0,
         ClientType::Byte => (bytes[0] as i8 as f32 / 127.0).max(-1.0),
@@ -66,11 +76,7 @@ pub fn unpack_color_row(format: ClientFormat, ty: ClientType, swap: bool, row: &
         let mut rgba = [0.0, 0.0, 0.0, 1.0];
         match ty {
             ClientType::Packed(packed) => {
-                let word = match packed.bytes() {
-                    1 => bytes[0] as u32,
-                    2 => read_uint::<2>(bytes, swap),
-                    _ => read_uint::<4>(bytes, swap),
-                };
+                let word = packed_word(bytes, packed.bytes(), swap);
                 // Fields widen to 8 bits by replication (or narrow by rounding), as Mesa converts
                 // packed data to 8-bit texels, then become floats that round back to them.
                 for ((&channel, &bits), shift) in channels.iter().zip(packed.component_bits()).zip(packed.shifts()) {
