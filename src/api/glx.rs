@@ -633,7 +633,9 @@ pub unsafe extern "C" fn glXQueryContext(
 #[no_mangle]
 pub extern "C" fn glXSelectEvent(dpy: *mut Display, draw: GLXDrawable, event_mask: c_ulong) {
     guard((), || {
-        let _ = (dpy, draw, event_mask);
+        if let Some(d) = glx::lookup_drawable(addr(dpy), draw as u64) {
+            d.event_mask.store(event_mask as u64, std::sync::atomic::Ordering::Relaxed);
+        }
     })
 }
 
@@ -642,8 +644,9 @@ pub extern "C" fn glXSelectEvent(dpy: *mut Display, draw: GLXDrawable, event_mas
 #[no_mangle]
 pub unsafe extern "C" fn glXGetSelectedEvent(dpy: *mut Display, draw: GLXDrawable, event_mask: *mut c_ulong) {
     guard((), || {
-        let _ = (dpy, draw);
-        set(event_mask, 0);
+        let mask = glx::lookup_drawable(addr(dpy), draw as u64)
+            .map_or(0, |d| d.event_mask.load(std::sync::atomic::Ordering::Relaxed));
+        set(event_mask, mask as c_ulong);
     })
 }
 

@@ -424,6 +424,9 @@ pub struct GlxDrawable {
     pub explicit: bool,
     pub config: Mutex<&'static FbConfig>,
     pub surface: Arc<Mutex<Drawable>>,
+    /// glXSelectEvent's mask (GLX_PBUFFER_CLOBBER_MASK): kept for glXGetSelectedEvent; tessera's
+    /// buffers are never clobbered, so no such event is ever sent.
+    pub event_mask: std::sync::atomic::AtomicU64,
 }
 
 /// The GLX drawables by display and XID.
@@ -476,6 +479,7 @@ impl GlxDrawable {
             explicit,
             config: Mutex::new(config),
             surface: Arc::new(Mutex::new(Drawable { framebuffer, presenter })),
+            event_mask: Default::default(),
         }))
     }
 

@@ -270,6 +270,12 @@ int main(void)
         XFree(st);
     }
 
+    /* glXSelectEvent's mask reads back (tessera never clobbers a buffer, so no event comes). */
+    unsigned long selected = 1234;
+    glXSelectEvent(dpy, glxwin, GLX_PBUFFER_CLOBBER_MASK);
+    glXGetSelectedEvent(dpy, glxwin, &selected);
+    CHECK(selected == GLX_PBUFFER_CLOBBER_MASK, "glXGetSelectedEvent gave %lu", selected);
+
     /* glXUseXFont: the server's "fixed" font as display lists drawing glBitmap glyphs, which
      * advance the raster position; a context created sharing ctx sees the lists. */
     CHECK(glXMakeContextCurrent(dpy, glxwin, glxwin, ctx), "current again for glXUseXFont");
