@@ -16,6 +16,7 @@ pub mod gl_aliases;
 pub mod gl_arrays;
 pub mod gl_buffer_objects;
 pub mod gl_buffers;
+pub mod gl_evaluators;
 pub mod gl_fragment;
 pub mod gl_lighting;
 pub mod gl_lists;

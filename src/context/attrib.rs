@@ -404,7 +404,15 @@ mod tests {
             gen: [true; 4],
         };
         t.texture.units = [all; MAX_TEXTURE_UNITS];
-        t.eval = EvalState { map1: [true; 9], map2: [true; 9], auto_normal: true };
+        t.eval = EvalState {
+            map1: [true; 9],
+            map2: [true; 9],
+            auto_normal: true,
+            grid1_segments: 7,
+            grid1_domain: [2.0, 3.0],
+            grid2_segments: [4, 5],
+            grid2_domain: [1.0, 2.0, 3.0, 4.0],
+        };
         t.pixel_mode.read_buffer = GL_FRONT_LEFT;
         t
     }
@@ -444,7 +452,7 @@ mod tests {
             el.vertex_program_two_side = ol.vertex_program_two_side;
             e.multisample = o.multisample.clone();
             e.texture.units = o.texture.units;
-            e.eval = o.eval.clone();
+            (e.eval.map1, e.eval.map2, e.eval.auto_normal) = (o.eval.map1, o.eval.map2, o.eval.auto_normal);
         }
         let (el, ol) = (&mut e.line_point, &o.line_point);
         if mask & GL_LINE_BIT != 0 {

@@ -182,6 +182,9 @@ impl Context {
         if let Some(values) = self.pixel_map_values(pname) {
             return Some(values);
         }
+        if let Some(values) = self.evaluator_values(pname) {
+            return Some(values);
+        }
         let clamp = self.fragment_clamping();
         let clamped = |c: f32| if clamp { c.clamp(0.0, 1.0) } else { c };
         let (s, fb) = (&self.state, &self.config.visual);

@@ -13,6 +13,7 @@ pub mod capabilities;
 pub mod current;
 pub mod debug;
 pub mod draw;
+pub mod evaluators;
 pub mod fragment_state;
 pub mod get;
 #[cfg(test)]
@@ -80,6 +81,8 @@ pub struct Context {
     pub queries: queries::QueryState,
     /// The render mode and selection state.
     pub selection: selection::Selection,
+    /// The evaluator maps (glMap1/glMap2).
+    pub evaluators: evaluators::EvalMaps,
 }
 
 impl Context {
@@ -104,6 +107,7 @@ impl Context {
             lists: Default::default(),
             queries: Default::default(),
             selection: Default::default(),
+            evaluators: Default::default(),
         }
     }
 

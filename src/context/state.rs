@@ -567,12 +567,33 @@ pub struct TextureState {
     pub unit_state: [super::texture_env::TextureUnitState; MAX_TEXTURE_UNITS],
 }
 
-/// GL_EVAL_BIT enables: GL_MAP1_* and GL_MAP2_* (in enum order) and GL_AUTO_NORMAL.
-#[derive(Clone, Debug, PartialEq, Default)]
+/// GL_EVAL_BIT: the enables GL_MAP1_* and GL_MAP2_* (in enum order) and GL_AUTO_NORMAL, and
+/// the grids of glMapGrid (the maps themselves are `context::evaluators`).
+#[derive(Clone, Debug, PartialEq)]
 pub struct EvalState {
     pub map1: [bool; 9],
     pub map2: [bool; 9],
     pub auto_normal: bool,
+    /// GL_MAP1_GRID_SEGMENTS and GL_MAP1_GRID_DOMAIN (u1, u2).
+    pub grid1_segments: i32,
+    pub grid1_domain: [f32; 2],
+    /// GL_MAP2_GRID_SEGMENTS (nu, nv) and GL_MAP2_GRID_DOMAIN (u1, u2, v1, v2).
+    pub grid2_segments: [i32; 2],
+    pub grid2_domain: [f32; 4],
+}
+
+impl Default for EvalState {
+    fn default() -> Self {
+        EvalState {
+            map1: [false; 9],
+            map2: [false; 9],
+            auto_normal: false,
+            grid1_segments: 1,
+            grid1_domain: [0.0, 1.0],
+            grid2_segments: [1, 1],
+            grid2_domain: [0.0, 1.0, 0.0, 1.0],
+        }
+    }
 }
 
 /// GL_PIXEL_MODE_BIT (the read buffer, so far).

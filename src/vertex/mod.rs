@@ -5,6 +5,7 @@
 //! vertex input has one path.
 
 pub mod arrays;
+pub mod bezier;
 pub mod buffer_objects;
 pub mod components;
 pub mod immediate;

@@ -52,6 +52,15 @@ impl Context {
             return;
         }
         let vertex = vertex_from_current(&self.state.current, position);
+        self.push_open_vertex(vertex);
+    }
+
+    /// Appends a finished vertex to the open primitive (glVertex, glEvalCoord).
+    #[inline]
+    pub(crate) fn push_open_vertex(&mut self, vertex: crate::vertex::Vertex) {
+        if !self.inside_begin_end {
+            return;
+        }
         let vertices = &mut self.vertex_input.vertices;
         if vertices.len() == vertices.capacity() && vertices.try_reserve(vertices.len().max(256)).is_err() {
             return self.error(GL_OUT_OF_MEMORY);
