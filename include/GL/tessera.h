@@ -6358,6 +6358,52 @@ void glAccum(GLenum op, GLfloat value);
 
 void glDepthFunc(GLenum func);
 
+void glMap1f(GLenum target, GLfloat u1, GLfloat u2, GLint stride, GLint order, const GLfloat *points);
+
+void glMap1d(GLenum target, GLdouble u1, GLdouble u2, GLint stride, GLint order, const GLdouble *points);
+
+void glMap2f(GLenum target, GLfloat u1, GLfloat u2, GLint ustride, GLint uorder, GLfloat v1, GLfloat v2, GLint vstride, GLint vorder, const GLfloat *points);
+
+void glMap2d(GLenum target, GLdouble u1, GLdouble u2, GLint ustride, GLint uorder, GLdouble v1, GLdouble v2, GLint vstride, GLint vorder, const GLdouble *points);
+
+void glGetMapfv(GLenum target, GLenum query, GLfloat *v);
+
+void glGetMapdv(GLenum target, GLenum query, GLdouble *v);
+
+void glGetMapiv(GLenum target, GLenum query, GLint *v);
+
+void glMapGrid1f(GLint un, GLfloat u1, GLfloat u2);
+
+void glMapGrid1d(GLint un, GLdouble u1, GLdouble u2);
+
+void glMapGrid2f(GLint un, GLfloat u1, GLfloat u2, GLint vn, GLfloat v1, GLfloat v2);
+
+void glMapGrid2d(GLint un, GLdouble u1, GLdouble u2, GLint vn, GLdouble v1, GLdouble v2);
+
+void glEvalCoord1f(GLfloat u);
+
+void glEvalCoord1d(GLdouble u);
+
+void glEvalCoord1fv(const GLfloat *u);
+
+void glEvalCoord1dv(const GLdouble *u);
+
+void glEvalCoord2f(GLfloat u, GLfloat v);
+
+void glEvalCoord2d(GLdouble u, GLdouble v);
+
+void glEvalCoord2fv(const GLfloat *u);
+
+void glEvalCoord2dv(const GLdouble *u);
+
+void glEvalPoint1(GLint i);
+
+void glEvalPoint2(GLint i, GLint j);
+
+void glEvalMesh1(GLenum mode, GLint i1, GLint i2);
+
+void glEvalMesh2(GLenum mode, GLint i1, GLint i2, GLint j1, GLint j2);
+
 void glAlphaFunc(GLenum func, GLclampf ref_);
 
 void glStencilFunc(GLenum func, GLint ref_, GLuint mask);

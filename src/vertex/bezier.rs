@@ -191,7 +191,7 @@ mod tests {
         assert_eq!(du, p(1.0, 0.0, 4.0));
         // A plane tilted by z = x: normal (−1, 0, 1)/√2, whatever the orders.
         let plane = |i: usize, j: usize| p(i as f32, j as f32, i as f32);
-        let (point, du, dv) = de_casteljau_surface([2, 4], |i, j| plane(i, j), [0.3, 0.7]);
+        let (point, du, dv) = de_casteljau_surface([2, 4], plane, [0.3, 0.7]);
         let n = surface_normal(point, du, dv, false);
         let h = std::f32::consts::FRAC_1_SQRT_2;
         assert!((n[0] + h).abs() < 1e-6 && n[1].abs() < 1e-6 && (n[2] - h).abs() < 1e-6, "{n:?}");
@@ -199,7 +199,7 @@ mod tests {
         let horner = horner_surface([2, 4], plane, [0.3, 0.7]);
         assert!((0..3).all(|k| (horner[k] - point[k]).abs() < 1e-6));
         // An order of 1 has no derivative along it: the normal is zero.
-        let (_, du, dv) = de_casteljau_surface([1, 3], |i, j| plane(i, j), [0.5, 0.5]);
+        let (_, du, dv) = de_casteljau_surface([1, 3], plane, [0.5, 0.5]);
         assert_eq!(du, [0.0; 4]);
         assert_eq!(surface_normal(p(0.0, 0.0, 0.0), du, dv, false), [0.0, 0.0, 0.0]);
     }
