@@ -30,6 +30,10 @@ const HAND_WRITTEN: &[&str] = &[
     // Buffer mapping is exercised by hand (writes within the mapped size).
     "glMapBuffer",
     "glMapBufferARB",
+    // Evaluator meshes cost their grid range times the map's order cubed: hand-written
+    // decoders keep the ranges small (an arbitrary GLint range would run for hours).
+    "glEvalMesh1",
+    "glEvalMesh2",
 ];
 
 /// Parameter names that size another (pointer) argument.

@@ -19,6 +19,7 @@ use std::ffi::{c_void, CString};
 use tessera::api::enums::*;
 use tessera::api::gl_arrays as arrays;
 use tessera::api::gl_buffer_objects as buffers;
+use tessera::api::gl_evaluators as evaluators;
 use tessera::api::gl_pixels as pixels;
 use tessera::api::gl_raster_state as raster;
 use tessera::api::gl_state as state;
@@ -230,6 +231,8 @@ const HAND: &[(&str, Op)] = &[
     ("glBegin batch", Fuzzer::op_batch),
     ("glBegin batch (long)", Fuzzer::op_long_batch),
     ("glFinish", Fuzzer::op_finish),
+    ("glEvalMesh1", Fuzzer::op_eval_mesh1),
+    ("glEvalMesh2", Fuzzer::op_eval_mesh2),
 ];
 
 /// Runs the command stream `data`; panics on a finding. Returns the number of calls made.
@@ -713,6 +716,28 @@ impl Fuzzer {
         let long = self.byte() % 8 == 0;
         let count = self.count(if long { MAX_VERTEX as i32 - 65 } else { 300 });
         arrays::glDrawArrays(mode, first, count);
+    }
+
+    /// A glEvalMesh mode: usually a valid one.
+    fn mesh_mode(&mut self) -> u32 {
+        match self.byte() % 8 {
+            0..=1 => GL_POINT,
+            2..=3 => GL_LINE,
+            4..=5 => GL_FILL,
+            _ => self.glenum(),
+        }
+    }
+
+    fn op_eval_mesh1(&mut self) {
+        let mode = self.mesh_mode();
+        let (i1, i2) = (self.count(16), self.count(16));
+        evaluators::glEvalMesh1(mode, i1, i2);
+    }
+
+    fn op_eval_mesh2(&mut self) {
+        let mode = self.mesh_mode();
+        let (i1, i2, j1, j2) = (self.count(16), self.count(16), self.count(16), self.count(16));
+        evaluators::glEvalMesh2(mode, i1, i2, j1, j2);
     }
 
     fn op_array_element(&mut self) {
