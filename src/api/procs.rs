@@ -78,7 +78,12 @@ mod tests {
             ),
             "GL_EXT_draw_range_elements" => list("glDrawRangeElementsEXT"),
             "GL_EXT_multi_draw_arrays" => list("glMultiDrawArraysEXT glMultiDrawElementsEXT"),
-            "GL_EXT_stencil_wrap" | "GL_NV_fog_distance" | "GL_NV_blend_square" | "GL_EXT_blend_logic_op" => vec![],
+            "GL_EXT_polygon_offset_clamp" => list("glPolygonOffsetClampEXT"),
+            "GL_EXT_stencil_wrap"
+            | "GL_NV_fog_distance"
+            | "GL_NV_blend_square"
+            | "GL_EXT_blend_logic_op"
+            | "GL_ARB_depth_clamp" => vec![],
             other => panic!("{other}: list its entry points in this test"),
         }
     }

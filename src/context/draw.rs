@@ -157,6 +157,8 @@ struct Geometry {
     /// r the depth buffer's resolution, as Mesa's offset stage applies them.
     offset_line: Option<(f32, f32)>,
     offset_point: Option<(f32, f32)>,
+    /// GL_POLYGON_OFFSET_CLAMP (EXT_polygon_offset_clamp): the bound of every offset.
+    offset_clamp: f32,
     /// The attributes interpolated over filled polygons for the stages this draw enables
     /// (none when only color is needed).
     varyings: Vec<Attribute>,
@@ -398,6 +400,12 @@ impl Context {
         let fill_clip = clip.intersect(Rect::from_xywh(vx, vy, vw, vh));
         let polygon_stipple = self.state.polygon.stipple.then_some(self.state.polygon_stipple);
         let mut fragment = FragmentState::plain(depth, color_masks, clamp_float);
+        if self.state.transform.depth_clamp {
+            // ARB_depth_clamp: near/far clipping is off (`geometry`), and fragment depths
+            // are clamped to the depth range instead.
+            let [near, far] = self.state.viewport.depth_range.map(|d| d as f32);
+            fragment.depth_clamp = Some([near.min(far), near.max(far)]);
+        }
         self.compile_fragment_ops(&mut fragment, &buffer_of, color_format, stencil_bits);
         if self.accuracy == Accuracy::Fast {
             fragment.dither = false;
@@ -552,6 +560,7 @@ impl Context {
             cull: polygon.cull_face.then_some(polygon.cull_face_mode),
             front_ccw: polygon.front_face == GL_CCW,
             offset: polygon.offset_fill.then_some((polygon.offset_factor, polygon.offset_units)),
+            offset_clamp: polygon.offset_clamp,
             depth_bits,
         }
     }
@@ -753,7 +762,7 @@ impl Outline<'_> {
             let inv_det = 1.0 / det;
             let dzdx = ((ey * fz - ez * fy) * inv_det).abs();
             let dzdy = ((ez * fx - ex * fz) * inv_det).abs();
-            let z_offset = units + dzdx.max(dzdy) * factor;
+            let z_offset = clamp_offset(units + dzdx.max(dzdy) * factor, g.offset_clamp);
             for c in &mut l {
                 c.z = (c.z + z_offset).clamp(0.0, 1.0);
             }
@@ -922,7 +931,9 @@ fn emit_triangle(scene: &mut Scene, state: u32, g: &Geometry, w: [WindowVertex; 
         Some(GL_BACK) if !front => return,
         _ => {}
     }
-    let offset = g.offset.map_or(0.0, |(factor, units)| polygon_offset(&w, factor, units, g.depth_bits));
+    let offset = g
+        .offset
+        .map_or(0.0, |(factor, units)| clamp_offset(polygon_offset(&w, factor, units, g.depth_bits), g.offset_clamp));
     let varyings: Vec<[f32; 3]> = g.varyings.iter().map(|a| w.map(|v| a.of(&v))).collect();
     if let Some(mut job) = TriangleJob::with_accuracy(g.accuracy, w, flat, offset, &varyings) {
         job.front_facing = front;
@@ -1090,6 +1101,19 @@ fn emit_window_point(scene: &mut Scene, state: u32, g: &Geometry, w: &LineVertex
     let color = if w.inv_w == 1.0 { w.color } else { w.color.map(|c| c * w.inv_w * (1.0 / w.inv_w)) };
     let varyings = g.varyings.iter().map(|v| v.of_line(w)).collect();
     scene.add(state, rect, RasterPrimitive::Point(PointJob { rect, z: w.z, color, varyings }));
+}
+
+/// A polygon offset bounded by GL_POLYGON_OFFSET_CLAMP as EXT_polygon_offset_clamp says:
+/// at most `clamp` when it is positive, at least `clamp` when negative, unbounded when it
+/// is 0 (or NaN).
+fn clamp_offset(offset: f32, clamp: f32) -> f32 {
+    if clamp > 0.0 {
+        offset.min(clamp)
+    } else if clamp < 0.0 {
+        offset.max(clamp)
+    } else {
+        offset
+    }
 }
 
 /// glPolygonOffset's depth offset for a triangle: factor × max depth slope + units × r,
@@ -1490,6 +1514,17 @@ mod tests {
             "clip_vertices_are_points: 0,5 12,6 4,14\n",
         );
         assert_eq!(replay(script), mesa);
+    }
+
+    #[test]
+    fn offset_clamp_bounds_the_offset_on_its_own_side_only() {
+        assert_eq!(clamp_offset(0.3, 0.1), 0.1);
+        assert_eq!(clamp_offset(0.05, 0.1), 0.05);
+        assert_eq!(clamp_offset(-0.3, 0.1), -0.3);
+        assert_eq!(clamp_offset(-0.3, -0.1), -0.1);
+        assert_eq!(clamp_offset(0.3, -0.1), 0.3);
+        assert_eq!(clamp_offset(0.3, 0.0), 0.3);
+        assert_eq!(clamp_offset(-0.3, f32::NAN), -0.3);
     }
 
     /// GL_POLYGON_OFFSET_LINE with factor 1 and units 2, against no offset.

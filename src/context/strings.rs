@@ -14,12 +14,11 @@ pub const RENDERER: &str = concat!("tessera ", env!("CARGO_PKG_VERSION"), " (sof
 pub const VERSION: &str = concat!("1.1 tessera ", env!("CARGO_PKG_VERSION"), "\0");
 /// Extensions whose every entry point and enum works, each checked against the code (and
 /// by the piglit tests named in tests/piglit/expected.txt). Left out although close:
-/// GL_ARB_depth_clamp (piglit depth_clamp and depth-clamp-range fail: depth is not clamped
-/// to the depth range), GL_EXT_draw_buffers2 (glGetBooleanIndexedvEXT/glGetIntegerIndexedvEXT do not exist),
-/// GL_EXT_polygon_offset_clamp (the clamp is stored but the rasterizer does not apply it),
+/// GL_EXT_draw_buffers2 (glGetBooleanIndexedvEXT/glGetIntegerIndexedvEXT do not exist),
 /// GL_EXT_packed_pixels/GL_EXT_bgra (glReadPixels accepts them, but glDrawPixels and
 /// textures do not exist yet), GL_ARB_multitexture (no texturing yet).
 pub const EXTENSIONS: &[&str] = &[
+    "GL_ARB_depth_clamp",
     "GL_ARB_draw_buffers",
     "GL_ARB_draw_buffers_blend",
     "GL_ARB_point_parameters",
@@ -36,6 +35,7 @@ pub const EXTENSIONS: &[&str] = &[
     "GL_EXT_fog_coord",
     "GL_EXT_multi_draw_arrays",
     "GL_EXT_point_parameters",
+    "GL_EXT_polygon_offset_clamp",
     "GL_EXT_provoking_vertex",
     "GL_EXT_secondary_color",
     "GL_EXT_stencil_two_side",
