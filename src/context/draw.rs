@@ -150,6 +150,9 @@ struct Geometry {
     height: i32,
     line_width: f32,
     point_size: f32,
+    /// GL_POINT_DISTANCE_ATTENUATION's coefficients with GL_POINT_SIZE_MIN/MAX, when they
+    /// attenuate (not (1, 0, 0)); `point_size` is used unchanged otherwise.
+    point_attenuation: Option<PointAttenuation>,
     /// glPolygonMode of front and back faces.
     mode_front: GLenum,
     mode_back: GLenum,
@@ -541,6 +544,12 @@ impl Context {
             height: height as i32,
             line_width: lp.line_width.min(MAX_LINE_WIDTH),
             point_size: point_size(lp),
+            point_attenuation: (lp.point_distance_attenuation != [1.0, 0.0, 0.0]).then_some(PointAttenuation {
+                size: lp.point_size,
+                coefficients: lp.point_distance_attenuation,
+                min: lp.point_size_min,
+                max: lp.point_size_max,
+            }),
             // A culled face's mode does not matter; Mesa gives it the other face's, which
             // decides whether quads are split as filled quads or as outlines.
             mode_front: if polygon.cull_face && polygon.cull_face_mode == GL_FRONT {
@@ -574,19 +583,54 @@ impl Geometry {
     }
 }
 
-/// The size points are drawn with: glPointSize clamped to GL_POINT_SIZE_MIN/MAX (the
-/// minimum winning when they cross, as in Mesa) and to the implementation's range.
-/// Distance attenuation (GL_POINT_DISTANCE_ATTENUATION) is not applied yet.
+/// The size points are drawn with without distance attenuation: glPointSize clamped to
+/// GL_POINT_SIZE_MIN/MAX (the minimum winning when they cross, as in Mesa) and to the
+/// implementation's range.
 fn point_size(lp: &LinePointState) -> f32 {
-    let size = lp.point_size;
-    let size = if size < lp.point_size_min {
-        lp.point_size_min
-    } else if size > lp.point_size_max {
-        lp.point_size_max
+    clamp_point_size(lp.point_size, lp.point_size_min, lp.point_size_max)
+}
+
+/// `size` clamped to [min, max] (min winning when they cross; NaN gives min) and to the
+/// implementation's range.
+fn clamp_point_size(size: f32, min: f32, max: f32) -> f32 {
+    let size = if size.is_nan() || size < min {
+        min
+    } else if size > max {
+        max
     } else {
         size
     };
     size.min(MAX_POINT_SIZE)
+}
+
+/// Point parameters' distance attenuation (GL 1.4, GL 2.1 §3.4): the derived size
+/// `size · 1/√(a + b·d + c·d²)` clamped to GL_POINT_SIZE_MIN/MAX. As Mesa's fixed-function
+/// vertex program, d is |z| of the eye coordinates (the spec's distance to the eye,
+/// approximated along the view axis; the same on the view axis) and the square root is of
+/// the absolute value. Without multisampling the derived size is the point's width (the
+/// fade threshold applies to multisampled points only).
+#[derive(Clone, Copy, Debug)]
+struct PointAttenuation {
+    size: f32,
+    coefficients: [f32; 3],
+    min: f32,
+    max: f32,
+}
+
+impl PointAttenuation {
+    fn size_at(&self, eye: [f32; 4]) -> f32 {
+        let d = eye[2].abs();
+        let [a, b, c] = self.coefficients;
+        let factor = d.mul_add(c, b).mul_add(d, a);
+        clamp_point_size(self.size / factor.abs().sqrt(), self.min, self.max)
+    }
+}
+
+impl Geometry {
+    /// The width of a point whose vertex has eye coordinates `eye`.
+    fn point_size_at(&self, eye: [f32; 4]) -> f32 {
+        self.point_attenuation.map_or(self.point_size, |a| a.size_at(eye))
+    }
 }
 
 /// A triangle of a polygon drawn in GL_POINT or GL_LINE mode: its vertices, which of its
@@ -693,7 +737,12 @@ impl Outline<'_> {
         let edges = std::array::from_fn(|i| t.edges[i] && v[i].edge_flag);
         let flat = self.g.flat.then(|| FlatColors::of(v[if self.first_vertex { 0 } else { 2 }]));
         let corner = |c: &ClipVertex, fused: bool| {
-            (self.g.viewport.window_down(c, fused), self.g.viewport.window(c), c.back_colors)
+            (
+                self.g.viewport.window_down(c, fused),
+                self.g.viewport.window(c),
+                c.back_colors,
+                self.g.point_size_at(c.eye),
+            )
         };
         if codes[0] | codes[1] | codes[2] == 0 {
             let w = v.map(|c| corner(c, true));
@@ -798,7 +847,7 @@ impl Outline<'_> {
                     if let Some(s) = self.stipple.as_mut() {
                         s.counter = 0;
                     }
-                    emit_window_point(self.scene, self.state, g, &l[k]);
+                    emit_window_point(self.scene, self.state, g, &l[k], w[k].3);
                 }
             }
         }
@@ -806,8 +855,8 @@ impl Outline<'_> {
 }
 
 /// A corner of an outlined triangle: in llvmpipe's y-down window space, in GL window
-/// coordinates, and its back-face colors.
-type Corner = (LineVertex, WindowVertex, [[f32; 4]; 2]);
+/// coordinates, its back-face colors and its point size (GL_POINT polygon mode).
+type Corner = (LineVertex, WindowVertex, [[f32; 4]; 2], f32);
 
 /// Clips the polygon `poly` (each vertex's `edge_flag` telling whether the edge it starts
 /// is drawn) against the planes in `mask` as Mesa's clipper does for polygons it draws as
@@ -1092,11 +1141,11 @@ fn emit_line_job(scene: &mut Scene, state: u32, g: &Geometry, a: &LineVertex, b:
 /// Emits a point whose vertex is inside the view volume.
 fn emit_point(scene: &mut Scene, state: u32, g: &Geometry, v: &ClipVertex) {
     let w = g.viewport.window_down(v, true);
-    emit_window_point(scene, state, g, &w);
+    emit_window_point(scene, state, g, &w, g.point_size_at(v.eye));
 }
 
-fn emit_window_point(scene: &mut Scene, state: u32, g: &Geometry, w: &LineVertex) {
-    let rect = point_rect(w.x, w.y_down, g.point_size, g.height);
+fn emit_window_point(scene: &mut Scene, state: u32, g: &Geometry, w: &LineVertex, size: f32) {
+    let rect = point_rect(w.x, w.y_down, size, g.height);
     // llvmpipe interpolates point colors perspective-correctly too: (c/w)·w.
     let color = if w.inv_w == 1.0 { w.color } else { w.color.map(|c| c * w.inv_w * (1.0 / w.inv_w)) };
     let varyings = g.varyings.iter().map(|v| v.of_line(w)).collect();

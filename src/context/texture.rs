@@ -837,7 +837,7 @@ impl Context {
     /// Copies the framebuffer rectangle at (x, y) into `region` of `image`.
     fn copy_framebuffer(&mut self, image: &mut TexImage, info: &FormatInfo, region: Region, x: i32, y: i32) {
         let slot = self.current_read_slot();
-        let _ = self.with_framebuffer(|fb| {
+        let _ = self.with_read_framebuffer(|fb| {
             let (fw, fh) = (fb.width() as i32, fb.height() as i32);
             let mut colors = Vec::new();
             let mut depths = Vec::new();
