@@ -94,7 +94,9 @@ gcc -std=c11 -O1 -Wall -Werror tests/glx/glx_errors.c $gl_flags -lX11 -lpthread 
 # The install layout: Debian's libGLU reaches tessera through libOpenGL.so.0.
 glu=$(ldconfig -p 2>/dev/null | awk '/libGLU.so.1 / {print $NF}' | head -1 || true)
 if [[ -n $glu ]]; then
-    "${on_tessera[@]}" ldd "$glu" | grep -q "libOpenGL.so.0 => $lib/libOpenGL.so.0" ||
+    # (ldd's output captured first: `grep -q` ending the pipe early fails it under pipefail)
+    glu_libs=$("${on_tessera[@]}" ldd "$glu" || true)
+    grep -q "libOpenGL.so.0 => $lib/libOpenGL.so.0" <<<"$glu_libs" ||
         fail "libGLU does not load tessera's libOpenGL.so.0"
 fi
 [[ -e $lib/libOSMesa.so && -e $lib/pkgconfig/osmesa.pc ]] || fail "libOSMesa.so or osmesa.pc missing"
