@@ -52,8 +52,8 @@ pub const VERSION: &str = concat!("1.1 tessera ", env!("CARGO_PKG_VERSION"), "\0
 // | 1.5     | Shadow functions (all 8 compare funcs)           | works  | context/texture.rs |
 //
 // Outside these lists but needed by every version: GL 1.0's evaluators and polygon/line/
-// point smoothing (other branches), and color-index pixel data in RGBA mode
-// (glDrawPixels and glTexImage of GL_COLOR_INDEX: not yet).
+// point smoothing (other branches), and color-index pixel data in RGBA mode (glTexImage of
+// GL_COLOR_INDEX works, capi texture_color_index; glDrawPixels of GL_COLOR_INDEX: not yet).
 
 /// Extensions whose every entry point and enum works, each checked against the code (and
 /// by the piglit tests named in tests/piglit/expected.txt). Left out although close:
