@@ -9,9 +9,9 @@ use crate::api::types::GLenum;
 
 pub const VENDOR: &str = "tessera project\0";
 pub const RENDERER: &str = concat!("tessera ", env!("CARGO_PKG_VERSION"), " (software rasterizer)\0");
-/// GL_VERSION: 1.1 names the level the state machine targets until the rasterizer and
-/// the rest of GL 1.x land (see the issues); it is never above what works.
-pub const VERSION: &str = concat!("1.1 tessera ", env!("CARGO_PKG_VERSION"), "\0");
+/// GL_VERSION: 1.5, the highest version whose every feature works (the audit below), once
+/// GL 1.0's evaluators and smoothing have landed; GL 2.0 needs GLSL.
+pub const VERSION: &str = concat!("1.5 tessera ", env!("CARGO_PKG_VERSION"), "\0");
 
 // The version audit: each feature of the GL 1.2–1.5 core feature lists (GL 2.1 spec,
 // appendices C–F) checked against the code and its tests. GL 1.0/1.1 are assumed complete
@@ -118,7 +118,7 @@ pub const EXTENSIONS: &[&str] = &[
 
 /// Whether a context of GL version `major.minor` (compatibility profile) can be created.
 pub fn supports_version(major: i32, minor: i32) -> bool {
-    (major, minor) <= (1, 1) && major >= 1 && minor >= 0
+    (major, minor) <= (1, 5) && major >= 1 && minor >= 0
 }
 
 fn extensions_string() -> &'static str {
