@@ -1,5 +1,6 @@
 /* Feedback: a transcript of points, lines (strips and independent segments, clipped),
- * triangles (a clipped one, a culled one, a quad and a polygon), glPassThrough, glBitmap,
+ * triangles (a clipped one, a culled one, a collinear one with and without culling, a quad
+ * and a polygon), glPassThrough, glBitmap,
  * glDrawPixels and glCopyPixels tokens, in every feedback type, compared value by value with
  * Mesa; the return value on overflow; the errors. */
 #include "common.h"
@@ -45,7 +46,17 @@ static void scene(void)
     glVertex2f(20, 40);
     glVertex2f(30, 10);
     glEnd();
+    glBegin(GL_TRIANGLES); /* collinear: zero area, removed while culling */
+    glVertex2f(1, 2);
+    glVertex2f(3, 4);
+    glVertex2f(5, 6);
+    glEnd();
     glDisable(GL_CULL_FACE);
+    glBegin(GL_TRIANGLES); /* collinear: zero area, reported without culling */
+    glVertex3f(1, 2, 0.25f);
+    glVertex3f(3, 4, 0.5f);
+    glVertex3f(5, 6, 0.75f);
+    glEnd();
     glBegin(GL_QUADS);
     glVertex2f(2, 40);
     glVertex2f(8, 40);

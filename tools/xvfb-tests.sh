@@ -3,6 +3,8 @@
 #   1. glxinfo names tessera as the renderer and lists its extensions;
 #   2. tests/glx/two_threads.c: two windows, two contexts, two threads render independently;
 #      tests/glx/glx_api.c: the GLX API (configs, context rules, drawables, resizing, stereo);
+#      tests/glx/read_drawable.c: reads from a separate read drawable;
+#      tests/glx/glx_errors.c: GLX errors as X protocol errors;
 #   3. tests/glx/glut_scene.c (freeglut): a screenshot (xwd) shows the expected picture;
 #   4. glxgears runs and its window shows the gears (not blank);
 #   5. piglit: every command of ../shared/piglit/fragment-ops.txt is run; each one
@@ -79,6 +81,12 @@ gcc -std=c11 -O1 -Wall -Werror tests/glx/two_threads.c $gl_flags -lX11 -lpthread
 # The GLX API: configs, context rules, windows, resizing, pbuffers, pixmaps, stereo
 gcc -std=c11 -O1 -Wall -Werror tests/glx/glx_api.c $gl_flags -lX11 -o "$work/glx_api"
 "${on_tessera[@]}" timeout 60 "$work/glx_api" || fail "tests/glx/glx_api.c"
+# A separate read drawable; GLX errors reach the X error handler (Xlib threaded or not)
+gcc -std=c11 -O1 -Wall -Werror tests/glx/read_drawable.c $gl_flags -lX11 -o "$work/read_drawable"
+"${on_tessera[@]}" timeout 60 "$work/read_drawable" || fail "tests/glx/read_drawable.c"
+gcc -std=c11 -O1 -Wall -Werror tests/glx/glx_errors.c $gl_flags -lX11 -lpthread -o "$work/glx_errors"
+"${on_tessera[@]}" timeout 60 "$work/glx_errors" || fail "tests/glx/glx_errors.c"
+"${on_tessera[@]}" timeout 60 "$work/glx_errors" threads || fail "tests/glx/glx_errors.c threads"
 # The same two programs presenting with XPutImage instead of MIT-SHM
 "${on_tessera[@]}" TESSERA_XSHM=0 timeout 60 "$work/two_threads" || fail "two_threads.c with TESSERA_XSHM=0"
 "${on_tessera[@]}" TESSERA_XSHM=0 timeout 60 "$work/glx_api" || fail "glx_api.c with TESSERA_XSHM=0"
@@ -86,7 +94,9 @@ gcc -std=c11 -O1 -Wall -Werror tests/glx/glx_api.c $gl_flags -lX11 -o "$work/glx
 # The install layout: Debian's libGLU reaches tessera through libOpenGL.so.0.
 glu=$(ldconfig -p 2>/dev/null | awk '/libGLU.so.1 / {print $NF}' | head -1 || true)
 if [[ -n $glu ]]; then
-    "${on_tessera[@]}" ldd "$glu" | grep -q "libOpenGL.so.0 => $lib/libOpenGL.so.0" ||
+    # (ldd's output captured first: `grep -q` ending the pipe early fails it under pipefail)
+    glu_libs=$("${on_tessera[@]}" ldd "$glu" || true)
+    grep -q "libOpenGL.so.0 => $lib/libOpenGL.so.0" <<<"$glu_libs" ||
         fail "libGLU does not load tessera's libOpenGL.so.0"
 fi
 [[ -e $lib/libOSMesa.so && -e $lib/pkgconfig/osmesa.pc ]] || fail "libOSMesa.so or osmesa.pc missing"

@@ -3,8 +3,9 @@
 //! They forward to `winsys::glx`, which talks to the X server through the application's own
 //! `Display*` with a run-time loaded Xlib. Contexts and configurations given to C are
 //! identifiers looked up in registries there, never dereferenced, so a NULL, stale or forged
-//! handle is refused. Failures that GLX reports as X protocol errors (BadMatch, BadContext,
-//! ...) are reported by the return value only: tessera does not send X errors.
+//! handle is refused. Where GLX says a call generates an X protocol error (BadMatch,
+//! GLXBadContext, GLXBadDrawable, ...), the application's X error handler receives it
+//! (`winsys::glx_error`), besides the call's return value.
 //!
 //! Arrays returned to the caller (GLXFBConfig lists, XVisualInfo) come from malloc or from
 //! Xlib, so the caller frees them with XFree as usual.
@@ -19,6 +20,7 @@ use super::types::*;
 use crate::context::strings;
 use crate::winsys::glx::{self as glx, DisplayAddr, DrawableKind, MakeCurrentError};
 use crate::winsys::glx_config::*;
+use crate::winsys::glx_error::{self as xerr, request, GlxError};
 use std::ffi::{c_char, c_int, c_uint, c_ulong, c_void, CStr};
 use x11_dl::xlib::{Display, XVisualInfo};
 
@@ -55,6 +57,9 @@ const GLX_CONTEXT_COMPATIBILITY_PROFILE_BIT_ARB: c_int = 2;
 const GLX_CONTEXT_DEBUG_BIT_ARB: c_int = 1;
 const GLX_CONTEXT_RESET_NOTIFICATION_STRATEGY_ARB: c_int = 0x8256;
 const GLX_NO_RESET_NOTIFICATION_ARB: c_int = 0x8261;
+const GLX_COLOR_INDEX_TYPE: c_int = 0x8015;
+/// GLXBadProfileARB (glxproto.h), a GLX error code.
+const GLX_BAD_PROFILE_ARB: u8 = 13;
 
 const VENDOR: &CStr = c"tessera project";
 const VERSION: &CStr = c"1.4";
@@ -63,6 +68,11 @@ const EXTENSIONS: &CStr = c"GLX_ARB_create_context GLX_ARB_create_context_profil
 
 fn addr(display: *mut Display) -> DisplayAddr {
     display as DisplayAddr
+}
+
+/// Reports a GLX error (X protocol error) about `resource` for the request `minor`.
+fn report(display: *mut Display, error: GlxError, resource: u64, minor: u8) {
+    xerr::report(addr(display), error, resource, minor);
 }
 
 /// Reads a zero-terminated attribute list (pairs unless `singles`, for glXChooseVisual).
@@ -273,9 +283,23 @@ pub unsafe extern "C" fn glXCreateContext(
     // SAFETY: forwarded contract.
     let config = guard(None, || unsafe { config_of_visual(dpy, vis) });
     let Some(config) = config else {
+        guard((), || report(dpy, xerr::BAD_VALUE, 0, request::CREATE_CONTEXT));
         return std::ptr::null_mut();
     };
-    guard(std::ptr::null_mut(), || context_handle(glx::create_context(addr(dpy), config, shareList as usize)))
+    guard(std::ptr::null_mut(), || new_context(dpy, config, shareList, request::CREATE_CONTEXT))
+}
+
+/// Creates a context sharing with `share` (GLXBadContext when it is not a context).
+fn new_context(dpy: *mut Display, config: &'static FbConfig, share: GLXContext, minor: u8) -> GLXContext {
+    if !share.is_null() && glx::lookup_context(share as usize).is_none() {
+        report(dpy, xerr::GLX_BAD_CONTEXT, share as u64, minor);
+        return std::ptr::null_mut();
+    }
+    let handle = glx::create_context(addr(dpy), config, share as usize);
+    if handle.is_none() {
+        report(dpy, xerr::BAD_ALLOC, 0, minor);
+    }
+    context_handle(handle)
 }
 
 #[no_mangle]
@@ -289,12 +313,16 @@ pub extern "C" fn glXCreateNewContext(
     let _ = direct;
     guard(std::ptr::null_mut(), || {
         let Some(config) = config_of(dpy, config) else {
+            report(dpy, xerr::GLX_BAD_FBCONFIG, config as u64, request::CREATE_NEW_CONTEXT);
             return std::ptr::null_mut();
         };
         if renderType != GLX_RGBA_TYPE {
+            // Color index is a valid type no configuration supports: BadMatch.
+            let error = if renderType == GLX_COLOR_INDEX_TYPE { xerr::BAD_MATCH } else { xerr::BAD_VALUE };
+            report(dpy, error, 0, request::CREATE_NEW_CONTEXT);
             return std::ptr::null_mut();
         }
-        context_handle(glx::create_context(addr(dpy), config, shareList as usize))
+        new_context(dpy, config, shareList, request::CREATE_NEW_CONTEXT)
     })
 }
 
@@ -315,8 +343,10 @@ pub unsafe extern "C" fn glXCreateContextAttribsARB(
     let _ = direct;
     // SAFETY: forwarded contract.
     let list = unsafe { attribute_list(attribList, false) };
+    const MINOR: u8 = request::CREATE_CONTEXT_ATTRIBS_ARB;
     guard(std::ptr::null_mut(), || {
         let Some(config) = config_of(dpy, config) else {
+            report(dpy, xerr::GLX_BAD_FBCONFIG, config as u64, MINOR);
             return std::ptr::null_mut();
         };
         let (mut major, mut minor, mut flags, mut profile) = (1, 0, 0, GLX_CONTEXT_COMPATIBILITY_PROFILE_BIT_ARB);
@@ -329,43 +359,76 @@ pub unsafe extern "C" fn glXCreateContextAttribsARB(
                 GLX_CONTEXT_PROFILE_MASK_ARB => profile = value,
                 GLX_RENDER_TYPE if value == GLX_RGBA_TYPE => {}
                 GLX_CONTEXT_RESET_NOTIFICATION_STRATEGY_ARB if value == GLX_NO_RESET_NOTIFICATION_ARB => {}
-                _ => return std::ptr::null_mut(),
+                GLX_RENDER_TYPE => {
+                    report(dpy, xerr::BAD_MATCH, 0, MINOR);
+                    return std::ptr::null_mut();
+                }
+                _ => {
+                    report(dpy, xerr::BAD_VALUE, 0, MINOR);
+                    return std::ptr::null_mut();
+                }
             }
         }
-        // Only the debug flag may be given (forward-compatible needs 3.0, robustness is
-        // not advertised); the debug flag changes nothing.
+        // GLX_ARB_create_context: an unknown flag is BadValue; the forward-compatible flag
+        // below 3.0 and the robust-access flag (not advertised) are BadMatch; the debug flag
+        // changes nothing.
+        const KNOWN_FLAGS: c_int = GLX_CONTEXT_DEBUG_BIT_ARB | 2 | 4;
+        if flags & !KNOWN_FLAGS != 0 {
+            report(dpy, xerr::BAD_VALUE, 0, MINOR);
+            return std::ptr::null_mut();
+        }
         if flags & !GLX_CONTEXT_DEBUG_BIT_ARB != 0 {
+            report(dpy, xerr::BAD_MATCH, 0, MINOR);
             return std::ptr::null_mut();
         }
         let profile_valid =
             profile == GLX_CONTEXT_CORE_PROFILE_BIT_ARB || profile == GLX_CONTEXT_COMPATIBILITY_PROFILE_BIT_ARB;
         if (major, minor) >= (3, 2) && !profile_valid {
+            report(dpy, GlxError::Glx(GLX_BAD_PROFILE_ARB), 0, MINOR);
             return std::ptr::null_mut();
         }
         if !strings::supports_version(major, minor) {
+            // A version no configuration provides: GLXBadFBConfig (as Mesa; BadMatch for
+            // versions that do not exist at all).
+            let exists = (major == 1 && (0..=5).contains(&minor))
+                || (major == 2 && (0..=1).contains(&minor))
+                || (major == 3 && (0..=3).contains(&minor))
+                || (major == 4 && (0..=6).contains(&minor));
+            let error = if exists { xerr::GLX_BAD_FBCONFIG } else { xerr::BAD_MATCH };
+            report(dpy, error, 0, MINOR);
             return std::ptr::null_mut();
         }
-        context_handle(glx::create_context(addr(dpy), config, share_context as usize))
+        new_context(dpy, config, share_context, MINOR)
     })
 }
 
 #[no_mangle]
 pub extern "C" fn glXDestroyContext(dpy: *mut Display, ctx: GLXContext) {
-    let _ = dpy;
-    guard((), || glx::destroy_context(ctx as usize))
+    guard((), || {
+        if glx::lookup_context(ctx as usize).is_none() {
+            return report(dpy, xerr::GLX_BAD_CONTEXT, ctx as u64, request::DESTROY_CONTEXT);
+        }
+        glx::destroy_context(ctx as usize)
+    })
 }
 
-fn make_current(dpy: *mut Display, draw: GLXDrawable, read: GLXDrawable, ctx: GLXContext) -> Bool {
-    guard(FALSE, || match glx::make_current(addr(dpy), draw as u64, read as u64, ctx as usize) {
-        Ok(()) => TRUE,
-        Err(MakeCurrentError::BadContext | MakeCurrentError::BadMatch) => FALSE,
-        Err(MakeCurrentError::BadDrawable | MakeCurrentError::BadAccess) => FALSE,
+fn make_current(dpy: *mut Display, draw: GLXDrawable, read: GLXDrawable, ctx: GLXContext, minor: u8) -> Bool {
+    guard(FALSE, || {
+        let (error, resource) = match glx::make_current(addr(dpy), draw as u64, read as u64, ctx as usize) {
+            Ok(()) => return TRUE,
+            Err(MakeCurrentError::BadContext) => (xerr::GLX_BAD_CONTEXT, ctx as u64),
+            Err(MakeCurrentError::BadMatch) => (xerr::BAD_MATCH, 0),
+            Err(MakeCurrentError::BadDrawable) => (xerr::GLX_BAD_DRAWABLE, draw as u64),
+            Err(MakeCurrentError::BadAccess) => (xerr::BAD_ACCESS, ctx as u64),
+        };
+        report(dpy, error, resource, minor);
+        FALSE
     })
 }
 
 #[no_mangle]
 pub extern "C" fn glXMakeCurrent(dpy: *mut Display, drawable: GLXDrawable, ctx: GLXContext) -> Bool {
-    make_current(dpy, drawable, drawable, ctx)
+    make_current(dpy, drawable, drawable, ctx, request::MAKE_CURRENT)
 }
 
 #[no_mangle]
@@ -375,7 +438,7 @@ pub extern "C" fn glXMakeContextCurrent(
     read: GLXDrawable,
     ctx: GLXContext,
 ) -> Bool {
-    make_current(dpy, draw, read, ctx)
+    make_current(dpy, draw, read, ctx, request::MAKE_CONTEXT_CURRENT)
 }
 
 #[no_mangle]
@@ -406,10 +469,16 @@ pub extern "C" fn glXIsDirect(dpy: *mut Display, ctx: GLXContext) -> Bool {
 
 #[no_mangle]
 pub extern "C" fn glXCopyContext(dpy: *mut Display, src: GLXContext, dst: GLXContext, mask: c_ulong) {
-    let _ = dpy;
     guard((), || {
-        if let (Some(s), Some(d)) = (glx::lookup_context(src as usize), glx::lookup_context(dst as usize)) {
-            glx::copy_context(&s, &d, mask as u32);
+        let minor = request::COPY_CONTEXT;
+        let (Some(s), Some(d)) = (glx::lookup_context(src as usize), glx::lookup_context(dst as usize)) else {
+            let bad = if glx::lookup_context(src as usize).is_none() { src } else { dst };
+            return report(dpy, xerr::GLX_BAD_CONTEXT, bad as u64, minor);
+        };
+        if !glx::copy_context(&s, &d, mask as u32) {
+            // The same context, or a destination current to some thread.
+            let error = if src == dst { xerr::BAD_MATCH } else { xerr::BAD_ACCESS };
+            report(dpy, error, dst as u64, minor);
         }
     })
 }
@@ -485,15 +554,30 @@ pub extern "C" fn glXGetVisualFromFBConfig(dpy: *mut Display, config: GLXFBConfi
 }
 
 fn create_drawable(dpy: *mut Display, config: GLXFBConfig, xid: c_ulong, kind: DrawableKind) -> c_ulong {
+    let minor = if kind == DrawableKind::Window { request::CREATE_WINDOW } else { request::CREATE_PIXMAP };
     guard(0, || {
         let Some(config) = config_of(dpy, config) else {
+            report(dpy, xerr::GLX_BAD_FBCONFIG, config as u64, minor);
             return 0;
         };
         if glx::create_drawable(addr(dpy), xid as u64, kind, config) {
             xid
         } else {
+            // Already a GLX drawable (BadAlloc, GLX 1.4 §3.3.4), or no X drawable at all
+            // (XGetGeometry has reported that already), or out of memory.
+            report(dpy, xerr::BAD_ALLOC, xid as u64, minor);
             0
         }
+    })
+}
+
+/// Destroys the GLX drawable `xid` of `kind`; `error` when it is none of that kind.
+fn destroy_drawable(dpy: *mut Display, xid: c_ulong, kind: DrawableKind, error: GlxError, minor: u8) {
+    guard((), || {
+        if glx::lookup_drawable(addr(dpy), xid as u64).is_none_or(|d| d.kind != kind || !d.explicit) {
+            return report(dpy, error, xid as u64, minor);
+        }
+        glx::destroy_drawable(addr(dpy), xid as u64, kind)
     })
 }
 
@@ -511,7 +595,7 @@ pub extern "C" fn glXCreateWindow(
 
 #[no_mangle]
 pub extern "C" fn glXDestroyWindow(dpy: *mut Display, win: c_ulong) {
-    guard((), || glx::destroy_drawable(addr(dpy), win as u64, DrawableKind::Window))
+    destroy_drawable(dpy, win, DrawableKind::Window, xerr::GLX_BAD_WINDOW, request::DESTROY_WINDOW)
 }
 
 /// The GLXPixmap is the X pixmap's own XID.
@@ -528,7 +612,7 @@ pub extern "C" fn glXCreatePixmap(
 
 #[no_mangle]
 pub extern "C" fn glXDestroyPixmap(dpy: *mut Display, pixmap: c_ulong) {
-    guard((), || glx::destroy_drawable(addr(dpy), pixmap as u64, DrawableKind::Pixmap))
+    destroy_drawable(dpy, pixmap, DrawableKind::Pixmap, xerr::GLX_BAD_PIXMAP, request::DESTROY_PIXMAP)
 }
 
 /// # Safety
@@ -538,14 +622,22 @@ pub unsafe extern "C" fn glXCreateGLXPixmap(dpy: *mut Display, visual: *mut XVis
     // SAFETY: forwarded contract.
     let config = guard(None, || unsafe { config_of_visual(dpy, visual) });
     let Some(config) = config else {
+        guard((), || report(dpy, xerr::BAD_VALUE, 0, request::CREATE_GLX_PIXMAP));
         return 0;
     };
-    guard(0, || if glx::create_drawable(addr(dpy), pixmap as u64, DrawableKind::Pixmap, config) { pixmap } else { 0 })
+    guard(0, || {
+        if glx::create_drawable(addr(dpy), pixmap as u64, DrawableKind::Pixmap, config) {
+            pixmap
+        } else {
+            report(dpy, xerr::BAD_ALLOC, pixmap as u64, request::CREATE_GLX_PIXMAP);
+            0
+        }
+    })
 }
 
 #[no_mangle]
 pub extern "C" fn glXDestroyGLXPixmap(dpy: *mut Display, pixmap: c_ulong) {
-    guard((), || glx::destroy_drawable(addr(dpy), pixmap as u64, DrawableKind::Pixmap))
+    destroy_drawable(dpy, pixmap, DrawableKind::Pixmap, xerr::GLX_BAD_PIXMAP, request::DESTROY_GLX_PIXMAP)
 }
 
 /// # Safety
@@ -554,8 +646,10 @@ pub extern "C" fn glXDestroyGLXPixmap(dpy: *mut Display, pixmap: c_ulong) {
 pub unsafe extern "C" fn glXCreatePbuffer(dpy: *mut Display, config: GLXFBConfig, attribList: *const c_int) -> c_ulong {
     // SAFETY: forwarded contract.
     let list = unsafe { attribute_list(attribList, false) };
+    const MINOR: u8 = request::CREATE_PBUFFER;
     guard(0, || {
         let Some(config) = config_of(dpy, config) else {
+            report(dpy, xerr::GLX_BAD_FBCONFIG, config as u64, MINOR);
             return 0;
         };
         let (mut width, mut height) = (0, 0);
@@ -564,21 +658,26 @@ pub unsafe extern "C" fn glXCreatePbuffer(dpy: *mut Display, config: GLXFBConfig
             match pair[0] {
                 GLX_PBUFFER_WIDTH => width = value,
                 GLX_PBUFFER_HEIGHT => height = value,
-                GLX_PRESERVED_CONTENTS | GLX_LARGEST_PBUFFER => {}
-                _ => return 0,
+                // Other attributes are ignored, as Mesa does (GLX 1.4 names no error for them).
+                _ => {}
             }
         }
         let max = crate::context::state::MAX_VIEWPORT_DIM;
         if !(0..=max).contains(&width) || !(0..=max).contains(&height) {
+            report(dpy, xerr::BAD_ALLOC, 0, MINOR);
             return 0;
         }
-        glx::create_pbuffer(addr(dpy), config, width as usize, height as usize) as c_ulong
+        let pbuffer = glx::create_pbuffer(addr(dpy), config, width as usize, height as usize) as c_ulong;
+        if pbuffer == 0 {
+            report(dpy, xerr::BAD_ALLOC, 0, MINOR);
+        }
+        pbuffer
     })
 }
 
 #[no_mangle]
 pub extern "C" fn glXDestroyPbuffer(dpy: *mut Display, pbuf: c_ulong) {
-    guard((), || glx::destroy_drawable(addr(dpy), pbuf as u64, DrawableKind::Pbuffer))
+    destroy_drawable(dpy, pbuf, DrawableKind::Pbuffer, xerr::GLX_BAD_PBUFFER, request::DESTROY_PBUFFER)
 }
 
 /// # Safety
@@ -587,7 +686,7 @@ pub extern "C" fn glXDestroyPbuffer(dpy: *mut Display, pbuf: c_ulong) {
 pub unsafe extern "C" fn glXQueryDrawable(dpy: *mut Display, draw: GLXDrawable, attribute: c_int, value: *mut c_uint) {
     guard((), || {
         let Some(drawable) = glx::lookup_drawable(addr(dpy), draw as u64) else {
-            return;
+            return report(dpy, xerr::GLX_BAD_DRAWABLE, draw as u64, request::GET_DRAWABLE_ATTRIBUTES);
         };
         let (w, h) = drawable.size();
         let v = match attribute {
@@ -632,10 +731,9 @@ pub unsafe extern "C" fn glXQueryContext(
 /// GLX events (pbuffer clobber, swap complete) are never generated: the mask is accepted.
 #[no_mangle]
 pub extern "C" fn glXSelectEvent(dpy: *mut Display, draw: GLXDrawable, event_mask: c_ulong) {
-    guard((), || {
-        if let Some(d) = glx::lookup_drawable(addr(dpy), draw as u64) {
-            d.event_mask.store(event_mask as u64, std::sync::atomic::Ordering::Relaxed);
-        }
+    guard((), || match glx::lookup_drawable(addr(dpy), draw as u64) {
+        Some(d) => d.event_mask.store(event_mask as u64, std::sync::atomic::Ordering::Relaxed),
+        None => report(dpy, xerr::GLX_BAD_DRAWABLE, draw as u64, request::CHANGE_DRAWABLE_ATTRIBUTES),
     })
 }
 
@@ -644,15 +742,23 @@ pub extern "C" fn glXSelectEvent(dpy: *mut Display, draw: GLXDrawable, event_mas
 #[no_mangle]
 pub unsafe extern "C" fn glXGetSelectedEvent(dpy: *mut Display, draw: GLXDrawable, event_mask: *mut c_ulong) {
     guard((), || {
-        let mask = glx::lookup_drawable(addr(dpy), draw as u64)
-            .map_or(0, |d| d.event_mask.load(std::sync::atomic::Ordering::Relaxed));
+        let drawable = glx::lookup_drawable(addr(dpy), draw as u64);
+        if drawable.is_none() {
+            report(dpy, xerr::GLX_BAD_DRAWABLE, draw as u64, request::GET_DRAWABLE_ATTRIBUTES);
+        }
+        let mask = drawable.map_or(0, |d| d.event_mask.load(std::sync::atomic::Ordering::Relaxed));
         set(event_mask, mask as c_ulong);
     })
 }
 
 #[no_mangle]
 pub extern "C" fn glXSwapBuffers(dpy: *mut Display, drawable: GLXDrawable) {
-    guard((), || glx::swap_buffers(addr(dpy), drawable as u64))
+    guard((), || {
+        if glx::lookup_drawable(addr(dpy), drawable as u64).is_none() {
+            return report(dpy, xerr::GLX_BAD_DRAWABLE, drawable as u64, request::SWAP_BUFFERS);
+        }
+        glx::swap_buffers(addr(dpy), drawable as u64)
+    })
 }
 
 #[no_mangle]

@@ -78,7 +78,58 @@ mod tests {
             ),
             "GL_EXT_draw_range_elements" => list("glDrawRangeElementsEXT"),
             "GL_EXT_multi_draw_arrays" => list("glMultiDrawArraysEXT glMultiDrawElementsEXT"),
-            "GL_EXT_stencil_wrap" | "GL_NV_fog_distance" | "GL_NV_blend_square" | "GL_EXT_blend_logic_op" => vec![],
+            "GL_EXT_polygon_offset_clamp" => list("glPolygonOffsetClampEXT"),
+            "GL_ARB_multitexture" => {
+                let mut names = list("glActiveTextureARB glClientActiveTextureARB");
+                for n in 1..=4 {
+                    for t in ["d", "f", "i", "s"] {
+                        names.push(format!("glMultiTexCoord{n}{t}ARB"));
+                        names.push(format!("glMultiTexCoord{n}{t}vARB"));
+                    }
+                }
+                names
+            }
+            "GL_ARB_occlusion_query" => list(
+                "glGenQueriesARB glDeleteQueriesARB glIsQueryARB glBeginQueryARB glEndQueryARB glGetQueryivARB \
+                 glGetQueryObjectivARB glGetQueryObjectuivARB",
+            ),
+            "GL_ARB_texture_compression" => list(
+                "glCompressedTexImage1DARB glCompressedTexImage2DARB glCompressedTexImage3DARB \
+                 glCompressedTexSubImage1DARB glCompressedTexSubImage2DARB glCompressedTexSubImage3DARB \
+                 glGetCompressedTexImageARB",
+            ),
+            "GL_ARB_window_pos" => ["2", "3"]
+                .iter()
+                .flat_map(|n| ["d", "f", "i", "s"].map(|t| (n, t)))
+                .flat_map(|(n, t)| [format!("glWindowPos{n}{t}ARB"), format!("glWindowPos{n}{t}vARB")])
+                .collect(),
+            "GL_EXT_texture3D" => list("glTexImage3DEXT glTexSubImage3DEXT"),
+            "GL_ARB_depth_texture"
+            | "GL_ARB_shadow"
+            | "GL_ARB_texture_border_clamp"
+            | "GL_ARB_texture_cube_map"
+            | "GL_ARB_texture_env_add"
+            | "GL_ARB_texture_env_combine"
+            | "GL_ARB_texture_env_crossbar"
+            | "GL_ARB_texture_env_dot3"
+            | "GL_ARB_texture_mirrored_repeat"
+            | "GL_EXT_bgra"
+            | "GL_EXT_packed_pixels"
+            | "GL_EXT_rescale_normal"
+            | "GL_EXT_separate_specular_color"
+            | "GL_EXT_shadow_funcs"
+            | "GL_EXT_texture_edge_clamp"
+            | "GL_EXT_texture_env_add"
+            | "GL_EXT_texture_env_combine"
+            | "GL_EXT_texture_lod_bias"
+            | "GL_SGIS_generate_mipmap"
+            | "GL_SGIS_texture_edge_clamp"
+            | "GL_SGIS_texture_lod" => vec![],
+            "GL_EXT_stencil_wrap"
+            | "GL_NV_fog_distance"
+            | "GL_NV_blend_square"
+            | "GL_EXT_blend_logic_op"
+            | "GL_ARB_depth_clamp" => vec![],
             other => panic!("{other}: list its entry points in this test"),
         }
     }

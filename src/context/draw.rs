@@ -150,6 +150,9 @@ struct Geometry {
     height: i32,
     line_width: f32,
     point_size: f32,
+    /// GL_POINT_DISTANCE_ATTENUATION's coefficients with GL_POINT_SIZE_MIN/MAX, when they
+    /// attenuate (not (1, 0, 0)); `point_size` is used unchanged otherwise.
+    point_attenuation: Option<PointAttenuation>,
     /// glPolygonMode of front and back faces.
     mode_front: GLenum,
     mode_back: GLenum,
@@ -157,6 +160,8 @@ struct Geometry {
     /// r the depth buffer's resolution, as Mesa's offset stage applies them.
     offset_line: Option<(f32, f32)>,
     offset_point: Option<(f32, f32)>,
+    /// GL_POLYGON_OFFSET_CLAMP (EXT_polygon_offset_clamp): the bound of every offset.
+    offset_clamp: f32,
     /// The attributes interpolated over filled polygons for the stages this draw enables
     /// (none when only color is needed).
     varyings: Vec<Attribute>,
@@ -398,6 +403,12 @@ impl Context {
         let fill_clip = clip.intersect(Rect::from_xywh(vx, vy, vw, vh));
         let polygon_stipple = self.state.polygon.stipple.then_some(self.state.polygon_stipple);
         let mut fragment = FragmentState::plain(depth, color_masks, clamp_float);
+        if self.state.transform.depth_clamp {
+            // ARB_depth_clamp: near/far clipping is off (`geometry`), and fragment depths
+            // are clamped to the depth range instead.
+            let [near, far] = self.state.viewport.depth_range.map(|d| d as f32);
+            fragment.depth_clamp = Some([near.min(far), near.max(far)]);
+        }
         self.compile_fragment_ops(&mut fragment, &buffer_of, color_format, stencil_bits);
         if self.accuracy == Accuracy::Fast {
             fragment.dither = false;
@@ -533,6 +544,12 @@ impl Context {
             height: height as i32,
             line_width: lp.line_width.min(MAX_LINE_WIDTH),
             point_size: point_size(lp),
+            point_attenuation: (lp.point_distance_attenuation != [1.0, 0.0, 0.0]).then_some(PointAttenuation {
+                size: lp.point_size,
+                coefficients: lp.point_distance_attenuation,
+                min: lp.point_size_min,
+                max: lp.point_size_max,
+            }),
             // A culled face's mode does not matter; Mesa gives it the other face's, which
             // decides whether quads are split as filled quads or as outlines.
             mode_front: if polygon.cull_face && polygon.cull_face_mode == GL_FRONT {
@@ -552,6 +569,7 @@ impl Context {
             cull: polygon.cull_face.then_some(polygon.cull_face_mode),
             front_ccw: polygon.front_face == GL_CCW,
             offset: polygon.offset_fill.then_some((polygon.offset_factor, polygon.offset_units)),
+            offset_clamp: polygon.offset_clamp,
             depth_bits,
         }
     }
@@ -565,19 +583,54 @@ impl Geometry {
     }
 }
 
-/// The size points are drawn with: glPointSize clamped to GL_POINT_SIZE_MIN/MAX (the
-/// minimum winning when they cross, as in Mesa) and to the implementation's range.
-/// Distance attenuation (GL_POINT_DISTANCE_ATTENUATION) is not applied yet.
+/// The size points are drawn with without distance attenuation: glPointSize clamped to
+/// GL_POINT_SIZE_MIN/MAX (the minimum winning when they cross, as in Mesa) and to the
+/// implementation's range.
 fn point_size(lp: &LinePointState) -> f32 {
-    let size = lp.point_size;
-    let size = if size < lp.point_size_min {
-        lp.point_size_min
-    } else if size > lp.point_size_max {
-        lp.point_size_max
+    clamp_point_size(lp.point_size, lp.point_size_min, lp.point_size_max)
+}
+
+/// `size` clamped to [min, max] (min winning when they cross; NaN gives min) and to the
+/// implementation's range.
+fn clamp_point_size(size: f32, min: f32, max: f32) -> f32 {
+    let size = if size.is_nan() || size < min {
+        min
+    } else if size > max {
+        max
     } else {
         size
     };
     size.min(MAX_POINT_SIZE)
+}
+
+/// Point parameters' distance attenuation (GL 1.4, GL 2.1 §3.4): the derived size
+/// `size · 1/√(a + b·d + c·d²)` clamped to GL_POINT_SIZE_MIN/MAX. As Mesa's fixed-function
+/// vertex program, d is |z| of the eye coordinates (the spec's distance to the eye,
+/// approximated along the view axis; the same on the view axis) and the square root is of
+/// the absolute value. Without multisampling the derived size is the point's width (the
+/// fade threshold applies to multisampled points only).
+#[derive(Clone, Copy, Debug)]
+struct PointAttenuation {
+    size: f32,
+    coefficients: [f32; 3],
+    min: f32,
+    max: f32,
+}
+
+impl PointAttenuation {
+    fn size_at(&self, eye: [f32; 4]) -> f32 {
+        let d = eye[2].abs();
+        let [a, b, c] = self.coefficients;
+        let factor = d.mul_add(c, b).mul_add(d, a);
+        clamp_point_size(self.size / factor.abs().sqrt(), self.min, self.max)
+    }
+}
+
+impl Geometry {
+    /// The width of a point whose vertex has eye coordinates `eye`.
+    fn point_size_at(&self, eye: [f32; 4]) -> f32 {
+        self.point_attenuation.map_or(self.point_size, |a| a.size_at(eye))
+    }
 }
 
 /// A triangle of a polygon drawn in GL_POINT or GL_LINE mode: its vertices, which of its
@@ -684,7 +737,12 @@ impl Outline<'_> {
         let edges = std::array::from_fn(|i| t.edges[i] && v[i].edge_flag);
         let flat = self.g.flat.then(|| FlatColors::of(v[if self.first_vertex { 0 } else { 2 }]));
         let corner = |c: &ClipVertex, fused: bool| {
-            (self.g.viewport.window_down(c, fused), self.g.viewport.window(c), c.back_colors)
+            (
+                self.g.viewport.window_down(c, fused),
+                self.g.viewport.window(c),
+                c.back_colors,
+                self.g.point_size_at(c.eye),
+            )
         };
         if codes[0] | codes[1] | codes[2] == 0 {
             let w = v.map(|c| corner(c, true));
@@ -753,7 +811,7 @@ impl Outline<'_> {
             let inv_det = 1.0 / det;
             let dzdx = ((ey * fz - ez * fy) * inv_det).abs();
             let dzdy = ((ez * fx - ex * fz) * inv_det).abs();
-            let z_offset = units + dzdx.max(dzdy) * factor;
+            let z_offset = clamp_offset(units + dzdx.max(dzdy) * factor, g.offset_clamp);
             for c in &mut l {
                 c.z = (c.z + z_offset).clamp(0.0, 1.0);
             }
@@ -789,7 +847,7 @@ impl Outline<'_> {
                     if let Some(s) = self.stipple.as_mut() {
                         s.counter = 0;
                     }
-                    emit_window_point(self.scene, self.state, g, &l[k]);
+                    emit_window_point(self.scene, self.state, g, &l[k], w[k].3);
                 }
             }
         }
@@ -797,8 +855,8 @@ impl Outline<'_> {
 }
 
 /// A corner of an outlined triangle: in llvmpipe's y-down window space, in GL window
-/// coordinates, and its back-face colors.
-type Corner = (LineVertex, WindowVertex, [[f32; 4]; 2]);
+/// coordinates, its back-face colors and its point size (GL_POINT polygon mode).
+type Corner = (LineVertex, WindowVertex, [[f32; 4]; 2], f32);
 
 /// Clips the polygon `poly` (each vertex's `edge_flag` telling whether the edge it starts
 /// is drawn) against the planes in `mask` as Mesa's clipper does for polygons it draws as
@@ -922,7 +980,9 @@ fn emit_triangle(scene: &mut Scene, state: u32, g: &Geometry, w: [WindowVertex; 
         Some(GL_BACK) if !front => return,
         _ => {}
     }
-    let offset = g.offset.map_or(0.0, |(factor, units)| polygon_offset(&w, factor, units, g.depth_bits));
+    let offset = g
+        .offset
+        .map_or(0.0, |(factor, units)| clamp_offset(polygon_offset(&w, factor, units, g.depth_bits), g.offset_clamp));
     let varyings: Vec<[f32; 3]> = g.varyings.iter().map(|a| w.map(|v| a.of(&v))).collect();
     if let Some(mut job) = TriangleJob::with_accuracy(g.accuracy, w, flat, offset, &varyings) {
         job.front_facing = front;
@@ -1081,15 +1141,28 @@ fn emit_line_job(scene: &mut Scene, state: u32, g: &Geometry, a: &LineVertex, b:
 /// Emits a point whose vertex is inside the view volume.
 fn emit_point(scene: &mut Scene, state: u32, g: &Geometry, v: &ClipVertex) {
     let w = g.viewport.window_down(v, true);
-    emit_window_point(scene, state, g, &w);
+    emit_window_point(scene, state, g, &w, g.point_size_at(v.eye));
 }
 
-fn emit_window_point(scene: &mut Scene, state: u32, g: &Geometry, w: &LineVertex) {
-    let rect = point_rect(w.x, w.y_down, g.point_size, g.height);
+fn emit_window_point(scene: &mut Scene, state: u32, g: &Geometry, w: &LineVertex, size: f32) {
+    let rect = point_rect(w.x, w.y_down, size, g.height);
     // llvmpipe interpolates point colors perspective-correctly too: (c/w)·w.
     let color = if w.inv_w == 1.0 { w.color } else { w.color.map(|c| c * w.inv_w * (1.0 / w.inv_w)) };
     let varyings = g.varyings.iter().map(|v| v.of_line(w)).collect();
     scene.add(state, rect, RasterPrimitive::Point(PointJob { rect, z: w.z, color, varyings }));
+}
+
+/// A polygon offset bounded by GL_POLYGON_OFFSET_CLAMP as EXT_polygon_offset_clamp says:
+/// at most `clamp` when it is positive, at least `clamp` when negative, unbounded when it
+/// is 0 (or NaN).
+fn clamp_offset(offset: f32, clamp: f32) -> f32 {
+    if clamp > 0.0 {
+        offset.min(clamp)
+    } else if clamp < 0.0 {
+        offset.max(clamp)
+    } else {
+        offset
+    }
 }
 
 /// glPolygonOffset's depth offset for a triangle: factor × max depth slope + units × r,
@@ -1490,6 +1563,17 @@ mod tests {
             "clip_vertices_are_points: 0,5 12,6 4,14\n",
         );
         assert_eq!(replay(script), mesa);
+    }
+
+    #[test]
+    fn offset_clamp_bounds_the_offset_on_its_own_side_only() {
+        assert_eq!(clamp_offset(0.3, 0.1), 0.1);
+        assert_eq!(clamp_offset(0.05, 0.1), 0.05);
+        assert_eq!(clamp_offset(-0.3, 0.1), -0.3);
+        assert_eq!(clamp_offset(-0.3, -0.1), -0.1);
+        assert_eq!(clamp_offset(0.3, -0.1), 0.3);
+        assert_eq!(clamp_offset(0.3, 0.0), 0.3);
+        assert_eq!(clamp_offset(-0.3, f32::NAN), -0.3);
     }
 
     /// GL_POLYGON_OFFSET_LINE with factor 1 and units 2, against no offset.

@@ -63,6 +63,9 @@ pub struct Context {
     /// Between glBegin and glEnd, where most commands are GL_INVALID_OPERATION.
     pub inside_begin_end: bool,
     drawable: Option<Arc<Mutex<Drawable>>>,
+    /// The drawable pixels are read from (glReadPixels, glCopyPixels, glCopyTexImage) when
+    /// it is not the draw drawable (glXMakeContextCurrent with a separate read drawable).
+    read_drawable: Option<Arc<Mutex<Drawable>>>,
     /// Primitives recorded since the last flush point.
     scene: Option<crate::raster::Scene>,
     /// Viewport and scissor are initialised to the drawable's size at the first bind only.
@@ -98,6 +101,7 @@ impl Context {
             client_attrib_stack: Vec::new(),
             inside_begin_end: false,
             drawable: None,
+            read_drawable: None,
             scene: None,
             bound_once: false,
             vertex_input: vertex_input::VertexInput::default(),
@@ -161,8 +165,19 @@ impl Context {
             }
         }
         self.drawable = drawable;
+        self.read_drawable = None;
     }
 
+    /// Binds the drawable pixels are read from, after `bind_drawable` (None or the draw
+    /// drawable itself: reads come from the draw drawable). GLX requires it to have the
+    /// context's configuration, so it has the same layers as the draw drawable.
+    pub fn bind_read_drawable(&mut self, read: Option<Arc<Mutex<Drawable>>>) {
+        let separate = match (&read, &self.drawable) {
+            (Some(r), Some(d)) => !Arc::ptr_eq(r, d),
+            (r, _) => r.is_some(),
+        };
+        self.read_drawable = if separate { read } else { None };
+    }
     pub fn drawable(&self) -> Option<&Arc<Mutex<Drawable>>> {
         self.drawable.as_ref()
     }
@@ -170,6 +185,15 @@ impl Context {
     /// Runs `f` on the bound framebuffer; `None` when no drawable is bound.
     pub fn with_framebuffer<R>(&self, f: impl FnOnce(&mut Framebuffer) -> R) -> Option<R> {
         let drawable = self.drawable.as_ref()?;
+        let mut guard = drawable.lock().unwrap_or_else(|p| p.into_inner());
+        Some(f(&mut guard.framebuffer))
+    }
+
+    /// Runs `f` on the framebuffer pixels are read from: the read drawable's when one is
+    /// bound apart from the draw drawable, else the draw drawable's; `None` without either.
+    /// Rendering recorded for the draw drawable must have been flushed by the caller.
+    pub fn with_read_framebuffer<R>(&self, f: impl FnOnce(&mut Framebuffer) -> R) -> Option<R> {
+        let drawable = self.read_drawable.as_ref().or(self.drawable.as_ref())?;
         let mut guard = drawable.lock().unwrap_or_else(|p| p.into_inner());
         Some(f(&mut guard.framebuffer))
     }

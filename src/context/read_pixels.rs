@@ -240,7 +240,7 @@ impl Context {
             return;
         };
         let slot = self.current_read_slot();
-        let _ = self.with_framebuffer(|fb| read_into(fb, slot, &job, out));
+        let _ = self.with_read_framebuffer(|fb| read_into(fb, slot, &job, out));
     }
 
     /// Checks a glReadPixels call (recording the error) and works out its clipped rectangle
@@ -297,7 +297,7 @@ impl Context {
             self.error(GL_INVALID_OPERATION);
             return None;
         };
-        let bounds = self.with_framebuffer(|fb| fb.bounds())?;
+        let bounds = self.with_read_framebuffer(|fb| fb.bounds())?;
         let rect = clip(x, y, width, height, bounds);
         if rect.is_empty() {
             return None;

@@ -9,23 +9,81 @@ use crate::api::types::GLenum;
 
 pub const VENDOR: &str = "tessera project\0";
 pub const RENDERER: &str = concat!("tessera ", env!("CARGO_PKG_VERSION"), " (software rasterizer)\0");
-/// GL_VERSION: 1.1 names the level the state machine targets until the rasterizer and
-/// the rest of GL 1.x land (see the issues); it is never above what works.
-pub const VERSION: &str = concat!("1.1 tessera ", env!("CARGO_PKG_VERSION"), "\0");
+/// GL_VERSION: 1.5, the highest version whose every feature works (the audit below), once
+/// GL 1.0's evaluators and smoothing have landed; GL 2.0 needs GLSL.
+pub const VERSION: &str = concat!("1.5 tessera ", env!("CARGO_PKG_VERSION"), "\0");
+
+// The version audit: each feature of the GL 1.2–1.5 core feature lists (GL 2.1 spec,
+// appendices C–F) checked against the code and its tests. GL 1.0/1.1 are assumed complete
+// once evaluators and smoothing land (other branches); GL 2.0 needs GLSL.
+//
+// | Version | Feature                                          | Status | Where / checked by |
+// |---------|--------------------------------------------------|--------|--------------------|
+// | 1.2     | 3D textures (glTexImage3D, wrap R)               | works  | context/texture.rs; capi texture_formats, texture_sampling |
+// | 1.2     | BGRA and packed pixel formats                    | works  | pixel/; capi readpixels_pack, texture_formats, pixel_rects |
+// | 1.2     | GL_RESCALE_NORMAL                                | works  | vertex/lighting.rs; capi lighting_* |
+// | 1.2     | Separate specular color                          | works  | capi lighting_render |
+// | 1.2     | Texture LOD (MIN/MAX_LOD, BASE/MAX_LEVEL)        | works  | texture/sampler.rs; capi texture_sampling |
+// | 1.2     | GL_CLAMP_TO_EDGE                                 | works  | texture/sampler.rs |
+// | 1.2     | glDrawRangeElements                              | works  | capi draw_arrays |
+// | 1.2     | Imaging subset                                   | optional, absent (no GL_ARB_imaging) | |
+// | 1.3     | Compressed texture entry points                  | works, no formats (GL_NUM_COMPRESSED_TEXTURE_FORMATS = 0) | api/gl_texture.rs |
+// | 1.3     | Cube map textures                                | works  | capi texture_texgen_shadow |
+// | 1.3     | Multisample state (GL_MULTISAMPLE, SAMPLE_*)     | state works, 0 sample buffers; glSampleCoverage comes with the msaa branch | context/capabilities.rs |
+// | 1.3     | Multitexture (4 units)                           | works  | capi texture_env |
+// | 1.3     | Env modes ADD, COMBINE, DOT3                     | works  | texture/env.rs; capi texture_env, piglit gl-1.3-texture-env |
+// | 1.3     | GL_CLAMP_TO_BORDER                               | works  | texture/sampler.rs |
+// | 1.3     | Transpose matrices                               | works  | capi transform_matrices |
+// | 1.4     | Automatic mipmaps (GL_GENERATE_MIPMAP)           | works  | context/texture.rs |
+// | 1.4     | Blend squaring (NV_blend_square)                 | works  | piglit blendsquare |
+// | 1.4     | Depth textures and shadows (compare mode)        | works  | capi texture_texgen_shadow |
+// | 1.4     | Fog coordinate                                   | works  | piglit ext_fog_coord-modes |
+// | 1.4     | glMultiDrawArrays/Elements                       | works  | capi draw_arrays |
+// | 1.4     | Point parameters (size min/max, attenuation)     | works  | context/draw.rs; capi point_attenuation (fade threshold: multisample only) |
+// | 1.4     | Secondary color                                  | works  | capi lighting_*, fragment_ops_fog |
+// | 1.4     | glBlendFuncSeparate                              | works  | capi fragment_ops_blend |
+// | 1.4     | Stencil wrap                                     | works  | piglit stencil-wrap |
+// | 1.4     | Texture env crossbar                             | works  | capi texture_env |
+// | 1.4     | Texture LOD bias                                 | works  | texture/sampler.rs |
+// | 1.4     | GL_MIRRORED_REPEAT                               | works  | texture/sampler.rs |
+// | 1.4     | glWindowPos                                      | works  | capi pixel_rects |
+// | 1.5     | Buffer objects                                   | works  | capi vertex_buffers |
+// | 1.5     | Occlusion queries                                | works  | capi occlusion_queries |
+// | 1.5     | Shadow functions (all 8 compare funcs)           | works  | context/texture.rs |
+//
+// Outside these lists but needed by every version: GL 1.0's evaluators and polygon/line/
+// point smoothing (other branches), and color-index pixel data in RGBA mode (glTexImage of
+// GL_COLOR_INDEX works, capi texture_color_index; glDrawPixels of GL_COLOR_INDEX: not yet).
+
 /// Extensions whose every entry point and enum works, each checked against the code (and
 /// by the piglit tests named in tests/piglit/expected.txt). Left out although close:
-/// GL_ARB_depth_clamp (piglit depth_clamp and depth-clamp-range fail: depth is not clamped
-/// to the depth range), GL_EXT_draw_buffers2 (glGetBooleanIndexedvEXT/glGetIntegerIndexedvEXT do not exist),
-/// GL_EXT_polygon_offset_clamp (the clamp is stored but the rasterizer does not apply it),
-/// GL_EXT_packed_pixels/GL_EXT_bgra (glReadPixels accepts them, but glDrawPixels and
-/// textures do not exist yet), GL_ARB_multitexture (no texturing yet).
+/// GL_EXT_draw_buffers2 (glGetBooleanIndexedvEXT/glGetIntegerIndexedvEXT do not exist),
+/// GL_ARB_multisample (glSampleCoverageARB: the msaa branch), GL_MESA_window_pos
+/// (glWindowPos4*MESA do not exist), GL_EXT_texture_object and GL_EXT_copy_texture (their
+/// EXT entry points do not exist), GL_EXT_texture_env_dot3 (its enums differ from the ARB
+/// ones tessera implements), GL_EXT_abgr (GL_ABGR_EXT is not a pixel format here).
 pub const EXTENSIONS: &[&str] = &[
+    "GL_ARB_depth_clamp",
+    "GL_ARB_depth_texture",
     "GL_ARB_draw_buffers",
     "GL_ARB_draw_buffers_blend",
+    "GL_ARB_multitexture",
+    "GL_ARB_occlusion_query",
     "GL_ARB_point_parameters",
+    "GL_ARB_shadow",
+    "GL_ARB_texture_border_clamp",
+    "GL_ARB_texture_compression",
+    "GL_ARB_texture_cube_map",
+    "GL_ARB_texture_env_add",
+    "GL_ARB_texture_env_combine",
+    "GL_ARB_texture_env_crossbar",
+    "GL_ARB_texture_env_dot3",
+    "GL_ARB_texture_mirrored_repeat",
     "GL_ARB_transpose_matrix",
     "GL_ARB_vertex_buffer_object",
+    "GL_ARB_window_pos",
     "GL_ATI_separate_stencil",
+    "GL_EXT_bgra",
     "GL_EXT_blend_color",
     "GL_EXT_blend_equation_separate",
     "GL_EXT_blend_func_separate",
@@ -35,19 +93,32 @@ pub const EXTENSIONS: &[&str] = &[
     "GL_EXT_draw_range_elements",
     "GL_EXT_fog_coord",
     "GL_EXT_multi_draw_arrays",
+    "GL_EXT_packed_pixels",
     "GL_EXT_point_parameters",
+    "GL_EXT_polygon_offset_clamp",
     "GL_EXT_provoking_vertex",
+    "GL_EXT_rescale_normal",
     "GL_EXT_secondary_color",
+    "GL_EXT_separate_specular_color",
+    "GL_EXT_shadow_funcs",
     "GL_EXT_stencil_two_side",
     "GL_EXT_stencil_wrap",
+    "GL_EXT_texture3D",
+    "GL_EXT_texture_edge_clamp",
+    "GL_EXT_texture_env_add",
+    "GL_EXT_texture_env_combine",
+    "GL_EXT_texture_lod_bias",
     "GL_EXT_vertex_array",
     "GL_NV_blend_square",
     "GL_NV_fog_distance",
+    "GL_SGIS_generate_mipmap",
+    "GL_SGIS_texture_edge_clamp",
+    "GL_SGIS_texture_lod",
 ];
 
 /// Whether a context of GL version `major.minor` (compatibility profile) can be created.
 pub fn supports_version(major: i32, minor: i32) -> bool {
-    (major, minor) <= (1, 1) && major >= 1 && minor >= 0
+    (major, minor) <= (1, 5) && major >= 1 && minor >= 0
 }
 
 fn extensions_string() -> &'static str {

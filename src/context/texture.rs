@@ -12,8 +12,10 @@
 //! differences from Mesa 22: the generic compressed internal formats are stored uncompressed
 //! (GL_TEXTURE_COMPRESSED false; Mesa picks S3TC for GL_COMPRESSED_RGB), formats of more than
 //! 8 bits per color channel are stored with 8 (their sizes read back as 8), sRGB internal
-//! formats and GL_COLOR_INDEX data are refused (GL_INVALID_VALUE / GL_INVALID_ENUM), and no
-//! compressed format is supported (glCompressedTexImage* is GL_INVALID_ENUM).
+//! formats are refused (GL_INVALID_VALUE), and no compressed format is supported
+//! (glCompressedTexImage* is GL_INVALID_ENUM). GL_COLOR_INDEX image data (every index type,
+//! GL_BITMAP included) becomes RGBA through GL_INDEX_SHIFT/OFFSET and the GL_PIXEL_MAP_I_TO_*
+//! tables (GL 2.1 §3.6.5, "Color Index Lookup"); glGetTexImage cannot return indices.
 use super::Context;
 use crate::api::enums::*;
 use crate::api::types::GLenum;
@@ -264,6 +266,95 @@ fn texture_client_format(format: GLenum) -> Option<ClientFormat> {
     }
 }
 
+/// Checks a client format/type pair for texture image data (glTexImage, glTexSubImage):
+/// the pairs of [`check_texture_format_type`], and GL_COLOR_INDEX data, which is returned
+/// as [`ClientFormat::StencilIndex`] (the one-index layout; no texture format takes
+/// stencil data, so that format means color indices here).
+pub(super) fn check_texture_upload_format_type(
+    format: GLenum,
+    ty: GLenum,
+) -> Result<(ClientFormat, ClientType), GLenum> {
+    if format != GL_COLOR_INDEX {
+        return check_texture_format_type(format, ty);
+    }
+    match super::read_pixels::client_type(ty) {
+        None => Err(GL_INVALID_ENUM),
+        Some(ClientType::Packed(_) | ClientType::UnsignedInt24_8) => Err(GL_INVALID_OPERATION),
+        Some(ClientType::HalfFloat) => Err(GL_INVALID_ENUM),
+        Some(t) => Ok((ClientFormat::StencilIndex, t)),
+    }
+}
+
+/// GL_COLOR_INDEX image data to RGBA (GL 2.1 §3.6.5): the index is shifted by
+/// GL_INDEX_SHIFT and offset by GL_INDEX_OFFSET, then looks up the GL_PIXEL_MAP_I_TO_R/G/B/A
+/// tables (whose sizes are powers of two) masked to their size.
+pub(super) struct IndexToRgba {
+    shift: i32,
+    offset: i32,
+    maps: [Vec<f32>; 4],
+}
+
+impl IndexToRgba {
+    pub(super) fn new(mode: &super::state::PixelModeState) -> IndexToRgba {
+        IndexToRgba {
+            shift: mode.transfer.index_shift,
+            offset: mode.transfer.index_offset,
+            maps: std::array::from_fn(|k| mode.maps[2 + k].clone()),
+        }
+    }
+
+    /// The color of index `value` (a float index keeps its fraction until the lookup,
+    /// which takes the integer part).
+    fn color(&self, value: f64) -> [f32; 4] {
+        let shifted = value * 2f64.powi(self.shift) + self.offset as f64;
+        let index = if shifted.is_finite() { shifted.trunc() as i64 } else { 0 };
+        std::array::from_fn(|k| {
+            let map = &self.maps[k];
+            map[(index & (map.len() as i64 - 1)) as usize]
+        })
+    }
+
+    /// Unpacks one row of `width` indices of type `ty` starting at `row` (for bitmaps the
+    /// row's first byte holds the bit `first_bit`) into colors.
+    fn unpack_row(
+        &self,
+        ty: ClientType,
+        swap: bool,
+        lsb_first: bool,
+        first_bit: usize,
+        row: &[u8],
+        out: &mut [[f32; 4]],
+    ) {
+        let size = ty.element_bytes();
+        for (i, px) in out.iter_mut().enumerate() {
+            let value = if ty == ClientType::Bitmap {
+                let bit = first_bit % 8 + i;
+                let byte = row.get(bit / 8).copied().unwrap_or(0);
+                let mask = if lsb_first { 1 << (bit % 8) } else { 0x80 >> (bit % 8) };
+                f64::from(u8::from(byte & mask != 0))
+            } else {
+                let Some(bytes) = row.get(i * size..(i + 1) * size) else { break };
+                let mut raw = [0u8; 4];
+                raw[..size].copy_from_slice(bytes);
+                if swap {
+                    raw[..size].reverse();
+                }
+                match ty {
+                    ClientType::UnsignedByte => f64::from(raw[0]),
+                    ClientType::Byte => f64::from(raw[0] as i8),
+                    ClientType::UnsignedShort => f64::from(u16::from_ne_bytes([raw[0], raw[1]])),
+                    ClientType::Short => f64::from(i16::from_ne_bytes([raw[0], raw[1]])),
+                    ClientType::UnsignedInt => f64::from(u32::from_ne_bytes(raw)),
+                    ClientType::Int => f64::from(i32::from_ne_bytes(raw)),
+                    ClientType::Float => f64::from(f32::from_ne_bytes(raw)),
+                    _ => 0.0,
+                }
+            };
+            *px = self.color(value);
+        }
+    }
+}
+
 /// Checks a client format/type pair for texture data; the error when invalid.
 pub(super) fn check_texture_format_type(format: GLenum, ty: GLenum) -> Result<(ClientFormat, ClientType), GLenum> {
     let client_type = super::read_pixels::client_type(ty);
@@ -320,13 +411,24 @@ impl ClientImage {
         image.checked_add(self.layout.pixel_offset(0, y)?)
     }
 
+    /// The bit of the first pixel of a row within the row's first byte (bitmaps).
+    fn first_bit(&self) -> usize {
+        self.layout.bit_index(0) % 8
+    }
+
     /// The bytes a `width` × `height` × `depth` transfer touches.
     pub(super) fn span(&self, width: usize, height: usize, depth: usize) -> Option<Range<usize>> {
         if width == 0 || height == 0 || depth == 0 {
             return Some(0..0);
         }
         let start = self.row_offset(0, 0)?;
-        let end = self.row_offset(height - 1, depth - 1)?.checked_add(width.checked_mul(self.pixel_bytes)?)?;
+        let last_row_bytes = if self.pixel_bytes == 0 {
+            // A bitmap row: the bytes from the one holding its first bit to its last bit's.
+            self.layout.bit_index(width - 1) / 8 - self.layout.bit_index(0) / 8 + 1
+        } else {
+            width.checked_mul(self.pixel_bytes)?
+        };
+        let end = self.row_offset(height - 1, depth - 1)?.checked_add(last_row_bytes)?;
         (end <= isize::MAX as usize).then_some(start..end)
     }
 }
@@ -522,7 +624,7 @@ impl Context {
             return None;
         };
         let pair = match client {
-            Some((format, ty)) => match check_texture_format_type(format, ty) {
+            Some((format, ty)) => match check_texture_upload_format_type(format, ty) {
                 Ok(p) => Some(p),
                 Err(e) => {
                     self.error(e);
@@ -593,7 +695,7 @@ impl Context {
     /// current unpack state: what an image command reads. `None` when the arguments are
     /// invalid (the command reports that when it runs). Display lists copy these bytes.
     pub fn client_image_span(&self, dims: usize, format: GLenum, ty: GLenum, size: [i32; 3]) -> Option<Range<usize>> {
-        let (cf, ct) = check_texture_format_type(format, ty).ok()?;
+        let (cf, ct) = check_texture_upload_format_type(format, ty).ok()?;
         if size.iter().any(|&s| s < 0) {
             return None;
         }
@@ -643,9 +745,13 @@ impl Context {
             return self.error(GL_INVALID_VALUE);
         };
         if let Some(bytes) = if span.is_empty() { None } else { data(span.clone()) } {
-            let swap = self.pixel_store.unpack.swap_bytes;
+            let unpack = Unpack {
+                swap: self.pixel_store.unpack.swap_bytes,
+                lsb_first: self.pixel_store.unpack.lsb_first,
+                indices: IndexToRgba::new(&self.state.pixel_mode),
+            };
             let region = Region { x: 0, y: 0, z: 0, width: iw as i32, height: ih as i32, depth: id as i32 };
-            store_client(&mut image, &info, &client, span.start, bytes, cf, ct, swap, region);
+            store_client(&mut image, &info, &client, span.start, bytes, cf, ct, &unpack, region);
         }
         self.set_level(it, a.level as usize, Level { image: Some(Arc::new(image)), ..level });
         self.after_image_change(it, a.level as usize);
@@ -722,7 +828,7 @@ impl Context {
         if image_target(dims, target, false).is_none() {
             return self.error(GL_INVALID_ENUM);
         }
-        let (cf, ct) = match check_texture_format_type(format, ty) {
+        let (cf, ct) = match check_texture_upload_format_type(format, ty) {
             Ok(p) => p,
             Err(e) => return self.error(e),
         };
@@ -748,12 +854,16 @@ impl Context {
             return;
         };
         self.flush_rendering();
-        let swap = self.pixel_store.unpack.swap_bytes;
+        let unpack = Unpack {
+            swap: self.pixel_store.unpack.swap_bytes,
+            lsb_first: self.pixel_store.unpack.lsb_first,
+            indices: IndexToRgba::new(&self.state.pixel_mode),
+        };
         let b = lv.border as i32;
         let region =
             Region { x: r.x + b, y: if dims >= 2 { r.y + b } else { 0 }, z: if dims >= 3 { r.z + b } else { 0 }, ..r };
         self.with_level_image(it, level as usize, |image| {
-            store_client(image, &lv.info, &client, span.start, bytes, cf, ct, swap, region)
+            store_client(image, &lv.info, &client, span.start, bytes, cf, ct, &unpack, region)
         });
         self.after_image_change(it, level as usize);
     }
@@ -837,7 +947,7 @@ impl Context {
     /// Copies the framebuffer rectangle at (x, y) into `region` of `image`.
     fn copy_framebuffer(&mut self, image: &mut TexImage, info: &FormatInfo, region: Region, x: i32, y: i32) {
         let slot = self.current_read_slot();
-        let _ = self.with_framebuffer(|fb| {
+        let _ = self.with_read_framebuffer(|fb| {
             let (fw, fh) = (fb.width() as i32, fb.height() as i32);
             let mut colors = Vec::new();
             let mut depths = Vec::new();
@@ -1176,7 +1286,15 @@ fn texel8(info: &FormatInfo, c: [f32; 4]) -> [u8; 4] {
     std::array::from_fn(|k| quantize_to_u8(t[k], info.bits[k]))
 }
 
-/// Converts client pixels of `region` (texel coordinates, border included) into `image`.
+/// The unpack state an image upload needs besides the layout.
+struct Unpack {
+    swap: bool,
+    lsb_first: bool,
+    indices: IndexToRgba,
+}
+
+/// Converts client pixels of `region` (texel coordinates, border included) into `image`;
+/// `cf` is [`ClientFormat::StencilIndex`] for color-index data.
 #[allow(clippy::too_many_arguments)]
 fn store_client(
     image: &mut TexImage,
@@ -1186,9 +1304,10 @@ fn store_client(
     bytes: &[u8],
     cf: ClientFormat,
     ct: ClientType,
-    swap: bool,
+    unpack: &Unpack,
     r: Region,
 ) {
+    let swap = unpack.swap;
     let w = r.width as usize;
     let mut colors = vec![[0f32; 4]; w];
     let mut depths = vec![0f32; w];
@@ -1199,7 +1318,12 @@ fn store_client(
             let start = image.index(r.x as usize, r.y as usize + y, r.z as usize + z);
             match &mut image.texels {
                 Texels::Rgba8(t) => {
-                    unpack_color_row(cf, ct, swap, row, &mut colors);
+                    if cf == ClientFormat::StencilIndex {
+                        let first_bit = client.first_bit();
+                        unpack.indices.unpack_row(ct, swap, unpack.lsb_first, first_bit, row, &mut colors);
+                    } else {
+                        unpack_color_row(cf, ct, swap, row, &mut colors);
+                    }
                     for (k, c) in colors.iter().enumerate() {
                         t[start + k] = texel8(info, *c);
                     }

@@ -78,6 +78,9 @@ impl FragmentState {
         match &self.depth {
             Some(depth) => {
                 let _ = write!(text, "depth {:?}{}", depth.func, if depth.write { " write" } else { "" });
+                if let Some([min, max]) = self.depth_clamp {
+                    let _ = write!(text, " clamped to [{min}, {max}]");
+                }
             }
             None => text.push_str("(no depth test)"),
         }

@@ -37,6 +37,9 @@ pub struct DepthTest {
 pub struct FragmentState {
     /// `None` when the depth test is disabled or there is no depth buffer.
     pub depth: Option<DepthTest>,
+    /// GL_DEPTH_CLAMP (ARB_depth_clamp): fragment depths are clamped to [min, max] of the
+    /// depth range before the depth test; `None` when disabled.
+    pub depth_clamp: Option<[f32; 2]>,
     /// For each color target of the scene (same order as the band's colors): the channel
     /// write mask, or `None` when this draw does not write that target.
     pub color_masks: Vec<Option<[bool; 4]>>,
@@ -70,6 +73,7 @@ impl FragmentState {
         let blend = vec![None; color_masks.len()];
         FragmentState {
             depth,
+            depth_clamp: None,
             color_masks,
             clamp_float,
             alpha: None,

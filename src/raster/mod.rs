@@ -143,6 +143,11 @@ pub fn shade_span(
         scratch.z.clear();
         if fragment.depth.is_some() {
             scratch.z.extend((0..span.n).map(&z_at));
+            if let Some([min, max]) = fragment.depth_clamp {
+                for z in &mut scratch.z {
+                    *z = z.clamp(min, max);
+                }
+            }
         }
         let face = fragment.stencil.as_ref().map(|s| if span.front_facing { &s.front } else { &s.back });
         live = stencil_depth_test(

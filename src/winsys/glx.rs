@@ -606,15 +606,22 @@ pub fn destroy_drawable(display: DisplayAddr, xid: u64, kind: DrawableKind) {
     }
 }
 
-/// The drawable for `xid`, registering a plain X window bound for the first time.
-fn drawable_for_binding(display: DisplayAddr, xid: u64, config: &'static FbConfig) -> Option<Arc<GlxDrawable>> {
+/// The drawable for `xid`, registering a plain X window bound for the first time: BadMatch
+/// when it cannot take the context's configuration, BadDrawable when it is no drawable
+/// (or its buffers cannot be allocated).
+fn drawable_for_binding(
+    display: DisplayAddr,
+    xid: u64,
+    config: &'static FbConfig,
+) -> Result<Arc<GlxDrawable>, MakeCurrentError> {
     if let Some(d) = lookup_drawable(display, xid) {
-        return d.adopt(config).then_some(d);
+        return if d.adopt(config) { Ok(d) } else { Err(MakeCurrentError::BadMatch) };
     }
-    let size = x_size(display, xid)?;
-    let drawable = GlxDrawable::new(display, xid, DrawableKind::Window, false, config, size)?;
+    let size = x_size(display, xid).ok_or(MakeCurrentError::BadDrawable)?;
+    let drawable = GlxDrawable::new(display, xid, DrawableKind::Window, false, config, size)
+        .ok_or(MakeCurrentError::BadDrawable)?;
     drawables().insert((display, xid), drawable.clone());
-    Some(drawable)
+    Ok(drawable)
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -724,8 +731,8 @@ fn release_current_glx(except: Option<&Arc<SharedContext>>) {
     }
 }
 
-/// glXMakeContextCurrent (glXMakeCurrent: draw == read). Rendering goes to `draw`; reads
-/// come from the same buffers (a separate read drawable is accepted but not used yet).
+/// glXMakeContextCurrent (glXMakeCurrent: draw == read). Rendering goes to `draw`; pixels
+/// are read (glReadPixels, glCopyPixels, glCopyTexImage) from `read`.
 pub fn make_current(display: DisplayAddr, draw: u64, read: u64, context: usize) -> Result<(), MakeCurrentError> {
     if context == 0 {
         if draw != 0 || read != 0 {
@@ -744,15 +751,18 @@ pub fn make_current(display: DisplayAddr, draw: u64, read: u64, context: usize) 
     if glx.shared.bound_thread().is_some_and(|t| t != std::thread::current().id()) {
         return Err(MakeCurrentError::BadAccess);
     }
-    let drawable = drawable_for_binding(display, draw, glx.config).ok_or(MakeCurrentError::BadDrawable)?;
-    if read != draw {
-        drawable_for_binding(display, read, glx.config).ok_or(MakeCurrentError::BadDrawable)?;
-    }
+    let drawable = drawable_for_binding(display, draw, glx.config)?;
+    let read_drawable = if read != draw { drawable_for_binding(display, read, glx.config)? } else { drawable.clone() };
     flush_current_rendering();
     drawable.follow_size();
+    read_drawable.follow_size();
     release_current_glx(Some(&glx.shared));
     current::make_current(Some(glx.shared.clone())).map_err(|_| MakeCurrentError::BadAccess)?;
-    glx.shared.lock().bind_drawable(Some(drawable.surface.clone()));
+    {
+        let mut context = glx.shared.lock();
+        context.bind_drawable(Some(drawable.surface.clone()));
+        context.bind_read_drawable(Some(read_drawable.surface.clone()));
+    }
     set_binding(CurrentBinding { context, draw, read, display }, Arc::as_ptr(&glx.shared) as usize);
     Ok(())
 }

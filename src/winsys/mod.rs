@@ -3,6 +3,7 @@
 
 pub mod glx;
 pub mod glx_config;
+pub mod glx_error;
 pub mod osmesa;
 pub mod xfont;
 mod xshm;

@@ -89,8 +89,20 @@ static void *hold(void *arg)
     return NULL;
 }
 
+/* The X errors received (the refused glXMakeCurrent below generates BadAccess). */
+static int bad_access_errors;
+
+static int count_x_errors(Display *dpy, XErrorEvent *e)
+{
+    (void)dpy;
+    if (e->error_code == BadAccess)
+        bad_access_errors++;
+    return 0;
+}
+
 static int check_busy_context(Display *dpy, XVisualInfo *vis, Window a, Window b)
 {
+    XErrorHandler previous = XSetErrorHandler(count_x_errors);
     int failures = 0;
     GLXContext busy = glXCreateContext(dpy, vis, NULL, True), mine = glXCreateContext(dpy, vis, NULL, True);
     struct holder h = {dpy, a, busy, 0};
@@ -104,6 +116,12 @@ static int check_busy_context(Display *dpy, XVisualInfo *vis, Window a, Window b
         fprintf(stderr, "a context current in another thread was made current here\n");
         failures++;
     }
+    XSync(dpy, False);
+    if (bad_access_errors != 1) {
+        fprintf(stderr, "the refusal generated %d BadAccess errors (want 1)\n", bad_access_errors);
+        failures++;
+    }
+    XSetErrorHandler(previous);
     if (glXGetCurrentContext() != mine) {
         fprintf(stderr, "the refused glXMakeCurrent changed the current context\n");
         failures++;

@@ -103,13 +103,19 @@ impl Context {
     }
 }
 
-/// Whether culling removes the triangle `v` (facing from its window-space area; a triangle
-/// of zero area is removed too, as the rasterizer does).
+/// Whether culling removes the triangle `v` (facing from its window-space area). A
+/// triangle of zero area is reported like any other unless culling is enabled, which then
+/// removes it whatever face it culls, as Mesa's selection and feedback do (piglit's
+/// rendermode-feedback draws three collinear vertices); one whose area is not a number
+/// is always removed.
 fn culled(g: &Geometry, v: [&ClipVertex; 3]) -> bool {
     let w = v.map(|c| g.viewport.window(c));
     let det = (w[0].x - w[2].x) * (w[1].y - w[2].y) - (w[0].y - w[2].y) * (w[1].x - w[2].x);
-    if det == 0.0 || !det.is_finite() {
+    if !det.is_finite() {
         return true;
+    }
+    if det == 0.0 {
+        return g.cull.is_some();
     }
     let front = (det > 0.0) == g.front_ccw;
     match g.cull {
