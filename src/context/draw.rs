@@ -32,6 +32,7 @@ use crate::framebuffer::{ColorFormat, Rect};
 use crate::raster::accuracy::Accuracy;
 use crate::raster::line::{LineJob, LineVertex};
 use crate::raster::point::PointJob;
+use crate::raster::smooth::{SmoothJob, SmoothLine, SmoothPoint, SmoothTriangle};
 use crate::raster::triangle::{TriangleJob, WindowVertex};
 use crate::raster::{DrawState, Primitive as RasterPrimitive, Scene};
 use crate::setup::point::point_rect;
@@ -162,6 +163,11 @@ struct Geometry {
     varyings: Vec<Attribute>,
     /// How filled triangles interpolate.
     accuracy: Accuracy,
+    /// GL_LINE_SMOOTH, GL_POINT_SMOOTH and GL_POLYGON_SMOOTH: the draw's lines, points or
+    /// filled polygons are set up as smooth jobs (coverage in alpha) instead of aliased ones.
+    smooth_lines: bool,
+    smooth_points: bool,
+    smooth_polygons: bool,
 }
 
 impl Context {
@@ -522,6 +528,9 @@ impl Context {
         let units_scale = if depth_bits > 0 { (2.0 / ((1u64 << depth_bits) - 1) as f64) as f32 } else { 0.0 };
         Geometry {
             accuracy: self.accuracy,
+            smooth_lines: lp.line_smooth,
+            smooth_points: lp.point_smooth,
+            smooth_polygons: polygon.smooth,
             varyings: self.varyings_needed(),
             viewport: Viewport {
                 scale: [half[0], half[1], ((far - near) * 0.5) as f32],
@@ -924,6 +933,13 @@ fn emit_triangle(scene: &mut Scene, state: u32, g: &Geometry, w: [WindowVertex; 
     }
     let offset = g.offset.map_or(0.0, |(factor, units)| polygon_offset(&w, factor, units, g.depth_bits));
     let varyings: Vec<[f32; 3]> = g.varyings.iter().map(|a| w.map(|v| a.of(&v))).collect();
+    if g.smooth_polygons {
+        if let Some(job) = SmoothTriangle::new(w, flat, offset, &varyings, front) {
+            let job = SmoothJob::Triangle(Box::new(job));
+            scene.add(state, job.bounds(), RasterPrimitive::Smooth(job));
+        }
+        return;
+    }
     if let Some(mut job) = TriangleJob::with_accuracy(g.accuracy, w, flat, offset, &varyings) {
         job.front_facing = front;
         let bounds = job.bounds();
@@ -1014,7 +1030,10 @@ fn emit_window_line(
     };
     // llvmpipe's stipple: the line is cut into dashes, one pixel step along the major axis
     // per stipple bit, each dash drawn as a line of its own.
-    let length = (a.x - b.x).abs().max((a.y_down - b.y_down).abs());
+    // Smooth lines count their stipple along their true (Euclidean) length, as Mesa's
+    // draw module does for them.
+    let (dx, dy) = ((a.x - b.x).abs(), (a.y_down - b.y_down).abs());
+    let length = if g.smooth_lines { (dx * dx + dy * dy).sqrt() } else { dx.max(dy) };
     let steps = if length.is_finite() { length.ceil() as i32 } else { 0 };
     let base = stipple.counter;
     let bit = |i: i32| stipple.pattern >> (((base + i) / stipple.factor) & 15) & 1 != 0;
@@ -1072,6 +1091,13 @@ fn emit_dash(
 
 fn emit_line_job(scene: &mut Scene, state: u32, g: &Geometry, a: &LineVertex, b: &LineVertex, flat: Option<[f32; 4]>) {
     let varyings: Vec<[f32; 2]> = g.varyings.iter().map(|v| [v.of_line(a), v.of_line(b)]).collect();
+    if g.smooth_lines {
+        if let Some(job) = SmoothLine::new(a, b, g.line_width, g.height, flat, &varyings) {
+            let job = SmoothJob::Line(Box::new(job));
+            scene.add(state, job.bounds(), RasterPrimitive::Smooth(job));
+        }
+        return;
+    }
     if let Some(job) = LineJob::new(a, b, g.line_width, g.height, flat, &varyings) {
         let (bounds, setup) = (job.bounds(), job.setup().clone());
         scene.add_narrow(state, bounds, RasterPrimitive::Line(job), |y0, y1| setup.columns(y0, y1));
@@ -1085,10 +1111,17 @@ fn emit_point(scene: &mut Scene, state: u32, g: &Geometry, v: &ClipVertex) {
 }
 
 fn emit_window_point(scene: &mut Scene, state: u32, g: &Geometry, w: &LineVertex) {
-    let rect = point_rect(w.x, w.y_down, g.point_size, g.height);
     // llvmpipe interpolates point colors perspective-correctly too: (c/w)·w.
     let color = if w.inv_w == 1.0 { w.color } else { w.color.map(|c| c * w.inv_w * (1.0 / w.inv_w)) };
     let varyings = g.varyings.iter().map(|v| v.of_line(w)).collect();
+    if g.smooth_points {
+        if let Some(job) = SmoothPoint::new(w, g.point_size, g.height, color, varyings) {
+            let job = SmoothJob::Point(Box::new(job));
+            scene.add(state, job.bounds(), RasterPrimitive::Smooth(job));
+        }
+        return;
+    }
+    let rect = point_rect(w.x, w.y_down, g.point_size, g.height);
     scene.add(state, rect, RasterPrimitive::Point(PointJob { rect, z: w.z, color, varyings }));
 }
 
