@@ -17,8 +17,12 @@
 //! GL_MAP_COLOR and GL_MAP_STENCIL look colors and stencil indices up in the glPixelMap
 //! tables.
 //!
-//! Not yet implemented: glDrawPixels of GL_DEPTH_STENCIL and GL_COLOR_INDEX (validated, then
-//! nothing is drawn).
+//! GL_DEPTH_STENCIL (EXT_packed_depth_stencil, GL_UNSIGNED_INT_24_8) writes depth and
+//! stencil values directly, as Mesa does; glCopyPixels of GL_DEPTH_STENCIL copies through
+//! that format (so depth keeps 24 bits). Pixel transfer applies to both parts (GL 2.1
+//! section 3.6.4 and EXT_packed_depth_stencil; Mesa 22 ignores it for this format).
+//!
+//! Not yet implemented: glDrawPixels of GL_COLOR_INDEX (validated, then nothing is drawn).
 use super::draw::Attribute;
 use super::read_pixels::{check_format_and_type, read_format, ReadFormat};
 use super::selection::FeedbackVertex;
@@ -43,7 +47,12 @@ pub enum DrawImage {
     Colors(Arc<Vec<[f32; 4]>>),
     Depths(Arc<Vec<f32>>),
     Stencil(Arc<Vec<u8>>),
-    /// Formats read but not drawn yet (depth-stencil, color index).
+    /// GL_DEPTH_STENCIL (GL_UNSIGNED_INT_24_8): depths in [0, 1] and stencil indices.
+    DepthStencil {
+        depths: Arc<Vec<f32>>,
+        stencil: Arc<Vec<u8>>,
+    },
+    /// Formats read but not drawn yet (color index).
     Unsupported,
 }
 
@@ -208,10 +217,6 @@ impl Context {
         if w == 0 || h == 0 {
             return Ok(None);
         }
-        let unsupported = Ok(Some(DrawPixelsData { image: DrawImage::Unsupported, format }));
-        if format == ClientFormat::DepthStencil {
-            return unsupported;
-        }
         let modes = PackModes::from(&self.pixel_store.unpack);
         let layout = ImageLayout::new(format, client_type, &modes, w).ok_or(GL_INVALID_VALUE)?;
         let span = layout.span(0..w, 0..h).ok_or(GL_INVALID_VALUE)?;
@@ -225,7 +230,28 @@ impl Context {
             client.get(at..at + pixel_bytes)
         };
         let count = w.checked_mul(h).ok_or(GL_OUT_OF_MEMORY)?;
-        let image = if format == ClientFormat::StencilIndex {
+        let image = if format == ClientFormat::DepthStencil {
+            // GL_UNSIGNED_INT_24_8 (the only type GL 2.1 and EXT_packed_depth_stencil allow):
+            // depth in the high 24 bits, stencil in the low 8.
+            let (mut depths, mut stencil) = (Vec::new(), Vec::new());
+            depths.try_reserve_exact(count).map_err(|_| GL_OUT_OF_MEMORY)?;
+            stencil.try_reserve_exact(count).map_err(|_| GL_OUT_OF_MEMORY)?;
+            for row in 0..h {
+                for col in 0..w {
+                    let word = pixel(col, row).map_or(0, |b| {
+                        let word = u32::from_ne_bytes([b[0], b[1], b[2], b[3]]);
+                        if modes.swap_bytes {
+                            word.swap_bytes()
+                        } else {
+                            word
+                        }
+                    });
+                    depths.push(((word >> 8) as f64 / 0xff_ffff as f64) as f32);
+                    stencil.push(word as u8);
+                }
+            }
+            DrawImage::DepthStencil { depths: Arc::new(depths), stencil: Arc::new(stencil) }
+        } else if format == ClientFormat::StencilIndex {
             let mut values = Vec::new();
             values.try_reserve_exact(count).map_err(|_| GL_OUT_OF_MEMORY)?;
             for row in 0..h {
@@ -331,38 +357,57 @@ impl Context {
                 let mapped = depths.iter().map(|&d| (d * t.depth_scale + t.depth_bias).clamp(0.0, 1.0)).collect();
                 PixelSource::Depths { depths: Arc::new(mapped), color: raster.color }
             }
-            DrawImage::Stencil(values) => {
-                let write_mask = self.state.stencil.front.write_mask as u8;
-                let values = if t.index_shift == 0 && t.index_offset == 0 && !t.map_stencil {
-                    values.clone()
+            DrawImage::Stencil(values) => PixelSource::Stencil {
+                values: self.transfer_stencil(values),
+                write_mask: self.state.stencil.front.write_mask as u8,
+            },
+            DrawImage::DepthStencil { depths, stencil } => {
+                // As Mesa: the depth and stencil values are written as they are (within the
+                // scissor box, under the write masks; no fragment tests, no color).
+                let depths = if identity {
+                    depths.clone()
                 } else {
-                    // GL_MAP_STENCIL: the shifted index, masked to the table size, looked up in
-                    // GL_PIXEL_MAP_S_TO_S.
-                    let table = &self.state.pixel_mode.maps[1];
-                    let map = |v: u8| {
-                        let shifted = shift_index(v as i64, t.index_shift, t.index_offset);
-                        if t.map_stencil {
-                            table[shifted as usize & (table.len() - 1)] as i64 as u8
-                        } else {
-                            shifted
-                        }
-                    };
-                    Arc::new(values.iter().map(|&v| map(v)).collect())
+                    Arc::new(depths.iter().map(|&d| (d * t.depth_scale + t.depth_bias).clamp(0.0, 1.0)).collect())
                 };
-                PixelSource::Stencil { values, write_mask }
+                PixelSource::DepthStencil {
+                    depths,
+                    stencil: self.transfer_stencil(stencil),
+                    depth_write: self.state.depth.write_mask,
+                    stencil_mask: self.state.stencil.front.write_mask as u8,
+                }
             }
             DrawImage::Unsupported => return,
         };
         // The raster position rounded to the nearest pixel corner, as Mesa (and SGI's
         // implementation) do; the specification leaves the sampling of a fractional position open.
+        let zoom = self.state.pixel_mode.zoom.map(|z| z as f64);
         let origin = raster.window.map(|c| (c as f64 + 0.5).floor());
         let origin = [origin[0], origin[1]];
-        let zoom = self.state.pixel_mode.zoom.map(|z| z as f64);
         self.draw_image(origin, zoom, width as usize, height as usize, source);
     }
 }
 
 impl Context {
+    /// GL_INDEX_SHIFT, GL_INDEX_OFFSET and GL_MAP_STENCIL applied to stencil indices.
+    fn transfer_stencil(&self, values: &Arc<Vec<u8>>) -> Arc<Vec<u8>> {
+        let t = self.state.pixel_mode.transfer;
+        if t.index_shift == 0 && t.index_offset == 0 && !t.map_stencil {
+            return values.clone();
+        }
+        // GL_MAP_STENCIL: the shifted index, masked to the table size, looked up in
+        // GL_PIXEL_MAP_S_TO_S.
+        let table = &self.state.pixel_mode.maps[1];
+        let map = |v: u8| {
+            let shifted = shift_index(v as i64, t.index_shift, t.index_offset);
+            if t.map_stencil {
+                table[shifted as usize & (table.len() - 1)] as i64 as u8
+            } else {
+                shifted
+            }
+        };
+        Arc::new(values.iter().map(|&v| map(v)).collect())
+    }
+
     /// glCopyPixels: the rectangle at (x, y) of the read buffer (GL_COLOR), the depth buffer
     /// (GL_DEPTH) or the stencil buffer (GL_STENCIL) drawn at the raster position.
     pub fn copy_pixels(&mut self, x: i32, y: i32, width: i32, height: i32, ty: GLenum) {
@@ -373,11 +418,14 @@ impl Context {
             return self.error(GL_INVALID_VALUE);
         }
         let ds = self.config.visual.depth_stencil;
+        let both = ds.depth_bits() > 0 && ds.stencil_bits() > 0;
         let (format, pixel_bytes) = match ty {
             GL_COLOR => (GL_RGBA, 16),
             GL_DEPTH if ds.depth_bits() > 0 => (GL_DEPTH_COMPONENT, 4),
             GL_STENCIL if ds.stencil_bits() > 0 => (GL_STENCIL_INDEX, 4),
-            GL_DEPTH | GL_STENCIL => return self.error(GL_INVALID_OPERATION),
+            // EXT_packed_depth_stencil.
+            GL_DEPTH_STENCIL if both => (GL_DEPTH_STENCIL, 4),
+            GL_DEPTH | GL_STENCIL | GL_DEPTH_STENCIL => return self.error(GL_INVALID_OPERATION),
             _ => return self.error(GL_INVALID_ENUM),
         };
         if !self.state.current.raster.valid {
@@ -389,6 +437,9 @@ impl Context {
         if width == 0 || height == 0 {
             return;
         }
+        // Pixels outside the read buffer are undefined in GL; they read as zero, as in Mesa 22
+        // (llvmpipe draws zero colors, depths and stencil indices for them: capi
+        // pixel_depth_stencil).
         let Some(len) = (width as usize).checked_mul(height as usize).and_then(|n| n.checked_mul(pixel_bytes)) else {
             return self.error(GL_OUT_OF_MEMORY);
         };
@@ -401,7 +452,11 @@ impl Context {
         // unpacked as glDrawPixels with the same layout.
         let tight = crate::context::state::PixelStoreModes { alignment: 1, ..Default::default() };
         let saved = std::mem::replace(&mut self.pixel_store.pack, tight);
-        let read_type = if ty == GL_STENCIL { GL_UNSIGNED_INT } else { GL_FLOAT };
+        let read_type = match ty {
+            GL_STENCIL => GL_UNSIGNED_INT,
+            GL_DEPTH_STENCIL => GL_UNSIGNED_INT_24_8,
+            _ => GL_FLOAT,
+        };
         let earlier = self.take_error();
         self.read_pixels(x, y, width, height, format, read_type, |span| bytes.get_mut(span));
         let read_error = self.take_error();
