@@ -22,7 +22,9 @@
 //! that format (so depth keeps 24 bits). Pixel transfer applies to both parts (GL 2.1
 //! section 3.6.4 and EXT_packed_depth_stencil; Mesa 22 ignores it for this format).
 //!
-//! Not yet implemented: glDrawPixels of GL_COLOR_INDEX (validated, then nothing is drawn).
+//! GL_COLOR_INDEX (RGBA mode): indices shifted and offset, through I_TO_I under
+//! GL_MAP_COLOR, then through the I_TO_[RGBA] maps to colors (Mesa 22 matches without
+//! shift, offset or GL_MAP_COLOR, which it ignores for this format).
 use super::draw::Attribute;
 use super::read_pixels::{check_format_and_type, read_format, ReadFormat};
 use super::selection::FeedbackVertex;
@@ -52,8 +54,9 @@ pub enum DrawImage {
         depths: Arc<Vec<f32>>,
         stencil: Arc<Vec<u8>>,
     },
-    /// Formats read but not drawn yet (color index).
-    Unsupported,
+    /// GL_COLOR_INDEX: indices (fractions kept), converted to colors through the
+    /// GL_PIXEL_MAP_I_TO_[RGBA] tables at execution.
+    ColorIndex(Arc<Vec<f64>>),
 }
 
 /// A glDrawPixels command's image and the buffer it needs.
@@ -71,23 +74,27 @@ fn shift_index(value: i64, shift: i32, offset: i32) -> u8 {
 
 /// A stencil index of an integer or float type, kept to the stencil buffer's 8 bits.
 fn stencil_index(bytes: &[u8], ty: ClientType, swap: bool) -> u8 {
+    index_value(bytes, ty, swap) as i64 as u8
+}
+
+/// A color or stencil index of an integer or float type.
+fn index_value(bytes: &[u8], ty: ClientType, swap: bool) -> f64 {
     let size = ty.element_bytes();
     let mut raw = [0u8; 4];
     raw[..size].copy_from_slice(&bytes[..size]);
     if swap {
         raw[..size].reverse();
     }
-    let value: i64 = match ty {
-        ClientType::UnsignedByte => raw[0] as i64,
-        ClientType::Byte => raw[0] as i8 as i64,
-        ClientType::UnsignedShort => u16::from_ne_bytes([raw[0], raw[1]]) as i64,
-        ClientType::Short => i16::from_ne_bytes([raw[0], raw[1]]) as i64,
-        ClientType::UnsignedInt => u32::from_ne_bytes(raw) as i64,
-        ClientType::Int => i32::from_ne_bytes(raw) as i64,
-        ClientType::Float => f32::from_ne_bytes(raw) as i64,
-        _ => 0,
-    };
-    value as u8
+    match ty {
+        ClientType::UnsignedByte => raw[0] as f64,
+        ClientType::Byte => raw[0] as i8 as f64,
+        ClientType::UnsignedShort => u16::from_ne_bytes([raw[0], raw[1]]) as f64,
+        ClientType::Short => i16::from_ne_bytes([raw[0], raw[1]]) as f64,
+        ClientType::UnsignedInt => u32::from_ne_bytes(raw) as f64,
+        ClientType::Int => i32::from_ne_bytes(raw) as f64,
+        ClientType::Float => f32::from_ne_bytes(raw) as f64,
+        _ => 0.0,
+    }
 }
 
 impl Context {
@@ -210,8 +217,10 @@ impl Context {
         }
         let read = read_format(format).ok_or(GL_INVALID_ENUM)?;
         let client_type = check_format_and_type(read, ty)?;
-        let ReadFormat::Client(format) = read else {
-            return Ok(Some(DrawPixelsData { image: DrawImage::Unsupported, format: ClientFormat::Rgba }));
+        // Color indices are laid out as stencil indices (one component, bitmaps allowed).
+        let (format, color_index) = match read {
+            ReadFormat::Client(format) => (format, false),
+            ReadFormat::ColorIndex => (ClientFormat::StencilIndex, true),
         };
         let (w, h) = (width as usize, height as usize);
         if w == 0 || h == 0 {
@@ -230,7 +239,28 @@ impl Context {
             client.get(at..at + pixel_bytes)
         };
         let count = w.checked_mul(h).ok_or(GL_OUT_OF_MEMORY)?;
-        let image = if format == ClientFormat::DepthStencil {
+        let image = if color_index {
+            let mut values = Vec::new();
+            values.try_reserve_exact(count).map_err(|_| GL_OUT_OF_MEMORY)?;
+            for row in 0..h {
+                for col in 0..w {
+                    let value = if client_type == ClientType::Bitmap {
+                        let at = layout.pixel_offset(col, row).map(|o| o - start);
+                        let byte = at.and_then(|o| client.get(o)).copied().unwrap_or(0);
+                        let bit = layout.bit_index(col);
+                        let mask = if modes.lsb_first { 1 << (bit % 8) } else { 0x80 >> (bit % 8) };
+                        (byte & mask != 0) as u8 as f64
+                    } else {
+                        pixel(col, row).map_or(0.0, |bytes| index_value(bytes, client_type, modes.swap_bytes))
+                    };
+                    values.push(value);
+                }
+            }
+            return Ok(Some(DrawPixelsData {
+                image: DrawImage::ColorIndex(Arc::new(values)),
+                format: ClientFormat::Rgba,
+            }));
+        } else if format == ClientFormat::DepthStencil {
             // GL_UNSIGNED_INT_24_8 (the only type GL 2.1 and EXT_packed_depth_stencil allow):
             // depth in the high 24 bits, stencil in the low 8.
             let (mut depths, mut stencil) = (Vec::new(), Vec::new());
@@ -376,7 +406,23 @@ impl Context {
                     stencil_mask: self.state.stencil.front.write_mask as u8,
                 }
             }
-            DrawImage::Unsupported => return,
+            DrawImage::ColorIndex(indices) => {
+                // GL 2.1 section 3.6.4: GL_INDEX_SHIFT and GL_INDEX_OFFSET, GL_MAP_COLOR's
+                // I_TO_I lookup, then (RGBA mode) the I_TO_[RGBA] lookups, each index masked to
+                // its table's size.
+                let maps = &self.state.pixel_mode.maps;
+                let scale = 2f64.powi(t.index_shift.clamp(-62, 62));
+                let lookup =
+                    |table: &Vec<f32>, index: f64| table[(index.floor() as i64 & (table.len() as i64 - 1)) as usize];
+                let to_rgba = |&v: &f64| -> [f32; 4] {
+                    let mut index = v * scale + t.index_offset as f64;
+                    if t.map_color {
+                        index = lookup(&maps[0], index) as f64;
+                    }
+                    std::array::from_fn(|c| lookup(&maps[2 + c], index))
+                };
+                PixelSource::Colors(Arc::new(indices.iter().map(to_rgba).collect()))
+            }
         };
         // The raster position rounded to the nearest pixel corner, as Mesa (and SGI's
         // implementation) do; the specification leaves the sampling of a fractional position open.
