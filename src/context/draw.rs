@@ -428,6 +428,17 @@ impl Context {
 
     /// Vertices to clip space, with their eye coordinates and clamped colors.
     fn transform(&self, vertices: &[Vertex], float_color: bool) -> Vec<ClipVertex> {
+        self.transform_units(vertices, float_color, &self.tex_coord_units())
+    }
+
+    /// As [`Context::transform`], with texgen and the texture matrices applied to the
+    /// coordinates of `tex_units` (glRasterPos: every unit).
+    pub(super) fn transform_units(
+        &self,
+        vertices: &[Vertex],
+        float_color: bool,
+        tex_units: &[super::texture_env::TexCoordUnit],
+    ) -> Vec<ClipVertex> {
         let modelview = self.matrices.modelview();
         let mvp: Mat4 = self.matrices.model_project();
         let clamp = match self.state.lighting.clamp_vertex_color {
@@ -439,7 +450,6 @@ impl Context {
         // fixed-function vertex program computes the eye distance per vertex too. The fog
         // factor is per fragment whatever GL_FOG_HINT says: Mesa 22 draws identical images
         // under GL_NICEST and GL_FASTEST (capi fragment_ops_fog).
-        let tex_units = self.tex_coord_units();
         let fog = &self.state.fog;
         let fog_coord = |v: &Vertex, eye: Vec4| match (fog.coord_src, fog.distance_mode) {
             (GL_FOG_COORD, _) => v.fog_coord,
@@ -461,7 +471,7 @@ impl Context {
                     tex_coords: if tex_units.is_empty() {
                         v.tex_coords
                     } else {
-                        self.vertex_tex_coords(v, eye, &tex_units)
+                        self.vertex_tex_coords(v, eye, tex_units)
                     },
                     fog_coord: if fog.enabled { fog_coord(v, eye) } else { v.fog_coord },
                     edge_flag: v.edge_flag,
