@@ -1,7 +1,9 @@
 /* glPushAttrib/glPopAttrib and glPushClientAttrib/glPopClientAttrib for the state the
  * attrib_stack test leaves out: current values and the raster position, points, lines,
- * polygons, lighting, fog, transform, pixel modes, display lists, texture units and the
- * client pixel-store and vertex-array groups. For every piece of state and every group, the
+ * polygons, lighting (lights and materials), fog, transform (clip planes), pixel modes,
+ * display lists, texture units (environment, texgen), the polygon stipple, and the client
+ * pixel-store and vertex-array groups; glGetClipPlane, glGetPolygonStipple and friends read
+ * what has no glGet pname. For every piece of state and every group, the
  * test pushes the group, changes the state, pops, and records whether the value came back:
  * one VALUE line per piece of state with the set of groups that restore it (compared with
  * Mesa, and checked against the GL 2.1 tables of chapter 6 for the group that owns it). */
@@ -18,6 +20,7 @@ struct item {
     GLbitfield owner; /* the group of the GL 2.1 state tables */
     int client;       /* a client attribute (glPushClientAttrib) */
     GLbitfield mesa_misses; /* groups of `owner` whose pop Mesa 22 forgets */
+    void (*read)(GLdouble *out); /* for state without a glGet pname */
 };
 
 static void ch_color(void) { glColor4f(0.1f, 0.2f, 0.3f, 0.4f); }
@@ -87,9 +90,84 @@ static void ch_color_array(void) { glColorPointer(3, GL_FLOAT, 12, array_data); 
 static void ch_client_texture(void) { glClientActiveTexture(GL_TEXTURE1); }
 static void ch_vertex_array_enable(void) { glEnableClientState(GL_VERTEX_ARRAY); }
 
-#define S(p, n, fn, g) { #p, p, n, fn, g, 0, 0 }
-#define S_MESA_MISSES(p, n, fn, g, m) { #p, p, n, fn, g, 0, m }
-#define C(p, n, fn) { #p, p, n, fn, 0, 1, 0 }
+static void ch_clip_plane(void)
+{
+    static const GLdouble p[4] = {1, 2, 3, 4};
+    glClipPlane(GL_CLIP_PLANE2, p);
+}
+static void rd_clip_plane(GLdouble *out) { glGetClipPlane(GL_CLIP_PLANE2, out); }
+static void ch_light(void)
+{
+    static const GLfloat d[4] = {0.25f, 0.5f, 0.75f, 1};
+    glLightfv(GL_LIGHT1, GL_DIFFUSE, d);
+}
+static void rd_light(GLdouble *out)
+{
+    GLfloat f[4];
+    glGetLightfv(GL_LIGHT1, GL_DIFFUSE, f);
+    for (int k = 0; k < 4; k++)
+        out[k] = f[k];
+}
+static void ch_material(void)
+{
+    static const GLfloat e[4] = {0.1f, 0.2f, 0.3f, 1};
+    glMaterialfv(GL_BACK, GL_EMISSION, e);
+}
+static void rd_material(GLdouble *out)
+{
+    GLfloat f[4];
+    glGetMaterialfv(GL_BACK, GL_EMISSION, f);
+    for (int k = 0; k < 4; k++)
+        out[k] = f[k];
+}
+static void ch_env(void) { glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_DECAL); }
+static void rd_env(GLdouble *out)
+{
+    GLint v;
+    glGetTexEnviv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, &v);
+    out[0] = v;
+}
+static void ch_gen(void) { glTexGeni(GL_S, GL_TEXTURE_GEN_MODE, GL_OBJECT_LINEAR); }
+static void rd_gen(GLdouble *out)
+{
+    GLint v;
+    glGetTexGeniv(GL_S, GL_TEXTURE_GEN_MODE, &v);
+    out[0] = v;
+}
+static void ch_stipple(void)
+{
+    GLubyte bits[128];
+    for (int k = 0; k < 128; k++)
+        bits[k] = (GLubyte)(k * 29 + 1);
+    glPolygonStipple(bits);
+}
+static void rd_stipple(GLdouble *out)
+{
+    GLubyte bits[128];
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glGetPolygonStipple(bits);
+    unsigned sum = 0;
+    for (int k = 0; k < 128; k++)
+        sum = sum * 31 + bits[k];
+    out[0] = sum;
+}
+static void ch_pixel_map(void)
+{
+    static const GLfloat m[2] = {0.25f, 0.75f};
+    glPixelMapfv(GL_PIXEL_MAP_R_TO_R, 2, m);
+}
+static void rd_pixel_map(GLdouble *out)
+{
+    GLint size;
+    glGetIntegerv(GL_PIXEL_MAP_R_TO_R_SIZE, &size);
+    out[0] = size;
+}
+
+#define S(p, n, fn, g) { #p, p, n, fn, g, 0, 0, NULL }
+#define S_MESA_MISSES(p, n, fn, g, m) { #p, p, n, fn, g, 0, m, NULL }
+#define C(p, n, fn) { #p, p, n, fn, 0, 1, 0, NULL }
+#define R(name, reader, fn, g) { name, 0, 4, fn, g, 0, 0, reader }
+#define R_MESA_MISSES(name, reader, fn, g, m) { name, 0, 4, fn, g, 0, m, reader }
 
 static const struct item items[] = {
     S(GL_CURRENT_COLOR, 4, ch_color, GL_CURRENT_BIT),
@@ -149,6 +227,16 @@ static const struct item items[] = {
     S(GL_BLEND_COLOR, 4, ch_blend_color, GL_COLOR_BUFFER_BIT),
     S(GL_LOGIC_OP_MODE, 1, ch_logic_op, GL_COLOR_BUFFER_BIT),
     S(GL_ACCUM_CLEAR_VALUE, 4, ch_accum, GL_ACCUM_BUFFER_BIT),
+    R("glGetClipPlane", rd_clip_plane, ch_clip_plane, GL_TRANSFORM_BIT),
+    R("glGetLightfv", rd_light, ch_light, GL_LIGHTING_BIT),
+    /* Materials are lighting state (table 6.13); Mesa 22's glGetMaterialfv reads back the
+     * changed value after the pop (tessera follows the spec). */
+    R_MESA_MISSES("glGetMaterialfv", rd_material, ch_material, GL_LIGHTING_BIT, GL_LIGHTING_BIT),
+    R("glGetTexEnviv", rd_env, ch_env, GL_TEXTURE_BIT),
+    R("glGetTexGeniv", rd_gen, ch_gen, GL_TEXTURE_BIT),
+    R("glGetPolygonStipple", rd_stipple, ch_stipple, GL_POLYGON_STIPPLE_BIT),
+    /* Pixel maps belong to no group (table 6.24). */
+    R("glPixelMap", rd_pixel_map, ch_pixel_map, 0),
     C(GL_UNPACK_ALIGNMENT, 1, ch_unpack_alignment),
     C(GL_PACK_ROW_LENGTH, 1, ch_pack_row_length),
     C(GL_UNPACK_SWAP_BYTES, 1, ch_unpack_swap),
@@ -168,17 +256,20 @@ static const GLbitfield groups[] = {
 };
 static const GLbitfield client_groups[] = {GL_CLIENT_PIXEL_STORE_BIT, GL_CLIENT_VERTEX_ARRAY_BIT};
 
-static void get(GLenum pname, GLdouble *out)
+static void get(int i, GLdouble *out)
 {
     for (int k = 0; k < 4; k++)
         out[k] = -999.0;
-    glGetDoublev(pname, out);
+    if (items[i].read)
+        items[i].read(out);
+    else
+        glGetDoublev(items[i].pname, out);
 }
 
 static int restored_by(int i, GLbitfield group, int client)
 {
     GLdouble before[4], after[4];
-    get(items[i].pname, before);
+    get(i, before);
     if (client)
         glPushClientAttrib(group);
     else
@@ -188,7 +279,7 @@ static int restored_by(int i, GLbitfield group, int client)
         glPopClientAttrib();
     else
         glPopAttrib();
-    get(items[i].pname, after);
+    get(i, after);
     return memcmp(before, after, sizeof before) == 0;
 }
 
