@@ -167,7 +167,11 @@ impl SavedAttribs {
         restore(&mut state.multisample, self.multisample);
         restore(&mut state.texture, self.texture);
         restore(&mut state.eval, self.eval);
-        restore(&mut state.pixel_mode, self.pixel_mode);
+        if let Some(mut pixel_mode) = self.pixel_mode {
+            // The pixel maps belong to no attribute group (GL 2.1 table 6.24; Mesa 22 agrees).
+            pixel_mode.maps = std::mem::take(&mut state.pixel_mode.maps);
+            state.pixel_mode = pixel_mode;
+        }
         restore(&mut state.polygon_stipple, self.polygon_stipple);
         restore(&mut state.list_base, self.list_base);
     }

@@ -32,6 +32,7 @@ use crate::framebuffer::{ColorFormat, Rect};
 use crate::raster::accuracy::Accuracy;
 use crate::raster::line::{LineJob, LineVertex};
 use crate::raster::point::PointJob;
+use crate::raster::smooth::{SmoothJob, SmoothLine, SmoothPoint, SmoothTriangle};
 use crate::raster::triangle::{TriangleJob, WindowVertex};
 use crate::raster::{DrawState, Primitive as RasterPrimitive, Scene};
 use crate::setup::point::point_rect;
@@ -167,6 +168,11 @@ struct Geometry {
     varyings: Vec<Attribute>,
     /// How filled triangles interpolate.
     accuracy: Accuracy,
+    /// GL_LINE_SMOOTH, GL_POINT_SMOOTH and GL_POLYGON_SMOOTH: the draw's lines, points or
+    /// filled polygons are set up as smooth jobs (coverage in alpha) instead of aliased ones.
+    smooth_lines: bool,
+    smooth_points: bool,
+    smooth_polygons: bool,
 }
 
 impl Context {
@@ -433,6 +439,17 @@ impl Context {
 
     /// Vertices to clip space, with their eye coordinates and clamped colors.
     fn transform(&self, vertices: &[Vertex], float_color: bool) -> Vec<ClipVertex> {
+        self.transform_units(vertices, float_color, &self.tex_coord_units())
+    }
+
+    /// As [`Context::transform`], with texgen and the texture matrices applied to the
+    /// coordinates of `tex_units` (glRasterPos: every unit).
+    pub(super) fn transform_units(
+        &self,
+        vertices: &[Vertex],
+        float_color: bool,
+        tex_units: &[super::texture_env::TexCoordUnit],
+    ) -> Vec<ClipVertex> {
         let modelview = self.matrices.modelview();
         let mvp: Mat4 = self.matrices.model_project();
         let clamp = match self.state.lighting.clamp_vertex_color {
@@ -444,7 +461,6 @@ impl Context {
         // fixed-function vertex program computes the eye distance per vertex too. The fog
         // factor is per fragment whatever GL_FOG_HINT says: Mesa 22 draws identical images
         // under GL_NICEST and GL_FASTEST (capi fragment_ops_fog).
-        let tex_units = self.tex_coord_units();
         let fog = &self.state.fog;
         let fog_coord = |v: &Vertex, eye: Vec4| match (fog.coord_src, fog.distance_mode) {
             (GL_FOG_COORD, _) => v.fog_coord,
@@ -466,7 +482,7 @@ impl Context {
                     tex_coords: if tex_units.is_empty() {
                         v.tex_coords
                     } else {
-                        self.vertex_tex_coords(v, eye, &tex_units)
+                        self.vertex_tex_coords(v, eye, tex_units)
                     },
                     fog_coord: if fog.enabled { fog_coord(v, eye) } else { v.fog_coord },
                     edge_flag: v.edge_flag,
@@ -533,6 +549,9 @@ impl Context {
         let units_scale = if depth_bits > 0 { (2.0 / ((1u64 << depth_bits) - 1) as f64) as f32 } else { 0.0 };
         Geometry {
             accuracy: self.accuracy,
+            smooth_lines: lp.line_smooth,
+            smooth_points: lp.point_smooth,
+            smooth_polygons: polygon.smooth,
             varyings: self.varyings_needed(),
             viewport: Viewport {
                 scale: [half[0], half[1], ((far - near) * 0.5) as f32],
@@ -984,6 +1003,13 @@ fn emit_triangle(scene: &mut Scene, state: u32, g: &Geometry, w: [WindowVertex; 
         .offset
         .map_or(0.0, |(factor, units)| clamp_offset(polygon_offset(&w, factor, units, g.depth_bits), g.offset_clamp));
     let varyings: Vec<[f32; 3]> = g.varyings.iter().map(|a| w.map(|v| a.of(&v))).collect();
+    if g.smooth_polygons {
+        if let Some(job) = SmoothTriangle::new(w, flat, offset, &varyings, front) {
+            let job = SmoothJob::Triangle(Box::new(job));
+            scene.add(state, job.bounds(), RasterPrimitive::Smooth(job));
+        }
+        return;
+    }
     if let Some(mut job) = TriangleJob::with_accuracy(g.accuracy, w, flat, offset, &varyings) {
         job.front_facing = front;
         let bounds = job.bounds();
@@ -1074,7 +1100,10 @@ fn emit_window_line(
     };
     // llvmpipe's stipple: the line is cut into dashes, one pixel step along the major axis
     // per stipple bit, each dash drawn as a line of its own.
-    let length = (a.x - b.x).abs().max((a.y_down - b.y_down).abs());
+    // Smooth lines count their stipple along their true (Euclidean) length, as Mesa's
+    // draw module does for them.
+    let (dx, dy) = ((a.x - b.x).abs(), (a.y_down - b.y_down).abs());
+    let length = if g.smooth_lines { (dx * dx + dy * dy).sqrt() } else { dx.max(dy) };
     let steps = if length.is_finite() { length.ceil() as i32 } else { 0 };
     let base = stipple.counter;
     let bit = |i: i32| stipple.pattern >> (((base + i) / stipple.factor) & 15) & 1 != 0;
@@ -1132,6 +1161,13 @@ fn emit_dash(
 
 fn emit_line_job(scene: &mut Scene, state: u32, g: &Geometry, a: &LineVertex, b: &LineVertex, flat: Option<[f32; 4]>) {
     let varyings: Vec<[f32; 2]> = g.varyings.iter().map(|v| [v.of_line(a), v.of_line(b)]).collect();
+    if g.smooth_lines {
+        if let Some(job) = SmoothLine::new(a, b, g.line_width, g.height, flat, &varyings) {
+            let job = SmoothJob::Line(Box::new(job));
+            scene.add(state, job.bounds(), RasterPrimitive::Smooth(job));
+        }
+        return;
+    }
     if let Some(job) = LineJob::new(a, b, g.line_width, g.height, flat, &varyings) {
         let (bounds, setup) = (job.bounds(), job.setup().clone());
         scene.add_narrow(state, bounds, RasterPrimitive::Line(job), |y0, y1| setup.columns(y0, y1));
@@ -1145,10 +1181,17 @@ fn emit_point(scene: &mut Scene, state: u32, g: &Geometry, v: &ClipVertex) {
 }
 
 fn emit_window_point(scene: &mut Scene, state: u32, g: &Geometry, w: &LineVertex, size: f32) {
-    let rect = point_rect(w.x, w.y_down, size, g.height);
     // llvmpipe interpolates point colors perspective-correctly too: (c/w)·w.
     let color = if w.inv_w == 1.0 { w.color } else { w.color.map(|c| c * w.inv_w * (1.0 / w.inv_w)) };
     let varyings = g.varyings.iter().map(|v| v.of_line(w)).collect();
+    if g.smooth_points {
+        if let Some(job) = SmoothPoint::new(w, size, g.height, color, varyings) {
+            let job = SmoothJob::Point(Box::new(job));
+            scene.add(state, job.bounds(), RasterPrimitive::Smooth(job));
+        }
+        return;
+    }
+    let rect = point_rect(w.x, w.y_down, size, g.height);
     scene.add(state, rect, RasterPrimitive::Point(PointJob { rect, z: w.z, color, varyings }));
 }
 

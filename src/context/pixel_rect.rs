@@ -17,8 +17,14 @@
 //! GL_MAP_COLOR and GL_MAP_STENCIL look colors and stencil indices up in the glPixelMap
 //! tables.
 //!
-//! Not yet implemented: glDrawPixels of GL_DEPTH_STENCIL and GL_COLOR_INDEX (validated, then
-//! nothing is drawn).
+//! GL_DEPTH_STENCIL (EXT_packed_depth_stencil, GL_UNSIGNED_INT_24_8) writes depth and
+//! stencil values directly, as Mesa does; glCopyPixels of GL_DEPTH_STENCIL copies through
+//! that format (so depth keeps 24 bits). Pixel transfer applies to both parts (GL 2.1
+//! section 3.6.4 and EXT_packed_depth_stencil; Mesa 22 ignores it for this format).
+//!
+//! GL_COLOR_INDEX (RGBA mode): indices shifted and offset, through I_TO_I under
+//! GL_MAP_COLOR, then through the I_TO_[RGBA] maps to colors (Mesa 22 matches without
+//! shift, offset or GL_MAP_COLOR, which it ignores for this format).
 use super::draw::Attribute;
 use super::read_pixels::{check_format_and_type, read_format, ReadFormat};
 use super::selection::FeedbackVertex;
@@ -43,8 +49,14 @@ pub enum DrawImage {
     Colors(Arc<Vec<[f32; 4]>>),
     Depths(Arc<Vec<f32>>),
     Stencil(Arc<Vec<u8>>),
-    /// Formats read but not drawn yet (depth-stencil, color index).
-    Unsupported,
+    /// GL_DEPTH_STENCIL (GL_UNSIGNED_INT_24_8): depths in [0, 1] and stencil indices.
+    DepthStencil {
+        depths: Arc<Vec<f32>>,
+        stencil: Arc<Vec<u8>>,
+    },
+    /// GL_COLOR_INDEX: indices (fractions kept), converted to colors through the
+    /// GL_PIXEL_MAP_I_TO_[RGBA] tables at execution.
+    ColorIndex(Arc<Vec<f64>>),
 }
 
 /// A glDrawPixels command's image and the buffer it needs.
@@ -62,23 +74,27 @@ fn shift_index(value: i64, shift: i32, offset: i32) -> u8 {
 
 /// A stencil index of an integer or float type, kept to the stencil buffer's 8 bits.
 fn stencil_index(bytes: &[u8], ty: ClientType, swap: bool) -> u8 {
+    index_value(bytes, ty, swap) as i64 as u8
+}
+
+/// A color or stencil index of an integer or float type.
+fn index_value(bytes: &[u8], ty: ClientType, swap: bool) -> f64 {
     let size = ty.element_bytes();
     let mut raw = [0u8; 4];
     raw[..size].copy_from_slice(&bytes[..size]);
     if swap {
         raw[..size].reverse();
     }
-    let value: i64 = match ty {
-        ClientType::UnsignedByte => raw[0] as i64,
-        ClientType::Byte => raw[0] as i8 as i64,
-        ClientType::UnsignedShort => u16::from_ne_bytes([raw[0], raw[1]]) as i64,
-        ClientType::Short => i16::from_ne_bytes([raw[0], raw[1]]) as i64,
-        ClientType::UnsignedInt => u32::from_ne_bytes(raw) as i64,
-        ClientType::Int => i32::from_ne_bytes(raw) as i64,
-        ClientType::Float => f32::from_ne_bytes(raw) as i64,
-        _ => 0,
-    };
-    value as u8
+    match ty {
+        ClientType::UnsignedByte => raw[0] as f64,
+        ClientType::Byte => raw[0] as i8 as f64,
+        ClientType::UnsignedShort => u16::from_ne_bytes([raw[0], raw[1]]) as f64,
+        ClientType::Short => i16::from_ne_bytes([raw[0], raw[1]]) as f64,
+        ClientType::UnsignedInt => u32::from_ne_bytes(raw) as f64,
+        ClientType::Int => i32::from_ne_bytes(raw) as f64,
+        ClientType::Float => f32::from_ne_bytes(raw) as f64,
+        _ => 0.0,
+    }
 }
 
 impl Context {
@@ -201,16 +217,14 @@ impl Context {
         }
         let read = read_format(format).ok_or(GL_INVALID_ENUM)?;
         let client_type = check_format_and_type(read, ty)?;
-        let ReadFormat::Client(format) = read else {
-            return Ok(Some(DrawPixelsData { image: DrawImage::Unsupported, format: ClientFormat::Rgba }));
+        // Color indices are laid out as stencil indices (one component, bitmaps allowed).
+        let (format, color_index) = match read {
+            ReadFormat::Client(format) => (format, false),
+            ReadFormat::ColorIndex => (ClientFormat::StencilIndex, true),
         };
         let (w, h) = (width as usize, height as usize);
         if w == 0 || h == 0 {
             return Ok(None);
-        }
-        let unsupported = Ok(Some(DrawPixelsData { image: DrawImage::Unsupported, format }));
-        if format == ClientFormat::DepthStencil {
-            return unsupported;
         }
         let modes = PackModes::from(&self.pixel_store.unpack);
         let layout = ImageLayout::new(format, client_type, &modes, w).ok_or(GL_INVALID_VALUE)?;
@@ -225,7 +239,49 @@ impl Context {
             client.get(at..at + pixel_bytes)
         };
         let count = w.checked_mul(h).ok_or(GL_OUT_OF_MEMORY)?;
-        let image = if format == ClientFormat::StencilIndex {
+        let image = if color_index {
+            let mut values = Vec::new();
+            values.try_reserve_exact(count).map_err(|_| GL_OUT_OF_MEMORY)?;
+            for row in 0..h {
+                for col in 0..w {
+                    let value = if client_type == ClientType::Bitmap {
+                        let at = layout.pixel_offset(col, row).map(|o| o - start);
+                        let byte = at.and_then(|o| client.get(o)).copied().unwrap_or(0);
+                        let bit = layout.bit_index(col);
+                        let mask = if modes.lsb_first { 1 << (bit % 8) } else { 0x80 >> (bit % 8) };
+                        (byte & mask != 0) as u8 as f64
+                    } else {
+                        pixel(col, row).map_or(0.0, |bytes| index_value(bytes, client_type, modes.swap_bytes))
+                    };
+                    values.push(value);
+                }
+            }
+            return Ok(Some(DrawPixelsData {
+                image: DrawImage::ColorIndex(Arc::new(values)),
+                format: ClientFormat::Rgba,
+            }));
+        } else if format == ClientFormat::DepthStencil {
+            // GL_UNSIGNED_INT_24_8 (the only type GL 2.1 and EXT_packed_depth_stencil allow):
+            // depth in the high 24 bits, stencil in the low 8.
+            let (mut depths, mut stencil) = (Vec::new(), Vec::new());
+            depths.try_reserve_exact(count).map_err(|_| GL_OUT_OF_MEMORY)?;
+            stencil.try_reserve_exact(count).map_err(|_| GL_OUT_OF_MEMORY)?;
+            for row in 0..h {
+                for col in 0..w {
+                    let word = pixel(col, row).map_or(0, |b| {
+                        let word = u32::from_ne_bytes([b[0], b[1], b[2], b[3]]);
+                        if modes.swap_bytes {
+                            word.swap_bytes()
+                        } else {
+                            word
+                        }
+                    });
+                    depths.push(((word >> 8) as f64 / 0xff_ffff as f64) as f32);
+                    stencil.push(word as u8);
+                }
+            }
+            DrawImage::DepthStencil { depths: Arc::new(depths), stencil: Arc::new(stencil) }
+        } else if format == ClientFormat::StencilIndex {
             let mut values = Vec::new();
             values.try_reserve_exact(count).map_err(|_| GL_OUT_OF_MEMORY)?;
             for row in 0..h {
@@ -331,38 +387,73 @@ impl Context {
                 let mapped = depths.iter().map(|&d| (d * t.depth_scale + t.depth_bias).clamp(0.0, 1.0)).collect();
                 PixelSource::Depths { depths: Arc::new(mapped), color: raster.color }
             }
-            DrawImage::Stencil(values) => {
-                let write_mask = self.state.stencil.front.write_mask as u8;
-                let values = if t.index_shift == 0 && t.index_offset == 0 && !t.map_stencil {
-                    values.clone()
+            DrawImage::Stencil(values) => PixelSource::Stencil {
+                values: self.transfer_stencil(values),
+                write_mask: self.state.stencil.front.write_mask as u8,
+            },
+            DrawImage::DepthStencil { depths, stencil } => {
+                // As Mesa: the depth and stencil values are written as they are (within the
+                // scissor box, under the write masks; no fragment tests, no color).
+                let depths = if identity {
+                    depths.clone()
                 } else {
-                    // GL_MAP_STENCIL: the shifted index, masked to the table size, looked up in
-                    // GL_PIXEL_MAP_S_TO_S.
-                    let table = &self.state.pixel_mode.maps[1];
-                    let map = |v: u8| {
-                        let shifted = shift_index(v as i64, t.index_shift, t.index_offset);
-                        if t.map_stencil {
-                            table[shifted as usize & (table.len() - 1)] as i64 as u8
-                        } else {
-                            shifted
-                        }
-                    };
-                    Arc::new(values.iter().map(|&v| map(v)).collect())
+                    Arc::new(depths.iter().map(|&d| (d * t.depth_scale + t.depth_bias).clamp(0.0, 1.0)).collect())
                 };
-                PixelSource::Stencil { values, write_mask }
+                PixelSource::DepthStencil {
+                    depths,
+                    stencil: self.transfer_stencil(stencil),
+                    depth_write: self.state.depth.write_mask,
+                    stencil_mask: self.state.stencil.front.write_mask as u8,
+                }
             }
-            DrawImage::Unsupported => return,
+            DrawImage::ColorIndex(indices) => {
+                // GL 2.1 section 3.6.4: GL_INDEX_SHIFT and GL_INDEX_OFFSET, GL_MAP_COLOR's
+                // I_TO_I lookup, then (RGBA mode) the I_TO_[RGBA] lookups, each index masked to
+                // its table's size.
+                let maps = &self.state.pixel_mode.maps;
+                let scale = 2f64.powi(t.index_shift.clamp(-62, 62));
+                let lookup =
+                    |table: &Vec<f32>, index: f64| table[(index.floor() as i64 & (table.len() as i64 - 1)) as usize];
+                let to_rgba = |&v: &f64| -> [f32; 4] {
+                    let mut index = v * scale + t.index_offset as f64;
+                    if t.map_color {
+                        index = lookup(&maps[0], index) as f64;
+                    }
+                    std::array::from_fn(|c| lookup(&maps[2 + c], index))
+                };
+                PixelSource::Colors(Arc::new(indices.iter().map(to_rgba).collect()))
+            }
         };
         // The raster position rounded to the nearest pixel corner, as Mesa (and SGI's
         // implementation) do; the specification leaves the sampling of a fractional position open.
+        let zoom = self.state.pixel_mode.zoom.map(|z| z as f64);
         let origin = raster.window.map(|c| (c as f64 + 0.5).floor());
         let origin = [origin[0], origin[1]];
-        let zoom = self.state.pixel_mode.zoom.map(|z| z as f64);
         self.draw_image(origin, zoom, width as usize, height as usize, source);
     }
 }
 
 impl Context {
+    /// GL_INDEX_SHIFT, GL_INDEX_OFFSET and GL_MAP_STENCIL applied to stencil indices.
+    fn transfer_stencil(&self, values: &Arc<Vec<u8>>) -> Arc<Vec<u8>> {
+        let t = self.state.pixel_mode.transfer;
+        if t.index_shift == 0 && t.index_offset == 0 && !t.map_stencil {
+            return values.clone();
+        }
+        // GL_MAP_STENCIL: the shifted index, masked to the table size, looked up in
+        // GL_PIXEL_MAP_S_TO_S.
+        let table = &self.state.pixel_mode.maps[1];
+        let map = |v: u8| {
+            let shifted = shift_index(v as i64, t.index_shift, t.index_offset);
+            if t.map_stencil {
+                table[shifted as usize & (table.len() - 1)] as i64 as u8
+            } else {
+                shifted
+            }
+        };
+        Arc::new(values.iter().map(|&v| map(v)).collect())
+    }
+
     /// glCopyPixels: the rectangle at (x, y) of the read buffer (GL_COLOR), the depth buffer
     /// (GL_DEPTH) or the stencil buffer (GL_STENCIL) drawn at the raster position.
     pub fn copy_pixels(&mut self, x: i32, y: i32, width: i32, height: i32, ty: GLenum) {
@@ -373,11 +464,14 @@ impl Context {
             return self.error(GL_INVALID_VALUE);
         }
         let ds = self.config.visual.depth_stencil;
+        let both = ds.depth_bits() > 0 && ds.stencil_bits() > 0;
         let (format, pixel_bytes) = match ty {
             GL_COLOR => (GL_RGBA, 16),
             GL_DEPTH if ds.depth_bits() > 0 => (GL_DEPTH_COMPONENT, 4),
             GL_STENCIL if ds.stencil_bits() > 0 => (GL_STENCIL_INDEX, 4),
-            GL_DEPTH | GL_STENCIL => return self.error(GL_INVALID_OPERATION),
+            // EXT_packed_depth_stencil.
+            GL_DEPTH_STENCIL if both => (GL_DEPTH_STENCIL, 4),
+            GL_DEPTH | GL_STENCIL | GL_DEPTH_STENCIL => return self.error(GL_INVALID_OPERATION),
             _ => return self.error(GL_INVALID_ENUM),
         };
         if !self.state.current.raster.valid {
@@ -389,6 +483,9 @@ impl Context {
         if width == 0 || height == 0 {
             return;
         }
+        // Pixels outside the read buffer are undefined in GL; they read as zero, as in Mesa 22
+        // (llvmpipe draws zero colors, depths and stencil indices for them: capi
+        // pixel_depth_stencil).
         let Some(len) = (width as usize).checked_mul(height as usize).and_then(|n| n.checked_mul(pixel_bytes)) else {
             return self.error(GL_OUT_OF_MEMORY);
         };
@@ -401,7 +498,11 @@ impl Context {
         // unpacked as glDrawPixels with the same layout.
         let tight = crate::context::state::PixelStoreModes { alignment: 1, ..Default::default() };
         let saved = std::mem::replace(&mut self.pixel_store.pack, tight);
-        let read_type = if ty == GL_STENCIL { GL_UNSIGNED_INT } else { GL_FLOAT };
+        let read_type = match ty {
+            GL_STENCIL => GL_UNSIGNED_INT,
+            GL_DEPTH_STENCIL => GL_UNSIGNED_INT_24_8,
+            _ => GL_FLOAT,
+        };
         let earlier = self.take_error();
         self.read_pixels(x, y, width, height, format, read_type, |span| bytes.get_mut(span));
         let read_error = self.take_error();

@@ -4,14 +4,16 @@
 //! glRasterPos transforms its point as a vertex is transformed; a point outside the view
 //! volume (or cut by an enabled user clip plane) makes the raster position invalid, and
 //! glBitmap, glDrawPixels and glCopyPixels then do nothing. The raster color, secondary color
-//! and texture coordinates are the current ones when the position is set (clamped as vertex
-//! colors are); the raster distance is the fog coordinate under GL_FOG_COORD, else the eye
+//! and texture coordinates are those the draws' per-vertex stage computes for the point
+//! (lit under GL_LIGHTING, texture coordinates through texgen and the texture matrices,
+//! clamped as vertex colors are); glWindowPos takes the current ones. The raster distance is the fog coordinate under GL_FOG_COORD, else the eye
 //! distance. glWindowPos sets window coordinates directly and is always valid.
 use super::get::Value;
 use super::Context;
 use crate::api::enums::*;
 use crate::api::types::GLenum;
 use crate::context::state::MAX_TEXTURE_UNITS;
+use crate::vertex::Vertex;
 use glam::Vec4;
 
 /// The raster position and the attributes it carries (part of GL_CURRENT_BIT).
@@ -58,9 +60,26 @@ impl Context {
             return;
         }
         self.matrices.validate();
-        let object = Vec4::from_array(position);
-        let eye = self.matrices.modelview() * object;
-        let clip = self.matrices.model_project() * object;
+        // The point goes through the per-vertex stage of draws (lighting, texgen and the
+        // texture matrices, color clamping), its texture coordinates on every unit.
+        let current = &self.state.current;
+        let vertex = Vertex {
+            position,
+            color: current.color,
+            secondary_color: current.secondary_color,
+            normal: current.normal,
+            tex_coords: current.tex_coords,
+            fog_coord: current.fog_coord,
+            edge_flag: true,
+        };
+        let units = self.tex_coord_units_of(0..MAX_TEXTURE_UNITS);
+        // glMaterial marks belong to a glBegin/glEnd pair, never to the raster position.
+        let marks = std::mem::take(&mut self.vertex_input.material_marks);
+        let float_color = self.config.visual.color.is_float();
+        let transformed = self.transform_units(&[vertex], float_color, &units)[0];
+        self.vertex_input.material_marks = marks;
+        let eye = Vec4::from_array(transformed.eye);
+        let clip = Vec4::from_array(transformed.clip);
         let transform = &self.state.transform;
         let mut inside = [clip.x, clip.y].iter().all(|&c| -clip.w <= c && c <= clip.w)
             && (transform.depth_clamp || (-clip.w <= clip.z && clip.z <= clip.w));
@@ -93,16 +112,14 @@ impl Context {
         if self.selection.mode == GL_SELECT {
             self.selection.hit(window[2]);
         }
-        let (color, secondary_color) = self.raster_colors();
-        let current = &self.state.current;
         self.state.current.raster = RasterPos {
             valid: true,
             window,
             distance,
-            color,
-            secondary_color,
-            tex_coords: current.tex_coords,
-            index: current.index,
+            color: transformed.color,
+            secondary_color: transformed.secondary_color,
+            tex_coords: transformed.tex_coords,
+            index: self.state.current.index,
         };
     }
 

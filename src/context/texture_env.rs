@@ -436,9 +436,14 @@ impl Context {
 
     /// What [`Context::vertex_tex_coords`] needs per enabled unit, decided once per draw.
     pub(super) fn tex_coord_units(&self) -> Vec<TexCoordUnit> {
-        self.enabled_texture_units()
-            .into_iter()
-            .map(|(unit, _)| {
+        self.tex_coord_units_of(self.enabled_texture_units().into_iter().map(|(unit, _)| unit))
+    }
+
+    /// The texture coordinate work of the given units (every unit for the raster position,
+    /// whose coordinates are queryable whether or not a texture is enabled).
+    pub(super) fn tex_coord_units_of(&self, units: impl Iterator<Item = usize>) -> Vec<TexCoordUnit> {
+        units
+            .map(|unit| {
                 let st = &self.state.texture.unit_state[unit];
                 let enables = self.state.texture.units[unit].gen;
                 let gen: [Option<Gen>; 4] = std::array::from_fn(|c| {

@@ -14,6 +14,7 @@ pub mod interpolate;
 pub mod line;
 pub mod pixels;
 pub mod point;
+pub mod smooth;
 pub mod triangle;
 
 use crate::fragment::output::write_target;
@@ -74,6 +75,8 @@ pub enum Primitive {
     Triangle(TriangleJob),
     Line(LineJob),
     Point(PointJob),
+    /// A smooth (antialiased) line, point or triangle.
+    Smooth(smooth::SmoothJob),
     /// A pixel rectangle (glBitmap, glDrawPixels).
     Pixels(pixels::PixelRectJob),
 }
@@ -118,10 +121,63 @@ pub fn shade_span(
     band: &mut Band<'_>,
     scratch: &mut Scratch,
     span: Span,
+    live: u64,
+    z_at: impl Fn(usize) -> f32,
+    colors: impl FnOnce(&mut Vec<[f32; 4]>) -> Option<[f32; 4]>,
+    varyings: impl Fn(i32, i32, &mut [f32]),
+) {
+    shade_covered_span(state, band, scratch, span, live, z_at, colors, varyings, FullCoverage);
+}
+
+/// How much of each pixel of a span a primitive covers, multiplied into the fragments'
+/// alpha after texturing (GL 2.1 §3.12): [`FullCoverage`] for aliased primitives (no work
+/// at all: the choice is made per primitive type, at compile time), a slice of per-pixel
+/// coverages for smooth ones ([`smooth`]).
+pub trait Coverage {
+    /// Applies the coverage to the span's colors: `uniform` is the one color of a uniform
+    /// span (then `colors` is not filled yet); returns the uniform color that remains.
+    fn apply(&self, colors: &mut Vec<[f32; 4]>, uniform: Option<[f32; 4]>, n: usize) -> Option<[f32; 4]>;
+}
+
+/// Every pixel fully covered: aliased primitives.
+#[derive(Clone, Copy, Debug)]
+pub struct FullCoverage;
+
+impl Coverage for FullCoverage {
+    #[inline(always)]
+    fn apply(&self, _: &mut Vec<[f32; 4]>, uniform: Option<[f32; 4]>, _: usize) -> Option<[f32; 4]> {
+        uniform
+    }
+}
+
+impl Coverage for &[f32] {
+    #[inline]
+    fn apply(&self, colors: &mut Vec<[f32; 4]>, uniform: Option<[f32; 4]>, n: usize) -> Option<[f32; 4]> {
+        if let Some(color) = uniform {
+            colors.clear();
+            colors.resize(n, color);
+        }
+        for (color, coverage) in colors.iter_mut().zip(self.iter()) {
+            color[3] *= coverage;
+        }
+        None
+    }
+}
+
+/// [`shade_span`] with the primitive's `coverage` multiplied into the alpha of its
+/// fragments.
+#[inline]
+#[allow(clippy::too_many_arguments)]
+pub fn shade_covered_span(
+    state: &DrawState,
+    band: &mut Band<'_>,
+    scratch: &mut Scratch,
+    span: Span,
     mut live: u64,
     z_at: impl Fn(usize) -> f32,
     colors: impl FnOnce(&mut Vec<[f32; 4]>) -> Option<[f32; 4]>,
     varyings: impl Fn(i32, i32, &mut [f32]),
+    coverage: impl Coverage,
 ) {
     let fragment = &state.fragment;
     let mut colors = Some(colors);
@@ -129,6 +185,7 @@ pub fn shade_span(
     if let Some(alpha) = &fragment.alpha {
         if let Some(c) = colors.take() {
             uniform = shade_colors(fragment, &span, scratch, live, c, &varyings);
+            uniform = coverage.apply(&mut scratch.colors, uniform, span.n);
         }
         live = match uniform {
             Some(c) if alpha.passes_one(c[3]) => live,
@@ -168,6 +225,7 @@ pub fn shade_span(
     }
     if let Some(c) = colors {
         uniform = shade_colors(fragment, &span, scratch, live, c, &varyings);
+        uniform = coverage.apply(&mut scratch.colors, uniform, span.n);
     }
     if fragment.needs_varyings() {
         if let Some(color) = uniform.take() {
@@ -428,6 +486,7 @@ impl Scene {
                     }
                     Primitive::Line(job) => job.render(state, area, &mut band, &mut scratch),
                     Primitive::Point(job) => job.render(state, area, &mut band, &mut scratch),
+                    Primitive::Smooth(job) => job.render(state, area, &mut band, &mut scratch),
                     Primitive::Pixels(job) => job.render(state, area, &mut band, &mut scratch),
                 }
             }

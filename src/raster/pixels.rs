@@ -9,6 +9,7 @@
 use super::{shade_span, Band, DrawState, Scratch, Span};
 use crate::fragment::MAX_SPAN;
 use crate::framebuffer::band::DepthBand;
+use crate::framebuffer::format::fragment_depth_to_fixed;
 use crate::framebuffer::Rect;
 use std::sync::Arc;
 
@@ -24,6 +25,10 @@ pub enum PixelSource {
     /// glDrawPixels of stencil indices: written straight to the stencil buffer under
     /// `write_mask` (only the scissor box limits them; no fragment tests apply).
     Stencil { values: Arc<Vec<u8>>, write_mask: u8 },
+    /// glDrawPixels of GL_DEPTH_STENCIL: depths (when `depth_write`) and stencil indices
+    /// (under `stencil_mask`) written straight to the buffer, as Mesa does (only the scissor
+    /// box limits them; no fragment tests, no color).
+    DepthStencil { depths: Arc<Vec<f32>>, stencil: Arc<Vec<u8>>, depth_write: bool, stencil_mask: u8 },
 }
 
 /// A pixel rectangle ready for rasterization.
@@ -99,6 +104,12 @@ impl PixelRectJob {
                 if let PixelSource::Stencil { values, write_mask } = &self.source {
                     let row_start = (y - band.y0) as usize * band.width + x0 as usize;
                     write_stencil(band, row_start, &columns[..n], live, values, *write_mask);
+                } else if let PixelSource::DepthStencil { depths, stencil, depth_write, stencil_mask } = &self.source {
+                    let row_start = (y - band.y0) as usize * band.width + x0 as usize;
+                    if *depth_write {
+                        write_depth(band, row_start, &columns[..n], live, depths);
+                    }
+                    write_stencil(band, row_start, &columns[..n], live, stencil, *stencil_mask);
                 } else if live != 0 {
                     let row_start = (y - band.y0) as usize * band.width + x0 as usize;
                     let span = Span { y, x0, n, row_start, front_facing: true };
@@ -115,7 +126,7 @@ impl PixelRectJob {
                         },
                         |out| match &self.source {
                             PixelSource::Bitmap { color, .. } | PixelSource::Depths { color, .. } => Some(*color),
-                            PixelSource::Stencil { .. } => None,
+                            PixelSource::Stencil { .. } | PixelSource::DepthStencil { .. } => None,
                             PixelSource::Colors(colors) => {
                                 out.extend(
                                     (0..n).map(|k| if live >> k & 1 != 0 { colors[columns[k]] } else { [0.0; 4] }),
@@ -128,6 +139,24 @@ impl PixelRectJob {
                 }
                 x0 = x1;
             }
+        }
+    }
+}
+
+/// Writes the window depth `depths[columns[k]]` to the depth of pixel `row_start + k` for
+/// each live `k`, converted as fragment depths are.
+fn write_depth(band: &mut Band<'_>, row_start: usize, columns: &[usize], live: u64, depths: &[f32]) {
+    for (k, &column) in columns.iter().enumerate() {
+        if live >> k & 1 == 0 {
+            continue;
+        }
+        let z = depths[column];
+        let at = row_start + k;
+        match &mut band.depth {
+            DepthBand::Depth16(px) => px[at] = fragment_depth_to_fixed(z, 16) as u16,
+            DepthBand::Packed24(px) => px[at] = (px[at] & 0xff00_0000) | fragment_depth_to_fixed(z, 24),
+            DepthBand::Depth32(px, _) => px[at] = fragment_depth_to_fixed(z, 32),
+            DepthBand::None => return,
         }
     }
 }

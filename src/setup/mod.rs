@@ -9,4 +9,5 @@
 
 pub mod line;
 pub mod point;
+pub mod smooth;
 pub mod triangle;
