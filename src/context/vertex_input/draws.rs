@@ -24,6 +24,7 @@ use crate::context::state::{CurrentState, MAX_TEXTURE_UNITS};
 use crate::vertex::arrays::{
     byte_extent, index_range, ArrayId, ArrayState, BoundArray, ClientArrays, ClientMemory, IndexType,
 };
+use crate::vertex::assembly::{continued_vertices, DrawPart};
 use crate::vertex::buffer_objects::BufferTable;
 use crate::vertex::immediate::{is_primitive_mode, vertex_from_current};
 use crate::vertex::Vertex;
@@ -34,8 +35,8 @@ const ARRAY_COUNT: usize = 7 + MAX_TEXTURE_UNITS;
 /// The values of one glArrayElement, per enabled array.
 pub(crate) type FetchedElement = [Option<(ArrayId, [f32; 4])>; ARRAY_COUNT];
 
-/// A draw's batch vector keeps at most this many vertices of capacity between draws (strips
-/// and the other connected modes are delivered whole, and may be long).
+/// A draw's batch vector keeps at most this many vertices of capacity between draws (the
+/// connected modes are delivered whole when a display list captures them, and may be long).
 const KEPT_BATCH_CAPACITY: usize = 4 * BATCH_VERTICES;
 
 /// The elements a draw reads, in order.
@@ -79,6 +80,28 @@ impl<'a> Elements<'a> {
 enum IndexSource {
     Sequence { first: u32, count: u32 },
     Listed { kind: IndexType, address: usize, count: usize },
+}
+
+impl IndexSource {
+    /// How many elements the draw reads.
+    fn count(self) -> usize {
+        match self {
+            IndexSource::Sequence { count, .. } => count as usize,
+            IndexSource::Listed { count, .. } => count,
+        }
+    }
+
+    /// Elements `start .. start + count` of the draw (`None` when the address overflows).
+    fn sub_range(self, start: usize, count: usize) -> Option<IndexSource> {
+        Some(match self {
+            IndexSource::Sequence { first, .. } => {
+                IndexSource::Sequence { first: first.checked_add(u32::try_from(start).ok()?)?, count: count as u32 }
+            }
+            IndexSource::Listed { kind, address, .. } => {
+                IndexSource::Listed { kind, address: address.checked_add(start.checked_mul(kind.size())?)?, count }
+            }
+        })
+    }
 }
 
 /// Why an array draw makes no vertices.
@@ -188,35 +211,61 @@ impl Context {
     }
 
     /// Makes the vertices of one validated draw and delivers them: in batches of
-    /// [`BATCH_VERTICES`] for independent primitives, whole otherwise.
+    /// [`BATCH_VERTICES`] for independent primitives, in parts for long connected ones.
     fn draw_from_arrays(&mut self, mode: GLenum, source: IndexSource, memory: &dyn ClientMemory) {
+        let count = source.count();
         if independent_primitive_size(mode).is_none() {
-            return self.draw_batch(mode, source, memory);
+            if count <= BATCH_VERTICES + 2 || !self.may_deliver_parts() {
+                return self.draw_batch(mode, &[source], memory, DrawPart::WHOLE);
+            }
+            return self.draw_in_parts(mode, source, memory);
         }
-        match source {
-            IndexSource::Sequence { first, count } => {
-                for start in (0..count).step_by(BATCH_VERTICES) {
-                    let count = (count - start).min(BATCH_VERTICES as u32);
-                    self.draw_batch(mode, IndexSource::Sequence { first: first + start, count }, memory);
-                }
-            }
-            IndexSource::Listed { kind, address, count } => {
-                for start in (0..count).step_by(BATCH_VERTICES) {
-                    let Some(address) = address.checked_add(start * kind.size()) else {
-                        return;
-                    };
-                    let count = (count - start).min(BATCH_VERTICES);
-                    self.draw_batch(mode, IndexSource::Listed { kind, address, count }, memory);
-                }
-            }
+        for start in (0..count).step_by(BATCH_VERTICES) {
+            let Some(batch) = source.sub_range(start, (count - start).min(BATCH_VERTICES)) else {
+                return;
+            };
+            self.draw_batch(mode, &[batch], memory, DrawPart::WHOLE);
         }
     }
 
-    /// Makes the vertices of one validated draw (or batch of a draw) and delivers them.
-    fn draw_batch(&mut self, mode: GLenum, source: IndexSource, memory: &dyn ClientMemory) {
+    /// Delivers a long strip, fan, loop or polygon in parts of [`BATCH_VERTICES`] elements,
+    /// each after the first starting with the elements it shares with the one before
+    /// ([`continued_vertices`]: the first element of fans and polygons, the last one or two of
+    /// the previous part). A line loop's parts are line strips, the last one closed by the
+    /// loop's first element.
+    fn draw_in_parts(&mut self, mode: GLenum, source: IndexSource, memory: &dyn ClientMemory) {
+        let count = source.count();
+        let Some(kept) = continued_vertices(mode, BATCH_VERTICES) else {
+            return self.draw_batch(mode, &[source], memory, DrawPart::WHOLE);
+        };
+        let loop_ = mode == GL_LINE_LOOP;
+        let part_mode = if loop_ { GL_LINE_STRIP } else { mode };
+        let Some(head) = source.sub_range(0, 1) else { return };
+        let mut start = 0;
+        loop {
+            let end = (start + BATCH_VERTICES).min(count);
+            let Some(range) = source.sub_range(start, end - start) else { return };
+            let part = DrawPart { first: start == 0, last: end == count };
+            let sources: &[IndexSource] = match (kept.first && !loop_ && !part.first, loop_ && part.last) {
+                (true, _) => &[head, range],
+                (_, true) => &[range, head],
+                _ => &[range],
+            };
+            self.draw_batch(part_mode, sources, memory, part);
+            if part.last {
+                return;
+            }
+            start = end - kept.tail;
+        }
+    }
+
+    /// Makes the vertices of one validated draw (or batch or part of a draw) from the
+    /// elements of `sources`, in order, and delivers them.
+    fn draw_batch(&mut self, mode: GLenum, sources: &[IndexSource], memory: &dyn ClientMemory, part: DrawPart) {
         let mut batch = std::mem::take(&mut self.vertex_input.batch);
         batch.clear();
-        let outcome = {
+        let mut outcome = Ok(());
+        for &source in sources {
             let elements = match source {
                 IndexSource::Sequence { first, count } => Some(Elements::Sequence { first, count }),
                 IndexSource::Listed { kind, address, count } => {
@@ -228,7 +277,7 @@ impl Context {
                     bytes.map(|bytes| Elements::Listed { kind, bytes })
                 }
             };
-            match elements {
+            outcome = match elements {
                 Some(elements) => assemble(
                     &self.vertex_input.arrays,
                     &self.buffers,
@@ -238,10 +287,13 @@ impl Context {
                     &mut batch,
                 ),
                 None => Err(NoDraw::Undefined),
+            };
+            if outcome.is_err() {
+                break;
             }
-        };
+        }
         match outcome {
-            Ok(()) if !batch.is_empty() => self.deliver(mode, &batch),
+            Ok(()) if !batch.is_empty() => self.deliver_part(mode, &batch, part),
             Err(NoDraw::OutOfMemory) => self.error(GL_OUT_OF_MEMORY),
             _ => {}
         }
