@@ -197,8 +197,10 @@ impl Context {
     /// empty buffer of the same name (as in Mesa). Arrays whose buffer was deleted since keep
     /// its name and draw nothing.
     pub(crate) fn restore_client_arrays(&mut self, saved: ClientArrays) {
-        self.buffers.create_on_bind(saved.array_buffer);
-        self.buffers.create_on_bind(saved.element_array_buffer);
+        let mut buffers = self.buffers.lock();
+        buffers.create_on_bind(saved.array_buffer);
+        buffers.create_on_bind(saved.element_array_buffer);
+        drop(buffers);
         self.vertex_input.arrays = saved;
     }
 }
