@@ -360,10 +360,11 @@ impl Scene {
         let index = self.primitives.len() as u32;
         self.primitives.push((state, primitive));
         let t = TILE_SIZE as i32;
-        for ty in (r.y0 / t)..=((r.y1 - 1) / t) {
-            for tx in (r.x0 / t)..=((r.x1 - 1) / t) {
+        let (rows, columns) = ((r.y0 / t)..=((r.y1 - 1) / t), (r.x0 / t)..=((r.x1 - 1) / t));
+        self.binned += rows.clone().count() * columns.clone().count();
+        for ty in rows {
+            for tx in columns.clone() {
                 self.bins[ty as usize * self.tiles_x + tx as usize].push(index);
-                self.binned += 1;
             }
         }
     }

@@ -589,11 +589,27 @@ mod tests {
         let all: Vec<f32> = ctx.vertex_input.delivered.iter().flat_map(|(_, v)| xs(v)).collect();
         assert_eq!(all, (0..n).rev().map(|i| i as f32).collect::<Vec<_>>());
         assert_eq!(ctx.vertex_input.delivered.len(), 3);
-        // Connected primitives are delivered whole.
+        // Connected primitives come in parts, each repeating the last two vertices of a strip.
         ctx.vertex_input.delivered.clear();
         ctx.draw_arrays(GL_TRIANGLE_STRIP, 0, n as i32, &memory);
-        assert_eq!(ctx.vertex_input.delivered.len(), 1);
-        assert_eq!(ctx.vertex_input.delivered[0].1.len(), n);
+        let parts: Vec<(f32, usize)> =
+            ctx.vertex_input.delivered.iter().map(|(_, v)| (v[0].position[0], v.len())).collect();
+        let step = (BATCH_VERTICES - 2) as f32;
+        assert_eq!(parts, [(0.0, BATCH_VERTICES), (step, BATCH_VERTICES), (2.0 * step, n - 2 * (BATCH_VERTICES - 2))]);
+        // A fan's parts start with its first vertex; a loop's last part ends with it.
+        for (mode, first, last) in [(GL_TRIANGLE_FAN, Some(0.0), None), (GL_LINE_LOOP, None, Some(0.0))] {
+            ctx.vertex_input.delivered.clear();
+            ctx.draw_arrays(mode, 0, n as i32, &memory);
+            let delivered = &ctx.vertex_input.delivered;
+            assert_eq!(delivered.len(), 3);
+            if let Some(x) = first {
+                assert!(delivered.iter().all(|(_, v)| v[0].position[0] == x));
+            }
+            if let Some(x) = last {
+                assert_eq!(delivered[2].1.last().unwrap().position[0], x);
+                assert!(delivered.iter().all(|(m, _)| *m == GL_LINE_STRIP));
+            }
+        }
         assert_eq!(ctx.take_error(), GL_NO_ERROR);
     }
 
