@@ -4,7 +4,7 @@
 # each GL call the test makes (those the decoder can make from a prototype: state, vertices,
 # matrices, textures, lists, queries, ...) as the bytes that make the command_stream decoder
 # repeat it. Each test gives two seeds of at most 3 KiB cut at call boundaries: its first
-# calls and calls from its middle (about 350 KiB in all). Needs a release build of tessera.
+# calls and calls from its middle (about 260 KiB in all). Needs a release build of tessera.
 # Usage: bash tools/fuzz-seeds.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
