@@ -54,7 +54,9 @@ pub fn continued_vertices(mode: GLenum, count: usize) -> Option<ContinuedVertice
     match mode {
         GL_LINE_STRIP => Some(ContinuedVertices { first: false, tail: 1 }),
         GL_LINE_LOOP | GL_TRIANGLE_FAN | GL_POLYGON => Some(ContinuedVertices { first: true, tail: 1 }),
-        GL_TRIANGLE_STRIP | GL_QUAD_STRIP if count % 2 == 0 => Some(ContinuedVertices { first: false, tail: 2 }),
+        GL_TRIANGLE_STRIP | GL_QUAD_STRIP if count.is_multiple_of(2) => {
+            Some(ContinuedVertices { first: false, tail: 2 })
+        }
         _ => None,
     }
 }
