@@ -19,6 +19,9 @@ export RUSTFLAGS="-Cpasses=sancov-module -Cllvm-args=-sanitizer-coverage-level=4
 -Cllvm-args=-sanitizer-coverage-trace-compares --cfg fuzzing -Cdebug-assertions -Coverflow-checks"
 cargo build --release --manifest-path fuzz/Cargo.toml --target "$host" --target-dir target/fuzz --bin command_stream
 binary="target/fuzz/$host/release/command_stream"
+if [[ $seconds == --build-only ]]; then
+    exit 0   # tools/fuzz-seeds.sh: the build (and its generated seed_shim.c) only
+fi
 
 mkdir -p target/fuzz/corpus target/fuzz/artifacts
 regressions=(fuzz/regressions/*)

@@ -9,13 +9,14 @@
 #                     the GLX checks of tools/xvfb-tests.sh: a private X server, piglit's
 #                     tests, glxinfo/glxgears, a freeglut program, xwd screenshots
 #   g++               builds libFuzzer for tools/fuzz.sh
+#   valgrind          tools/memcheck.sh: capi tests under memcheck (invalid accesses, leaks)
 # Runs `apt-get update` once (only if something is missing), as root or through sudo.
 # The Rust toolchain is not installed here (Debian's is too old): see README.md.
 set -euo pipefail
 
 packages=(gcc libosmesa6-dev libgl1-mesa-dev)
 if [[ ${1:-} == --test ]]; then
-    packages+=(chromium xvfb piglit mesa-utils freeglut3-dev x11-apps libx11-dev python3 pkg-config g++)
+    packages+=(chromium xvfb piglit mesa-utils freeglut3-dev x11-apps libx11-dev python3 pkg-config g++ valgrind)
 fi
 missing=()
 for package in "${packages[@]}"; do

@@ -10,6 +10,8 @@ cd "$(dirname "$0")/.."
 bash tools/setup-debian.sh --test   # --test: also chromium, for the HTML report check
 cargo build --release
 cargo test --release
+# A subset of the capi tests under valgrind memcheck: invalid accesses, leaks (about 2 min).
+bash tools/memcheck.sh
 bash tools/xvfb-tests.sh   # GLX under a private Xvfb: glxinfo, glxgears, freeglut, two threads, piglit
 # Command-stream fuzzing (fuzz/): past findings replayed, then 90 s of libFuzzer.
 bash tools/fuzz.sh 90

@@ -209,7 +209,7 @@ impl Context {
         if mask & GL_TEXTURE_BIT != 0 {
             for unit in &self.state.texture.unit_state {
                 for (t, &name) in unit.bindings.iter().enumerate() {
-                    if let Some(obj) = self.textures.get(name, t) {
+                    if let Some(obj) = self.textures.lock().get(name, t) {
                         saved.texture_objects.push((name, t, obj.params.clone()));
                     }
                 }
@@ -227,7 +227,7 @@ impl Context {
             Some(mut saved) => {
                 // Objects deleted since the push are gone; the others get their parameters back.
                 for (name, t, params) in std::mem::take(&mut saved.texture_objects) {
-                    if let Some(obj) = self.textures.get_mut(name, t) {
+                    if let Some(obj) = self.textures.lock().get_mut(name, t) {
                         obj.params = params;
                     }
                 }

@@ -37,7 +37,7 @@ use crate::raster::triangle::{TriangleJob, WindowVertex};
 use crate::raster::{DrawState, Primitive as RasterPrimitive, Scene};
 use crate::setup::point::point_rect;
 use crate::setup::triangle::GUARD_BAND;
-use crate::vertex::assembly::{assemble, Primitive, QuadSplit};
+use crate::vertex::assembly::{assemble, DrawPart, Primitive, QuadSplit};
 use crate::vertex::clip::{ClipPlanes, ClipVertex};
 use crate::vertex::lighting::{Lighting, NormalScaling};
 use crate::vertex::Vertex;
@@ -179,6 +179,14 @@ impl Context {
     /// Draws `vertices` as primitives of `mode` (GL_POINTS … GL_POLYGON, already validated),
     /// with the current state. Vertex sources (glBegin/glEnd, glDrawArrays, …) call this.
     pub fn draw_vertices(&mut self, mode: GLenum, vertices: &[Vertex]) {
+        self.draw_part(mode, vertices, DrawPart::WHOLE);
+    }
+
+    /// As [`Context::draw_vertices`] for one part of a long connected primitive (see
+    /// [`DrawPart`]): the line stipple continues from the previous part, and only the first
+    /// and last parts of a polygon draw its first and closing outline edges. Parts are
+    /// delivered only while rendering (selection and feedback take primitives whole).
+    pub fn draw_part(&mut self, mode: GLenum, vertices: &[Vertex], part: DrawPart) {
         if !self.rendering() {
             return self.select_vertices(mode, vertices);
         }
@@ -216,14 +224,18 @@ impl Context {
         let planes = if polygons && !outlines { &geometry.planes } else { &geometry.line_planes };
         let outcodes: Vec<u32> = clip_vertices.iter().map(|v| planes.outcode(v)).collect();
         let mut stipple = self.active_line_stipple();
+        if let (false, Some(s)) = (part.first, stipple.as_mut()) {
+            s.counter = self.vertex_input.stipple_counter;
+        }
         if outlines {
             let mut outline = Outline { scene: &mut scene, state: state_index, g: &geometry, stipple, first_vertex };
-            decompose_outlines(mode, clip_vertices.len() as u32, first_vertex, |t| {
+            decompose_outlines(mode, clip_vertices.len() as u32, first_vertex, part, |t| {
                 let v = t.v.map(|i| &clip_vertices[i as usize]);
                 let codes = t.v.map(|i| outcodes[i as usize]);
                 outline.triangle(v, codes, t, &mut poly, &mut scratch);
             });
-            self.scene = Some(scene);
+            let stipple = outline.stipple;
+            self.end_part(scene, stipple, part);
             return;
         }
         let split = if !first_vertex && mode == GL_QUADS && geometry.leaves_view_volume(&clip_vertices) {
@@ -288,7 +300,28 @@ impl Context {
                 }
             }
         });
-        self.scene = Some(scene);
+        self.end_part(scene, stipple, part);
+    }
+
+    /// After a draw (or a part of one): keeps the line stipple counter for the next part, and
+    /// keeps the scene for more draws, or renders it when it has grown past
+    /// [`Scene::BUDGET_BYTES`] so that memory stays bounded however much is drawn between
+    /// flush points. Rendering part of the recorded primitives early changes no pixel: each
+    /// pixel still sees every primitive in submission order.
+    fn end_part(&mut self, scene: Scene, stipple: Option<LineStipple>, part: DrawPart) {
+        if let (false, Some(s)) = (part.last, stipple) {
+            self.vertex_input.stipple_counter = s.counter;
+        }
+        self.keep_scene(scene);
+    }
+
+    /// Puts `scene` back as the pending scene, or renders it when it is over its budget.
+    fn keep_scene(&mut self, scene: Scene) {
+        if scene.recorded_bytes() > Scene::BUDGET_BYTES {
+            self.run_scene(scene);
+        } else {
+            self.scene = Some(scene);
+        }
     }
 
     /// Adds a pixel rectangle to the scene under the current state; `make` builds it from the
@@ -302,7 +335,7 @@ impl Context {
         let (state_index, _) = scene.add_state(state);
         let job = make(&self.varyings_needed());
         scene.add(state_index, job.bounds(), RasterPrimitive::Pixels(job));
-        self.scene = Some(scene);
+        self.keep_scene(scene);
     }
 
     /// The bound framebuffer's size, color format and depth/stencil bits.
@@ -667,7 +700,13 @@ struct OutlineTriangle {
 /// stipple restarts all follow its primitive decomposition (the provoking vertex stays
 /// last, or first under GL_FIRST_VERTEX_CONVENTION; quads split along the diagonal that
 /// keeps it a corner of both triangles).
-fn decompose_outlines(mode: GLenum, count: u32, first_vertex: bool, mut emit: impl FnMut(OutlineTriangle)) {
+fn decompose_outlines(
+    mode: GLenum,
+    count: u32,
+    first_vertex: bool,
+    part: DrawPart,
+    mut emit: impl FnMut(OutlineTriangle),
+) {
     let tri = |v: [u32; 3], edges: [bool; 3], first: bool| OutlineTriangle { v, edges, first };
     const ALL: [bool; 3] = [true; 3];
     match mode {
@@ -714,12 +753,15 @@ fn decompose_outlines(mode: GLenum, count: u32, first_vertex: bool, mut emit: im
             }
         }
         GL_POLYGON if count >= 3 => {
+            // A part of a long polygon repeats its first vertex: only the first part has the
+            // polygon's first edge (and restarts the stipple), only the last its closing edge.
             for i in 0..count - 2 {
-                let last = i + 3 == count;
+                let last = i + 3 == count && part.last;
+                let first = i == 0 && part.first;
                 if first_vertex {
-                    emit(tri([0, i + 1, i + 2], [i == 0, true, last], i == 0));
+                    emit(tri([0, i + 1, i + 2], [first, true, last], first));
                 } else {
-                    emit(tri([i + 1, i + 2, 0], [true, last, i == 0], i == 0));
+                    emit(tri([i + 1, i + 2, 0], [true, last, first], first));
                 }
             }
         }
@@ -1719,7 +1761,7 @@ mod tests {
     fn outline_decomposition_keeps_the_provoking_vertex_and_the_outline() {
         let collect = |mode, count, first| {
             let mut out = Vec::new();
-            decompose_outlines(mode, count, first, |t| out.push(t));
+            decompose_outlines(mode, count, first, DrawPart::WHOLE, |t| out.push(t));
             out
         };
         let t = |v: [u32; 3], edges: [bool; 3], first: bool| OutlineTriangle { v, edges, first };
@@ -1759,6 +1801,87 @@ mod tests {
                 assert_eq!(outline(quad), [(a, a + 1), (a, a + 2), (a + 1, a + 3), (a + 2, a + 3)]);
             }
         }
+    }
+
+    /// Long connected primitives are delivered in parts (glBegin/glEnd and array draws) and
+    /// the scene is rendered when over budget; the pixels are those of the primitive drawn
+    /// whole: strip order, fans' and polygons' first vertex, provoking vertices, a polygon's
+    /// outline and the line stipple all continue across parts.
+    #[test]
+    fn long_primitives_in_parts_draw_the_same_pixels_as_whole() {
+        use crate::context::vertex_input::test_support::{floats, FakeMemory};
+        use crate::context::vertex_input::BATCH_VERTICES;
+        let count = 2 * BATCH_VERTICES + 7;
+        let spiral: Vec<Vertex> = (0..count)
+            .map(|i| {
+                let t = i as f32 / count as f32;
+                let angle = t * 9.0 * std::f32::consts::TAU;
+                let r = 6.0 + 38.0 * t + if i % 2 == 1 { 4.0 } else { 0.0 };
+                let color = [t, 1.0 - t, if i % 7 < 3 { 1.0 } else { 0.2 }, 1.0];
+                vertex(48.0 + r * angle.cos(), 48.0 + r * angle.sin(), 0.0, color)
+            })
+            .collect();
+        let mut memory = FakeMemory::default();
+        let positions: Vec<f32> = spiral.iter().flat_map(|v| v.position).collect();
+        let colors: Vec<f32> = spiral.iter().flat_map(|v| v.color).collect();
+        let positions = memory.add(0x1000_0000, floats(&positions));
+        let colors = memory.add(0x2000_0000, floats(&colors));
+        let modes = [GL_LINE_STRIP, GL_LINE_LOOP, GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN, GL_QUAD_STRIP, GL_POLYGON];
+        for mode in modes {
+            for (flat, first_vertex, outline) in [(false, false, false), (true, false, true), (true, true, false)] {
+                let setup = |ctx: &mut Context| {
+                    ctx.shade_model(if flat { GL_FLAT } else { GL_SMOOTH });
+                    ctx.provoking_vertex(if first_vertex {
+                        GL_FIRST_VERTEX_CONVENTION
+                    } else {
+                        GL_LAST_VERTEX_CONVENTION
+                    });
+                    ctx.polygon_mode(GL_FRONT_AND_BACK, if outline { GL_LINE } else { GL_FILL });
+                    ctx.line_stipple(1, 0x0f3b);
+                    ctx.set_capability(GL_LINE_STIPPLE, true);
+                };
+                let (mut whole, d) = context(96, 96);
+                setup(&mut whole);
+                whole.draw_vertices(mode, &spiral);
+                let expected = pixels(&mut whole, &d);
+                let (mut ctx, d) = context(96, 96);
+                setup(&mut ctx);
+                ctx.begin(mode);
+                for v in &spiral {
+                    ctx.set_color(v.color);
+                    ctx.vertex(v.position);
+                }
+                ctx.end();
+                assert!(ctx.vertex_input.delivered.len() >= 3, "mode {mode:#x}: delivered in parts");
+                assert!(pixels(&mut ctx, &d) == expected, "mode {mode:#x} flat {flat} outline {outline}: glBegin");
+                let (mut ctx, d) = context(96, 96);
+                setup(&mut ctx);
+                ctx.vertex_pointer(4, GL_FLOAT, 0, positions);
+                ctx.color_pointer(4, GL_FLOAT, 0, colors);
+                ctx.enable_client_state(GL_VERTEX_ARRAY, true);
+                ctx.enable_client_state(GL_COLOR_ARRAY, true);
+                ctx.draw_arrays(mode, 0, count as i32, &memory);
+                assert!(ctx.vertex_input.delivered.len() >= 3, "mode {mode:#x}: delivered in parts");
+                assert!(pixels(&mut ctx, &d) == expected, "mode {mode:#x} flat {flat} outline {outline}: arrays");
+                assert_eq!(ctx.take_error(), GL_NO_ERROR);
+            }
+        }
+    }
+
+    #[test]
+    fn a_scene_over_its_budget_is_rendered_at_the_next_draw() {
+        let (mut ctx, d) = context(64, 64);
+        let per_square = 2 * std::mem::size_of::<(u32, RasterPrimitive)>() + 2 * 4;
+        let squares = Scene::BUDGET_BYTES / per_square + 2;
+        for i in 0..squares {
+            let c = (i % 256) as f32 / 255.0;
+            square(&mut ctx, 0.0, 0.0, 64.0, 64.0, [c, 1.0 - c, 0.5, 1.0]);
+            let recorded = ctx.scene.as_ref().map_or(0, |s| s.recorded_bytes());
+            assert!(recorded <= Scene::BUDGET_BYTES, "square {i}: {recorded} bytes recorded");
+        }
+        let last = ((squares - 1) % 256) as f32 / 255.0;
+        let expected = [(last * 255.0).round() as u8, ((1.0 - last) * 255.0).round() as u8, 128, 255];
+        assert!(pixels(&mut ctx, &d).iter().all(|&p| p == expected));
     }
 
     #[test]

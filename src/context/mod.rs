@@ -28,6 +28,7 @@ pub mod raster_pos;
 pub mod raster_state;
 pub mod read_pixels;
 pub mod selection;
+pub mod share;
 pub mod state;
 pub mod strings;
 pub mod texture;
@@ -73,11 +74,11 @@ pub struct Context {
     /// Immediate mode and client vertex arrays (`vertex_input`).
     pub vertex_input: vertex_input::VertexInput,
     /// The buffer objects (one table, so that it can become shared between contexts).
-    pub buffers: crate::vertex::buffer_objects::BufferTable,
+    pub buffers: share::Shared<crate::vertex::buffer_objects::BufferTable>,
     /// The accuracy mode of the draws (`TESSERA_ACCURACY` at creation, `tesseraSetAccuracy`).
     pub accuracy: crate::raster::accuracy::Accuracy,
     /// The texture objects (`texture`).
-    pub textures: texture::TextureTable,
+    pub textures: share::Shared<texture::TextureTable>,
     /// Display lists: the (shareable) name space and the list being compiled.
     pub lists: lists::ListState,
     /// Occlusion queries.
@@ -107,7 +108,7 @@ impl Context {
             vertex_input: vertex_input::VertexInput::default(),
             buffers: Default::default(),
             accuracy: crate::raster::accuracy::Accuracy::from_env(),
-            textures: texture::TextureTable::new(),
+            textures: share::Shared::new(texture::TextureTable::new()),
             lists: Default::default(),
             queries: Default::default(),
             selection: Default::default(),

@@ -471,12 +471,12 @@ impl Context {
             self.error(GL_INVALID_VALUE);
             return None;
         }
-        let t = &mut self.textures;
         let mut names = Vec::new();
         if names.try_reserve_exact(n as usize).is_err() {
             self.error(GL_OUT_OF_MEMORY);
             return None;
         }
+        let mut t = self.textures.lock();
         let mut candidate = t.largest;
         while names.len() < n as usize {
             candidate = candidate.wrapping_add(1);
@@ -506,8 +506,12 @@ impl Context {
             if name == 0 {
                 continue;
             }
-            self.textures.reserved.remove(&name);
-            if self.textures.objects.remove(&name).is_some() {
+            let removed = {
+                let mut t = self.textures.lock();
+                t.reserved.remove(&name);
+                t.objects.remove(&name).is_some()
+            };
+            if removed {
                 for unit in &mut self.state.texture.unit_state {
                     for b in &mut unit.bindings {
                         if *b == name {
@@ -521,7 +525,7 @@ impl Context {
 
     /// glIsTexture: true for names of objects that have been bound.
     pub fn is_texture(&mut self, name: u32) -> bool {
-        self.check_outside_begin_end() && name != 0 && self.textures.objects.contains_key(&name)
+        self.check_outside_begin_end() && name != 0 && self.textures.lock().objects.contains_key(&name)
     }
 
     /// glBindTexture.
@@ -533,14 +537,20 @@ impl Context {
             return self.error(GL_INVALID_ENUM);
         };
         if name != 0 {
-            match self.textures.objects.get(&name) {
-                Some(obj) if obj.target != target => return self.error(GL_INVALID_OPERATION),
-                Some(_) => {}
-                None => {
-                    self.textures.reserved.remove(&name);
-                    self.textures.largest = self.textures.largest.max(name);
-                    self.textures.objects.insert(name, TextureObject::with_target(target));
+            let other_target = {
+                let mut t = self.textures.lock();
+                match t.objects.get(&name) {
+                    Some(obj) => obj.target != target,
+                    None => {
+                        t.reserved.remove(&name);
+                        t.largest = t.largest.max(name);
+                        t.objects.insert(name, TextureObject::with_target(target));
+                        false
+                    }
                 }
+            };
+            if other_target {
+                return self.error(GL_INVALID_OPERATION);
             }
         }
         let unit = self.state.texture.active_unit;
@@ -560,7 +570,7 @@ impl Context {
             if name == 0 {
                 continue;
             }
-            if let Some(obj) = self.textures.objects.get_mut(&name) {
+            if let Some(obj) = self.textures.lock().objects.get_mut(&name) {
                 obj.params.priority = p.clamp(0.0, 1.0);
             }
         }
@@ -576,26 +586,30 @@ impl Context {
             self.error(GL_INVALID_VALUE);
             return false;
         }
-        if names.iter().any(|&name| name == 0 || !self.textures.objects.contains_key(&name)) {
+        let unknown = {
+            let t = self.textures.lock();
+            names.iter().any(|&name| name == 0 || !t.objects.contains_key(&name))
+        };
+        if unknown {
             self.error(GL_INVALID_VALUE);
             return false;
         }
         true
     }
 
-    /// The object an image command with `it` works on.
-    fn image_object(&mut self, it: ImageTarget) -> &mut TextureObject {
-        if it.proxy {
-            &mut self.textures.proxies[it.target]
+    /// Runs `f` on the object an image command with `it` works on (the texture table is
+    /// locked meanwhile: `f` must not lock it again).
+    fn with_image_object<R>(&self, it: ImageTarget, f: impl FnOnce(&mut TextureObject) -> R) -> R {
+        let name = self.bound_texture(it.target);
+        let mut t = self.textures.lock();
+        let obj = if it.proxy {
+            &mut t.proxies[it.target]
+        } else if name == 0 {
+            &mut t.defaults[it.target]
         } else {
-            let name = self.bound_texture(it.target);
-            let t = &mut self.textures;
-            if name == 0 {
-                &mut t.defaults[it.target]
-            } else {
-                t.objects.entry(name).or_insert_with(|| TextureObject::with_target(TARGETS[it.target]))
-            }
-        }
+            t.objects.entry(name).or_insert_with(|| TextureObject::with_target(TARGETS[it.target]))
+        };
+        f(obj)
     }
 
     /// Validates glTexImage{dims}D / glCopyTexImage{dims}D arguments; returns the target,
@@ -670,8 +684,8 @@ impl Context {
     }
 
     fn clear_proxy_level(&mut self, it: ImageTarget, level: usize) {
-        let obj = &mut self.textures.proxies[it.target];
-        for face in obj.faces.iter_mut() {
+        let mut t = self.textures.lock();
+        for face in t.proxies[it.target].faces.iter_mut() {
             if let Some(l) = face.get_mut(level) {
                 *l = None;
             }
@@ -680,15 +694,16 @@ impl Context {
 
     /// Stores `level` of `face` on the object of `it`.
     fn set_level(&mut self, it: ImageTarget, level: usize, new: Level) {
-        let obj = self.image_object(it);
         let faces = if it.proxy && it.target == 3 { 0..6 } else { it.face..it.face + 1 };
-        for face in faces {
-            let levels = &mut obj.faces[face];
-            if levels.len() <= level {
-                levels.resize(level + 1, None);
+        self.with_image_object(it, |obj| {
+            for face in faces {
+                let levels = &mut obj.faces[face];
+                if levels.len() <= level {
+                    levels.resize(level + 1, None);
+                }
+                levels[level] = Some(new.clone());
             }
-            levels[level] = Some(new.clone());
-        }
+        });
     }
 
     /// The bytes of a `size` (width, height, depth) client image of `format`/`ty` under the
@@ -759,18 +774,20 @@ impl Context {
 
     /// GL_GENERATE_MIPMAP: regenerates the levels below the base level when `level` is it.
     fn after_image_change(&mut self, it: ImageTarget, level: usize) {
-        let obj = self.image_object(it);
-        if obj.params.generate_mipmap && level as i32 == obj.params.base_level {
-            let dims = if it.target == 2 {
-                3
-            } else if it.target == 0 {
-                1
-            } else {
-                2
-            };
-            if generate_mipmaps(obj, it.face, dims).is_err() {
-                self.error(GL_OUT_OF_MEMORY);
-            }
+        let dims = if it.target == 2 {
+            3
+        } else if it.target == 0 {
+            1
+        } else {
+            2
+        };
+        let failed = self.with_image_object(it, |obj| {
+            obj.params.generate_mipmap
+                && level as i32 == obj.params.base_level
+                && generate_mipmaps(obj, it.face, dims).is_err()
+        });
+        if failed {
+            self.error(GL_OUT_OF_MEMORY);
         }
     }
 
@@ -788,7 +805,7 @@ impl Context {
             self.error(GL_INVALID_VALUE);
             return None;
         }
-        let Some(lv) = self.image_object(it).level(it.face, level as usize).cloned() else {
+        let Some(lv) = self.with_image_object(it, |obj| obj.level(it.face, level as usize).cloned()) else {
             self.error(GL_INVALID_OPERATION);
             return None;
         };
@@ -870,12 +887,13 @@ impl Context {
 
     /// Runs `f` on the texels of a level (cloned first if a recorded draw still shares them).
     fn with_level_image(&mut self, it: ImageTarget, level: usize, f: impl FnOnce(&mut TexImage)) {
-        let obj = self.image_object(it);
-        if let Some(Some(lv)) = obj.faces[it.face].get_mut(level) {
-            if let Some(image) = lv.image.as_mut() {
-                f(Arc::make_mut(image));
+        self.with_image_object(it, |obj| {
+            if let Some(Some(lv)) = obj.faces[it.face].get_mut(level) {
+                if let Some(image) = lv.image.as_mut() {
+                    f(Arc::make_mut(image));
+                }
             }
-        }
+        });
     }
 
     /// glCopyTexImage1D/2D: the image comes from the read buffer (color formats) or the depth
@@ -933,14 +951,17 @@ impl Context {
             height: if dims >= 2 { r.height } else { 1 },
             depth: 1,
         };
-        let mut image = match self.image_object(it).level(it.face, level as usize).and_then(|l| l.image.clone()) {
+        let image = self.with_image_object(it, |obj| obj.level(it.face, level as usize).and_then(|l| l.image.clone()));
+        let mut image = match image {
             Some(i) => i,
             None => return,
         };
         self.copy_framebuffer(Arc::make_mut(&mut image), &lv.info, region, x, y);
-        if let Some(Some(l)) = self.image_object(it).faces[it.face].get_mut(level as usize) {
-            l.image = Some(image);
-        }
+        self.with_image_object(it, |obj| {
+            if let Some(Some(l)) = obj.faces[it.face].get_mut(level as usize) {
+                l.image = Some(image);
+            }
+        });
         self.after_image_change(it, level as usize);
     }
 
@@ -1004,12 +1025,11 @@ impl Context {
         } else {
             2
         };
-        let obj = self.image_object(it);
         let faces = if t == 3 { 6 } else { 1 };
-        for face in 0..faces {
-            if generate_mipmaps(obj, face, dims).is_err() {
-                return self.error(GL_OUT_OF_MEMORY);
-            }
+        let failed =
+            self.with_image_object(it, |obj| (0..faces).any(|face| generate_mipmaps(obj, face, dims).is_err()));
+        if failed {
+            self.error(GL_OUT_OF_MEMORY);
         }
     }
 
@@ -1025,7 +1045,9 @@ impl Context {
         let v = values.first().copied().unwrap_or(0.0);
         let e = v as i32 as GLenum;
         let name = self.bound_texture(t);
-        let Some(obj) = self.textures.get_mut(name, t) else {
+        let textures = self.textures.clone();
+        let mut table = textures.lock();
+        let Some(obj) = table.get_mut(name, t) else {
             return;
         };
         let p = &mut obj.params;
@@ -1146,7 +1168,7 @@ impl Context {
             return None;
         };
         let name = self.bound_texture(t);
-        let p = self.textures.get(name, t)?.params.clone();
+        let p = self.textures.lock().get(name, t)?.params.clone();
         let e = |x: GLenum| (vec![x as f32], false);
         Some(match pname {
             GL_TEXTURE_MIN_FILTER => e(p.min_filter),
@@ -1191,7 +1213,7 @@ impl Context {
             self.error(GL_INVALID_VALUE);
             return None;
         }
-        let lv = self.image_object(it).level(it.face, level as usize).cloned();
+        let lv = self.with_image_object(it, |obj| obj.level(it.face, level as usize).cloned());
         let size = |k: usize| lv.as_ref().map_or(0, |l| l.info.sizes[k]);
         Some(match pname {
             GL_TEXTURE_WIDTH => lv.as_ref().map_or(0, |l| (l.width + 2 * l.border) as i32),
@@ -1248,7 +1270,7 @@ impl Context {
             Ok(p) => p,
             Err(e) => return self.error(e),
         };
-        let Some(lv) = self.image_object(it).level(it.face, level as usize).cloned() else {
+        let Some(lv) = self.with_image_object(it, |obj| obj.level(it.face, level as usize).cloned()) else {
             return;
         };
         if (cf == ClientFormat::DepthComponent) != (lv.info.base == BaseFormat::Depth) {

@@ -472,9 +472,10 @@ impl Context {
             return None;
         }
         let mut stages = Vec::new();
+        let textures = self.textures.lock();
         for (k, &(unit, t)) in enabled.iter().enumerate() {
             let st = &self.state.texture.unit_state[unit];
-            let Some(obj) = self.textures.get(st.bindings[t], t) else { continue };
+            let Some(obj) = textures.get(st.bindings[t], t) else { continue };
             let Some(sampler) = compile_sampler(obj, t, st.env.lod_bias) else { continue };
             let base = match (sampler.base, sampler.depth_mode) {
                 (BaseFormat::Depth, DepthMode::Luminance) => BaseFormat::Luminance,

@@ -7,7 +7,13 @@
 //! vertices of a glBegin/glEnd pair and of a draw call are collected in vectors that live
 //! as long as the context, so steady-state drawing allocates nothing per vertex or per call.
 //! Points, lines, triangles and quads are delivered in batches of [`BATCH_VERTICES`] (also
-//! while glBegin/glEnd is still open); other modes are delivered whole.
+//! while glBegin/glEnd is still open). Strips, fans, loops and polygons are delivered in
+//! parts of about as many vertices, each repeating the vertices the next primitives share
+//! with the previous part
+//! ([`continued_vertices`](crate::vertex::assembly::continued_vertices)), so a draw of any length needs bounded
+//! memory and draws the same pixels as delivered whole; they are delivered whole while a
+//! display list captures an array draw, in selection and feedback modes, and after
+//! glMaterial between glBegin and glEnd (whose marks count vertices from glBegin).
 //!
 //! Deliberate differences from Mesa 22 (which implements GL 4.5 and is lenient where GL 2.1
 //! is not) are listed with the commands they concern, in the submodules.
@@ -23,6 +29,7 @@ use super::Context;
 use crate::api::enums::*;
 use crate::api::types::GLenum;
 use crate::vertex::arrays::{ArrayId, ClientArrays};
+use crate::vertex::assembly::DrawPart;
 use crate::vertex::Vertex;
 
 /// GL_MAX_ELEMENTS_VERTICES / GL_MAX_ELEMENTS_INDICES: a recommendation only (any count
@@ -32,7 +39,8 @@ pub const MAX_ELEMENTS: i32 = 3000;
 /// Primitives that share no vertices (points, lines, triangles, quads) are delivered in
 /// batches of this many vertices (a multiple of 1, 2, 3 and 4), so a long glBegin/glEnd or a
 /// large draw call needs no more memory than that and stays in cache. Strips, fans, loops
-/// and polygons are delivered whole.
+/// and polygons are delivered in parts of this many vertices (even: strips keep their
+/// triangles' order) plus the ones each part repeats.
 pub const BATCH_VERTICES: usize = 3072;
 
 /// Vertices per primitive of the modes whose primitives share no vertices.
@@ -63,6 +71,10 @@ pub struct VertexInput {
     pub material_marks: Vec<(usize, [Material; 2])>,
     /// While an array draw is compiled into a display list: the batches it delivers.
     capture: Option<Vec<(GLenum, Vec<Vertex>)>>,
+    /// Whether a part of the open connected primitive has been delivered.
+    parts_delivered: bool,
+    /// The line stipple counter where the last delivered part of a connected primitive ended.
+    pub(crate) stipple_counter: i32,
     /// Every batch handed to the geometry pipeline, for tests.
     #[cfg(test)]
     pub(crate) delivered: Vec<(GLenum, Vec<Vertex>)>,
@@ -83,12 +95,23 @@ impl Context {
 
     /// Hands finished vertices to the geometry pipeline.
     fn deliver(&mut self, mode: GLenum, vertices: &[Vertex]) {
+        self.deliver_part(mode, vertices, DrawPart::WHOLE);
+    }
+
+    /// Hands one part of a draw to the geometry pipeline (whole draws are
+    /// [`DrawPart::WHOLE`]; parts are never captured).
+    fn deliver_part(&mut self, mode: GLenum, vertices: &[Vertex], part: DrawPart) {
         if let Some(capture) = &mut self.vertex_input.capture {
             return capture.push((mode, vertices.to_vec()));
         }
         #[cfg(test)]
         self.vertex_input.delivered.push((mode, vertices.to_vec()));
-        self.draw_vertices(mode, vertices);
+        self.draw_part(mode, vertices, part);
+    }
+
+    /// Whether a connected primitive may be delivered in parts now (see the module docs).
+    fn may_deliver_parts(&self) -> bool {
+        self.vertex_input.capture.is_none() && self.rendering()
     }
 
     /// The glGet values of the current attributes and the vertex array state; `None` for
@@ -174,8 +197,10 @@ impl Context {
     /// empty buffer of the same name (as in Mesa). Arrays whose buffer was deleted since keep
     /// its name and draw nothing.
     pub(crate) fn restore_client_arrays(&mut self, saved: ClientArrays) {
-        self.buffers.create_on_bind(saved.array_buffer);
-        self.buffers.create_on_bind(saved.element_array_buffer);
+        let mut buffers = self.buffers.lock();
+        buffers.create_on_bind(saved.array_buffer);
+        buffers.create_on_bind(saved.element_array_buffer);
+        drop(buffers);
         self.vertex_input.arrays = saved;
     }
 }

@@ -340,6 +340,8 @@ pub struct Scene {
     primitives: Vec<(u32, Primitive)>,
     /// Per tile (row-major), indices into `primitives` in submission order.
     bins: Vec<Vec<u32>>,
+    /// How many indices the bins hold in all.
+    binned: usize,
 }
 
 impl Scene {
@@ -355,7 +357,18 @@ impl Scene {
             states: Vec::new(),
             primitives: Vec::new(),
             bins: vec![Vec::new(); tiles_x * tiles_y],
+            binned: 0,
         }
+    }
+
+    /// The recorded primitives a scene may hold before the context renders it (whatever
+    /// the thread count, so the same commands flush at the same points): a long draw then
+    /// needs this much memory for its primitives, not memory in proportion to its length.
+    pub const BUDGET_BYTES: usize = 64 << 20;
+
+    /// About how much memory the recorded primitives and their bin entries take.
+    pub fn recorded_bytes(&self) -> usize {
+        self.primitives.len() * std::mem::size_of::<(u32, Primitive)>() + self.binned * std::mem::size_of::<u32>()
     }
 
     pub fn is_empty(&self) -> bool {
@@ -410,8 +423,10 @@ impl Scene {
         let index = self.primitives.len() as u32;
         self.primitives.push((state, primitive));
         let t = TILE_SIZE as i32;
-        for ty in (r.y0 / t)..=((r.y1 - 1) / t) {
-            for tx in (r.x0 / t)..=((r.x1 - 1) / t) {
+        let (rows, columns) = ((r.y0 / t)..=((r.y1 - 1) / t), (r.x0 / t)..=((r.x1 - 1) / t));
+        self.binned += rows.clone().count() * columns.clone().count();
+        for ty in rows {
+            for tx in columns.clone() {
                 self.bins[ty as usize * self.tiles_x + tx as usize].push(index);
             }
         }
@@ -445,6 +460,7 @@ impl Scene {
             }
             for tx in (x0 / t)..=((x1 - 1) / t) {
                 self.bins[ty as usize * self.tiles_x + tx as usize].push(index);
+                self.binned += 1;
                 binned = true;
             }
         }

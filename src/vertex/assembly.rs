@@ -26,6 +26,49 @@ pub enum Primitive {
     },
 }
 
+/// Which part of a long connected primitive (strip, fan, loop, polygon) a delivery is.
+/// Vertex input delivers such a primitive in bounded parts ([`continued_vertices`] says
+/// which vertices each part repeats from the one before), so the geometry stage needs to
+/// know where the primitive's outline starts and ends, and carries the line stipple across
+/// parts. A draw delivered whole is [`DrawPart::WHOLE`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct DrawPart {
+    /// The part begins the primitive (a polygon's first edge is an outline edge; the line
+    /// stipple starts at 0).
+    pub first: bool,
+    /// The part ends the primitive (a polygon's closing edge is an outline edge).
+    pub last: bool,
+}
+
+impl DrawPart {
+    pub const WHOLE: DrawPart = DrawPart { first: true, last: true };
+}
+
+/// The vertices of a connected primitive that the next part repeats when a part of `count`
+/// vertices is delivered: the last one of a line strip (and line loop, whose parts are
+/// drawn as line strips and which also keeps its first vertex for the closing segment),
+/// the last two of triangle and quad strips (`count` even keeps the odd/even order of
+/// strip triangles), the first and the last of fans and polygons (every triangle shares the
+/// first vertex). `None` for the modes whose primitives share no vertices.
+pub fn continued_vertices(mode: GLenum, count: usize) -> Option<ContinuedVertices> {
+    match mode {
+        GL_LINE_STRIP => Some(ContinuedVertices { first: false, tail: 1 }),
+        GL_LINE_LOOP | GL_TRIANGLE_FAN | GL_POLYGON => Some(ContinuedVertices { first: true, tail: 1 }),
+        GL_TRIANGLE_STRIP | GL_QUAD_STRIP if count.is_multiple_of(2) => {
+            Some(ContinuedVertices { first: false, tail: 2 })
+        }
+        _ => None,
+    }
+}
+
+/// What the next part of a connected primitive repeats ([`continued_vertices`]): the
+/// primitive's first vertex when `first`, then the last `tail` vertices of the part.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ContinuedVertices {
+    pub first: bool,
+    pub tail: usize,
+}
+
 /// How quads become triangles. Mesa's draw module splits a quad v0 v1 v2 v3 along v0–v2
 /// when it emits vertices directly, but along v1–v3 (so that the provoking v3 ends both
 /// triangles) when the draw goes through its pipeline stages, as it does when any vertex

@@ -100,7 +100,10 @@ pub struct Lighting {
     faces: [FaceSetup; 2],
     tracking: Option<Tracking>,
     /// The vertex color `tracked_faces` were made from (GL_COLOR_MATERIAL), if any yet.
-    tracked_color: Option<[f32; 4]>,
+    /// (NaN until a color is tracked: NaN equals nothing, so the first color recomputes; a
+    /// plain array rather than an `Option`, whose comparison valgrind reports as a read of
+    /// its uninitialised payload.)
+    tracked_color: [f32; 4],
     tracked_faces: [FaceSetup; 2],
 }
 
@@ -302,7 +305,7 @@ impl Lighting {
             materials: state.materials,
             faces,
             tracking,
-            tracked_color: None,
+            tracked_color: [f32::NAN; 4],
             tracked_faces: faces,
         }
     }
@@ -321,7 +324,7 @@ impl Lighting {
     pub fn set_materials(&mut self, materials: &[Material; 2]) {
         self.materials = *materials;
         self.faces = materials.map(|m| face_setup(&m, self.model_ambient, &self.lights));
-        self.tracked_color = None;
+        self.tracked_color = [f32::NAN; 4];
     }
 
     /// Under GL_COLOR_MATERIAL, makes `tracked_faces` the face constants of the materials
@@ -329,7 +332,7 @@ impl Lighting {
     /// changes from one vertex to the next.
     fn track(&mut self, color: [f32; 4]) {
         let Some(tracking) = self.tracking else { return };
-        if self.tracked_color != Some(color) {
+        if self.tracked_color != color {
             for f in 0..2 {
                 self.tracked_faces[f] = if tracking.face[f] {
                     let mut m = self.materials[f];
@@ -339,7 +342,7 @@ impl Lighting {
                     self.faces[f]
                 };
             }
-            self.tracked_color = Some(color);
+            self.tracked_color = color;
         }
     }
 

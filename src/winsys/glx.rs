@@ -642,16 +642,16 @@ fn contexts() -> MutexGuard<'static, HashMap<usize, Arc<GlxContext>>> {
 }
 
 /// glXCreateContext & co. after argument checks: registers a context and returns its handle.
-/// `share` must be 0 or a live context, whose display lists the new context shares (buffer
-/// and texture objects are not shared yet: each context keeps its own).
+/// `share` must be 0 or a live context, whose display lists, texture and buffer objects the
+/// new context shares (context::share).
 pub fn create_context(display: DisplayAddr, config: &'static FbConfig, share: usize) -> Option<usize> {
-    let shared_lists = match share {
+    let share_source = match share {
         0 => None,
-        handle => Some(lookup_context(handle)?.shared.lock().lists.names()),
+        handle => Some(lookup_context(handle)?),
     };
     let mut context = Context::new(ContextConfig { visual: config.framebuffer_config() });
-    if let Some(names) = shared_lists {
-        context.lists.share(names);
+    if let Some(source) = share_source {
+        context.share_objects_with(&source.shared.lock());
     }
     let glx = Arc::new(GlxContext { shared: SharedContext::new(context), config, display, share });
     let handle = Arc::as_ptr(&glx) as usize;

@@ -359,16 +359,17 @@ pub fn create(request: Request, share: Option<usize>) -> Option<usize> {
     if request.depth_bits < 0 || request.stencil_bits < 0 || request.accum_bits < 0 {
         return None;
     }
-    // The share context's display lists become this context's too.
-    let shared_lists = match share {
-        Some(handle) => Some(lookup(handle)?.shared.lock().lists.names()),
+    // The share context's display lists, texture and buffer objects become this context's
+    // too (context::share).
+    let share = match share {
+        Some(handle) => Some(lookup(handle)?),
         None => None,
     };
     // The color format is decided by the type given at MakeCurrent; RGBA8 until then.
     let placeholder = request.layout.color_format(GL_UNSIGNED_BYTE).unwrap_or(ColorFormat::Rgb565);
     let mut context = Context::new(ContextConfig { visual: request.config(placeholder) });
-    if let Some(names) = shared_lists {
-        context.lists.share(names);
+    if let Some(share) = share {
+        context.share_objects_with(&share.shared.lock());
     }
     let osmesa = Arc::new(OsMesaContext {
         shared: SharedContext::new(context),

@@ -34,17 +34,24 @@ impl Context {
             return None;
         };
         let name = self.binding(target);
-        if self.buffers.get(name).is_none() {
+        if self.buffers.lock().get(name).is_none() {
             self.error(GL_INVALID_OPERATION);
             return None;
         }
         Some(name)
     }
 
-    /// The buffer bound to `target`, after the checks of [`Context::bound_name`].
-    fn bound_buffer(&mut self, target: GLenum) -> Option<&mut BufferObject> {
+    /// Runs `f` on the buffer bound to `target`, after the checks of
+    /// [`Context::bound_name`], with the (shared) buffer table locked; records the error `f`
+    /// returns. `None` when an error was recorded.
+    fn with_bound_buffer<R>(
+        &mut self,
+        target: GLenum,
+        f: impl FnOnce(&mut BufferObject) -> Result<R, GLenum>,
+    ) -> Option<R> {
         let name = self.bound_name(target)?;
-        self.buffers.get_mut(name)
+        let result = f(self.buffers.lock().get_mut(name)?);
+        result.map_err(|error| self.error(error)).ok()
     }
 
     /// glGenBuffers: `None` when an error was recorded.
@@ -56,7 +63,7 @@ impl Context {
             self.error(GL_INVALID_VALUE);
             return None;
         }
-        let names = self.buffers.generate(n as usize);
+        let names = self.buffers.lock().generate(n as usize);
         if names.is_err() {
             self.error(GL_OUT_OF_MEMORY);
         }
@@ -74,7 +81,7 @@ impl Context {
             return self.error(GL_INVALID_VALUE);
         }
         for &name in names {
-            if !self.buffers.delete(name) {
+            if !self.buffers.lock().delete(name) {
                 continue;
             }
             let arrays = &mut self.vertex_input.arrays;
@@ -99,7 +106,7 @@ impl Context {
         let Some(target) = BufferTarget::from_gl(target) else {
             return self.error(GL_INVALID_ENUM);
         };
-        self.buffers.create_on_bind(name);
+        self.buffers.lock().create_on_bind(name);
         let arrays = &mut self.vertex_input.arrays;
         match target {
             BufferTarget::Array => arrays.array_buffer = name,
@@ -109,7 +116,7 @@ impl Context {
 
     /// glIsBuffer: true for names whose buffer exists (bound at least once).
     pub fn is_buffer(&mut self, name: u32) -> bool {
-        self.check_outside_begin_end() && self.buffers.is_buffer(name)
+        self.check_outside_begin_end() && self.buffers.lock().is_buffer(name)
     }
 
     /// glBufferData. `contents` gives the caller's `size` bytes (`None`: no data pointer, the
@@ -121,41 +128,37 @@ impl Context {
         usage: GLenum,
         contents: impl FnOnce(usize) -> Option<&'a [u8]>,
     ) {
-        let Some(buffer) = self.bound_buffer(target) else {
-            return;
-        };
-        let error = if size < 0 {
-            Some(GL_INVALID_VALUE)
-        } else if !is_usage(usage) {
-            Some(GL_INVALID_ENUM)
-        } else {
-            buffer.set_data(size as usize, contents(size as usize), usage).err().map(|_| GL_OUT_OF_MEMORY)
-        };
-        if let Some(error) = error {
-            self.error(error);
-        }
+        self.with_bound_buffer(target, |buffer| {
+            if size < 0 {
+                Err(GL_INVALID_VALUE)
+            } else if !is_usage(usage) {
+                Err(GL_INVALID_ENUM)
+            } else {
+                buffer.set_data(size as usize, contents(size as usize), usage).map_err(|_| GL_OUT_OF_MEMORY)
+            }
+        });
     }
 
-    /// The checks of glBufferSubData and glGetBufferSubData: the buffer and the byte range
-    /// when they pass.
-    fn buffer_range(
+    /// The checks of glBufferSubData and glGetBufferSubData: runs `f` on the buffer and the
+    /// byte range when they pass.
+    fn with_buffer_range(
         &mut self,
         target: GLenum,
         offset: isize,
         size: isize,
-    ) -> Option<(&mut BufferObject, usize, usize)> {
-        let name = self.bound_name(target)?;
-        let buffer = self.buffers.get(name)?;
-        let end = (offset >= 0 && size >= 0).then(|| (offset as usize).checked_add(size as usize)).flatten();
-        let error = match end {
-            Some(end) if end <= buffer.size() && !buffer.mapped => {
-                return Some((self.buffers.get_mut(name)?, offset as usize, size as usize));
+        f: impl FnOnce(&mut BufferObject, usize, usize),
+    ) {
+        self.with_bound_buffer(target, |buffer| {
+            let end = (offset >= 0 && size >= 0).then(|| (offset as usize).checked_add(size as usize)).flatten();
+            match end {
+                Some(end) if end <= buffer.size() && !buffer.mapped => {
+                    f(buffer, offset as usize, size as usize);
+                    Ok(())
+                }
+                Some(end) if end <= buffer.size() => Err(GL_INVALID_OPERATION),
+                _ => Err(GL_INVALID_VALUE),
             }
-            Some(end) if end <= buffer.size() => GL_INVALID_OPERATION,
-            _ => GL_INVALID_VALUE,
-        };
-        self.error(error);
-        None
+        });
     }
 
     /// glBufferSubData: `contents` gives the caller's `size` bytes.
@@ -166,12 +169,12 @@ impl Context {
         size: isize,
         contents: impl FnOnce(usize) -> Option<&'a [u8]>,
     ) {
-        if let Some((buffer, offset, size)) = self.buffer_range(target, offset, size) {
+        self.with_buffer_range(target, offset, size, |buffer, offset, size| {
             if let (Some(source), Some(destination)) = (contents(size), buffer.range_mut(offset, size)) {
                 let n = destination.len().min(source.len());
                 destination[..n].copy_from_slice(&source[..n]);
             }
-        }
+        });
     }
 
     /// glGetBufferSubData: `destination` gives the caller's `size` bytes to write.
@@ -182,12 +185,12 @@ impl Context {
         size: isize,
         destination: impl FnOnce(usize) -> Option<&'a mut [u8]>,
     ) {
-        if let Some((buffer, offset, size)) = self.buffer_range(target, offset, size) {
+        self.with_buffer_range(target, offset, size, |buffer, offset, size| {
             if let (Some(destination), Some(source)) = (destination(size), buffer.range(offset, size)) {
                 let n = destination.len().min(source.len());
                 destination[..n].copy_from_slice(&source[..n]);
             }
-        }
+        });
     }
 
     /// glMapBuffer: the address of the buffer's storage, valid until it is unmapped; null
@@ -201,44 +204,38 @@ impl Context {
             self.error(GL_INVALID_ENUM);
             return std::ptr::null_mut();
         }
-        let Some(buffer) = self.bound_buffer(target) else {
-            return std::ptr::null_mut();
-        };
-        if buffer.mapped || buffer.size() == 0 {
-            self.error(GL_INVALID_OPERATION);
-            return std::ptr::null_mut();
-        }
-        buffer.map(access)
+        let pointer = self.with_bound_buffer(target, |buffer| {
+            if buffer.mapped || buffer.size() == 0 {
+                Err(GL_INVALID_OPERATION)
+            } else {
+                Ok(buffer.map(access))
+            }
+        });
+        pointer.unwrap_or(std::ptr::null_mut())
     }
 
     /// glUnmapBuffer: true unless an error was recorded (the contents never become corrupt
     /// in a software implementation).
     pub fn unmap_buffer(&mut self, target: GLenum) -> bool {
-        let Some(buffer) = self.bound_buffer(target) else {
-            return false;
-        };
-        if !buffer.mapped {
-            self.error(GL_INVALID_OPERATION);
-            return false;
-        }
-        buffer.unmap();
-        true
+        let unmapped = self.with_bound_buffer(target, |buffer| {
+            if !buffer.mapped {
+                return Err(GL_INVALID_OPERATION);
+            }
+            buffer.unmap();
+            Ok(true)
+        });
+        unmapped.unwrap_or(false)
     }
 
     /// glGetBufferParameteriv: `None` when an error was recorded.
     pub fn get_buffer_parameter(&mut self, target: GLenum, pname: GLenum) -> Option<GLint> {
-        let buffer = self.bound_buffer(target)?;
-        let value = match pname {
-            GL_BUFFER_SIZE => buffer.size().min(i32::MAX as usize) as GLint,
-            GL_BUFFER_USAGE => buffer.usage as GLint,
-            GL_BUFFER_ACCESS => buffer.access as GLint,
-            GL_BUFFER_MAPPED => buffer.mapped as GLint,
-            _ => {
-                self.error(GL_INVALID_ENUM);
-                return None;
-            }
-        };
-        Some(value)
+        self.with_bound_buffer(target, |buffer| match pname {
+            GL_BUFFER_SIZE => Ok(buffer.size().min(i32::MAX as usize) as GLint),
+            GL_BUFFER_USAGE => Ok(buffer.usage as GLint),
+            GL_BUFFER_ACCESS => Ok(buffer.access as GLint),
+            GL_BUFFER_MAPPED => Ok(buffer.mapped as GLint),
+            _ => Err(GL_INVALID_ENUM),
+        })
     }
 
     /// glGetBufferPointerv (GL_BUFFER_MAP_POINTER): null while unmapped; `None` when an error
@@ -251,7 +248,7 @@ impl Context {
             self.error(GL_INVALID_ENUM);
             return None;
         }
-        Some(self.bound_buffer(target)?.map_pointer())
+        self.with_bound_buffer(target, |buffer| Ok(buffer.map_pointer()))
     }
 }
 
@@ -310,7 +307,7 @@ mod tests {
         assert_eq!(ctx.take_error(), GL_OUT_OF_MEMORY);
         assert_eq!(ctx.get_buffer_parameter(GL_ARRAY_BUFFER, GL_BUFFER_SIZE), Some(0));
         ctx.buffer_data(GL_ARRAY_BUFFER, 5, GL_DYNAMIC_COPY, |_| None);
-        assert_eq!(ctx.buffers.get(3).unwrap().data(), [0; 5]);
+        assert_eq!(ctx.buffers.lock().get(3).unwrap().data(), [0; 5]);
         assert_eq!(ctx.get_buffer_parameter(GL_ARRAY_BUFFER, GL_BUFFER_USAGE), Some(GL_DYNAMIC_COPY as i32));
         assert_eq!(ctx.take_error(), GL_NO_ERROR);
     }
@@ -343,7 +340,7 @@ mod tests {
         // glBufferData unmaps.
         ctx.map_buffer(GL_ARRAY_BUFFER, GL_READ_WRITE);
         ctx.buffer_data(GL_ARRAY_BUFFER, 2, GL_STREAM_DRAW, |_| None);
-        assert!(!ctx.buffers.get(name).unwrap().mapped);
+        assert!(!ctx.buffers.lock().get(name).unwrap().mapped);
         assert_eq!(ctx.take_error(), GL_NO_ERROR);
     }
 

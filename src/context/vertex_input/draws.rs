@@ -24,6 +24,7 @@ use crate::context::state::{CurrentState, MAX_TEXTURE_UNITS};
 use crate::vertex::arrays::{
     byte_extent, index_range, ArrayId, ArrayState, BoundArray, ClientArrays, ClientMemory, IndexType,
 };
+use crate::vertex::assembly::{continued_vertices, DrawPart};
 use crate::vertex::buffer_objects::BufferTable;
 use crate::vertex::immediate::{is_primitive_mode, vertex_from_current};
 use crate::vertex::Vertex;
@@ -34,8 +35,8 @@ const ARRAY_COUNT: usize = 7 + MAX_TEXTURE_UNITS;
 /// The values of one glArrayElement, per enabled array.
 pub(crate) type FetchedElement = [Option<(ArrayId, [f32; 4])>; ARRAY_COUNT];
 
-/// A draw's batch vector keeps at most this many vertices of capacity between draws (strips
-/// and the other connected modes are delivered whole, and may be long).
+/// A draw's batch vector keeps at most this many vertices of capacity between draws (the
+/// connected modes are delivered whole when a display list captures them, and may be long).
 const KEPT_BATCH_CAPACITY: usize = 4 * BATCH_VERTICES;
 
 /// The elements a draw reads, in order.
@@ -47,15 +48,7 @@ enum Elements<'a> {
     Listed { kind: IndexType, bytes: &'a [u8] },
 }
 
-impl<'a> Elements<'a> {
-    fn indices(self) -> impl Iterator<Item = u32> + 'a {
-        let (sequence, listed) = match self {
-            Elements::Sequence { first, count } => (first..first + count, None),
-            Elements::Listed { kind, bytes } => (0..0, Some(kind.decode(bytes))),
-        };
-        sequence.chain(listed.into_iter().flatten())
-    }
-
+impl Elements<'_> {
     fn len(self) -> usize {
         match self {
             Elements::Sequence { count, .. } => count as usize,
@@ -68,7 +61,7 @@ impl<'a> Elements<'a> {
         match self {
             Elements::Sequence { count: 0, .. } => None,
             Elements::Sequence { first, count } => Some((first, first + (count - 1))),
-            Elements::Listed { .. } => index_range(self.indices()),
+            Elements::Listed { kind, bytes } => index_range(kind.decode(bytes)),
         }
     }
 }
@@ -79,6 +72,28 @@ impl<'a> Elements<'a> {
 enum IndexSource {
     Sequence { first: u32, count: u32 },
     Listed { kind: IndexType, address: usize, count: usize },
+}
+
+impl IndexSource {
+    /// How many elements the draw reads.
+    fn count(self) -> usize {
+        match self {
+            IndexSource::Sequence { count, .. } => count as usize,
+            IndexSource::Listed { count, .. } => count,
+        }
+    }
+
+    /// Elements `start .. start + count` of the draw (`None` when the address overflows).
+    fn sub_range(self, start: usize, count: usize) -> Option<IndexSource> {
+        Some(match self {
+            IndexSource::Sequence { first, .. } => {
+                IndexSource::Sequence { first: first.checked_add(u32::try_from(start).ok()?)?, count: count as u32 }
+            }
+            IndexSource::Listed { kind, address, .. } => {
+                IndexSource::Listed { kind, address: address.checked_add(start.checked_mul(kind.size())?)?, count }
+            }
+        })
+    }
 }
 
 /// Why an array draw makes no vertices.
@@ -115,8 +130,19 @@ fn array_bytes<'a>(
 /// with `store`. One loop per array, monomorphized per attribute, so the per-vertex work is
 /// the fetch and a plain store.
 fn fill(batch: &mut [Vertex], elements: Elements, array: &BoundArray, store: impl Fn(&mut Vertex, [f32; 4])) {
-    for (vertex, index) in batch.iter_mut().zip(elements.indices()) {
-        store(vertex, array.fetch(index));
+    // One loop per kind of element source (not a chain of both): the loop is simpler, and
+    // valgrind does not see the optimizer's reads of the unused variant as uninitialised.
+    match elements {
+        Elements::Sequence { first, count } => {
+            for (vertex, index) in batch.iter_mut().zip(first..first + count) {
+                store(vertex, array.fetch(index));
+            }
+        }
+        Elements::Listed { kind, bytes } => {
+            for (vertex, index) in batch.iter_mut().zip(kind.decode(bytes)) {
+                store(vertex, array.fetch(index));
+            }
+        }
     }
 }
 
@@ -173,7 +199,7 @@ impl Context {
     /// element array buffer when `with_indices`.
     fn sources_mapped_buffer(&self, with_indices: bool) -> bool {
         let arrays = &self.vertex_input.arrays;
-        let mapped = |name: u32| name != 0 && self.buffers.get(name).is_some_and(|b| b.mapped);
+        let mapped = |name: u32| name != 0 && self.buffers.lock().get(name).is_some_and(|b| b.mapped);
         arrays.all().any(|(_, a)| a.enabled && mapped(a.buffer))
             || (with_indices && mapped(arrays.element_array_buffer))
     }
@@ -188,60 +214,86 @@ impl Context {
     }
 
     /// Makes the vertices of one validated draw and delivers them: in batches of
-    /// [`BATCH_VERTICES`] for independent primitives, whole otherwise.
+    /// [`BATCH_VERTICES`] for independent primitives, in parts for long connected ones.
     fn draw_from_arrays(&mut self, mode: GLenum, source: IndexSource, memory: &dyn ClientMemory) {
+        let count = source.count();
         if independent_primitive_size(mode).is_none() {
-            return self.draw_batch(mode, source, memory);
+            if count <= BATCH_VERTICES + 2 || !self.may_deliver_parts() {
+                return self.draw_batch(mode, &[source], memory, DrawPart::WHOLE);
+            }
+            return self.draw_in_parts(mode, source, memory);
         }
-        match source {
-            IndexSource::Sequence { first, count } => {
-                for start in (0..count).step_by(BATCH_VERTICES) {
-                    let count = (count - start).min(BATCH_VERTICES as u32);
-                    self.draw_batch(mode, IndexSource::Sequence { first: first + start, count }, memory);
-                }
-            }
-            IndexSource::Listed { kind, address, count } => {
-                for start in (0..count).step_by(BATCH_VERTICES) {
-                    let Some(address) = address.checked_add(start * kind.size()) else {
-                        return;
-                    };
-                    let count = (count - start).min(BATCH_VERTICES);
-                    self.draw_batch(mode, IndexSource::Listed { kind, address, count }, memory);
-                }
-            }
+        for start in (0..count).step_by(BATCH_VERTICES) {
+            let Some(batch) = source.sub_range(start, (count - start).min(BATCH_VERTICES)) else {
+                return;
+            };
+            self.draw_batch(mode, &[batch], memory, DrawPart::WHOLE);
         }
     }
 
-    /// Makes the vertices of one validated draw (or batch of a draw) and delivers them.
-    fn draw_batch(&mut self, mode: GLenum, source: IndexSource, memory: &dyn ClientMemory) {
+    /// Delivers a long strip, fan, loop or polygon in parts of [`BATCH_VERTICES`] elements,
+    /// each after the first starting with the elements it shares with the one before
+    /// ([`continued_vertices`]: the first element of fans and polygons, the last one or two of
+    /// the previous part). A line loop's parts are line strips, the last one closed by the
+    /// loop's first element.
+    fn draw_in_parts(&mut self, mode: GLenum, source: IndexSource, memory: &dyn ClientMemory) {
+        let count = source.count();
+        let Some(kept) = continued_vertices(mode, BATCH_VERTICES) else {
+            return self.draw_batch(mode, &[source], memory, DrawPart::WHOLE);
+        };
+        let loop_ = mode == GL_LINE_LOOP;
+        let part_mode = if loop_ { GL_LINE_STRIP } else { mode };
+        let Some(head) = source.sub_range(0, 1) else { return };
+        let mut start = 0;
+        loop {
+            let end = (start + BATCH_VERTICES).min(count);
+            let Some(range) = source.sub_range(start, end - start) else { return };
+            let part = DrawPart { first: start == 0, last: end == count };
+            let sources: &[IndexSource] = match (kept.first && !loop_ && !part.first, loop_ && part.last) {
+                (true, _) => &[head, range],
+                (_, true) => &[range, head],
+                _ => &[range],
+            };
+            self.draw_batch(part_mode, sources, memory, part);
+            if part.last {
+                return;
+            }
+            start = end - kept.tail;
+        }
+    }
+
+    /// Makes the vertices of one validated draw (or batch or part of a draw) from the
+    /// elements of `sources`, in order, and delivers them.
+    fn draw_batch(&mut self, mode: GLenum, sources: &[IndexSource], memory: &dyn ClientMemory, part: DrawPart) {
         let mut batch = std::mem::take(&mut self.vertex_input.batch);
         batch.clear();
-        let outcome = {
+        let mut outcome = Ok(());
+        let buffers = self.buffers.lock();
+        for &source in sources {
             let elements = match source {
                 IndexSource::Sequence { first, count } => Some(Elements::Sequence { first, count }),
                 IndexSource::Listed { kind, address, count } => {
                     let element_buffer = self.vertex_input.arrays.element_array_buffer;
                     let bytes = count.checked_mul(kind.size()).and_then(|len| match element_buffer {
                         0 => memory.bytes(address, len),
-                        name => self.buffers.get(name).and_then(|buffer| buffer.range(address, len)),
+                        name => buffers.get(name).and_then(|buffer| buffer.range(address, len)),
                     });
                     bytes.map(|bytes| Elements::Listed { kind, bytes })
                 }
             };
-            match elements {
-                Some(elements) => assemble(
-                    &self.vertex_input.arrays,
-                    &self.buffers,
-                    &self.state.current,
-                    elements,
-                    memory,
-                    &mut batch,
-                ),
+            outcome = match elements {
+                Some(elements) => {
+                    assemble(&self.vertex_input.arrays, &buffers, &self.state.current, elements, memory, &mut batch)
+                }
                 None => Err(NoDraw::Undefined),
+            };
+            if outcome.is_err() {
+                break;
             }
-        };
+        }
+        drop(buffers);
         match outcome {
-            Ok(()) if !batch.is_empty() => self.deliver(mode, &batch),
+            Ok(()) if !batch.is_empty() => self.deliver_part(mode, &batch, part),
             Err(NoDraw::OutOfMemory) => self.error(GL_OUT_OF_MEMORY),
             _ => {}
         }
@@ -273,10 +325,11 @@ impl Context {
         let Ok(index) = u32::try_from(index) else {
             return Ok(None);
         };
+        let buffers = self.buffers.lock();
         let mut fetched: FetchedElement = [None; ARRAY_COUNT];
         for (slot, (id, array)) in fetched.iter_mut().zip(self.vertex_input.arrays.all()) {
             if array.enabled {
-                let Ok(bytes) = array_bytes(array, &self.buffers, memory, index, index) else {
+                let Ok(bytes) = array_bytes(array, &buffers, memory, index, index) else {
                     return Ok(None);
                 };
                 *slot = Some((id, BoundArray::new(id, array, bytes, index).fetch(index)));
@@ -536,11 +589,27 @@ mod tests {
         let all: Vec<f32> = ctx.vertex_input.delivered.iter().flat_map(|(_, v)| xs(v)).collect();
         assert_eq!(all, (0..n).rev().map(|i| i as f32).collect::<Vec<_>>());
         assert_eq!(ctx.vertex_input.delivered.len(), 3);
-        // Connected primitives are delivered whole.
+        // Connected primitives come in parts, each repeating the last two vertices of a strip.
         ctx.vertex_input.delivered.clear();
         ctx.draw_arrays(GL_TRIANGLE_STRIP, 0, n as i32, &memory);
-        assert_eq!(ctx.vertex_input.delivered.len(), 1);
-        assert_eq!(ctx.vertex_input.delivered[0].1.len(), n);
+        let parts: Vec<(f32, usize)> =
+            ctx.vertex_input.delivered.iter().map(|(_, v)| (v[0].position[0], v.len())).collect();
+        let step = (BATCH_VERTICES - 2) as f32;
+        assert_eq!(parts, [(0.0, BATCH_VERTICES), (step, BATCH_VERTICES), (2.0 * step, n - 2 * (BATCH_VERTICES - 2))]);
+        // A fan's parts start with its first vertex; a loop's last part ends with it.
+        for (mode, first, last) in [(GL_TRIANGLE_FAN, Some(0.0), None), (GL_LINE_LOOP, None, Some(0.0))] {
+            ctx.vertex_input.delivered.clear();
+            ctx.draw_arrays(mode, 0, n as i32, &memory);
+            let delivered = &ctx.vertex_input.delivered;
+            assert_eq!(delivered.len(), 3);
+            if let Some(x) = first {
+                assert!(delivered.iter().all(|(_, v)| v[0].position[0] == x));
+            }
+            if let Some(x) = last {
+                assert_eq!(delivered[2].1.last().unwrap().position[0], x);
+                assert!(delivered.iter().all(|(m, _)| *m == GL_LINE_STRIP));
+            }
+        }
         assert_eq!(ctx.take_error(), GL_NO_ERROR);
     }
 

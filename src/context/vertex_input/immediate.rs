@@ -15,6 +15,7 @@ use super::{independent_primitive_size, Context, BATCH_VERTICES};
 use crate::api::enums::*;
 use crate::api::types::GLenum;
 use crate::context::state::MAX_TEXTURE_UNITS;
+use crate::vertex::assembly::{continued_vertices, DrawPart};
 use crate::vertex::immediate::{is_primitive_mode, rect_positions, vertex_from_current};
 
 impl Context {
@@ -29,6 +30,7 @@ impl Context {
         self.vertex_input.begin_mode = mode;
         self.vertex_input.vertices.clear();
         self.vertex_input.material_marks.clear();
+        self.vertex_input.parts_delivered = false;
         self.inside_begin_end = true;
     }
 
@@ -66,14 +68,52 @@ impl Context {
             return self.error(GL_OUT_OF_MEMORY);
         }
         vertices.push(vertex);
-        if vertices.len() >= BATCH_VERTICES && independent_primitive_size(self.vertex_input.begin_mode).is_some() {
+        if vertices.len() < BATCH_VERTICES {
+            return;
+        }
+        if independent_primitive_size(self.vertex_input.begin_mode).is_some() {
             // A whole number of primitives: BATCH_VERTICES is a multiple of every size.
             self.deliver_open_vertices();
+        } else if vertices.len() >= BATCH_VERTICES + 2
+            && self.vertex_input.material_marks.is_empty()
+            && self.may_deliver_parts()
+        {
+            self.deliver_open_part();
         }
+    }
+
+    /// Delivers the vertices of the open connected primitive as a part that does not end it,
+    /// and keeps the vertices the next part repeats. A line loop's parts are line strips
+    /// (its closing segment comes with the last part, [`Context::deliver_open_vertices`]).
+    fn deliver_open_part(&mut self) {
+        let mode = self.vertex_input.begin_mode;
+        let mut vertices = std::mem::take(&mut self.vertex_input.vertices);
+        let Some(kept) = continued_vertices(mode, vertices.len()) else {
+            self.vertex_input.vertices = vertices;
+            return;
+        };
+        let first = !self.vertex_input.parts_delivered;
+        let part = DrawPart { first, last: false };
+        if mode == GL_LINE_LOOP {
+            // After the first part, the loop's first vertex (kept at 0) is not part of the strip.
+            self.deliver_part(GL_LINE_STRIP, &vertices[usize::from(!first)..], part);
+        } else {
+            self.deliver_part(mode, &vertices, part);
+        }
+        self.vertex_input.parts_delivered = true;
+        let head = vertices[0];
+        vertices.drain(..vertices.len() - kept.tail);
+        if kept.first {
+            vertices.insert(0, head);
+        }
+        self.vertex_input.vertices = vertices;
     }
 
     /// Delivers and forgets the vertices collected since glBegin.
     fn deliver_open_vertices(&mut self) {
+        if self.vertex_input.parts_delivered {
+            return self.deliver_last_part();
+        }
         let vertices = std::mem::take(&mut self.vertex_input.vertices);
         if !vertices.is_empty() {
             self.deliver(self.vertex_input.begin_mode, &vertices);
@@ -89,6 +129,23 @@ impl Context {
         }
         self.vertex_input.vertices = vertices;
         self.vertex_input.vertices.clear();
+    }
+
+    /// Delivers the rest of a connected primitive of which parts were delivered: a line
+    /// loop's last part is a line strip closed by the loop's first vertex (kept at 0).
+    fn deliver_last_part(&mut self) {
+        let mode = self.vertex_input.begin_mode;
+        let mut vertices = std::mem::take(&mut self.vertex_input.vertices);
+        let part = DrawPart { first: false, last: true };
+        if mode == GL_LINE_LOOP {
+            vertices.push(vertices[0]);
+            self.deliver_part(GL_LINE_STRIP, &vertices[1..], part);
+        } else {
+            self.deliver_part(mode, &vertices, part);
+        }
+        self.vertex_input.parts_delivered = false;
+        vertices.clear();
+        self.vertex_input.vertices = vertices;
     }
 
     /// glColor (already converted to floats; not clamped).
@@ -234,9 +291,9 @@ mod tests {
     }
 
     #[test]
-    fn long_independent_primitives_are_delivered_in_batches() {
+    fn long_primitives_are_delivered_in_batches_and_parts() {
         let mut ctx = context();
-        for (mode, batches) in [(GL_TRIANGLES, 3), (GL_LINE_STRIP, 1)] {
+        for (mode, batches) in [(GL_TRIANGLES, 3), (GL_LINE_STRIP, 3)] {
             ctx.vertex_input.delivered.clear();
             ctx.begin(mode);
             for i in 0..2 * BATCH_VERTICES + 3 {
@@ -248,7 +305,13 @@ mod tests {
             ctx.end();
             let delivered = &ctx.vertex_input.delivered;
             assert_eq!(delivered.len(), batches, "mode {mode:#x}");
-            let xs: Vec<f32> = delivered.iter().flat_map(|(_, v)| v.iter().map(|v| v.position[0])).collect();
+            // A strip's parts after the first repeat the previous part's last vertex.
+            let repeated = usize::from(mode == GL_LINE_STRIP);
+            let xs: Vec<f32> = delivered
+                .iter()
+                .enumerate()
+                .flat_map(|(k, (_, v))| v[if k == 0 { 0 } else { repeated }..].iter().map(|v| v.position[0]))
+                .collect();
             assert_eq!(xs, (0..2 * BATCH_VERTICES + 3).map(|i| i as f32).collect::<Vec<_>>());
         }
         assert_eq!(BATCH_VERTICES % 12, 0);
