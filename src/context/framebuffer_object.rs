@@ -457,6 +457,14 @@ impl Context {
         }
     }
 
+    /// Completes the draws recorded into a framebuffer object before a texture image is read
+    /// or specified: they may write texture images (which are current only after a flush).
+    pub(super) fn flush_into_textures(&mut self) {
+        if self.fbo.draw != 0 {
+            self.flush_rendering();
+        }
+    }
+
     /// Detaches every image of texture `name` (it is being deleted).
     pub(super) fn detach_texture(&mut self, name: u32) {
         let attached = |a: &Attachment| matches!(a, Attachment::Texture { name: n, .. } if *n == name);

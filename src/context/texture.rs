@@ -625,6 +625,7 @@ impl Context {
         let Some((it, info, pair)) = self.check_tex_image(dims, &a, Some((format, ty)), true) else {
             return;
         };
+        self.flush_into_textures();
         let (cf, ct) = pair.expect("format and type checked");
         let b = a.border as usize;
         let (w, h, d) = (a.width as usize, a.height.max(1) as usize, a.depth.max(1) as usize);
@@ -729,6 +730,7 @@ impl Context {
         if !self.check_outside_begin_end() {
             return;
         }
+        self.flush_into_textures();
         if image_target(dims, target, false).is_none() {
             return self.error(GL_INVALID_ENUM);
         }
@@ -1139,6 +1141,7 @@ impl Context {
         if !self.check_outside_begin_end() {
             return;
         }
+        self.flush_into_textures();
         let dims = match target {
             GL_TEXTURE_1D => 1,
             GL_TEXTURE_3D => 3,
