@@ -709,6 +709,14 @@ impl Context {
         attachment: GLenum,
         pname: GLenum,
     ) -> Option<i32> {
+        let window = match target {
+            GL_FRAMEBUFFER | GL_DRAW_FRAMEBUFFER => self.fbo.draw == 0,
+            GL_READ_FRAMEBUFFER => self.fbo.read == 0,
+            _ => false,
+        };
+        if window && self.check_outside_begin_end() {
+            return self.window_attachment_parameter(attachment, pname);
+        }
         let fbo = self.check_attachment_command(target, attachment)?;
         let object = &self.fbo.framebuffers[&fbo];
         let point = if attachment == GL_DEPTH_STENCIL_ATTACHMENT {
@@ -762,6 +770,64 @@ impl Context {
             (GL_FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING, Some(_)) => GL_LINEAR as i32,
             _ => {
                 self.error(if attached.is_none() { GL_INVALID_OPERATION } else { GL_INVALID_ENUM });
+                return None;
+            }
+        };
+        Some(value)
+    }
+
+    /// glGetFramebufferAttachmentParameteriv on the window's framebuffer (GL 3.0 section
+    /// 6.1.13): its buffers are of type GL_FRAMEBUFFER_DEFAULT.
+    fn window_attachment_parameter(&mut self, attachment: GLenum, pname: GLenum) -> Option<i32> {
+        let visual = self.config.visual;
+        let present = match attachment {
+            GL_DEPTH => visual.depth_stencil.depth_bits() > 0,
+            GL_STENCIL => visual.depth_stencil.stencil_bits() > 0,
+            GL_FRONT_LEFT | GL_FRONT_RIGHT | GL_BACK_LEFT | GL_BACK_RIGHT | GL_AUX0 | GL_AUX1 | GL_AUX2 | GL_AUX3 => {
+                super::buffers::slots_of(&visual, attachment).is_some_and(|s| !s.is_empty())
+            }
+            _ => {
+                self.error(GL_INVALID_ENUM);
+                return None;
+            }
+        };
+        let [r, g, b, a] = visual.color.channel_bits().map(|b| b as i32);
+        let color = !matches!(attachment, GL_DEPTH | GL_STENCIL);
+        let size = |c: i32| if color { c } else { 0 };
+        let value = match pname {
+            GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE => (if present { GL_FRAMEBUFFER_DEFAULT } else { GL_NONE }) as i32,
+            _ if !present => {
+                self.error(GL_INVALID_OPERATION);
+                return None;
+            }
+            GL_FRAMEBUFFER_ATTACHMENT_RED_SIZE => size(r),
+            GL_FRAMEBUFFER_ATTACHMENT_GREEN_SIZE => size(g),
+            GL_FRAMEBUFFER_ATTACHMENT_BLUE_SIZE => size(b),
+            GL_FRAMEBUFFER_ATTACHMENT_ALPHA_SIZE => size(a),
+            GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE => {
+                if attachment == GL_DEPTH {
+                    visual.depth_stencil.depth_bits() as i32
+                } else {
+                    0
+                }
+            }
+            GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE => {
+                if attachment == GL_STENCIL {
+                    visual.depth_stencil.stencil_bits() as i32
+                } else {
+                    0
+                }
+            }
+            GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE => {
+                if color && visual.color.is_float() {
+                    GL_FLOAT as i32
+                } else {
+                    GL_UNSIGNED_NORMALIZED as i32
+                }
+            }
+            GL_FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING => GL_LINEAR as i32,
+            _ => {
+                self.error(GL_INVALID_ENUM);
                 return None;
             }
         };
