@@ -21,12 +21,14 @@
 //! 8-bit unorm, RGB(A)12/16 as 16-bit unorm, RGB(A)16F/32F as f32 (16F keeps f32 precision),
 //! DEPTH_COMPONENT16/24/32 and 32F as 16/24/32-bit depth (32F as 32-bit unorm: depth is
 //! clamped to [0, 1] anyway), STENCIL_INDEX* as 8-bit stencil, DEPTH24_STENCIL8 packed.
-//! Textures are renderable when they are 8-bit RGB or RGBA or depth, without border.
+//! Textures are renderable when their base format is RGB, RGBA or depth, without border;
+//! formats of fewer than 8 bits per channel are quantized when the rendered image is stored.
 //!
 //! **Combinations reported GL_FRAMEBUFFER_UNSUPPORTED** (allowed by the specification, and
 //! what Mesa's Gallium drivers also reject): depth and stencil in two different images,
 //! attached images of different sizes, one image attached at two color points, textures of
-//! other formats or with a border.
+//! other base formats or with a border, and renderbuffers of the alpha, luminance and
+//! intensity formats (accepted by glRenderbufferStorage).
 //!
 //! **Multisample renderbuffers**: glRenderbufferStorageMultisample validates and stores the
 //! requested count; until multisample storage exists the storage is single-sample and
@@ -149,11 +151,43 @@ pub fn renderbuffer_format(internal_format: GLenum) -> Option<Renderable> {
         GL_DEPTH_COMPONENT | GL_DEPTH_COMPONENT24 => Renderable::DepthStencil(Packed24 { depth: true, stencil: false }),
         GL_DEPTH_COMPONENT32 | GL_DEPTH_COMPONENT32F => Renderable::DepthStencil(Depth32 { stencil: false }),
         GL_DEPTH_STENCIL | GL_DEPTH24_STENCIL8 => Renderable::DepthStencil(Packed24 { depth: true, stencil: true }),
+        // Accepted (ARB_framebuffer_object makes them color-renderable in the compatibility
+        // profile) but stored as RGBA8 and reported GL_FRAMEBUFFER_UNSUPPORTED when attached.
+        GL_ALPHA
+        | GL_ALPHA4
+        | GL_ALPHA8
+        | GL_ALPHA12
+        | GL_ALPHA16
+        | GL_LUMINANCE
+        | GL_LUMINANCE4
+        | GL_LUMINANCE8
+        | GL_LUMINANCE12
+        | GL_LUMINANCE16
+        | GL_LUMINANCE_ALPHA
+        | GL_LUMINANCE4_ALPHA4
+        | GL_LUMINANCE6_ALPHA2
+        | GL_LUMINANCE8_ALPHA8
+        | GL_LUMINANCE12_ALPHA4
+        | GL_LUMINANCE12_ALPHA12
+        | GL_LUMINANCE16_ALPHA16
+        | GL_INTENSITY
+        | GL_INTENSITY4
+        | GL_INTENSITY8
+        | GL_INTENSITY12
+        | GL_INTENSITY16 => Renderable::Color(Unorm8 { alpha: true }),
         GL_STENCIL_INDEX | GL_STENCIL_INDEX1 | GL_STENCIL_INDEX4 | GL_STENCIL_INDEX8 | GL_STENCIL_INDEX16 => {
             Renderable::DepthStencil(Packed24 { depth: false, stencil: true })
         }
         _ => return None,
     })
+}
+
+/// Whether attaching a renderbuffer of `internal_format` can give a complete framebuffer
+/// (not the luminance, alpha and intensity formats, which are accepted but not rendered).
+fn renderbuffer_supported(internal_format: GLenum) -> bool {
+    let rgba8 =
+        matches!(renderbuffer_format(internal_format), Some(Renderable::Color(ColorFormat::Unorm8 { alpha: true })));
+    !rgba8 || matches!(internal_format, GL_RGBA | GL_RGBA8 | GL_RGBA2 | GL_RGBA4 | GL_RGB5_A1 | GL_RGB10_A2)
 }
 
 /// The framebuffer and renderbuffer objects of a context and their bindings.
@@ -841,7 +875,13 @@ impl Context {
     fn image_info(&self, attachment: Option<Attachment>) -> Option<Option<ImageInfo>> {
         Some(match attachment? {
             Attachment::Renderbuffer(name) => self.fbo.renderbuffers.get(&name).and_then(|rb| {
-                Some(ImageInfo { width: rb.width, height: rb.height, format: rb.format?, samples: 0, supported: true })
+                Some(ImageInfo {
+                    width: rb.width,
+                    height: rb.height,
+                    format: rb.format?,
+                    samples: 0,
+                    supported: renderbuffer_supported(rb.internal_format),
+                })
             }),
             Attachment::Texture { name, target, face, level, layer } => {
                 self.textures.object(name).and_then(|o| o.level(face, level)).and_then(|l| {
@@ -854,9 +894,8 @@ impl Context {
                         (Renderable::DepthStencil(depth_texture_format(l.info.bits[0])), true)
                     } else {
                         let alpha = l.info.bits[3] > 0;
-                        let eight = l.info.bits[..3] == [8, 8, 8] && matches!(l.info.bits[3], 0 | 8);
                         let rgb = matches!(base, BaseFormat::Rgb | BaseFormat::Rgba);
-                        (Renderable::Color(ColorFormat::Unorm8 { alpha }), eight && rgb)
+                        (Renderable::Color(ColorFormat::Unorm8 { alpha }), rgb)
                     };
                     Some(ImageInfo {
                         width: l.width,
@@ -1172,10 +1211,26 @@ impl Context {
     fn store_texture_color(&mut self, attachment: Attachment, buffer: &ColorBuffer) {
         let Attachment::Texture { layer, .. } = attachment else { return };
         let ColorPixels::Unorm8(px) = buffer.pixels() else { return };
+        let Attachment::Texture { name, face, level, .. } = attachment else { return };
+        let Some(bits) = self.textures.object(name).and_then(|o| o.level(face, level)).map(|l| l.info.bits) else {
+            return;
+        };
         let Some(image) = self.texture_image_mut(attachment) else { return };
         let area = image.width * image.height;
         if let Texels::Rgba8(texels) = &mut image.texels {
-            texels[layer * area..(layer + 1) * area].copy_from_slice(px);
+            let slice = &mut texels[layer * area..(layer + 1) * area];
+            if bits.iter().all(|&b| b == 8 || b == 0) {
+                slice.copy_from_slice(px);
+            } else {
+                // Formats of fewer bits (GL_RGB5_A1, GL_RGB10_A2 kept in 8, ...) are stored
+                // quantized, as the texture store keeps every image of them.
+                for (t, p) in slice.iter_mut().zip(px) {
+                    for c in 0..4 {
+                        let v = p[c] as f32 / 255.0;
+                        t[c] = if bits[c] == 0 { p[c] } else { crate::texture::quantize_to_u8(v, bits[c]) };
+                    }
+                }
+            }
         }
     }
 
@@ -1403,7 +1458,8 @@ mod tests {
         assert_eq!(renderbuffer_format(GL_STENCIL_INDEX8), Some(S8));
         assert_eq!(renderbuffer_format(GL_RGBA16F).map(renderable_sizes), Some([32, 32, 32, 32, 0, 0]),);
         assert_eq!(renderbuffer_format(GL_DEPTH_COMPONENT16).map(renderable_sizes), Some([0, 0, 0, 0, 16, 0]));
-        assert_eq!(renderbuffer_format(GL_LUMINANCE8), None);
+        assert!(renderbuffer_format(GL_LUMINANCE8).is_some() && !renderbuffer_supported(GL_LUMINANCE8));
+        assert!(renderbuffer_supported(GL_RGBA8) && renderbuffer_supported(GL_DEPTH24_STENCIL8));
         assert_eq!(renderbuffer_format(GL_COLOR_INDEX), None);
     }
 }

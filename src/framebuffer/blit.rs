@@ -5,8 +5,9 @@
 //! be inverted (mirroring). The centre of destination pixel `d` maps to the source coordinate
 //! `s0 + (d + ½ − d0) · (s1 − s0) / (d1 − d0)`; NEAREST reads the pixel containing it, LINEAR
 //! weighs the two pixels whose centres surround it (clamped to the read buffer's edge, as a
-//! texture fetch with CLAMP_TO_EDGE). Destination pixels whose NEAREST source lies outside
-//! the read buffer are not written (GL leaves their value undefined; Mesa clips them away).
+//! texture fetch with CLAMP_TO_EDGE). Destination pixels whose centre maps outside the read
+//! buffer are not written, with either filter (GL leaves their value undefined; Mesa clips
+//! the rectangles to the read buffer, which leaves them unwritten too).
 use super::surface::DepthStencilPixels;
 use super::{ColorBuffer, DepthStencilBuffer, Rect};
 
@@ -98,22 +99,11 @@ pub fn blit_color(src: &ColorSource, dst: &mut ColorBuffer, x: BlitAxis, y: Blit
                 row.clear();
             }
         };
-        if linear {
-            let (y0, y1, wy) = y.linear(dy, 0, src.height);
-            for dx in rect.x0..rect.x1 {
-                let (x0, x1, wx) = x.linear(dx, 0, src.width);
-                let lerp = |a: [f32; 4], b: [f32; 4], w: f32| std::array::from_fn(|c| a[c] + (b[c] - a[c]) * w);
-                let bottom = lerp(src.at(x0, y0), src.at(x1, y0), wx);
-                let top = lerp(src.at(x0, y1), src.at(x1, y1), wx);
-                row.push(lerp(bottom, top, wy));
-            }
-            flush(&mut row, run_start, dst);
-            continue;
-        }
         let sy = y.nearest(dy);
         if sy < 0 || sy >= src.height {
             continue;
         }
+        let (y0, y1, wy) = y.linear(dy, 0, src.height);
         for dx in rect.x0..rect.x1 {
             let sx = x.nearest(dx);
             if sx < 0 || sx >= src.width {
@@ -121,7 +111,15 @@ pub fn blit_color(src: &ColorSource, dst: &mut ColorBuffer, x: BlitAxis, y: Blit
                 run_start = dx + 1;
                 continue;
             }
-            row.push(src.at(sx, sy));
+            if linear {
+                let (x0, x1, wx) = x.linear(dx, 0, src.width);
+                let lerp = |a: [f32; 4], b: [f32; 4], w: f32| std::array::from_fn(|c| a[c] + (b[c] - a[c]) * w);
+                let bottom = lerp(src.at(x0, y0), src.at(x1, y0), wx);
+                let top = lerp(src.at(x0, y1), src.at(x1, y1), wx);
+                row.push(lerp(bottom, top, wy));
+            } else {
+                row.push(src.at(sx, sy));
+            }
         }
         flush(&mut row, run_start, dst);
     }
