@@ -301,16 +301,9 @@ impl Context {
         if !self.check_framebuffer_complete(true) {
             return None;
         }
-        self.with_framebuffer(|fb| {
-            let config = fb.config();
-            (
-                fb.width(),
-                fb.height(),
-                config.color,
-                config.depth_stencil.depth_bits(),
-                config.depth_stencil.stencil_bits(),
-            )
-        })
+        let (width, height, config) = self.framebuffer_shape(true)?;
+        let ds = config.depth_stencil;
+        Some((width, height, config.color, ds.depth_bits(), ds.stencil_bits()))
     }
 
     /// The scene to record into for a `width` × `height` framebuffer: the pending one, or a

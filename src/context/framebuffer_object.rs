@@ -1050,6 +1050,23 @@ impl Context {
         }
     }
 
+    /// The size and shape of the draw (`draw`) or read framebuffer, without assembling an
+    /// object's images; `None` without a drawable or for an incomplete object.
+    pub fn framebuffer_shape(&self, draw: bool) -> Option<(usize, usize, FramebufferConfig)> {
+        let name = if draw { self.fbo.draw } else { self.fbo.read };
+        if name == 0 {
+            return self.with_window_framebuffer(|fb| (fb.width(), fb.height(), *fb.config()));
+        }
+        if self.framebuffer_status(name) != GL_FRAMEBUFFER_COMPLETE {
+            return None;
+        }
+        let object = self.fbo.framebuffers.get(&name)?;
+        let first = object.attachments.iter().flatten().next().copied();
+        let info = self.image_info(first).flatten()?;
+        let config = if draw { self.draw_config() } else { self.read_config() };
+        Some((info.width, info.height, config))
+    }
+
     /// Runs `f` on the draw framebuffer (an object's, assembled, or the window's).
     pub fn with_framebuffer<R>(&mut self, f: impl FnOnce(&mut Framebuffer) -> R) -> Option<R> {
         match self.fbo.draw {
@@ -1079,7 +1096,8 @@ impl Context {
             return None;
         }
         let object = self.fbo.framebuffers.get(&name)?.clone();
-        let config = self.object_config(name, &[]);
+        // The color format draws compile for: that of the draw buffers (or the read buffer).
+        let config = if name == self.fbo.draw { self.draw_config() } else { self.read_config() };
         let first = object.attachments.iter().flatten().next().copied();
         let info = self.image_info(first).flatten()?;
         let (width, height) = (info.width, info.height);

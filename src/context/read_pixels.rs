@@ -300,7 +300,7 @@ impl Context {
             self.error(GL_INVALID_OPERATION);
             return None;
         };
-        let bounds = self.with_read_framebuffer(|fb| fb.bounds())?;
+        let bounds = self.framebuffer_shape(false).map(|(w, h, _)| Rect::from_xywh(0, 0, w as i32, h as i32))?;
         let rect = clip(x, y, width, height, bounds);
         if rect.is_empty() {
             return None;
