@@ -1469,6 +1469,66 @@ mod tests {
         assert_eq!(status(images, att), GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE);
     }
 
+    fn context() -> Context {
+        let visual = FramebufferConfig::single_buffered(
+            ColorFormat::Unorm8 { alpha: true },
+            DepthStencilFormat::Packed24 { depth: true, stencil: true },
+            0,
+        );
+        Context::with_test_drawable(visual, 4, 4).0
+    }
+
+    #[test]
+    fn each_framebuffer_keeps_its_draw_and_read_buffers() {
+        let mut ctx = context();
+        let fb = ctx.gen_fbo_names(1, false).unwrap()[0];
+        ctx.bind_framebuffer(GL_FRAMEBUFFER, fb);
+        assert_eq!(ctx.state.color.draw_buffers[0], GL_COLOR_ATTACHMENT0);
+        ctx.draw_buffers(&[GL_COLOR_ATTACHMENT2, GL_NONE, GL_COLOR_ATTACHMENT5]);
+        ctx.read_buffer(GL_COLOR_ATTACHMENT7);
+        assert_eq!(ctx.take_error(), GL_NO_ERROR);
+        // No image attached at all.
+        assert_eq!(ctx.check_framebuffer_status(GL_FRAMEBUFFER), GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT);
+        ctx.bind_framebuffer(GL_FRAMEBUFFER, 0);
+        assert_eq!(ctx.state.color.draw_buffers[0], GL_FRONT);
+        assert_eq!(ctx.state.pixel_mode.read_buffer, GL_FRONT);
+        ctx.bind_framebuffer(GL_DRAW_FRAMEBUFFER, fb);
+        assert_eq!(ctx.state.color.draw_buffers[..3], [GL_COLOR_ATTACHMENT2, GL_NONE, GL_COLOR_ATTACHMENT5]);
+        assert_eq!(ctx.state.pixel_mode.read_buffer, GL_FRONT, "the read binding did not change");
+        ctx.bind_framebuffer(GL_READ_FRAMEBUFFER, fb);
+        assert_eq!(ctx.state.pixel_mode.read_buffer, GL_COLOR_ATTACHMENT7);
+
+        // A color renderbuffer at attachment 2 only: draw buffer 2 (COLOR_ATTACHMENT5) and the
+        // read buffer are incomplete in turn.
+        let rb = ctx.gen_fbo_names(1, true).unwrap()[0];
+        ctx.bind_renderbuffer(GL_RENDERBUFFER, rb);
+        ctx.renderbuffer_storage(GL_RENDERBUFFER, 0, GL_RGBA8, 4, 4);
+        ctx.framebuffer_renderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT2, GL_RENDERBUFFER, rb);
+        assert_eq!(ctx.check_framebuffer_status(GL_DRAW_FRAMEBUFFER), GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER);
+        ctx.draw_buffers(&[GL_COLOR_ATTACHMENT2]);
+        assert_eq!(ctx.check_framebuffer_status(GL_DRAW_FRAMEBUFFER), GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER);
+        ctx.read_buffer(GL_COLOR_ATTACHMENT2);
+        assert_eq!(ctx.check_framebuffer_status(GL_FRAMEBUFFER), GL_FRAMEBUFFER_COMPLETE);
+        assert_eq!(ctx.draw_config().accum_bits, 0);
+        assert_eq!(ctx.draw_config().depth_stencil, DepthStencilFormat::None);
+
+        // A clear reaches the renderbuffer and nothing else.
+        ctx.state.color.clear_color = [1.0, 0.5, 0.0, 1.0];
+        ctx.clear(GL_COLOR_BUFFER_BIT);
+        let read = ctx.with_read_framebuffer(|fb| {
+            let mut row = Vec::new();
+            fb.color(ColorSlot::Attachment(2)).unwrap().read_row_f32(3, 0, 1, &mut row);
+            row[0]
+        });
+        assert_eq!(read, Some([1.0, 128.0 / 255.0, 0.0, 1.0]));
+
+        // Deleting the bound object binds the window's framebuffer and its buffers again.
+        ctx.delete_framebuffers(1, &[fb]);
+        assert_eq!((ctx.fbo.draw, ctx.fbo.read), (0, 0));
+        assert_eq!(ctx.state.color.draw_buffers[0], GL_FRONT);
+        assert_eq!(ctx.take_error(), GL_NO_ERROR);
+    }
+
     #[test]
     fn renderbuffer_formats_store_what_they_name() {
         assert_eq!(renderbuffer_format(GL_RGBA8), Some(RGBA8));
