@@ -77,6 +77,22 @@ mod tests {
                  glIndexPointerEXT glNormalPointerEXT glTexCoordPointerEXT glVertexPointerEXT",
             ),
             "GL_EXT_draw_range_elements" => list("glDrawRangeElementsEXT"),
+            "GL_ARB_framebuffer_object" => list(
+                "glIsRenderbuffer glBindRenderbuffer glDeleteRenderbuffers glGenRenderbuffers \
+                 glRenderbufferStorage glRenderbufferStorageMultisample glGetRenderbufferParameteriv \
+                 glIsFramebuffer glBindFramebuffer glDeleteFramebuffers glGenFramebuffers \
+                 glCheckFramebufferStatus glFramebufferTexture1D glFramebufferTexture2D glFramebufferTexture3D \
+                 glFramebufferTextureLayer glFramebufferRenderbuffer glGetFramebufferAttachmentParameteriv \
+                 glBlitFramebuffer glGenerateMipmap",
+            ),
+            "GL_EXT_framebuffer_object" => list(
+                "glIsRenderbufferEXT glBindRenderbufferEXT glDeleteRenderbuffersEXT glGenRenderbuffersEXT \
+                 glRenderbufferStorageEXT glGetRenderbufferParameterivEXT glIsFramebufferEXT \
+                 glBindFramebufferEXT glDeleteFramebuffersEXT glGenFramebuffersEXT glCheckFramebufferStatusEXT \
+                 glFramebufferTexture1DEXT glFramebufferTexture2DEXT glFramebufferTexture3DEXT \
+                 glFramebufferRenderbufferEXT glGetFramebufferAttachmentParameterivEXT glGenerateMipmapEXT",
+            ),
+            "GL_EXT_framebuffer_blit" => list("glBlitFramebufferEXT"),
             "GL_EXT_multi_draw_arrays" => list("glMultiDrawArraysEXT glMultiDrawElementsEXT"),
             "GL_EXT_polygon_offset_clamp" => list("glPolygonOffsetClampEXT"),
             "GL_ARB_multitexture" => {

@@ -338,18 +338,16 @@ impl Context {
         self.keep_scene(scene);
     }
 
-    /// The bound framebuffer's size, color format and depth/stencil bits.
-    fn target_format(&self) -> Option<(usize, usize, ColorFormat, u32, u32)> {
-        self.with_framebuffer(|fb| {
-            let config = fb.config();
-            (
-                fb.width(),
-                fb.height(),
-                config.color,
-                config.depth_stencil.depth_bits(),
-                config.depth_stencil.stencil_bits(),
-            )
-        })
+    /// The bound framebuffer's size, color format and depth/stencil bits; `None` (with
+    /// GL_INVALID_FRAMEBUFFER_OPERATION for an incomplete framebuffer object) when there is
+    /// nothing to draw into.
+    fn target_format(&mut self) -> Option<(usize, usize, ColorFormat, u32, u32)> {
+        if !self.check_framebuffer_complete(true) {
+            return None;
+        }
+        let (width, height, config) = self.framebuffer_shape(true)?;
+        let ds = config.depth_stencil;
+        Some((width, height, config.color, ds.depth_bits(), ds.stencil_bits()))
     }
 
     /// The scene to record into for a `width` × `height` framebuffer: the pending one, or a
@@ -430,7 +428,7 @@ impl Context {
                 color_masks.resize(target + 1, None);
                 buffer_of.resize(target + 1, None);
             }
-            color_masks[target] = Some(self.state.color.color_mask[index]);
+            color_masks[target] = Some(self.write_mask(slot, index));
             buffer_of[target] = Some(index);
         }
         let clamp_float = match self.state.color.clamp_fragment_color {

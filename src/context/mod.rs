@@ -15,6 +15,7 @@ pub mod debug;
 pub mod draw;
 pub mod evaluators;
 pub mod fragment_state;
+pub mod framebuffer_object;
 pub mod get;
 #[cfg(test)]
 mod hard_case_tests;
@@ -87,6 +88,8 @@ pub struct Context {
     pub selection: selection::Selection,
     /// The evaluator maps (glMap1/glMap2).
     pub evaluators: evaluators::EvalMaps,
+    /// Framebuffer and renderbuffer objects and their bindings.
+    pub fbo: framebuffer_object::FramebufferObjects,
 }
 
 impl Context {
@@ -113,6 +116,7 @@ impl Context {
             queries: Default::default(),
             selection: Default::default(),
             evaluators: Default::default(),
+            fbo: framebuffer_object::FramebufferObjects::new(buffer),
         }
     }
 
@@ -183,17 +187,19 @@ impl Context {
         self.drawable.as_ref()
     }
 
-    /// Runs `f` on the bound framebuffer; `None` when no drawable is bound.
-    pub fn with_framebuffer<R>(&self, f: impl FnOnce(&mut Framebuffer) -> R) -> Option<R> {
+    /// Runs `f` on the window's framebuffer; `None` when no drawable is bound. (Draws and
+    /// reads go through `with_framebuffer`/`with_read_framebuffer`, which pick the bound
+    /// framebuffer object instead when there is one.)
+    pub fn with_window_framebuffer<R>(&self, f: impl FnOnce(&mut Framebuffer) -> R) -> Option<R> {
         let drawable = self.drawable.as_ref()?;
         let mut guard = drawable.lock().unwrap_or_else(|p| p.into_inner());
         Some(f(&mut guard.framebuffer))
     }
 
-    /// Runs `f` on the framebuffer pixels are read from: the read drawable's when one is
-    /// bound apart from the draw drawable, else the draw drawable's; `None` without either.
+    /// Runs `f` on the window-system framebuffer pixels are read from: the read drawable's
+    /// when one is bound apart from the draw drawable, else the draw drawable's; `None` without either.
     /// Rendering recorded for the draw drawable must have been flushed by the caller.
-    pub fn with_read_framebuffer<R>(&self, f: impl FnOnce(&mut Framebuffer) -> R) -> Option<R> {
+    pub fn with_window_read_framebuffer<R>(&self, f: impl FnOnce(&mut Framebuffer) -> R) -> Option<R> {
         let drawable = self.read_drawable.as_ref().or(self.drawable.as_ref())?;
         let mut guard = drawable.lock().unwrap_or_else(|p| p.into_inner());
         Some(f(&mut guard.framebuffer))

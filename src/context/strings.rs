@@ -9,13 +9,13 @@ use crate::api::types::GLenum;
 
 pub const VENDOR: &str = "tessera project\0";
 pub const RENDERER: &str = concat!("tessera ", env!("CARGO_PKG_VERSION"), " (software rasterizer)\0");
-/// GL_VERSION: 1.5, the highest version whose every feature works (the audit below), once
-/// GL 1.0's evaluators and smoothing have landed; GL 2.0 needs GLSL.
+/// GL_VERSION: 1.5, the highest version whose every feature works (the audit below);
+/// GL 2.0 needs GLSL.
 pub const VERSION: &str = concat!("1.5 tessera ", env!("CARGO_PKG_VERSION"), "\0");
 
 // The version audit: each feature of the GL 1.2–1.5 core feature lists (GL 2.1 spec,
-// appendices C–F) checked against the code and its tests. GL 1.0/1.1 are assumed complete
-// once evaluators and smoothing land (other branches); GL 2.0 needs GLSL.
+// appendices C–F) checked against the code and its tests. GL 1.0/1.1 are complete now that
+// evaluators and smoothing exist; GL 2.0 needs GLSL.
 //
 // | Version | Feature                                          | Status | Where / checked by |
 // |---------|--------------------------------------------------|--------|--------------------|
@@ -51,9 +51,10 @@ pub const VERSION: &str = concat!("1.5 tessera ", env!("CARGO_PKG_VERSION"), "\0
 // | 1.5     | Occlusion queries                                | works  | capi occlusion_queries |
 // | 1.5     | Shadow functions (all 8 compare funcs)           | works  | context/texture.rs |
 //
-// Outside these lists but needed by every version: GL 1.0's evaluators and polygon/line/
-// point smoothing (other branches), and color-index pixel data in RGBA mode (glTexImage of
-// GL_COLOR_INDEX works, capi texture_color_index; glDrawPixels of GL_COLOR_INDEX: not yet).
+// Outside these lists but needed by every version: GL 1.0's evaluators (capi evaluators),
+// polygon/line/point smoothing (capi smooth_primitives), and color-index pixel data in RGBA
+// mode (glTexImage of GL_COLOR_INDEX, capi texture_color_index; glDrawPixels of
+// GL_COLOR_INDEX, capi pixel_color_index).
 
 /// Extensions whose every entry point and enum works, each checked against the code (and
 /// by the piglit tests named in tests/piglit/expected.txt). Left out although close:
@@ -69,6 +70,7 @@ pub const EXTENSIONS: &[&str] = &[
     "GL_ARB_draw_buffers_blend",
     "GL_ARB_multitexture",
     "GL_ARB_occlusion_query",
+    "GL_ARB_framebuffer_object",
     "GL_ARB_point_parameters",
     "GL_ARB_shadow",
     "GL_ARB_texture_border_clamp",
@@ -91,6 +93,8 @@ pub const EXTENSIONS: &[&str] = &[
     "GL_EXT_blend_minmax",
     "GL_EXT_blend_subtract",
     "GL_EXT_draw_range_elements",
+    "GL_EXT_framebuffer_blit",
+    "GL_EXT_framebuffer_object",
     "GL_EXT_fog_coord",
     "GL_EXT_multi_draw_arrays",
     "GL_EXT_packed_pixels",

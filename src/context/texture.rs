@@ -209,6 +209,15 @@ impl TextureTable {
             self.objects.get_mut(&name)
         }
     }
+
+    /// The object named `name` (not 0) once it has been bound (framebuffer attachments).
+    pub fn object(&self, name: u32) -> Option<&TextureObject> {
+        self.objects.get(&name)
+    }
+
+    pub fn object_mut(&mut self, name: u32) -> Option<&mut TextureObject> {
+        self.objects.get_mut(&name)
+    }
 }
 
 /// A validated image command: its target, internal format and client format/type.
@@ -512,6 +521,7 @@ impl Context {
                 t.objects.remove(&name).is_some()
             };
             if removed {
+                self.detach_texture(name);
                 for unit in &mut self.state.texture.unit_state {
                     for b in &mut unit.bindings {
                         if *b == name {
@@ -732,6 +742,7 @@ impl Context {
         let Some((it, info, pair)) = self.check_tex_image(dims, &a, Some((format, ty)), true) else {
             return;
         };
+        self.flush_into_textures();
         let (cf, ct) = pair.expect("format and type checked");
         let b = a.border as usize;
         let (w, h, d) = (a.width as usize, a.height.max(1) as usize, a.depth.max(1) as usize);
@@ -842,6 +853,7 @@ impl Context {
         if !self.check_outside_begin_end() {
             return;
         }
+        self.flush_into_textures();
         if image_target(dims, target, false).is_none() {
             return self.error(GL_INVALID_ENUM);
         }
@@ -902,7 +914,10 @@ impl Context {
         let Some((it, info, _)) = self.check_tex_image(dims, &a, None, false) else {
             return;
         };
-        let depth_bits = self.config().visual.depth_stencil.depth_bits();
+        if !self.check_framebuffer_complete(false) {
+            return;
+        }
+        let depth_bits = self.read_config().depth_stencil.depth_bits();
         if info.base == BaseFormat::Depth && depth_bits == 0 {
             return self.error(GL_INVALID_OPERATION);
         }
@@ -935,7 +950,10 @@ impl Context {
         let Some((it, lv)) = self.check_sub_image(dims, target, level, &Region { depth: 1, ..r }) else {
             return;
         };
-        let depth_bits = self.config().visual.depth_stencil.depth_bits();
+        if !self.check_framebuffer_complete(false) {
+            return;
+        }
+        let depth_bits = self.read_config().depth_stencil.depth_bits();
         if (lv.info.base == BaseFormat::Depth && depth_bits == 0)
             || (lv.info.base != BaseFormat::Depth && self.current_read_slot().is_none())
         {
@@ -1255,6 +1273,7 @@ impl Context {
         if !self.check_outside_begin_end() {
             return;
         }
+        self.flush_into_textures();
         let dims = match target {
             GL_TEXTURE_1D => 1,
             GL_TEXTURE_3D => 3,

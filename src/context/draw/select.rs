@@ -17,8 +17,10 @@ impl Context {
         if vertices.is_empty() || !(feedback || self.selection.mode == GL_SELECT) {
             return;
         }
-        let (depth_bits, height) =
-            self.with_framebuffer(|fb| (fb.config().depth_stencil.depth_bits(), fb.height())).unwrap_or((24, 1));
+        let (depth_bits, height) = self
+            .framebuffer_shape(true)
+            .map(|(_, height, config)| (config.depth_stencil.depth_bits(), height))
+            .unwrap_or((24, 1));
         self.matrices.validate();
         let clip_vertices = self.transform(vertices, true);
         let g = self.geometry(depth_bits, height);
