@@ -174,14 +174,17 @@ impl Context {
                             clear_color
                         };
                         buffer.clear(rect, value, color_masks[index]);
+                        fb.clear_color_samples(slot, rect, value, color_masks[index]);
                     }
                 }
             }
             if mask & GL_DEPTH_BUFFER_BIT != 0 && depth.0 {
                 fb.depth_stencil_mut().clear_depth(rect, depth.1);
+                fb.clear_depth_samples(rect, depth.1);
             }
             if mask & GL_STENCIL_BUFFER_BIT != 0 {
                 fb.depth_stencil_mut().clear_stencil(rect, stencil.1 as u8, stencil.0 as u8);
+                fb.clear_stencil_samples(rect, stencil.1 as u8, stencil.0 as u8);
             }
             if mask & GL_ACCUM_BUFFER_BIT != 0 {
                 if let Some(accum) = fb.accum_mut() {

@@ -8,5 +8,6 @@
 //! integer arithmetic, whatever the triangle's size or shape.
 
 pub mod line;
+pub mod multisample;
 pub mod point;
 pub mod triangle;

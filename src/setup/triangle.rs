@@ -135,13 +135,37 @@ impl TriangleSetup {
 
     /// The covered pixels of row `y` as a half-open range `[x0, x1)` clamped to
     /// `[clip_x0, clip_x1)`, solved exactly from the edge equations; `None` if empty.
+    #[inline]
     pub fn row_span(&self, y: i32, clip_x0: i32, clip_x1: i32) -> Option<(i32, i32)> {
-        let py = y as i64 * ONE + HALF;
-        let mut lo = clip_x0.max(self.min_x) as i64;
-        let mut hi = clip_x1.min(self.max_x + 1) as i64; // exclusive
+        self.row_span_at(y, HALF, HALF, clip_x0, clip_x1)
+    }
+
+    /// The pixel box that may hold covered samples anywhere in a pixel (inclusive min,
+    /// exclusive max): `(x0, y0, x1, y1)`.
+    pub fn pixel_box(&self) -> (i32, i32, i32, i32) {
+        let xs = self.vertices.map(|p| p[0]);
+        let ys = self.vertices.map(|p| p[1]);
+        let lo = |m: i64| div_floor(m, ONE) as i32;
+        let hi = |m: i64| div_floor(m, ONE) as i32 + 1;
+        let (min, max) = (|a: [i64; 3]| a[0].min(a[1]).min(a[2]), |a: [i64; 3]| a[0].max(a[1]).max(a[2]));
+        (lo(min(xs)), lo(min(ys)), hi(max(xs)), hi(max(ys)))
+    }
+
+    /// As [`TriangleSetup::row_span`] for the sample at `(offset_x, offset_y)` (in 1/256
+    /// pixel from each pixel's lower-left corner) instead of the centre: the pixels of row
+    /// `y` whose sample is covered.
+    #[inline]
+    pub fn row_span_at(&self, y: i32, offset_x: i64, offset_y: i64, clip_x0: i32, clip_x1: i32) -> Option<(i32, i32)> {
+        let py = y as i64 * ONE + offset_y;
+        let (mut lo, mut hi) = if offset_x == HALF && offset_y == HALF {
+            (clip_x0.max(self.min_x) as i64, clip_x1.min(self.max_x + 1) as i64)
+        } else {
+            let (x0, _, x1, _) = self.pixel_box();
+            (clip_x0.max(x0) as i64, clip_x1.min(x1) as i64)
+        };
         for e in &self.edges {
-            // Inside: a·(256·x + 128) + (b·py + c) ≥ bias  ⇔  256·a·x ≥ bias − a·128 − b·py − c.
-            let rhs = e.bias - e.a * HALF - e.b * py - e.c;
+            // Inside: a·(256·x + ox) + (b·py + c) ≥ bias  ⇔  256·a·x ≥ bias − a·ox − b·py − c.
+            let rhs = e.bias - e.a * offset_x - e.b * py - e.c;
             let k = e.a * ONE;
             if k > 0 {
                 lo = lo.max(div_ceil(rhs, k));
