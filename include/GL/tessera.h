@@ -6096,6 +6096,1038 @@ typedef void (*OSMESAproc)();
 #error "GL_POLYGON_OFFSET_CLAMP differs from the system GL headers"
 #endif
 
+#if !defined(GL_RGBA16F)
+#define GL_RGBA16F 34842
+#elif (GL_RGBA16F) != (34842)
+#error "GL_RGBA16F differs from the system GL headers"
+#endif
+
+#if !defined(GL_RGB16F)
+#define GL_RGB16F 34843
+#elif (GL_RGB16F) != (34843)
+#error "GL_RGB16F differs from the system GL headers"
+#endif
+
+#if !defined(GL_RGBA32F)
+#define GL_RGBA32F 34836
+#elif (GL_RGBA32F) != (34836)
+#error "GL_RGBA32F differs from the system GL headers"
+#endif
+
+#if !defined(GL_RGB32F)
+#define GL_RGB32F 34837
+#elif (GL_RGB32F) != (34837)
+#error "GL_RGB32F differs from the system GL headers"
+#endif
+
+#if !defined(GL_DEPTH_COMPONENT32F)
+#define GL_DEPTH_COMPONENT32F 36012
+#elif (GL_DEPTH_COMPONENT32F) != (36012)
+#error "GL_DEPTH_COMPONENT32F differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_3D_ZOFFSET_EXT)
+#define GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_3D_ZOFFSET_EXT 36052
+#elif (GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_3D_ZOFFSET_EXT) != (36052)
+#error "GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_3D_ZOFFSET_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_DEPTH_STENCIL_EXT)
+#define GL_DEPTH_STENCIL_EXT 34041
+#elif (GL_DEPTH_STENCIL_EXT) != (34041)
+#error "GL_DEPTH_STENCIL_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_UNSIGNED_INT_24_8_EXT)
+#define GL_UNSIGNED_INT_24_8_EXT 34042
+#elif (GL_UNSIGNED_INT_24_8_EXT) != (34042)
+#error "GL_UNSIGNED_INT_24_8_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_DEPTH24_STENCIL8_EXT)
+#define GL_DEPTH24_STENCIL8_EXT 35056
+#elif (GL_DEPTH24_STENCIL8_EXT) != (35056)
+#error "GL_DEPTH24_STENCIL8_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_TEXTURE_STENCIL_SIZE_EXT)
+#define GL_TEXTURE_STENCIL_SIZE_EXT 35057
+#elif (GL_TEXTURE_STENCIL_SIZE_EXT) != (35057)
+#error "GL_TEXTURE_STENCIL_SIZE_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_INVALID_FRAMEBUFFER_OPERATION)
+#define GL_INVALID_FRAMEBUFFER_OPERATION 1286
+#elif (GL_INVALID_FRAMEBUFFER_OPERATION) != (1286)
+#error "GL_INVALID_FRAMEBUFFER_OPERATION differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING)
+#define GL_FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING 33296
+#elif (GL_FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING) != (33296)
+#error "GL_FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE)
+#define GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE 33297
+#elif (GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE) != (33297)
+#error "GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_ATTACHMENT_RED_SIZE)
+#define GL_FRAMEBUFFER_ATTACHMENT_RED_SIZE 33298
+#elif (GL_FRAMEBUFFER_ATTACHMENT_RED_SIZE) != (33298)
+#error "GL_FRAMEBUFFER_ATTACHMENT_RED_SIZE differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_ATTACHMENT_GREEN_SIZE)
+#define GL_FRAMEBUFFER_ATTACHMENT_GREEN_SIZE 33299
+#elif (GL_FRAMEBUFFER_ATTACHMENT_GREEN_SIZE) != (33299)
+#error "GL_FRAMEBUFFER_ATTACHMENT_GREEN_SIZE differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_ATTACHMENT_BLUE_SIZE)
+#define GL_FRAMEBUFFER_ATTACHMENT_BLUE_SIZE 33300
+#elif (GL_FRAMEBUFFER_ATTACHMENT_BLUE_SIZE) != (33300)
+#error "GL_FRAMEBUFFER_ATTACHMENT_BLUE_SIZE differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_ATTACHMENT_ALPHA_SIZE)
+#define GL_FRAMEBUFFER_ATTACHMENT_ALPHA_SIZE 33301
+#elif (GL_FRAMEBUFFER_ATTACHMENT_ALPHA_SIZE) != (33301)
+#error "GL_FRAMEBUFFER_ATTACHMENT_ALPHA_SIZE differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE)
+#define GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE 33302
+#elif (GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE) != (33302)
+#error "GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE)
+#define GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE 33303
+#elif (GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE) != (33303)
+#error "GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_DEFAULT)
+#define GL_FRAMEBUFFER_DEFAULT 33304
+#elif (GL_FRAMEBUFFER_DEFAULT) != (33304)
+#error "GL_FRAMEBUFFER_DEFAULT differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_UNDEFINED)
+#define GL_FRAMEBUFFER_UNDEFINED 33305
+#elif (GL_FRAMEBUFFER_UNDEFINED) != (33305)
+#error "GL_FRAMEBUFFER_UNDEFINED differs from the system GL headers"
+#endif
+
+#if !defined(GL_DEPTH_STENCIL_ATTACHMENT)
+#define GL_DEPTH_STENCIL_ATTACHMENT 33306
+#elif (GL_DEPTH_STENCIL_ATTACHMENT) != (33306)
+#error "GL_DEPTH_STENCIL_ATTACHMENT differs from the system GL headers"
+#endif
+
+#if !defined(GL_MAX_RENDERBUFFER_SIZE)
+#define GL_MAX_RENDERBUFFER_SIZE 34024
+#elif (GL_MAX_RENDERBUFFER_SIZE) != (34024)
+#error "GL_MAX_RENDERBUFFER_SIZE differs from the system GL headers"
+#endif
+
+#if !defined(GL_TEXTURE_STENCIL_SIZE)
+#define GL_TEXTURE_STENCIL_SIZE 35057
+#elif (GL_TEXTURE_STENCIL_SIZE) != (35057)
+#error "GL_TEXTURE_STENCIL_SIZE differs from the system GL headers"
+#endif
+
+#if !defined(GL_UNSIGNED_NORMALIZED)
+#define GL_UNSIGNED_NORMALIZED 35863
+#elif (GL_UNSIGNED_NORMALIZED) != (35863)
+#error "GL_UNSIGNED_NORMALIZED differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_BINDING)
+#define GL_FRAMEBUFFER_BINDING 36006
+#elif (GL_FRAMEBUFFER_BINDING) != (36006)
+#error "GL_FRAMEBUFFER_BINDING differs from the system GL headers"
+#endif
+
+#if !defined(GL_DRAW_FRAMEBUFFER_BINDING)
+#define GL_DRAW_FRAMEBUFFER_BINDING 36006
+#elif (GL_DRAW_FRAMEBUFFER_BINDING) != (36006)
+#error "GL_DRAW_FRAMEBUFFER_BINDING differs from the system GL headers"
+#endif
+
+#if !defined(GL_RENDERBUFFER_BINDING)
+#define GL_RENDERBUFFER_BINDING 36007
+#elif (GL_RENDERBUFFER_BINDING) != (36007)
+#error "GL_RENDERBUFFER_BINDING differs from the system GL headers"
+#endif
+
+#if !defined(GL_READ_FRAMEBUFFER)
+#define GL_READ_FRAMEBUFFER 36008
+#elif (GL_READ_FRAMEBUFFER) != (36008)
+#error "GL_READ_FRAMEBUFFER differs from the system GL headers"
+#endif
+
+#if !defined(GL_DRAW_FRAMEBUFFER)
+#define GL_DRAW_FRAMEBUFFER 36009
+#elif (GL_DRAW_FRAMEBUFFER) != (36009)
+#error "GL_DRAW_FRAMEBUFFER differs from the system GL headers"
+#endif
+
+#if !defined(GL_READ_FRAMEBUFFER_BINDING)
+#define GL_READ_FRAMEBUFFER_BINDING 36010
+#elif (GL_READ_FRAMEBUFFER_BINDING) != (36010)
+#error "GL_READ_FRAMEBUFFER_BINDING differs from the system GL headers"
+#endif
+
+#if !defined(GL_RENDERBUFFER_SAMPLES)
+#define GL_RENDERBUFFER_SAMPLES 36011
+#elif (GL_RENDERBUFFER_SAMPLES) != (36011)
+#error "GL_RENDERBUFFER_SAMPLES differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE)
+#define GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE 36048
+#elif (GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE) != (36048)
+#error "GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME)
+#define GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME 36049
+#elif (GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME) != (36049)
+#error "GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL)
+#define GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL 36050
+#elif (GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL) != (36050)
+#error "GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE)
+#define GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE 36051
+#elif (GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE) != (36051)
+#error "GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LAYER)
+#define GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LAYER 36052
+#elif (GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LAYER) != (36052)
+#error "GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LAYER differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_COMPLETE)
+#define GL_FRAMEBUFFER_COMPLETE 36053
+#elif (GL_FRAMEBUFFER_COMPLETE) != (36053)
+#error "GL_FRAMEBUFFER_COMPLETE differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT)
+#define GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT 36054
+#elif (GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT) != (36054)
+#error "GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT)
+#define GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT 36055
+#elif (GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT) != (36055)
+#error "GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER)
+#define GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER 36059
+#elif (GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER) != (36059)
+#error "GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER)
+#define GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER 36060
+#elif (GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER) != (36060)
+#error "GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_UNSUPPORTED)
+#define GL_FRAMEBUFFER_UNSUPPORTED 36061
+#elif (GL_FRAMEBUFFER_UNSUPPORTED) != (36061)
+#error "GL_FRAMEBUFFER_UNSUPPORTED differs from the system GL headers"
+#endif
+
+#if !defined(GL_MAX_COLOR_ATTACHMENTS)
+#define GL_MAX_COLOR_ATTACHMENTS 36063
+#elif (GL_MAX_COLOR_ATTACHMENTS) != (36063)
+#error "GL_MAX_COLOR_ATTACHMENTS differs from the system GL headers"
+#endif
+
+#if !defined(GL_COLOR_ATTACHMENT0)
+#define GL_COLOR_ATTACHMENT0 36064
+#elif (GL_COLOR_ATTACHMENT0) != (36064)
+#error "GL_COLOR_ATTACHMENT0 differs from the system GL headers"
+#endif
+
+#if !defined(GL_COLOR_ATTACHMENT1)
+#define GL_COLOR_ATTACHMENT1 36065
+#elif (GL_COLOR_ATTACHMENT1) != (36065)
+#error "GL_COLOR_ATTACHMENT1 differs from the system GL headers"
+#endif
+
+#if !defined(GL_COLOR_ATTACHMENT2)
+#define GL_COLOR_ATTACHMENT2 36066
+#elif (GL_COLOR_ATTACHMENT2) != (36066)
+#error "GL_COLOR_ATTACHMENT2 differs from the system GL headers"
+#endif
+
+#if !defined(GL_COLOR_ATTACHMENT3)
+#define GL_COLOR_ATTACHMENT3 36067
+#elif (GL_COLOR_ATTACHMENT3) != (36067)
+#error "GL_COLOR_ATTACHMENT3 differs from the system GL headers"
+#endif
+
+#if !defined(GL_COLOR_ATTACHMENT4)
+#define GL_COLOR_ATTACHMENT4 36068
+#elif (GL_COLOR_ATTACHMENT4) != (36068)
+#error "GL_COLOR_ATTACHMENT4 differs from the system GL headers"
+#endif
+
+#if !defined(GL_COLOR_ATTACHMENT5)
+#define GL_COLOR_ATTACHMENT5 36069
+#elif (GL_COLOR_ATTACHMENT5) != (36069)
+#error "GL_COLOR_ATTACHMENT5 differs from the system GL headers"
+#endif
+
+#if !defined(GL_COLOR_ATTACHMENT6)
+#define GL_COLOR_ATTACHMENT6 36070
+#elif (GL_COLOR_ATTACHMENT6) != (36070)
+#error "GL_COLOR_ATTACHMENT6 differs from the system GL headers"
+#endif
+
+#if !defined(GL_COLOR_ATTACHMENT7)
+#define GL_COLOR_ATTACHMENT7 36071
+#elif (GL_COLOR_ATTACHMENT7) != (36071)
+#error "GL_COLOR_ATTACHMENT7 differs from the system GL headers"
+#endif
+
+#if !defined(GL_COLOR_ATTACHMENT8)
+#define GL_COLOR_ATTACHMENT8 36072
+#elif (GL_COLOR_ATTACHMENT8) != (36072)
+#error "GL_COLOR_ATTACHMENT8 differs from the system GL headers"
+#endif
+
+#if !defined(GL_COLOR_ATTACHMENT9)
+#define GL_COLOR_ATTACHMENT9 36073
+#elif (GL_COLOR_ATTACHMENT9) != (36073)
+#error "GL_COLOR_ATTACHMENT9 differs from the system GL headers"
+#endif
+
+#if !defined(GL_COLOR_ATTACHMENT10)
+#define GL_COLOR_ATTACHMENT10 36074
+#elif (GL_COLOR_ATTACHMENT10) != (36074)
+#error "GL_COLOR_ATTACHMENT10 differs from the system GL headers"
+#endif
+
+#if !defined(GL_COLOR_ATTACHMENT11)
+#define GL_COLOR_ATTACHMENT11 36075
+#elif (GL_COLOR_ATTACHMENT11) != (36075)
+#error "GL_COLOR_ATTACHMENT11 differs from the system GL headers"
+#endif
+
+#if !defined(GL_COLOR_ATTACHMENT12)
+#define GL_COLOR_ATTACHMENT12 36076
+#elif (GL_COLOR_ATTACHMENT12) != (36076)
+#error "GL_COLOR_ATTACHMENT12 differs from the system GL headers"
+#endif
+
+#if !defined(GL_COLOR_ATTACHMENT13)
+#define GL_COLOR_ATTACHMENT13 36077
+#elif (GL_COLOR_ATTACHMENT13) != (36077)
+#error "GL_COLOR_ATTACHMENT13 differs from the system GL headers"
+#endif
+
+#if !defined(GL_COLOR_ATTACHMENT14)
+#define GL_COLOR_ATTACHMENT14 36078
+#elif (GL_COLOR_ATTACHMENT14) != (36078)
+#error "GL_COLOR_ATTACHMENT14 differs from the system GL headers"
+#endif
+
+#if !defined(GL_COLOR_ATTACHMENT15)
+#define GL_COLOR_ATTACHMENT15 36079
+#elif (GL_COLOR_ATTACHMENT15) != (36079)
+#error "GL_COLOR_ATTACHMENT15 differs from the system GL headers"
+#endif
+
+#if !defined(GL_COLOR_ATTACHMENT16)
+#define GL_COLOR_ATTACHMENT16 36080
+#elif (GL_COLOR_ATTACHMENT16) != (36080)
+#error "GL_COLOR_ATTACHMENT16 differs from the system GL headers"
+#endif
+
+#if !defined(GL_COLOR_ATTACHMENT17)
+#define GL_COLOR_ATTACHMENT17 36081
+#elif (GL_COLOR_ATTACHMENT17) != (36081)
+#error "GL_COLOR_ATTACHMENT17 differs from the system GL headers"
+#endif
+
+#if !defined(GL_COLOR_ATTACHMENT18)
+#define GL_COLOR_ATTACHMENT18 36082
+#elif (GL_COLOR_ATTACHMENT18) != (36082)
+#error "GL_COLOR_ATTACHMENT18 differs from the system GL headers"
+#endif
+
+#if !defined(GL_COLOR_ATTACHMENT19)
+#define GL_COLOR_ATTACHMENT19 36083
+#elif (GL_COLOR_ATTACHMENT19) != (36083)
+#error "GL_COLOR_ATTACHMENT19 differs from the system GL headers"
+#endif
+
+#if !defined(GL_COLOR_ATTACHMENT20)
+#define GL_COLOR_ATTACHMENT20 36084
+#elif (GL_COLOR_ATTACHMENT20) != (36084)
+#error "GL_COLOR_ATTACHMENT20 differs from the system GL headers"
+#endif
+
+#if !defined(GL_COLOR_ATTACHMENT21)
+#define GL_COLOR_ATTACHMENT21 36085
+#elif (GL_COLOR_ATTACHMENT21) != (36085)
+#error "GL_COLOR_ATTACHMENT21 differs from the system GL headers"
+#endif
+
+#if !defined(GL_COLOR_ATTACHMENT22)
+#define GL_COLOR_ATTACHMENT22 36086
+#elif (GL_COLOR_ATTACHMENT22) != (36086)
+#error "GL_COLOR_ATTACHMENT22 differs from the system GL headers"
+#endif
+
+#if !defined(GL_COLOR_ATTACHMENT23)
+#define GL_COLOR_ATTACHMENT23 36087
+#elif (GL_COLOR_ATTACHMENT23) != (36087)
+#error "GL_COLOR_ATTACHMENT23 differs from the system GL headers"
+#endif
+
+#if !defined(GL_COLOR_ATTACHMENT24)
+#define GL_COLOR_ATTACHMENT24 36088
+#elif (GL_COLOR_ATTACHMENT24) != (36088)
+#error "GL_COLOR_ATTACHMENT24 differs from the system GL headers"
+#endif
+
+#if !defined(GL_COLOR_ATTACHMENT25)
+#define GL_COLOR_ATTACHMENT25 36089
+#elif (GL_COLOR_ATTACHMENT25) != (36089)
+#error "GL_COLOR_ATTACHMENT25 differs from the system GL headers"
+#endif
+
+#if !defined(GL_COLOR_ATTACHMENT26)
+#define GL_COLOR_ATTACHMENT26 36090
+#elif (GL_COLOR_ATTACHMENT26) != (36090)
+#error "GL_COLOR_ATTACHMENT26 differs from the system GL headers"
+#endif
+
+#if !defined(GL_COLOR_ATTACHMENT27)
+#define GL_COLOR_ATTACHMENT27 36091
+#elif (GL_COLOR_ATTACHMENT27) != (36091)
+#error "GL_COLOR_ATTACHMENT27 differs from the system GL headers"
+#endif
+
+#if !defined(GL_COLOR_ATTACHMENT28)
+#define GL_COLOR_ATTACHMENT28 36092
+#elif (GL_COLOR_ATTACHMENT28) != (36092)
+#error "GL_COLOR_ATTACHMENT28 differs from the system GL headers"
+#endif
+
+#if !defined(GL_COLOR_ATTACHMENT29)
+#define GL_COLOR_ATTACHMENT29 36093
+#elif (GL_COLOR_ATTACHMENT29) != (36093)
+#error "GL_COLOR_ATTACHMENT29 differs from the system GL headers"
+#endif
+
+#if !defined(GL_COLOR_ATTACHMENT30)
+#define GL_COLOR_ATTACHMENT30 36094
+#elif (GL_COLOR_ATTACHMENT30) != (36094)
+#error "GL_COLOR_ATTACHMENT30 differs from the system GL headers"
+#endif
+
+#if !defined(GL_COLOR_ATTACHMENT31)
+#define GL_COLOR_ATTACHMENT31 36095
+#elif (GL_COLOR_ATTACHMENT31) != (36095)
+#error "GL_COLOR_ATTACHMENT31 differs from the system GL headers"
+#endif
+
+#if !defined(GL_DEPTH_ATTACHMENT)
+#define GL_DEPTH_ATTACHMENT 36096
+#elif (GL_DEPTH_ATTACHMENT) != (36096)
+#error "GL_DEPTH_ATTACHMENT differs from the system GL headers"
+#endif
+
+#if !defined(GL_STENCIL_ATTACHMENT)
+#define GL_STENCIL_ATTACHMENT 36128
+#elif (GL_STENCIL_ATTACHMENT) != (36128)
+#error "GL_STENCIL_ATTACHMENT differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER)
+#define GL_FRAMEBUFFER 36160
+#elif (GL_FRAMEBUFFER) != (36160)
+#error "GL_FRAMEBUFFER differs from the system GL headers"
+#endif
+
+#if !defined(GL_RENDERBUFFER)
+#define GL_RENDERBUFFER 36161
+#elif (GL_RENDERBUFFER) != (36161)
+#error "GL_RENDERBUFFER differs from the system GL headers"
+#endif
+
+#if !defined(GL_RENDERBUFFER_WIDTH)
+#define GL_RENDERBUFFER_WIDTH 36162
+#elif (GL_RENDERBUFFER_WIDTH) != (36162)
+#error "GL_RENDERBUFFER_WIDTH differs from the system GL headers"
+#endif
+
+#if !defined(GL_RENDERBUFFER_HEIGHT)
+#define GL_RENDERBUFFER_HEIGHT 36163
+#elif (GL_RENDERBUFFER_HEIGHT) != (36163)
+#error "GL_RENDERBUFFER_HEIGHT differs from the system GL headers"
+#endif
+
+#if !defined(GL_RENDERBUFFER_INTERNAL_FORMAT)
+#define GL_RENDERBUFFER_INTERNAL_FORMAT 36164
+#elif (GL_RENDERBUFFER_INTERNAL_FORMAT) != (36164)
+#error "GL_RENDERBUFFER_INTERNAL_FORMAT differs from the system GL headers"
+#endif
+
+#if !defined(GL_STENCIL_INDEX1)
+#define GL_STENCIL_INDEX1 36166
+#elif (GL_STENCIL_INDEX1) != (36166)
+#error "GL_STENCIL_INDEX1 differs from the system GL headers"
+#endif
+
+#if !defined(GL_STENCIL_INDEX4)
+#define GL_STENCIL_INDEX4 36167
+#elif (GL_STENCIL_INDEX4) != (36167)
+#error "GL_STENCIL_INDEX4 differs from the system GL headers"
+#endif
+
+#if !defined(GL_STENCIL_INDEX8)
+#define GL_STENCIL_INDEX8 36168
+#elif (GL_STENCIL_INDEX8) != (36168)
+#error "GL_STENCIL_INDEX8 differs from the system GL headers"
+#endif
+
+#if !defined(GL_STENCIL_INDEX16)
+#define GL_STENCIL_INDEX16 36169
+#elif (GL_STENCIL_INDEX16) != (36169)
+#error "GL_STENCIL_INDEX16 differs from the system GL headers"
+#endif
+
+#if !defined(GL_RENDERBUFFER_RED_SIZE)
+#define GL_RENDERBUFFER_RED_SIZE 36176
+#elif (GL_RENDERBUFFER_RED_SIZE) != (36176)
+#error "GL_RENDERBUFFER_RED_SIZE differs from the system GL headers"
+#endif
+
+#if !defined(GL_RENDERBUFFER_GREEN_SIZE)
+#define GL_RENDERBUFFER_GREEN_SIZE 36177
+#elif (GL_RENDERBUFFER_GREEN_SIZE) != (36177)
+#error "GL_RENDERBUFFER_GREEN_SIZE differs from the system GL headers"
+#endif
+
+#if !defined(GL_RENDERBUFFER_BLUE_SIZE)
+#define GL_RENDERBUFFER_BLUE_SIZE 36178
+#elif (GL_RENDERBUFFER_BLUE_SIZE) != (36178)
+#error "GL_RENDERBUFFER_BLUE_SIZE differs from the system GL headers"
+#endif
+
+#if !defined(GL_RENDERBUFFER_ALPHA_SIZE)
+#define GL_RENDERBUFFER_ALPHA_SIZE 36179
+#elif (GL_RENDERBUFFER_ALPHA_SIZE) != (36179)
+#error "GL_RENDERBUFFER_ALPHA_SIZE differs from the system GL headers"
+#endif
+
+#if !defined(GL_RENDERBUFFER_DEPTH_SIZE)
+#define GL_RENDERBUFFER_DEPTH_SIZE 36180
+#elif (GL_RENDERBUFFER_DEPTH_SIZE) != (36180)
+#error "GL_RENDERBUFFER_DEPTH_SIZE differs from the system GL headers"
+#endif
+
+#if !defined(GL_RENDERBUFFER_STENCIL_SIZE)
+#define GL_RENDERBUFFER_STENCIL_SIZE 36181
+#elif (GL_RENDERBUFFER_STENCIL_SIZE) != (36181)
+#error "GL_RENDERBUFFER_STENCIL_SIZE differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE)
+#define GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE 36182
+#elif (GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE) != (36182)
+#error "GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE differs from the system GL headers"
+#endif
+
+#if !defined(GL_MAX_SAMPLES)
+#define GL_MAX_SAMPLES 36183
+#elif (GL_MAX_SAMPLES) != (36183)
+#error "GL_MAX_SAMPLES differs from the system GL headers"
+#endif
+
+#if !defined(GL_INDEX)
+#define GL_INDEX 33314
+#elif (GL_INDEX) != (33314)
+#error "GL_INDEX differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_SRGB)
+#define GL_FRAMEBUFFER_SRGB 36281
+#elif (GL_FRAMEBUFFER_SRGB) != (36281)
+#error "GL_FRAMEBUFFER_SRGB differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_ATTACHMENT_LAYERED)
+#define GL_FRAMEBUFFER_ATTACHMENT_LAYERED 36263
+#elif (GL_FRAMEBUFFER_ATTACHMENT_LAYERED) != (36263)
+#error "GL_FRAMEBUFFER_ATTACHMENT_LAYERED differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS)
+#define GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS 36264
+#elif (GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS) != (36264)
+#error "GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_BARRIER_BIT)
+#define GL_FRAMEBUFFER_BARRIER_BIT 1024
+#elif (GL_FRAMEBUFFER_BARRIER_BIT) != (1024)
+#error "GL_FRAMEBUFFER_BARRIER_BIT differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_DEFAULT_WIDTH)
+#define GL_FRAMEBUFFER_DEFAULT_WIDTH 37648
+#elif (GL_FRAMEBUFFER_DEFAULT_WIDTH) != (37648)
+#error "GL_FRAMEBUFFER_DEFAULT_WIDTH differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_DEFAULT_HEIGHT)
+#define GL_FRAMEBUFFER_DEFAULT_HEIGHT 37649
+#elif (GL_FRAMEBUFFER_DEFAULT_HEIGHT) != (37649)
+#error "GL_FRAMEBUFFER_DEFAULT_HEIGHT differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_DEFAULT_LAYERS)
+#define GL_FRAMEBUFFER_DEFAULT_LAYERS 37650
+#elif (GL_FRAMEBUFFER_DEFAULT_LAYERS) != (37650)
+#error "GL_FRAMEBUFFER_DEFAULT_LAYERS differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_DEFAULT_SAMPLES)
+#define GL_FRAMEBUFFER_DEFAULT_SAMPLES 37651
+#elif (GL_FRAMEBUFFER_DEFAULT_SAMPLES) != (37651)
+#error "GL_FRAMEBUFFER_DEFAULT_SAMPLES differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_DEFAULT_FIXED_SAMPLE_LOCATIONS)
+#define GL_FRAMEBUFFER_DEFAULT_FIXED_SAMPLE_LOCATIONS 37652
+#elif (GL_FRAMEBUFFER_DEFAULT_FIXED_SAMPLE_LOCATIONS) != (37652)
+#error "GL_FRAMEBUFFER_DEFAULT_FIXED_SAMPLE_LOCATIONS differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_RENDERABLE)
+#define GL_FRAMEBUFFER_RENDERABLE 33417
+#elif (GL_FRAMEBUFFER_RENDERABLE) != (33417)
+#error "GL_FRAMEBUFFER_RENDERABLE differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_RENDERABLE_LAYERED)
+#define GL_FRAMEBUFFER_RENDERABLE_LAYERED 33418
+#elif (GL_FRAMEBUFFER_RENDERABLE_LAYERED) != (33418)
+#error "GL_FRAMEBUFFER_RENDERABLE_LAYERED differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_BLEND)
+#define GL_FRAMEBUFFER_BLEND 33419
+#elif (GL_FRAMEBUFFER_BLEND) != (33419)
+#error "GL_FRAMEBUFFER_BLEND differs from the system GL headers"
+#endif
+
+#if !defined(GL_READ_FRAMEBUFFER_EXT)
+#define GL_READ_FRAMEBUFFER_EXT 36008
+#elif (GL_READ_FRAMEBUFFER_EXT) != (36008)
+#error "GL_READ_FRAMEBUFFER_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_DRAW_FRAMEBUFFER_EXT)
+#define GL_DRAW_FRAMEBUFFER_EXT 36009
+#elif (GL_DRAW_FRAMEBUFFER_EXT) != (36009)
+#error "GL_DRAW_FRAMEBUFFER_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_DRAW_FRAMEBUFFER_BINDING_EXT)
+#define GL_DRAW_FRAMEBUFFER_BINDING_EXT 36006
+#elif (GL_DRAW_FRAMEBUFFER_BINDING_EXT) != (36006)
+#error "GL_DRAW_FRAMEBUFFER_BINDING_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_READ_FRAMEBUFFER_BINDING_EXT)
+#define GL_READ_FRAMEBUFFER_BINDING_EXT 36010
+#elif (GL_READ_FRAMEBUFFER_BINDING_EXT) != (36010)
+#error "GL_READ_FRAMEBUFFER_BINDING_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_RENDERBUFFER_SAMPLES_EXT)
+#define GL_RENDERBUFFER_SAMPLES_EXT 36011
+#elif (GL_RENDERBUFFER_SAMPLES_EXT) != (36011)
+#error "GL_RENDERBUFFER_SAMPLES_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE_EXT)
+#define GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE_EXT 36182
+#elif (GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE_EXT) != (36182)
+#error "GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_BINDING_EXT)
+#define GL_FRAMEBUFFER_BINDING_EXT 36006
+#elif (GL_FRAMEBUFFER_BINDING_EXT) != (36006)
+#error "GL_FRAMEBUFFER_BINDING_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_RENDERBUFFER_BINDING_EXT)
+#define GL_RENDERBUFFER_BINDING_EXT 36007
+#elif (GL_RENDERBUFFER_BINDING_EXT) != (36007)
+#error "GL_RENDERBUFFER_BINDING_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE_EXT)
+#define GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE_EXT 36048
+#elif (GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE_EXT) != (36048)
+#error "GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME_EXT)
+#define GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME_EXT 36049
+#elif (GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME_EXT) != (36049)
+#error "GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL_EXT)
+#define GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL_EXT 36050
+#elif (GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL_EXT) != (36050)
+#error "GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE_EXT)
+#define GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE_EXT 36051
+#elif (GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE_EXT) != (36051)
+#error "GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_COMPLETE_EXT)
+#define GL_FRAMEBUFFER_COMPLETE_EXT 36053
+#elif (GL_FRAMEBUFFER_COMPLETE_EXT) != (36053)
+#error "GL_FRAMEBUFFER_COMPLETE_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT_EXT)
+#define GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT_EXT 36054
+#elif (GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT_EXT) != (36054)
+#error "GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT_EXT)
+#define GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT_EXT 36055
+#elif (GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT_EXT) != (36055)
+#error "GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_INCOMPLETE_DIMENSIONS_EXT)
+#define GL_FRAMEBUFFER_INCOMPLETE_DIMENSIONS_EXT 36057
+#elif (GL_FRAMEBUFFER_INCOMPLETE_DIMENSIONS_EXT) != (36057)
+#error "GL_FRAMEBUFFER_INCOMPLETE_DIMENSIONS_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_INCOMPLETE_FORMATS_EXT)
+#define GL_FRAMEBUFFER_INCOMPLETE_FORMATS_EXT 36058
+#elif (GL_FRAMEBUFFER_INCOMPLETE_FORMATS_EXT) != (36058)
+#error "GL_FRAMEBUFFER_INCOMPLETE_FORMATS_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER_EXT)
+#define GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER_EXT 36059
+#elif (GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER_EXT) != (36059)
+#error "GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER_EXT)
+#define GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER_EXT 36060
+#elif (GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER_EXT) != (36060)
+#error "GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_UNSUPPORTED_EXT)
+#define GL_FRAMEBUFFER_UNSUPPORTED_EXT 36061
+#elif (GL_FRAMEBUFFER_UNSUPPORTED_EXT) != (36061)
+#error "GL_FRAMEBUFFER_UNSUPPORTED_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_EXT)
+#define GL_FRAMEBUFFER_EXT 36160
+#elif (GL_FRAMEBUFFER_EXT) != (36160)
+#error "GL_FRAMEBUFFER_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_RENDERBUFFER_EXT)
+#define GL_RENDERBUFFER_EXT 36161
+#elif (GL_RENDERBUFFER_EXT) != (36161)
+#error "GL_RENDERBUFFER_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_RENDERBUFFER_WIDTH_EXT)
+#define GL_RENDERBUFFER_WIDTH_EXT 36162
+#elif (GL_RENDERBUFFER_WIDTH_EXT) != (36162)
+#error "GL_RENDERBUFFER_WIDTH_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_RENDERBUFFER_HEIGHT_EXT)
+#define GL_RENDERBUFFER_HEIGHT_EXT 36163
+#elif (GL_RENDERBUFFER_HEIGHT_EXT) != (36163)
+#error "GL_RENDERBUFFER_HEIGHT_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_RENDERBUFFER_INTERNAL_FORMAT_EXT)
+#define GL_RENDERBUFFER_INTERNAL_FORMAT_EXT 36164
+#elif (GL_RENDERBUFFER_INTERNAL_FORMAT_EXT) != (36164)
+#error "GL_RENDERBUFFER_INTERNAL_FORMAT_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_RENDERBUFFER_RED_SIZE_EXT)
+#define GL_RENDERBUFFER_RED_SIZE_EXT 36176
+#elif (GL_RENDERBUFFER_RED_SIZE_EXT) != (36176)
+#error "GL_RENDERBUFFER_RED_SIZE_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_RENDERBUFFER_GREEN_SIZE_EXT)
+#define GL_RENDERBUFFER_GREEN_SIZE_EXT 36177
+#elif (GL_RENDERBUFFER_GREEN_SIZE_EXT) != (36177)
+#error "GL_RENDERBUFFER_GREEN_SIZE_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_RENDERBUFFER_BLUE_SIZE_EXT)
+#define GL_RENDERBUFFER_BLUE_SIZE_EXT 36178
+#elif (GL_RENDERBUFFER_BLUE_SIZE_EXT) != (36178)
+#error "GL_RENDERBUFFER_BLUE_SIZE_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_RENDERBUFFER_ALPHA_SIZE_EXT)
+#define GL_RENDERBUFFER_ALPHA_SIZE_EXT 36179
+#elif (GL_RENDERBUFFER_ALPHA_SIZE_EXT) != (36179)
+#error "GL_RENDERBUFFER_ALPHA_SIZE_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_RENDERBUFFER_DEPTH_SIZE_EXT)
+#define GL_RENDERBUFFER_DEPTH_SIZE_EXT 36180
+#elif (GL_RENDERBUFFER_DEPTH_SIZE_EXT) != (36180)
+#error "GL_RENDERBUFFER_DEPTH_SIZE_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_RENDERBUFFER_STENCIL_SIZE_EXT)
+#define GL_RENDERBUFFER_STENCIL_SIZE_EXT 36181
+#elif (GL_RENDERBUFFER_STENCIL_SIZE_EXT) != (36181)
+#error "GL_RENDERBUFFER_STENCIL_SIZE_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_SRGB_EXT)
+#define GL_FRAMEBUFFER_SRGB_EXT 36281
+#elif (GL_FRAMEBUFFER_SRGB_EXT) != (36281)
+#error "GL_FRAMEBUFFER_SRGB_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_SRGB_CAPABLE_EXT)
+#define GL_FRAMEBUFFER_SRGB_CAPABLE_EXT 36282
+#elif (GL_FRAMEBUFFER_SRGB_CAPABLE_EXT) != (36282)
+#error "GL_FRAMEBUFFER_SRGB_CAPABLE_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS_EXT)
+#define GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS_EXT 36264
+#elif (GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS_EXT) != (36264)
+#error "GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_INCOMPLETE_LAYER_COUNT_EXT)
+#define GL_FRAMEBUFFER_INCOMPLETE_LAYER_COUNT_EXT 36265
+#elif (GL_FRAMEBUFFER_INCOMPLETE_LAYER_COUNT_EXT) != (36265)
+#error "GL_FRAMEBUFFER_INCOMPLETE_LAYER_COUNT_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_ATTACHMENT_LAYERED_EXT)
+#define GL_FRAMEBUFFER_ATTACHMENT_LAYERED_EXT 36263
+#elif (GL_FRAMEBUFFER_ATTACHMENT_LAYERED_EXT) != (36263)
+#error "GL_FRAMEBUFFER_ATTACHMENT_LAYERED_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LAYER_EXT)
+#define GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LAYER_EXT 36052
+#elif (GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LAYER_EXT) != (36052)
+#error "GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LAYER_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_FRAMEBUFFER_BARRIER_BIT_EXT)
+#define GL_FRAMEBUFFER_BARRIER_BIT_EXT 1024
+#elif (GL_FRAMEBUFFER_BARRIER_BIT_EXT) != (1024)
+#error "GL_FRAMEBUFFER_BARRIER_BIT_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_MAX_SAMPLES_EXT)
+#define GL_MAX_SAMPLES_EXT 36183
+#elif (GL_MAX_SAMPLES_EXT) != (36183)
+#error "GL_MAX_SAMPLES_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_INVALID_FRAMEBUFFER_OPERATION_EXT)
+#define GL_INVALID_FRAMEBUFFER_OPERATION_EXT 1286
+#elif (GL_INVALID_FRAMEBUFFER_OPERATION_EXT) != (1286)
+#error "GL_INVALID_FRAMEBUFFER_OPERATION_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_MAX_RENDERBUFFER_SIZE_EXT)
+#define GL_MAX_RENDERBUFFER_SIZE_EXT 34024
+#elif (GL_MAX_RENDERBUFFER_SIZE_EXT) != (34024)
+#error "GL_MAX_RENDERBUFFER_SIZE_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_MAX_COLOR_ATTACHMENTS_EXT)
+#define GL_MAX_COLOR_ATTACHMENTS_EXT 36063
+#elif (GL_MAX_COLOR_ATTACHMENTS_EXT) != (36063)
+#error "GL_MAX_COLOR_ATTACHMENTS_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_COLOR_ATTACHMENT0_EXT)
+#define GL_COLOR_ATTACHMENT0_EXT 36064
+#elif (GL_COLOR_ATTACHMENT0_EXT) != (36064)
+#error "GL_COLOR_ATTACHMENT0_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_COLOR_ATTACHMENT1_EXT)
+#define GL_COLOR_ATTACHMENT1_EXT 36065
+#elif (GL_COLOR_ATTACHMENT1_EXT) != (36065)
+#error "GL_COLOR_ATTACHMENT1_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_COLOR_ATTACHMENT2_EXT)
+#define GL_COLOR_ATTACHMENT2_EXT 36066
+#elif (GL_COLOR_ATTACHMENT2_EXT) != (36066)
+#error "GL_COLOR_ATTACHMENT2_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_COLOR_ATTACHMENT3_EXT)
+#define GL_COLOR_ATTACHMENT3_EXT 36067
+#elif (GL_COLOR_ATTACHMENT3_EXT) != (36067)
+#error "GL_COLOR_ATTACHMENT3_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_COLOR_ATTACHMENT4_EXT)
+#define GL_COLOR_ATTACHMENT4_EXT 36068
+#elif (GL_COLOR_ATTACHMENT4_EXT) != (36068)
+#error "GL_COLOR_ATTACHMENT4_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_COLOR_ATTACHMENT5_EXT)
+#define GL_COLOR_ATTACHMENT5_EXT 36069
+#elif (GL_COLOR_ATTACHMENT5_EXT) != (36069)
+#error "GL_COLOR_ATTACHMENT5_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_COLOR_ATTACHMENT6_EXT)
+#define GL_COLOR_ATTACHMENT6_EXT 36070
+#elif (GL_COLOR_ATTACHMENT6_EXT) != (36070)
+#error "GL_COLOR_ATTACHMENT6_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_COLOR_ATTACHMENT7_EXT)
+#define GL_COLOR_ATTACHMENT7_EXT 36071
+#elif (GL_COLOR_ATTACHMENT7_EXT) != (36071)
+#error "GL_COLOR_ATTACHMENT7_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_COLOR_ATTACHMENT8_EXT)
+#define GL_COLOR_ATTACHMENT8_EXT 36072
+#elif (GL_COLOR_ATTACHMENT8_EXT) != (36072)
+#error "GL_COLOR_ATTACHMENT8_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_COLOR_ATTACHMENT9_EXT)
+#define GL_COLOR_ATTACHMENT9_EXT 36073
+#elif (GL_COLOR_ATTACHMENT9_EXT) != (36073)
+#error "GL_COLOR_ATTACHMENT9_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_COLOR_ATTACHMENT10_EXT)
+#define GL_COLOR_ATTACHMENT10_EXT 36074
+#elif (GL_COLOR_ATTACHMENT10_EXT) != (36074)
+#error "GL_COLOR_ATTACHMENT10_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_COLOR_ATTACHMENT11_EXT)
+#define GL_COLOR_ATTACHMENT11_EXT 36075
+#elif (GL_COLOR_ATTACHMENT11_EXT) != (36075)
+#error "GL_COLOR_ATTACHMENT11_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_COLOR_ATTACHMENT12_EXT)
+#define GL_COLOR_ATTACHMENT12_EXT 36076
+#elif (GL_COLOR_ATTACHMENT12_EXT) != (36076)
+#error "GL_COLOR_ATTACHMENT12_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_COLOR_ATTACHMENT13_EXT)
+#define GL_COLOR_ATTACHMENT13_EXT 36077
+#elif (GL_COLOR_ATTACHMENT13_EXT) != (36077)
+#error "GL_COLOR_ATTACHMENT13_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_COLOR_ATTACHMENT14_EXT)
+#define GL_COLOR_ATTACHMENT14_EXT 36078
+#elif (GL_COLOR_ATTACHMENT14_EXT) != (36078)
+#error "GL_COLOR_ATTACHMENT14_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_COLOR_ATTACHMENT15_EXT)
+#define GL_COLOR_ATTACHMENT15_EXT 36079
+#elif (GL_COLOR_ATTACHMENT15_EXT) != (36079)
+#error "GL_COLOR_ATTACHMENT15_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_DEPTH_ATTACHMENT_EXT)
+#define GL_DEPTH_ATTACHMENT_EXT 36096
+#elif (GL_DEPTH_ATTACHMENT_EXT) != (36096)
+#error "GL_DEPTH_ATTACHMENT_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_STENCIL_ATTACHMENT_EXT)
+#define GL_STENCIL_ATTACHMENT_EXT 36128
+#elif (GL_STENCIL_ATTACHMENT_EXT) != (36128)
+#error "GL_STENCIL_ATTACHMENT_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_STENCIL_INDEX1_EXT)
+#define GL_STENCIL_INDEX1_EXT 36166
+#elif (GL_STENCIL_INDEX1_EXT) != (36166)
+#error "GL_STENCIL_INDEX1_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_STENCIL_INDEX4_EXT)
+#define GL_STENCIL_INDEX4_EXT 36167
+#elif (GL_STENCIL_INDEX4_EXT) != (36167)
+#error "GL_STENCIL_INDEX4_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_STENCIL_INDEX8_EXT)
+#define GL_STENCIL_INDEX8_EXT 36168
+#elif (GL_STENCIL_INDEX8_EXT) != (36168)
+#error "GL_STENCIL_INDEX8_EXT differs from the system GL headers"
+#endif
+
+#if !defined(GL_STENCIL_INDEX16_EXT)
+#define GL_STENCIL_INDEX16_EXT 36169
+#elif (GL_STENCIL_INDEX16_EXT) != (36169)
+#error "GL_STENCIL_INDEX16_EXT differs from the system GL headers"
+#endif
+
 #if !defined(OSMESA_COLOR_INDEX)
 #define OSMESA_COLOR_INDEX GL_COLOR_INDEX
 #elif (OSMESA_COLOR_INDEX) != (GL_COLOR_INDEX)
@@ -6415,6 +7447,80 @@ void glFogi(GLenum pname, GLint param);
 void glFogfv(GLenum pname, const GLfloat *params);
 
 void glFogiv(GLenum pname, const GLint *params);
+
+void glGenFramebuffers(GLsizei n, GLuint *framebuffers);
+
+void glGenFramebuffersEXT(GLsizei n, GLuint *framebuffers);
+
+void glDeleteFramebuffers(GLsizei n, const GLuint *framebuffers);
+
+void glDeleteFramebuffersEXT(GLsizei n, const GLuint *framebuffers);
+
+void glBindFramebuffer(GLenum target, GLuint framebuffer);
+
+void glBindFramebufferEXT(GLenum target, GLuint framebuffer);
+
+GLboolean glIsFramebuffer(GLuint framebuffer);
+
+GLboolean glIsFramebufferEXT(GLuint framebuffer);
+
+GLenum glCheckFramebufferStatus(GLenum target);
+
+GLenum glCheckFramebufferStatusEXT(GLenum target);
+
+void glFramebufferTexture1D(GLenum target, GLenum attachment, GLenum textarget, GLuint texture, GLint level);
+
+void glFramebufferTexture1DEXT(GLenum target, GLenum attachment, GLenum textarget, GLuint texture, GLint level);
+
+void glFramebufferTexture2D(GLenum target, GLenum attachment, GLenum textarget, GLuint texture, GLint level);
+
+void glFramebufferTexture2DEXT(GLenum target, GLenum attachment, GLenum textarget, GLuint texture, GLint level);
+
+void glFramebufferTexture3D(GLenum target, GLenum attachment, GLenum textarget, GLuint texture, GLint level, GLint zoffset);
+
+void glFramebufferTexture3DEXT(GLenum target, GLenum attachment, GLenum textarget, GLuint texture, GLint level, GLint zoffset);
+
+void glFramebufferTextureLayer(GLenum target, GLenum attachment, GLuint texture, GLint level, GLint layer);
+
+void glFramebufferRenderbuffer(GLenum target, GLenum attachment, GLenum renderbuffertarget, GLuint renderbuffer);
+
+void glFramebufferRenderbufferEXT(GLenum target, GLenum attachment, GLenum renderbuffertarget, GLuint renderbuffer);
+
+void glGetFramebufferAttachmentParameteriv(GLenum target, GLenum attachment, GLenum pname, GLint *params);
+
+void glGetFramebufferAttachmentParameterivEXT(GLenum target, GLenum attachment, GLenum pname, GLint *params);
+
+void glGenRenderbuffers(GLsizei n, GLuint *renderbuffers);
+
+void glGenRenderbuffersEXT(GLsizei n, GLuint *renderbuffers);
+
+void glDeleteRenderbuffers(GLsizei n, const GLuint *renderbuffers);
+
+void glDeleteRenderbuffersEXT(GLsizei n, const GLuint *renderbuffers);
+
+void glBindRenderbuffer(GLenum target, GLuint renderbuffer);
+
+void glBindRenderbufferEXT(GLenum target, GLuint renderbuffer);
+
+GLboolean glIsRenderbuffer(GLuint renderbuffer);
+
+GLboolean glIsRenderbufferEXT(GLuint renderbuffer);
+
+void glRenderbufferStorage(GLenum target, GLenum internalformat, GLsizei width, GLsizei height);
+
+void glRenderbufferStorageEXT(GLenum target, GLenum internalformat, GLsizei width, GLsizei height);
+
+void glRenderbufferStorageMultisample(GLenum target, GLsizei samples, GLenum internalformat, GLsizei width, GLsizei height);
+
+void glRenderbufferStorageMultisampleEXT(GLenum target, GLsizei samples, GLenum internalformat, GLsizei width, GLsizei height);
+
+void glGetRenderbufferParameteriv(GLenum target, GLenum pname, GLint *params);
+
+void glGetRenderbufferParameterivEXT(GLenum target, GLenum pname, GLint *params);
+
+void glBlitFramebuffer(GLint src_x0, GLint src_y0, GLint src_x1, GLint src_y1, GLint dst_x0, GLint dst_y0, GLint dst_x1, GLint dst_y1, GLbitfield mask, GLenum filter);
+
+void glBlitFramebufferEXT(GLint src_x0, GLint src_y0, GLint src_x1, GLint src_y1, GLint dst_x0, GLint dst_y0, GLint dst_x1, GLint dst_y1, GLbitfield mask, GLenum filter);
 
 void glLightf(GLenum light, GLenum pname, GLfloat param);
 

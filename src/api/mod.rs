@@ -17,6 +17,7 @@ pub mod gl_arrays;
 pub mod gl_buffer_objects;
 pub mod gl_buffers;
 pub mod gl_fragment;
+pub mod gl_framebuffer;
 pub mod gl_lighting;
 pub mod gl_lists;
 pub mod gl_pixel_rect;

@@ -77,6 +77,22 @@ mod tests {
                  glIndexPointerEXT glNormalPointerEXT glTexCoordPointerEXT glVertexPointerEXT",
             ),
             "GL_EXT_draw_range_elements" => list("glDrawRangeElementsEXT"),
+            "GL_ARB_framebuffer_object" => list(
+                "glIsRenderbuffer glBindRenderbuffer glDeleteRenderbuffers glGenRenderbuffers \
+                 glRenderbufferStorage glRenderbufferStorageMultisample glGetRenderbufferParameteriv \
+                 glIsFramebuffer glBindFramebuffer glDeleteFramebuffers glGenFramebuffers \
+                 glCheckFramebufferStatus glFramebufferTexture1D glFramebufferTexture2D glFramebufferTexture3D \
+                 glFramebufferTextureLayer glFramebufferRenderbuffer glGetFramebufferAttachmentParameteriv \
+                 glBlitFramebuffer glGenerateMipmap",
+            ),
+            "GL_EXT_framebuffer_object" => list(
+                "glIsRenderbufferEXT glBindRenderbufferEXT glDeleteRenderbuffersEXT glGenRenderbuffersEXT \
+                 glRenderbufferStorageEXT glGetRenderbufferParameterivEXT glIsFramebufferEXT \
+                 glBindFramebufferEXT glDeleteFramebuffersEXT glGenFramebuffersEXT glCheckFramebufferStatusEXT \
+                 glFramebufferTexture1DEXT glFramebufferTexture2DEXT glFramebufferTexture3DEXT \
+                 glFramebufferRenderbufferEXT glGetFramebufferAttachmentParameterivEXT glGenerateMipmapEXT",
+            ),
+            "GL_EXT_framebuffer_blit" => list("glBlitFramebufferEXT"),
             "GL_EXT_multi_draw_arrays" => list("glMultiDrawArraysEXT glMultiDrawElementsEXT"),
             "GL_EXT_stencil_wrap" | "GL_NV_fog_distance" | "GL_NV_blend_square" | "GL_EXT_blend_logic_op" => vec![],
             other => panic!("{other}: list its entry points in this test"),

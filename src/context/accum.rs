@@ -57,7 +57,7 @@ impl Context {
         let Some(op) = AccumOp::from_gl(op) else {
             return self.error(GL_INVALID_ENUM);
         };
-        if self.config.visual.accum_bits == 0 {
+        if self.draw_config().accum_bits == 0 {
             return self.error(GL_INVALID_OPERATION);
         }
         self.flush_rendering();
@@ -74,7 +74,11 @@ impl Context {
         let read_slot = self.current_read_slot();
         let draw_targets = if op == AccumOp::Return { self.draw_targets() } else { Vec::new() };
         let color_masks = self.state.color.color_mask;
-        let clip = |bounds: Rect| self.clip_rect(bounds);
+        let scissor = self.state.scissor.test.then_some(self.state.scissor.rect);
+        let clip = move |bounds: Rect| match scissor {
+            Some([x, y, w, h]) => bounds.intersect(Rect::from_xywh(x, y, w, h)),
+            None => bounds,
+        };
         let _ = self.with_framebuffer(|fb| {
             let rect = clip(fb.bounds());
             if rect.is_empty() {
@@ -128,7 +132,7 @@ mod tests {
     }
 
     fn pixels(ctx: &Context) -> Vec<[u8; 4]> {
-        ctx.with_framebuffer(|fb| match fb.color(ColorSlot::FrontLeft).unwrap().pixels() {
+        ctx.with_window_framebuffer(|fb| match fb.color(ColorSlot::FrontLeft).unwrap().pixels() {
             ColorPixels::Unorm8(px) => px.clone(),
             _ => unreachable!(),
         })
@@ -136,7 +140,7 @@ mod tests {
     }
 
     fn accum_values(ctx: &Context) -> Vec<[i16; 4]> {
-        ctx.with_framebuffer(|fb| fb.accum().unwrap().pixels().to_vec()).unwrap()
+        ctx.with_window_framebuffer(|fb| fb.accum().unwrap().pixels().to_vec()).unwrap()
     }
 
     fn clear_color(ctx: &mut Context, rgba: [f32; 4]) {

@@ -54,15 +54,37 @@ impl Context {
         if !self.check_outside_begin_end() {
             return;
         }
-        let Some(slots) = slots_of(&self.config.visual, buffer) else {
-            return self.error(GL_INVALID_ENUM);
-        };
-        if buffer != GL_NONE && slots.is_empty() {
-            return self.error(GL_INVALID_OPERATION);
+        if let Err(e) = self.check_draw_buffer_name(buffer, true) {
+            return self.error(e);
         }
         let mut draw_buffers = [GL_NONE; MAX_DRAW_BUFFERS];
         draw_buffers[0] = buffer;
         self.state.color.draw_buffers = draw_buffers;
+    }
+
+    /// Whether `buffer` may be a draw buffer of the draw framebuffer (`several`: an enum
+    /// naming several buffers, as glDrawBuffer accepts); the error otherwise. A framebuffer
+    /// object takes GL_NONE and its color attachment points, attached or not.
+    fn check_draw_buffer_name(&self, buffer: GLenum, several: bool) -> Result<(), GLenum> {
+        let attachment = super::framebuffer_object::attachment_slot(buffer);
+        let attachment_enum = (GL_COLOR_ATTACHMENT0..GL_COLOR_ATTACHMENT0 + 32).contains(&buffer);
+        if self.fbo.draw != 0 {
+            return match attachment {
+                Some(_) => Ok(()),
+                None if named_slots(buffer).is_some() || attachment_enum => Err(GL_INVALID_OPERATION),
+                None => Err(GL_INVALID_ENUM),
+            };
+        }
+        let Some(slots) = slots_of(&self.config.visual, buffer) else {
+            return Err(if attachment_enum { GL_INVALID_OPERATION } else { GL_INVALID_ENUM });
+        };
+        if !several && !is_single_buffer_name(buffer) {
+            return Err(GL_INVALID_OPERATION);
+        }
+        if buffer != GL_NONE && slots.is_empty() {
+            return Err(GL_INVALID_OPERATION);
+        }
+        Ok(())
     }
 
     /// glDrawBuffers.
@@ -74,19 +96,11 @@ impl Context {
             return self.error(GL_INVALID_VALUE);
         }
         for (i, &b) in buffers.iter().enumerate() {
-            if named_slots(b).is_none() {
-                return self.error(GL_INVALID_ENUM);
+            if let Err(e) = self.check_draw_buffer_name(b, false) {
+                return self.error(e);
             }
-            if !is_single_buffer_name(b) {
+            if b != GL_NONE && buffers[..i].contains(&b) {
                 return self.error(GL_INVALID_OPERATION);
-            }
-            if b != GL_NONE {
-                if slots_of(&self.config.visual, b).is_none_or(|s| s.is_empty()) {
-                    return self.error(GL_INVALID_OPERATION);
-                }
-                if buffers[..i].contains(&b) {
-                    return self.error(GL_INVALID_OPERATION);
-                }
             }
         }
         let mut draw_buffers = [GL_NONE; MAX_DRAW_BUFFERS];
@@ -99,6 +113,18 @@ impl Context {
         if !self.check_outside_begin_end() {
             return;
         }
+        if self.fbo.read != 0 {
+            if super::framebuffer_object::attachment_slot(buffer).is_none() {
+                let known = named_slots(buffer).is_some()
+                    || (GL_COLOR_ATTACHMENT0..GL_COLOR_ATTACHMENT0 + 32).contains(&buffer);
+                return self.error(if known { GL_INVALID_OPERATION } else { GL_INVALID_ENUM });
+            }
+            self.state.pixel_mode.read_buffer = buffer;
+            return;
+        }
+        if (GL_COLOR_ATTACHMENT0..GL_COLOR_ATTACHMENT0 + 32).contains(&buffer) {
+            return self.error(GL_INVALID_OPERATION);
+        }
         if buffer == GL_FRONT_AND_BACK || named_slots(buffer).is_none() {
             return self.error(GL_INVALID_ENUM);
         }
@@ -110,14 +136,14 @@ impl Context {
 
     /// The slot glReadPixels/glAccum read from, if the read buffer names an existing one.
     pub fn current_read_slot(&self) -> Option<ColorSlot> {
-        read_slot(&self.config.visual, self.state.pixel_mode.read_buffer)
+        self.read_slot_of(self.state.pixel_mode.read_buffer)
     }
 
     /// Every (slot, draw buffer index) a fragment or clear writes to.
     pub fn draw_targets(&self) -> Vec<(ColorSlot, usize)> {
         let mut targets = Vec::new();
         for (index, &buffer) in self.state.color.draw_buffers.iter().enumerate() {
-            for slot in slots_of(&self.config.visual, buffer).unwrap_or_default() {
+            for slot in self.draw_slots(buffer).unwrap_or_default() {
                 targets.push((slot, index));
             }
         }
@@ -148,6 +174,9 @@ impl Context {
         if !self.rendering() {
             return;
         }
+        if !self.check_framebuffer_complete(true) {
+            return;
+        }
         // Clears run immediately, so the draws recorded before them run first.
         self.flush_rendering();
         let targets = self.draw_targets();
@@ -157,7 +186,11 @@ impl Context {
         let depth = (self.state.depth.write_mask, self.state.depth.clear);
         let stencil = (self.state.stencil.front.write_mask, self.state.stencil.clear);
         let accum_clear = self.state.accum.clear;
-        let clip = |bounds: Rect| self.clip_rect(bounds);
+        let scissor = self.state.scissor.test.then_some(self.state.scissor.rect);
+        let clip = move |bounds: Rect| match scissor {
+            Some([x, y, w, h]) => bounds.intersect(Rect::from_xywh(x, y, w, h)),
+            None => bounds,
+        };
         let _ = self.with_framebuffer(|fb| {
             let rect = clip(fb.bounds());
             if rect.is_empty() {
@@ -165,17 +198,14 @@ impl Context {
             }
             if mask & GL_COLOR_BUFFER_BIT != 0 {
                 for &(slot, index) in &targets {
+                    let Some(format) = fb.color_format(slot) else { continue };
+                    // ARB_color_buffer_float: fragment color clamping does not apply to
+                    // clears; only fixed-point buffers clamp the clear color (as Mesa).
+                    let value = if !format.is_float() { clear_color.map(|c| c.clamp(0.0, 1.0)) } else { clear_color };
                     if let Some(buffer) = fb.color_mut(slot) {
-                        // ARB_color_buffer_float: fragment color clamping does not apply to
-                        // clears; only fixed-point buffers clamp the clear color (as Mesa).
-                        let value = if !buffer.format().is_float() {
-                            clear_color.map(|c| c.clamp(0.0, 1.0))
-                        } else {
-                            clear_color
-                        };
                         buffer.clear(rect, value, color_masks[index]);
-                        fb.clear_color_samples(slot, rect, value, color_masks[index]);
                     }
+                    fb.clear_color_samples(slot, rect, value, color_masks[index]);
                 }
             }
             if mask & GL_DEPTH_BUFFER_BIT != 0 && depth.0 {

@@ -294,8 +294,13 @@ impl Context {
         self.scene = Some(scene);
     }
 
-    /// The bound framebuffer's size, color format and depth/stencil bits.
-    fn target_format(&self) -> Option<(usize, usize, ColorFormat, u32, u32)> {
+    /// The bound framebuffer's size, color format and depth/stencil bits; `None` (with
+    /// GL_INVALID_FRAMEBUFFER_OPERATION for an incomplete framebuffer object) when there is
+    /// nothing to draw into.
+    fn target_format(&mut self) -> Option<(usize, usize, ColorFormat, u32, u32)> {
+        if !self.check_framebuffer_complete(true) {
+            return None;
+        }
         self.with_framebuffer(|fb| {
             let config = fb.config();
             (
@@ -386,7 +391,7 @@ impl Context {
                 color_masks.resize(target + 1, None);
                 buffer_of.resize(target + 1, None);
             }
-            color_masks[target] = Some(self.state.color.color_mask[index]);
+            color_masks[target] = Some(self.write_mask(slot, index));
             buffer_of[target] = Some(index);
         }
         let clamp_float = match self.state.color.clamp_fragment_color {

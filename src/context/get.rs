@@ -152,7 +152,7 @@ impl Context {
     /// queried) are clamped to [0, 1] for the current draw framebuffer.
     pub fn fragment_clamping(&self) -> bool {
         match self.state.color.clamp_fragment_color {
-            GL_FIXED_ONLY => !self.config.visual.color.is_float(),
+            GL_FIXED_ONLY => !self.draw_config().color.is_float(),
             clamp => clamp != GL_FALSE as GLenum,
         }
     }
@@ -184,7 +184,7 @@ impl Context {
         }
         let clamp = self.fragment_clamping();
         let clamped = |c: f32| if clamp { c.clamp(0.0, 1.0) } else { c };
-        let (s, fb) = (&self.state, &self.config.visual);
+        let (s, fb) = (&self.state, &self.draw_config());
         let [red, green, blue, alpha] = fb.color.channel_bits().map(|b| b as i32);
         let accum = fb.accum_bits as i32;
         let stencil_max = (1i32 << fb.depth_stencil.stencil_bits()) - 1;
@@ -226,6 +226,13 @@ impl Context {
             GL_MAX_VIEWPORT_DIMS => ints([MAX_VIEWPORT_DIM, MAX_VIEWPORT_DIM]),
             GL_MAX_ATTRIB_STACK_DEPTH | GL_MAX_CLIENT_ATTRIB_STACK_DEPTH => one(Int(MAX_ATTRIB_STACK_DEPTH as i32)),
             GL_MAX_DRAW_BUFFERS => one(Int(MAX_DRAW_BUFFERS as i32)),
+            // Framebuffer objects (`framebuffer_object`).
+            GL_DRAW_FRAMEBUFFER_BINDING => one(Int(self.fbo.draw as i32)),
+            GL_READ_FRAMEBUFFER_BINDING => one(Int(self.fbo.read as i32)),
+            GL_RENDERBUFFER_BINDING => one(Int(self.fbo.renderbuffer as i32)),
+            GL_MAX_COLOR_ATTACHMENTS => one(Int(super::framebuffer_object::MAX_COLOR_ATTACHMENTS as i32)),
+            GL_MAX_RENDERBUFFER_SIZE => one(Int(super::framebuffer_object::MAX_RENDERBUFFER_SIZE)),
+            GL_MAX_SAMPLES => one(Int(super::framebuffer_object::MAX_SAMPLES)),
             GL_MAX_CLIP_PLANES => one(Int(MAX_CLIP_PLANES as i32)),
             GL_MAX_LIGHTS => one(Int(MAX_LIGHTS as i32)),
             GL_MAX_TEXTURE_UNITS => one(Int(MAX_TEXTURE_UNITS as i32)),

@@ -14,6 +14,7 @@ pub mod current;
 pub mod debug;
 pub mod draw;
 pub mod fragment_state;
+pub mod framebuffer_object;
 pub mod get;
 #[cfg(test)]
 mod hard_case_tests;
@@ -81,6 +82,8 @@ pub struct Context {
     pub queries: queries::QueryState,
     /// The render mode and selection state.
     pub selection: selection::Selection,
+    /// Framebuffer and renderbuffer objects and their bindings.
+    pub fbo: framebuffer_object::FramebufferObjects,
 }
 
 impl Context {
@@ -105,6 +108,7 @@ impl Context {
             lists: Default::default(),
             queries: Default::default(),
             selection: Default::default(),
+            fbo: framebuffer_object::FramebufferObjects::new(buffer),
         }
     }
 
@@ -164,8 +168,10 @@ impl Context {
         self.drawable.as_ref()
     }
 
-    /// Runs `f` on the bound framebuffer; `None` when no drawable is bound.
-    pub fn with_framebuffer<R>(&self, f: impl FnOnce(&mut Framebuffer) -> R) -> Option<R> {
+    /// Runs `f` on the window's framebuffer; `None` when no drawable is bound. (Draws and
+    /// reads go through `with_framebuffer`/`with_read_framebuffer`, which pick the bound
+    /// framebuffer object instead when there is one.)
+    pub fn with_window_framebuffer<R>(&self, f: impl FnOnce(&mut Framebuffer) -> R) -> Option<R> {
         let drawable = self.drawable.as_ref()?;
         let mut guard = drawable.lock().unwrap_or_else(|p| p.into_inner());
         Some(f(&mut guard.framebuffer))

@@ -14,9 +14,20 @@ impl Context {
         }
     }
 
-    /// Samples per pixel of the bound framebuffer (1 without a multisample buffer or drawable).
+    /// Samples per pixel of the draw framebuffer (1 without a multisample buffer or drawable).
     pub fn framebuffer_samples(&self) -> usize {
-        self.with_framebuffer(|fb| fb.samples()).unwrap_or(1)
+        self.samples_of(self.fbo.draw)
+    }
+
+    /// Reads of pixels (glReadPixels, glCopyTexImage) from a multisampled framebuffer
+    /// object are GL_INVALID_OPERATION (ARB_framebuffer_object); they need a resolving blit.
+    /// A multisampled window reads its resolved image. Returns whether the read may go on.
+    pub fn check_read_single_sampled(&mut self) -> bool {
+        if self.fbo.read != 0 && self.read_samples() > 1 {
+            self.error(crate::api::enums::GL_INVALID_OPERATION);
+            return false;
+        }
+        true
     }
 
     /// The multisample state of a draw into a framebuffer of `samples` samples per pixel;

@@ -283,7 +283,7 @@ impl Context {
             Ok(None) => return,
             Err(error) => return self.error(*error),
         };
-        let depth_stencil = self.config.visual.depth_stencil;
+        let depth_stencil = self.draw_config().depth_stencil;
         let missing = match data.format {
             ClientFormat::DepthComponent => depth_stencil.depth_bits() == 0,
             ClientFormat::StencilIndex => depth_stencil.stencil_bits() == 0,
@@ -298,7 +298,7 @@ impl Context {
             return;
         }
         self.feedback_raster(GL_DRAW_PIXEL_TOKEN);
-        let clamp = !self.config.visual.color.is_float();
+        let clamp = !self.draw_config().color.is_float();
         let t = self.state.pixel_mode.transfer;
         let identity = t == PixelTransfer::default();
         let source = match &data.image {
@@ -372,7 +372,7 @@ impl Context {
         if width < 0 || height < 0 {
             return self.error(GL_INVALID_VALUE);
         }
-        let ds = self.config.visual.depth_stencil;
+        let ds = self.read_config().depth_stencil;
         let (format, pixel_bytes) = match ty {
             GL_COLOR => (GL_RGBA, 16),
             GL_DEPTH if ds.depth_bits() > 0 => (GL_DEPTH_COMPONENT, 4),

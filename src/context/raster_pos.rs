@@ -45,7 +45,7 @@ impl Context {
     /// The current colors clamped as vertex colors are for the current framebuffer.
     fn raster_colors(&self) -> ([f32; 4], [f32; 4]) {
         let clamp = match self.state.lighting.clamp_vertex_color {
-            GL_FIXED_ONLY => !self.config.visual.color.is_float(),
+            GL_FIXED_ONLY => !self.draw_config().color.is_float(),
             c => c == GL_TRUE as GLenum,
         };
         let clamp4 = |c: [f32; 4]| if clamp { c.map(|x| x.clamp(0.0, 1.0)) } else { c };

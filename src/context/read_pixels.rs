@@ -240,7 +240,7 @@ impl Context {
             return;
         };
         let slot = self.current_read_slot();
-        let _ = self.with_framebuffer(|fb| read_into(fb, slot, &job, out));
+        let _ = self.with_read_framebuffer(|fb| read_into(fb, slot, &job, out));
     }
 
     /// Checks a glReadPixels call (recording the error) and works out its clipped rectangle
@@ -262,13 +262,16 @@ impl Context {
             self.error(GL_INVALID_VALUE);
             return None;
         }
+        if !self.check_framebuffer_complete(false) || !self.check_read_single_sampled() {
+            return None;
+        }
         let Some(read_format) = read_format(format) else {
             // As in Mesa, a packed type's format rule comes before the format's validity.
             let packed = matches!(client_type(ty), Some(ClientType::Packed(_) | ClientType::UnsignedInt24_8));
             self.error(if packed { GL_INVALID_OPERATION } else { GL_INVALID_ENUM });
             return None;
         };
-        let layers = self.config().visual.depth_stencil;
+        let layers = self.read_config().depth_stencil;
         let (depth_bits, stencil_bits) = (layers.depth_bits(), layers.stencil_bits());
         let layer_missing = match read_format {
             ReadFormat::Client(ClientFormat::DepthComponent | ClientFormat::DepthStencil) => depth_bits == 0,
@@ -297,7 +300,7 @@ impl Context {
             self.error(GL_INVALID_OPERATION);
             return None;
         };
-        let bounds = self.with_framebuffer(|fb| fb.bounds())?;
+        let bounds = self.with_read_framebuffer(|fb| fb.bounds())?;
         let rect = clip(x, y, width, height, bounds);
         if rect.is_empty() {
             return None;

@@ -22,6 +22,7 @@ pub const VERSION: &str = concat!("1.1 tessera ", env!("CARGO_PKG_VERSION"), "\0
 pub const EXTENSIONS: &[&str] = &[
     "GL_ARB_draw_buffers",
     "GL_ARB_draw_buffers_blend",
+    "GL_ARB_framebuffer_object",
     "GL_ARB_point_parameters",
     "GL_ARB_transpose_matrix",
     "GL_ARB_vertex_buffer_object",
@@ -33,6 +34,8 @@ pub const EXTENSIONS: &[&str] = &[
     "GL_EXT_blend_minmax",
     "GL_EXT_blend_subtract",
     "GL_EXT_draw_range_elements",
+    "GL_EXT_framebuffer_blit",
+    "GL_EXT_framebuffer_object",
     "GL_EXT_fog_coord",
     "GL_EXT_multi_draw_arrays",
     "GL_EXT_point_parameters",

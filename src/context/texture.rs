@@ -207,6 +207,15 @@ impl TextureTable {
             self.objects.get_mut(&name)
         }
     }
+
+    /// The object named `name` (not 0) once it has been bound (framebuffer attachments).
+    pub fn object(&self, name: u32) -> Option<&TextureObject> {
+        self.objects.get(&name)
+    }
+
+    pub fn object_mut(&mut self, name: u32) -> Option<&mut TextureObject> {
+        self.objects.get_mut(&name)
+    }
 }
 
 /// A validated image command: its target, internal format and client format/type.
@@ -406,6 +415,7 @@ impl Context {
             }
             self.textures.reserved.remove(&name);
             if self.textures.objects.remove(&name).is_some() {
+                self.detach_texture(name);
                 for unit in &mut self.state.texture.unit_state {
                     for b in &mut unit.bindings {
                         if *b == name {
@@ -615,6 +625,7 @@ impl Context {
         let Some((it, info, pair)) = self.check_tex_image(dims, &a, Some((format, ty)), true) else {
             return;
         };
+        self.flush_into_textures();
         let (cf, ct) = pair.expect("format and type checked");
         let b = a.border as usize;
         let (w, h, d) = (a.width as usize, a.height.max(1) as usize, a.depth.max(1) as usize);
@@ -719,6 +730,7 @@ impl Context {
         if !self.check_outside_begin_end() {
             return;
         }
+        self.flush_into_textures();
         if image_target(dims, target, false).is_none() {
             return self.error(GL_INVALID_ENUM);
         }
@@ -774,7 +786,10 @@ impl Context {
         let Some((it, info, _)) = self.check_tex_image(dims, &a, None, false) else {
             return;
         };
-        let depth_bits = self.config().visual.depth_stencil.depth_bits();
+        if !self.check_framebuffer_complete(false) || !self.check_read_single_sampled() {
+            return;
+        }
+        let depth_bits = self.read_config().depth_stencil.depth_bits();
         if info.base == BaseFormat::Depth && depth_bits == 0 {
             return self.error(GL_INVALID_OPERATION);
         }
@@ -807,7 +822,10 @@ impl Context {
         let Some((it, lv)) = self.check_sub_image(dims, target, level, &Region { depth: 1, ..r }) else {
             return;
         };
-        let depth_bits = self.config().visual.depth_stencil.depth_bits();
+        if !self.check_framebuffer_complete(false) || !self.check_read_single_sampled() {
+            return;
+        }
+        let depth_bits = self.read_config().depth_stencil.depth_bits();
         if (lv.info.base == BaseFormat::Depth && depth_bits == 0)
             || (lv.info.base != BaseFormat::Depth && self.current_read_slot().is_none())
         {
@@ -837,7 +855,7 @@ impl Context {
     /// Copies the framebuffer rectangle at (x, y) into `region` of `image`.
     fn copy_framebuffer(&mut self, image: &mut TexImage, info: &FormatInfo, region: Region, x: i32, y: i32) {
         let slot = self.current_read_slot();
-        let _ = self.with_framebuffer(|fb| {
+        let _ = self.with_read_framebuffer(|fb| {
             let (fw, fh) = (fb.width() as i32, fb.height() as i32);
             let mut colors = Vec::new();
             let mut depths = Vec::new();
@@ -1123,6 +1141,7 @@ impl Context {
         if !self.check_outside_begin_end() {
             return;
         }
+        self.flush_into_textures();
         let dims = match target {
             GL_TEXTURE_1D => 1,
             GL_TEXTURE_3D => 3,

@@ -6,8 +6,10 @@
 //! and which rectangle an operation touches and passes plain values down.
 
 pub mod band;
+pub mod blit;
 pub mod external;
 pub mod format;
+pub mod layers;
 pub mod multisample;
 pub mod surface;
 
@@ -22,6 +24,8 @@ pub enum ColorSlot {
     FrontRight,
     BackRight,
     Aux(u8),
+    /// GL_COLOR_ATTACHMENTn of a framebuffer object.
+    Attachment(u8),
 }
 
 /// A half-open pixel rectangle `[x0, x1) × [y0, y1)`, y counted from the bottom row.

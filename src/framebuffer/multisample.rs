@@ -13,7 +13,7 @@
 //! framebuffer (glReadPixels, glCopyPixels, glCopyTexImage, glAccum, presentation) reads the
 //! resolved image without knowing about samples.
 use super::surface::{ColorBuffer, ColorPixels, DepthStencilBuffer, DepthStencilPixels};
-use super::{ColorSlot, Framebuffer, FramebufferConfig, OutOfMemory, Rect};
+use super::{ColorFormat, ColorSlot, DepthStencilFormat, Framebuffer, FramebufferConfig, OutOfMemory, Rect};
 
 /// The sample counts a multisampled layer may have.
 pub const SAMPLE_COUNTS: [usize; 3] = [2, 4, 8];
@@ -201,6 +201,38 @@ impl Framebuffer {
         Ok(framebuffer)
     }
 
+    /// A `width` × `height` framebuffer of `samples` samples per pixel made of multisampled
+    /// layers (`height · samples` storage rows each) owned elsewhere (multisampled
+    /// renderbuffers). It has no resolved layers: rendering and clears reach the samples,
+    /// reads of the image go through a resolve ([`resolve_color`]).
+    pub fn from_sample_layers(
+        config: FramebufferConfig,
+        width: usize,
+        height: usize,
+        samples: usize,
+        color: Vec<(ColorSlot, ColorBuffer)>,
+        depth_stencil: Option<DepthStencilBuffer>,
+    ) -> Framebuffer {
+        let none =
+            || DepthStencilBuffer::new(DepthStencilFormat::None, width, 0).expect("an empty buffer allocates nothing");
+        let depth_stencil = depth_stencil.unwrap_or_else(none);
+        Framebuffer {
+            config,
+            width,
+            height,
+            color: Vec::new(),
+            depth_stencil: none(),
+            accum: None,
+            multisample: Some(SampleLayers { samples, color, depth_stencil }),
+        }
+    }
+
+    /// The format of color buffer `slot`, resolved or multisampled.
+    pub fn color_format(&self, slot: ColorSlot) -> Option<ColorFormat> {
+        let sampled = self.multisample.as_ref().and_then(|l| l.color.iter().find(|(s, _)| *s == slot));
+        self.color.iter().find(|(s, _)| *s == slot).or(sampled).map(|(_, b)| b.format())
+    }
+
     /// Samples per pixel: 1 unless multisampled.
     pub fn samples(&self) -> usize {
         self.multisample.as_ref().map_or(1, |m| m.samples)
@@ -275,7 +307,6 @@ impl Framebuffer {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::framebuffer::{ColorFormat, DepthStencilFormat};
 
     fn config(color: ColorFormat) -> FramebufferConfig {
         FramebufferConfig::single_buffered(color, DepthStencilFormat::Packed24 { depth: true, stencil: true }, 0)

@@ -45,12 +45,12 @@ impl MultisampleState {
 }
 
 /// The sample mask glSampleCoverage(value, invert) gives for `samples` samples: the first
-/// round(value · samples) samples (value clamped to [0, 1]), complemented when inverted.
-/// GL leaves which samples to the implementation; a prefix makes `value` 0.5 and its
-/// inverse complementary, as §4.1.3 asks.
+/// ⌊value · samples⌋ samples (value clamped to [0, 1]), complemented when inverted, as
+/// Mesa's state tracker computes it. GL leaves which samples to the implementation; a
+/// prefix makes `value` 0.5 and its inverse complementary, as §4.1.3 asks.
 pub fn sample_coverage_mask(value: f32, invert: bool, samples: usize) -> u8 {
     let all = ((1u32 << samples) - 1) as u8;
-    let count = (value.clamp(0.0, 1.0) * samples as f32).round() as u32;
+    let count = (value.clamp(0.0, 1.0) * samples as f32) as u32;
     let mask = ((1u32 << count) - 1) as u8;
     if invert {
         !mask & all
@@ -303,7 +303,8 @@ mod tests {
         assert_eq!(sample_coverage_mask(0.5, true, 4), 0b1100);
         assert_eq!(sample_coverage_mask(0.0, false, 8), 0);
         assert_eq!(sample_coverage_mask(0.0, true, 8), 0xff);
-        assert_eq!(sample_coverage_mask(0.3, false, 2), 0b01);
+        assert_eq!(sample_coverage_mask(0.3, false, 2), 0);
+        assert_eq!(sample_coverage_mask(0.9, false, 4), 0b0111);
         assert_eq!(sample_coverage_mask(7.0, false, 2), 0b11);
     }
 

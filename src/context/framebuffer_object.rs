@@ -1,0 +1,1481 @@
+//! Framebuffer objects and renderbuffers (ARB/EXT_framebuffer_object, EXT_framebuffer_blit):
+//! the objects, their bindings, completeness, queries, and what draws and reads go to.
+//!
+//! **Where attached images live.** A renderbuffer owns a framebuffer-format buffer (a
+//! [`ColorBuffer`] or [`DepthStencilBuffer`], the same types a window's framebuffer is made
+//! of). A texture keeps its images in the texture store (RGBA8 or f32 depth, sampled
+//! directly). Whenever the context needs the bound framebuffer object as a [`Framebuffer`]
+//! (to execute the recorded scene, clear, read, blit), [`Context::with_object_framebuffer`]
+//! assembles one: renderbuffer storage is *moved* in (a vector move, no pixel copied), each
+//! attached texture image is converted into a framebuffer-format buffer of its exact values
+//! (RGBA8 texels are 8-bit unorm pixels; f32 depth texels are their 16/24/32-bit fixed-point
+//! values), and after the operation everything is moved or converted back (textures only when
+//! the operation wrote). The conversions are exact in both directions, so rendering into a
+//! texture gives the same texels as rendering into a renderbuffer of its format and reading
+//! back. The rasterizer is unchanged: the scene executes on a `Framebuffer` split into bands
+//! as for a window, so tiles still own pixels and results do not depend on the thread count.
+//! Recorded draws run when the draw binding or an attachment changes (a flush point), so the
+//! texture store is always current when the texture is next sampled.
+//!
+//! **Formats** (storage, reported sizes): RGB/RGBA(8) and the smaller unorm formats as
+//! 8-bit unorm, RGB(A)12/16 as 16-bit unorm, RGB(A)16F/32F as f32 (16F keeps f32 precision),
+//! DEPTH_COMPONENT16/24/32 and 32F as 16/24/32-bit depth (32F as 32-bit unorm: depth is
+//! clamped to [0, 1] anyway), STENCIL_INDEX* as 8-bit stencil, DEPTH24_STENCIL8 packed.
+//! Textures are renderable when they are 8-bit RGB or RGBA or depth, without border.
+//!
+//! **Combinations reported GL_FRAMEBUFFER_UNSUPPORTED** (allowed by the specification, and
+//! what Mesa's Gallium drivers also reject): depth and stencil in two different images,
+//! attached images of different sizes, one image attached at two color points, textures of
+//! other formats or with a border.
+//!
+//! **Multisample renderbuffers**: glRenderbufferStorageMultisample allocates the smallest
+//! supported count of at least the requested one (1 → 2; 2, 4 or 8, `framebuffer::
+//! multisample`), which GL_RENDERBUFFER_SAMPLES reports; the storage holds every sample
+//! (sample rows), and a framebuffer object of multisampled attachments is assembled into a
+//! multisampled [`Framebuffer`] ([`Framebuffer::from_sample_layers`]) without resolved
+//! layers: reading it needs a glBlitFramebuffer resolve, as the specification says.
+use super::state::MAX_DRAW_BUFFERS;
+use super::texture::TARGETS;
+use super::Context;
+use crate::api::enums::*;
+use crate::api::types::GLenum;
+use crate::framebuffer::blit::{self, BlitAxis, ColorSource, DepthStencilSource};
+use crate::framebuffer::layers::{color_buffer, depth_stencil_buffer};
+use crate::framebuffer::multisample::{resolve_color, resolve_depth_stencil, supported_samples};
+use crate::framebuffer::surface::{ColorPixels, DepthStencilPixels};
+use crate::framebuffer::{
+    ColorBuffer, ColorFormat, ColorSlot, DepthStencilBuffer, DepthStencilFormat, Framebuffer, FramebufferConfig, Rect,
+};
+use crate::texture::{BaseFormat, Texels};
+use std::collections::{HashMap, HashSet};
+use std::sync::Arc;
+
+/// GL_MAX_COLOR_ATTACHMENTS.
+pub const MAX_COLOR_ATTACHMENTS: usize = 8;
+/// GL_MAX_RENDERBUFFER_SIZE.
+pub const MAX_RENDERBUFFER_SIZE: i32 = 16384;
+/// GL_MAX_SAMPLES: the counts glRenderbufferStorageMultisample accepts.
+pub const MAX_SAMPLES: i32 = 8;
+
+/// Index of the depth and stencil attachment points after the color ones.
+const DEPTH: usize = MAX_COLOR_ATTACHMENTS;
+const STENCIL: usize = MAX_COLOR_ATTACHMENTS + 1;
+const POINTS: usize = MAX_COLOR_ATTACHMENTS + 2;
+
+/// What is attached at one attachment point.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Attachment {
+    Renderbuffer(u32),
+    /// A texture image: object, index into [`TARGETS`], cube face, mipmap level, 3D layer.
+    Texture {
+        name: u32,
+        target: usize,
+        face: usize,
+        level: usize,
+        layer: usize,
+    },
+}
+
+/// A framebuffer object: its attachments and its draw/read buffer state.
+#[derive(Clone, Debug)]
+pub struct FramebufferObject {
+    attachments: [Option<Attachment>; POINTS],
+    draw_buffers: [GLenum; MAX_DRAW_BUFFERS],
+    read_buffer: GLenum,
+}
+
+impl FramebufferObject {
+    fn new() -> Self {
+        let mut draw_buffers = [GL_NONE; MAX_DRAW_BUFFERS];
+        draw_buffers[0] = GL_COLOR_ATTACHMENT0;
+        FramebufferObject { attachments: [None; POINTS], draw_buffers, read_buffer: GL_COLOR_ATTACHMENT0 }
+    }
+}
+
+/// A renderbuffer's pixels.
+#[derive(Debug, Default)]
+pub enum RenderbufferStorage {
+    #[default]
+    None,
+    Color(ColorBuffer),
+    DepthStencil(DepthStencilBuffer),
+}
+
+/// A renderbuffer object.
+#[derive(Debug)]
+pub struct Renderbuffer {
+    pub internal_format: GLenum,
+    pub width: usize,
+    pub height: usize,
+    /// The sample count requested by glRenderbufferStorageMultisample.
+    pub requested_samples: i32,
+    /// The samples per pixel of the storage (1: single-sampled).
+    pub samples: usize,
+    pub format: Option<Renderable>,
+    storage: RenderbufferStorage,
+}
+
+/// The storage format of a renderable internal format.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Renderable {
+    Color(ColorFormat),
+    DepthStencil(DepthStencilFormat),
+}
+
+impl Renderable {
+    fn depth_bits(self) -> u32 {
+        match self {
+            Renderable::DepthStencil(f) => f.depth_bits(),
+            Renderable::Color(_) => 0,
+        }
+    }
+
+    fn stencil_bits(self) -> u32 {
+        match self {
+            Renderable::DepthStencil(f) => f.stencil_bits(),
+            Renderable::Color(_) => 0,
+        }
+    }
+}
+
+/// The storage of a renderbuffer internal format; `None` when not renderable.
+pub fn renderbuffer_format(internal_format: GLenum) -> Option<Renderable> {
+    use ColorFormat::*;
+    use DepthStencilFormat::{Depth16, Depth32, Packed24};
+    Some(match internal_format {
+        GL_RGB | GL_RGB8 | GL_R3_G3_B2 | GL_RGB4 | GL_RGB5 | GL_RGB10 => Renderable::Color(Unorm8 { alpha: false }),
+        GL_RGBA | GL_RGBA8 | GL_RGBA2 | GL_RGBA4 | GL_RGB5_A1 | GL_RGB10_A2 => {
+            Renderable::Color(Unorm8 { alpha: true })
+        }
+        GL_RGB12 | GL_RGB16 => Renderable::Color(Unorm16 { alpha: false }),
+        GL_RGBA12 | GL_RGBA16 => Renderable::Color(Unorm16 { alpha: true }),
+        GL_RGB16F | GL_RGB32F => Renderable::Color(Float32 { alpha: false }),
+        GL_RGBA16F | GL_RGBA32F => Renderable::Color(Float32 { alpha: true }),
+        GL_DEPTH_COMPONENT16 => Renderable::DepthStencil(Depth16),
+        GL_DEPTH_COMPONENT | GL_DEPTH_COMPONENT24 => Renderable::DepthStencil(Packed24 { depth: true, stencil: false }),
+        GL_DEPTH_COMPONENT32 | GL_DEPTH_COMPONENT32F => Renderable::DepthStencil(Depth32 { stencil: false }),
+        GL_DEPTH_STENCIL | GL_DEPTH24_STENCIL8 => Renderable::DepthStencil(Packed24 { depth: true, stencil: true }),
+        GL_STENCIL_INDEX | GL_STENCIL_INDEX1 | GL_STENCIL_INDEX4 | GL_STENCIL_INDEX8 | GL_STENCIL_INDEX16 => {
+            Renderable::DepthStencil(Packed24 { depth: false, stencil: true })
+        }
+        _ => return None,
+    })
+}
+
+/// The framebuffer and renderbuffer objects of a context and their bindings.
+#[derive(Debug)]
+pub struct FramebufferObjects {
+    framebuffers: HashMap<u32, FramebufferObject>,
+    renderbuffers: HashMap<u32, Renderbuffer>,
+    /// Names handed out by glGen* and not yet bound.
+    reserved_framebuffers: HashSet<u32>,
+    reserved_renderbuffers: HashSet<u32>,
+    largest_framebuffer: u32,
+    largest_renderbuffer: u32,
+    /// GL_DRAW_FRAMEBUFFER_BINDING and GL_READ_FRAMEBUFFER_BINDING (0: the window's).
+    pub draw: u32,
+    pub read: u32,
+    /// GL_RENDERBUFFER_BINDING.
+    pub renderbuffer: u32,
+    /// The window framebuffer's draw and read buffers while an object is bound (the
+    /// context's state holds those of the bound framebuffers).
+    window_draw_buffers: [GLenum; MAX_DRAW_BUFFERS],
+    window_read_buffer: GLenum,
+}
+
+impl FramebufferObjects {
+    /// No objects; `window_buffer` is the window's initial draw/read buffer.
+    pub fn new(window_buffer: GLenum) -> Self {
+        let mut window_draw_buffers = [GL_NONE; MAX_DRAW_BUFFERS];
+        window_draw_buffers[0] = window_buffer;
+        FramebufferObjects {
+            framebuffers: HashMap::new(),
+            renderbuffers: HashMap::new(),
+            reserved_framebuffers: HashSet::new(),
+            reserved_renderbuffers: HashSet::new(),
+            largest_framebuffer: 0,
+            largest_renderbuffer: 0,
+            draw: 0,
+            read: 0,
+            renderbuffer: 0,
+            window_draw_buffers,
+            window_read_buffer: window_buffer,
+        }
+    }
+}
+
+/// The attachment point an enum names: `Ok(index)`, or the error it gives.
+fn attachment_point(attachment: GLenum) -> Result<usize, GLenum> {
+    match attachment {
+        GL_DEPTH_ATTACHMENT => Ok(DEPTH),
+        GL_STENCIL_ATTACHMENT => Ok(STENCIL),
+        a if (GL_COLOR_ATTACHMENT0..GL_COLOR_ATTACHMENT0 + MAX_COLOR_ATTACHMENTS as GLenum).contains(&a) => {
+            Ok((a - GL_COLOR_ATTACHMENT0) as usize)
+        }
+        // Color attachments beyond the maximum exist as enums: GL_INVALID_OPERATION (Mesa).
+        a if (GL_COLOR_ATTACHMENT0..GL_COLOR_ATTACHMENT0 + 32).contains(&a) => Err(GL_INVALID_OPERATION),
+        _ => Err(GL_INVALID_ENUM),
+    }
+}
+
+/// The slot of a framebuffer object's draw or read buffer enum: `Some(None)` for GL_NONE,
+/// `None` when the enum names no attachment.
+pub fn attachment_slot(buffer: GLenum) -> Option<Option<ColorSlot>> {
+    match buffer {
+        GL_NONE => Some(None),
+        b if (GL_COLOR_ATTACHMENT0..GL_COLOR_ATTACHMENT0 + MAX_COLOR_ATTACHMENTS as GLenum).contains(&b) => {
+            Some(Some(ColorSlot::Attachment((b - GL_COLOR_ATTACHMENT0) as u8)))
+        }
+        _ => None,
+    }
+}
+
+/// GL_RENDERBUFFER_SAMPLES / GL_SAMPLES of storage with `samples` samples per pixel.
+fn reported_samples(samples: usize) -> i32 {
+    if samples > 1 {
+        samples as i32
+    } else {
+        0
+    }
+}
+
+/// What completeness and assembly need to know about one attached image.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct ImageInfo {
+    width: usize,
+    height: usize,
+    format: Renderable,
+    samples: i32,
+    /// Texture images that cannot be rendered into (other formats, borders).
+    supported: bool,
+}
+
+/// Which of the completeness rules fails first, as glCheckFramebufferStatus reports it.
+/// `images` holds the attachment points' images (`None`: nothing attached; `Some(None)`:
+/// attached but not attachment-complete).
+fn completeness(
+    images: &[Option<Option<ImageInfo>>; POINTS],
+    attachments: &[Option<Attachment>; POINTS],
+    draw_buffers: &[GLenum],
+    read_buffer: GLenum,
+) -> GLenum {
+    let mut any = false;
+    for (point, image) in images.iter().enumerate() {
+        let Some(image) = image else { continue };
+        any = true;
+        let Some(info) = image else {
+            return GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT;
+        };
+        let fits = match (point, info.format) {
+            (DEPTH, f) => f.depth_bits() > 0,
+            (STENCIL, f) => f.stencil_bits() > 0,
+            (_, Renderable::Color(_)) => true,
+            _ => false,
+        };
+        if !fits || info.width == 0 || info.height == 0 {
+            return GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT;
+        }
+    }
+    if !any {
+        return GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT;
+    }
+    for &buffer in draw_buffers {
+        if let Some(Some(ColorSlot::Attachment(i))) = attachment_slot(buffer) {
+            if images[i as usize].is_none() {
+                return GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER;
+            }
+        }
+    }
+    if let Some(Some(ColorSlot::Attachment(i))) = attachment_slot(read_buffer) {
+        if images[i as usize].is_none() {
+            return GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER;
+        }
+    }
+    let infos: Vec<ImageInfo> = images.iter().flatten().flatten().copied().collect();
+    if infos.iter().any(|i| i.samples != infos[0].samples) {
+        return GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE;
+    }
+    let same_size = infos.iter().all(|i| (i.width, i.height) == (infos[0].width, infos[0].height));
+    let separate_depth_stencil = matches!((attachments[DEPTH], attachments[STENCIL]), (Some(d), Some(s)) if d != s);
+    let colors: Vec<Attachment> = attachments[..MAX_COLOR_ATTACHMENTS].iter().flatten().copied().collect();
+    let repeated_color = colors.iter().enumerate().any(|(i, a)| colors[..i].contains(a));
+    if !same_size || separate_depth_stencil || repeated_color || infos.iter().any(|i| !i.supported) {
+        return GL_FRAMEBUFFER_UNSUPPORTED;
+    }
+    GL_FRAMEBUFFER_COMPLETE
+}
+
+/// The depth/stencil format an f32 depth texture of `bits` renders through.
+fn depth_texture_format(bits: u32) -> DepthStencilFormat {
+    match bits {
+        16 => DepthStencilFormat::Depth16,
+        32 => DepthStencilFormat::Depth32 { stencil: false },
+        _ => DepthStencilFormat::Packed24 { depth: true, stencil: false },
+    }
+}
+
+impl Context {
+    // ---- Object names ----------------------------------------------------------------
+
+    /// glGenFramebuffers / glGenRenderbuffers.
+    pub fn gen_fbo_names(&mut self, n: i32, renderbuffers: bool) -> Option<Vec<u32>> {
+        if !self.check_outside_begin_end() {
+            return None;
+        }
+        if n < 0 {
+            self.error(GL_INVALID_VALUE);
+            return None;
+        }
+        let f = &mut self.fbo;
+        let (largest, reserved) = if renderbuffers {
+            (&mut f.largest_renderbuffer, &mut f.reserved_renderbuffers)
+        } else {
+            (&mut f.largest_framebuffer, &mut f.reserved_framebuffers)
+        };
+        let mut names = Vec::new();
+        if names.try_reserve_exact(n as usize).is_err() {
+            self.error(GL_OUT_OF_MEMORY);
+            return None;
+        }
+        for _ in 0..n {
+            *largest += 1;
+            reserved.insert(*largest);
+            names.push(*largest);
+        }
+        Some(names)
+    }
+
+    /// glIsFramebuffer.
+    pub fn is_framebuffer(&mut self, name: u32) -> bool {
+        self.check_outside_begin_end() && name != 0 && self.fbo.framebuffers.contains_key(&name)
+    }
+
+    /// glIsRenderbuffer.
+    pub fn is_renderbuffer(&mut self, name: u32) -> bool {
+        self.check_outside_begin_end() && name != 0 && self.fbo.renderbuffers.contains_key(&name)
+    }
+
+    /// glBindFramebuffer: `target` GL_FRAMEBUFFER binds both, GL_DRAW_/READ_FRAMEBUFFER one.
+    /// Each framebuffer has its own draw and read buffers, swapped into the context state.
+    pub fn bind_framebuffer(&mut self, target: GLenum, name: u32) {
+        if !self.check_outside_begin_end() {
+            return;
+        }
+        let (draw, read) = match target {
+            GL_FRAMEBUFFER => (true, true),
+            GL_DRAW_FRAMEBUFFER => (true, false),
+            GL_READ_FRAMEBUFFER => (false, true),
+            _ => return self.error(GL_INVALID_ENUM),
+        };
+        if name != 0 && !self.fbo.framebuffers.contains_key(&name) {
+            self.fbo.reserved_framebuffers.remove(&name);
+            self.fbo.largest_framebuffer = self.fbo.largest_framebuffer.max(name);
+            self.fbo.framebuffers.insert(name, FramebufferObject::new());
+        }
+        if draw && self.fbo.draw != name {
+            // What was recorded belongs to the old draw framebuffer.
+            self.flush_rendering();
+            let current = self.state.color.draw_buffers;
+            match self.fbo.framebuffers.get_mut(&self.fbo.draw) {
+                Some(old) => old.draw_buffers = current,
+                None => self.fbo.window_draw_buffers = current,
+            }
+            self.state.color.draw_buffers = match self.fbo.framebuffers.get(&name) {
+                Some(new) => new.draw_buffers,
+                None => self.fbo.window_draw_buffers,
+            };
+            self.fbo.draw = name;
+        }
+        if read && self.fbo.read != name {
+            let current = self.state.pixel_mode.read_buffer;
+            match self.fbo.framebuffers.get_mut(&self.fbo.read) {
+                Some(old) => old.read_buffer = current,
+                None => self.fbo.window_read_buffer = current,
+            }
+            self.state.pixel_mode.read_buffer = match self.fbo.framebuffers.get(&name) {
+                Some(new) => new.read_buffer,
+                None => self.fbo.window_read_buffer,
+            };
+            self.fbo.read = name;
+        }
+    }
+
+    /// glDeleteFramebuffers: bound objects are unbound first (the window's framebuffer
+    /// becomes bound).
+    pub fn delete_framebuffers(&mut self, n: i32, names: &[u32]) {
+        if !self.check_outside_begin_end() {
+            return;
+        }
+        if n < 0 {
+            return self.error(GL_INVALID_VALUE);
+        }
+        for &name in names {
+            if name == 0 {
+                continue;
+            }
+            if self.fbo.draw == name {
+                self.bind_framebuffer(GL_DRAW_FRAMEBUFFER, 0);
+            }
+            if self.fbo.read == name {
+                self.bind_framebuffer(GL_READ_FRAMEBUFFER, 0);
+            }
+            self.fbo.framebuffers.remove(&name);
+            self.fbo.reserved_framebuffers.remove(&name);
+        }
+    }
+
+    /// glBindRenderbuffer.
+    pub fn bind_renderbuffer(&mut self, target: GLenum, name: u32) {
+        if !self.check_outside_begin_end() {
+            return;
+        }
+        if target != GL_RENDERBUFFER {
+            return self.error(GL_INVALID_ENUM);
+        }
+        if name != 0 && !self.fbo.renderbuffers.contains_key(&name) {
+            self.fbo.reserved_renderbuffers.remove(&name);
+            self.fbo.largest_renderbuffer = self.fbo.largest_renderbuffer.max(name);
+            let rb = Renderbuffer {
+                internal_format: GL_RGBA,
+                width: 0,
+                height: 0,
+                requested_samples: 0,
+                samples: 1,
+                format: None,
+                storage: RenderbufferStorage::None,
+            };
+            self.fbo.renderbuffers.insert(name, rb);
+        }
+        self.fbo.renderbuffer = name;
+    }
+
+    /// glDeleteRenderbuffers: a deleted renderbuffer is unbound and detached from the
+    /// framebuffer objects (here from every one, not only the bound ones).
+    pub fn delete_renderbuffers(&mut self, n: i32, names: &[u32]) {
+        if !self.check_outside_begin_end() {
+            return;
+        }
+        if n < 0 {
+            return self.error(GL_INVALID_VALUE);
+        }
+        for &name in names {
+            if name == 0 {
+                continue;
+            }
+            self.fbo.reserved_renderbuffers.remove(&name);
+            if self.fbo.renderbuffers.contains_key(&name) {
+                self.detach_everywhere(Attachment::Renderbuffer(name));
+                self.fbo.renderbuffers.remove(&name);
+                if self.fbo.renderbuffer == name {
+                    self.fbo.renderbuffer = 0;
+                }
+            }
+        }
+    }
+
+    /// Completes the draws recorded into a framebuffer object before a texture image is read
+    /// or specified: they may write texture images (which are current only after a flush).
+    pub(super) fn flush_into_textures(&mut self) {
+        if self.fbo.draw != 0 {
+            self.flush_rendering();
+        }
+    }
+
+    /// Detaches every image of texture `name` (it is being deleted).
+    pub(super) fn detach_texture(&mut self, name: u32) {
+        let attached = |a: &Attachment| matches!(a, Attachment::Texture { name: n, .. } if *n == name);
+        let any = self.fbo.framebuffers.values().any(|f| f.attachments.iter().flatten().any(attached));
+        if any {
+            self.flush_rendering();
+            for f in self.fbo.framebuffers.values_mut() {
+                for a in &mut f.attachments {
+                    if a.as_ref().is_some_and(attached) {
+                        *a = None;
+                    }
+                }
+            }
+        }
+    }
+
+    fn detach_everywhere(&mut self, attachment: Attachment) {
+        self.flush_rendering();
+        for f in self.fbo.framebuffers.values_mut() {
+            for a in &mut f.attachments {
+                if *a == Some(attachment) {
+                    *a = None;
+                }
+            }
+        }
+    }
+
+    // ---- Renderbuffer storage -----------------------------------------------------------
+
+    /// glRenderbufferStorage(Multisample): (re)allocates the bound renderbuffer's storage.
+    pub fn renderbuffer_storage(&mut self, target: GLenum, samples: i32, internal_format: GLenum, w: i32, h: i32) {
+        if !self.check_outside_begin_end() {
+            return;
+        }
+        if target != GL_RENDERBUFFER {
+            return self.error(GL_INVALID_ENUM);
+        }
+        let Some(format) = renderbuffer_format(internal_format) else {
+            return self.error(GL_INVALID_ENUM);
+        };
+        if w < 0 || h < 0 || w > MAX_RENDERBUFFER_SIZE || h > MAX_RENDERBUFFER_SIZE {
+            return self.error(GL_INVALID_VALUE);
+        }
+        if !(0..=MAX_SAMPLES).contains(&samples) {
+            return self.error(GL_INVALID_VALUE);
+        }
+        let name = self.fbo.renderbuffer;
+        if name == 0 {
+            return self.error(GL_INVALID_OPERATION);
+        }
+        // Draws recorded into the old storage complete first.
+        self.flush_rendering();
+        let (w, h) = (w as usize, h as usize);
+        let sample_count = supported_samples(samples as usize).unwrap_or(1);
+        // Multisampled storage: `sample_count` storage rows per pixel row.
+        let rows = h * sample_count;
+        let storage = match format {
+            Renderable::Color(f) => color_buffer(f, w, rows).map(RenderbufferStorage::Color),
+            Renderable::DepthStencil(f) => depth_stencil_buffer(f, w, rows).map(RenderbufferStorage::DepthStencil),
+        };
+        let Ok(storage) = storage else {
+            return self.error(GL_OUT_OF_MEMORY);
+        };
+        if let Some(rb) = self.fbo.renderbuffers.get_mut(&name) {
+            *rb = Renderbuffer {
+                internal_format,
+                width: w,
+                height: h,
+                requested_samples: samples,
+                samples: sample_count,
+                format: Some(format),
+                storage,
+            };
+        }
+    }
+
+    /// glGetRenderbufferParameteriv.
+    pub fn get_renderbuffer_parameter(&mut self, target: GLenum, pname: GLenum) -> Option<i32> {
+        if !self.check_outside_begin_end() {
+            return None;
+        }
+        if target != GL_RENDERBUFFER {
+            self.error(GL_INVALID_ENUM);
+            return None;
+        }
+        let Some(rb) = self.fbo.renderbuffers.get(&self.fbo.renderbuffer) else {
+            self.error(GL_INVALID_OPERATION);
+            return None;
+        };
+        let bits = rb.format.map(renderable_sizes).unwrap_or([0; 6]);
+        Some(match pname {
+            GL_RENDERBUFFER_WIDTH => rb.width as i32,
+            GL_RENDERBUFFER_HEIGHT => rb.height as i32,
+            GL_RENDERBUFFER_INTERNAL_FORMAT => rb.internal_format as i32,
+            GL_RENDERBUFFER_SAMPLES => reported_samples(rb.samples),
+            GL_RENDERBUFFER_RED_SIZE => bits[0],
+            GL_RENDERBUFFER_GREEN_SIZE => bits[1],
+            GL_RENDERBUFFER_BLUE_SIZE => bits[2],
+            GL_RENDERBUFFER_ALPHA_SIZE => bits[3],
+            GL_RENDERBUFFER_DEPTH_SIZE => bits[4],
+            GL_RENDERBUFFER_STENCIL_SIZE => bits[5],
+            _ => {
+                self.error(GL_INVALID_ENUM);
+                return None;
+            }
+        })
+    }
+
+    // ---- Attachments --------------------------------------------------------------------
+
+    /// The bound object of a framebuffer target, for attachment commands: `Err(error)`.
+    fn attach_target(&self, target: GLenum) -> Result<u32, GLenum> {
+        let name = match target {
+            GL_FRAMEBUFFER | GL_DRAW_FRAMEBUFFER => self.fbo.draw,
+            GL_READ_FRAMEBUFFER => self.fbo.read,
+            _ => return Err(GL_INVALID_ENUM),
+        };
+        if name == 0 {
+            Err(GL_INVALID_OPERATION)
+        } else {
+            Ok(name)
+        }
+    }
+
+    /// Sets attachment `point` (GL_DEPTH_STENCIL_ATTACHMENT: both) of the object bound to
+    /// `target`.
+    fn set_attachment(&mut self, fbo: u32, attachment: GLenum, value: Option<Attachment>) {
+        if fbo == self.fbo.draw {
+            self.flush_rendering();
+        }
+        let Some(object) = self.fbo.framebuffers.get_mut(&fbo) else { return };
+        if attachment == GL_DEPTH_STENCIL_ATTACHMENT {
+            object.attachments[DEPTH] = value;
+            object.attachments[STENCIL] = value;
+        } else if let Ok(point) = attachment_point(attachment) {
+            object.attachments[point] = value;
+        }
+    }
+
+    /// Validates the target and attachment of an attachment command; the object name.
+    fn check_attachment_command(&mut self, target: GLenum, attachment: GLenum) -> Option<u32> {
+        if !self.check_outside_begin_end() {
+            return None;
+        }
+        let fbo = match self.attach_target(target) {
+            Ok(f) => f,
+            Err(GL_INVALID_ENUM) => {
+                self.error(GL_INVALID_ENUM);
+                return None;
+            }
+            Err(e) => {
+                // The attachment enum is checked before the binding (as Mesa).
+                if attachment != GL_DEPTH_STENCIL_ATTACHMENT {
+                    if let Err(e2) = attachment_point(attachment) {
+                        self.error(e2);
+                        return None;
+                    }
+                }
+                self.error(e);
+                return None;
+            }
+        };
+        if attachment != GL_DEPTH_STENCIL_ATTACHMENT {
+            if let Err(e) = attachment_point(attachment) {
+                self.error(e);
+                return None;
+            }
+        }
+        Some(fbo)
+    }
+
+    /// glFramebufferRenderbuffer.
+    pub fn framebuffer_renderbuffer(&mut self, target: GLenum, attachment: GLenum, rb_target: GLenum, rb: u32) {
+        let Some(fbo) = self.check_attachment_command(target, attachment) else { return };
+        if rb_target != GL_RENDERBUFFER {
+            return self.error(GL_INVALID_ENUM);
+        }
+        if rb != 0 && !self.fbo.renderbuffers.contains_key(&rb) {
+            return self.error(GL_INVALID_OPERATION);
+        }
+        self.set_attachment(fbo, attachment, (rb != 0).then_some(Attachment::Renderbuffer(rb)));
+    }
+
+    /// glFramebufferTexture1D/2D/3D (`dims`) and glFramebufferTextureLayer (`dims` 0, target
+    /// taken from the texture).
+    #[allow(clippy::too_many_arguments)]
+    pub fn framebuffer_texture(
+        &mut self,
+        dims: usize,
+        target: GLenum,
+        attachment: GLenum,
+        tex_target: GLenum,
+        texture: u32,
+        level: i32,
+        layer: i32,
+    ) {
+        let Some(fbo) = self.check_attachment_command(target, attachment) else { return };
+        if texture == 0 {
+            // Detaching: the texture target is still checked (as Mesa) except for Layer.
+            if dims != 0 && tex_target_of(dims, tex_target).is_none() {
+                return self.error(GL_INVALID_ENUM);
+            }
+            return self.set_attachment(fbo, attachment, None);
+        }
+        let Some(object) = self.textures.object(texture) else {
+            return self.error(GL_INVALID_OPERATION);
+        };
+        let object_target = object.target;
+        let (t, face) = if dims == 0 {
+            match object_target {
+                GL_TEXTURE_3D => (2, 0),
+                _ => return self.error(GL_INVALID_OPERATION),
+            }
+        } else {
+            let Some((t, face)) = tex_target_of(dims, tex_target) else {
+                // A texture target of another dimensionality is GL_INVALID_OPERATION (Mesa).
+                let any_dims = (1..=3).any(|d| tex_target_of(d, tex_target).is_some());
+                return self.error(if any_dims { GL_INVALID_OPERATION } else { GL_INVALID_ENUM });
+            };
+            if TARGETS[t] != object_target {
+                return self.error(GL_INVALID_OPERATION);
+            }
+            (t, face)
+        };
+        let max_size = match t {
+            2 => super::texture::MAX_3D_TEXTURE_SIZE,
+            3 => super::texture::MAX_CUBE_MAP_TEXTURE_SIZE,
+            _ => super::texture::MAX_TEXTURE_SIZE,
+        };
+        let max_level = usize::BITS - max_size.leading_zeros() - 1;
+        if level < 0 || level as u32 > max_level {
+            return self.error(GL_INVALID_VALUE);
+        }
+        if t == 2 && (layer < 0 || layer as usize >= super::texture::MAX_3D_TEXTURE_SIZE) {
+            return self.error(GL_INVALID_VALUE);
+        }
+        let layer = if t == 2 { layer as usize } else { 0 };
+        let value = Attachment::Texture { name: texture, target: t, face, level: level as usize, layer };
+        self.set_attachment(fbo, attachment, Some(value));
+    }
+
+    /// glGetFramebufferAttachmentParameteriv.
+    pub fn get_framebuffer_attachment_parameter(
+        &mut self,
+        target: GLenum,
+        attachment: GLenum,
+        pname: GLenum,
+    ) -> Option<i32> {
+        let window = match target {
+            GL_FRAMEBUFFER | GL_DRAW_FRAMEBUFFER => self.fbo.draw == 0,
+            GL_READ_FRAMEBUFFER => self.fbo.read == 0,
+            _ => false,
+        };
+        if window && self.check_outside_begin_end() {
+            return self.window_attachment_parameter(attachment, pname);
+        }
+        let fbo = self.check_attachment_command(target, attachment)?;
+        let object = &self.fbo.framebuffers[&fbo];
+        let point = if attachment == GL_DEPTH_STENCIL_ATTACHMENT {
+            if object.attachments[DEPTH] != object.attachments[STENCIL] {
+                self.error(GL_INVALID_OPERATION);
+                return None;
+            }
+            DEPTH
+        } else {
+            attachment_point(attachment).ok()?
+        };
+        let attached = object.attachments[point];
+        let format = self.image_info(attached).flatten().map(|i| i.format);
+        let sizes = format.map(renderable_sizes).unwrap_or([0; 6]);
+        let value = match (pname, attached) {
+            (GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, None) => GL_NONE as i32,
+            (GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, Some(Attachment::Renderbuffer(_))) => GL_RENDERBUFFER as i32,
+            (GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, Some(Attachment::Texture { .. })) => GL_TEXTURE as i32,
+            (GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, None) => 0,
+            (
+                GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME,
+                Some(Attachment::Renderbuffer(n) | Attachment::Texture { name: n, .. }),
+            ) => n as i32,
+            (GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL, Some(Attachment::Texture { level, .. })) => level as i32,
+            (GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE, Some(Attachment::Texture { target, face, .. })) => {
+                if target == 3 {
+                    (GL_TEXTURE_CUBE_MAP_POSITIVE_X + face as GLenum) as i32
+                } else {
+                    0
+                }
+            }
+            (GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LAYER, Some(Attachment::Texture { layer, .. })) => layer as i32,
+            (
+                GL_FRAMEBUFFER_ATTACHMENT_RED_SIZE
+                | GL_FRAMEBUFFER_ATTACHMENT_GREEN_SIZE
+                | GL_FRAMEBUFFER_ATTACHMENT_BLUE_SIZE
+                | GL_FRAMEBUFFER_ATTACHMENT_ALPHA_SIZE
+                | GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE
+                | GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE,
+                Some(_),
+            ) => sizes[(pname - GL_FRAMEBUFFER_ATTACHMENT_RED_SIZE) as usize],
+            // Depth and stencil of one image may differ in type: no single answer (as Mesa).
+            (GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, Some(_)) if attachment == GL_DEPTH_STENCIL_ATTACHMENT => {
+                self.error(GL_INVALID_OPERATION);
+                return None;
+            }
+            (GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, Some(_)) => match format {
+                Some(Renderable::Color(ColorFormat::Float32 { .. })) => GL_FLOAT as i32,
+                _ => GL_UNSIGNED_NORMALIZED as i32,
+            },
+            (GL_FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING, Some(_)) => GL_LINEAR as i32,
+            _ => {
+                self.error(if attached.is_none() { GL_INVALID_OPERATION } else { GL_INVALID_ENUM });
+                return None;
+            }
+        };
+        Some(value)
+    }
+
+    /// glGetFramebufferAttachmentParameteriv on the window's framebuffer (GL 3.0 section
+    /// 6.1.13): its buffers are of type GL_FRAMEBUFFER_DEFAULT.
+    fn window_attachment_parameter(&mut self, attachment: GLenum, pname: GLenum) -> Option<i32> {
+        let visual = self.config.visual;
+        let present = match attachment {
+            GL_DEPTH => visual.depth_stencil.depth_bits() > 0,
+            GL_STENCIL => visual.depth_stencil.stencil_bits() > 0,
+            GL_FRONT_LEFT | GL_FRONT_RIGHT | GL_BACK_LEFT | GL_BACK_RIGHT | GL_AUX0 | GL_AUX1 | GL_AUX2 | GL_AUX3 => {
+                super::buffers::slots_of(&visual, attachment).is_some_and(|s| !s.is_empty())
+            }
+            _ => {
+                self.error(GL_INVALID_ENUM);
+                return None;
+            }
+        };
+        let [r, g, b, a] = visual.color.channel_bits().map(|b| b as i32);
+        let color = !matches!(attachment, GL_DEPTH | GL_STENCIL);
+        let size = |c: i32| if color { c } else { 0 };
+        let value = match pname {
+            GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE => (if present { GL_FRAMEBUFFER_DEFAULT } else { GL_NONE }) as i32,
+            _ if !present => {
+                self.error(GL_INVALID_OPERATION);
+                return None;
+            }
+            GL_FRAMEBUFFER_ATTACHMENT_RED_SIZE => size(r),
+            GL_FRAMEBUFFER_ATTACHMENT_GREEN_SIZE => size(g),
+            GL_FRAMEBUFFER_ATTACHMENT_BLUE_SIZE => size(b),
+            GL_FRAMEBUFFER_ATTACHMENT_ALPHA_SIZE => size(a),
+            GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE => {
+                if attachment == GL_DEPTH {
+                    visual.depth_stencil.depth_bits() as i32
+                } else {
+                    0
+                }
+            }
+            GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE => {
+                if attachment == GL_STENCIL {
+                    visual.depth_stencil.stencil_bits() as i32
+                } else {
+                    0
+                }
+            }
+            GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE => {
+                if color && visual.color.is_float() {
+                    GL_FLOAT as i32
+                } else {
+                    GL_UNSIGNED_NORMALIZED as i32
+                }
+            }
+            GL_FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING => GL_LINEAR as i32,
+            _ => {
+                self.error(GL_INVALID_ENUM);
+                return None;
+            }
+        };
+        Some(value)
+    }
+
+    // ---- Completeness -------------------------------------------------------------------
+
+    /// The attached image's size and format: `None` when nothing is attached, `Some(None)`
+    /// when the image does not exist.
+    fn image_info(&self, attachment: Option<Attachment>) -> Option<Option<ImageInfo>> {
+        Some(match attachment? {
+            Attachment::Renderbuffer(name) => self.fbo.renderbuffers.get(&name).and_then(|rb| {
+                let samples = reported_samples(rb.samples);
+                Some(ImageInfo { width: rb.width, height: rb.height, format: rb.format?, samples, supported: true })
+            }),
+            Attachment::Texture { name, target, face, level, layer } => {
+                self.textures.object(name).and_then(|o| o.level(face, level)).and_then(|l| {
+                    l.image.as_ref()?;
+                    if target == 2 && layer >= l.depth {
+                        return None;
+                    }
+                    let base = l.info.base;
+                    let (format, supported) = if base == BaseFormat::Depth {
+                        (Renderable::DepthStencil(depth_texture_format(l.info.bits[0])), true)
+                    } else {
+                        let alpha = l.info.bits[3] > 0;
+                        let eight = l.info.bits[..3] == [8, 8, 8] && matches!(l.info.bits[3], 0 | 8);
+                        let rgb = matches!(base, BaseFormat::Rgb | BaseFormat::Rgba);
+                        (Renderable::Color(ColorFormat::Unorm8 { alpha }), eight && rgb)
+                    };
+                    Some(ImageInfo {
+                        width: l.width,
+                        height: l.height,
+                        format,
+                        samples: 0,
+                        supported: supported && l.border == 0,
+                    })
+                })
+            }
+        })
+    }
+
+    /// The completeness status of framebuffer object `name` (0: the window's, complete).
+    fn framebuffer_status(&self, name: u32) -> GLenum {
+        let Some(object) = self.fbo.framebuffers.get(&name) else {
+            return GL_FRAMEBUFFER_COMPLETE;
+        };
+        let images: [Option<Option<ImageInfo>>; POINTS] =
+            std::array::from_fn(|i| self.image_info(object.attachments[i]));
+        // The bound framebuffers' buffer state is in the context state.
+        let draw_buffers = if name == self.fbo.draw { self.state.color.draw_buffers } else { object.draw_buffers };
+        let read_buffer = if name == self.fbo.read { self.state.pixel_mode.read_buffer } else { object.read_buffer };
+        completeness(&images, &object.attachments, &draw_buffers, read_buffer)
+    }
+
+    /// glCheckFramebufferStatus.
+    pub fn check_framebuffer_status(&mut self, target: GLenum) -> GLenum {
+        if !self.check_outside_begin_end() {
+            return 0;
+        }
+        let name = match target {
+            GL_FRAMEBUFFER | GL_DRAW_FRAMEBUFFER => self.fbo.draw,
+            GL_READ_FRAMEBUFFER => self.fbo.read,
+            _ => {
+                self.error(GL_INVALID_ENUM);
+                return 0;
+            }
+        };
+        self.framebuffer_status(name)
+    }
+
+    /// Whether the draw (`draw`) or read framebuffer is complete; records
+    /// GL_INVALID_FRAMEBUFFER_OPERATION when not (drawing, reading and copying commands).
+    pub fn check_framebuffer_complete(&mut self, draw: bool) -> bool {
+        let name = if draw { self.fbo.draw } else { self.fbo.read };
+        if self.framebuffer_status(name) == GL_FRAMEBUFFER_COMPLETE {
+            true
+        } else {
+            self.error(GL_INVALID_FRAMEBUFFER_OPERATION);
+            false
+        }
+    }
+
+    // ---- What draws and reads go to -----------------------------------------------------
+
+    /// The shape of the draw framebuffer (the window's configuration when none is bound).
+    pub fn draw_config(&self) -> FramebufferConfig {
+        self.object_config(self.fbo.draw, &self.state.color.draw_buffers)
+    }
+
+    /// The shape of the read framebuffer.
+    pub fn read_config(&self) -> FramebufferConfig {
+        self.object_config(self.fbo.read, &[self.state.pixel_mode.read_buffer])
+    }
+
+    /// The configuration of object `name`: its depth/stencil layers and as color format
+    /// the format of the first attached image among `buffers`, else of any color image.
+    fn object_config(&self, name: u32, buffers: &[GLenum]) -> FramebufferConfig {
+        let Some(object) = self.fbo.framebuffers.get(&name) else {
+            return self.config.visual;
+        };
+        let color_of = |point: usize| match self.image_info(object.attachments[point]) {
+            Some(Some(ImageInfo { format: Renderable::Color(f), .. })) => Some(f),
+            _ => None,
+        };
+        let by_buffer = buffers.iter().find_map(|&b| match attachment_slot(b) {
+            Some(Some(ColorSlot::Attachment(i))) => color_of(i as usize),
+            _ => None,
+        });
+        // Fragment colors are clamped unless a draw buffer is a float one (GL_FIXED_ONLY).
+        let float_buffer = buffers.iter().find_map(|&b| match attachment_slot(b) {
+            Some(Some(ColorSlot::Attachment(i))) => color_of(i as usize).filter(|f| f.is_float()),
+            _ => None,
+        });
+        let color = float_buffer
+            .or(by_buffer)
+            .or_else(|| (0..MAX_COLOR_ATTACHMENTS).find_map(color_of))
+            .unwrap_or(ColorFormat::Unorm8 { alpha: true });
+        FramebufferConfig {
+            color,
+            double_buffered: false,
+            stereo: false,
+            aux_buffers: 0,
+            depth_stencil: self.object_depth_stencil(object),
+            accum_bits: 0,
+        }
+    }
+
+    fn object_depth_stencil(&self, object: &FramebufferObject) -> DepthStencilFormat {
+        let format = |point: usize| match self.image_info(object.attachments[point]) {
+            Some(Some(ImageInfo { format: Renderable::DepthStencil(f), .. })) => Some(f),
+            _ => None,
+        };
+        match (format(DEPTH), format(STENCIL)) {
+            (Some(f), _) | (None, Some(f)) => f,
+            (None, None) => DepthStencilFormat::None,
+        }
+    }
+
+    /// The channel write mask of draw buffer `index` writing `slot`: glColorMask's, without
+    /// alpha for an attachment whose format has none (its alpha stays 1, which is what
+    /// blending then reads as destination alpha).
+    pub fn write_mask(&self, slot: ColorSlot, index: usize) -> [bool; 4] {
+        let mut mask = self.state.color.color_mask[index];
+        if let (ColorSlot::Attachment(i), Some(object)) = (slot, self.fbo.framebuffers.get(&self.fbo.draw)) {
+            if let Some(Some(ImageInfo { format: Renderable::Color(f), .. })) =
+                self.image_info(object.attachments[i as usize])
+            {
+                mask[3] &= f.has_alpha();
+            }
+        }
+        mask
+    }
+
+    /// The color slots a draw buffer enum names in the draw framebuffer (existing ones only);
+    /// `None` if the enum is not a buffer name there.
+    pub fn draw_slots(&self, buffer: GLenum) -> Option<Vec<ColorSlot>> {
+        if self.fbo.draw == 0 {
+            return super::buffers::slots_of(&self.config.visual, buffer);
+        }
+        let object = &self.fbo.framebuffers[&self.fbo.draw];
+        Some(match attachment_slot(buffer)? {
+            Some(ColorSlot::Attachment(i)) if object.attachments[i as usize].is_some() => {
+                vec![ColorSlot::Attachment(i)]
+            }
+            _ => vec![],
+        })
+    }
+
+    /// The slot the read buffer enum selects in the read framebuffer.
+    pub fn read_slot_of(&self, buffer: GLenum) -> Option<ColorSlot> {
+        if self.fbo.read == 0 {
+            return super::buffers::read_slot(&self.config.visual, buffer);
+        }
+        let object = &self.fbo.framebuffers[&self.fbo.read];
+        match attachment_slot(buffer)? {
+            Some(ColorSlot::Attachment(i)) if object.attachments[i as usize].is_some() => {
+                Some(ColorSlot::Attachment(i))
+            }
+            _ => None,
+        }
+    }
+
+    /// Samples per pixel of the read framebuffer (1: single-sampled).
+    pub fn read_samples(&self) -> usize {
+        self.samples_of(self.fbo.read)
+    }
+
+    /// Samples per pixel of framebuffer object `name` (0: the window's) without assembling it.
+    pub(super) fn samples_of(&self, name: u32) -> usize {
+        if name == 0 {
+            let window = self.drawable().map(|d| d.lock().unwrap_or_else(|p| p.into_inner()).framebuffer.samples());
+            return window.unwrap_or(1);
+        }
+        let Some(object) = self.fbo.framebuffers.get(&name) else { return 1 };
+        let first = object.attachments.iter().flatten().next().copied();
+        match self.image_info(first) {
+            Some(Some(info)) => (info.samples as usize).max(1),
+            _ => 1,
+        }
+    }
+
+    /// Runs `f` on the draw framebuffer (an object's, assembled, or the window's).
+    pub fn with_framebuffer<R>(&mut self, f: impl FnOnce(&mut Framebuffer) -> R) -> Option<R> {
+        match self.fbo.draw {
+            0 => self.with_window_framebuffer(f),
+            name => self.with_object_framebuffer(name, true, f),
+        }
+    }
+
+    /// Runs `f` on the read framebuffer; what `f` changes is not kept for texture images.
+    pub fn with_read_framebuffer<R>(&mut self, f: impl FnOnce(&mut Framebuffer) -> R) -> Option<R> {
+        match self.fbo.read {
+            0 => self.with_window_framebuffer(f),
+            name => self.with_object_framebuffer(name, false, f),
+        }
+    }
+
+    /// Assembles framebuffer object `name` from its attached images, runs `f` on it and
+    /// puts the images back (texture images only when `write` is set); `None` when the
+    /// object is not complete or a texture image cannot be converted (out of memory).
+    pub fn with_object_framebuffer<R>(
+        &mut self,
+        name: u32,
+        write: bool,
+        f: impl FnOnce(&mut Framebuffer) -> R,
+    ) -> Option<R> {
+        if self.framebuffer_status(name) != GL_FRAMEBUFFER_COMPLETE {
+            return None;
+        }
+        let object = self.fbo.framebuffers.get(&name)?.clone();
+        let config = self.object_config(name, &[]);
+        let first = object.attachments.iter().flatten().next().copied();
+        let info = self.image_info(first).flatten()?;
+        let (width, height) = (info.width, info.height);
+        let mut colors = Vec::new();
+        for (i, attachment) in object.attachments[..MAX_COLOR_ATTACHMENTS].iter().enumerate() {
+            let Some(attachment) = *attachment else { continue };
+            let buffer = match attachment {
+                Attachment::Renderbuffer(rb) => match self.take_storage(rb) {
+                    RenderbufferStorage::Color(b) => Some(b),
+                    _ => None,
+                },
+                Attachment::Texture { .. } => self.texture_color_buffer(attachment, width, height),
+            };
+            match buffer {
+                Some(b) => colors.push((ColorSlot::Attachment(i as u8), b)),
+                None => {
+                    self.return_layers(&object, colors, None, false);
+                    self.error(GL_OUT_OF_MEMORY);
+                    return None;
+                }
+            }
+        }
+        let depth_stencil = match object.attachments[DEPTH].or(object.attachments[STENCIL]) {
+            None => None,
+            Some(Attachment::Renderbuffer(rb)) => match self.take_storage(rb) {
+                RenderbufferStorage::DepthStencil(b) => Some(b),
+                _ => None,
+            },
+            Some(texture) => {
+                let buffer = self.texture_depth_buffer(texture, width, height);
+                if buffer.is_none() {
+                    self.return_layers(&object, colors, None, false);
+                    self.error(GL_OUT_OF_MEMORY);
+                    return None;
+                }
+                buffer
+            }
+        };
+        let mut framebuffer = match info.samples {
+            0 => Framebuffer::from_layers(config, width, height, colors, depth_stencil),
+            n => Framebuffer::from_sample_layers(config, width, height, n as usize, colors, depth_stencil),
+        };
+        let result = f(&mut framebuffer);
+        let (colors, depth_stencil) = framebuffer.into_layers();
+        self.return_layers(&object, colors, Some(depth_stencil), write);
+        Some(result)
+    }
+
+    fn take_storage(&mut self, rb: u32) -> RenderbufferStorage {
+        self.fbo.renderbuffers.get_mut(&rb).map(|r| std::mem::take(&mut r.storage)).unwrap_or_default()
+    }
+
+    /// Puts the layers of an assembled framebuffer back where they came from.
+    fn return_layers(
+        &mut self,
+        object: &FramebufferObject,
+        colors: Vec<(ColorSlot, ColorBuffer)>,
+        depth_stencil: Option<DepthStencilBuffer>,
+        write: bool,
+    ) {
+        for (slot, buffer) in colors {
+            let ColorSlot::Attachment(i) = slot else { continue };
+            match object.attachments[i as usize] {
+                Some(Attachment::Renderbuffer(rb)) => {
+                    if let Some(r) = self.fbo.renderbuffers.get_mut(&rb) {
+                        r.storage = RenderbufferStorage::Color(buffer);
+                    }
+                }
+                Some(texture) if write => self.store_texture_color(texture, &buffer),
+                _ => {}
+            }
+        }
+        let Some(depth_stencil) = depth_stencil else { return };
+        match object.attachments[DEPTH].or(object.attachments[STENCIL]) {
+            Some(Attachment::Renderbuffer(rb)) => {
+                if let Some(r) = self.fbo.renderbuffers.get_mut(&rb) {
+                    r.storage = RenderbufferStorage::DepthStencil(depth_stencil);
+                }
+            }
+            Some(texture) if write => self.store_texture_depth(texture, &depth_stencil),
+            _ => {}
+        }
+    }
+
+    /// The texels of an attached texture image and the pixel count of one 2D slice.
+    fn texture_slice(&self, attachment: Attachment) -> Option<(&Texels, usize)> {
+        let Attachment::Texture { name, face, level, .. } = attachment else { return None };
+        let image = self.textures.object(name)?.level(face, level)?.image.as_ref()?;
+        Some((&image.texels, image.width * image.height))
+    }
+
+    /// A framebuffer-format copy of an attached RGB/RGBA8 texture image.
+    fn texture_color_buffer(&self, attachment: Attachment, width: usize, height: usize) -> Option<ColorBuffer> {
+        let Attachment::Texture { layer, .. } = attachment else { return None };
+        let (Texels::Rgba8(texels), area) = self.texture_slice(attachment)? else { return None };
+        let alpha = matches!(self.image_info(Some(attachment)), Some(Some(ImageInfo { format: Renderable::Color(f), .. })) if f.has_alpha());
+        let mut buffer = color_buffer(ColorFormat::Unorm8 { alpha }, width, height).ok()?;
+        if let ColorPixels::Unorm8(px) = buffer.pixels_mut() {
+            px.copy_from_slice(&texels[layer * area..(layer + 1) * area]);
+        }
+        Some(buffer)
+    }
+
+    /// A fixed-point copy of an attached depth texture image.
+    fn texture_depth_buffer(&self, attachment: Attachment, width: usize, height: usize) -> Option<DepthStencilBuffer> {
+        let Attachment::Texture { layer, .. } = attachment else { return None };
+        let Some(Some(ImageInfo { format: Renderable::DepthStencil(format), .. })) = self.image_info(Some(attachment))
+        else {
+            return None;
+        };
+        let (Texels::Depth(texels), area) = self.texture_slice(attachment)? else { return None };
+        let mut buffer = depth_stencil_buffer(format, width, height).ok()?;
+        let max = crate::framebuffer::format::unorm_max(format.depth_bits()) as f64;
+        let fixed = |d: f32| (d as f64 * max).round() as u32;
+        let texels = &texels[layer * area..(layer + 1) * area];
+        match buffer.pixels_mut() {
+            DepthStencilPixels::Depth16(px) => px.iter_mut().zip(texels).for_each(|(p, &d)| *p = fixed(d) as u16),
+            DepthStencilPixels::Packed24(px) => px.iter_mut().zip(texels).for_each(|(p, &d)| *p = fixed(d)),
+            DepthStencilPixels::Depth32(px, _) => px.iter_mut().zip(texels).for_each(|(p, &d)| *p = fixed(d)),
+            DepthStencilPixels::None => {}
+        }
+        Some(buffer)
+    }
+
+    /// The texture image level an attachment names, for writing (copy on write).
+    fn texture_image_mut(&mut self, attachment: Attachment) -> Option<&mut crate::texture::TexImage> {
+        let Attachment::Texture { name, face, level, .. } = attachment else { return None };
+        let level = self.textures.object_mut(name)?.faces.get_mut(face)?.get_mut(level)?.as_mut()?;
+        level.image.as_mut().map(Arc::make_mut)
+    }
+
+    fn store_texture_color(&mut self, attachment: Attachment, buffer: &ColorBuffer) {
+        let Attachment::Texture { layer, .. } = attachment else { return };
+        let ColorPixels::Unorm8(px) = buffer.pixels() else { return };
+        let Some(image) = self.texture_image_mut(attachment) else { return };
+        let area = image.width * image.height;
+        if let Texels::Rgba8(texels) = &mut image.texels {
+            texels[layer * area..(layer + 1) * area].copy_from_slice(px);
+        }
+    }
+
+    fn store_texture_depth(&mut self, attachment: Attachment, buffer: &DepthStencilBuffer) {
+        let Attachment::Texture { layer, .. } = attachment else { return };
+        let bits = buffer.depth_bits();
+        let mut values = Vec::new();
+        let Some(image) = self.texture_image_mut(attachment) else { return };
+        let (width, height) = (image.width, image.height);
+        for y in 0..height as i32 {
+            buffer.read_depth_row(y, 0, width as i32, &mut values);
+        }
+        let area = width * height;
+        if let Texels::Depth(texels) = &mut image.texels {
+            for (t, &v) in texels[layer * area..(layer + 1) * area].iter_mut().zip(&values) {
+                *t = crate::pixel::convert::depth_to_float(v, bits);
+            }
+        }
+    }
+
+    // ---- Blits --------------------------------------------------------------------------
+
+    /// glBlitFramebuffer.
+    #[allow(clippy::too_many_arguments)]
+    pub fn blit_framebuffer(&mut self, src: [i32; 4], dst: [i32; 4], mask: u32, filter: GLenum) {
+        if !self.check_outside_begin_end() {
+            return;
+        }
+        let known = GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT;
+        if mask & !known != 0 {
+            return self.error(GL_INVALID_VALUE);
+        }
+        if filter != GL_NEAREST && filter != GL_LINEAR {
+            return self.error(GL_INVALID_ENUM);
+        }
+        let depth_stencil_bits = GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT;
+        if filter == GL_LINEAR && mask & depth_stencil_bits != 0 {
+            return self.error(GL_INVALID_OPERATION);
+        }
+        if !self.check_framebuffer_complete(true) || !self.check_framebuffer_complete(false) {
+            return;
+        }
+        let (read, draw) = (self.read_config(), self.draw_config());
+        let (rds, dds) = (read.depth_stencil, draw.depth_stencil);
+        // Depth/stencil blits need the same format in both (when both have the buffer).
+        let depth_mismatch = mask & GL_DEPTH_BUFFER_BIT != 0
+            && rds.depth_bits() > 0
+            && dds.depth_bits() > 0
+            && (rds.depth_bits() != dds.depth_bits() || rds.stencil_bits() != dds.stencil_bits());
+        let stencil_mismatch = mask & GL_STENCIL_BUFFER_BIT != 0
+            && rds.stencil_bits() > 0
+            && dds.stencil_bits() > 0
+            && (rds.depth_bits() != dds.depth_bits() || rds.stencil_bits() != dds.stencil_bits());
+        if depth_mismatch || stencil_mismatch {
+            return self.error(GL_INVALID_OPERATION);
+        }
+        // Multisampled framebuffers: a multisampled read framebuffer is resolved into the
+        // draw one, which must then be single-sampled, with rectangles of the same size and
+        // (for color) the same format (ARB_framebuffer_object, glBlitFramebuffer).
+        let (read_samples, draw_samples) = (self.read_samples(), self.framebuffer_samples());
+        let same_size = (src[2] - src[0], src[3] - src[1]) == (dst[2] - dst[0], dst[3] - dst[1]);
+        let same_color = read.color == draw.color;
+        if draw_samples > 1 || (read_samples > 1 && (!same_size || (mask & GL_COLOR_BUFFER_BIT != 0 && !same_color))) {
+            return self.error(GL_INVALID_OPERATION);
+        }
+        if mask == 0 {
+            return;
+        }
+        // Rendering recorded so far completes first (both framebuffers may be involved).
+        self.flush_rendering();
+        let read_slot = self.current_read_slot();
+        let want_depth = mask & GL_DEPTH_BUFFER_BIT != 0;
+        let want_stencil = mask & GL_STENCIL_BUFFER_BIT != 0;
+        let sources = self.with_read_framebuffer(|fb| {
+            let (w, h) = (fb.width(), fb.height());
+            let color = if mask & GL_COLOR_BUFFER_BIT != 0 {
+                match read_slot.and_then(|s| fb.color_samples(s)) {
+                    // The resolve: each pixel the average of its samples.
+                    Some((samples, count)) => {
+                        let mut resolved = color_buffer(samples.format(), w, h).ok()?;
+                        resolve_color(samples, count, &mut resolved, fb.bounds());
+                        Some(ColorSource::read(&resolved, w, h))
+                    }
+                    None => read_slot.and_then(|s| fb.color(s)).map(|b| ColorSource::read(b, w, h)),
+                }
+            } else {
+                None
+            };
+            let ds = if !(want_depth || want_stencil) {
+                None
+            } else if let Some((samples, count)) = fb.depth_stencil_samples() {
+                // Depth and stencil come from sample 0.
+                let mut resolved = depth_stencil_buffer(samples.format(), w, h).ok()?;
+                resolve_depth_stencil(samples, count, &mut resolved, fb.bounds());
+                Some(DepthStencilSource::read(&resolved, w, h))
+            } else {
+                Some(DepthStencilSource::read(fb.depth_stencil(), w, h))
+            };
+            Some((color, ds))
+        });
+        let Some(sources) = sources else { return };
+        let Some((color, depth_stencil)) = sources else {
+            return self.error(GL_OUT_OF_MEMORY);
+        };
+        let x = BlitAxis { src0: src[0], src1: src[2], dst0: dst[0], dst1: dst[2] };
+        let y = BlitAxis { src0: src[1], src1: src[3], dst0: dst[1], dst1: dst[3] };
+        if x.src0 == x.src1 || y.src0 == y.src1 || x.dst0 == x.dst1 || y.dst0 == y.dst1 {
+            return;
+        }
+        let targets: Vec<ColorSlot> = self.draw_targets().into_iter().map(|(s, _)| s).collect();
+        let linear = filter == GL_LINEAR;
+        let scissor = (self.state.scissor.test, self.state.scissor.rect);
+        let _ = self.with_framebuffer(|fb| {
+            let mut clip = fb.bounds();
+            if scissor.0 {
+                let [sx, sy, sw, sh] = scissor.1;
+                clip = clip.intersect(Rect::from_xywh(sx, sy, sw, sh));
+            }
+            let rect = blit::destination(x, y, clip);
+            if rect.is_empty() {
+                return;
+            }
+            if let Some(color) = &color {
+                for slot in &targets {
+                    if let Some(buffer) = fb.color_mut(*slot) {
+                        blit::blit_color(color, buffer, x, y, rect, linear);
+                    }
+                }
+            }
+            if let Some(source) = &depth_stencil {
+                let width = fb.width();
+                blit::blit_depth_stencil(source, fb.depth_stencil_mut(), width, x, y, rect, (want_depth, want_stencil));
+            }
+        });
+    }
+}
+
+/// The (target index, face) of a glFramebufferTexture{dims}D texture target.
+fn tex_target_of(dims: usize, target: GLenum) -> Option<(usize, usize)> {
+    match (dims, target) {
+        (1, GL_TEXTURE_1D) => Some((0, 0)),
+        (2, GL_TEXTURE_2D) => Some((1, 0)),
+        (2, GL_TEXTURE_CUBE_MAP_POSITIVE_X..=GL_TEXTURE_CUBE_MAP_NEGATIVE_Z) => {
+            Some((3, (target - GL_TEXTURE_CUBE_MAP_POSITIVE_X) as usize))
+        }
+        (3, GL_TEXTURE_3D) => Some((2, 0)),
+        _ => None,
+    }
+}
+
+/// Bits of red, green, blue, alpha, depth, stencil of a renderable format.
+fn renderable_sizes(format: Renderable) -> [i32; 6] {
+    match format {
+        Renderable::Color(f) => {
+            let [r, g, b, a] = f.channel_bits().map(|b| b as i32);
+            [r, g, b, a, 0, 0]
+        }
+        Renderable::DepthStencil(f) => [0, 0, 0, 0, f.depth_bits() as i32, f.stencil_bits() as i32],
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn image(format: Renderable, size: usize) -> Option<Option<ImageInfo>> {
+        Some(Some(ImageInfo { width: size, height: size, format, samples: 0, supported: true }))
+    }
+
+    const RGBA8: Renderable = Renderable::Color(ColorFormat::Unorm8 { alpha: true });
+    const D24S8: Renderable = Renderable::DepthStencil(DepthStencilFormat::Packed24 { depth: true, stencil: true });
+    const S8: Renderable = Renderable::DepthStencil(DepthStencilFormat::Packed24 { depth: false, stencil: true });
+
+    fn status(images: [Option<Option<ImageInfo>>; POINTS], attachments: [Option<Attachment>; POINTS]) -> GLenum {
+        let mut draw = [GL_NONE; MAX_DRAW_BUFFERS];
+        draw[0] = GL_COLOR_ATTACHMENT0;
+        completeness(&images, &attachments, &draw, GL_COLOR_ATTACHMENT0)
+    }
+
+    fn rb(n: u32) -> Option<Attachment> {
+        Some(Attachment::Renderbuffer(n))
+    }
+
+    #[test]
+    fn completeness_follows_the_rules_in_order() {
+        let none: [Option<Option<ImageInfo>>; POINTS] = Default::default();
+        assert_eq!(status(none, [None; POINTS]), GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT);
+
+        let mut images = none;
+        let mut att = [None; POINTS];
+        images[0] = image(RGBA8, 4);
+        att[0] = rb(1);
+        assert_eq!(status(images, att), GL_FRAMEBUFFER_COMPLETE);
+
+        // A color format at the depth point; an image without storage; a zero-size image.
+        let mut bad = images;
+        bad[DEPTH] = image(RGBA8, 4);
+        assert_eq!(status(bad, att), GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT);
+        bad[DEPTH] = Some(None);
+        assert_eq!(status(bad, att), GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT);
+        bad[DEPTH] = image(D24S8, 0);
+        assert_eq!(status(bad, att), GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT);
+        // Stencil-only at the depth point.
+        bad[DEPTH] = image(S8, 4);
+        assert_eq!(status(bad, att), GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT);
+
+        // Draw buffer 0 names an empty point.
+        let mut only_depth = none;
+        only_depth[DEPTH] = image(D24S8, 4);
+        let mut att_d = [None; POINTS];
+        att_d[DEPTH] = rb(2);
+        assert_eq!(status(only_depth, att_d), GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER);
+        let no_buffers = [GL_NONE; MAX_DRAW_BUFFERS];
+        assert_eq!(
+            completeness(&only_depth, &att_d, &no_buffers, GL_COLOR_ATTACHMENT0),
+            GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER
+        );
+        assert_eq!(completeness(&only_depth, &att_d, &no_buffers, GL_NONE), GL_FRAMEBUFFER_COMPLETE);
+    }
+
+    #[test]
+    fn unsupported_combinations() {
+        let mut images: [Option<Option<ImageInfo>>; POINTS] = Default::default();
+        let mut att = [None; POINTS];
+        images[0] = image(RGBA8, 4);
+        att[0] = rb(1);
+        // Sizes differ.
+        images[1] = image(RGBA8, 8);
+        att[1] = rb(2);
+        assert_eq!(status(images, att), GL_FRAMEBUFFER_UNSUPPORTED);
+        // One renderbuffer at two color points.
+        images[1] = image(RGBA8, 4);
+        att[1] = rb(1);
+        assert_eq!(status(images, att), GL_FRAMEBUFFER_UNSUPPORTED);
+        att[1] = rb(2);
+        assert_eq!(status(images, att), GL_FRAMEBUFFER_COMPLETE);
+        // Depth and stencil from different renderbuffers, or from one.
+        images[DEPTH] = image(D24S8, 4);
+        images[STENCIL] = image(D24S8, 4);
+        att[DEPTH] = rb(3);
+        att[STENCIL] = rb(4);
+        assert_eq!(status(images, att), GL_FRAMEBUFFER_UNSUPPORTED);
+        att[STENCIL] = rb(3);
+        assert_eq!(status(images, att), GL_FRAMEBUFFER_COMPLETE);
+        // Sample counts differ.
+        images[1] = Some(Some(ImageInfo { samples: 4, ..images[0].unwrap().unwrap() }));
+        assert_eq!(status(images, att), GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE);
+    }
+
+    #[test]
+    fn renderbuffer_formats_store_what_they_name() {
+        assert_eq!(renderbuffer_format(GL_RGBA8), Some(RGBA8));
+        assert_eq!(renderbuffer_format(GL_DEPTH24_STENCIL8), Some(D24S8));
+        assert_eq!(renderbuffer_format(GL_STENCIL_INDEX8), Some(S8));
+        assert_eq!(renderbuffer_format(GL_RGBA16F).map(renderable_sizes), Some([32, 32, 32, 32, 0, 0]),);
+        assert_eq!(renderbuffer_format(GL_DEPTH_COMPONENT16).map(renderable_sizes), Some([0, 0, 0, 0, 16, 0]));
+        assert_eq!(renderbuffer_format(GL_LUMINANCE8), None);
+        assert_eq!(renderbuffer_format(GL_COLOR_INDEX), None);
+    }
+}
