@@ -71,7 +71,10 @@ fn alpha_coverage(alpha: f32, samples: usize) -> u8 {
 pub type SampleMasks = [u64; MAX_SAMPLES];
 
 /// [`super::shade_span`] on a multisampled band for a primitive rasterized at pixel
-/// centres: every sample of a covered pixel is covered, at the pixel's depth.
+/// centres: every sample of a covered pixel is covered, at the pixel's depth. Never inlined:
+/// it must not change how the single-sample path around its call compiles.
+#[cold]
+#[inline(never)]
 #[allow(clippy::too_many_arguments)]
 pub fn shade_span_all_samples(
     state: &DrawState,
