@@ -5,6 +5,7 @@
 #      tests/glx/glx_api.c: the GLX API (configs, context rules, drawables, resizing, stereo);
 #      tests/glx/read_drawable.c: reads from a separate read drawable;
 #      tests/glx/glx_errors.c: GLX errors as X protocol errors;
+#      tests/glx/multisample.c: a 4-sample window's resolved edges;
 #   3. tests/glx/glut_scene.c (freeglut): a screenshot (xwd) shows the expected picture;
 #   4. glxgears runs and its window shows the gears (not blank);
 #   5. piglit: every command of ../shared/piglit/fragment-ops.txt is run; each one
@@ -92,6 +93,9 @@ gcc -std=c11 -O1 -Wall -Werror tests/glx/glx_errors.c $gl_flags -lX11 -lpthread 
 # The same two programs presenting with XPutImage instead of MIT-SHM
 "${on_tessera[@]}" TESSERA_XSHM=0 timeout 60 "$work/two_threads" || fail "two_threads.c with TESSERA_XSHM=0"
 "${on_tessera[@]}" TESSERA_XSHM=0 timeout 60 "$work/glx_api" || fail "glx_api.c with TESSERA_XSHM=0"
+# A multisampled (4-sample) window: resolved edges in glReadPixels and on the screen
+gcc -std=c11 -O1 -Wall -Werror tests/glx/multisample.c $gl_flags -lX11 -o "$work/multisample"
+"${on_tessera[@]}" timeout 60 "$work/multisample" || fail "tests/glx/multisample.c"
 
 # The install layout: Debian's libGLU reaches tessera through libOpenGL.so.0.
 glu=$(ldconfig -p 2>/dev/null | awk '/libGLU.so.1 / {print $NF}' | head -1 || true)

@@ -7860,6 +7860,10 @@ void glPolygonOffsetClamp(GLfloat factor, GLfloat units, GLfloat clamp);
 
 void glPolygonOffsetClampEXT(GLfloat factor, GLfloat units, GLfloat clamp);
 
+void glSampleCoverage(GLclampf value, GLboolean invert);
+
+void glSampleCoverageARB(GLclampf value, GLboolean invert);
+
 void glLineWidth(GLfloat width);
 
 void glLineStipple(GLint factor, GLushort pattern);

@@ -50,6 +50,16 @@ pub extern "C" fn glPolygonOffsetClampEXT(factor: GLfloat, units: GLfloat, clamp
 }
 
 #[no_mangle]
+pub extern "C" fn glSampleCoverage(value: GLclampf, invert: GLboolean) {
+    record_or_run(move |ctx| ctx.sample_coverage(value, invert != 0))
+}
+
+#[no_mangle]
+pub extern "C" fn glSampleCoverageARB(value: GLclampf, invert: GLboolean) {
+    glSampleCoverage(value, invert)
+}
+
+#[no_mangle]
 pub extern "C" fn glLineWidth(width: GLfloat) {
     record_or_run(move |ctx| ctx.line_width(width))
 }

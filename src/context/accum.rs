@@ -105,6 +105,7 @@ impl Context {
                         if let Some((accum, color)) = fb.accum_and_color_mut(slot) {
                             accum.return_to(color, rect, value, color_masks[index]);
                         }
+                        fb.broadcast_to_samples(slot, rect);
                     }
                 }
             }

@@ -198,23 +198,23 @@ impl Context {
             }
             if mask & GL_COLOR_BUFFER_BIT != 0 {
                 for &(slot, index) in &targets {
+                    let Some(format) = fb.color_format(slot) else { continue };
+                    // ARB_color_buffer_float: fragment color clamping does not apply to
+                    // clears; only fixed-point buffers clamp the clear color (as Mesa).
+                    let value = if !format.is_float() { clear_color.map(|c| c.clamp(0.0, 1.0)) } else { clear_color };
                     if let Some(buffer) = fb.color_mut(slot) {
-                        // ARB_color_buffer_float: fragment color clamping does not apply to
-                        // clears; only fixed-point buffers clamp the clear color (as Mesa).
-                        let value = if !buffer.format().is_float() {
-                            clear_color.map(|c| c.clamp(0.0, 1.0))
-                        } else {
-                            clear_color
-                        };
                         buffer.clear(rect, value, color_masks[index]);
                     }
+                    fb.clear_color_samples(slot, rect, value, color_masks[index]);
                 }
             }
             if mask & GL_DEPTH_BUFFER_BIT != 0 && depth.0 {
                 fb.depth_stencil_mut().clear_depth(rect, depth.1);
+                fb.clear_depth_samples(rect, depth.1);
             }
             if mask & GL_STENCIL_BUFFER_BIT != 0 {
                 fb.depth_stencil_mut().clear_stencil(rect, stencil.1 as u8, stencil.0 as u8);
+                fb.clear_stencil_samples(rect, stencil.1 as u8, stencil.0 as u8);
             }
             if mask & GL_ACCUM_BUFFER_BIT != 0 {
                 if let Some(accum) = fb.accum_mut() {

@@ -455,7 +455,8 @@ impl Context {
         let first_slot = 3 * usize::from(self.color_sum_active()) + usize::from(self.state.fog.enabled);
         fragment.texturing = self.compile_texturing(first_slot, height as i32).map(std::sync::Arc::new);
         let samples_passed = self.queries.active_counter();
-        DrawState { fragment, clip, fill_clip, polygon_stipple, samples_passed }
+        let multisample = self.multisample_state(self.framebuffer_samples());
+        DrawState { fragment, clip, fill_clip, polygon_stipple, samples_passed, multisample }
     }
 
     /// GL_LINE_STIPPLE's state at the start of a draw, when enabled.

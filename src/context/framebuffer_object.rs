@@ -30,9 +30,12 @@
 //! other base formats or with a border, and renderbuffers of the alpha, luminance and
 //! intensity formats (accepted by glRenderbufferStorage).
 //!
-//! **Multisample renderbuffers**: glRenderbufferStorageMultisample validates and stores the
-//! requested count; until multisample storage exists the storage is single-sample and
-//! GL_RENDERBUFFER_SAMPLES reads 0 (the specification asks for at least the requested count).
+//! **Multisample renderbuffers**: glRenderbufferStorageMultisample allocates the smallest
+//! supported count of at least the requested one (1 → 2; 2, 4 or 8, `framebuffer::
+//! multisample`), which GL_RENDERBUFFER_SAMPLES reports; the storage holds every sample
+//! (sample rows), and a framebuffer object of multisampled attachments is assembled into a
+//! multisampled [`Framebuffer`] ([`Framebuffer::from_sample_layers`]) without resolved
+//! layers: reading it needs a glBlitFramebuffer resolve, as the specification says.
 use super::state::MAX_DRAW_BUFFERS;
 use super::texture::TARGETS;
 use super::Context;
@@ -40,6 +43,7 @@ use crate::api::enums::*;
 use crate::api::types::GLenum;
 use crate::framebuffer::blit::{self, BlitAxis, ColorSource, DepthStencilSource};
 use crate::framebuffer::layers::{color_buffer, depth_stencil_buffer};
+use crate::framebuffer::multisample::{resolve_color, resolve_depth_stencil, supported_samples};
 use crate::framebuffer::surface::{ColorPixels, DepthStencilPixels};
 use crate::framebuffer::{
     ColorBuffer, ColorFormat, ColorSlot, DepthStencilBuffer, DepthStencilFormat, Framebuffer, FramebufferConfig, Rect,
@@ -107,6 +111,8 @@ pub struct Renderbuffer {
     pub height: usize,
     /// The sample count requested by glRenderbufferStorageMultisample.
     pub requested_samples: i32,
+    /// The samples per pixel of the storage (1: single-sampled).
+    pub samples: usize,
     pub format: Option<Renderable>,
     storage: RenderbufferStorage,
 }
@@ -255,6 +261,15 @@ pub fn attachment_slot(buffer: GLenum) -> Option<Option<ColorSlot>> {
             Some(Some(ColorSlot::Attachment((b - GL_COLOR_ATTACHMENT0) as u8)))
         }
         _ => None,
+    }
+}
+
+/// GL_RENDERBUFFER_SAMPLES / GL_SAMPLES of storage with `samples` samples per pixel.
+fn reported_samples(samples: usize) -> i32 {
+    if samples > 1 {
+        samples as i32
+    } else {
+        0
     }
 }
 
@@ -459,6 +474,7 @@ impl Context {
                 width: 0,
                 height: 0,
                 requested_samples: 0,
+                samples: 1,
                 format: None,
                 storage: RenderbufferStorage::None,
             };
@@ -552,9 +568,12 @@ impl Context {
         // Draws recorded into the old storage complete first.
         self.flush_rendering();
         let (w, h) = (w as usize, h as usize);
+        let sample_count = supported_samples(samples as usize).unwrap_or(1);
+        // Multisampled storage: `sample_count` storage rows per pixel row.
+        let rows = h * sample_count;
         let storage = match format {
-            Renderable::Color(f) => color_buffer(f, w, h).map(RenderbufferStorage::Color),
-            Renderable::DepthStencil(f) => depth_stencil_buffer(f, w, h).map(RenderbufferStorage::DepthStencil),
+            Renderable::Color(f) => color_buffer(f, w, rows).map(RenderbufferStorage::Color),
+            Renderable::DepthStencil(f) => depth_stencil_buffer(f, w, rows).map(RenderbufferStorage::DepthStencil),
         };
         let Ok(storage) = storage else {
             return self.error(GL_OUT_OF_MEMORY);
@@ -565,6 +584,7 @@ impl Context {
                 width: w,
                 height: h,
                 requested_samples: samples,
+                samples: sample_count,
                 format: Some(format),
                 storage,
             };
@@ -589,7 +609,7 @@ impl Context {
             GL_RENDERBUFFER_WIDTH => rb.width as i32,
             GL_RENDERBUFFER_HEIGHT => rb.height as i32,
             GL_RENDERBUFFER_INTERNAL_FORMAT => rb.internal_format as i32,
-            GL_RENDERBUFFER_SAMPLES => 0,
+            GL_RENDERBUFFER_SAMPLES => reported_samples(rb.samples),
             GL_RENDERBUFFER_RED_SIZE => bits[0],
             GL_RENDERBUFFER_GREEN_SIZE => bits[1],
             GL_RENDERBUFFER_BLUE_SIZE => bits[2],
@@ -874,11 +894,12 @@ impl Context {
     fn image_info(&self, attachment: Option<Attachment>) -> Option<Option<ImageInfo>> {
         Some(match attachment? {
             Attachment::Renderbuffer(name) => self.fbo.renderbuffers.get(&name).and_then(|rb| {
+                let samples = reported_samples(rb.samples);
                 Some(ImageInfo {
                     width: rb.width,
                     height: rb.height,
                     format: rb.format?,
-                    samples: 0,
+                    samples,
                     supported: renderbuffer_supported(rb.internal_format),
                 })
             }),
@@ -1067,6 +1088,25 @@ impl Context {
         Some((info.width, info.height, config))
     }
 
+    /// Samples per pixel of the read framebuffer (1: single-sampled).
+    pub fn read_samples(&self) -> usize {
+        self.samples_of(self.fbo.read)
+    }
+
+    /// Samples per pixel of framebuffer object `name` (0: the window's) without assembling it.
+    pub(super) fn samples_of(&self, name: u32) -> usize {
+        if name == 0 {
+            let window = self.drawable().map(|d| d.lock().unwrap_or_else(|p| p.into_inner()).framebuffer.samples());
+            return window.unwrap_or(1);
+        }
+        let Some(object) = self.fbo.framebuffers.get(&name) else { return 1 };
+        let first = object.attachments.iter().flatten().next().copied();
+        match self.image_info(first) {
+            Some(Some(info)) => (info.samples as usize).max(1),
+            _ => 1,
+        }
+    }
+
     /// Runs `f` on the draw framebuffer (an object's, assembled, or the window's).
     pub fn with_framebuffer<R>(&mut self, f: impl FnOnce(&mut Framebuffer) -> R) -> Option<R> {
         match self.fbo.draw {
@@ -1136,7 +1176,10 @@ impl Context {
                 buffer
             }
         };
-        let mut framebuffer = Framebuffer::from_layers(config, width, height, colors, depth_stencil);
+        let mut framebuffer = match info.samples {
+            0 => Framebuffer::from_layers(config, width, height, colors, depth_stencil),
+            n => Framebuffer::from_sample_layers(config, width, height, n as usize, colors, depth_stencil),
+        };
         let result = f(&mut framebuffer);
         let (colors, depth_stencil) = framebuffer.into_layers();
         self.return_layers(&object, colors, Some(depth_stencil), write);
@@ -1318,6 +1361,15 @@ impl Context {
         if depth_mismatch || stencil_mismatch {
             return self.error(GL_INVALID_OPERATION);
         }
+        // Multisampled framebuffers: a multisampled read framebuffer is resolved into the
+        // draw one, which must then be single-sampled, with rectangles of the same size and
+        // (for color) the same format (ARB_framebuffer_object, glBlitFramebuffer).
+        let (read_samples, draw_samples) = (self.read_samples(), self.framebuffer_samples());
+        let same_size = (src[2] - src[0], src[3] - src[1]) == (dst[2] - dst[0], dst[3] - dst[1]);
+        let same_color = read.color == draw.color;
+        if draw_samples > 1 || (read_samples > 1 && (!same_size || (mask & GL_COLOR_BUFFER_BIT != 0 && !same_color))) {
+            return self.error(GL_INVALID_OPERATION);
+        }
         if mask == 0 {
             return;
         }
@@ -1329,14 +1381,34 @@ impl Context {
         let sources = self.with_read_framebuffer(|fb| {
             let (w, h) = (fb.width(), fb.height());
             let color = if mask & GL_COLOR_BUFFER_BIT != 0 {
-                read_slot.and_then(|s| fb.color(s)).map(|b| ColorSource::read(b, w, h))
+                match read_slot.and_then(|s| fb.color_samples(s)) {
+                    // The resolve: each pixel the average of its samples.
+                    Some((samples, count)) => {
+                        let mut resolved = color_buffer(samples.format(), w, h).ok()?;
+                        resolve_color(samples, count, &mut resolved, fb.bounds());
+                        Some(ColorSource::read(&resolved, w, h))
+                    }
+                    None => read_slot.and_then(|s| fb.color(s)).map(|b| ColorSource::read(b, w, h)),
+                }
             } else {
                 None
             };
-            let ds = (want_depth || want_stencil).then(|| DepthStencilSource::read(fb.depth_stencil(), w, h));
-            (color, ds)
+            let ds = if !(want_depth || want_stencil) {
+                None
+            } else if let Some((samples, count)) = fb.depth_stencil_samples() {
+                // Depth and stencil come from sample 0.
+                let mut resolved = depth_stencil_buffer(samples.format(), w, h).ok()?;
+                resolve_depth_stencil(samples, count, &mut resolved, fb.bounds());
+                Some(DepthStencilSource::read(&resolved, w, h))
+            } else {
+                Some(DepthStencilSource::read(fb.depth_stencil(), w, h))
+            };
+            Some((color, ds))
         });
-        let Some((color, depth_stencil)) = sources else { return };
+        let Some(sources) = sources else { return };
+        let Some((color, depth_stencil)) = sources else {
+            return self.error(GL_OUT_OF_MEMORY);
+        };
         let x = BlitAxis { src0: src[0], src1: src[2], dst0: dst[0], dst1: dst[2] };
         let y = BlitAxis { src0: src[1], src1: src[3], dst0: dst[1], dst1: dst[3] };
         if x.src0 == x.src1 || y.src0 == y.src1 || x.dst0 == x.dst1 || y.dst0 == y.dst1 {

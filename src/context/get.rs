@@ -217,7 +217,13 @@ impl Context {
             GL_STEREO => one(Bool(fb.stereo)),
             GL_RGBA_MODE => one(Bool(true)),
             GL_INDEX_MODE => one(Bool(false)),
-            GL_SAMPLE_BUFFERS | GL_SAMPLES => one(Int(0)),
+            GL_SAMPLE_BUFFERS => one(Int(i32::from(self.framebuffer_samples() > 1))),
+            GL_SAMPLES => one(Int(match self.framebuffer_samples() {
+                1 => 0,
+                n => n as i32,
+            })),
+            GL_SAMPLE_COVERAGE_VALUE => one(Float(s.multisample.coverage_value)),
+            GL_SAMPLE_COVERAGE_INVERT => one(Bool(s.multisample.coverage_invert)),
 
             // Implementation limits.
             GL_MAX_VIEWPORT_DIMS => ints([MAX_VIEWPORT_DIM, MAX_VIEWPORT_DIM]),

@@ -23,6 +23,7 @@ pub mod hints;
 pub mod lighting;
 pub mod lists;
 pub mod matrix;
+pub mod multisample;
 pub mod pixel_rect;
 pub mod queries;
 pub mod raster_pos;

@@ -262,7 +262,7 @@ impl Context {
             self.error(GL_INVALID_VALUE);
             return None;
         }
-        if !self.check_framebuffer_complete(false) {
+        if !self.check_framebuffer_complete(false) || !self.check_read_single_sampled() {
             return None;
         }
         let Some(read_format) = read_format(format) else {

@@ -539,11 +539,21 @@ pub struct MultisampleState {
     pub alpha_to_coverage: bool,
     pub alpha_to_one: bool,
     pub coverage: bool,
+    /// glSampleCoverage's value (clamped to [0, 1]) and invert flag.
+    pub coverage_value: f32,
+    pub coverage_invert: bool,
 }
 
 impl Default for MultisampleState {
     fn default() -> Self {
-        MultisampleState { enabled: true, alpha_to_coverage: false, alpha_to_one: false, coverage: false }
+        MultisampleState {
+            enabled: true,
+            alpha_to_coverage: false,
+            alpha_to_one: false,
+            coverage: false,
+            coverage_value: 1.0,
+            coverage_invert: false,
+        }
     }
 }
 

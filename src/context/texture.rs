@@ -914,7 +914,7 @@ impl Context {
         let Some((it, info, _)) = self.check_tex_image(dims, &a, None, false) else {
             return;
         };
-        if !self.check_framebuffer_complete(false) {
+        if !self.check_framebuffer_complete(false) || !self.check_read_single_sampled() {
             return;
         }
         let depth_bits = self.read_config().depth_stencil.depth_bits();
@@ -950,7 +950,7 @@ impl Context {
         let Some((it, lv)) = self.check_sub_image(dims, target, level, &Region { depth: 1, ..r }) else {
             return;
         };
-        if !self.check_framebuffer_complete(false) {
+        if !self.check_framebuffer_complete(false) || !self.check_read_single_sampled() {
             return;
         }
         let depth_bits = self.read_config().depth_stencil.depth_bits();

@@ -31,14 +31,26 @@ pub struct ColorTarget<'a> {
     pub pixels: ColorBand<'a>,
 }
 
-/// A strip of rows `[y0, y0 + rows)` of every layer a scene writes.
+/// A strip of rows `[y0, y0 + rows)` of every layer a scene writes. On a multisampled
+/// framebuffer the slices hold every sample of those rows (`multisample.rs`: storage row
+/// `(y − y0)·samples + s` is sample `s` of pixel row `y`).
 pub struct Band<'a> {
     pub y0: i32,
     pub rows: usize,
     pub width: usize,
+    /// Samples per pixel (1: single-sampled).
+    pub samples: usize,
     pub colors: Vec<ColorTarget<'a>>,
     pub depth: DepthBand<'a>,
     pub depth_format: DepthStencilFormat,
+}
+
+impl Band<'_> {
+    /// The index of sample `sample` of pixel (x, y) (inside the band) in its slices.
+    #[inline]
+    pub fn sample_index(&self, y: i32, x: i32, sample: usize) -> usize {
+        ((y - self.y0) as usize * self.samples + sample) * self.width + x as usize
+    }
 }
 
 /// Splits `slice` into chunks of `chunk` elements (the last may be shorter).
@@ -52,13 +64,15 @@ impl Framebuffer {
     pub fn bands(&mut self, band_rows: usize, slots: &[ColorSlot]) -> Vec<Band<'_>> {
         let width = self.width;
         let height = self.height;
-        let chunk = width * band_rows;
+        let samples = self.samples();
+        let chunk = width * band_rows * samples;
         let count = height.div_ceil(band_rows.max(1));
         let mut bands: Vec<Band<'_>> = (0..count)
             .map(|i| Band {
                 y0: (i * band_rows) as i32,
                 rows: band_rows.min(height - i * band_rows),
                 width,
+                samples,
                 colors: Vec::new(),
                 depth: DepthBand::None,
                 depth_format: self.config.depth_stencil,
@@ -66,7 +80,12 @@ impl Framebuffer {
             .collect();
         // Split every selected buffer, then hand the pieces to the bands in `slots` order.
         let mut split_buffers: Vec<(ColorSlot, ColorFormat, Vec<ColorBand<'_>>)> = Vec::new();
-        for (slot, buffer) in self.color.iter_mut().filter(|(s, _)| slots.contains(s)) {
+        // A multisampled framebuffer renders into its samples (resolved after the scene).
+        let (color_layers, depth_layer) = match self.multisample.as_mut() {
+            Some(layers) => (&mut layers.color, &mut layers.depth_stencil),
+            None => (&mut self.color, &mut self.depth_stencil),
+        };
+        for (slot, buffer) in color_layers.iter_mut().filter(|(s, _)| slots.contains(s)) {
             let format = buffer.format();
             let pieces: Vec<ColorBand<'_>> = match buffer.pixels_mut() {
                 ColorPixels::Unorm8(px) => split(px, chunk).into_iter().map(ColorBand::Unorm8).collect(),
@@ -85,7 +104,7 @@ impl Framebuffer {
                 band.colors.push(ColorTarget { slot, format, pixels });
             }
         }
-        let depth_pieces: Vec<DepthBand<'_>> = match self.depth_stencil.pixels_mut() {
+        let depth_pieces: Vec<DepthBand<'_>> = match depth_layer.pixels_mut() {
             DepthStencilPixels::None => Vec::new(),
             DepthStencilPixels::Depth16(px) => split(px, chunk).into_iter().map(DepthBand::Depth16).collect(),
             DepthStencilPixels::Packed24(px) => split(px, chunk).into_iter().map(DepthBand::Packed24).collect(),

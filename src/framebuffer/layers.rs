@@ -40,11 +40,15 @@ impl Framebuffer {
         let depth_stencil = depth_stencil.unwrap_or_else(|| {
             DepthStencilBuffer::new(DepthStencilFormat::None, width, 0).expect("an empty buffer allocates nothing")
         });
-        Framebuffer { config, width, height, color, depth_stencil, accum: None }
+        Framebuffer { config, width, height, color, depth_stencil, accum: None, multisample: None }
     }
 
-    /// The layers back, as [`Framebuffer::from_layers`] took them.
+    /// The layers back, as [`Framebuffer::from_layers`] or
+    /// [`Framebuffer::from_sample_layers`] took them.
     pub fn into_layers(self) -> (Vec<(ColorSlot, ColorBuffer)>, DepthStencilBuffer) {
-        (self.color, self.depth_stencil)
+        match self.multisample {
+            Some(layers) => (layers.color, layers.depth_stencil),
+            None => (self.color, self.depth_stencil),
+        }
     }
 }

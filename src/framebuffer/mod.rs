@@ -10,6 +10,7 @@ pub mod blit;
 pub mod external;
 pub mod format;
 pub mod layers;
+pub mod multisample;
 pub mod surface;
 
 pub use format::{ColorFormat, DepthStencilFormat};
@@ -111,6 +112,9 @@ pub struct Framebuffer {
     color: Vec<(ColorSlot, ColorBuffer)>,
     depth_stencil: DepthStencilBuffer,
     accum: Option<AccumBuffer>,
+    /// The multisampled layers, when the framebuffer has more than one sample per pixel
+    /// (`multisample.rs`); the layers above then hold the resolved image.
+    multisample: Option<multisample::SampleLayers>,
 }
 
 impl Framebuffer {
@@ -125,7 +129,7 @@ impl Framebuffer {
         }
         let depth_stencil = DepthStencilBuffer::new(config.depth_stencil, width, pixels)?;
         let accum = if config.accum_bits > 0 { Some(AccumBuffer::new(width, pixels)?) } else { None };
-        Ok(Framebuffer { config, width, height, color, depth_stencil, accum })
+        Ok(Framebuffer { config, width, height, color, depth_stencil, accum, multisample: None })
     }
 
     pub fn config(&self) -> &FramebufferConfig {
@@ -192,6 +196,13 @@ impl Framebuffer {
         }
         let copy = self.color[source].1.clone();
         self.color[target].1 = copy;
+        if let Some(layers) = self.multisample.as_mut() {
+            let find = |slot| layers.color.iter().position(|(s, _)| *s == slot);
+            if let (Some(source), Some(target)) = (find(from), find(to)) {
+                let copy = layers.color[source].1.clone();
+                layers.color[target].1 = copy;
+            }
+        }
     }
 }
 

@@ -69,6 +69,11 @@ impl ColorBuffer {
         self.format
     }
 
+    /// Pixels per row.
+    pub fn width(&self) -> usize {
+        self.width
+    }
+
     /// Rows in the buffer.
     pub fn height(&self) -> usize {
         let len = match &self.pixels {
@@ -318,6 +323,11 @@ impl DepthStencilBuffer {
 
     pub fn format(&self) -> DepthStencilFormat {
         self.format
+    }
+
+    /// Pixels per row.
+    pub fn width(&self) -> usize {
+        self.width
     }
 
     pub fn depth_bits(&self) -> u32 {

@@ -12,6 +12,7 @@
 pub mod accuracy;
 pub mod interpolate;
 pub mod line;
+pub mod multisample;
 pub mod pixels;
 pub mod point;
 pub mod smooth;
@@ -51,6 +52,8 @@ pub struct DrawState {
     /// The active occlusion query's counter: fragments passing the depth and stencil tests
     /// are added per span (a sum, so the same for any thread count).
     pub samples_passed: Option<Arc<AtomicU64>>,
+    /// The multisample state when the framebuffer is multisampled (`multisample.rs`).
+    pub multisample: Option<multisample::MultisampleState>,
 }
 
 impl PartialEq for DrawState {
@@ -67,6 +70,7 @@ impl PartialEq for DrawState {
             && self.clip == other.clip
             && self.fill_clip == other.fill_clip
             && self.polygon_stipple == other.polygon_stipple
+            && self.multisample == other.multisample
     }
 }
 
@@ -179,6 +183,9 @@ pub fn shade_covered_span(
     varyings: impl Fn(i32, i32, &mut [f32]),
     coverage: impl Coverage,
 ) {
+    if band.samples > 1 {
+        return multisample::shade_span_all_samples(state, band, scratch, span, live, z_at, colors, varyings);
+    }
     let fragment = &state.fragment;
     let mut colors = Some(colors);
     let mut uniform = None;
@@ -416,6 +423,11 @@ impl Scene {
     pub fn add(&mut self, state: u32, bounds: Rect, primitive: Primitive) {
         let drawn = &self.states[state as usize];
         let clip = if matches!(primitive, Primitive::Triangle(_)) { drawn.fill_clip } else { drawn.clip };
+        // Rasterized per sample, a triangle may cover samples of pixels whose centre it misses.
+        let bounds = match &primitive {
+            Primitive::Triangle(job) if drawn.multisample.is_some_and(|m| m.per_sample()) => job.sample_bounds(),
+            _ => bounds,
+        };
         let r = bounds.intersect(clip);
         if r.is_empty() {
             return;
@@ -483,6 +495,23 @@ impl Scene {
         let bands = framebuffer.bands(TILE_SIZE, &self.targets);
         let scene = &self;
         run_parallel(bands, threads, |band| scene.render_band(band));
+        if framebuffer.samples() > 1 {
+            framebuffer.resolve(&self.targets, self.drawn_area());
+        }
+    }
+
+    /// The smallest rectangle holding every tile with something binned into it.
+    fn drawn_area(&self) -> Rect {
+        let mut area = Rect { x0: i32::MAX, y0: i32::MAX, x1: i32::MIN, y1: i32::MIN };
+        for (i, _) in self.bins.iter().enumerate().filter(|(_, b)| !b.is_empty()) {
+            let t = TILE_SIZE as i32;
+            let (tx, ty) = ((i % self.tiles_x) as i32, (i / self.tiles_x) as i32);
+            area.x0 = area.x0.min(tx * t);
+            area.y0 = area.y0.min(ty * t);
+            area.x1 = area.x1.max(tx * t + t);
+            area.y1 = area.y1.max(ty * t + t);
+        }
+        area
     }
 
     /// Renders every tile of one band, each tile's primitives in submission order.
@@ -497,6 +526,9 @@ impl Scene {
                 let state = &self.states[*state as usize];
                 let area = tile.intersect(state.clip);
                 match primitive {
+                    Primitive::Triangle(job) if state.multisample.is_some_and(|m| m.per_sample()) => {
+                        job.render_samples(state, tile.intersect(state.fill_clip), &mut band, &mut scratch)
+                    }
                     Primitive::Triangle(job) => {
                         job.render(state, tile.intersect(state.fill_clip), &mut band, &mut scratch)
                     }
@@ -559,7 +591,7 @@ mod tests {
         let mut fragment = FragmentState::plain(depth, vec![Some([true; 4])], false);
         fragment.alpha = alpha.then_some(AlphaTest { func: CompareFunc::Always, reference: 0.0, unorm8: true });
         let clip = Rect::from_xywh(0, 0, 4, 1);
-        DrawState { fragment, clip, fill_clip: clip, polygon_stipple: None, samples_passed: None }
+        DrawState { fragment, clip, fill_clip: clip, polygon_stipple: None, samples_passed: None, multisample: None }
     }
 
     /// Runs one 4-pixel span at depth 0.5 over stored depths `stored`; returns how often the
@@ -571,6 +603,7 @@ mod tests {
             y0: 0,
             rows: 1,
             width: 4,
+            samples: 1,
             colors: vec![ColorTarget {
                 slot: ColorSlot::FrontLeft,
                 format: ColorFormat::Unorm8 { alpha: true },

@@ -8,6 +8,7 @@
 //! integer arithmetic, whatever the triangle's size or shape.
 
 pub mod line;
+pub mod multisample;
 pub mod point;
 pub mod smooth;
 pub mod triangle;

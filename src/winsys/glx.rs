@@ -467,7 +467,8 @@ impl GlxDrawable {
         config: &'static FbConfig,
         size: (usize, usize),
     ) -> Option<Arc<GlxDrawable>> {
-        let framebuffer = Framebuffer::new(config.framebuffer_config(), size.0.max(1), size.1.max(1)).ok()?;
+        let (w, h) = (size.0.max(1), size.1.max(1));
+        let framebuffer = Framebuffer::with_samples(config.framebuffer_config(), w, h, config.sample_count()).ok()?;
         let presenter: Option<Box<dyn Present>> = match kind {
             DrawableKind::Pbuffer => None,
             _ => XPresenter::new(display, xid, kind, config).map(|p| Box::new(p) as Box<dyn Present>),
@@ -499,7 +500,8 @@ impl GlxDrawable {
         let (w, h) = (w.max(1), h.max(1));
         let mut surface = lock(&self.surface);
         if (surface.framebuffer.width(), surface.framebuffer.height()) != (w, h) {
-            if let Ok(framebuffer) = Framebuffer::new(*surface.framebuffer.config(), w, h) {
+            let samples = surface.framebuffer.samples();
+            if let Ok(framebuffer) = Framebuffer::with_samples(*surface.framebuffer.config(), w, h, samples) {
                 surface.framebuffer = framebuffer;
             }
         }
@@ -508,7 +510,7 @@ impl GlxDrawable {
     /// Gives an implicit drawable the configuration of a context with another one.
     fn adopt(&self, config: &'static FbConfig) -> bool {
         let mut current = lock(&self.config);
-        if current.framebuffer_config() == config.framebuffer_config() {
+        if current.framebuffer_config() == config.framebuffer_config() && current.samples == config.samples {
             return true;
         }
         if self.explicit {
@@ -516,7 +518,7 @@ impl GlxDrawable {
         }
         let mut surface = lock(&self.surface);
         let (w, h) = (surface.framebuffer.width(), surface.framebuffer.height());
-        match Framebuffer::new(config.framebuffer_config(), w, h) {
+        match Framebuffer::with_samples(config.framebuffer_config(), w, h, config.sample_count()) {
             Ok(framebuffer) => {
                 surface.framebuffer = framebuffer;
                 *current = config;

@@ -5,7 +5,10 @@
 //! DirectColor) visual with 8-bit channels can carry every combination of buffers: single or
 //! double buffered, depth 0/16/24, stencil 0/8, accumulation 0/16 and a software alpha
 //! channel (8 bits kept in tessera's buffer, not in the window), plus double-buffered stereo
-//! configurations. This module is pure data and rules, without X calls, so it is unit-tested.
+//! configurations, and multisampled configurations (GLX_SAMPLE_BUFFERS 1 with 2, 4 or 8
+//! GLX_SAMPLES: double-buffered, depth 24, stencil 8, with and without alpha) whose
+//! drawables render into multisample buffers and present the resolved image. This module is
+//! pure data and rules, without X calls, so it is unit-tested.
 use crate::context::state::MAX_VIEWPORT_DIM;
 use crate::framebuffer::{ColorFormat, DepthStencilFormat, FramebufferConfig};
 
@@ -93,9 +96,16 @@ pub struct FbConfig {
     pub stencil: i32,
     /// Bits per channel of the accumulation buffer.
     pub accum: i32,
+    /// GLX_SAMPLES: 0 for a configuration without a multisample buffer.
+    pub samples: i32,
 }
 
 impl FbConfig {
+    /// Samples per pixel of a drawable's buffers (1 without a multisample buffer).
+    pub fn sample_count(&self) -> usize {
+        self.samples.max(1) as usize
+    }
+
     /// The buffers a drawable of this configuration has.
     pub fn framebuffer_config(&self) -> FramebufferConfig {
         let depth_stencil = match (self.depth, self.stencil > 0) {
@@ -121,7 +131,9 @@ impl FbConfig {
             GLX_USE_GL | GLX_RGBA | GLX_X_RENDERABLE => 1,
             GLX_FBCONFIG_ID => self.id,
             GLX_BUFFER_SIZE => 24 + self.alpha,
-            GLX_LEVEL | GLX_AUX_BUFFERS | GLX_SAMPLE_BUFFERS | GLX_SAMPLES => 0,
+            GLX_LEVEL | GLX_AUX_BUFFERS => 0,
+            GLX_SAMPLE_BUFFERS => i32::from(self.samples > 0),
+            GLX_SAMPLES => self.samples,
             GLX_DOUBLEBUFFER => self.double_buffered as i32,
             GLX_STEREO => self.stereo as i32,
             GLX_RED_SIZE | GLX_GREEN_SIZE | GLX_BLUE_SIZE => 8,
@@ -154,6 +166,7 @@ impl FbConfig {
             && self.stencil == 8
             && self.accum == 16
             && self.alpha == 8
+            && self.samples == 0
     }
 }
 
@@ -176,21 +189,27 @@ pub fn configs_for(visuals: &[VisualDesc]) -> Vec<FbConfig> {
             continue;
         }
         seen.push(*visual);
-        let mut push = |double_buffered, stereo, depth, stencil, accum, alpha| {
+        let mut push = |double_buffered, stereo, depth, stencil, accum, alpha, samples| {
             let id = configs.len() as i32 + 1;
-            configs.push(FbConfig { id, visual: *visual, alpha, double_buffered, stereo, depth, stencil, accum });
+            let visual = *visual;
+            configs.push(FbConfig { id, visual, alpha, double_buffered, stereo, depth, stencil, accum, samples });
         };
         for double_buffered in [false, true] {
             for (depth, stencil) in [(0, 0), (16, 0), (24, 0), (24, 8), (0, 8)] {
                 for accum in [0, 16] {
                     for alpha in [0, 8] {
-                        push(double_buffered, false, depth, stencil, accum, alpha);
+                        push(double_buffered, false, depth, stencil, accum, alpha, 0);
                     }
                 }
             }
         }
         for double_buffered in [false, true] {
-            push(double_buffered, true, 24, 8, 0, 8);
+            push(double_buffered, true, 24, 8, 0, 8, 0);
+        }
+        for samples in [2, 4, 8] {
+            for alpha in [0, 8] {
+                push(true, false, 24, 8, 0, alpha, samples);
+            }
         }
     }
     configs
@@ -215,6 +234,8 @@ pub struct Criteria {
     caveat: Option<i32>,
     transparent: Option<i32>,
     fbconfig_id: Option<i32>,
+    /// GLX_SAMPLE_BUFFERS and GLX_SAMPLES: minimums (GLX 1.4 table 3.4).
+    sample_buffers: i32,
     samples: i32,
     /// glXChooseVisual's preference rules instead of glXChooseFBConfig's sort.
     visual_rules: bool,
@@ -260,6 +281,7 @@ impl Criteria {
             caveat: None,
             transparent: Some(GLX_NONE),
             fbconfig_id: None,
+            sample_buffers: 0,
             samples: 0,
             visual_rules,
         }
@@ -328,7 +350,8 @@ impl Criteria {
             GLX_DEPTH_SIZE => self.depth = v,
             GLX_STENCIL_SIZE => self.stencil = v,
             GLX_ACCUM_RED_SIZE..=GLX_ACCUM_ALPHA_SIZE => self.accum[(attribute - GLX_ACCUM_RED_SIZE) as usize] = v,
-            GLX_SAMPLE_BUFFERS | GLX_SAMPLES => self.samples = self.samples.max(v),
+            GLX_SAMPLE_BUFFERS => self.sample_buffers = v,
+            GLX_SAMPLES => self.samples = v,
             other => return Err(BadAttribute::Unknown(other)),
         }
         Ok(())
@@ -351,7 +374,8 @@ impl Criteria {
             && self.aux_buffers == 0
             && config.depth >= self.depth
             && config.stencil >= self.stencil
-            && self.samples == 0
+            && a(GLX_SAMPLE_BUFFERS) >= self.sample_buffers
+            && config.samples >= self.samples
             && self.render_type & GLX_RGBA_BIT != 0
             && self.drawable_type & !(GLX_WINDOW_BIT | GLX_PIXMAP_BIT | GLX_PBUFFER_BIT) == 0
             && self.x_renderable.is_none_or(|r| r)
@@ -362,7 +386,7 @@ impl Criteria {
 
     /// The sort key of GLX 1.4 section 3.3.3 (glXChooseFBConfig) or of glXChooseVisual's
     /// preferences: smaller keys come first.
-    fn sort_key(&self, config: &FbConfig) -> [i64; 8] {
+    fn sort_key(&self, config: &FbConfig) -> [i64; 10] {
         let prefer = |requested: i32, have: i32| -> i64 {
             // Larger when asked for, otherwise none (the smallest).
             if requested > 0 {
@@ -383,6 +407,9 @@ impl Criteria {
             -requested_color,
             config.attrib(GLX_BUFFER_SIZE).unwrap_or(0) as i64,
             config.double_buffered as i64,
+            // GLX_SAMPLE_BUFFERS and GLX_SAMPLES: smaller first.
+            i64::from(config.samples > 0),
+            config.samples as i64,
             depth,
             config.stencil as i64,
             prefer(accum_requested, accum_sum),
@@ -418,10 +445,11 @@ mod tests {
     #[test]
     fn configs_cover_every_combination_on_usable_visuals_only() {
         let configs = configs_for(&visuals());
-        assert_eq!(configs.len(), 2 * 42);
+        // 40 single-sampled mono, 2 stereo and 6 multisampled configurations per visual.
+        assert_eq!(configs.len(), 2 * 48);
         assert!(configs.iter().all(|c| c.visual.visual_id == 0x21 || c.visual.visual_id == 0x22));
         let ids: Vec<i32> = configs.iter().map(|c| c.id).collect();
-        assert_eq!(ids, (1..=84).collect::<Vec<_>>());
+        assert_eq!(ids, (1..=96).collect::<Vec<_>>());
         for (d, s) in [(0, 0), (16, 0), (24, 0), (24, 8), (0, 8)] {
             for double in [false, true] {
                 for accum in [0, 16] {
@@ -468,13 +496,33 @@ mod tests {
         assert!(!chosen[0].double_buffered);
         // Nothing on another screen, nothing with samples, and GLX_FBCONFIG_ID picks one.
         assert!(c.choose(&configs, 1).is_empty());
-        assert!(Criteria::fbconfig(&[GLX_SAMPLES, 4]).unwrap().choose(&configs, 0).is_empty());
+        assert_eq!(c.choose(&configs, 0)[0].samples, 0, "multisampled ones sort after");
         let by_id = Criteria::fbconfig(&[GLX_FBCONFIG_ID, 7, GLX_STEREO, 1]).unwrap().choose(&configs, 0);
         assert_eq!(by_id.iter().map(|c| c.id).collect::<Vec<_>>(), vec![7]);
         assert_eq!(Criteria::fbconfig(&[0x7777, 1]), Err(BadAttribute::Unknown(0x7777)));
         // GLX_DONT_CARE on the double buffer gives both kinds.
         let any = Criteria::fbconfig(&[GLX_DOUBLEBUFFER, GLX_DONT_CARE]).unwrap().choose(&configs, 0);
         assert!(any.iter().any(|c| c.double_buffered) && any.iter().any(|c| !c.double_buffered));
+    }
+
+    #[test]
+    fn multisample_configurations_are_chosen_by_their_minimum_samples() {
+        let configs = configs_for(&visuals());
+        let c = Criteria::fbconfig(&[GLX_SAMPLE_BUFFERS, 1, GLX_SAMPLES, 4, GLX_DOUBLEBUFFER, 1]).unwrap();
+        let chosen = c.choose(&configs, 0);
+        assert!(chosen.iter().all(|c| c.samples >= 4));
+        // The smallest sample count that satisfies the request comes first.
+        assert_eq!(chosen[0].samples, 4);
+        assert_eq!((chosen[0].attrib(GLX_SAMPLE_BUFFERS), chosen[0].attrib(GLX_SAMPLES)), (Some(1), Some(4)));
+        assert_eq!(chosen[0].sample_count(), 4);
+        let c = Criteria::fbconfig(&[GLX_SAMPLE_BUFFERS, 1]).unwrap();
+        assert_eq!(c.choose(&configs, 0)[0].samples, 2);
+        assert!(Criteria::fbconfig(&[GLX_SAMPLES, 16]).unwrap().choose(&configs, 0).is_empty());
+        let c = Criteria::visual(&[GLX_RGBA, GLX_DOUBLEBUFFER, GLX_SAMPLE_BUFFERS, 1, GLX_SAMPLES, 8]).unwrap();
+        assert_eq!(c.choose(&configs, 0)[0].samples, 8);
+        // Without a request, no multisampled configuration comes before a single-sampled one.
+        let any = Criteria::fbconfig(&[GLX_DOUBLEBUFFER, 1, GLX_DEPTH_SIZE, 24]).unwrap().choose(&configs, 0);
+        assert_eq!(any[0].samples, 0);
     }
 
     #[test]
