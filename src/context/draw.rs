@@ -1267,7 +1267,7 @@ fn polygon_offset(w: &[WindowVertex; 3], factor: f32, units: f32, depth_bits: u3
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
     use crate::context::state::CompareFunc;
     use crate::framebuffer::{ColorFormat, ColorSlot, DepthStencilFormat, Drawable, FramebufferConfig};
@@ -1286,7 +1286,9 @@ mod tests {
         (ctx, d)
     }
 
-    fn vertex(x: f32, y: f32, z: f32, color: [f32; 4]) -> Vertex {
+    /// A vertex at (x, y, z) of `color` with default attributes (shared by the context's
+    /// draw tests).
+    pub(in crate::context) fn vertex(x: f32, y: f32, z: f32, color: [f32; 4]) -> Vertex {
         Vertex {
             position: [x, y, z, 1.0],
             color,

@@ -57,7 +57,7 @@ mod tests {
     use super::*;
     use crate::api::enums::*;
     use crate::framebuffer::{ColorFormat, ColorSlot, DepthStencilFormat, Drawable, Framebuffer, FramebufferConfig};
-    use crate::vertex::Vertex;
+    use crate::context::draw::tests::vertex;
     use std::sync::{Arc, Mutex};
 
     /// A context drawing into a `samples`-sample 8×4 framebuffer with window coordinates as
@@ -79,18 +79,6 @@ mod tests {
         ctx.matrix_mode(GL_PROJECTION);
         ctx.ortho(0.0, width as f64, 0.0, height as f64, -1.0, 1.0);
         (ctx, drawable)
-    }
-
-    fn vertex(x: f32, y: f32, z: f32, color: [f32; 4]) -> Vertex {
-        Vertex {
-            position: [x, y, z, 1.0],
-            color,
-            secondary_color: [0.0; 4],
-            normal: [0.0, 0.0, 1.0],
-            tex_coords: [[0.0; 4]; 4],
-            fog_coord: 0.0,
-            edge_flag: true,
-        }
     }
 
     /// A quad from x = 0 to `x1` over the whole height, its depth going from `z0` at x = 0
