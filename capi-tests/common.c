@@ -126,3 +126,17 @@ int capi_finish(void)
         printf("%d check(s) failed\n", failures);
     return failures ? 1 : 0;
 }
+
+long capi_status_mib(const char *key)
+{
+    FILE *f = fopen("/proc/self/status", "r");
+    char line[256];
+    long kib = -1;
+    size_t n = strlen(key);
+    while (f && fgets(line, sizeof line, f))
+        if (strncmp(line, key, n) == 0)
+            kib = atol(line + n + 1);
+    if (f)
+        fclose(f);
+    return kib < 0 ? -1 : kib / 1024;
+}

@@ -63,6 +63,9 @@ void capi_save_framebuffer(const char *name, int w, int h);
 OSMesaContext capi_make_context(GLenum format, GLenum type, int depth, int stencil, int accum,
                                 int w, int h, void **buffer_out);
 
+/* A line of /proc/self/status in MiB (e.g. "VmRSS:" or "VmHWM:", the peak); -1 when absent. */
+long capi_status_mib(const char *key);
+
 /* Exit status: 0 when every capi_check held. Call last in main(). */
 int capi_finish(void);
 

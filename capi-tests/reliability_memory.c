@@ -7,20 +7,6 @@
 #define _DEFAULT_SOURCE
 #include "common.h"
 
-/* VmRSS or VmHWM of this process in MiB. */
-static long status_mib(const char *key)
-{
-    FILE *f = fopen("/proc/self/status", "r");
-    char line[256];
-    long kib = -1;
-    size_t n = strlen(key);
-    while (f && fgets(line, sizeof line, f))
-        if (strncmp(line, key, n) == 0)
-            kib = atol(line + n + 1);
-    if (f)
-        fclose(f);
-    return kib / 1024;
-}
 
 static void frame(void)
 {
@@ -56,7 +42,7 @@ int main(void)
             const unsigned char *corner = pixels + (size_t)16383 * 16384 * 4; /* top left: cleared */
             capi_check(corner[0] == 26 && corner[3] == 255, "largest buffer: clear missing (%d)", corner[0]);
         }
-        printf("largest buffer: peak %ld MiB\n", status_mib("VmHWM:"));
+        printf("largest buffer: peak %ld MiB\n", capi_status_mib("VmHWM:"));
     } else {
         /* Failing cleanly is allowed; no error recorded by a refused MakeCurrent. */
         printf("largest buffer refused\n");
@@ -74,7 +60,7 @@ int main(void)
     glOrtho(0, W, 0, H, -1, 1);
     glMatrixMode(GL_MODELVIEW);
     glClear(GL_COLOR_BUFFER_BIT);
-    long before = status_mib("VmRSS:");
+    long before = capi_status_mib("VmRSS:");
     glColor3f(1, 1, 1);
     glBegin(GL_TRIANGLE_STRIP);
     for (int i = 0; i < 1000000; i++) {
@@ -83,7 +69,7 @@ int main(void)
     }
     glEnd();
     glFinish();
-    long strip = status_mib("VmHWM:");
+    long strip = capi_status_mib("VmHWM:");
     GLubyte px[4];
     glReadPixels(W / 2, H / 2, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
     capi_check(px[0] == 255 && px[1] == 255, "10^6-vertex strip not drawn");
@@ -103,7 +89,7 @@ int main(void)
     glVertexPointer(2, GL_FLOAT, 0, vertices);
     glDrawElements(GL_POINTS, 10000000, GL_UNSIGNED_INT, indices);
     glFinish();
-    long elements = status_mib("VmHWM:");
+    long elements = capi_status_mib("VmHWM:");
     glDisableClientState(GL_VERTEX_ARRAY);
     free(indices);
     int lit = 0;
@@ -136,9 +122,9 @@ int main(void)
         OSMesaMakeCurrent(NULL, NULL, 0, 0, 0);
         OSMesaDestroyContext(c);
         if (cycle == cycles / 10)
-            at1000 = status_mib("VmRSS:");
+            at1000 = capi_status_mib("VmRSS:");
     }
-    long at10000 = status_mib("VmRSS:");
+    long at10000 = capi_status_mib("VmRSS:");
     printf("cycles: resident %ld MiB after %d, %ld MiB after %d\n", at1000, cycles / 10, at10000, cycles);
     if (tessera)
         capi_check(at10000 - at1000 <= 2, "10 000 cycles grew the process by %ld MiB", at10000 - at1000);

@@ -22,20 +22,6 @@ enum { W = 128, H = 128, MILLION = 1000000 };
  * work a 10^6-vertex strip grew the process by 574 MiB and the 10^7 indices by 1053 MiB. */
 #define MAX_GROWTH_MIB 100
 
-/* VmHWM (peak) or VmRSS of this process in MiB. */
-static long status_mib(const char *key)
-{
-    FILE *f = fopen("/proc/self/status", "r");
-    char line[256];
-    long kib = -1;
-    size_t n = strlen(key);
-    while (f && fgets(line, sizeof line, f))
-        if (strncmp(line, key, n) == 0)
-            kib = atol(line + n + 1);
-    if (f)
-        fclose(f);
-    return kib / 1024;
-}
 
 /* Resets VmHWM to the current resident size (Linux 4.0+: "5" to clear_refs). */
 static void reset_peak(void)
@@ -53,7 +39,7 @@ static int tessera;
 /* Checks and prints the peak growth since `base` (MiB) of draw `name`. */
 static void check_growth(const char *name, long base)
 {
-    long growth = status_mib("VmHWM:") - base;
+    long growth = capi_status_mib("VmHWM:") - base;
     printf("%s: peak resident growth %ld MiB\n", name, growth);
     if (tessera)
         capi_check(growth <= MAX_GROWTH_MIB, "%s: peak grew by %ld MiB (bound %d)", name, growth, MAX_GROWTH_MIB);
@@ -74,7 +60,7 @@ static void immediate(const char *name, GLenum mode, int zigzag)
 {
     glClear(GL_COLOR_BUFFER_BIT);
     reset_peak();
-    long base = status_mib("VmRSS:");
+    long base = capi_status_mib("VmRSS:");
     glBegin(mode);
     for (int i = 0; i < MILLION; i++)
         spiral_vertex(i, MILLION, zigzag);
@@ -105,7 +91,7 @@ int main(void)
         glPolygonMode(GL_FRONT_AND_BACK, outline ? GL_LINE : GL_FILL);
         glClear(GL_COLOR_BUFFER_BIT);
         reset_peak();
-        long base = status_mib("VmRSS:");
+        long base = capi_status_mib("VmRSS:");
         glBegin(GL_POLYGON);
         for (int i = 0; i < MILLION; i++) {
             float angle = (float)i / MILLION * 6.2831853f;
@@ -171,7 +157,7 @@ int main(void)
     glColorPointer(3, GL_FLOAT, 0, colors);
     glClear(GL_COLOR_BUFFER_BIT);
     reset_peak();
-    long base = status_mib("VmRSS:");
+    long base = capi_status_mib("VmRSS:");
     glDrawElements(GL_TRIANGLES, INDICES, GL_UNSIGNED_INT, indices);
     glFinish();
     check_growth("elements_triangles", base);
@@ -187,7 +173,7 @@ int main(void)
     glShadeModel(GL_FLAT);
     glClear(GL_COLOR_BUFFER_BIT);
     reset_peak();
-    base = status_mib("VmRSS:");
+    base = capi_status_mib("VmRSS:");
     glDrawElements(GL_TRIANGLE_STRIP, MILLION, GL_UNSIGNED_INT, indices);
     glFinish();
     check_growth("elements_strip", base);
