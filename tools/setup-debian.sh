@@ -5,9 +5,9 @@
 #   libgl1-mesa-dev   <GL/gl.h> and <GL/glext.h>
 # and, with --test (tools/test.sh; the main job needs none of them):
 #   chromium          opens tessera-compare's HTML report
-#   xvfb piglit mesa-utils freeglut3-dev x11-apps libx11-dev python3 pkg-config
+#   xvfb piglit mesa-utils glew-utils freeglut3-dev x11-apps libx11-dev python3 pkg-config
 #                     the GLX checks of tools/xvfb-tests.sh: a private X server, piglit's
-#                     tests, glxinfo/glxgears, a freeglut program, xwd screenshots
+#                     tests, glxinfo/glxgears, glewinfo, a freeglut program, xwd screenshots
 #   g++               builds libFuzzer for tools/fuzz.sh
 #   valgrind          tools/memcheck.sh: capi tests under memcheck (invalid accesses, leaks)
 # Runs `apt-get update` once (only if something is missing), as root or through sudo.
@@ -16,7 +16,7 @@ set -euo pipefail
 
 packages=(gcc libosmesa6-dev libgl1-mesa-dev)
 if [[ ${1:-} == --test ]]; then
-    packages+=(chromium xvfb piglit mesa-utils freeglut3-dev x11-apps libx11-dev python3 pkg-config g++ valgrind)
+    packages+=(chromium xvfb piglit mesa-utils glew-utils freeglut3-dev x11-apps libx11-dev python3 pkg-config g++ valgrind)
 fi
 missing=()
 for package in "${packages[@]}"; do

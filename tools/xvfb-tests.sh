@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The GLX checks, on tessera's libGL.so.1 (target/release) under a private Xvfb:
-#   1. glxinfo names tessera as the renderer and lists its extensions;
+#   1. glxinfo names tessera as the renderer and lists its extensions; glewinfo (glew-utils)
+#      reports GL_VERSION_1_1 ... GL_VERSION_1_5 and every advertised extension as OK;
 #   2. tests/glx/two_threads.c: two windows, two contexts, two threads render independently;
 #      tests/glx/glx_api.c: the GLX API (configs, context rules, drawables, resizing, stereo);
 #      tests/glx/read_drawable.c: reads from a separate read drawable;
@@ -23,7 +24,7 @@ list=../shared/piglit/fragment-ops.txt
 expected=tests/piglit/expected.txt
 
 missing=()
-for tool in Xvfb glxinfo glxgears xwd gcc python3 pkg-config; do
+for tool in Xvfb glxinfo glewinfo glxgears xwd gcc python3 pkg-config; do
     command -v "$tool" >/dev/null || missing+=("$tool")
 done
 [[ -x $piglit_bin/depthfunc ]] || missing+=("piglit")
@@ -73,6 +74,21 @@ if "${on_tessera[@]}" glxinfo >"$work/glxinfo.txt" 2>&1; then
 else
     fail "glxinfo exited with an error"
     tail -5 "$work/glxinfo.txt" >&2
+fi
+
+# 1b. glewinfo: GLEW's own check of every entry point of each core version and extension
+if "${on_tessera[@]}" glewinfo >"$work/glewinfo.txt" 2>&1; then
+    for v in 1_1 1_2 1_3 1_4 1_5; do
+        grep -qE "^GL_VERSION_$v: +OK *$" "$work/glewinfo.txt" || fail "glewinfo: GL_VERSION_$v is not OK"
+    done
+    for ext in $(grep -oE '\bGL_[A-Za-z0-9_]+' "$work/glxinfo.txt" | sort -u); do
+        if grep -qE "^$ext: " "$work/glewinfo.txt"; then
+            grep -qE "^$ext: +OK *$" "$work/glewinfo.txt" || fail "glewinfo: $ext is advertised but not OK"
+        fi
+    done
+    echo "glewinfo: GL_VERSION_1_1 ... 1_5 OK, $(grep -cE '^GL_[A-Za-z0-9_]+: +OK *$' "$work/glewinfo.txt") entries OK"
+else
+    fail "glewinfo exited with an error"
 fi
 
 # 2. two contexts, two windows, two threads
