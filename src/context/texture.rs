@@ -1585,3 +1585,36 @@ fn pack_texels_row(
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn depth_stencil_formats_are_depth_images_with_stencil() {
+        for f in [GL_DEPTH_STENCIL, GL_DEPTH24_STENCIL8] {
+            let info = format_info(f as i32).unwrap();
+            assert_eq!((info.base, info.bits[0], info.sizes[6], info.sizes[7]), (BaseFormat::Depth, 24, 24, 8));
+            assert!(info.has_stencil());
+            assert!(data_fits(ClientFormat::DepthStencil, &info) && data_fits(ClientFormat::DepthComponent, &info));
+            assert!(!data_fits(ClientFormat::Rgba, &info));
+            assert_eq!(new_image(2, 2, 1, 0, &info).unwrap().stencil, vec![0; 4]);
+        }
+        let depth = format_info(GL_DEPTH_COMPONENT24 as i32).unwrap();
+        assert!(!depth.has_stencil() && data_fits(ClientFormat::DepthStencil, &depth));
+        assert!(new_image(2, 2, 1, 0, &depth).unwrap().stencil.is_empty());
+        let color = format_info(GL_RGBA8 as i32).unwrap();
+        assert!(!data_fits(ClientFormat::DepthStencil, &color) && !data_fits(ClientFormat::DepthComponent, &color));
+    }
+
+    #[test]
+    fn depth_stencil_data_needs_the_packed_type() {
+        assert_eq!(
+            check_texture_format_type(GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8),
+            Ok((ClientFormat::DepthStencil, ClientType::UnsignedInt24_8))
+        );
+        assert_eq!(check_texture_format_type(GL_DEPTH_STENCIL, GL_UNSIGNED_INT), Err(GL_INVALID_ENUM));
+        assert_eq!(check_texture_format_type(GL_RGBA, GL_UNSIGNED_INT_24_8), Err(GL_INVALID_OPERATION));
+        assert_eq!(check_texture_format_type(GL_STENCIL_INDEX, GL_UNSIGNED_BYTE), Err(GL_INVALID_OPERATION));
+    }
+}

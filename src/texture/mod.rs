@@ -338,6 +338,12 @@ mod tests {
         assert_eq!((next.width, next.height), (1, 1));
         assert_eq!(next.texels, Texels::Rgba8(vec![[128, 128, 1, 0]]));
         assert_eq!(level_size(5, 1), 2);
+        // A depth-stencil image keeps a stencil plane; each box keeps its first index.
+        let mut ds = TexImage::new(2, 2, 1, 0, BaseFormat::Depth).unwrap().with_stencil().unwrap();
+        ds.texels = Texels::Depth(vec![0.0, 0.5, 0.5, 1.0]);
+        ds.stencil = vec![7, 1, 2, 3];
+        let next = downsample(&ds, 2).unwrap();
+        assert_eq!((next.texels, next.stencil), (Texels::Depth(vec![0.5]), vec![7]));
         assert_eq!(level_size(5, 9), 1);
     }
 }
