@@ -1,8 +1,10 @@
 /* glDrawPixels of GL_COLOR_INDEX in RGBA mode: indices of several types (and a bitmap)
  * converted through GL_PIXEL_MAP_I_TO_[RGBA] (each index masked to its table's size).
- * GL_INDEX_SHIFT/GL_INDEX_OFFSET and GL_MAP_COLOR's I_TO_I lookup are applied by tessera as
- * GL 2.1 section 3.6.4 says, but Mesa 22 ignores them for this format, so they are not
- * compared here. */
+ * GL_MAP_COLOR is on: its I_TO_I lookup is only for indices that stay indices (GL 2.1
+ * section 3.6.5), never for these RGBA groups, and the RGBA-to-RGBA lookups (default tables of
+ * one zero entry) apply to RGBA groups only, not to these. GL_INDEX_SHIFT/GL_INDEX_OFFSET are
+ * applied by tessera as the specification says, but Mesa 22 ignores them for this format, so
+ * they are not compared here. */
 #include "common.h"
 
 #define W 32
@@ -40,6 +42,7 @@ int main(void)
         ff[i] = i * 0.75f;
     }
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glPixelTransferi(GL_MAP_COLOR, GL_TRUE);
     glRasterPos2i(1, 1);
     glDrawPixels(8, 6, GL_COLOR_INDEX, GL_UNSIGNED_BYTE, ub);
     glRasterPos2i(11, 1);
@@ -51,6 +54,7 @@ int main(void)
     glPixelZoom(2, 1);
     glDrawPixels(8, 6, GL_COLOR_INDEX, GL_BITMAP, bits);
     glPixelZoom(1, 1);
+    glPixelTransferi(GL_MAP_COLOR, GL_FALSE);
     capi_expect_error(GL_NO_ERROR, "color index draws");
     capi_save_framebuffer("color_index", W, H);
     return capi_finish();

@@ -130,6 +130,7 @@ mod tests {
             | "GL_ARB_texture_env_dot3"
             | "GL_ARB_texture_mirrored_repeat"
             | "GL_EXT_bgra"
+            | "GL_EXT_packed_depth_stencil"
             | "GL_EXT_packed_pixels"
             | "GL_EXT_rescale_normal"
             | "GL_EXT_separate_specular_color"

@@ -48,7 +48,7 @@ use crate::framebuffer::surface::{ColorPixels, DepthStencilPixels};
 use crate::framebuffer::{
     ColorBuffer, ColorFormat, ColorSlot, DepthStencilBuffer, DepthStencilFormat, Framebuffer, FramebufferConfig, Rect,
 };
-use crate::texture::{BaseFormat, Texels};
+use crate::texture::{BaseFormat, TexImage, Texels};
 use std::collections::{HashMap, HashSet};
 use std::sync::Arc;
 
@@ -340,11 +340,11 @@ fn completeness(
 }
 
 /// The depth/stencil format an f32 depth texture of `bits` renders through.
-fn depth_texture_format(bits: u32) -> DepthStencilFormat {
+fn depth_texture_format(bits: u32, stencil: bool) -> DepthStencilFormat {
     match bits {
         16 => DepthStencilFormat::Depth16,
-        32 => DepthStencilFormat::Depth32 { stencil: false },
-        _ => DepthStencilFormat::Packed24 { depth: true, stencil: false },
+        32 => DepthStencilFormat::Depth32 { stencil },
+        _ => DepthStencilFormat::Packed24 { depth: true, stencil },
     }
 }
 
@@ -911,7 +911,7 @@ impl Context {
                     }
                     let base = l.info.base;
                     let (format, supported) = if base == BaseFormat::Depth {
-                        (Renderable::DepthStencil(depth_texture_format(l.info.bits[0])), true)
+                        (Renderable::DepthStencil(depth_texture_format(l.info.bits[0], l.info.has_stencil())), true)
                     } else {
                         let alpha = l.info.bits[3] > 0;
                         let rgb = matches!(base, BaseFormat::Rgb | BaseFormat::Rgba);
@@ -1224,11 +1224,11 @@ impl Context {
 
     /// Runs `f` on the texels of an attached texture image and the pixel count of one 2D
     /// slice (the shared texture table locked meanwhile).
-    fn with_texture_slice<R>(&self, attachment: Attachment, f: impl FnOnce(&Texels, usize) -> R) -> Option<R> {
+    fn with_texture_slice<R>(&self, attachment: Attachment, f: impl FnOnce(&TexImage, usize) -> R) -> Option<R> {
         let Attachment::Texture { name, face, level, .. } = attachment else { return None };
         let table = self.textures.lock();
         let image = table.object(name)?.level(face, level)?.image.as_ref()?;
-        Some(f(&image.texels, image.width * image.height))
+        Some(f(image, image.width * image.height))
     }
 
     /// A framebuffer-format copy of an attached RGB/RGBA8 texture image.
@@ -1236,8 +1236,8 @@ impl Context {
         let Attachment::Texture { layer, .. } = attachment else { return None };
         let alpha = matches!(self.image_info(Some(attachment)), Some(Some(ImageInfo { format: Renderable::Color(f), .. })) if f.has_alpha());
         let mut buffer = color_buffer(ColorFormat::Unorm8 { alpha }, width, height).ok()?;
-        let copied = self.with_texture_slice(attachment, |texels, area| {
-            let (Texels::Rgba8(texels), ColorPixels::Unorm8(px)) = (texels, buffer.pixels_mut()) else {
+        let copied = self.with_texture_slice(attachment, |image, area| {
+            let (Texels::Rgba8(texels), ColorPixels::Unorm8(px)) = (&image.texels, buffer.pixels_mut()) else {
                 return false;
             };
             px.copy_from_slice(&texels[layer * area..(layer + 1) * area]);
@@ -1256,13 +1256,25 @@ impl Context {
         let mut buffer = depth_stencil_buffer(format, width, height).ok()?;
         let max = crate::framebuffer::format::unorm_max(format.depth_bits()) as f64;
         let fixed = |d: f32| (d as f64 * max).round() as u32;
-        let copied = self.with_texture_slice(attachment, |texels, area| {
-            let Texels::Depth(texels) = texels else { return false };
+        let copied = self.with_texture_slice(attachment, |image, area| {
+            let Texels::Depth(texels) = &image.texels else { return false };
             let texels = &texels[layer * area..(layer + 1) * area];
+            // Depth-stencil images keep their stencil indices beside the depth texels.
+            let stencil = image.stencil.get(layer * area..(layer + 1) * area).unwrap_or(&[]);
+            let index = |i: usize| stencil.get(i).copied().unwrap_or(0);
             match buffer.pixels_mut() {
                 DepthStencilPixels::Depth16(px) => px.iter_mut().zip(texels).for_each(|(p, &d)| *p = fixed(d) as u16),
-                DepthStencilPixels::Packed24(px) => px.iter_mut().zip(texels).for_each(|(p, &d)| *p = fixed(d)),
-                DepthStencilPixels::Depth32(px, _) => px.iter_mut().zip(texels).for_each(|(p, &d)| *p = fixed(d)),
+                DepthStencilPixels::Packed24(px) => {
+                    for (i, (p, &d)) in px.iter_mut().zip(texels).enumerate() {
+                        *p = fixed(d) | (index(i) as u32) << 24;
+                    }
+                }
+                DepthStencilPixels::Depth32(px, plane) => {
+                    px.iter_mut().zip(texels).for_each(|(p, &d)| *p = fixed(d));
+                    if let Some(plane) = plane {
+                        plane.iter_mut().enumerate().for_each(|(i, p)| *p = index(i));
+                    }
+                }
                 DepthStencilPixels::None => {}
             }
             true
@@ -1320,6 +1332,15 @@ impl Context {
             if let Texels::Depth(texels) = &mut image.texels {
                 for (t, &v) in texels[layer * area..(layer + 1) * area].iter_mut().zip(&values) {
                     *t = crate::pixel::convert::depth_to_float(v, bits);
+                }
+            }
+            if let Some(plane) = image.stencil.get_mut(layer * area..(layer + 1) * area) {
+                let mut indices = Vec::new();
+                for y in 0..height as i32 {
+                    buffer.read_stencil_row(y, 0, width as i32, &mut indices);
+                }
+                if indices.len() == plane.len() {
+                    plane.copy_from_slice(&indices);
                 }
             }
         });

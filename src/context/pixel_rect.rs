@@ -407,18 +407,16 @@ impl Context {
                 }
             }
             DrawImage::ColorIndex(indices) => {
-                // GL 2.1 section 3.6.4: GL_INDEX_SHIFT and GL_INDEX_OFFSET, GL_MAP_COLOR's
-                // I_TO_I lookup, then (RGBA mode) the I_TO_[RGBA] lookups, each index masked to
-                // its table's size.
+                // GL 2.1 section 3.6.5: GL_INDEX_SHIFT and GL_INDEX_OFFSET, then (RGBA groups
+                // being required, as tessera always draws RGBA) the I_TO_[RGBA] lookups, each
+                // index masked to its table's size. GL_MAP_COLOR's I_TO_I lookup is only for
+                // indices that stay indices, so it does not apply here (nor does Mesa 22).
                 let maps = &self.state.pixel_mode.maps;
                 let scale = 2f64.powi(t.index_shift.clamp(-62, 62));
                 let lookup =
                     |table: &Vec<f32>, index: f64| table[(index.floor() as i64 & (table.len() as i64 - 1)) as usize];
                 let to_rgba = |&v: &f64| -> [f32; 4] {
-                    let mut index = v * scale + t.index_offset as f64;
-                    if t.map_color {
-                        index = lookup(&maps[0], index) as f64;
-                    }
+                    let index = v * scale + t.index_offset as f64;
                     std::array::from_fn(|c| lookup(&maps[2 + c], index))
                 };
                 PixelSource::Colors(Arc::new(indices.iter().map(to_rgba).collect()))

@@ -97,6 +97,7 @@ pub const EXTENSIONS: &[&str] = &[
     "GL_EXT_framebuffer_object",
     "GL_EXT_fog_coord",
     "GL_EXT_multi_draw_arrays",
+    "GL_EXT_packed_depth_stencil",
     "GL_EXT_packed_pixels",
     "GL_EXT_point_parameters",
     "GL_EXT_polygon_offset_clamp",

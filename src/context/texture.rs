@@ -48,8 +48,15 @@ pub struct FormatInfo {
     pub base: BaseFormat,
     /// Bits each stored RGBA channel is quantized to (0: not stored).
     pub bits: [u32; 4],
-    /// GL_TEXTURE_RED/GREEN/BLUE/ALPHA/LUMINANCE/INTENSITY/DEPTH_SIZE.
-    pub sizes: [i32; 7],
+    /// GL_TEXTURE_RED/GREEN/BLUE/ALPHA/LUMINANCE/INTENSITY/DEPTH/STENCIL_SIZE.
+    pub sizes: [i32; 8],
+}
+
+impl FormatInfo {
+    /// Whether images of the format keep stencil beside depth (GL_DEPTH_STENCIL formats).
+    pub fn has_stencil(&self) -> bool {
+        self.sizes[7] > 0
+    }
 }
 
 /// What an internal format is stored as; `None` for formats tessera does not accept.
@@ -59,12 +66,12 @@ pub fn format_info(internal_format: i32) -> Option<FormatInfo> {
     let rgba = |base, r: u32, g: u32, b: u32, a: u32| FormatInfo {
         base,
         bits: [r, g, b, a],
-        sizes: [r as i32, g as i32, b as i32, a as i32, 0, 0, 0],
+        sizes: [r as i32, g as i32, b as i32, a as i32, 0, 0, 0, 0],
     };
     let lum = |l: u32, a: u32| FormatInfo {
         base: if a > 0 { LuminanceAlpha } else { Luminance },
         bits: [l, l, l, a],
-        sizes: [0, 0, 0, a as i32, l as i32, 0, 0],
+        sizes: [0, 0, 0, a as i32, l as i32, 0, 0, 0],
     };
     Some(match f {
         1 | GL_LUMINANCE | GL_LUMINANCE8 | GL_LUMINANCE12 | GL_LUMINANCE16 | GL_COMPRESSED_LUMINANCE => lum(8, 0),
@@ -80,7 +87,7 @@ pub fn format_info(internal_format: i32) -> Option<FormatInfo> {
         GL_LUMINANCE4_ALPHA4 => lum(4, 4),
         GL_ALPHA | GL_ALPHA4 | GL_ALPHA8 | GL_ALPHA12 | GL_ALPHA16 | GL_COMPRESSED_ALPHA => rgba(Alpha, 0, 0, 0, 8),
         GL_INTENSITY | GL_INTENSITY4 | GL_INTENSITY8 | GL_INTENSITY12 | GL_INTENSITY16 | GL_COMPRESSED_INTENSITY => {
-            FormatInfo { base: Intensity, bits: [8; 4], sizes: [0, 0, 0, 0, 0, 8, 0] }
+            FormatInfo { base: Intensity, bits: [8; 4], sizes: [0, 0, 0, 0, 0, 8, 0, 0] }
         }
         3 | GL_RGB | GL_RGB8 | GL_RGB10 | GL_RGB12 | GL_RGB16 | GL_COMPRESSED_RGB => rgba(Rgb, 8, 8, 8, 0),
         GL_R3_G3_B2 => rgba(Rgb, 3, 3, 2, 0),
@@ -91,10 +98,14 @@ pub fn format_info(internal_format: i32) -> Option<FormatInfo> {
         GL_RGB5_A1 => rgba(Rgba, 5, 5, 5, 1),
         GL_RGB10_A2 => rgba(Rgba, 8, 8, 8, 2),
         GL_DEPTH_COMPONENT | GL_DEPTH_COMPONENT24 => {
-            FormatInfo { base: Depth, bits: [24, 0, 0, 0], sizes: [0, 0, 0, 0, 0, 0, 24] }
+            FormatInfo { base: Depth, bits: [24, 0, 0, 0], sizes: [0, 0, 0, 0, 0, 0, 24, 0] }
         }
-        GL_DEPTH_COMPONENT16 => FormatInfo { base: Depth, bits: [16, 0, 0, 0], sizes: [0, 0, 0, 0, 0, 0, 16] },
-        GL_DEPTH_COMPONENT32 => FormatInfo { base: Depth, bits: [32, 0, 0, 0], sizes: [0, 0, 0, 0, 0, 0, 32] },
+        GL_DEPTH_COMPONENT16 => FormatInfo { base: Depth, bits: [16, 0, 0, 0], sizes: [0, 0, 0, 0, 0, 0, 16, 0] },
+        GL_DEPTH_COMPONENT32 => FormatInfo { base: Depth, bits: [32, 0, 0, 0], sizes: [0, 0, 0, 0, 0, 0, 32, 0] },
+        // GL_EXT_packed_depth_stencil: 24-bit depth and 8-bit stencil (Mesa's Z24_S8).
+        GL_DEPTH_STENCIL | GL_DEPTH24_STENCIL8 => {
+            FormatInfo { base: Depth, bits: [24, 0, 0, 0], sizes: [0, 0, 0, 0, 0, 0, 24, 8] }
+        }
         _ => return None,
     })
 }
@@ -265,11 +276,12 @@ fn max_level(target: usize) -> i32 {
     max_size(target).trailing_zeros() as i32
 }
 
-/// Client formats a texture image may be given in: the color and depth formats of pixel
-/// transfers (not stencil, depth-stencil or color index).
+/// Client formats a texture image may be given in: the color, depth and (for depth-stencil
+/// formats, GL_EXT_packed_depth_stencil) depth-stencil formats of pixel transfers (not
+/// stencil or color index).
 fn texture_client_format(format: GLenum) -> Option<ClientFormat> {
     match super::read_pixels::read_format(format)? {
-        super::read_pixels::ReadFormat::Client(ClientFormat::StencilIndex | ClientFormat::DepthStencil) => None,
+        super::read_pixels::ReadFormat::Client(ClientFormat::StencilIndex) => None,
         super::read_pixels::ReadFormat::Client(f) => Some(f),
         super::read_pixels::ReadFormat::ColorIndex => None,
     }
@@ -370,17 +382,14 @@ pub(super) fn check_texture_format_type(format: GLenum, ty: GLenum) -> Result<(C
     let Some(f) = texture_client_format(format) else {
         // Formats that exist but cannot hold texture data.
         return Err(match format {
-            GL_COLOR_INDEX | GL_STENCIL_INDEX | GL_DEPTH_STENCIL => {
-                if format == GL_DEPTH_STENCIL && ty != GL_UNSIGNED_INT_24_8 {
-                    GL_INVALID_ENUM
-                } else {
-                    GL_INVALID_OPERATION
-                }
-            }
+            GL_COLOR_INDEX | GL_STENCIL_INDEX => GL_INVALID_OPERATION,
             _ => GL_INVALID_ENUM,
         });
     };
     match client_type {
+        // GL_DEPTH_STENCIL data has the one packed type (Mesa: GL_INVALID_ENUM otherwise).
+        Some(ClientType::UnsignedInt24_8) if f == ClientFormat::DepthStencil => Ok((f, ClientType::UnsignedInt24_8)),
+        Some(_) if f == ClientFormat::DepthStencil => Err(GL_INVALID_ENUM),
         None | Some(ClientType::Bitmap) => Err(GL_INVALID_ENUM),
         Some(ClientType::UnsignedInt24_8) => Err(GL_INVALID_OPERATION),
         Some(ClientType::Packed(p)) if !p.accepts(f) => Err(GL_INVALID_OPERATION),
@@ -680,14 +689,15 @@ impl Context {
             return None;
         }
         if let Some((f, _)) = pair {
-            let depth_data = f == ClientFormat::DepthComponent;
-            if depth_data != (info.base == BaseFormat::Depth) {
+            if !data_fits(f, &info) {
                 self.error(GL_INVALID_OPERATION);
                 return None;
             }
         }
         if info.base == BaseFormat::Depth && (it.target == 2 || it.target == 3) {
-            self.error(if it.target == 2 { GL_INVALID_VALUE } else { GL_INVALID_OPERATION });
+            // Mesa 22 reports depth-stencil images of 3D textures as GL_INVALID_OPERATION.
+            let error = if it.target == 2 && !info.has_stencil() { GL_INVALID_VALUE } else { GL_INVALID_OPERATION };
+            self.error(error);
             return None;
         }
         Some((it, info, pair))
@@ -761,7 +771,7 @@ impl Context {
             self.set_level(it, a.level as usize, level);
             return;
         }
-        let Ok(mut image) = TexImage::new(iw, ih, id, b, info.base) else {
+        let Ok(mut image) = new_image(iw, ih, id, b, &info) else {
             return self.error(GL_OUT_OF_MEMORY);
         };
         let Some(client) = ClientImage::new(cf, ct, &self.pixel_store.unpack, iw, ih, dims) else {
@@ -864,7 +874,7 @@ impl Context {
         let Some((it, lv)) = self.check_sub_image(dims, target, level, &r) else {
             return;
         };
-        if (cf == ClientFormat::DepthComponent) != (lv.info.base == BaseFormat::Depth) {
+        if !data_fits(cf, &lv.info) {
             return self.error(GL_INVALID_OPERATION);
         }
         let r =
@@ -918,7 +928,8 @@ impl Context {
             return;
         }
         let depth_bits = self.read_config().depth_stencil.depth_bits();
-        if info.base == BaseFormat::Depth && depth_bits == 0 {
+        let stencil_bits = self.read_config().depth_stencil.stencil_bits();
+        if info.base == BaseFormat::Depth && (depth_bits == 0 || (info.has_stencil() && stencil_bits == 0)) {
             return self.error(GL_INVALID_OPERATION);
         }
         if info.base != BaseFormat::Depth && self.current_read_slot().is_none() {
@@ -926,7 +937,7 @@ impl Context {
         }
         let b = a.border as usize;
         let (w, h) = (a.width as usize, if dims >= 2 { a.height as usize } else { 1 });
-        let Ok(mut image) = TexImage::new(w, h, 1, b, info.base) else {
+        let Ok(mut image) = new_image(w, h, 1, b, &info) else {
             return self.error(GL_OUT_OF_MEMORY);
         };
         self.flush_rendering();
@@ -954,7 +965,8 @@ impl Context {
             return;
         }
         let depth_bits = self.read_config().depth_stencil.depth_bits();
-        if (lv.info.base == BaseFormat::Depth && depth_bits == 0)
+        let stencil_bits = self.read_config().depth_stencil.stencil_bits();
+        if (lv.info.base == BaseFormat::Depth && (depth_bits == 0 || (lv.info.has_stencil() && stencil_bits == 0)))
             || (lv.info.base != BaseFormat::Depth && self.current_read_slot().is_none())
         {
             return self.error(GL_INVALID_OPERATION);
@@ -990,6 +1002,7 @@ impl Context {
             let (fw, fh) = (fb.width() as i32, fb.height() as i32);
             let mut colors = Vec::new();
             let mut depths = Vec::new();
+            let mut stencils = Vec::new();
             for row in 0..region.height {
                 let sy = y + row;
                 if sy < 0 || sy >= fh {
@@ -1010,6 +1023,13 @@ impl Context {
                         for (k, &d) in depths.iter().enumerate() {
                             let f = crate::pixel::convert::depth_to_float(d, bits);
                             t[start + k] = quantize_depth(f, info.bits[0]);
+                        }
+                    }
+                    if info.has_stencil() {
+                        stencils.clear();
+                        fb.depth_stencil().read_stencil_row(sy, x0, x1, &mut stencils);
+                        if let Some(t) = image.stencil.get_mut(start..start + stencils.len()) {
+                            t.copy_from_slice(&stencils);
                         }
                     }
                 } else if let Some(buffer) = slot.and_then(|s| fb.color(s)) {
@@ -1248,6 +1268,7 @@ impl Context {
             GL_TEXTURE_LUMINANCE_SIZE => size(4),
             GL_TEXTURE_INTENSITY_SIZE => size(5),
             GL_TEXTURE_DEPTH_SIZE => size(6),
+            GL_TEXTURE_STENCIL_SIZE => size(7),
             GL_TEXTURE_COMPRESSED => 0,
             GL_TEXTURE_COMPRESSED_IMAGE_SIZE => {
                 self.error(GL_INVALID_OPERATION);
@@ -1292,7 +1313,12 @@ impl Context {
         let Some(lv) = self.with_image_object(it, |obj| obj.level(it.face, level as usize).cloned()) else {
             return;
         };
-        if (cf == ClientFormat::DepthComponent) != (lv.info.base == BaseFormat::Depth) {
+        // Depth and stencil can be read only from an image that has both.
+        let readable = match cf {
+            ClientFormat::DepthStencil => lv.info.has_stencil(),
+            _ => data_fits(cf, &lv.info),
+        };
+        if !readable {
             return self.error(GL_INVALID_OPERATION);
         }
         let Some(image) = lv.image else { return };
@@ -1314,10 +1340,43 @@ impl Context {
                 let Some(offset) = client.row_offset(y, z) else { continue };
                 let row = &mut out[offset - span.start..offset - span.start + w * client.pixel_bytes];
                 let start = image.index(0, y, z);
-                pack_texels_row(&image, start, w, cf, ct, swap, row);
+                if cf == ClientFormat::DepthStencil {
+                    let Texels::Depth(t) = &image.texels else { continue };
+                    let fixed: Vec<u32> =
+                        t[start..start + w].iter().map(|&d| (d as f64 * 16_777_215.0).round() as u32).collect();
+                    let stencil = image.stencil.get(start..start + w).unwrap_or(&[]);
+                    crate::pixel::depth::pack_depth_stencil_row(&fixed, 24, stencil, swap, row);
+                } else {
+                    pack_texels_row(&image, start, w, cf, ct, swap, row);
+                }
             }
         }
     }
+}
+
+/// A zero image of a format (with a stencil plane for depth-stencil formats).
+fn new_image(
+    w: usize,
+    h: usize,
+    d: usize,
+    border: usize,
+    info: &FormatInfo,
+) -> Result<TexImage, crate::texture::OutOfMemory> {
+    let image = TexImage::new(w, h, d, border, info.base)?;
+    if info.has_stencil() {
+        image.with_stencil()
+    } else {
+        Ok(image)
+    }
+}
+
+/// Whether client data of format `f` may specify images of a format: depth or depth-stencil
+/// data for depth and depth-stencil formats (GL_EXT_packed_depth_stencil; depth data leaves
+/// the stencil of a depth-stencil image alone, depth-stencil data gives a depth image only
+/// its depth), color data for color formats.
+fn data_fits(f: ClientFormat, info: &FormatInfo) -> bool {
+    let depth_data = matches!(f, ClientFormat::DepthComponent | ClientFormat::DepthStencil);
+    depth_data == (info.base == BaseFormat::Depth)
 }
 
 /// The stored 8-bit texel of an RGBA color in a format.
@@ -1367,6 +1426,20 @@ fn store_client(
                     }
                     for (k, c) in colors.iter().enumerate() {
                         t[start + k] = texel8(info, *c);
+                    }
+                }
+                Texels::Depth(t) if cf == ClientFormat::DepthStencil => {
+                    // GL_UNSIGNED_INT_24_8: depth in the high 24 bits, stencil in the low 8.
+                    for (k, word) in row.chunks_exact(4).take(w).enumerate() {
+                        let mut bytes = [word[0], word[1], word[2], word[3]];
+                        if swap {
+                            bytes.reverse();
+                        }
+                        let word = u32::from_ne_bytes(bytes);
+                        t[start + k] = crate::pixel::convert::depth_to_float(word >> 8, 24);
+                        if let Some(s) = image.stencil.get_mut(start + k) {
+                            *s = word as u8;
+                        }
                     }
                 }
                 Texels::Depth(t) => {
@@ -1510,5 +1583,38 @@ fn pack_texels_row(
                 }
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn depth_stencil_formats_are_depth_images_with_stencil() {
+        for f in [GL_DEPTH_STENCIL, GL_DEPTH24_STENCIL8] {
+            let info = format_info(f as i32).unwrap();
+            assert_eq!((info.base, info.bits[0], info.sizes[6], info.sizes[7]), (BaseFormat::Depth, 24, 24, 8));
+            assert!(info.has_stencil());
+            assert!(data_fits(ClientFormat::DepthStencil, &info) && data_fits(ClientFormat::DepthComponent, &info));
+            assert!(!data_fits(ClientFormat::Rgba, &info));
+            assert_eq!(new_image(2, 2, 1, 0, &info).unwrap().stencil, vec![0; 4]);
+        }
+        let depth = format_info(GL_DEPTH_COMPONENT24 as i32).unwrap();
+        assert!(!depth.has_stencil() && data_fits(ClientFormat::DepthStencil, &depth));
+        assert!(new_image(2, 2, 1, 0, &depth).unwrap().stencil.is_empty());
+        let color = format_info(GL_RGBA8 as i32).unwrap();
+        assert!(!data_fits(ClientFormat::DepthStencil, &color) && !data_fits(ClientFormat::DepthComponent, &color));
+    }
+
+    #[test]
+    fn depth_stencil_data_needs_the_packed_type() {
+        assert_eq!(
+            check_texture_format_type(GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8),
+            Ok((ClientFormat::DepthStencil, ClientType::UnsignedInt24_8))
+        );
+        assert_eq!(check_texture_format_type(GL_DEPTH_STENCIL, GL_UNSIGNED_INT), Err(GL_INVALID_ENUM));
+        assert_eq!(check_texture_format_type(GL_RGBA, GL_UNSIGNED_INT_24_8), Err(GL_INVALID_OPERATION));
+        assert_eq!(check_texture_format_type(GL_STENCIL_INDEX, GL_UNSIGNED_BYTE), Err(GL_INVALID_OPERATION));
     }
 }

@@ -11,6 +11,8 @@
 //! bits of the format Mesa 22 chooses for the internal format (GL_RGBA4 keeps 4 bits per
 //! channel, widened back to 8 by replication); depth formats are kept as f32 quantized to
 //! their 16, 24 or 32 bits. Formats of more than 8 bits per color channel are stored with 8.
+//! Depth-stencil formats (GL_EXT_packed_depth_stencil) are depth images with a stencil
+//! plane beside the depth texels: sampling sees only the depth, as GL specifies.
 pub mod env;
 pub mod sampler;
 
@@ -57,6 +59,8 @@ pub struct TexImage {
     pub border: usize,
     pub base: BaseFormat,
     pub texels: Texels,
+    /// The stencil index of each texel of a depth-stencil image; empty for other images.
+    pub stencil: Vec<u8>,
 }
 
 /// Why an image could not be made.
@@ -105,7 +109,15 @@ impl TexImage {
             v.resize(count, base_texel(base));
             Texels::Rgba8(v)
         };
-        Ok(TexImage { width, height, depth, border, base, texels })
+        Ok(TexImage { width, height, depth, border, base, texels, stencil: Vec::new() })
+    }
+
+    /// This image with a stencil plane of zeros (a depth-stencil image).
+    pub fn with_stencil(mut self) -> Result<TexImage, OutOfMemory> {
+        let count = self.width * self.height * self.depth;
+        self.stencil.try_reserve_exact(count).map_err(|_| OutOfMemory)?;
+        self.stencil.resize(count, 0);
+        Ok(self)
     }
 
     /// Index of texel (x, y, z) (border included).
@@ -151,6 +163,9 @@ pub fn downsample(src: &TexImage, dims: usize) -> Result<TexImage, OutOfMemory> 
     let d = if dims >= 3 { d - 2 * b } else { 1 };
     let (nw, nh, nd) = ((w / 2).max(1), (h / 2).max(1), (d / 2).max(1));
     let mut out = TexImage::new(nw, nh, nd, 0, src.base)?;
+    if !src.stencil.is_empty() {
+        out = out.with_stencil()?;
+    }
     let (fx, fy, fz) = (if w > 1 { 2 } else { 1 }, if h > 1 { 2 } else { 1 }, if d > 1 { 2 } else { 1 });
     let by = if dims >= 2 { b } else { 0 };
     let bz = if dims >= 3 { b } else { 0 };
@@ -184,6 +199,10 @@ pub fn downsample(src: &TexImage, dims: usize) -> Result<TexImage, OutOfMemory> 
                 match &mut out.texels {
                     Texels::Rgba8(t) => t[o] = v.map(|c| (c * 255.0).round() as u8),
                     Texels::Depth(t) => t[o] = v[0],
+                }
+                if !out.stencil.is_empty() {
+                    // Stencil indices are not averaged: each keeps its box's first index.
+                    out.stencil[o] = src.stencil[src.index(x * fx + b, y * fy + by, z * fz + bz)];
                 }
             }
         }
@@ -319,6 +338,12 @@ mod tests {
         assert_eq!((next.width, next.height), (1, 1));
         assert_eq!(next.texels, Texels::Rgba8(vec![[128, 128, 1, 0]]));
         assert_eq!(level_size(5, 1), 2);
+        // A depth-stencil image keeps a stencil plane; each box keeps its first index.
+        let mut ds = TexImage::new(2, 2, 1, 0, BaseFormat::Depth).unwrap().with_stencil().unwrap();
+        ds.texels = Texels::Depth(vec![0.0, 0.5, 0.5, 1.0]);
+        ds.stencil = vec![7, 1, 2, 3];
+        let next = downsample(&ds, 2).unwrap();
+        assert_eq!((next.texels, next.stencil), (Texels::Depth(vec![0.5]), vec![7]));
         assert_eq!(level_size(5, 9), 1);
     }
 }

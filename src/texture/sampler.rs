@@ -410,6 +410,7 @@ mod tests {
             border: 0,
             base: BaseFormat::Rgba,
             texels: Texels::Rgba8(texels),
+            stencil: Vec::new(),
         })
     }
 
@@ -496,6 +497,7 @@ mod tests {
             border: 0,
             base: BaseFormat::Depth,
             texels: Texels::Depth(vec![0.25, 0.75]),
+            stencil: Vec::new(),
         });
         let mut s = sampler(vec![img], Wrap::ClampToEdge, Filter::Linear);
         s.base = BaseFormat::Depth;
