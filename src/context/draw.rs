@@ -35,6 +35,7 @@ use crate::raster::point::PointJob;
 use crate::raster::smooth::{SmoothJob, SmoothLine, SmoothPoint, SmoothTriangle};
 use crate::raster::triangle::{TriangleJob, WindowVertex};
 use crate::raster::{DrawState, Primitive as RasterPrimitive, Scene};
+use crate::setup::multisample::SampleQuad;
 use crate::setup::point::point_rect;
 use crate::setup::triangle::GUARD_BAND;
 use crate::vertex::assembly::{assemble, DrawPart, Primitive, QuadSplit};
@@ -173,6 +174,8 @@ struct Geometry {
     smooth_lines: bool,
     smooth_points: bool,
     smooth_polygons: bool,
+    /// Lines and points cover samples (a multisampled target with GL_MULTISAMPLE on).
+    per_sample: bool,
 }
 
 impl Context {
@@ -584,6 +587,7 @@ impl Context {
             smooth_lines: lp.line_smooth,
             smooth_points: lp.point_smooth,
             smooth_polygons: polygon.smooth,
+            per_sample: self.multisample_state(self.framebuffer_samples()).is_some_and(|m| m.per_sample()),
             varyings: self.varyings_needed(),
             viewport: Viewport {
                 scale: [half[0], half[1], ((far - near) * 0.5) as f32],
@@ -1209,6 +1213,16 @@ fn emit_line_job(scene: &mut Scene, state: u32, g: &Geometry, a: &LineVertex, b:
         }
         return;
     }
+    if g.per_sample {
+        // The rectangle of the unrounded width, as llvmpipe draws it on a multisampled target
+        // (widths below 1 draw as 1 there, Mesa's minimum line width).
+        let up = |v: &LineVertex| [v.x, g.height as f32 - v.y_down];
+        let quad = SampleQuad::line(up(a), up(b), g.line_width.max(1.0));
+        if let Some(job) = quad.and_then(|quad| LineJob::covering_samples(a, b, g.height, flat, &varyings, quad)) {
+            scene.add(state, job.bounds(), RasterPrimitive::Line(job));
+        }
+        return;
+    }
     if let Some(job) = LineJob::new(a, b, g.line_width, g.height, flat, &varyings) {
         let (bounds, setup) = (job.bounds(), job.setup().clone());
         scene.add_narrow(state, bounds, RasterPrimitive::Line(job), |y0, y1| setup.columns(y0, y1));
@@ -1232,8 +1246,20 @@ fn emit_window_point(scene: &mut Scene, state: u32, g: &Geometry, w: &LineVertex
         }
         return;
     }
+    if g.per_sample {
+        // The square of the unrounded size, as llvmpipe draws it on a multisampled target
+        // (sizes below 1 draw as 1 there, as for aliased points).
+        if let Some(square) = SampleQuad::point([w.x, g.height as f32 - w.y_down], size.max(1.0)) {
+            let (x0, y0, x1, y1) = square.pixel_box();
+            let rect = Rect { x0, y0, x1, y1 };
+            let sample_square = Some(Box::new(square));
+            scene.add(state, rect, RasterPrimitive::Point(PointJob { rect, z: w.z, color, varyings, sample_square }));
+        }
+        return;
+    }
     let rect = point_rect(w.x, w.y_down, size, g.height);
-    scene.add(state, rect, RasterPrimitive::Point(PointJob { rect, z: w.z, color, varyings }));
+    let point = PointJob { rect, z: w.z, color, varyings, sample_square: None };
+    scene.add(state, rect, RasterPrimitive::Point(point));
 }
 
 /// A polygon offset bounded by GL_POLYGON_OFFSET_CLAMP as EXT_polygon_offset_clamp says:
