@@ -174,7 +174,8 @@ struct Geometry {
     smooth_lines: bool,
     smooth_points: bool,
     smooth_polygons: bool,
-    /// Lines and points cover samples (a multisampled target with GL_MULTISAMPLE on).
+    /// Lines and points cover samples (a multisampled target with GL_MULTISAMPLE on; set by
+    /// `draw_part` from the draw state).
     per_sample: bool,
 }
 
@@ -209,6 +210,7 @@ impl Context {
             let stipple = if state.polygon_stipple.is_some() { "polygon stipple → " } else { "" };
             format!("pixels [{}, {}) x [{}, {}) → {stipple}{}", r.x0, r.x1, r.y0, r.y1, state.fragment)
         });
+        let per_sample = state.multisample.is_some_and(|m| m.per_sample());
         let (state_index, cached) = scene.add_state(state);
         if let Some(stages) = description {
             let how = if cached { "cached" } else { "compiled" };
@@ -216,7 +218,7 @@ impl Context {
             eprintln!("tessera pipeline: {name} ({} vertices), state {state_index} {how}: {stages}", vertices.len());
         }
         let clip_vertices = self.transform(vertices, float_color);
-        let geometry = self.geometry(depth_bits, height);
+        let geometry = Geometry { per_sample, ..self.geometry(depth_bits, height) };
         let first_vertex = self.state.lighting.provoking_vertex == GL_FIRST_VERTEX_CONVENTION;
         let mut poly = Vec::new();
         let mut scratch = Vec::new();
@@ -587,7 +589,7 @@ impl Context {
             smooth_lines: lp.line_smooth,
             smooth_points: lp.point_smooth,
             smooth_polygons: polygon.smooth,
-            per_sample: self.multisample_state(self.framebuffer_samples()).is_some_and(|m| m.per_sample()),
+            per_sample: false,
             varyings: self.varyings_needed(),
             viewport: Viewport {
                 scale: [half[0], half[1], ((far - near) * 0.5) as f32],
