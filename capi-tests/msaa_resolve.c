@@ -201,6 +201,21 @@ int main(void)
         glVertex3f(6.5f + i * 8.7f, 34.5f, 0.5f);
         glEnd();
     }
+    /* GL_POINT_SMOOTH changes nothing on a multisampled target in Mesa 22 (its square). */
+    glEnable(GL_POINT_SMOOTH);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glColor3f(1, 0.5f, 1);
+    glPointSize(3.5f);
+    glBegin(GL_POINTS);
+    glVertex3f(12.3f, 30.2f, 0.5f);
+    glEnd();
+    glPointSize(6.0f);
+    glBegin(GL_POINTS);
+    glVertex3f(30.6f, 29.7f, 0.5f);
+    glEnd();
+    glDisable(GL_BLEND);
+    glDisable(GL_POINT_SMOOTH);
     glPointSize(1);
     glDisable(GL_DEPTH_TEST);
     resolve(ms, resolved, "lines_points");

@@ -1241,21 +1241,22 @@ fn emit_window_point(scene: &mut Scene, state: u32, g: &Geometry, w: &LineVertex
     // llvmpipe interpolates point colors perspective-correctly too: (c/w)·w.
     let color = if w.inv_w == 1.0 { w.color } else { w.color.map(|c| c * w.inv_w * (1.0 / w.inv_w)) };
     let varyings = g.varyings.iter().map(|v| v.of_line(w)).collect();
-    if g.smooth_points {
-        if let Some(job) = SmoothPoint::new(w, size, g.height, color, varyings) {
-            let job = SmoothJob::Point(Box::new(job));
-            scene.add(state, job.bounds(), RasterPrimitive::Smooth(job));
-        }
-        return;
-    }
     if g.per_sample {
         // The square of the unrounded size, as llvmpipe draws it on a multisampled target
-        // (sizes below 1 draw as 1 there, as for aliased points).
+        // (sizes below 1 draw as 1 there, as for aliased points); GL_POINT_SMOOTH changes
+        // nothing there (measured on Mesa 22.3; GL 2.1 §3.3.3 would make it a circle).
         if let Some(square) = SampleQuad::point([w.x, g.height as f32 - w.y_down], size.max(1.0)) {
             let (x0, y0, x1, y1) = square.pixel_box();
             let rect = Rect { x0, y0, x1, y1 };
             let sample_square = Some(Box::new(square));
             scene.add(state, rect, RasterPrimitive::Point(PointJob { rect, z: w.z, color, varyings, sample_square }));
+        }
+        return;
+    }
+    if g.smooth_points {
+        if let Some(job) = SmoothPoint::new(w, size, g.height, color, varyings) {
+            let job = SmoothJob::Point(Box::new(job));
+            scene.add(state, job.bounds(), RasterPrimitive::Smooth(job));
         }
         return;
     }

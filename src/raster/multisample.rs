@@ -13,7 +13,7 @@
 //!
 //! Triangles, lines (their rectangles) and points (their squares) are rasterized per sample
 //! ([`walk_sample_spans`]). Primitives without a per-sample rasterization (pixel
-//! rectangles, smooth lines and points, and everything while GL_MULTISAMPLE is disabled,
+//! rectangles, smooth lines, and everything while GL_MULTISAMPLE is disabled,
 //! GL 2.1 §3.2.1) reach a multisampled band through the
 //! ordinary [`super::shade_span`], which covers every sample of the pixels whose centre is
 //! covered ([`shade_span_all_samples`]).
