@@ -1,8 +1,9 @@
 /* Multisampled renderbuffers resolved by glBlitFramebuffer: sample counts and completeness,
  * triangle edges at the 4-sample positions (a fan of thin triangles at many slopes, a depth
  * intersection tested per sample), GL_SAMPLE_COVERAGE and GL_SAMPLE_ALPHA_TO_COVERAGE
- * masks, GL_MULTISAMPLE disabled (pixel centres decide for every sample), and the errors of
- * resolving blits. The pictures are read back from the single-sample resolve target. */
+ * masks, GL_MULTISAMPLE disabled (pixel centres decide for every sample), lines and points
+ * of several widths covering the samples of their rectangles and squares (unrounded widths,
+ * as llvmpipe), and the errors of resolving blits. The pictures are read back from the single-sample resolve target. */
 #include "common.h"
 #include <math.h>
 
@@ -169,6 +170,55 @@ int main(void)
     glEnd();
     glEnable(GL_MULTISAMPLE);
     resolve(ms, resolved, "multisample_disabled");
+
+    /* Lines (several widths and slopes, smooth-shaded, one through a depth-tested plane) and
+     * points (several sizes, off-centre) cover the samples of their rectangles and squares. */
+    clear();
+    glEnable(GL_DEPTH_TEST);
+    glColor3f(0.3f, 0.3f, 0.3f);
+    quad(0, 20, W, 40, 0);
+    const float widths[] = {1.0f, 1.5f, 2.5f, 4.0f, 0.5f};
+    for (int i = 0; i < 5; i++) {
+        glLineWidth(widths[i]);
+        glBegin(GL_LINES);
+        glColor3f(1, 0.2f * i, 0);
+        glVertex3f(2.3f + i * 0.17f, 3.2f + i * 3.4f, -0.5f);
+        glColor3f(0, 0.2f * i, 1);
+        glVertex3f(22.6f, 5.7f + i * 4.1f, 0.5f);
+        glColor3f(0, 1, 0.2f * i);
+        glVertex3f(25.1f + i * 4.3f, 1.4f, -0.5f);
+        glColor3f(1, 1, 0.2f * i);
+        glVertex3f(27.4f + i * 4.1f, 18.9f - i * 0.3f, 0.5f);
+        glEnd();
+    }
+    glLineWidth(1);
+    const float sizes[] = {1.0f, 2.5f, 3.0f, 5.5f, 8.0f};
+    for (int i = 0; i < 5; i++) {
+        glPointSize(sizes[i]);
+        glColor3f(0.2f * i, 1, 1);
+        glBegin(GL_POINTS);
+        glVertex3f(4.3f + i * 9.1f, 25.2f + i * 0.37f, -0.5f);
+        glVertex3f(6.5f + i * 8.7f, 34.5f, 0.5f);
+        glEnd();
+    }
+    /* GL_POINT_SMOOTH changes nothing on a multisampled target in Mesa 22 (its square). */
+    glEnable(GL_POINT_SMOOTH);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glColor3f(1, 0.5f, 1);
+    glPointSize(3.5f);
+    glBegin(GL_POINTS);
+    glVertex3f(12.3f, 30.2f, 0.5f);
+    glEnd();
+    glPointSize(6.0f);
+    glBegin(GL_POINTS);
+    glVertex3f(30.6f, 29.7f, 0.5f);
+    glEnd();
+    glDisable(GL_BLEND);
+    glDisable(GL_POINT_SMOOTH);
+    glPointSize(1);
+    glDisable(GL_DEPTH_TEST);
+    resolve(ms, resolved, "lines_points");
 
     /* Resolving blits: same size only, never into a multisampled framebuffer. */
     glBindFramebuffer(GL_READ_FRAMEBUFFER, ms);

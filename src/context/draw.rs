@@ -35,6 +35,7 @@ use crate::raster::point::PointJob;
 use crate::raster::smooth::{SmoothJob, SmoothLine, SmoothPoint, SmoothTriangle};
 use crate::raster::triangle::{TriangleJob, WindowVertex};
 use crate::raster::{DrawState, Primitive as RasterPrimitive, Scene};
+use crate::setup::multisample::SampleQuad;
 use crate::setup::point::point_rect;
 use crate::setup::triangle::GUARD_BAND;
 use crate::vertex::assembly::{assemble, DrawPart, Primitive, QuadSplit};
@@ -173,6 +174,9 @@ struct Geometry {
     smooth_lines: bool,
     smooth_points: bool,
     smooth_polygons: bool,
+    /// Lines and points cover samples (a multisampled target with GL_MULTISAMPLE on; set by
+    /// `draw_part` from the draw state).
+    per_sample: bool,
 }
 
 impl Context {
@@ -206,6 +210,7 @@ impl Context {
             let stipple = if state.polygon_stipple.is_some() { "polygon stipple → " } else { "" };
             format!("pixels [{}, {}) x [{}, {}) → {stipple}{}", r.x0, r.x1, r.y0, r.y1, state.fragment)
         });
+        let per_sample = state.multisample.is_some_and(|m| m.per_sample());
         let (state_index, cached) = scene.add_state(state);
         if let Some(stages) = description {
             let how = if cached { "cached" } else { "compiled" };
@@ -213,7 +218,7 @@ impl Context {
             eprintln!("tessera pipeline: {name} ({} vertices), state {state_index} {how}: {stages}", vertices.len());
         }
         let clip_vertices = self.transform(vertices, float_color);
-        let geometry = self.geometry(depth_bits, height);
+        let geometry = Geometry { per_sample, ..self.geometry(depth_bits, height) };
         let first_vertex = self.state.lighting.provoking_vertex == GL_FIRST_VERTEX_CONVENTION;
         let mut poly = Vec::new();
         let mut scratch = Vec::new();
@@ -584,6 +589,7 @@ impl Context {
             smooth_lines: lp.line_smooth,
             smooth_points: lp.point_smooth,
             smooth_polygons: polygon.smooth,
+            per_sample: false,
             varyings: self.varyings_needed(),
             viewport: Viewport {
                 scale: [half[0], half[1], ((far - near) * 0.5) as f32],
@@ -1209,6 +1215,16 @@ fn emit_line_job(scene: &mut Scene, state: u32, g: &Geometry, a: &LineVertex, b:
         }
         return;
     }
+    if g.per_sample {
+        // The rectangle of the unrounded width, as llvmpipe draws it on a multisampled target
+        // (widths below 1 draw as 1 there, Mesa's minimum line width).
+        let up = |v: &LineVertex| [v.x, g.height as f32 - v.y_down];
+        let quad = SampleQuad::line(up(a), up(b), g.line_width.max(1.0));
+        if let Some(job) = quad.and_then(|quad| LineJob::covering_samples(a, b, g.height, flat, &varyings, quad)) {
+            scene.add(state, job.bounds(), RasterPrimitive::Line(job));
+        }
+        return;
+    }
     if let Some(job) = LineJob::new(a, b, g.line_width, g.height, flat, &varyings) {
         let (bounds, setup) = (job.bounds(), job.setup().clone());
         scene.add_narrow(state, bounds, RasterPrimitive::Line(job), |y0, y1| setup.columns(y0, y1));
@@ -1225,6 +1241,18 @@ fn emit_window_point(scene: &mut Scene, state: u32, g: &Geometry, w: &LineVertex
     // llvmpipe interpolates point colors perspective-correctly too: (c/w)·w.
     let color = if w.inv_w == 1.0 { w.color } else { w.color.map(|c| c * w.inv_w * (1.0 / w.inv_w)) };
     let varyings = g.varyings.iter().map(|v| v.of_line(w)).collect();
+    if g.per_sample {
+        // The square of the unrounded size, as llvmpipe draws it on a multisampled target
+        // (sizes below 1 draw as 1 there, as for aliased points); GL_POINT_SMOOTH changes
+        // nothing there (measured on Mesa 22.3; GL 2.1 §3.3.3 would make it a circle).
+        if let Some(square) = SampleQuad::point([w.x, g.height as f32 - w.y_down], size.max(1.0)) {
+            let (x0, y0, x1, y1) = square.pixel_box();
+            let rect = Rect { x0, y0, x1, y1 };
+            let sample_square = Some(Box::new(square));
+            scene.add(state, rect, RasterPrimitive::Point(PointJob { rect, z: w.z, color, varyings, sample_square }));
+        }
+        return;
+    }
     if g.smooth_points {
         if let Some(job) = SmoothPoint::new(w, size, g.height, color, varyings) {
             let job = SmoothJob::Point(Box::new(job));
@@ -1233,7 +1261,8 @@ fn emit_window_point(scene: &mut Scene, state: u32, g: &Geometry, w: &LineVertex
         return;
     }
     let rect = point_rect(w.x, w.y_down, size, g.height);
-    scene.add(state, rect, RasterPrimitive::Point(PointJob { rect, z: w.z, color, varyings }));
+    let point = PointJob { rect, z: w.z, color, varyings, sample_square: None };
+    scene.add(state, rect, RasterPrimitive::Point(point));
 }
 
 /// A polygon offset bounded by GL_POLYGON_OFFSET_CLAMP as EXT_polygon_offset_clamp says:

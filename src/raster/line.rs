@@ -3,10 +3,16 @@
 //!
 //! Attributes follow llvmpipe's line planes: they vary along the major axis only, linearly
 //! in window space for z and perspective-correctly (planes of c/w and 1/w) for colors.
+//!
+//! On a multisampled target with GL_MULTISAMPLE on, a line covers the samples of its
+//! rectangle instead ([`SampleQuad::line`], llvmpipe's shape there); its color and varyings
+//! are still evaluated at pixel centres and its depth at each sample.
 use super::interpolate::{Interpolant, Shading, Varyings};
+use super::multisample::{sample_shifts, shade_span_samples, walk_sample_spans, SampleMasks};
 use super::{shade_span, span_mask, walk_spans, Band, DrawState, Scratch, Span};
 use crate::framebuffer::Rect;
-use crate::setup::line::{LinePlane, LineSetup};
+use crate::setup::line::{LineGradient, LinePlane, LineSetup};
+use crate::setup::multisample::{sample_offsets, SampleQuad};
 
 impl Interpolant for LinePlane {
     #[inline]
@@ -40,6 +46,8 @@ pub struct LineJob {
     shading: LineShading,
     /// Planes of a/w for the draw's varyings, and of 1/w (perspective-correct, as colors).
     varyings: Varyings<LinePlane>,
+    /// The rectangle covered sample by sample, when rasterized per sample.
+    sample_quad: Option<Box<SampleQuad>>,
 }
 
 impl LineJob {
@@ -56,6 +64,35 @@ impl LineJob {
     ) -> Option<LineJob> {
         let setup = LineSetup::new([a.x, a.y_down], [b.x, b.y_down], width, height)?;
         let g = setup.gradient;
+        Some(LineJob::with_planes(setup, g, a, b, flat, varyings))
+    }
+
+    /// As [`LineJob::new`] for a line covering the samples of `quad` (its rectangle) on a
+    /// multisampled target with GL_MULTISAMPLE on, its attributes varying along the line
+    /// (llvmpipe's planes for such rectangles).
+    pub fn covering_samples(
+        a: &LineVertex,
+        b: &LineVertex,
+        height: i32,
+        flat: Option<[f32; 4]>,
+        varyings: &[[f32; 2]],
+        quad: SampleQuad,
+    ) -> Option<LineJob> {
+        let setup = LineSetup::new([a.x, a.y_down], [b.x, b.y_down], 1.0, height)?;
+        let g = LineGradient::along([a.x, a.y_down], [b.x, b.y_down]);
+        let mut job = LineJob::with_planes(setup, g, a, b, flat, varyings);
+        job.sample_quad = Some(Box::new(quad));
+        Some(job)
+    }
+
+    fn with_planes(
+        setup: LineSetup,
+        g: LineGradient,
+        a: &LineVertex,
+        b: &LineVertex,
+        flat: Option<[f32; 4]>,
+        varyings: &[[f32; 2]],
+    ) -> LineJob {
         let z = g.plane(a.z, b.z);
         let shading = match flat {
             Some(color) => LineShading::Flat(color),
@@ -68,16 +105,59 @@ impl LineJob {
         };
         let over_w = varyings.iter().map(|v| g.plane(v[0] * a.inv_w, v[1] * b.inv_w)).collect();
         let varyings = Varyings::new(over_w, g.plane(a.inv_w, b.inv_w));
-        Some(LineJob { setup, z, shading, varyings })
+        LineJob { setup, z, shading, varyings, sample_quad: None }
     }
 
     pub fn setup(&self) -> &LineSetup {
         &self.setup
     }
 
-    /// The pixel rectangle that may contain covered pixels.
+    /// The pixel rectangle that may contain covered pixels (or samples).
     pub fn bounds(&self) -> Rect {
-        self.setup.bounds
+        match &self.sample_quad {
+            Some(quad) => {
+                let (x0, y0, x1, y1) = quad.pixel_box();
+                Rect { x0, y0, x1, y1 }
+            }
+            None => self.setup.bounds,
+        }
+    }
+
+    /// Whether the line is rasterized per sample ([`LineJob::render_samples`]).
+    pub fn per_sample(&self) -> bool {
+        self.sample_quad.is_some()
+    }
+
+    /// Renders the part of the line inside `area` into a multisampled band, sample by sample
+    /// (a line without a sample rectangle draws nothing here).
+    pub fn render_samples(&self, state: &DrawState, area: Rect, band: &mut Band<'_>, scratch: &mut Scratch) {
+        let Some(quad) = &self.sample_quad else { return };
+        let offsets = sample_offsets(band.samples);
+        let shifts = sample_shifts(offsets);
+        walk_sample_spans(
+            area.intersect(self.bounds()),
+            offsets,
+            |y, o, x0, x1| quad.row_span_at(y, o.x, o.y, x0, x1),
+            |y, x0, x1, masks: SampleMasks| {
+                let n = (x1 - x0) as usize;
+                // llvmpipe evaluates these planes at the pixel's upper-right corner, half a
+                // pixel right of and above its centre (measured on Mesa 22.3: a line from
+                // x = 0 to 16 shaded from 1 to 0 gives pixel 0 the value 15/16).
+                let (py, px0) = (self.setup.row_down(y) as f32 - 0.5, x0 as f32 + 0.5);
+                let span = Span { y, x0, n, row_start: band.sample_index(y, x0, 0), front_facing: true };
+                shade_span_samples(
+                    state,
+                    band,
+                    scratch,
+                    span,
+                    masks,
+                    // The planes are over y-down rows: a sample above the centre is at a smaller py.
+                    |i, s| self.z.at(px0 + i as f32 + shifts[s][0], py - shifts[s][1]),
+                    |colors| self.shading.span_colors(px0, py, n, colors),
+                    |i, j, out| self.varyings.at(px0 + i as f32, py - j as f32, out),
+                );
+            },
+        );
     }
 
     /// Renders the part of the line inside `area` (within the band) into `band`.

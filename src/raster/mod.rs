@@ -532,7 +532,13 @@ impl Scene {
                     Primitive::Triangle(job) => {
                         job.render(state, tile.intersect(state.fill_clip), &mut band, &mut scratch)
                     }
+                    Primitive::Line(job) if job.per_sample() => {
+                        job.render_samples(state, area, &mut band, &mut scratch)
+                    }
                     Primitive::Line(job) => job.render(state, area, &mut band, &mut scratch),
+                    Primitive::Point(job) if job.sample_square.is_some() => {
+                        job.render_samples(state, area, &mut band, &mut scratch)
+                    }
                     Primitive::Point(job) => job.render(state, area, &mut band, &mut scratch),
                     Primitive::Smooth(job) => job.render(state, area, &mut band, &mut scratch),
                     Primitive::Pixels(job) => job.render(state, area, &mut band, &mut scratch),

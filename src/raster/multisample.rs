@@ -11,8 +11,10 @@
 //! pixels in its own storage row (`framebuffer::multisample`), so the single-sample
 //! fragment operations run unchanged on it.
 //!
-//! Primitives without a per-sample rasterization (pixel rectangles, and everything while
-//! GL_MULTISAMPLE is disabled, GL 2.1 §3.2.1) reach a multisampled band through the
+//! Triangles, lines (their rectangles) and points (their squares) are rasterized per sample
+//! ([`walk_sample_spans`]). Primitives without a per-sample rasterization (pixel
+//! rectangles, smooth lines, and everything while GL_MULTISAMPLE is disabled,
+//! GL 2.1 §3.2.1) reach a multisampled band through the
 //! ordinary [`super::shade_span`], which covers every sample of the pixels whose centre is
 //! covered ([`shade_span_all_samples`]).
 use super::triangle::{stipple_mask, TriangleJob};
@@ -215,6 +217,49 @@ pub fn shade_span_samples(
     }
 }
 
+/// Walks the rows of `area` for a primitive covering, in row `y`, the pixels
+/// `row_span_at(y, sample, x0, x1)` (clipped to `[x0, x1)`) at each of the `offsets`: calls
+/// `shade(y, x0, x1, masks)` for runs of at most [`MAX_SPAN`] pixels holding covered samples.
+pub fn walk_sample_spans(
+    area: Rect,
+    offsets: &[SampleOffset],
+    row_span_at: impl Fn(i32, &SampleOffset, i32, i32) -> Option<(i32, i32)>,
+    mut shade: impl FnMut(i32, i32, i32, SampleMasks),
+) {
+    if area.is_empty() {
+        return;
+    }
+    for y in area.y0..area.y1 {
+        let mut spans = [(0, 0); MAX_SAMPLES];
+        let (mut lo, mut hi) = (i32::MAX, i32::MIN);
+        for (span, offset) in spans.iter_mut().zip(offsets) {
+            if let Some((a, b)) = row_span_at(y, offset, area.x0, area.x1) {
+                *span = (a, b);
+                lo = lo.min(a);
+                hi = hi.max(b);
+            }
+        }
+        let mut x0 = lo;
+        while x0 < hi {
+            let x1 = (x0 + MAX_SPAN as i32).min(hi);
+            let mut masks = [0u64; MAX_SAMPLES];
+            for (mask, &(a, b)) in masks.iter_mut().zip(&spans) {
+                let (a, b) = (a.max(x0), b.min(x1));
+                if a < b {
+                    *mask = span_mask((b - a) as usize) << (a - x0);
+                }
+            }
+            shade(y, x0, x1, masks);
+            x0 = x1;
+        }
+    }
+}
+
+/// Sample positions relative to the pixel centre, in pixels (GL's y up).
+pub fn sample_shifts(offsets: &[SampleOffset]) -> [[f32; 2]; MAX_SAMPLES] {
+    std::array::from_fn(|s| offsets.get(s).map_or([0.0; 2], |o| [o.x as f32 / 256.0 - 0.5, o.y as f32 / 256.0 - 0.5]))
+}
+
 impl TriangleJob {
     /// The pixel rectangle that may contain covered samples: every pixel the triangle's
     /// bounding box touches.
@@ -227,35 +272,13 @@ impl TriangleJob {
     /// sample at the standard positions of `samples` samples, with the fill rule of pixel
     /// centres applied to each sample.
     pub fn render_samples(&self, state: &DrawState, area: Rect, band: &mut Band<'_>, scratch: &mut Scratch) {
-        let area = area.intersect(self.sample_bounds());
-        if area.is_empty() {
-            return;
-        }
         let offsets = sample_offsets(band.samples);
-        for y in area.y0..area.y1 {
-            let mut spans = [(0, 0); MAX_SAMPLES];
-            let (mut lo, mut hi) = (i32::MAX, i32::MIN);
-            for (span, offset) in spans.iter_mut().zip(offsets) {
-                if let Some((a, b)) = self.setup.row_span_at(y, offset.x, offset.y, area.x0, area.x1) {
-                    *span = (a, b);
-                    lo = lo.min(a);
-                    hi = hi.max(b);
-                }
-            }
-            let mut x0 = lo;
-            while x0 < hi {
-                let x1 = (x0 + MAX_SPAN as i32).min(hi);
-                let mut masks = [0u64; MAX_SAMPLES];
-                for (mask, &(a, b)) in masks.iter_mut().zip(&spans) {
-                    let (a, b) = (a.max(x0), b.min(x1));
-                    if a < b {
-                        *mask = span_mask((b - a) as usize) << (a - x0);
-                    }
-                }
-                self.shade_samples(state, band, scratch, y, x0, x1, masks, offsets);
-                x0 = x1;
-            }
-        }
+        walk_sample_spans(
+            area.intersect(self.sample_bounds()),
+            offsets,
+            |y, o, x0, x1| self.setup.row_span_at(y, o.x, o.y, x0, x1),
+            |y, x0, x1, masks| self.shade_samples(state, band, scratch, y, x0, x1, masks, offsets),
+        );
     }
 
     #[allow(clippy::too_many_arguments)]
@@ -277,10 +300,7 @@ impl TriangleJob {
         }
         let dy = y as f32 + 0.5 - self.anchor[1];
         let dx0 = x0 as f32 + 0.5 - self.anchor[0];
-        // Sample positions relative to the pixel centre, in pixels.
-        let shifts: [[f32; 2]; MAX_SAMPLES] = std::array::from_fn(|s| {
-            offsets.get(s).map_or([0.0; 2], |o| [o.x as f32 / 256.0 - 0.5, o.y as f32 / 256.0 - 0.5])
-        });
+        let shifts = sample_shifts(offsets);
         let span = Span { y, x0, n, row_start: band.sample_index(y, x0, 0), front_facing: self.front_facing };
         shade_span_samples(
             state,

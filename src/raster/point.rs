@@ -1,8 +1,12 @@
 //! Points inside one tile: an aliased point is a square of pixels with one depth and one
-//! color, so every row of it is a constant span.
+//! color, so every row of it is a constant span. On a multisampled target with
+//! GL_MULTISAMPLE on, a point covers the samples of its unrounded square instead
+//! ([`SampleQuad::point`], llvmpipe's shape there).
+use super::multisample::{shade_span_samples, walk_sample_spans, SampleMasks};
 use super::{shade_span, span_mask, Band, DrawState, Scratch, Span};
 use crate::fragment::MAX_SPAN;
 use crate::framebuffer::Rect;
+use crate::setup::multisample::{sample_offsets, SampleQuad};
 
 /// A set-up point: its pixels, its window z and its color.
 #[derive(Clone, Debug)]
@@ -12,11 +16,39 @@ pub struct PointJob {
     pub color: [f32; 4],
     /// The varyings the draw needs (one value each over the whole point).
     pub varyings: Vec<f32>,
+    /// The square covered sample by sample, when rasterized per sample (`rect` is then its
+    /// pixel box).
+    pub sample_square: Option<Box<SampleQuad>>,
 }
 
 impl PointJob {
     pub fn bounds(&self) -> Rect {
         self.rect
+    }
+
+    /// Renders the part of the point inside `area` into a multisampled band, sample by
+    /// sample (a point without a sample square draws nothing here).
+    pub fn render_samples(&self, state: &DrawState, area: Rect, band: &mut Band<'_>, scratch: &mut Scratch) {
+        let Some(square) = &self.sample_square else { return };
+        walk_sample_spans(
+            area.intersect(self.rect),
+            sample_offsets(band.samples),
+            |y, o, x0, x1| square.row_span_at(y, o.x, o.y, x0, x1),
+            |y, x0, x1, masks: SampleMasks| {
+                let n = (x1 - x0) as usize;
+                let span = Span { y, x0, n, row_start: band.sample_index(y, x0, 0), front_facing: true };
+                shade_span_samples(
+                    state,
+                    band,
+                    scratch,
+                    span,
+                    masks,
+                    |_, _| self.z,
+                    |_| Some(self.color),
+                    |_, _, out| out.iter_mut().zip(&self.varyings).for_each(|(o, &v)| *o = v),
+                );
+            },
+        );
     }
 
     /// Renders the part of the point inside `area` (within the band) into `band`.

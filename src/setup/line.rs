@@ -88,6 +88,14 @@ impl LinePlane {
 }
 
 impl LineGradient {
+    /// The gradient of the projection onto the segment `p1`–`p2` (y-down window
+    /// coordinates; not both equal): attributes vary along the line itself, as llvmpipe
+    /// interpolates the rectangles of lines on a multisampled target.
+    pub fn along(p1: [f32; 2], p2: [f32; 2]) -> LineGradient {
+        let (dx, dy) = (p1[0] - p2[0], p1[1] - p2[1]);
+        LineGradient { dx, dy, inv_length2: 1.0 / (dx * dx + dy * dy), origin: [p1[0] - 0.5, p1[1] - 0.5] }
+    }
+
     /// The plane of an attribute worth `a1` at the first endpoint and `a2` at the second.
     pub fn plane(&self, a1: f32, a2: f32) -> LinePlane {
         let da = a1 - a2;
