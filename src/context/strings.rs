@@ -29,7 +29,7 @@ pub const VERSION: &str = concat!("1.5 tessera ", env!("CARGO_PKG_VERSION"), "\0
 // | 1.2     | Imaging subset                                   | optional, absent (no GL_ARB_imaging) | |
 // | 1.3     | Compressed texture entry points                  | works, no formats (GL_NUM_COMPRESSED_TEXTURE_FORMATS = 0) | api/gl_texture.rs |
 // | 1.3     | Cube map textures                                | works  | capi texture_texgen_shadow |
-// | 1.3     | Multisample state (GL_MULTISAMPLE, SAMPLE_*)     | state works, 0 sample buffers; glSampleCoverage comes with the msaa branch | context/capabilities.rs |
+// | 1.3     | Multisample state (GL_MULTISAMPLE, SAMPLE_*)     | works (2/4/8 samples: multisampled GLX configs and renderbuffers) | context/multisample.rs; capi msaa_resolve, glx multisample.c |
 // | 1.3     | Multitexture (4 units)                           | works  | capi texture_env |
 // | 1.3     | Env modes ADD, COMBINE, DOT3                     | works  | texture/env.rs; capi texture_env, piglit gl-1.3-texture-env |
 // | 1.3     | GL_CLAMP_TO_BORDER                               | works  | texture/sampler.rs |
@@ -59,7 +59,7 @@ pub const VERSION: &str = concat!("1.5 tessera ", env!("CARGO_PKG_VERSION"), "\0
 /// Extensions whose every entry point and enum works, each checked against the code (and
 /// by the piglit tests named in tests/piglit/expected.txt). Left out although close:
 /// GL_EXT_draw_buffers2 (glGetBooleanIndexedvEXT/glGetIntegerIndexedvEXT do not exist),
-/// GL_ARB_multisample (glSampleCoverageARB: the msaa branch), GL_MESA_window_pos
+/// GL_MESA_window_pos
 /// (glWindowPos4*MESA do not exist), GL_EXT_texture_object and GL_EXT_copy_texture (their
 /// EXT entry points do not exist), GL_EXT_texture_env_dot3 (its enums differ from the ARB
 /// ones tessera implements), GL_EXT_abgr (GL_ABGR_EXT is not a pixel format here).
@@ -68,6 +68,7 @@ pub const EXTENSIONS: &[&str] = &[
     "GL_ARB_depth_texture",
     "GL_ARB_draw_buffers",
     "GL_ARB_draw_buffers_blend",
+    "GL_ARB_multisample",
     "GL_ARB_multitexture",
     "GL_ARB_occlusion_query",
     "GL_ARB_framebuffer_object",
