@@ -56,8 +56,8 @@ impl Context {
 mod tests {
     use super::*;
     use crate::api::enums::*;
-    use crate::framebuffer::{ColorFormat, ColorSlot, DepthStencilFormat, Drawable, Framebuffer, FramebufferConfig};
     use crate::context::draw::tests::vertex;
+    use crate::framebuffer::{ColorFormat, ColorSlot, DepthStencilFormat, Drawable, Framebuffer, FramebufferConfig};
     use std::sync::{Arc, Mutex};
 
     /// A context drawing into a `samples`-sample 8×4 framebuffer with window coordinates as
