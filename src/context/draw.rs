@@ -104,33 +104,54 @@ struct LineStipple {
     counter: i32,
 }
 
-/// A scalar vertex attribute that a draw's later stages read per fragment.
+/// A scalar vertex attribute that a draw's later stages read per fragment: a channel of the
+/// secondary color (GL_COLOR_SUM), the fog coordinate (GL_FOG), or a component of a unit's
+/// texture coordinates (the unit has a texture target enabled).
+///
+/// Plain numbers rather than an enum with payloads, so that every byte of a list of them is
+/// initialised: valgrind's memcheck (tools/memcheck.sh) flags the optimised code's reads of
+/// the payload bytes another variant leaves undefined.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) enum Attribute {
-    /// A channel of the secondary color (GL_COLOR_SUM).
-    SecondaryColor(usize),
-    /// The fog coordinate (GL_FOG).
+pub(crate) struct Attribute {
+    kind: AttributeKind,
+    unit: u8,
+    component: u8,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum AttributeKind {
+    SecondaryColor,
     FogCoord,
-    /// A component of a unit's texture coordinates (the unit has a texture target enabled).
-    TexCoord(usize, usize),
+    TexCoord,
 }
 
 impl Attribute {
-    fn of(self, v: &WindowVertex) -> f32 {
-        match self {
-            Attribute::SecondaryColor(c) => v.secondary_color[c],
-            Attribute::FogCoord => v.fog_coord,
-            Attribute::TexCoord(unit, c) => v.tex_coords[unit][c],
+    pub(crate) const FOG_COORD: Attribute = Attribute { kind: AttributeKind::FogCoord, unit: 0, component: 0 };
+
+    pub(crate) fn secondary_color(component: usize) -> Attribute {
+        Attribute { kind: AttributeKind::SecondaryColor, unit: 0, component: component as u8 }
+    }
+
+    pub(crate) fn tex_coord(unit: usize, component: usize) -> Attribute {
+        Attribute { kind: AttributeKind::TexCoord, unit: unit as u8, component: component as u8 }
+    }
+
+    /// This attribute among a vertex's secondary color, fog coordinate and texture coordinates.
+    pub(crate) fn pick(self, secondary_color: &[f32; 4], fog_coord: f32, tex_coords: &[[f32; 4]]) -> f32 {
+        match self.kind {
+            AttributeKind::SecondaryColor => secondary_color[self.component as usize],
+            AttributeKind::FogCoord => fog_coord,
+            AttributeKind::TexCoord => tex_coords[self.unit as usize][self.component as usize],
         }
+    }
+
+    fn of(self, v: &WindowVertex) -> f32 {
+        self.pick(&v.secondary_color, v.fog_coord, &v.tex_coords)
     }
 
     /// The attribute at a line or point vertex.
     fn of_line(self, v: &LineVertex) -> f32 {
-        match self {
-            Attribute::SecondaryColor(c) => v.secondary_color[c],
-            Attribute::FogCoord => v.fog_coord,
-            Attribute::TexCoord(unit, c) => v.tex_coords[unit][c],
-        }
+        self.pick(&v.secondary_color, v.fog_coord, &v.tex_coords)
     }
 }
 
@@ -390,13 +411,13 @@ impl Context {
     pub(super) fn varyings_needed(&self) -> Vec<Attribute> {
         let mut needed = Vec::new();
         if self.color_sum_active() {
-            needed.extend((0..3).map(Attribute::SecondaryColor));
+            needed.extend((0..3).map(Attribute::secondary_color));
         }
         if self.state.fog.enabled {
-            needed.push(Attribute::FogCoord);
+            needed.push(Attribute::FOG_COORD);
         }
         for (unit, _) in self.enabled_texture_units() {
-            needed.extend((0..4).map(|c| Attribute::TexCoord(unit, c)));
+            needed.extend((0..4).map(|c| Attribute::tex_coord(unit, c)));
         }
         needed
     }

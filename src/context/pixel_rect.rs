@@ -25,7 +25,6 @@
 //! GL_COLOR_INDEX (RGBA mode): indices shifted and offset, through I_TO_I under
 //! GL_MAP_COLOR, then through the I_TO_[RGBA] maps to colors (Mesa 22 matches without
 //! shift, offset or GL_MAP_COLOR, which it ignores for this format).
-use super::draw::Attribute;
 use super::read_pixels::{check_format_and_type, read_format, ReadFormat};
 use super::selection::FeedbackVertex;
 use super::state::PixelTransfer;
@@ -192,11 +191,7 @@ impl Context {
             z: raster.window[2],
             varyings: needed
                 .iter()
-                .map(|a| match *a {
-                    Attribute::SecondaryColor(c) => raster.secondary_color[c],
-                    Attribute::FogCoord => raster.distance,
-                    Attribute::TexCoord(unit, c) => raster.tex_coords[unit][c],
-                })
+                .map(|a| a.pick(&raster.secondary_color, raster.distance, &raster.tex_coords))
                 .collect(),
             source,
         });
