@@ -479,7 +479,42 @@ impl Context {
         // Pixels outside the read buffer are undefined in GL; they read as zero, as in Mesa 22
         // (llvmpipe draws zero colors, depths and stencil indices for them: capi
         // pixel_depth_stencil).
-        let Some(len) = (width as usize).checked_mul(height as usize).and_then(|n| n.checked_mul(pixel_bytes)) else {
+        //
+        // Memory stays bounded for hostile sizes: at a zoom of ±1 only the source columns and
+        // rows whose destination lies in the draw framebuffer are copied (the raster position
+        // moves by the whole pixels cut off, so every fragment lands where it would have), and
+        // a copy needing more than COPY_LIMIT_BYTES of staging is GL_OUT_OF_MEMORY.
+        let (mut x, mut y, mut width, mut height) = (x, y, width, height);
+        let raster = self.state.current.raster;
+        let zoom = self.state.pixel_mode.zoom;
+        // (Without a complete draw framebuffer nothing is cut: the draw reports what is wrong.)
+        let draw_size = self.framebuffer_shape(true).map(|(w, h, _)| (w as i64, h as i64));
+        let origin = raster.window.map(|c| (c as f64 + 0.5).floor());
+        let mut shift = [0f64; 2];
+        let limits = draw_size.map(|(w, h)| [w, h]);
+        for (axis, (start, size)) in [(&mut x, &mut width), (&mut y, &mut height)].into_iter().enumerate() {
+            let z = zoom[axis];
+            let Some(limit) = limits.map(|l| l[axis]) else { continue };
+            if (z != 1.0 && z != -1.0) || !origin[axis].is_finite() {
+                continue;
+            }
+            // Destination pixel of source offset i: origin + i (zoom 1) or origin - 1 - i (zoom -1).
+            let o = origin[axis].clamp(-(1i64 << 40) as f64, (1i64 << 40) as f64) as i64;
+            let (first, last) = if z > 0.0 { (-o, limit - 1 - o) } else { (o - limit, o - 1) };
+            let first = first.clamp(0, *size as i64);
+            let last = last.clamp(-1, *size as i64 - 1);
+            if last < first {
+                return;
+            }
+            shift[axis] = first as f64 * z as f64;
+            *start = (*start as i64 + first).clamp(i32::MIN as i64, i32::MAX as i64) as i32;
+            *size = (last - first + 1) as i32;
+        }
+        let Some(len) = (width as usize)
+            .checked_mul(height as usize)
+            .and_then(|n| n.checked_mul(pixel_bytes))
+            .filter(|&n| n <= COPY_LIMIT_BYTES)
+        else {
             return self.error(GL_OUT_OF_MEMORY);
         };
         let mut bytes = Vec::new();
@@ -507,9 +542,21 @@ impl Context {
         let saved = std::mem::replace(&mut self.pixel_store.unpack, tight);
         let data = self.unpack_draw_pixels(width, height, format, read_type, |span| bytes.get(span));
         self.pixel_store.unpack = saved;
+        drop(bytes);
+        let saved_window = self.state.current.raster.window;
+        self.state.current.raster.window[0] += shift[0] as f32;
+        self.state.current.raster.window[1] += shift[1] as f32;
         self.draw_pixels(width, height, &data);
+        self.state.current.raster.window = saved_window;
+        if len > crate::raster::Scene::BUDGET_BYTES {
+            // A large image is rendered now rather than held until the next flush point.
+            self.flush_rendering();
+        }
     }
 }
+
+/// The most staging memory one glCopyPixels may take (GL_OUT_OF_MEMORY above it).
+const COPY_LIMIT_BYTES: usize = 1 << 30;
 
 impl Context {
     /// glPixelTransfer.
