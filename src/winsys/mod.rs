@@ -4,6 +4,7 @@
 pub mod glx;
 pub mod glx_config;
 pub mod glx_error;
+pub mod notice;
 pub mod osmesa;
 pub mod xfont;
 mod xshm;
