@@ -1,7 +1,7 @@
 //! Build script of the tessera crate.
 //!
-//! 1. Generates `include/GL/tessera.h` with cbindgen from the exported items of `src/api`:
-//!    every `gl*`/`OSMesa*` prototype and every enum value. Each `#define` is wrapped so the
+//! 1. Generates `include/GL/tessera.h` with cbindgen from the exported items of `src/api`
+//!    (every `gl*`/`OSMesa*` prototype) and `src/gl/enums.rs` (every enum value). Each `#define` is wrapped so the
 //!    header composes with the system's GL headers and fails the build (`#error`) if a value
 //!    differs from theirs; prototypes that differ fail as conflicting declarations.
 //! 2. Generates the name → function table behind OSMesaGetProcAddress/glXGetProcAddress from
@@ -45,6 +45,7 @@ fn main() {
     let root = PathBuf::from(std::env::var("CARGO_MANIFEST_DIR").expect("cargo sets CARGO_MANIFEST_DIR"));
     let api = root.join("src/api");
     println!("cargo:rerun-if-changed=src/api");
+    println!("cargo:rerun-if-changed=src/gl");
     println!("cargo:rerun-if-changed=cbindgen.toml");
     println!("cargo:rerun-if-changed=build.rs");
 
@@ -118,6 +119,7 @@ fn generate_header(root: &Path, api: &Path) {
     let config = cbindgen::Config::from_file(root.join("cbindgen.toml")).expect("valid cbindgen.toml");
     let bindings = cbindgen::Builder::new()
         .with_config(config)
+        .with_src(root.join("src/gl/enums.rs"))
         .with_src(api.join("mod.rs"))
         .with_after_include(TYPEDEFS)
         .generate()

@@ -12,6 +12,7 @@ pub mod api;
 pub mod context;
 pub mod fragment;
 pub mod framebuffer;
+pub mod gl;
 pub mod pixel;
 pub mod raster;
 pub mod setup;

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""One-off generator for src/api/enums.rs.
+"""One-off generator for src/gl/enums.rs.
 
 GL enum values are interface facts fixed by the Khronos registry; this script reads the
 names and values of the GL 1.0-2.1 core sections (and the extension names listed in EXTRA)

@@ -16,7 +16,7 @@
 //! spec allows. A violation panics, which libFuzzer reports as a finding.
 
 use std::ffi::{c_void, CString};
-use tessera::api::enums::*;
+use tessera::gl::enums::*;
 use tessera::api::gl_arrays as arrays;
 use tessera::api::gl_buffer_objects as buffers;
 use tessera::api::gl_evaluators as evaluators;
@@ -25,7 +25,7 @@ use tessera::api::gl_raster_state as raster;
 use tessera::api::gl_state as state;
 use tessera::api::gl_vertex as vertex;
 use tessera::api::osmesa::*;
-use tessera::api::types::OSMesaContext;
+use tessera::gl::types::OSMesaContext;
 
 include!(concat!(env!("OUT_DIR"), "/generated.rs"));
 

@@ -1,8 +1,8 @@
 //! Entry points that are other names of existing ones, added so that an extension tessera
 //! advertises has every entry point (GL_ATI_separate_stencil, GL_EXT_texture3D,
 //! GL_ARB_texture_compression).
-use super::types::*;
 use super::with_context;
+use crate::gl::types::*;
 
 /// GL_ATI_separate_stencil's name of glStencilOpSeparate (same arguments and rules).
 #[no_mangle]

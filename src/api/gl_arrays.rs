@@ -6,8 +6,8 @@
 //!
 //! Array pointers are recorded as addresses. Client memory is read only through
 //! [`CallerMemory`], for the byte ranges the context computed from the draw's indices.
-use super::types::*;
 use super::with_context;
+use crate::gl::types::*;
 use crate::vertex::arrays::ClientMemory;
 
 /// The caller's memory, as GL's contract for client arrays and index arrays promises it.

@@ -1,6 +1,6 @@
 //! Entry points for buffer objects (GL 1.5) and their ARB_vertex_buffer_object aliases.
-use super::types::*;
 use super::{guard, with_context};
+use crate::gl::types::*;
 
 /// # Safety
 /// `buffers` must have room for `n` names.

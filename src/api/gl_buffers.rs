@@ -1,7 +1,7 @@
 //! Entry points for clears, write masks, draw/read buffers, scissor, viewport and glAccum.
-use super::enums::*;
 use super::record_or_run;
-use super::types::*;
+use crate::gl::enums::*;
+use crate::gl::types::*;
 
 #[no_mangle]
 pub extern "C" fn glClear(mask: GLbitfield) {
@@ -102,7 +102,7 @@ pub extern "C" fn glDrawBuffer(mode: GLenum) {
 /// `bufs` must point to `n` GLenums (it is not read when `n` is negative or too large).
 #[no_mangle]
 pub unsafe extern "C" fn glDrawBuffers(n: GLsizei, bufs: *const GLenum) {
-    let list: Option<Vec<GLenum>> = if n < 0 || n as usize > crate::context::state::MAX_DRAW_BUFFERS {
+    let list: Option<Vec<GLenum>> = if n < 0 || n as usize > crate::gl::limits::MAX_DRAW_BUFFERS {
         None
     } else if n == 0 {
         Some(Vec::new())

@@ -6,9 +6,9 @@
 //! valid: otherwise nothing is read and the context reports the error. Every command but
 //! glGetMap is compiled into display lists. Double-precision arguments become floats, as
 //! Mesa keeps them.
-use super::types::*;
 use super::{record_or_run, with_context};
 use crate::context::evaluators::readable_map;
+use crate::gl::types::*;
 use crate::vertex::bezier::Point;
 
 /// The control points of a map at `points`: `orders[0] × orders[1]` points of `components`

@@ -1,8 +1,8 @@
 //! Entry points for the per-fragment operations' state: alpha test, stencil, blending, logic
 //! op and fog (glDepthFunc, glStencilMask and the masks live with the buffers).
 use super::record_or_run;
-use super::types::*;
 use crate::context::Context;
+use crate::gl::types::*;
 
 #[no_mangle]
 pub extern "C" fn glAlphaFunc(func: GLenum, ref_: GLclampf) {
@@ -163,7 +163,7 @@ pub extern "C" fn glFogi(pname: GLenum, param: GLint) {
 
 /// The number of values glFog*v reads for `pname`: four for the color, else one.
 fn fog_param_count(pname: GLenum) -> usize {
-    if pname == crate::api::enums::GL_FOG_COLOR {
+    if pname == crate::gl::enums::GL_FOG_COLOR {
         4
     } else {
         1

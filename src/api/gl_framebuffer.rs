@@ -1,7 +1,7 @@
 //! Entry points of framebuffer and renderbuffer objects (ARB_framebuffer_object, with the
 //! EXT_framebuffer_object, EXT_framebuffer_blit and EXT_framebuffer_multisample names).
-use super::types::*;
 use super::{guard, with_context};
+use crate::gl::types::*;
 
 /// Copies `names` to the caller's array.
 ///

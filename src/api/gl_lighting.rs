@@ -1,10 +1,10 @@
 //! Entry points for lights, the light model, materials and color material.
-use super::types::*;
 use super::{guard, record_or_run};
 use crate::context::lighting::{
     int_params_to_float, light_model_param_count, light_param_count, material_param_count, values_to_integers,
 };
 use crate::context::Context;
+use crate::gl::types::*;
 
 /// Reads the `count` values a parameter pointer holds; `None` for NULL.
 ///

@@ -4,10 +4,10 @@
 //! glCallList, glCallLists and glListBase are themselves compiled into lists; glCallLists
 //! copies its names when it is issued and adds the list base when it runs. The others always
 //! execute (GL 2.1 section 5.4).
-use super::enums::*;
-use super::types::*;
 use super::{record_or_run, with_context};
 use crate::context::lists::{call_lists_type_size, decode_call_lists};
+use crate::gl::enums::*;
+use crate::gl::types::*;
 
 #[no_mangle]
 pub extern "C" fn glNewList(list: GLuint, mode: GLenum) {

@@ -1,8 +1,8 @@
 //! Entry points of the raster position and pixel rectangles: glRasterPos*, glWindowPos*,
 //! glBitmap, glDrawPixels, glCopyPixels, glPixelZoom. All are compiled into display lists; glBitmap and
 //! glDrawPixels read their image (under the unpack modes) when issued.
-use super::types::*;
 use super::{record_or_run, with_context};
+use crate::gl::types::*;
 use crate::vertex::components::Component;
 
 /// The `N` values a C array starts with; `None` for NULL.
@@ -651,7 +651,7 @@ unsafe fn write_map<T>(map: GLenum, values: *mut T, convert: impl Fn(f32, bool) 
             if values.is_null() {
                 return;
             }
-            let color = !matches!(map, super::enums::GL_PIXEL_MAP_I_TO_I | super::enums::GL_PIXEL_MAP_S_TO_S);
+            let color = !matches!(map, crate::gl::enums::GL_PIXEL_MAP_I_TO_I | crate::gl::enums::GL_PIXEL_MAP_S_TO_S);
             for (i, &v) in table.iter().enumerate() {
                 // SAFETY: the caller provides room for the whole table.
                 unsafe { values.add(i).write_unaligned(convert(v, color)) }

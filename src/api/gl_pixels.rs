@@ -1,6 +1,6 @@
 //! Entry points for glReadPixels and glPixelStore.
-use super::types::*;
 use super::with_context;
+use crate::gl::types::*;
 
 /// # Safety
 /// `pixels` must point to client memory laid out as the pack parameters describe for a

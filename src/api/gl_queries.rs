@@ -1,8 +1,8 @@
 //! Occlusion query entry points (GL 1.5 and ARB_occlusion_query). glBeginQuery and
 //! glEndQuery are compiled into display lists; the others always execute.
-use super::enums::*;
-use super::types::*;
 use super::{record_or_run, with_context};
+use crate::gl::enums::*;
+use crate::gl::types::*;
 
 /// # Safety
 /// `ids` must have room for `n` names.

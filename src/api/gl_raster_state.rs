@@ -1,8 +1,8 @@
 //! Entry points for the rasterization state: shading, faces, polygon modes and offset, lines,
 //! points and the polygon stipple.
-use super::types::*;
 use super::{record_or_run, with_context};
 use crate::context::Context;
+use crate::gl::types::*;
 
 #[no_mangle]
 pub extern "C" fn glShadeModel(mode: GLenum) {

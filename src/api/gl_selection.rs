@@ -1,8 +1,8 @@
 //! Selection and feedback entry points: glRenderMode, glSelectBuffer, the name stack,
 //! glFeedbackBuffer and glPassThrough. The name stack commands and glPassThrough are compiled
 //! into display lists; glRenderMode, glSelectBuffer and glFeedbackBuffer always execute.
-use super::types::*;
 use super::{record_or_run, with_context};
+use crate::gl::types::*;
 
 /// Copies the hit records to the caller's select buffer.
 fn copy_records(address: usize, words: &[u32]) {

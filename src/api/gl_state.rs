@@ -1,6 +1,6 @@
 //! Entry points for capabilities, errors, queries, hints, attribute stacks and flushing.
-use super::types::*;
 use super::{guard, record_or_run, with_context};
+use crate::gl::types::*;
 
 #[no_mangle]
 pub extern "C" fn glEnable(cap: GLenum) {

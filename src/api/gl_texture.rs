@@ -1,9 +1,9 @@
 //! Entry points for textures: objects, images, parameters, the texture environment and
 //! texture coordinate generation. Compressed images are refused (no compressed format is
 //! supported or advertised).
-use super::types::*;
 use super::{guard, record_or_run, with_context};
 use crate::context::texture::{ImageArgs, Region};
+use crate::gl::types::*;
 use std::ops::Range;
 
 /// `n` elements at `ptr`, or none for NULL or a non-positive count.
@@ -414,7 +414,7 @@ pub extern "C" fn glTexParameteri(target: GLenum, pname: GLenum, param: GLint) {
 
 /// How many values a texture or environment parameter takes.
 fn count(pname: GLenum) -> GLsizei {
-    use super::enums::*;
+    use crate::gl::enums::*;
     if pname == GL_TEXTURE_BORDER_COLOR || pname == GL_TEXTURE_ENV_COLOR {
         4
     } else {
@@ -545,7 +545,7 @@ pub extern "C" fn glTexGeni(coord: GLenum, pname: GLenum, param: GLint) {
 
 /// Values a texgen parameter takes.
 fn gen_count(pname: GLenum) -> GLsizei {
-    if pname == super::enums::GL_TEXTURE_GEN_MODE {
+    if pname == crate::gl::enums::GL_TEXTURE_GEN_MODE {
         1
     } else {
         4
@@ -613,7 +613,7 @@ pub unsafe extern "C" fn glGetTexGeniv(coord: GLenum, pname: GLenum, params: *mu
 fn refuse_compressed() {
     with_context((), |ctx| {
         if ctx.check_outside_begin_end() {
-            ctx.error(super::enums::GL_INVALID_ENUM)
+            ctx.error(crate::gl::enums::GL_INVALID_ENUM)
         }
     })
 }
@@ -716,7 +716,7 @@ pub extern "C" fn glCompressedTexSubImage3D(
 pub extern "C" fn glGetCompressedTexImage(_target: GLenum, _level: GLint, _img: *mut GLvoid) {
     with_context((), |ctx| {
         if ctx.check_outside_begin_end() {
-            ctx.error(super::enums::GL_INVALID_OPERATION)
+            ctx.error(crate::gl::enums::GL_INVALID_OPERATION)
         }
     })
 }

@@ -1,6 +1,6 @@
 //! Entry points for matrices, glActiveTexture and user clip planes.
-use super::types::*;
 use super::{record_or_run, with_context};
+use crate::gl::types::*;
 
 /// Reads the 16 elements a matrix pointer names; `None` for NULL.
 ///

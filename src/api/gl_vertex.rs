@@ -8,7 +8,7 @@
 //! Extension aliases (`EXT`, `ARB`) call the core function. The variants differ only in types
 //! and counts; they are written out one by one because cbindgen and build.rs read them.
 use super::record_or_run;
-use super::types::*;
+use crate::gl::types::*;
 use crate::vertex::components::Component;
 
 /// The `N` values a C array starts with; `None` for NULL.

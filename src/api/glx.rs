@@ -16,8 +16,8 @@
 // where `unsigned long` is 64 bits.
 #![allow(clippy::unnecessary_cast)]
 use super::guard;
-use super::types::*;
 use crate::context::strings;
+use crate::gl::types::*;
 use crate::winsys::glx::{self as glx, DisplayAddr, DrawableKind, MakeCurrentError};
 use crate::winsys::glx_config::*;
 use crate::winsys::glx_error::{self as xerr, request, GlxError};
@@ -662,7 +662,7 @@ pub unsafe extern "C" fn glXCreatePbuffer(dpy: *mut Display, config: GLXFBConfig
                 _ => {}
             }
         }
-        let max = crate::context::state::MAX_VIEWPORT_DIM;
+        let max = crate::gl::limits::MAX_VIEWPORT_DIM;
         if !(0..=max).contains(&width) || !(0..=max).contains(&height) {
             report(dpy, xerr::BAD_ALLOC, 0, MINOR);
             return 0;
@@ -776,11 +776,11 @@ pub extern "C" fn glXWaitX() {
 /// GLX 1.4 §3.3.10 says. Needs a current context (on the context's display).
 #[no_mangle]
 pub extern "C" fn glXUseXFont(font: c_ulong, first: c_int, count: c_int, listBase: c_int) {
-    use super::enums::*;
     use super::gl_lists::{glEndList, glNewList};
     use super::gl_pixel_rect::glBitmap;
     use super::gl_pixels::glPixelStorei;
     use super::gl_state::glGetIntegerv;
+    use crate::gl::enums::*;
     guard((), || {
         let display = glXGetCurrentDisplay();
         let Some(glyphs) = crate::winsys::xfont::glyphs(display as usize, font as u64, first, count) else {

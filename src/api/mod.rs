@@ -11,7 +11,6 @@
 // Entry points keep the C names of the GL headers, parameters included.
 #![allow(non_snake_case)]
 
-pub mod enums;
 pub mod gl_aliases;
 pub mod gl_arrays;
 pub mod gl_buffer_objects;
@@ -36,7 +35,6 @@ pub mod glx;
 pub mod osmesa;
 pub mod procs;
 pub mod tessera_ext;
-pub mod types;
 
 #[cfg(test)]
 mod panic_injection;

@@ -2,10 +2,10 @@
 //!
 //! Handles given to C are identifiers looked up in the registry of `winsys::osmesa`, never
 //! dereferenced, so a NULL, stale or foreign handle is refused instead of crashing.
-use super::enums::*;
 use super::guard;
-use super::types::*;
 use crate::framebuffer::external::CallerBuffer;
+use crate::gl::enums::*;
+use crate::gl::types::*;
 use crate::winsys::osmesa::{self as osm, BindFailure, PixelLayout, Request};
 use std::ffi::{c_char, c_int, c_uint, c_void, CStr};
 
@@ -197,7 +197,7 @@ pub unsafe extern "C" fn OSMesaGetIntegerv(pname: GLint, value: *mut GLint) {
             OSMESA_TYPE => ty as GLint,
             OSMESA_ROW_LENGTH => row_length as GLint,
             OSMESA_Y_UP => y_up as GLint,
-            OSMESA_MAX_WIDTH | OSMESA_MAX_HEIGHT => crate::context::state::MAX_VIEWPORT_DIM,
+            OSMESA_MAX_WIDTH | OSMESA_MAX_HEIGHT => crate::gl::limits::MAX_VIEWPORT_DIM,
             _ => {
                 record_error(GL_INVALID_ENUM);
                 return None;

@@ -39,13 +39,13 @@ pub fn maybe_panic(here: Where) {
 mod tests {
     use super::*;
     use crate::api::caught_panics;
-    use crate::api::enums::*;
     use crate::api::gl_buffers::*;
     use crate::api::gl_pixels::*;
     use crate::api::gl_state::*;
     use crate::api::gl_vertex::*;
     use crate::api::osmesa::*;
-    use crate::api::types::OSMesaContext;
+    use crate::gl::enums::*;
+    use crate::gl::types::OSMesaContext;
     use std::ffi::c_void;
 
     const W: i32 = 4;

@@ -1,9 +1,9 @@
 //! tessera's own entry points (not in any system header): the accuracy mode of the current
 //! context (see `raster::accuracy` and the README's "Accuracy modes"). The mode codes are
 //! literals so that cbindgen writes them into `GL/tessera.h`.
-use super::enums::*;
-use super::types::*;
 use super::with_context;
+use crate::gl::enums::*;
+use crate::gl::types::*;
 use crate::raster::accuracy::Accuracy;
 
 /// Perspective-correct f32 interpolation; the default, compared with Mesa by the tests.

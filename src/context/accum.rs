@@ -15,10 +15,10 @@
 //! Still to do when the rest exists: glAccum is a flush point for deferred rendering (it
 //! reads and writes resolved pixels), and Mesa ignores it outside glRenderMode(GL_RENDER).
 use super::Context;
-use crate::api::enums::*;
-use crate::api::types::GLenum;
 use crate::framebuffer::surface::accum_clear_value;
 use crate::framebuffer::{AccumBuffer, Rect};
+use crate::gl::enums::*;
+use crate::gl::types::GLenum;
 
 /// Clears `rect` of the accumulation buffer to `value` (each in [-1, 1]).
 pub fn clear(accum: &mut AccumBuffer, rect: Rect, value: [f32; 4]) {

@@ -23,8 +23,9 @@
 use super::capabilities::{self, CAPABILITIES};
 use super::state::*;
 use super::Context;
-use crate::api::enums::*;
-use crate::api::types::GLenum;
+use crate::gl::enums::*;
+use crate::gl::limits::*;
+use crate::gl::types::GLenum;
 
 /// GL_ENABLE_BIT: every capability's flag.
 #[derive(Clone, Debug, PartialEq)]
@@ -273,6 +274,7 @@ mod tests {
     use super::*;
     use crate::context::ContextConfig;
     use crate::framebuffer::{ColorFormat, DepthStencilFormat, FramebufferConfig};
+    use crate::gl::CompareFunc;
 
     fn context() -> Context {
         let depth_stencil = DepthStencilFormat::Packed24 { depth: true, stencil: true };

@@ -3,11 +3,11 @@
 //! GL names color buffers with enums that may denote several buffers at once (GL_FRONT is
 //! front-left and front-right); [`slots_of`] expands them to the framebuffer's
 //! [`ColorSlot`]s and everything else works on slots.
-use super::state::{MAX_DRAW_BUFFERS, MAX_VIEWPORT_DIM};
 use super::Context;
-use crate::api::enums::*;
-use crate::api::types::GLenum;
 use crate::framebuffer::{ColorSlot, FramebufferConfig, Rect};
+use crate::gl::enums::*;
+use crate::gl::limits::{MAX_DRAW_BUFFERS, MAX_VIEWPORT_DIM};
+use crate::gl::types::GLenum;
 
 /// Aux buffer enums accepted as names (GL_AUX0..GL_AUX3); existence is checked separately.
 const MAX_AUX_ENUMS: u32 = 4;

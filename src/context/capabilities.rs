@@ -3,10 +3,11 @@
 //!
 //! One table ([`flag`]) maps a capability to its field, so enable, disable, query and the
 //! GL_ENABLE_BIT attribute group can never disagree about the set of capabilities.
-use super::state::{State, MAX_DRAW_BUFFERS};
+use super::state::State;
 use super::Context;
-use crate::api::enums::*;
-use crate::api::types::{GLboolean, GLenum};
+use crate::gl::enums::*;
+use crate::gl::limits::MAX_DRAW_BUFFERS;
+use crate::gl::types::{GLboolean, GLenum};
 
 /// Every capability accepted by glEnable (GL 2.1 compatibility profile plus the
 /// extensions tessera exposes), in the order GL_ENABLE_BIT saves them.

@@ -24,11 +24,12 @@
 mod select;
 
 use super::{debug, Context};
-use crate::api::enums::*;
-use crate::api::types::GLenum;
-use crate::context::state::{LinePointState, MAX_LINE_WIDTH, MAX_POINT_SIZE};
+use crate::context::state::LinePointState;
 use crate::fragment::{DepthTest, FragmentState};
 use crate::framebuffer::{ColorFormat, Rect};
+use crate::gl::enums::*;
+use crate::gl::limits::{MAX_LINE_WIDTH, MAX_POINT_SIZE};
+use crate::gl::types::GLenum;
 use crate::raster::accuracy::Accuracy;
 use crate::raster::line::{LineJob, LineVertex};
 use crate::raster::point::PointJob;
@@ -1319,8 +1320,8 @@ fn polygon_offset(w: &[WindowVertex; 3], factor: f32, units: f32, depth_bits: u3
 #[cfg(test)]
 pub(super) mod tests {
     use super::*;
-    use crate::context::state::CompareFunc;
     use crate::framebuffer::{ColorFormat, ColorSlot, DepthStencilFormat, Drawable, FramebufferConfig};
+    use crate::gl::CompareFunc;
     use std::sync::{Arc, Mutex};
 
     fn context(w: usize, h: usize) -> (Context, Arc<Mutex<Drawable>>) {

@@ -25,8 +25,8 @@
 //!   GL_INVALID_OPERATION, and a NULL `points` GL_INVALID_VALUE, as in Mesa.
 use super::get::Value;
 use super::Context;
-use crate::api::enums::*;
-use crate::api::types::GLenum;
+use crate::gl::enums::*;
+use crate::gl::types::GLenum;
 use crate::vertex::bezier::{self, Point, MAX_EVAL_ORDER};
 use crate::vertex::immediate::vertex_from_current;
 

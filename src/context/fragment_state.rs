@@ -13,16 +13,18 @@
 //!
 //! Colors (alpha reference, blend color, fog color) are stored as given and clamped where
 //! they are used or queried, because fragment color clamping may be off (ARB_color_buffer_float).
-use super::state::{CompareFunc, StencilFace, StencilState, MAX_DRAW_BUFFERS};
+use super::state::{StencilFace, StencilState};
 use super::Context;
-use crate::api::enums::*;
-use crate::api::types::GLenum;
 use crate::fragment::blend::{Blend, BlendEquation, BlendFactor, BlendFunc};
 use crate::fragment::fog::{Fog, FogMode};
 use crate::fragment::logic_op::LogicOp;
 use crate::fragment::stencil::{StencilFace as CompiledStencilFace, StencilOp};
 use crate::fragment::{AlphaTest, FragmentState, StencilTest};
 use crate::framebuffer::ColorFormat;
+use crate::gl::enums::*;
+use crate::gl::limits::MAX_DRAW_BUFFERS;
+use crate::gl::types::GLenum;
+use crate::gl::CompareFunc;
 
 /// Whether `factor` is a legal GL 2.1 blend factor, as source (`source`) or destination.
 pub fn is_blend_factor(factor: GLenum, source: bool) -> bool {

@@ -36,11 +36,8 @@
 //! (sample rows), and a framebuffer object of multisampled attachments is assembled into a
 //! multisampled [`Framebuffer`] ([`Framebuffer::from_sample_layers`]) without resolved
 //! layers: reading it needs a glBlitFramebuffer resolve, as the specification says.
-use super::state::MAX_DRAW_BUFFERS;
 use super::texture::TARGETS;
 use super::Context;
-use crate::api::enums::*;
-use crate::api::types::GLenum;
 use crate::framebuffer::blit::{self, BlitAxis, ColorSource, DepthStencilSource};
 use crate::framebuffer::layers::{color_buffer, depth_stencil_buffer};
 use crate::framebuffer::multisample::{resolve_color, resolve_depth_stencil, supported_samples};
@@ -48,6 +45,9 @@ use crate::framebuffer::surface::{ColorPixels, DepthStencilPixels};
 use crate::framebuffer::{
     ColorBuffer, ColorFormat, ColorSlot, DepthStencilBuffer, DepthStencilFormat, Framebuffer, FramebufferConfig, Rect,
 };
+use crate::gl::enums::*;
+use crate::gl::limits::MAX_DRAW_BUFFERS;
+use crate::gl::types::GLenum;
 use crate::texture::{BaseFormat, TexImage, Texels};
 use std::collections::{HashMap, HashSet};
 use std::sync::Arc;

@@ -31,13 +31,13 @@
 use super::capabilities;
 use super::matrix::{transpose, MatrixStacks, StackId};
 use super::raster_state::{LINE_WIDTH_GRANULARITY, LINE_WIDTH_RANGE, POINT_SIZE_GRANULARITY, POINT_SIZE_RANGE};
-use super::state::{
-    StencilFace, MAX_ATTRIB_STACK_DEPTH, MAX_CLIP_PLANES, MAX_DRAW_BUFFERS, MAX_LIGHTS, MAX_TEXTURE_UNITS,
-    MAX_VIEWPORT_DIM,
-};
+use super::state::StencilFace;
 use super::Context;
-use crate::api::enums::*;
-use crate::api::types::*;
+use crate::gl::enums::*;
+use crate::gl::limits::{
+    MAX_ATTRIB_STACK_DEPTH, MAX_CLIP_PLANES, MAX_DRAW_BUFFERS, MAX_LIGHTS, MAX_TEXTURE_UNITS, MAX_VIEWPORT_DIM,
+};
+use crate::gl::types::*;
 
 /// Bits of subpixel precision of the rasterizer (GL_SUBPIXEL_BITS).
 pub const SUBPIXEL_BITS: i32 = 8;
@@ -441,9 +441,9 @@ impl Context {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::context::state::CompareFunc;
     use crate::context::ContextConfig;
     use crate::framebuffer::{ColorFormat, DepthStencilFormat, FramebufferConfig};
+    use crate::gl::CompareFunc;
 
     fn context(color: ColorFormat) -> Context {
         let depth_stencil = DepthStencilFormat::Packed24 { depth: true, stencil: true };

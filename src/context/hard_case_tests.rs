@@ -9,10 +9,10 @@
 //! Most cases count how often each pixel is hit with additive blending of 1/255 into an
 //! RGBA8 buffer, so a count above one (overlap) is as visible as a hole.
 use super::Context;
-use crate::api::enums::*;
-use crate::api::types::GLenum;
 use crate::framebuffer::surface::{ColorPixels, DepthStencilPixels};
 use crate::framebuffer::{ColorFormat, ColorSlot, DepthStencilFormat, Drawable, FramebufferConfig};
+use crate::gl::enums::*;
+use crate::gl::types::GLenum;
 use crate::raster::accuracy::Accuracy;
 use crate::vertex::Vertex;
 use std::sync::{Arc, Mutex};
@@ -300,7 +300,7 @@ fn tiny_coordinates_scaled_up_cover_like_their_scaled_copy() {
 
 #[test]
 fn the_largest_viewport_maps_exactly() {
-    let max = crate::context::state::MAX_VIEWPORT_DIM;
+    let max = crate::gl::limits::MAX_VIEWPORT_DIM;
     for accuracy in Accuracy::ALL {
         let mut h = Harness::counting(64, 48, accuracy);
         // The window is the lower-left corner of a viewport of the largest size.

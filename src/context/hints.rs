@@ -1,7 +1,7 @@
 //! glHint and glClampColor: small state setters with their own validation.
 use super::Context;
-use crate::api::enums::*;
-use crate::api::types::GLenum;
+use crate::gl::enums::*;
+use crate::gl::types::GLenum;
 
 impl Context {
     /// glHint: any of the GL 2.1 targets, mode GL_FASTEST, GL_NICEST or GL_DONT_CARE.

@@ -19,13 +19,14 @@
 //! glMaterialf and their integer forms) accept only single-valued parameters, as the
 //! specification says; Mesa accepts vector parameters there too, filling the other
 //! components with zeros or garbage.
-use super::state::{Light, Material, MAX_LIGHTS};
+use super::state::{Light, Material};
 use super::Context;
-use crate::api::enums::*;
-use crate::api::types::GLenum;
 use crate::context::fragment_state::int_to_normalized_float;
 use crate::context::get::Value;
 use crate::context::matrix::StackId;
+use crate::gl::enums::*;
+use crate::gl::limits::MAX_LIGHTS;
+use crate::gl::types::GLenum;
 use crate::vertex::lighting::set_material_parameter;
 
 /// Largest GL_SHININESS and GL_SPOT_EXPONENT.

@@ -22,8 +22,8 @@
 //! says.
 use super::get::Value;
 use super::Context;
-use crate::api::enums::*;
-use crate::api::types::GLenum;
+use crate::gl::enums::*;
+use crate::gl::types::GLenum;
 use std::collections::BTreeMap;
 use std::sync::{Arc, Mutex, MutexGuard};
 

@@ -18,7 +18,7 @@
 //! [`MatrixStacks::validate`] for the latter (see its doc). The inverse keeps Mesa's quirks:
 //! the 3-D algorithms leave the bottom row of the previous inverse in place, and a singular
 //! matrix has the identity as its inverse.
-use super::state::{
+use crate::gl::limits::{
     MAX_COLOR_STACK_DEPTH, MAX_MODELVIEW_STACK_DEPTH, MAX_PROJECTION_STACK_DEPTH, MAX_TEXTURE_STACK_DEPTH,
     MAX_TEXTURE_UNITS,
 };

@@ -40,9 +40,9 @@ pub mod vertex_input;
 #[cfg(test)]
 mod watertight_tests;
 
-use crate::api::enums::*;
-use crate::api::types::GLenum;
 use crate::framebuffer::{Drawable, Framebuffer, FramebufferConfig};
+use crate::gl::enums::*;
+use crate::gl::types::GLenum;
 use state::{PixelStoreState, State};
 use std::sync::{Arc, Mutex};
 

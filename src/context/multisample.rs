@@ -24,7 +24,7 @@ impl Context {
     /// A multisampled window reads its resolved image. Returns whether the read may go on.
     pub fn check_read_single_sampled(&mut self) -> bool {
         if self.fbo.read != 0 && self.read_samples() > 1 {
-            self.error(crate::api::enums::GL_INVALID_OPERATION);
+            self.error(crate::gl::enums::GL_INVALID_OPERATION);
             return false;
         }
         true
@@ -55,9 +55,9 @@ impl Context {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::api::enums::*;
     use crate::context::draw::tests::vertex;
     use crate::framebuffer::{ColorFormat, ColorSlot, DepthStencilFormat, Drawable, Framebuffer, FramebufferConfig};
+    use crate::gl::enums::*;
     use std::sync::{Arc, Mutex};
 
     /// A context drawing into a `samples`-sample 8×4 framebuffer with window coordinates as

@@ -6,8 +6,8 @@
 //! so the count is exact and the same for any number of threads). Asking for the result
 //! runs the pending scene first, so a result is always available when asked for.
 use super::Context;
-use crate::api::enums::*;
-use crate::api::types::GLenum;
+use crate::gl::enums::*;
+use crate::gl::types::GLenum;
 use std::collections::HashMap;
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::Arc;

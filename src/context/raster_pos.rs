@@ -10,9 +10,9 @@
 //! distance. glWindowPos sets window coordinates directly and is always valid.
 use super::get::Value;
 use super::Context;
-use crate::api::enums::*;
-use crate::api::types::GLenum;
-use crate::context::state::MAX_TEXTURE_UNITS;
+use crate::gl::enums::*;
+use crate::gl::limits::MAX_TEXTURE_UNITS;
+use crate::gl::types::GLenum;
 use crate::vertex::Vertex;
 use glam::Vec4;
 

@@ -13,10 +13,10 @@
 //! glGetPolygonStipple writes it with the pack modes. Packing writes only the pattern's bits:
 //! Mesa 22 zeroes the rest of the first and last byte of each row when GL_PACK_SKIP_PIXELS is
 //! not a multiple of 8, which tessera does not copy.
-use super::state::{MAX_LINE_WIDTH, MAX_POINT_SIZE};
 use super::Context;
-use crate::api::enums::*;
-use crate::api::types::GLenum;
+use crate::gl::enums::*;
+use crate::gl::limits::{MAX_LINE_WIDTH, MAX_POINT_SIZE};
+use crate::gl::types::GLenum;
 use crate::pixel::layout::ImageLayout;
 use crate::pixel::{ClientFormat, ClientType, PackModes};
 use std::ops::Range;

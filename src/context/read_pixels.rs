@@ -24,9 +24,9 @@
 //! fixed-point here and clamps them under GL_FIXED_ONLY; tessera does not.
 use super::state::PixelStoreModes;
 use super::Context;
-use crate::api::enums::*;
-use crate::api::types::GLenum;
 use crate::framebuffer::{Framebuffer, Rect};
+use crate::gl::enums::*;
+use crate::gl::types::GLenum;
 use crate::pixel::color::{ColorPlan, ColorScratch};
 use crate::pixel::convert::pixel_store_round;
 use crate::pixel::depth::{pack_depth_row, pack_depth_stencil_row, pack_stencil_bitmap_row, pack_stencil_row};

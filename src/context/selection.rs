@@ -8,8 +8,8 @@
 //! kept here and copied to the caller's buffer when glRenderMode leaves GL_SELECT; words
 //! beyond the buffer's size are dropped and glRenderMode then returns −1.
 use super::Context;
-use crate::api::enums::*;
-use crate::api::types::GLenum;
+use crate::gl::enums::*;
+use crate::gl::types::GLenum;
 
 /// GL_MAX_NAME_STACK_DEPTH (Mesa's value).
 pub const MAX_NAME_STACK_DEPTH: usize = 64;

@@ -4,72 +4,10 @@
 //! glPushAttrib saves a group by cloning its struct. Defaults are the GL 2.1 initial values.
 //! Enums are stored as the `GLenum` the API received only after validation; where the value
 //! set is small and closed, a Rust enum is used instead.
-use crate::api::enums::*;
-use crate::api::types::GLenum;
-
-/// The most draw buffers a fragment can be written to at once (GL_MAX_DRAW_BUFFERS).
-pub const MAX_DRAW_BUFFERS: usize = 8;
-/// Depth of the attribute stacks (GL_MAX_ATTRIB_STACK_DEPTH and the client one).
-pub const MAX_ATTRIB_STACK_DEPTH: usize = 16;
-/// User clip planes (GL_MAX_CLIP_PLANES).
-pub const MAX_CLIP_PLANES: usize = 6;
-/// Fixed-function lights (GL_MAX_LIGHTS).
-pub const MAX_LIGHTS: usize = 8;
-/// Texture units with fixed-function state (GL_MAX_TEXTURE_UNITS).
-pub const MAX_TEXTURE_UNITS: usize = 4;
-/// Largest point size and line width (GL_POINT_SIZE_RANGE / GL_LINE_WIDTH_RANGE maximum).
-pub const MAX_POINT_SIZE: f32 = 255.0;
-pub const MAX_LINE_WIDTH: f32 = 255.0;
-/// Depths of the matrix stacks (GL_MAX_MODELVIEW/PROJECTION/TEXTURE_STACK_DEPTH; GL
-/// requires at least 32, 2 and 2).
-pub const MAX_MODELVIEW_STACK_DEPTH: usize = 32;
-pub const MAX_PROJECTION_STACK_DEPTH: usize = 32;
-pub const MAX_TEXTURE_STACK_DEPTH: usize = 10;
-pub const MAX_COLOR_STACK_DEPTH: usize = 10;
-/// Largest viewport and renderbuffer side (GL_MAX_VIEWPORT_DIMS, OSMESA_MAX_WIDTH).
-pub const MAX_VIEWPORT_DIM: i32 = 16384;
-
-/// A comparison function for alpha, depth and stencil tests.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum CompareFunc {
-    Never,
-    Less,
-    Equal,
-    LessEqual,
-    Greater,
-    NotEqual,
-    GreaterEqual,
-    Always,
-}
-
-impl CompareFunc {
-    pub fn from_gl(e: GLenum) -> Option<Self> {
-        Some(match e {
-            GL_NEVER => Self::Never,
-            GL_LESS => Self::Less,
-            GL_EQUAL => Self::Equal,
-            GL_LEQUAL => Self::LessEqual,
-            GL_GREATER => Self::Greater,
-            GL_NOTEQUAL => Self::NotEqual,
-            GL_GEQUAL => Self::GreaterEqual,
-            GL_ALWAYS => Self::Always,
-            _ => return None,
-        })
-    }
-
-    pub fn to_gl(self) -> GLenum {
-        match self {
-            Self::Never => GL_NEVER,
-            Self::Less => GL_LESS,
-            Self::Equal => GL_EQUAL,
-            Self::LessEqual => GL_LEQUAL,
-            Self::Greater => GL_GREATER,
-            Self::NotEqual => GL_NOTEQUAL,
-            Self::GreaterEqual => GL_GEQUAL,
-            Self::Always => GL_ALWAYS,
-        }
-    }
-}
+use crate::gl::enums::*;
+use crate::gl::limits::*;
+use crate::gl::types::GLenum;
+use crate::gl::CompareFunc;
 
 /// GL_COLOR_BUFFER_BIT: alpha test, blending, dithering, logic op, draw buffers, clear color
 /// and color masks.

@@ -4,8 +4,8 @@
 //! extension list names only what works; both grow as the pipeline does. The strings are
 //! static so the pointers handed to C stay valid for the life of the process.
 use super::Context;
-use crate::api::enums::*;
-use crate::api::types::GLenum;
+use crate::gl::enums::*;
+use crate::gl::types::GLenum;
 
 pub const VENDOR: &str = "tessera project\0";
 pub const RENDERER: &str = concat!("tessera ", env!("CARGO_PKG_VERSION"), " (software rasterizer)\0");

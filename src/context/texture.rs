@@ -17,8 +17,8 @@
 //! GL_BITMAP included) becomes RGBA through GL_INDEX_SHIFT/OFFSET and the GL_PIXEL_MAP_I_TO_*
 //! tables (GL 2.1 §3.6.5, "Color Index Lookup"); glGetTexImage cannot return indices.
 use super::Context;
-use crate::api::enums::*;
-use crate::api::types::GLenum;
+use crate::gl::enums::*;
+use crate::gl::types::GLenum;
 use crate::pixel::layout::ImageLayout;
 use crate::pixel::unpack::{unpack_color_row, unpack_depth_row};
 use crate::pixel::{ClientFormat, ClientType, PackModes};

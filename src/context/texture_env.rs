@@ -7,12 +7,12 @@
 //! Eye planes are transformed by the inverse modelview at specification (GL 2.1 §2.11.4),
 //! as Mesa does. The eye-space normal (for SPHERE_MAP, NORMAL_MAP, REFLECTION_MAP) is
 //! computed by [`eye_normal`], kept separate so that lighting can share it.
-use super::state::MAX_TEXTURE_UNITS;
 use super::texture::{Level, TextureObject, MAX_TEXTURE_LOD_BIAS};
 use super::Context;
-use crate::api::enums::*;
-use crate::api::types::GLenum;
-use crate::context::state::CompareFunc;
+use crate::gl::enums::*;
+use crate::gl::limits::MAX_TEXTURE_UNITS;
+use crate::gl::types::GLenum;
+use crate::gl::CompareFunc;
 use crate::texture::env::{Combine, CombineFn, EnvMode, Operand, Source, TexEnv};
 use crate::texture::sampler::{DepthMode, Dim, Filter, Sampler, Wrap};
 use crate::texture::{BaseFormat, TextureStage, Texturing};

@@ -17,10 +17,10 @@
 //! - A NULL matrix or plane pointer is ignored (Mesa ignores NULL matrices but crashes on a
 //!   NULL plane).
 use super::matrix::{transform_row_vector, transpose, StackId};
-use super::state::{MAX_CLIP_PLANES, MAX_TEXTURE_UNITS};
 use super::Context;
-use crate::api::enums::*;
-use crate::api::types::GLenum;
+use crate::gl::enums::*;
+use crate::gl::limits::{MAX_CLIP_PLANES, MAX_TEXTURE_UNITS};
+use crate::gl::types::GLenum;
 
 impl Context {
     /// The stack glMatrixMode selected (GL_TEXTURE: the active unit's).
@@ -206,9 +206,9 @@ impl Context {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::context::state::{MAX_MODELVIEW_STACK_DEPTH, MAX_PROJECTION_STACK_DEPTH};
     use crate::context::ContextConfig;
     use crate::framebuffer::{ColorFormat, DepthStencilFormat, FramebufferConfig};
+    use crate::gl::limits::{MAX_MODELVIEW_STACK_DEPTH, MAX_PROJECTION_STACK_DEPTH};
 
     fn context() -> Context {
         let depth_stencil = DepthStencilFormat::Packed24 { depth: true, stencil: true };

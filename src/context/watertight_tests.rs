@@ -2,9 +2,9 @@
 //! meshes of many triangles sharing edges must cover every pixel exactly once, at many
 //! sub-pixel offsets, across tile boundaries and after clipping.
 use super::Context;
-use crate::api::enums::*;
 use crate::framebuffer::surface::ColorPixels;
 use crate::framebuffer::{ColorFormat, ColorSlot, DepthStencilFormat, FramebufferConfig};
+use crate::gl::enums::*;
 use crate::setup::triangle::TriangleSetup;
 use crate::vertex::Vertex;
 

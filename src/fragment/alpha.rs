@@ -11,8 +11,8 @@
 //! float and 16-bit targets the comparison is in single precision on clamped values.
 
 use super::{passes, MAX_SPAN};
-use crate::context::state::CompareFunc;
 use crate::framebuffer::format::float_to_unorm;
+use crate::gl::CompareFunc;
 
 /// The reference converted for [`alpha_test_unorm8`].
 #[inline]

@@ -119,7 +119,7 @@ mod tests {
     use super::super::blend::{BlendEquation, BlendFactor};
     use super::super::{AlphaTest, DepthTest};
     use super::*;
-    use crate::context::state::CompareFunc;
+    use crate::gl::CompareFunc;
 
     #[test]
     fn disabled_stages_are_not_described_and_early_tests_come_first() {

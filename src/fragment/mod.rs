@@ -15,9 +15,9 @@ pub mod logic_op;
 pub mod output;
 pub mod stencil;
 
-use crate::context::state::CompareFunc;
 use crate::framebuffer::band::{ColorBand, DepthBand};
 use crate::framebuffer::format::{float_to_unorm, fragment_depth_to_fixed};
+use crate::gl::CompareFunc;
 use blend::Blend;
 use logic_op::LogicOp;
 use stencil::StencilFace;

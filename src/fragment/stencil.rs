@@ -7,7 +7,7 @@
 //! separate u8 plane) into a span array, tested and updated there, and stored back.
 
 use super::{passes, MAX_SPAN};
-use crate::context::state::CompareFunc;
+use crate::gl::CompareFunc;
 
 /// A stencil operation (glStencilOp).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

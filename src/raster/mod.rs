@@ -586,10 +586,10 @@ fn run_parallel<T: Send>(items: Vec<T>, threads: usize, work: impl Fn(T) + Sync)
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::context::state::CompareFunc;
     use crate::fragment::{AlphaTest, DepthTest};
     use crate::framebuffer::band::{ColorBand, ColorTarget, DepthBand};
     use crate::framebuffer::{ColorFormat, DepthStencilFormat};
+    use crate::gl::CompareFunc;
     use std::cell::Cell;
 
     fn state(alpha: bool) -> DrawState {

@@ -10,8 +10,8 @@
 use super::accuracy::Accuracy;
 use super::interpolate::{self, Interpolant};
 use super::{shade_span, span_mask, walk_spans, Band, DrawState, Scratch, Span};
-use crate::context::state::MAX_TEXTURE_UNITS;
 use crate::framebuffer::Rect;
+use crate::gl::limits::MAX_TEXTURE_UNITS;
 use crate::setup::triangle::{TriangleSetup, ONE};
 
 /// `a(x, y) = a0 + dadx·(x − x0) + dady·(y − y0)` around the anchor `(x0, y0)`.

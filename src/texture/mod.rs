@@ -248,7 +248,7 @@ impl PartialEq for Texturing {
 }
 
 /// Most texture units a draw can use.
-pub const MAX_UNITS: usize = crate::context::state::MAX_TEXTURE_UNITS;
+pub const MAX_UNITS: usize = crate::gl::limits::MAX_TEXTURE_UNITS;
 
 /// The projected coordinates (s/q, t/q, r/q) of a stage from a fragment's varyings.
 #[inline]

@@ -10,7 +10,7 @@
 //! texel position is taken to 1/256 of a texel and the lerps are integer; depth images (and
 //! depth comparison) filter in float.
 use super::{BaseFormat, TexImage, Texels};
-use crate::context::state::CompareFunc;
+use crate::gl::CompareFunc;
 use std::sync::Arc;
 
 /// Dimensionality of a texture target.

@@ -6,9 +6,9 @@
 //! [`ClientMemory`] over raw pointers, so that is the only place where caller memory is
 //! touched, and it only ever covers what GL's contract says the caller provides.
 use super::components::{decoder, ComponentType, Decoder};
-use crate::api::enums::*;
-use crate::api::types::GLenum;
-use crate::context::state::MAX_TEXTURE_UNITS;
+use crate::gl::enums::*;
+use crate::gl::limits::MAX_TEXTURE_UNITS;
+use crate::gl::types::GLenum;
 
 /// The fixed-function vertex arrays.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

@@ -4,8 +4,8 @@
 //! Quads, quad strips and polygons become triangles here; the edges a decomposition adds
 //! inside a polygon are marked as not being boundary edges, so GL_LINE polygon mode draws
 //! only the polygon's outline (and the edge flags of glEdgeFlag are honoured).
-use crate::api::enums::*;
-use crate::api::types::GLenum;
+use crate::gl::enums::*;
+use crate::gl::types::GLenum;
 
 /// A primitive as indices into the draw's vertex array.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -11,7 +11,7 @@
 //! vertex towards the inside one, so an edge shared by two primitives is cut at exactly
 //! the same point whichever primitive it belongs to.
 
-use crate::context::state::MAX_TEXTURE_UNITS;
+use crate::gl::limits::MAX_TEXTURE_UNITS;
 
 /// A vertex after transformation: clip coordinates, eye coordinates (for user clip planes
 /// and fog) and the attributes the rasterizer interpolates.

@@ -16,8 +16,8 @@
 //! specification says. (Mesa 22's llvmpipe draws signed normalized arrays with the later
 //! `max(c / (2^(b−1) − 1), −1)` rule and GLubyte arrays as `c · (1/255)`; its glArrayElement
 //! uses table 2.9 like tessera. The difference is at most one unit of an 8-bit channel.)
-use crate::api::enums::*;
-use crate::api::types::GLenum;
+use crate::gl::enums::*;
+use crate::gl::types::GLenum;
 
 /// A GL component type: how to read one from memory and convert it to a float.
 pub trait Component: Copy {

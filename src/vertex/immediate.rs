@@ -1,9 +1,9 @@
 //! Immediate mode: what glBegin accepts, the vertex a glVertex call makes from the current
 //! attributes, and glRect's polygon.
 use super::Vertex;
-use crate::api::enums::*;
-use crate::api::types::GLenum;
 use crate::context::state::CurrentState;
+use crate::gl::enums::*;
+use crate::gl::types::GLenum;
 
 /// Whether `mode` is a primitive mode of GL 2.1 (GL_POINTS … GL_POLYGON). Mesa 22, at GL 4.5,
 /// also takes the adjacency modes; GL 2.1 has none of them, so they are GL_INVALID_ENUM here.

@@ -21,8 +21,9 @@
 //! that is attenuated (local with attenuation, or a spotlight), raises N·H to the power N·L
 //! instead of 0 (its dot product fills the exponent's slot); here the specular factor is
 //! then 1, as the specification's 0⁰ = 1 says.
-use crate::api::enums::{GL_BACK, GL_FRONT, GL_SEPARATE_SPECULAR_COLOR};
-use crate::context::state::{Light, LightingState, Material, MAX_LIGHTS};
+use crate::context::state::{Light, LightingState, Material};
+use crate::gl::enums::{GL_BACK, GL_FRONT, GL_SEPARATE_SPECULAR_COLOR};
+use crate::gl::limits::MAX_LIGHTS;
 
 /// What happens to transformed normals: GL_NORMALIZE, GL_RESCALE_NORMAL (with the factor
 /// from the modelview matrix), or nothing.
@@ -184,7 +185,7 @@ fn face_setup(m: &Material, model_ambient: [f32; 4], lights: &[LightSetup]) -> F
 /// Sets material parameter `pname` (GL_AMBIENT … GL_COLOR_INDEXES, already validated; `p`
 /// holds enough values) of `m`.
 pub fn set_material_parameter(m: &mut Material, pname: u32, p: &[f32]) {
-    use crate::api::enums::*;
+    use crate::gl::enums::*;
     let vec4 = |p: &[f32]| [p[0], p[1], p[2], p[3]];
     match pname {
         GL_AMBIENT => m.ambient = vec4(p),
@@ -455,7 +456,7 @@ impl Lighting {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::api::enums::{GL_DIFFUSE, GL_EMISSION};
+    use crate::gl::enums::{GL_DIFFUSE, GL_EMISSION};
 
     const IDENTITY: [f32; 16] = [1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0];
 

@@ -11,7 +11,7 @@ pub mod components;
 pub mod immediate;
 pub mod lighting;
 
-use crate::context::state::MAX_TEXTURE_UNITS;
+use crate::gl::limits::MAX_TEXTURE_UNITS;
 
 /// One vertex as a draw call delivers it: object-space position and every attribute the
 /// fixed-function pipeline may use (unused ones keep the current values).

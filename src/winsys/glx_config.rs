@@ -9,8 +9,8 @@
 //! GLX_SAMPLES: double-buffered, depth 24, stencil 8, with and without alpha) whose
 //! drawables render into multisample buffers and present the resolved image. This module is
 //! pure data and rules, without X calls, so it is unit-tested.
-use crate::context::state::MAX_VIEWPORT_DIM;
 use crate::framebuffer::{ColorFormat, DepthStencilFormat, FramebufferConfig};
+use crate::gl::limits::MAX_VIEWPORT_DIM;
 
 pub const GLX_USE_GL: i32 = 1;
 pub const GLX_BUFFER_SIZE: i32 = 2;

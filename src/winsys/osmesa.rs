@@ -4,17 +4,17 @@
 //! the flush points (glFlush, glFinish, OSMesaGetColorBuffer); the caller's existing contents
 //! are never read. Rows go bottom-up (`OSMESA_Y_UP`, the default) or top-down, `OSMESA_ROW_LENGTH`
 //! pixels apart.
-use crate::api::enums::*;
 use crate::api::osmesa::{OSMESA_ARGB, OSMESA_BGR, OSMESA_BGRA, OSMESA_RGB_565};
-use crate::api::types::GLenum;
 use crate::context::current::{self, SharedContext};
-use crate::context::state::MAX_VIEWPORT_DIM;
 use crate::context::{Context, ContextConfig};
 use crate::framebuffer::external::CallerBuffer;
 use crate::framebuffer::surface::{ColorPixels, DepthStencilPixels};
 use crate::framebuffer::{
     ColorFormat, ColorSlot, DepthStencilFormat, Drawable, Framebuffer, FramebufferConfig, OutOfMemory, Present,
 };
+use crate::gl::enums::*;
+use crate::gl::limits::MAX_VIEWPORT_DIM;
+use crate::gl::types::GLenum;
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex, MutexGuard, OnceLock};
 

@@ -3,9 +3,9 @@
 //! the hit record, or reported as feedback tokens (`context::selection`). Nothing is
 //! rasterized.
 use super::{Context, Geometry};
-use crate::api::enums::*;
-use crate::api::types::GLenum;
 use crate::context::selection::FeedbackVertex;
+use crate::gl::enums::*;
+use crate::gl::types::GLenum;
 use crate::vertex::assembly::{assemble, Primitive, QuadSplit};
 use crate::vertex::clip::ClipVertex;
 use crate::vertex::Vertex;

@@ -13,8 +13,8 @@
 //!   limit, so tessera takes any non-negative stride.
 //! - glClientActiveTexture takes the 4 units tessera has (Mesa: 8).
 use super::Context;
-use crate::api::enums::*;
-use crate::api::types::GLenum;
+use crate::gl::enums::*;
+use crate::gl::types::GLenum;
 use crate::vertex::arrays::{ArrayId, InterleavedLayout};
 use crate::vertex::components::ComponentType;
 
@@ -161,7 +161,7 @@ impl Context {
 mod tests {
     use super::super::test_support::*;
     use super::*;
-    use crate::context::state::MAX_TEXTURE_UNITS;
+    use crate::gl::limits::MAX_TEXTURE_UNITS;
 
     #[test]
     fn pointers_record_format_and_buffer_binding() {

@@ -10,8 +10,8 @@
 //! buffers); a failed glBufferData (GL_OUT_OF_MEMORY) keeps the old contents, where Mesa leaves
 //! an empty buffer.
 use super::Context;
-use crate::api::enums::*;
-use crate::api::types::{GLenum, GLint};
+use crate::gl::enums::*;
+use crate::gl::types::{GLenum, GLint};
 use crate::vertex::buffer_objects::{is_access, is_usage, BufferObject, BufferTarget};
 
 impl Context {

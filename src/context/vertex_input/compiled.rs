@@ -9,9 +9,9 @@
 //! and glVertex.
 use super::draws::FetchedElement;
 use super::Context;
-use crate::api::enums::*;
-use crate::api::types::GLenum;
-use crate::context::state::MAX_TEXTURE_UNITS;
+use crate::gl::enums::*;
+use crate::gl::limits::MAX_TEXTURE_UNITS;
+use crate::gl::types::GLenum;
 use crate::vertex::arrays::ArrayId;
 use crate::vertex::immediate::vertex_from_current;
 use crate::vertex::Vertex;

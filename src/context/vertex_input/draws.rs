@@ -18,9 +18,10 @@
 //! GL_INVALID_ENUM), and drawing from a mapped buffer object is GL_INVALID_OPERATION (the GL
 //! 1.5 specification allows it to be; Mesa draws the mapped contents).
 use super::{independent_primitive_size, Context, BATCH_VERTICES};
-use crate::api::enums::*;
-use crate::api::types::GLenum;
-use crate::context::state::{CurrentState, MAX_TEXTURE_UNITS};
+use crate::context::state::CurrentState;
+use crate::gl::enums::*;
+use crate::gl::limits::MAX_TEXTURE_UNITS;
+use crate::gl::types::GLenum;
 use crate::vertex::arrays::{
     byte_extent, index_range, ArrayId, ArrayState, BoundArray, ClientArrays, ClientMemory, IndexType,
 };

@@ -12,9 +12,9 @@
 //! - glEdgeFlag(flag) sets the edge flag for any nonzero `flag`; Mesa keeps the flag as a
 //!   float and reports TRUE only for exactly 1.
 use super::{independent_primitive_size, Context, BATCH_VERTICES};
-use crate::api::enums::*;
-use crate::api::types::GLenum;
-use crate::context::state::MAX_TEXTURE_UNITS;
+use crate::gl::enums::*;
+use crate::gl::limits::MAX_TEXTURE_UNITS;
+use crate::gl::types::GLenum;
 use crate::vertex::assembly::{continued_vertices, DrawPart};
 use crate::vertex::immediate::{is_primitive_mode, rect_positions, vertex_from_current};
 
