@@ -3,15 +3,16 @@
 #   1. PyOpenGL on OSMesa (PYOPENGL_PLATFORM=osmesa): a triangle, GL_RENDERER and pixels;
 #   2. PyOpenGL in a GLFW window (PyPI's glfw, which bundles libglfw and dlopens libGLX.so.0)
 #      and PyOpenGL's GLUT binding (the system's freeglut), under a private Xvfb;
-#   3. MuJoCo (MUJOCO_GL=osmesa): mujoco.Renderer at 640x480, GL_RENDERER asked inside its
-#      context, a picture that shows the model, a depth image;
+#   3. MuJoCo (MUJOCO_GL=osmesa, then MUJOCO_GL=glfw under the Xvfb): mujoco.Renderer at
+#      640x480, GL_RENDERER asked inside its context, a picture that shows the model, a
+#      depth image;
 #   4. dm_control: the cartpole task rendered at 640x480 in its own OSMesa context.
-# The programs are in tools/clients/; MuJoCo's and dm_control's pictures are left in
+# The programs are in tools/clients/; the pictures MuJoCo and dm_control rendered are left in
 # target/clients/*.png. The Python packages (tools/clients/requirements.txt)
 # go into a virtual environment, target/clients-venv, made once and reused while the
 # requirements and the interpreter stay the same. The first install downloads about 140 MB
 # (the venv takes 500 MB) and took 134 s with an empty pip cache on a loaded 2-core machine,
-# 45 s from pip's cache; a run with the venv in place takes about 10 s.
+# 45 s from pip's cache; a run with the venv in place takes 10-20 s.
 # Without python3's venv, Xvfb or the network the checks are skipped loudly, except under
 # CI=true where that is a failure.
 set -euo pipefail
@@ -122,18 +123,24 @@ if [[ -n $display ]]; then
     fi
 fi
 
-# 3. MuJoCo. Its classic renderer warns "ARB_clip_control unavailable ..." when the context
-# lacks GL_ARB_clip_control (MuJoCo then keeps GL's -1..1 depth range, with less depth
-# precision). Until tessera offers that extension the warning is expected; once
-# GL_EXTENSIONS lists it (another branch adds it), the warning means MuJoCo did not get to
-# use it, and is a failure.
-run mujoco MUJOCO_GL=osmesa -- mujoco_render.py
-if grep -q "ARB_clip_control unavailable" "$work/mujoco.log"; then
-    if grep -q "^HAS_ARB_clip_control yes" "$work/mujoco.log"; then
-        fail "mujoco: warns that ARB_clip_control is unavailable although GL_EXTENSIONS lists it"
+# 3. MuJoCo, off-screen (OSMesa) and in a hidden GLFW window (GLX). Its classic renderer
+# warns "ARB_clip_control unavailable ..." when the context lacks GL_ARB_clip_control (MuJoCo
+# then keeps GL's -1..1 depth range, with less depth precision). Until tessera offers that
+# extension the warning is expected; once GL_EXTENSIONS lists it (another branch adds it),
+# the warning means MuJoCo did not get to use it, and is a failure.
+clip_control_warning() {
+    grep -q "ARB_clip_control unavailable" "$work/$1.log" || return 0
+    if grep -q "^HAS_ARB_clip_control yes" "$work/$1.log"; then
+        fail "$1: warns that ARB_clip_control is unavailable although GL_EXTENSIONS lists it"
     else
-        echo "clients: mujoco's ARB_clip_control warning is expected: tessera does not offer the extension yet"
+        echo "clients: $1's ARB_clip_control warning is expected: tessera does not offer the extension yet"
     fi
+}
+run mujoco MUJOCO_GL=osmesa -- mujoco_render.py
+clip_control_warning mujoco
+if [[ -n $display ]]; then
+    run mujoco-glfw MUJOCO_GL=glfw DISPLAY="$display" -- mujoco_render.py
+    clip_control_warning mujoco-glfw
 fi
 
 # 4. dm_control

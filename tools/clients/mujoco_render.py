@@ -1,14 +1,15 @@
-"""MuJoCo's own Python bindings rendering a small model off-screen (MUJOCO_GL=osmesa).
+"""MuJoCo's own Python bindings rendering a small model (MUJOCO_GL=osmesa, or glfw).
 
 Run by tools/clients.sh with LD_LIBRARY_PATH on tessera's build directory. mujoco.Renderer
-creates an OSMesa context through PyOpenGL and renders into framebuffer objects; this
-asserts, inside that context, that GL_RENDERER names tessera, and that the 640×480 color
-image shows the model (not blank: a red box on a checkered floor under a light) and the
-depth image varies. It prints `HAS_ARB_clip_control yes|no` for tools/clients.sh.
+creates an OSMesa context through PyOpenGL (with MUJOCO_GL=glfw: a hidden GLFW window on
+GLX) and renders into framebuffer objects. This asserts, inside that context, that
+GL_RENDERER names tessera, that the 640×480 color image shows the model (a red box on a
+checkered floor under a light) and that the depth image has the box and the floor at their
+distances. It prints `HAS_ARB_clip_control yes|no` for tools/clients.sh.
 """
 import os
 
-assert os.environ.get("MUJOCO_GL") == "osmesa", "run with MUJOCO_GL=osmesa"
+assert os.environ.get("MUJOCO_GL") in ("osmesa", "glfw"), "run with MUJOCO_GL=osmesa (or glfw, with a display)"
 
 import mujoco
 import numpy as np
@@ -48,7 +49,7 @@ assert renderer_string.startswith("tessera"), f"not tessera: {renderer_string}"
 renderer.update_scene(data, camera="view")
 image = renderer.render()
 assert image.shape == (480, 640, 3), image.shape
-picture.save("mujoco", image)
+picture.save("mujoco-" + os.environ["MUJOCO_GL"], image)
 colors = len(np.unique(image.reshape(-1, 3), axis=0))
 red = int(np.count_nonzero((image[..., 0] > 120) & (image[..., 0] > 2 * image[..., 1].astype(int) + 20)))
 print(f"mujoco: image {image.shape}, {colors} distinct colors, {red} red pixels, mean {image.mean():.1f}")
