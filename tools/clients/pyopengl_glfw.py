@@ -4,8 +4,6 @@ Run by tools/clients.sh with LD_LIBRARY_PATH on tessera's build directory and DI
 private Xvfb. GLFW dlopens libGLX.so.0 and PyOpenGL loads libGL/libOpenGL: both must be
 tessera. Asserts GL_RENDERER, the back buffer before the swap and the front buffer after it.
 """
-import sys
-
 import glfw
 from OpenGL import GL
 

@@ -4,11 +4,8 @@ Run by tools/clients.sh with LD_LIBRARY_PATH on tessera's build directory. Asser
 GL_RENDERER names tessera and that the pixels are the triangle's and the clear color's.
 """
 import os
-import sys
 
 assert os.environ.get("PYOPENGL_PLATFORM") == "osmesa", "run with PYOPENGL_PLATFORM=osmesa"
-
-import ctypes
 
 from OpenGL import GL, arrays, osmesa
 
