@@ -1,11 +1,12 @@
 //! Build script shared by the two drop-in libraries (lib/osmesa, lib/gl).
 //!
 //! Cargo names a cdylib `lib<name>.so` and has no post-link step, so this script gives the
-//! library Mesa's soname and leaves a versioned symlink (`libOSMesa.so.8 -> libOSMesa.so`)
-//! beside it in the profile directory, plus `libOpenGL.so.0 -> libGL.so` and the pkg-config
-//! files `pkgconfig/gl.pc` and `pkgconfig/osmesa.pc`. The link may dangle for the moment between this script
-//! and the link step; after `cargo build` it resolves, and `LD_LIBRARY_PATH=target/release` is
-//! the install.
+//! library Mesa's soname and leaves beside it, in the profile directory, a symlink for every
+//! other name a loader looks for (`libOSMesa.so.8 -> libOSMesa.so`; `libGL.so.1`, glvnd's
+//! `libOpenGL.so(.0)` and `libGLX.so(.0)` `-> libGL.so`), plus the pkg-config files
+//! `pkgconfig/gl.pc` and `pkgconfig/osmesa.pc`. The links may dangle for the moment between
+//! this script and the link step; after `cargo build` they resolve, and
+//! `LD_LIBRARY_PATH=target/release` is the install (`tests/loader_names.rs` checks each name).
 use std::path::PathBuf;
 
 fn main() {
@@ -26,9 +27,12 @@ fn main() {
     };
     let mut links = vec![soname];
     if stem == "GL" {
-        // Debian's libGLU links glvnd's libOpenGL.so.0 (the GL half of libGL): GLU programs
-        // reach tessera through this name.
-        links.push("libOpenGL.so.0".to_string());
+        // glvnd splits libGL into libOpenGL (the GL functions) and libGLX (the window-system
+        // ones), and clients look for those names first: Debian's libGLU links libOpenGL.so.0,
+        // GLFW dlopens libGLX.so.0 before libGL.so.1, PyOpenGL tries libOpenGL.so and libGLX.so
+        // before libGL.so.1. Without these links the system's glvnd libraries would win
+        // silently under LD_LIBRARY_PATH=target/release. libGL exports both halves.
+        links.extend(["libOpenGL.so.0", "libOpenGL.so", "libGLX.so.0", "libGLX.so"].map(String::from));
     }
     for name in &links {
         let link = profile_dir.join(name);

@@ -10,13 +10,14 @@
 #                     tests, glxinfo/glxgears, glewinfo, a freeglut program, xwd screenshots
 #   g++               builds libFuzzer for tools/fuzz.sh
 #   valgrind          tools/memcheck.sh: capi tests under memcheck (invalid accesses, leaks)
+#   python3-venv      tools/clients.sh: a virtual environment for PyOpenGL, MuJoCo, dm_control, glfw
 # Runs `apt-get update` once (only if something is missing), as root or through sudo.
 # The Rust toolchain is not installed here (Debian's is too old): see README.md.
 set -euo pipefail
 
 packages=(gcc libosmesa6-dev libgl1-mesa-dev)
 if [[ ${1:-} == --test ]]; then
-    packages+=(chromium xvfb piglit mesa-utils glew-utils freeglut3-dev x11-apps libx11-dev python3 pkg-config g++ valgrind)
+    packages+=(chromium xvfb piglit mesa-utils glew-utils freeglut3-dev x11-apps libx11-dev python3 pkg-config g++ valgrind python3-venv)
 fi
 missing=()
 for package in "${packages[@]}"; do
