@@ -8,6 +8,9 @@
 #   xvfb piglit mesa-utils glew-utils freeglut3-dev x11-apps libx11-dev python3 pkg-config
 #                     the GLX checks of tools/xvfb-tests.sh: a private X server, piglit's
 #                     tests, glxinfo/glxgears, glewinfo, a freeglut program, xwd screenshots
+#   libglfw3 libglfw3-dev
+#                     tools/xvfb-tests.sh's GLFW check: tests/glx/glfw_window.c opens a GLFW
+#                     window on tessera, as a plain GLFW program does
 #   g++               builds libFuzzer for tools/fuzz.sh
 #   valgrind          tools/memcheck.sh: capi tests under memcheck (invalid accesses, leaks)
 #   python3-venv      tools/clients.sh: a virtual environment for PyOpenGL, MuJoCo, dm_control, glfw
@@ -17,7 +20,8 @@ set -euo pipefail
 
 packages=(gcc libosmesa6-dev libgl1-mesa-dev)
 if [[ ${1:-} == --test ]]; then
-    packages+=(chromium xvfb piglit mesa-utils glew-utils freeglut3-dev x11-apps libx11-dev python3 pkg-config g++ valgrind python3-venv)
+    packages+=(chromium xvfb piglit mesa-utils glew-utils freeglut3-dev x11-apps libx11-dev python3 pkg-config g++ valgrind
+        libglfw3 libglfw3-dev python3-venv)
 fi
 missing=()
 for package in "${packages[@]}"; do

@@ -5,15 +5,19 @@
 #   2. tests/glx/two_threads.c: two windows, two contexts, two threads render independently;
 #      tests/glx/glx_api.c: the GLX API (configs, context rules, drawables, resizing, stereo);
 #      tests/glx/read_drawable.c: reads from a separate read drawable;
-#      tests/glx/glx_errors.c: GLX errors as X protocol errors;
+#      tests/glx/glx_errors.c: GLX errors as X protocol errors, named in Xlib's error text;
+#      tests/glx/context_notice.c: a refused glXCreateContextAttribsARB prints one line
+#      naming the version asked for and the one provided (none with TESSERA_QUIET=1);
+#      tests/glx/share_objects.c: share contexts share textures, buffers and display lists;
 #      tests/glx/multisample.c: a 4-sample window's resolved edges;
+#      tests/glx/glfw_window.c: a GLFW window (Debian's libglfw3) renders on tessera;
 #   3. tests/glx/glut_scene.c (freeglut): a screenshot (xwd) shows the expected picture;
 #   4. glxgears runs and its window shows the gears (not blank);
 #   5. piglit: every command of ../shared/piglit/fragment-ops.txt is run; each one
 #      tests/piglit/expected.txt marks "pass" must pass (a skip is not a pass).
 #   6. piglit's framebuffer-object tests: each command tests/piglit/fbo-expected.txt marks
 #      "pass" must pass.
-# Needs xvfb, piglit, mesa-utils, freeglut3-dev, x11-apps, libx11-dev, python3 (installed by
+# Needs xvfb, piglit, mesa-utils, freeglut3-dev, libglfw3-dev, x11-apps, libx11-dev, python3 (installed by
 # tools/setup-debian.sh). Without them it skips loudly, except under CI=true where it fails.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -29,6 +33,7 @@ for tool in Xvfb glxinfo glewinfo glxgears xwd gcc python3 pkg-config; do
 done
 [[ -x $piglit_bin/depthfunc ]] || missing+=("piglit")
 [[ -f /usr/include/GL/glut.h ]] || missing+=("freeglut3-dev")
+[[ -f /usr/include/GLFW/glfw3.h ]] || missing+=("libglfw3-dev")
 [[ -f $list ]] || missing+=("$list")
 [[ -e $lib/libGL.so.1 ]] || missing+=("$lib/libGL.so.1 (cargo build --release)")
 if ((${#missing[@]})); then
@@ -60,6 +65,9 @@ export DISPLAY=:$(head -1 "$work/display")
 export PIGLIT_PLATFORM=glx
 echo "xvfb-tests: Xvfb on $DISPLAY"
 on_tessera=(env "LD_LIBRARY_PATH=$lib")
+# The GLX API tests provoke refusals on purpose: without their one-line notices on stderr
+# (tests/glx/context_notice.c checks those).
+quiet_on_tessera=(env "LD_LIBRARY_PATH=$lib" TESSERA_QUIET=1)
 failures=0
 fail() {
     echo "xvfb-tests: FAIL: $*" >&2
@@ -95,23 +103,53 @@ fi
 # (built with tessera's gl.pc: its headers and its libGL.so)
 gl_flags=$(PKG_CONFIG_PATH=$lib/pkgconfig pkg-config --cflags --libs gl) || fail "no $lib/pkgconfig/gl.pc"
 gcc -std=c11 -O1 -Wall -Werror tests/glx/two_threads.c $gl_flags -lX11 -lpthread -o "$work/two_threads"
-"${on_tessera[@]}" timeout 60 "$work/two_threads" || fail "tests/glx/two_threads.c"
+"${quiet_on_tessera[@]}" timeout 60 "$work/two_threads" || fail "tests/glx/two_threads.c"
 
 # The GLX API: configs, context rules, windows, resizing, pbuffers, pixmaps, stereo
 gcc -std=c11 -O1 -Wall -Werror tests/glx/glx_api.c $gl_flags -lX11 -o "$work/glx_api"
-"${on_tessera[@]}" timeout 60 "$work/glx_api" || fail "tests/glx/glx_api.c"
+"${quiet_on_tessera[@]}" timeout 60 "$work/glx_api" || fail "tests/glx/glx_api.c"
 # A separate read drawable; GLX errors reach the X error handler (Xlib threaded or not)
 gcc -std=c11 -O1 -Wall -Werror tests/glx/read_drawable.c $gl_flags -lX11 -o "$work/read_drawable"
 "${on_tessera[@]}" timeout 60 "$work/read_drawable" || fail "tests/glx/read_drawable.c"
 gcc -std=c11 -O1 -Wall -Werror tests/glx/glx_errors.c $gl_flags -lX11 -lpthread -o "$work/glx_errors"
-"${on_tessera[@]}" timeout 60 "$work/glx_errors" || fail "tests/glx/glx_errors.c"
-"${on_tessera[@]}" timeout 60 "$work/glx_errors" threads || fail "tests/glx/glx_errors.c threads"
+"${quiet_on_tessera[@]}" timeout 60 "$work/glx_errors" || fail "tests/glx/glx_errors.c"
+"${quiet_on_tessera[@]}" timeout 60 "$work/glx_errors" threads || fail "tests/glx/glx_errors.c threads"
+# A refused glXCreateContextAttribsARB (3.3 core, asked twice): exactly one line on stderr
+# naming what was asked and the version glxinfo reports; TESSERA_QUIET=1: no line.
+gcc -std=c11 -O1 -Wall -Werror tests/glx/context_notice.c $gl_flags -lX11 -o "$work/context_notice"
+provided=$(sed -n 's/^OpenGL version string: \([0-9]*\.[0-9]*\) tessera.*/\1/p' "$work/glxinfo.txt")
+if env -u TESSERA_QUIET "${on_tessera[@]}" timeout 60 "$work/context_notice" 2>"$work/notice.err"; then
+    want="tessera: glXCreateContextAttribsARB asked for OpenGL 3.3 core profile; tessera provides OpenGL ${provided:-?} (compatibility)"
+    [[ $(wc -l <"$work/notice.err") == 1 && $(cat "$work/notice.err") == "$want" ]] ||
+        fail "context_notice: stderr is not the one notice line \"$want\": $(cat "$work/notice.err")"
+else
+    fail "tests/glx/context_notice.c"
+fi
+"${on_tessera[@]}" TESSERA_QUIET=1 timeout 60 "$work/context_notice" 2>"$work/notice.err" >/dev/null ||
+    fail "tests/glx/context_notice.c with TESSERA_QUIET=1"
+[[ ! -s $work/notice.err ]] || fail "context_notice printed with TESSERA_QUIET=1: $(cat "$work/notice.err")"
+# Share contexts share texture objects, buffer objects and display lists
+gcc -std=c11 -O1 -Wall -Werror tests/glx/share_objects.c $gl_flags -lX11 -o "$work/share_objects"
+"${on_tessera[@]}" timeout 60 "$work/share_objects" || fail "tests/glx/share_objects.c"
 # The same two programs presenting with XPutImage instead of MIT-SHM
-"${on_tessera[@]}" TESSERA_XSHM=0 timeout 60 "$work/two_threads" || fail "two_threads.c with TESSERA_XSHM=0"
-"${on_tessera[@]}" TESSERA_XSHM=0 timeout 60 "$work/glx_api" || fail "glx_api.c with TESSERA_XSHM=0"
+"${quiet_on_tessera[@]}" TESSERA_XSHM=0 timeout 60 "$work/two_threads" || fail "two_threads.c with TESSERA_XSHM=0"
+"${quiet_on_tessera[@]}" TESSERA_XSHM=0 timeout 60 "$work/glx_api" || fail "glx_api.c with TESSERA_XSHM=0"
 # A multisampled (4-sample) window: resolved edges in glReadPixels and on the screen
 gcc -std=c11 -O1 -Wall -Werror tests/glx/multisample.c $gl_flags -lX11 -o "$work/multisample"
-"${on_tessera[@]}" timeout 60 "$work/multisample" || fail "tests/glx/multisample.c"
+"${quiet_on_tessera[@]}" timeout 60 "$work/multisample" || fail "tests/glx/multisample.c"
+
+# GLFW (Debian's libglfw3): a window with default hints renders on tessera, and an OpenGL 2.0
+# request is answered as tessera's version allows. Linked with libglfw only: GLFW dlopens
+# the GL library (Debian's 3.3: libGL.so.1; GLFW 3.4: libGLX.so.0 first, which
+# target/release must then provide), so the renderer string tells that tessera answered.
+gcc -std=c11 -O1 -Wall -Werror tests/glx/glfw_window.c -lglfw -o "$work/glfw_window"
+if "${quiet_on_tessera[@]}" timeout 60 "$work/glfw_window" >"$work/glfw.out" 2>&1; then
+    grep -q "GL_RENDERER = tessera" "$work/glfw.out" || fail "GLFW's context is not tessera's"
+    grep "^glfw_window:" "$work/glfw.out"
+else
+    fail "tests/glx/glfw_window.c"
+    cat "$work/glfw.out" >&2
+fi
 
 # The install layout: Debian's libGLU reaches tessera through libOpenGL.so.0.
 glu=$(ldconfig -p 2>/dev/null | awk '/libGLU.so.1 / {print $NF}' | head -1 || true)

@@ -21,6 +21,7 @@ use crate::gl::types::*;
 use crate::winsys::glx::{self as glx, DisplayAddr, DrawableKind, MakeCurrentError};
 use crate::winsys::glx_config::*;
 use crate::winsys::glx_error::{self as xerr, request, GlxError};
+use crate::winsys::notice;
 use std::ffi::{c_char, c_int, c_uint, c_ulong, c_void, CStr};
 use x11_dl::xlib::{Display, XVisualInfo};
 
@@ -55,6 +56,8 @@ const GLX_CONTEXT_PROFILE_MASK_ARB: c_int = 0x9126;
 const GLX_CONTEXT_CORE_PROFILE_BIT_ARB: c_int = 1;
 const GLX_CONTEXT_COMPATIBILITY_PROFILE_BIT_ARB: c_int = 2;
 const GLX_CONTEXT_DEBUG_BIT_ARB: c_int = 1;
+const GLX_CONTEXT_FORWARD_COMPATIBLE_BIT_ARB: c_int = 2;
+const GLX_CONTEXT_ROBUST_ACCESS_BIT_ARB: c_int = 4;
 const GLX_CONTEXT_RESET_NOTIFICATION_STRATEGY_ARB: c_int = 0x8256;
 const GLX_NO_RESET_NOTIFICATION_ARB: c_int = 0x8261;
 const GLX_COLOR_INDEX_TYPE: c_int = 0x8015;
@@ -164,8 +167,10 @@ pub unsafe extern "C" fn glXQueryExtension(dpy: *mut Display, errorBase: *mut c_
         if dpy.is_null() || glx::xlib().is_none() {
             return FALSE;
         }
-        // tessera renders without the server's GLX; its codes are given when it has one.
+        // tessera renders without the server's GLX; its codes are given when it has one,
+        // and its error names are registered with Xlib for the errors tessera reports.
         let (_, event, error) = glx::server_extension(addr(dpy), c"GLX").unwrap_or((0, 0, 0));
+        xerr::register_error_names(addr(dpy));
         set(errorBase, error);
         set(eventBase, event);
         TRUE
@@ -229,12 +234,19 @@ pub unsafe extern "C" fn glXChooseVisual(dpy: *mut Display, screen: c_int, attri
         if dpy.is_null() {
             return std::ptr::null_mut();
         }
-        let Ok(criteria) = Criteria::visual(&list) else {
-            return std::ptr::null_mut();
+        let criteria = match Criteria::visual(&list) {
+            Ok(criteria) => criteria,
+            Err(bad) => {
+                refuse_criteria("glXChooseVisual", bad);
+                return std::ptr::null_mut();
+            }
         };
         match criteria.choose(glx::configs(addr(dpy)), screen).first() {
             Some(config) => glx::visual_info(addr(dpy), config),
-            None => std::ptr::null_mut(),
+            None => {
+                refuse_unmatched("glXChooseVisual", &list, true, screen);
+                std::ptr::null_mut()
+            }
         }
     })
 }
@@ -283,7 +295,12 @@ pub unsafe extern "C" fn glXCreateContext(
     // SAFETY: forwarded contract.
     let config = guard(None, || unsafe { config_of_visual(dpy, vis) });
     let Some(config) = config else {
-        guard((), || report(dpy, xerr::BAD_VALUE, 0, request::CREATE_CONTEXT));
+        // SAFETY: forwarded contract.
+        let visual = unsafe { describe_visual(vis) };
+        guard((), || {
+            refuse_visual("glXCreateContext", visual);
+            report(dpy, xerr::BAD_VALUE, 0, request::CREATE_CONTEXT)
+        });
         return std::ptr::null_mut();
     };
     guard(std::ptr::null_mut(), || new_context(dpy, config, shareList, request::CREATE_CONTEXT))
@@ -292,6 +309,9 @@ pub unsafe extern "C" fn glXCreateContext(
 /// Creates a context sharing with `share` (GLXBadContext when it is not a context).
 fn new_context(dpy: *mut Display, config: &'static FbConfig, share: GLXContext, minor: u8) -> GLXContext {
     if !share.is_null() && glx::lookup_context(share as usize).is_none() {
+        notice::once("glx-share-context", || {
+            format!("a GLX context was to share objects with {share:p}, which is not a live tessera context")
+        });
         report(dpy, xerr::GLX_BAD_CONTEXT, share as u64, minor);
         return std::ptr::null_mut();
     }
@@ -313,10 +333,14 @@ pub extern "C" fn glXCreateNewContext(
     let _ = direct;
     guard(std::ptr::null_mut(), || {
         let Some(config) = config_of(dpy, config) else {
+            refuse_config("glXCreateNewContext", config);
             report(dpy, xerr::GLX_BAD_FBCONFIG, config as u64, request::CREATE_NEW_CONTEXT);
             return std::ptr::null_mut();
         };
         if renderType != GLX_RGBA_TYPE {
+            notice::once("glx-color-index", || {
+                format!("glXCreateNewContext asked for render type {renderType:#x}; tessera renders RGBA only (GLX_RGBA_TYPE)")
+            });
             // Color index is a valid type no configuration supports: BadMatch.
             let error = if renderType == GLX_COLOR_INDEX_TYPE { xerr::BAD_MATCH } else { xerr::BAD_VALUE };
             report(dpy, error, 0, request::CREATE_NEW_CONTEXT);
@@ -326,9 +350,48 @@ pub extern "C" fn glXCreateNewContext(
     })
 }
 
+/// What a glXCreateContextAttribsARB call asked for, for the refusal notices: e.g.
+/// "OpenGL 3.3 core profile, forward-compatible".
+fn describe_attribs(major: i32, minor: i32, profile: Option<c_int>, flags: c_int) -> String {
+    let mut text = format!("OpenGL {major}.{minor}");
+    match profile {
+        Some(GLX_CONTEXT_CORE_PROFILE_BIT_ARB) => text.push_str(" core profile"),
+        Some(GLX_CONTEXT_COMPATIBILITY_PROFILE_BIT_ARB) => text.push_str(" compatibility profile"),
+        Some(other) => text.push_str(&format!(" profile mask {other:#x}")),
+        None => {}
+    }
+    let named = [
+        (GLX_CONTEXT_DEBUG_BIT_ARB, "debug"),
+        (GLX_CONTEXT_FORWARD_COMPATIBLE_BIT_ARB, "forward-compatible"),
+        (GLX_CONTEXT_ROBUST_ACCESS_BIT_ARB, "robust access"),
+    ];
+    for (bit, name) in named {
+        if flags & bit != 0 {
+            text.push_str(", ");
+            text.push_str(name);
+        }
+    }
+    let unknown = flags & !named.iter().fold(0, |m, (bit, _)| m | bit);
+    if unknown != 0 {
+        text.push_str(&format!(", flags {unknown:#x}"));
+    }
+    text
+}
+
+/// Prints the one-line notice of a refused glXCreateContextAttribsARB (once per `reason`).
+fn refuse_attribs(reason: &str, asked: &str, why: &str) {
+    notice::once(reason, || {
+        format!(
+            "glXCreateContextAttribsARB asked for {asked}; tessera provides {}{why}",
+            strings::provided_description()
+        )
+    });
+}
+
 /// GLX_ARB_create_context(_profile): compatibility contexts of the versions that work. A
 /// core profile is only meaningful from 3.2, which tessera does not reach; below 3.2 the
-/// profile mask is ignored as the extension says.
+/// profile mask is ignored as the extension says. A refusal reports its X error and prints
+/// one notice line naming what was asked and what tessera provides.
 ///
 /// # Safety
 /// `attribList` must be NULL or a None-terminated attribute/value list.
@@ -346,54 +409,74 @@ pub unsafe extern "C" fn glXCreateContextAttribsARB(
     const MINOR: u8 = request::CREATE_CONTEXT_ATTRIBS_ARB;
     guard(std::ptr::null_mut(), || {
         let Some(config) = config_of(dpy, config) else {
+            refuse_config("glXCreateContextAttribsARB", config);
             report(dpy, xerr::GLX_BAD_FBCONFIG, config as u64, MINOR);
             return std::ptr::null_mut();
         };
-        let (mut major, mut minor, mut flags, mut profile) = (1, 0, 0, GLX_CONTEXT_COMPATIBILITY_PROFILE_BIT_ARB);
+        let (mut major, mut minor, mut flags, mut profile) = (1, 0, 0, None);
         for pair in list.chunks(2) {
             let value = pair.get(1).copied().unwrap_or(0);
             match pair[0] {
                 GLX_CONTEXT_MAJOR_VERSION_ARB => major = value,
                 GLX_CONTEXT_MINOR_VERSION_ARB => minor = value,
                 GLX_CONTEXT_FLAGS_ARB => flags = value,
-                GLX_CONTEXT_PROFILE_MASK_ARB => profile = value,
+                GLX_CONTEXT_PROFILE_MASK_ARB => profile = Some(value),
                 GLX_RENDER_TYPE if value == GLX_RGBA_TYPE => {}
                 GLX_CONTEXT_RESET_NOTIFICATION_STRATEGY_ARB if value == GLX_NO_RESET_NOTIFICATION_ARB => {}
                 GLX_RENDER_TYPE => {
+                    notice::once("glx-color-index", || {
+                        "glXCreateContextAttribsARB asked for a color-index context; tessera renders RGBA only"
+                            .to_string()
+                    });
                     report(dpy, xerr::BAD_MATCH, 0, MINOR);
                     return std::ptr::null_mut();
                 }
-                _ => {
+                other => {
+                    notice::once("glx-context-attribute", || {
+                        format!(
+                            "glXCreateContextAttribsARB was given attribute {other:#x} = {value:#x}, which tessera \
+                             does not support (it takes the version, profile, flags and render type)"
+                        )
+                    });
                     report(dpy, xerr::BAD_VALUE, 0, MINOR);
                     return std::ptr::null_mut();
                 }
             }
         }
+        let asked = || describe_attribs(major, minor, profile, flags);
         // GLX_ARB_create_context: an unknown flag is BadValue; the forward-compatible flag
         // below 3.0 and the robust-access flag (not advertised) are BadMatch; the debug flag
         // changes nothing.
-        const KNOWN_FLAGS: c_int = GLX_CONTEXT_DEBUG_BIT_ARB | 2 | 4;
+        const KNOWN_FLAGS: c_int =
+            GLX_CONTEXT_DEBUG_BIT_ARB | GLX_CONTEXT_FORWARD_COMPATIBLE_BIT_ARB | GLX_CONTEXT_ROBUST_ACCESS_BIT_ARB;
         if flags & !KNOWN_FLAGS != 0 {
+            refuse_attribs("glx-context-flags", &asked(), " and knows no such flag");
             report(dpy, xerr::BAD_VALUE, 0, MINOR);
             return std::ptr::null_mut();
         }
+        let supported = strings::supports_version(major, minor);
         if flags & !GLX_CONTEXT_DEBUG_BIT_ARB != 0 {
+            let why = if supported { ", without forward-compatible or robust-access contexts" } else { "" };
+            refuse_attribs("glx-context-flags", &asked(), why);
             report(dpy, xerr::BAD_MATCH, 0, MINOR);
             return std::ptr::null_mut();
         }
-        let profile_valid =
-            profile == GLX_CONTEXT_CORE_PROFILE_BIT_ARB || profile == GLX_CONTEXT_COMPATIBILITY_PROFILE_BIT_ARB;
+        let profile_mask = profile.unwrap_or(GLX_CONTEXT_COMPATIBILITY_PROFILE_BIT_ARB);
+        let profile_valid = profile_mask == GLX_CONTEXT_CORE_PROFILE_BIT_ARB
+            || profile_mask == GLX_CONTEXT_COMPATIBILITY_PROFILE_BIT_ARB;
         if (major, minor) >= (3, 2) && !profile_valid {
+            refuse_attribs("glx-context-profile", &asked(), "");
             report(dpy, GlxError::Glx(GLX_BAD_PROFILE_ARB), 0, MINOR);
             return std::ptr::null_mut();
         }
-        if !strings::supports_version(major, minor) {
+        if !supported {
             // A version no configuration provides: GLXBadFBConfig (as Mesa; BadMatch for
             // versions that do not exist at all).
             let exists = (major == 1 && (0..=5).contains(&minor))
                 || (major == 2 && (0..=1).contains(&minor))
                 || (major == 3 && (0..=3).contains(&minor))
                 || (major == 4 && (0..=6).contains(&minor));
+            refuse_attribs("glx-context-version", &asked(), "");
             let error = if exists { xerr::GLX_BAD_FBCONFIG } else { xerr::BAD_MATCH };
             report(dpy, error, 0, MINOR);
             return std::ptr::null_mut();
@@ -421,6 +504,7 @@ fn make_current(dpy: *mut Display, draw: GLXDrawable, read: GLXDrawable, ctx: GL
             Err(MakeCurrentError::BadDrawable) => (xerr::GLX_BAD_DRAWABLE, draw as u64),
             Err(MakeCurrentError::BadAccess) => (xerr::BAD_ACCESS, ctx as u64),
         };
+        refuse_make_current(dpy, draw, read, ctx, minor, error);
         report(dpy, error, resource, minor);
         FALSE
     })
@@ -499,10 +583,17 @@ pub unsafe extern "C" fn glXChooseFBConfig(
         if dpy.is_null() {
             return std::ptr::null_mut();
         }
-        let Ok(criteria) = Criteria::fbconfig(&list) else {
-            return std::ptr::null_mut();
+        let criteria = match Criteria::fbconfig(&list) {
+            Ok(criteria) => criteria,
+            Err(bad) => {
+                refuse_criteria("glXChooseFBConfig", bad);
+                return std::ptr::null_mut();
+            }
         };
         let chosen = criteria.choose(glx::configs(addr(dpy)), screen);
+        if chosen.is_empty() {
+            refuse_unmatched("glXChooseFBConfig", &list, false, screen);
+        }
         // SAFETY: forwarded contract on `nitems`.
         unsafe { config_array(&chosen, nitems) }
     })
@@ -872,6 +963,165 @@ pub extern "C" fn glXSwapIntervalSGI(interval: c_int) -> c_int {
     })
 }
 
+// ---------------------------------------------------------------------------------------------
+// Refusal notices (winsys::notice): one line on stderr saying what was asked and what tessera
+// provides, once per reason per process, silenced by TESSERA_QUIET=1.
+// ---------------------------------------------------------------------------------------------
+
+/// A GLXFBConfig handle that is none of tessera's.
+fn refuse_config(call: &str, handle: GLXFBConfig) {
+    notice::once("glx-fbconfig", || {
+        format!(
+            "{call} was given GLXFBConfig {handle:p}, which is not one of tessera's configurations \
+             (those of glXChooseFBConfig or glXGetFBConfigs)"
+        )
+    });
+}
+
+/// What a caller's XVisualInfo is, for messages: "visual 0x21 (depth 24, class 4)".
+///
+/// # Safety
+/// `vis` must be NULL or point to an XVisualInfo.
+unsafe fn describe_visual(vis: *const XVisualInfo) -> String {
+    if vis.is_null() {
+        return "no visual (NULL)".to_string();
+    }
+    // SAFETY: checked non-null; the caller passes an XVisualInfo.
+    let v = unsafe { &*vis };
+    format!("visual {:#x} (depth {}, class {})", v.visualid, v.depth, v.class)
+}
+
+/// A visual without configurations.
+fn refuse_visual(call: &str, visual: String) {
+    notice::once("glx-visual", || {
+        format!(
+            "{call} was given {visual}, which has no tessera configuration; tessera renders on \
+             TrueColor and DirectColor visuals with 8-bit red, green and blue (see glXChooseVisual)"
+        )
+    });
+}
+
+/// An attribute list glXChooseVisual / glXChooseFBConfig does not accept.
+fn refuse_criteria(call: &str, bad: BadAttribute) {
+    notice::once("glx-choose-attribute", || match bad {
+        BadAttribute::ColorIndex => {
+            format!("{call} asked for a color-index visual (no GLX_RGBA); tessera renders RGBA only")
+        }
+        BadAttribute::Unknown(a) => format!("{call} was given attribute {a:#x}, which GLX does not define for it"),
+    });
+}
+
+/// GLX attribute names, for messages.
+fn attribute_name(attribute: c_int) -> Option<&'static str> {
+    Some(match attribute {
+        GLX_USE_GL => "GLX_USE_GL",
+        GLX_BUFFER_SIZE => "GLX_BUFFER_SIZE",
+        GLX_LEVEL => "GLX_LEVEL",
+        GLX_RGBA => "GLX_RGBA",
+        GLX_DOUBLEBUFFER => "GLX_DOUBLEBUFFER",
+        GLX_STEREO => "GLX_STEREO",
+        GLX_AUX_BUFFERS => "GLX_AUX_BUFFERS",
+        GLX_RED_SIZE => "GLX_RED_SIZE",
+        GLX_GREEN_SIZE => "GLX_GREEN_SIZE",
+        GLX_BLUE_SIZE => "GLX_BLUE_SIZE",
+        GLX_ALPHA_SIZE => "GLX_ALPHA_SIZE",
+        GLX_DEPTH_SIZE => "GLX_DEPTH_SIZE",
+        GLX_STENCIL_SIZE => "GLX_STENCIL_SIZE",
+        GLX_ACCUM_RED_SIZE => "GLX_ACCUM_RED_SIZE",
+        GLX_ACCUM_GREEN_SIZE => "GLX_ACCUM_GREEN_SIZE",
+        GLX_ACCUM_BLUE_SIZE => "GLX_ACCUM_BLUE_SIZE",
+        GLX_ACCUM_ALPHA_SIZE => "GLX_ACCUM_ALPHA_SIZE",
+        GLX_CONFIG_CAVEAT => "GLX_CONFIG_CAVEAT",
+        GLX_X_VISUAL_TYPE => "GLX_X_VISUAL_TYPE",
+        GLX_TRANSPARENT_TYPE => "GLX_TRANSPARENT_TYPE",
+        GLX_DRAWABLE_TYPE => "GLX_DRAWABLE_TYPE",
+        GLX_RENDER_TYPE => "GLX_RENDER_TYPE",
+        GLX_X_RENDERABLE => "GLX_X_RENDERABLE",
+        GLX_FBCONFIG_ID => "GLX_FBCONFIG_ID",
+        GLX_SAMPLE_BUFFERS => "GLX_SAMPLE_BUFFERS",
+        GLX_SAMPLES => "GLX_SAMPLES",
+        _ => return None,
+    })
+}
+
+/// An attribute list no configuration satisfies: the list as asked, and what tessera's
+/// configurations offer at most.
+fn refuse_unmatched(call: &str, list: &[i32], singles: bool, screen: c_int) {
+    notice::once("glx-choose-none", || {
+        let mut asked = Vec::new();
+        let mut i = 0;
+        while i < list.len() {
+            let a = list[i];
+            let name = attribute_name(a).map_or_else(|| format!("{a:#x}"), str::to_string);
+            let boolean = singles && matches!(a, GLX_USE_GL | GLX_RGBA | GLX_DOUBLEBUFFER | GLX_STEREO);
+            match list.get(i + 1) {
+                Some(v) if !boolean => {
+                    asked.push(format!("{name} {v}"));
+                    i += 1;
+                }
+                _ => asked.push(name),
+            }
+            i += 1;
+        }
+        format!(
+            "{call} found no configuration on screen {screen} for [{}]; tessera's configurations have \
+             8-bit red, green, blue (alpha 0 or 8), depth 0/16/24, stencil 0/8, accumulation 0/16, \
+             0/2/4/8 samples, stereo, no auxiliary buffers, level 0, on TrueColor/DirectColor visuals \
+             of 8-bit channels",
+            asked.join(", ")
+        )
+    });
+}
+
+/// A refused glXMakeCurrent / glXMakeContextCurrent.
+fn refuse_make_current(
+    dpy: *mut Display,
+    draw: GLXDrawable,
+    read: GLXDrawable,
+    ctx: GLXContext,
+    minor: u8,
+    error: GlxError,
+) {
+    let call = if minor == request::MAKE_CURRENT { "glXMakeCurrent" } else { "glXMakeContextCurrent" };
+    let (reason, message) = if error == xerr::GLX_BAD_CONTEXT {
+        ("glx-make-current-context", format!("{call} was given {ctx:p}, which is not a live tessera GLX context"))
+    } else if error == xerr::BAD_ACCESS {
+        (
+            "glx-make-current-thread",
+            format!(
+                "{call}: context {ctx:p} is current in another thread; a context is current in one thread at a time"
+            ),
+        )
+    } else if error == xerr::GLX_BAD_DRAWABLE {
+        (
+            "glx-make-current-drawable",
+            format!("{call} was given drawable {draw:#x}, which is no window, GLX pixmap or pbuffer of this display"),
+        )
+    } else if ctx.is_null() {
+        (
+            "glx-make-current-match",
+            format!("{call} was given drawable {draw:#x} without a context (None needs no context and no drawable)"),
+        )
+    } else if draw == 0 || read == 0 {
+        ("glx-make-current-match", format!("{call} was given context {ctx:p} without a drawable; tessera needs a window, pixmap or pbuffer to make a context current"))
+    } else {
+        let context_config = glx::lookup_context(ctx as usize).map_or(0, |c| c.config.id);
+        let drawable_config =
+            |xid: GLXDrawable| glx::lookup_drawable(addr(dpy), xid as u64).map_or(0, |d| d.config().id);
+        let (d, r) = (drawable_config(draw), drawable_config(read));
+        let culprit = if d != context_config { (draw, d) } else { (read, r) };
+        (
+            "glx-make-current-match",
+            format!(
+                "{call}: drawable {:#x} was created for GLXFBConfig id {}, the context for id {context_config}, \
+                 and their buffers differ; create both from the same configuration",
+                culprit.0, culprit.1
+            ),
+        )
+    };
+    notice::once(reason, || message);
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -889,6 +1139,22 @@ mod tests {
         );
         // SAFETY: NULL is allowed.
         assert!(unsafe { attribute_list(std::ptr::null(), false) }.is_empty());
+    }
+
+    #[test]
+    fn refused_context_requests_are_described() {
+        let core = Some(GLX_CONTEXT_CORE_PROFILE_BIT_ARB);
+        assert_eq!(describe_attribs(3, 3, core, 0), "OpenGL 3.3 core profile");
+        assert_eq!(
+            describe_attribs(3, 2, core, GLX_CONTEXT_FORWARD_COMPATIBLE_BIT_ARB | GLX_CONTEXT_DEBUG_BIT_ARB),
+            "OpenGL 3.2 core profile, debug, forward-compatible"
+        );
+        assert_eq!(describe_attribs(2, 1, None, 0x40), "OpenGL 2.1, flags 0x40");
+        assert_eq!(
+            describe_attribs(1, 0, Some(GLX_CONTEXT_COMPATIBILITY_PROFILE_BIT_ARB), GLX_CONTEXT_ROBUST_ACCESS_BIT_ARB),
+            "OpenGL 1.0 compatibility profile, robust access"
+        );
+        assert_eq!(describe_attribs(3, 2, Some(0x40), 0), "OpenGL 3.2 profile mask 0x40");
     }
 
     #[test]

@@ -122,9 +122,31 @@ pub const EXTENSIONS: &[&str] = &[
     "GL_SGIS_texture_lod",
 ];
 
+/// The GL version tessera provides, `(major, minor)`: the leading number of [`VERSION`], so
+/// that the string, the context-creation checks and the refusal notices cannot disagree.
+pub const PROVIDED_VERSION: (i32, i32) = {
+    let b = VERSION.as_bytes();
+    let (mut i, mut major, mut minor) = (0, 0, 0);
+    while b[i].is_ascii_digit() {
+        major = major * 10 + (b[i] - b'0') as i32;
+        i += 1;
+    }
+    i += 1; // the '.'
+    while b[i].is_ascii_digit() {
+        minor = minor * 10 + (b[i] - b'0') as i32;
+        i += 1;
+    }
+    (major, minor)
+};
+
 /// Whether a context of GL version `major.minor` (compatibility profile) can be created.
 pub fn supports_version(major: i32, minor: i32) -> bool {
-    (major, minor) <= (1, 5) && major >= 1 && minor >= 0
+    (major, minor) <= PROVIDED_VERSION && major >= 1 && minor >= 0
+}
+
+/// What tessera provides, for messages: e.g. "OpenGL 1.5 (compatibility)".
+pub fn provided_description() -> String {
+    format!("OpenGL {}.{} (compatibility)", PROVIDED_VERSION.0, PROVIDED_VERSION.1)
 }
 
 fn extensions_string() -> &'static str {
@@ -152,5 +174,20 @@ impl Context {
                 None
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn provided_version_is_the_version_string_number() {
+        let (major, minor) = PROVIDED_VERSION;
+        assert!(VERSION.starts_with(&format!("{major}.{minor} ")));
+        assert!(supports_version(major, minor) && supports_version(1, 0));
+        assert!(!supports_version(major, minor + 1) && !supports_version(major + 1, 0));
+        assert!(!supports_version(0, 9) && !supports_version(1, -1));
+        assert_eq!(provided_description(), format!("OpenGL {major}.{minor} (compatibility)"));
     }
 }

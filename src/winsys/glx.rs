@@ -101,6 +101,9 @@ pub fn configs(display: DisplayAddr) -> &'static [FbConfig] {
     let Some(x) = xlib() else {
         return &[];
     };
+    // The first GLX call on a display: Xlib learns the GLX error names (outside the
+    // registry's lock, since XInitExtension takes the display's).
+    super::glx_error::register_error_names(display);
     let mut all = display_configs();
     all.entry(display)
         .or_insert_with(|| {

@@ -11,6 +11,12 @@
 //! request's. Without a GLX extension on the server (its codes unknown) nothing is reported
 //! and the calls' return values alone tell the failure.
 //!
+//! So that Xlib's error text (XGetErrorText, and the default error handler's message) names
+//! these errors ("GLXBadContext", not "167"), the GLX extension is registered with the
+//! display through `XInitExtension`, with an `XESetErrorString` procedure giving the names of
+//! glxproto.h, as Mesa's libGL does through libXext; an `XESetCloseDisplay` procedure forgets
+//! the display when it closes (a later display at the same address is registered anew).
+//!
 //! `_XError` expects the display's internal lock to be held, which Xlib's `LockDisplay`
 //! macro takes through `dpy->lock_fns` (set only after `XInitThreads`). Those fields of
 //! `struct _XDisplay` (Xlibint.h) are part of Xlib's stable extension ABI; their offset is
@@ -18,8 +24,10 @@
 //! is set), and the functions found there are only called when they lie inside libX11
 //! itself (checked with `dladdr`).
 use super::glx::{server_extension, xlib, DisplayAddr};
-use std::ffi::{c_int, c_void, CStr};
-use std::sync::OnceLock;
+use std::collections::HashSet;
+use std::ffi::{c_char, c_int, c_void, CStr};
+use std::sync::{Mutex, MutexGuard, OnceLock};
+use x11_dl::xlib::{Display, XExtCodes};
 
 /// An error GLX generates: a core X error code or a GLX extension error (offset by the
 /// extension's error base).
@@ -39,6 +47,93 @@ pub const GLX_BAD_PIXMAP: GlxError = GlxError::Glx(3);
 pub const GLX_BAD_FBCONFIG: GlxError = GlxError::Glx(9);
 pub const GLX_BAD_PBUFFER: GlxError = GlxError::Glx(10);
 pub const GLX_BAD_WINDOW: GlxError = GlxError::Glx(12);
+
+/// The names of the GLX error codes 0..=13 (glxproto.h), as libGL gives them to Xlib.
+const ERROR_NAMES: [&CStr; 14] = [
+    c"GLXBadContext",
+    c"GLXBadContextState",
+    c"GLXBadDrawable",
+    c"GLXBadPixmap",
+    c"GLXBadContextTag",
+    c"GLXBadCurrentWindow",
+    c"GLXBadRenderRequest",
+    c"GLXBadLargeRequest",
+    c"GLXUnsupportedPrivateRequest",
+    c"GLXBadFBConfig",
+    c"GLXBadPbuffer",
+    c"GLXBadCurrentDrawable",
+    c"GLXBadWindow",
+    c"GLXBadProfileARB",
+];
+
+/// The name of GLX error `code` (relative to the extension's error base), if it is one.
+pub fn error_name(code: i32) -> Option<&'static CStr> {
+    usize::try_from(code).ok().and_then(|i| ERROR_NAMES.get(i)).copied()
+}
+
+/// The displays whose GLX error names are registered with Xlib.
+fn named_displays() -> MutexGuard<'static, HashSet<DisplayAddr>> {
+    static DISPLAYS: OnceLock<Mutex<HashSet<DisplayAddr>>> = OnceLock::new();
+    DISPLAYS.get_or_init(|| Mutex::new(HashSet::new())).lock().unwrap_or_else(|p| p.into_inner())
+}
+
+/// Xlib's error-string procedure for the GLX extension: writes the name of a GLX error code
+/// into `buffer` (truncated to `size` bytes with the NUL); other codes are left alone.
+unsafe extern "C" fn error_string(
+    _display: *mut Display,
+    code: c_int,
+    codes: *mut XExtCodes,
+    buffer: *mut c_char,
+    size: c_int,
+) -> *mut c_char {
+    if codes.is_null() || buffer.is_null() || size <= 0 {
+        return std::ptr::null_mut();
+    }
+    // SAFETY: Xlib passes the XExtCodes registered by XInitExtension below.
+    let first_error = unsafe { (*codes).first_error };
+    let Some(name) = error_name(code.wrapping_sub(first_error)) else {
+        return std::ptr::null_mut();
+    };
+    let bytes = name.to_bytes();
+    let n = bytes.len().min(size as usize - 1);
+    // SAFETY: Xlib's buffer holds `size` bytes; n + 1 <= size are written.
+    unsafe {
+        std::ptr::copy_nonoverlapping(bytes.as_ptr().cast::<c_char>(), buffer, n);
+        *buffer.add(n) = 0;
+    }
+    buffer
+}
+
+/// Xlib's close-display procedure for the GLX extension: the display is no longer named.
+unsafe extern "C" fn close_display(display: *mut Display, _codes: *mut XExtCodes) -> c_int {
+    named_displays().remove(&(display as DisplayAddr));
+    0
+}
+
+/// Registers the GLX error names with Xlib for `display` (once per open display), so that
+/// XGetErrorText and Xlib's default error handler name tessera's GLX errors. Does nothing
+/// without Xlib or a GLX extension on the server.
+pub fn register_error_names(display: DisplayAddr) {
+    if display == 0 || named_displays().contains(&display) {
+        return;
+    }
+    let Some(x) = xlib() else {
+        return;
+    };
+    // SAFETY: the application's open Display; XInitExtension returns Xlib's own record of
+    // the extension on this display (NULL when the server lacks it), valid until it closes;
+    // the procedures have the signatures Xlib calls them with.
+    unsafe {
+        let codes = (x.XInitExtension)(display as *mut Display, c"GLX".as_ptr());
+        if codes.is_null() {
+            return;
+        }
+        let extension = (*codes).extension;
+        (x.XESetErrorString)(display as *mut Display, extension, Some(error_string));
+        (x.XESetCloseDisplay)(display as *mut Display, extension, Some(close_display));
+    }
+    named_displays().insert(display);
+}
 
 /// The GLX requests (minor opcodes, glxproto.h) the calls stand for.
 pub mod request {
@@ -167,6 +262,7 @@ pub fn report(display: DisplayAddr, error: GlxError, resource: u64, minor: u8) {
     let Some((major, _, error_base)) = server_extension(display, c"GLX") else {
         return;
     };
+    register_error_names(display);
     let Ok(locks) = lock_functions(display) else {
         return;
     };
@@ -197,5 +293,34 @@ pub fn report(display: DisplayAddr, error: GlxError, resource: u64, minor: u8) {
         if let Some((_, unlock)) = locks {
             unlock(dpy);
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn glx_error_codes_have_xlib_names() {
+        assert_eq!(error_name(0), Some(c"GLXBadContext"));
+        assert_eq!(error_name(9), Some(c"GLXBadFBConfig"));
+        assert_eq!(error_name(13), Some(c"GLXBadProfileARB"));
+        assert_eq!(error_name(14), None);
+        assert_eq!(error_name(-1), None);
+        let mut codes = XExtCodes { extension: 150, major_opcode: 150, first_event: 90, first_error: 160 };
+        let mut buffer = [b'x' as c_char; 32];
+        let mut name = |code, buffer: &mut [c_char], size| {
+            // SAFETY: `codes` and a buffer of at least `size` bytes, as Xlib passes them.
+            let out = unsafe { error_string(std::ptr::null_mut(), code, &mut codes, buffer.as_mut_ptr(), size) };
+            // SAFETY: error_string wrote a NUL-terminated name when it returned the buffer.
+            (!out.is_null()).then(|| unsafe { CStr::from_ptr(out) }.to_str().unwrap().to_string())
+        };
+        assert_eq!(name(160 + 2, &mut buffer, 32).as_deref(), Some("GLXBadDrawable"));
+        assert_eq!(name(160 + 12, &mut buffer, 7).as_deref(), Some("GLXBad"));
+        // Core codes and other extensions' codes are not GLX's: the buffer is left alone.
+        buffer[0] = b'?' as c_char;
+        assert_eq!(name(8, &mut buffer, 32), None);
+        assert_eq!(name(160 + 14, &mut buffer, 32), None);
+        assert_eq!(buffer[0], b'?' as c_char);
     }
 }

@@ -5,7 +5,10 @@
  * argument "threads" (XInitThreads first: Xlib's display lock is then in use).
  * These are the specifications' rules; Mesa 22's GLX (on Xvfb) departs from some of them:
  * it makes a context current without drawables and one current in another thread, accepts
- * glXCreateWindow twice on one window, and reports GLXBadFBConfig for version 9.9.
+ * glXCreateWindow twice on one window, and reports GLXBadFBConfig for version 9.9; and it
+ * provides OpenGL 3.3 core, which tessera (OpenGL 1.5) refuses with GLXBadFBConfig.
+ * Xlib's error text names the GLX errors (XGetErrorText gives "GLXBadContext", not a bare
+ * number, and Xlib's default error handler prints the name), as with Mesa's libGL.
  * Prints one line per failed check; exit status 0 when all hold.
  *
  * Build: gcc -std=c11 -O1 -Wall tests/glx/glx_errors.c -lGL -lX11 -lpthread */
@@ -16,7 +19,10 @@
 #include <X11/Xlib.h>
 #include <pthread.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 /* GLX error codes and request minor opcodes (glxproto.h, which needs the server's headers) */
 enum { GLXBadContext = 0, GLXBadDrawable = 2, GLXBadPixmap = 3, GLXBadFBConfig = 9, GLXBadPbuffer = 10, GLXBadWindow = 12,
@@ -63,6 +69,55 @@ static void expect(Display *dpy, int before, int glx, int code, int minor, const
           glx_opcode, minor);
 }
 
+/* The GLX error names of glxproto.h, by code */
+static const char *const glx_error_names[] = {
+    "GLXBadContext",       "GLXBadContextState",  "GLXBadDrawable",      "GLXBadPixmap",
+    "GLXBadContextTag",    "GLXBadCurrentWindow", "GLXBadRenderRequest", "GLXBadLargeRequest",
+    "GLXUnsupportedPrivateRequest", "GLXBadFBConfig", "GLXBadPbuffer", "GLXBadCurrentDrawable",
+    "GLXBadWindow",        "GLXBadProfileARB"};
+
+/* XGetErrorText of the last error names it */
+static void expect_text(Display *dpy, const char *name)
+{
+    char text[128] = "";
+    XGetErrorText(dpy, last_code, text, sizeof text);
+    CHECK(strcmp(text, name) == 0, "XGetErrorText(%d) = \"%s\" (want \"%s\")", last_code, text, name);
+}
+
+/* Xlib's default error handler, in a child process with its own connection, prints the GLX
+ * error's name for an error tessera raises (and exits the child, as it always does). */
+static void check_default_handler_text(void)
+{
+    int fds[2];
+    if (pipe(fds) != 0)
+        return;
+    pid_t child = fork();
+    if (child == 0) {
+        dup2(fds[1], 2);
+        close(fds[0]);
+        Display *d = XOpenDisplay(NULL);
+        if (!d)
+            _exit(3);
+        int eb, evb;
+        glXQueryExtension(d, &eb, &evb);
+        glXDestroyContext(d, (GLXContext)(void *)&eb); /* GLXBadContext, to the default handler */
+        XSync(d, False);
+        _exit(0); /* not reached: the default handler exits */
+    }
+    close(fds[1]);
+    char out[4096] = "";
+    size_t used = 0;
+    ssize_t got;
+    while (used < sizeof out - 1 && (got = read(fds[0], out + used, sizeof out - 1 - used)) > 0)
+        used += (size_t)got;
+    close(fds[0]);
+    int status = 0;
+    waitpid(child, &status, 0);
+    CHECK(strstr(out, "X Error of failed request:  GLXBadContext") != NULL,
+          "the default error handler printed: %s", out);
+    CHECK(strstr(out, "(GLX)") != NULL, "the default error handler does not name the GLX extension: %s", out);
+}
+
 static Display *thread_dpy;
 static GLXContext thread_ctx;
 static GLXPbuffer thread_pb;
@@ -101,6 +156,17 @@ int main(int argc, char **argv)
     int error_base = -1;
     glXQueryExtension(dpy, &error_base, &event_base);
     CHECK(error_base == glx_error_base, "glXQueryExtension error base %d, server's %d", error_base, glx_error_base);
+    /* Xlib names every GLX error code (the extension registered by tessera) */
+    for (int i = 0; i < (int)(sizeof glx_error_names / sizeof *glx_error_names); i++) {
+        char text[128] = "";
+        XGetErrorText(dpy, glx_error_base + i, text, sizeof text);
+        CHECK(strcmp(text, glx_error_names[i]) == 0, "XGetErrorText(GLX error %d) = \"%s\" (want \"%s\")", i,
+              text, glx_error_names[i]);
+    }
+    char core_text[128] = "";
+    XGetErrorText(dpy, BadMatch, core_text, sizeof core_text);
+    CHECK(strstr(core_text, "BadMatch") != NULL, "XGetErrorText(BadMatch) = \"%s\"", core_text);
+    check_default_handler_text();
     XSetErrorHandler(handler);
     int screen = DefaultScreen(dpy), count = 0;
     int attribs[] = {GLX_DOUBLEBUFFER, True, GLX_RED_SIZE, 8, GLX_DRAWABLE_TYPE, GLX_WINDOW_BIT | GLX_PBUFFER_BIT, None};
@@ -122,6 +188,7 @@ int main(int argc, char **argv)
     int n = errors_seen;
     CHECK(!glXMakeContextCurrent(dpy, pb, pb, bogus), "bogus context made current");
     expect(dpy, n, 1, GLXBadContext, X_GLXMakeContextCurrent, "glXMakeContextCurrent(bogus context)");
+    expect_text(dpy, "GLXBadContext");
     n = errors_seen;
     CHECK(!glXMakeCurrent(dpy, pb, NULL), "no context with a drawable");
     expect(dpy, n, 0, BadMatch, X_GLXMakeCurrent, "glXMakeCurrent(drawable, NULL)");
@@ -146,6 +213,7 @@ int main(int argc, char **argv)
     n = errors_seen;
     glXDestroyWindow(dpy, 0x7fffff0);
     expect(dpy, n, 1, GLXBadWindow, X_GLXDestroyWindow, "glXDestroyWindow(bogus)");
+    expect_text(dpy, "GLXBadWindow");
     n = errors_seen;
     glXDestroyPixmap(dpy, 0x7fffff0);
     expect(dpy, n, 1, GLXBadPixmap, X_GLXDestroyPixmap, "glXDestroyPixmap(bogus)");
@@ -189,6 +257,13 @@ int main(int argc, char **argv)
         n = errors_seen;
         CHECK(create_attribs(dpy, config, NULL, True, bad_profile) == NULL, "profile mask 0x40");
         expect(dpy, n, 1, GLXBadProfileARB, X_GLXCreateContextAttribsARB, "glXCreateContextAttribsARB(bad profile)");
+        expect_text(dpy, "GLXBadProfileARB");
+        int v33[] = {GLX_CONTEXT_MAJOR_VERSION_ARB, 3, GLX_CONTEXT_MINOR_VERSION_ARB, 3, GLX_CONTEXT_PROFILE_MASK_ARB,
+                     GLX_CONTEXT_CORE_PROFILE_BIT_ARB, None};
+        n = errors_seen;
+        CHECK(create_attribs(dpy, config, NULL, True, v33) == NULL, "version 3.3 core");
+        expect(dpy, n, 1, GLXBadFBConfig, X_GLXCreateContextAttribsARB, "glXCreateContextAttribsARB(3.3 core)");
+        expect_text(dpy, "GLXBadFBConfig");
     } else {
         CHECK(0, "no glXCreateContextAttribsARB");
     }
