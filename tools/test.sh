@@ -3,7 +3,7 @@
 # load), the tests (Rust unit tests and tests/capi.rs, which runs every capi-tests/*.c on
 # Mesa and on tessera; compare/tests/examples.rs, which runs tessera-compare on examples-c/
 # against Mesa and opens its HTML report in headless chromium), the GLX checks under Xvfb
-# (tools/xvfb-tests.sh, piglit included), the fuzz target (tools/fuzz.sh), formatting and clippy.
+# (tools/xvfb-tests.sh, piglit included), real Python clients (tools/clients.sh), the fuzz target (tools/fuzz.sh), formatting and clippy.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -13,6 +13,8 @@ cargo test --release
 # A subset of the capi tests under valgrind memcheck: invalid accesses, leaks (about 2 min).
 bash tools/memcheck.sh
 bash tools/xvfb-tests.sh   # GLX under a private Xvfb: glxinfo, glxgears, freeglut, two threads, piglit
+# Real clients from PyPI (PyOpenGL, MuJoCo, dm_control, glfw) in a cached venv, on tessera.
+bash tools/clients.sh
 # Command-stream fuzzing (fuzz/): past findings replayed, then 90 s of libFuzzer.
 bash tools/fuzz.sh 90
 # A smoke run of the benchmark (64x64, one frame per scene: seconds; writes target/bench/quick).
