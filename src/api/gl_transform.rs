@@ -228,11 +228,10 @@ pub extern "C" fn glOrtho(
     record_or_run(move |ctx| ctx.ortho(left, right, bottom, top, near_val, far_val))
 }
 
-/// glClipControl (ARB_clip_control, GL 4.5): runs at once, also while a display list is being
-/// compiled, as in Mesa.
+/// glClipControl (ARB_clip_control, GL 4.5); compiled into display lists, as in Mesa.
 #[no_mangle]
 pub extern "C" fn glClipControl(origin: GLenum, depth: GLenum) {
-    with_context((), |ctx| ctx.clip_control(origin, depth))
+    record_or_run(move |ctx| ctx.clip_control(origin, depth))
 }
 
 /// # Safety

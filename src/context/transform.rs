@@ -175,8 +175,7 @@ impl Context {
         }
     }
 
-    /// glClipControl (ARB_clip_control). Not compiled into display lists: Mesa 22 runs it at
-    /// once even while compiling, and so does tessera.
+    /// glClipControl (ARB_clip_control).
     pub fn clip_control(&mut self, origin: GLenum, depth: GLenum) {
         if !self.check_outside_begin_end() {
             return;
