@@ -131,9 +131,18 @@ pub const EXTENSIONS: &[&str] = &[
     "GL_SGIS_texture_lod",
 ];
 
+/// The GL version contexts provide, (major, minor), read from [`VERSION`] so that the string
+/// and every check of a requested version (OSMesaCreateContextAttribs, its refusal notice)
+/// agree.
+pub fn version() -> (i32, i32) {
+    let number = VERSION.split(' ').next().unwrap_or_default();
+    let mut parts = number.split('.').map(|p| p.parse().unwrap_or(0));
+    (parts.next().unwrap_or(1), parts.next().unwrap_or(0))
+}
+
 /// Whether a context of GL version `major.minor` (compatibility profile) can be created.
 pub fn supports_version(major: i32, minor: i32) -> bool {
-    (major, minor) <= (1, 5) && major >= 1 && minor >= 0
+    (major, minor) <= version() && major >= 1 && minor >= 0
 }
 
 fn extensions_string() -> &'static str {
@@ -161,5 +170,16 @@ impl Context {
                 None
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn the_version_checks_read_the_version_string() {
+        let (major, minor) = super::version();
+        assert!(super::VERSION.starts_with(&format!("{major}.{minor} ")));
+        assert!(super::supports_version(major, minor) && super::supports_version(1, 0));
+        assert!(!super::supports_version(major, minor + 1) && !super::supports_version(major + 1, 0));
     }
 }
