@@ -5772,6 +5772,30 @@ typedef void (*OSMESAproc)();
 #error "GL_UPPER_LEFT differs from the system GL headers"
 #endif
 
+#if !defined(GL_CLIP_ORIGIN)
+#define GL_CLIP_ORIGIN 37724
+#elif (GL_CLIP_ORIGIN) != (37724)
+#error "GL_CLIP_ORIGIN differs from the system GL headers"
+#endif
+
+#if !defined(GL_CLIP_DEPTH_MODE)
+#define GL_CLIP_DEPTH_MODE 37725
+#elif (GL_CLIP_DEPTH_MODE) != (37725)
+#error "GL_CLIP_DEPTH_MODE differs from the system GL headers"
+#endif
+
+#if !defined(GL_NEGATIVE_ONE_TO_ONE)
+#define GL_NEGATIVE_ONE_TO_ONE 37726
+#elif (GL_NEGATIVE_ONE_TO_ONE) != (37726)
+#error "GL_NEGATIVE_ONE_TO_ONE differs from the system GL headers"
+#endif
+
+#if !defined(GL_ZERO_TO_ONE)
+#define GL_ZERO_TO_ONE 37727
+#elif (GL_ZERO_TO_ONE) != (37727)
+#error "GL_ZERO_TO_ONE differs from the system GL headers"
+#endif
+
 #if !defined(GL_STENCIL_BACK_REF)
 #define GL_STENCIL_BACK_REF 36003
 #elif (GL_STENCIL_BACK_REF) != (36003)
@@ -8105,6 +8129,8 @@ void glTranslated(GLdouble x, GLdouble y, GLdouble z);
 void glFrustum(GLdouble left, GLdouble right, GLdouble bottom, GLdouble top, GLdouble near_val, GLdouble far_val);
 
 void glOrtho(GLdouble left, GLdouble right, GLdouble bottom, GLdouble top, GLdouble near_val, GLdouble far_val);
+
+void glClipControl(GLenum origin, GLenum depth);
 
 void glClipPlane(GLenum plane, const GLdouble *equation);
 

@@ -228,6 +228,12 @@ pub extern "C" fn glOrtho(
     record_or_run(move |ctx| ctx.ortho(left, right, bottom, top, near_val, far_val))
 }
 
+/// glClipControl (ARB_clip_control, GL 4.5); compiled into display lists, as in Mesa.
+#[no_mangle]
+pub extern "C" fn glClipControl(origin: GLenum, depth: GLenum) {
+    record_or_run(move |ctx| ctx.clip_control(origin, depth))
+}
+
 /// # Safety
 /// `equation` is NULL (ignored) or points to 4 doubles.
 #[no_mangle]

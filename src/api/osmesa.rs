@@ -3,9 +3,11 @@
 //! Handles given to C are identifiers looked up in the registry of `winsys::osmesa`, never
 //! dereferenced, so a NULL, stale or foreign handle is refused instead of crashing.
 use super::guard;
+use crate::context::strings;
 use crate::framebuffer::external::CallerBuffer;
 use crate::gl::enums::*;
 use crate::gl::types::*;
+use crate::winsys::notice;
 use crate::winsys::osmesa::{self as osm, BindFailure, PixelLayout, Request};
 use std::ffi::{c_char, c_int, c_uint, c_void, CStr};
 
@@ -45,19 +47,52 @@ fn share_handle(sharelist: OSMesaContext) -> Option<usize> {
     (!sharelist.is_null()).then(|| handle_of(sharelist))
 }
 
-fn create(format: GLenum, depth: GLint, stencil: GLint, accum: GLint, sharelist: OSMesaContext) -> OSMesaContext {
+/// The OSMesa formats tessera provides, as a refusal notice names them.
+const FORMATS: &str = "OSMESA_RGBA, OSMESA_BGRA, OSMESA_ARGB, OSMESA_RGB, OSMESA_BGR and OSMESA_RGB_565";
+
+/// OSMesaCreateContext(Ext/Attribs) after their own checks; `entry` names the entry point
+/// in a refusal notice.
+fn create(
+    entry: &str,
+    format: GLenum,
+    depth: GLint,
+    stencil: GLint,
+    accum: GLint,
+    sharelist: OSMesaContext,
+) -> OSMesaContext {
     guard(std::ptr::null_mut(), || {
         let Some(layout) = PixelLayout::from_osmesa(format) else {
+            notice::once("osmesa-format", || {
+                format!("{entry} asked for pixel format {}; tessera provides {FORMATS}", osmesa_format_name(format))
+            });
             return std::ptr::null_mut();
         };
+        if depth < 0 || stencil < 0 || accum < 0 {
+            notice::once("osmesa-buffer-sizes", || {
+                format!(
+                    "{entry} asked for {depth} depth, {stencil} stencil and {accum} accumulation bits; \
+                     tessera provides any size from 0 (depth up to 32 bits, stencil 8, accumulation 16 per channel)"
+                )
+            });
+            return std::ptr::null_mut();
+        }
         let request = Request { layout, depth_bits: depth, stencil_bits: stencil, accum_bits: accum };
         to_c(osm::create(request, share_handle(sharelist)))
     })
 }
 
+/// The name of a format tessera does not provide, for a notice (its number when OSMesa has
+/// no name for it).
+fn osmesa_format_name(format: GLenum) -> String {
+    match format {
+        OSMESA_COLOR_INDEX => "OSMESA_COLOR_INDEX".into(),
+        other => format!("0x{other:x}"),
+    }
+}
+
 #[no_mangle]
 pub extern "C" fn OSMesaCreateContext(format: GLenum, sharelist: OSMesaContext) -> OSMesaContext {
-    create(format, 24, 8, 0, sharelist)
+    create("OSMesaCreateContext", format, 24, 8, 0, sharelist)
 }
 
 #[no_mangle]
@@ -68,7 +103,7 @@ pub extern "C" fn OSMesaCreateContextExt(
     accumBits: GLint,
     sharelist: OSMesaContext,
 ) -> OSMesaContext {
-    create(format, depthBits, stencilBits, accumBits, sharelist)
+    create("OSMesaCreateContextExt", format, depthBits, stencilBits, accumBits, sharelist)
 }
 
 /// # Safety
@@ -101,19 +136,36 @@ pub unsafe extern "C" fn OSMesaCreateContextAttribs(
                 OSMESA_PROFILE => profile = value,
                 OSMESA_CONTEXT_MAJOR_VERSION => major = value,
                 OSMESA_CONTEXT_MINOR_VERSION => minor = value,
-                _ => return std::ptr::null_mut(),
+                _ => {
+                    notice::once("osmesa-attribute", || {
+                        format!(
+                            "OSMesaCreateContextAttribs was given attribute 0x{attr:x}, which tessera does not know; \
+                             it knows OSMESA_FORMAT, OSMESA_DEPTH_BITS, OSMESA_STENCIL_BITS, OSMESA_ACCUM_BITS, \
+                             OSMESA_PROFILE, OSMESA_CONTEXT_MAJOR_VERSION and OSMESA_CONTEXT_MINOR_VERSION"
+                        )
+                    });
+                    return std::ptr::null_mut();
+                }
             }
             i += 2;
         }
     }
-    if profile != OSMESA_COMPAT_PROFILE {
-        // Core profiles need shaders, which tessera does not have.
+    // Core profiles need shaders, which tessera does not have.
+    if profile != OSMESA_COMPAT_PROFILE || !strings::supports_version(major, minor) {
+        notice::once("osmesa-version", || {
+            let asked = match profile {
+                OSMESA_CORE_PROFILE => "core profile".to_string(),
+                OSMESA_COMPAT_PROFILE => "compatibility profile".to_string(),
+                other => format!("profile 0x{other:x}"),
+            };
+            format!(
+                "OSMesaCreateContextAttribs asked for OpenGL {major}.{minor} {asked}; tessera provides {}",
+                strings::provided_description()
+            )
+        });
         return std::ptr::null_mut();
     }
-    if !crate::context::strings::supports_version(major, minor) {
-        return std::ptr::null_mut();
-    }
-    create(format, depth, stencil, accum, sharelist)
+    create("OSMesaCreateContextAttribs", format, depth, stencil, accum, sharelist)
 }
 
 #[no_mangle]

@@ -95,6 +95,7 @@ mod tests {
             "GL_EXT_framebuffer_blit" => list("glBlitFramebufferEXT"),
             "GL_EXT_multi_draw_arrays" => list("glMultiDrawArraysEXT glMultiDrawElementsEXT"),
             "GL_EXT_polygon_offset_clamp" => list("glPolygonOffsetClampEXT"),
+            "GL_ARB_clip_control" => list("glClipControl"),
             "GL_ARB_multisample" => list("glSampleCoverageARB"),
             "GL_ARB_multitexture" => {
                 let mut names = list("glActiveTextureARB glClientActiveTextureARB");

@@ -364,6 +364,7 @@ mod tests {
         (x.normalize, x.rescale_normal, x.depth_clamp) = (!x.normalize, !x.rescale_normal, !x.depth_clamp);
         x.clip_plane_equations[3] = [1.0, -2.0, 0.5, 4.0];
         x.matrix_mode = GL_TEXTURE;
+        (x.clip_origin, x.clip_depth_mode) = (GL_UPPER_LEFT, GL_ZERO_TO_ONE);
         t.polygon = PolygonState {
             cull_face: true,
             smooth: true,

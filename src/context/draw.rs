@@ -586,7 +586,6 @@ impl Context {
     /// The per-draw geometry constants.
     fn geometry(&self, depth_bits: u32, height: usize) -> Geometry {
         let [x, y, w, h] = self.state.viewport.rect;
-        let [near, far] = self.state.viewport.depth_range;
         let half = [w as f32 * 0.5, h as f32 * 0.5];
         let centre = [x as f32 + half[0], y as f32 + half[1]];
         // The guard band in NDC: as far out as keeps window coordinates within GUARD_BAND.
@@ -601,10 +600,12 @@ impl Context {
             guard_x: guard(centre[0], half[0]),
             guard_y: guard(centre[1], half[1]),
             clip_z: !transform.depth_clamp,
+            zero_to_one: self.clip_zero_to_one(),
             user,
         };
         let lp = &self.state.line_point;
         // Mesa's offset stage scales units by twice the depth buffer's resolution.
+        let (depth_scale, depth_offset) = self.depth_transform();
         let units_scale = if depth_bits > 0 { (2.0 / ((1u64 << depth_bits) - 1) as f64) as f32 } else { 0.0 };
         Geometry {
             accuracy: self.accuracy,
@@ -613,9 +614,10 @@ impl Context {
             smooth_polygons: polygon.smooth,
             per_sample: false,
             varyings: self.varyings_needed(),
+            // glClipControl decides the depth mapping and the sign of y (ARB_clip_control).
             viewport: Viewport {
-                scale: [half[0], half[1], ((far - near) * 0.5) as f32],
-                offset: [centre[0], centre[1], ((far + near) * 0.5) as f32],
+                scale: [half[0], half[1] * self.viewport_y_sign(), depth_scale as f32],
+                offset: [centre[0], centre[1], depth_offset as f32],
                 offset_down: height as f32 - centre[1],
             },
             line_planes: ClipPlanes { guard_x: 1.0, guard_y: 1.0, ..planes.clone() },
@@ -646,7 +648,9 @@ impl Context {
             flat: self.state.lighting.shade_model == GL_FLAT,
             two_side: self.state.lighting.enabled && self.state.lighting.two_side,
             cull: polygon.cull_face.then_some(polygon.cull_face_mode),
-            front_ccw: polygon.front_face == GL_CCW,
+            // GL_UPPER_LEFT mirrors y, and with it every polygon's window winding: the facing
+            // rule is mirrored too (ARB_clip_control), as Mesa flips front_ccw.
+            front_ccw: (polygon.front_face == GL_CCW) != (self.viewport_y_sign() < 0.0),
             offset: polygon.offset_fill.then_some((polygon.offset_factor, polygon.offset_units)),
             offset_clamp: polygon.offset_clamp,
             depth_bits,

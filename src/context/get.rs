@@ -329,6 +329,8 @@ impl Context {
 
             // Matrices.
             GL_MATRIX_MODE => one(Enum(s.transform.matrix_mode)),
+            GL_CLIP_ORIGIN => one(Enum(s.transform.clip_origin)),
+            GL_CLIP_DEPTH_MODE => one(Enum(s.transform.clip_depth_mode)),
             GL_MODELVIEW_MATRIX => matrix(StackId::Modelview),
             GL_PROJECTION_MATRIX => matrix(StackId::Projection),
             GL_TEXTURE_MATRIX => matrix(texture_stack),

@@ -8,6 +8,11 @@
 //! (lit under GL_LIGHTING, texture coordinates through texgen and the texture matrices,
 //! clamped as vertex colors are); glWindowPos takes the current ones. The raster distance is the fog coordinate under GL_FOG_COORD, else the eye
 //! distance. glWindowPos sets window coordinates directly and is always valid.
+//!
+//! glClipControl (ARB_clip_control) applies to glRasterPos as to any vertex: GL_ZERO_TO_ONE
+//! moves the near plane to z_c = 0 and maps depth as n + (f − n)·z_ndc, GL_UPPER_LEFT
+//! negates y in the viewport transform. glWindowPos and glBitmap's moves are in window
+//! coordinates and unaffected.
 use super::get::Value;
 use super::Context;
 use crate::gl::enums::*;
@@ -81,8 +86,10 @@ impl Context {
         let eye = Vec4::from_array(transformed.eye);
         let clip = Vec4::from_array(transformed.clip);
         let transform = &self.state.transform;
+        // The near plane is z = 0 under GL_ZERO_TO_ONE (ARB_clip_control).
+        let near_z = if self.clip_zero_to_one() { 0.0 } else { -clip.w };
         let mut inside = [clip.x, clip.y].iter().all(|&c| -clip.w <= c && c <= clip.w)
-            && (transform.depth_clamp || (-clip.w <= clip.z && clip.z <= clip.w));
+            && (transform.depth_clamp || (near_z <= clip.z && clip.z <= clip.w));
         for (plane, &on) in transform.clip_plane_equations.iter().zip(&transform.clip_planes) {
             if on {
                 let p = plane.map(|c| c as f32);
@@ -99,11 +106,14 @@ impl Context {
         let inv_w = 1.0 / clip.w;
         let ndc = [clip.x * inv_w, clip.y * inv_w, clip.z * inv_w];
         let (half_w, half_h) = (vw as f32 * 0.5, vh as f32 * 0.5);
-        let mut z = ndc[2] * ((far - near) * 0.5) + (near + far) * 0.5;
+        // The viewport transform of draws, with glClipControl's depth mapping and y sign.
+        let (depth_scale, depth_offset) = self.depth_transform();
+        let mut z = ndc[2] * depth_scale as f32 + depth_offset as f32;
         if transform.depth_clamp {
             z = z.clamp(near.min(far), near.max(far));
         }
-        let window = [ndc[0] * half_w + (vx as f32 + half_w), ndc[1] * half_h + (vy as f32 + half_h), z, clip.w];
+        let y_scale = half_h * self.viewport_y_sign();
+        let window = [ndc[0] * half_w + (vx as f32 + half_w), ndc[1] * y_scale + (vy as f32 + half_h), z, clip.w];
         let distance = if self.state.fog.coord_src == GL_FOG_COORD {
             self.state.current.fog_coord
         } else {

@@ -364,6 +364,10 @@ pub struct TransformState {
     pub normalize: bool,
     pub rescale_normal: bool,
     pub depth_clamp: bool,
+    /// glClipControl (ARB_clip_control): GL_LOWER_LEFT or GL_UPPER_LEFT, and
+    /// GL_NEGATIVE_ONE_TO_ONE or GL_ZERO_TO_ONE.
+    pub clip_origin: GLenum,
+    pub clip_depth_mode: GLenum,
     /// glMatrixMode: GL_MODELVIEW, GL_PROJECTION, GL_TEXTURE or GL_COLOR.
     pub matrix_mode: GLenum,
 }
@@ -376,6 +380,8 @@ impl Default for TransformState {
             normalize: false,
             rescale_normal: false,
             depth_clamp: false,
+            clip_origin: GL_LOWER_LEFT,
+            clip_depth_mode: GL_NEGATIVE_ONE_TO_ONE,
             matrix_mode: GL_MODELVIEW,
         }
     }

@@ -51,6 +51,14 @@ pub const VERSION: &str = concat!("1.5 tessera ", env!("CARGO_PKG_VERSION"), "\0
 // | 1.5     | Occlusion queries                                | works  | capi occlusion_queries |
 // | 1.5     | Shadow functions (all 8 compare funcs)           | works  | context/texture.rs |
 //
+// Beyond GL 1.5, extensions checked the same way:
+//
+// | Extension            | Feature                                      | Status | Where / checked by |
+// |----------------------|----------------------------------------------|--------|--------------------|
+// | GL_ARB_clip_control  | glClipControl, GL_CLIP_ORIGIN/DEPTH_MODE queries, GL_TRANSFORM_BIT | works | context/transform.rs; capi clip_control |
+// |                      | GL_ZERO_TO_ONE clipping and depth mapping (draws, glRasterPos) | works | vertex/clip.rs, context/draw.rs, raster_pos.rs; capi clip_control (reversed-Z scene) |
+// |                      | GL_UPPER_LEFT: y mirrored, facing mirrored    | works | context/draw.rs; capi clip_control (culling) |
+//
 // Outside these lists but needed by every version: GL 1.0's evaluators (capi evaluators),
 // polygon/line/point smoothing (capi smooth_primitives), and color-index pixel data in RGBA
 // mode (glTexImage of GL_COLOR_INDEX, capi texture_color_index; glDrawPixels of
@@ -64,6 +72,7 @@ pub const VERSION: &str = concat!("1.5 tessera ", env!("CARGO_PKG_VERSION"), "\0
 /// EXT entry points do not exist), GL_EXT_texture_env_dot3 (its enums differ from the ARB
 /// ones tessera implements), GL_EXT_abgr (GL_ABGR_EXT is not a pixel format here).
 pub const EXTENSIONS: &[&str] = &[
+    "GL_ARB_clip_control",
     "GL_ARB_depth_clamp",
     "GL_ARB_depth_texture",
     "GL_ARB_draw_buffers",

@@ -1,5 +1,14 @@
 //! The transformation commands: glMatrixMode, the matrix stack and matrix commands,
-//! glActiveTexture (which selects the texture matrix stack) and glClipPlane.
+//! glActiveTexture (which selects the texture matrix stack), glClipPlane and glClipControl.
+//!
+//! glClipControl (ARB_clip_control) chooses the clip-space conventions every vertex (drawn
+//! or glRasterPos's) is mapped with: GL_ZERO_TO_ONE clips to 0 ≤ z_c ≤ w_c and maps z_ndc
+//! onto the depth range as n + (f − n)·z_ndc, which with a float depth buffer and a
+//! reversed projection keeps depth precision at any distance; GL_UPPER_LEFT negates y in
+//! the viewport transform (Direct3D's convention), which mirrors the window winding of
+//! every polygon, so the facing rule is mirrored too and GL_CCW still means
+//! counter-clockwise in normalized device coordinates. [`Context::depth_transform`] and
+//! [`Context::viewport_y_sign`] are the one place these mappings are decided.
 //!
 //! The arithmetic is [`super::matrix`]'s, single precision as in Mesa: double-precision entry
 //! points convert their arguments to float first, and so glFrustum and glOrtho validate the
@@ -166,6 +175,47 @@ impl Context {
         }
     }
 
+    /// glClipControl (ARB_clip_control).
+    pub fn clip_control(&mut self, origin: GLenum, depth: GLenum) {
+        if !self.check_outside_begin_end() {
+            return;
+        }
+        if !matches!(origin, GL_LOWER_LEFT | GL_UPPER_LEFT) || !matches!(depth, GL_NEGATIVE_ONE_TO_ONE | GL_ZERO_TO_ONE)
+        {
+            self.error(GL_INVALID_ENUM);
+            return;
+        }
+        let transform = &mut self.state.transform;
+        (transform.clip_origin, transform.clip_depth_mode) = (origin, depth);
+    }
+
+    /// The depth part of the viewport transform, z_w = z_ndc · scale + offset, for the depth
+    /// range and GL_CLIP_DEPTH_MODE: ((f − n)/2, (n + f)/2) for GL_NEGATIVE_ONE_TO_ONE,
+    /// (f − n, n) for GL_ZERO_TO_ONE. In double precision, rounded once by the caller, as
+    /// Mesa computes its viewport scale and translation.
+    pub(crate) fn depth_transform(&self) -> (f64, f64) {
+        let [near, far] = self.state.viewport.depth_range;
+        if self.clip_zero_to_one() {
+            (far - near, near)
+        } else {
+            ((far - near) * 0.5, (far + near) * 0.5)
+        }
+    }
+
+    /// Whether clip-space z is clipped to [0, w] (GL_ZERO_TO_ONE) rather than [−w, w].
+    pub(crate) fn clip_zero_to_one(&self) -> bool {
+        self.state.transform.clip_depth_mode == GL_ZERO_TO_ONE
+    }
+
+    /// The sign of the y scale of the viewport transform: −1 under GL_UPPER_LEFT.
+    pub(crate) fn viewport_y_sign(&self) -> f32 {
+        if self.state.transform.clip_origin == GL_UPPER_LEFT {
+            -1.0
+        } else {
+            1.0
+        }
+    }
+
     /// glClipPlane: the plane (converted to float) is multiplied by the inverse of the current
     /// modelview matrix and kept in eye coordinates.
     pub fn clip_plane(&mut self, plane: GLenum, equation: [f64; 4]) {
@@ -327,7 +377,7 @@ mod tests {
         let mut ctx = context();
         ctx.inside_begin_end = true;
         let before = (ctx.matrices.clone(), ctx.state.clone());
-        let commands: [fn(&mut Context); 14] = [
+        let commands: [fn(&mut Context); 15] = [
             |c| c.matrix_mode(GL_PROJECTION),
             |c| c.active_texture(GL_TEXTURE1),
             |c| c.push_matrix(),
@@ -342,11 +392,72 @@ mod tests {
             |c| c.ortho(-1.0, 1.0, -1.0, 1.0, 1.0, 2.0),
             |c| c.clip_plane(GL_CLIP_PLANE0, [1.0; 4]),
             |c| assert_eq!(c.get_clip_plane(GL_CLIP_PLANE0), None),
+            |c| c.clip_control(GL_UPPER_LEFT, GL_ZERO_TO_ONE),
         ];
         for command in commands {
             command(&mut ctx);
             assert_eq!(ctx.take_error(), GL_INVALID_OPERATION);
         }
         assert_eq!((ctx.matrices.clone(), ctx.state.clone()), before);
+    }
+
+    #[test]
+    fn clip_control_accepts_only_its_enums_and_changes_nothing_on_error() {
+        let mut ctx = context();
+        let clip = |c: &Context| (c.state.transform.clip_origin, c.state.transform.clip_depth_mode);
+        assert_eq!(clip(&ctx), (GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE));
+        ctx.clip_control(GL_UPPER_LEFT, GL_ZERO_TO_ONE);
+        assert_eq!((ctx.take_error(), clip(&ctx)), (GL_NO_ERROR, (GL_UPPER_LEFT, GL_ZERO_TO_ONE)));
+        // A bad value of either argument leaves both alone.
+        for (origin, depth) in [(GL_LOWER_LEFT, GL_LOWER_LEFT), (GL_ZERO_TO_ONE, GL_NEGATIVE_ONE_TO_ONE), (0, 0)] {
+            ctx.clip_control(origin, depth);
+            assert_eq!((ctx.take_error(), clip(&ctx)), (GL_INVALID_ENUM, (GL_UPPER_LEFT, GL_ZERO_TO_ONE)));
+        }
+    }
+
+    /// The depth mapping of ARB_clip_control's equations: z_w = (f − n)/2 · z_ndc + (n + f)/2
+    /// by default, (f − n) · z_ndc + n under GL_ZERO_TO_ONE (so z_ndc = 0 is the near value).
+    #[test]
+    fn zero_to_one_maps_ndc_zero_to_the_near_value() {
+        let mut ctx = context();
+        ctx.state.viewport.depth_range = [0.25, 0.75];
+        let z = |c: &Context, ndc: f64| {
+            let (scale, offset) = c.depth_transform();
+            ndc * scale + offset
+        };
+        assert_eq!([z(&ctx, -1.0), z(&ctx, 0.0), z(&ctx, 1.0)], [0.25, 0.5, 0.75]);
+        ctx.clip_control(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+        assert_eq!([z(&ctx, 0.0), z(&ctx, 0.5), z(&ctx, 1.0)], [0.25, 0.5, 0.75]);
+        // Reversed range: n = 1, f = 0.
+        ctx.state.viewport.depth_range = [1.0, 0.0];
+        assert_eq!([z(&ctx, 0.0), z(&ctx, 1.0)], [1.0, 0.0]);
+    }
+
+    /// glRasterPos goes through the same transform as vertices: under GL_ZERO_TO_ONE a point
+    /// at z_ndc = 0 lies at the near value and one at z_ndc = −0.5 is clipped (it is inside
+    /// by default); under GL_UPPER_LEFT y is mirrored about the viewport's centre.
+    #[test]
+    fn raster_position_follows_clip_control() {
+        let visual = FramebufferConfig::single_buffered(
+            ColorFormat::Unorm8 { alpha: true },
+            DepthStencilFormat::Packed24 { depth: true, stencil: true },
+            0,
+        );
+        let (mut ctx, _d) = Context::with_test_drawable(visual, 100, 100);
+        ctx.state.viewport = crate::context::state::ViewportState { rect: [10, 20, 80, 60], depth_range: [0.25, 0.75] };
+        let window = |c: &mut Context, p: [f32; 4]| {
+            c.raster_pos(p);
+            let r = c.state.current.raster;
+            r.valid.then_some(r.window)
+        };
+        assert_eq!(window(&mut ctx, [0.5, 0.5, 0.0, 1.0]), Some([70.0, 65.0, 0.5, 1.0]));
+        assert!(window(&mut ctx, [0.0, 0.0, -0.5, 1.0]).is_some());
+        ctx.clip_control(GL_UPPER_LEFT, GL_ZERO_TO_ONE);
+        assert_eq!(window(&mut ctx, [0.5, 0.5, 0.0, 1.0]), Some([70.0, 35.0, 0.25, 1.0]));
+        assert_eq!(window(&mut ctx, [0.0, 0.0, 1.0, 1.0]), Some([50.0, 50.0, 0.75, 1.0]));
+        assert_eq!(window(&mut ctx, [0.0, 0.0, -0.5, 1.0]), None);
+        // glWindowPos is in window coordinates: unaffected.
+        ctx.window_pos([3.0, 4.0, 0.5]);
+        assert_eq!(ctx.state.current.raster.window, [3.0, 4.0, 0.5, 1.0]);
     }
 }

@@ -953,6 +953,11 @@ pub const GL_CURRENT_PROGRAM: GLenum = 0x8B8D;
 pub const GL_POINT_SPRITE_COORD_ORIGIN: GLenum = 0x8CA0;
 pub const GL_LOWER_LEFT: GLenum = 0x8CA1;
 pub const GL_UPPER_LEFT: GLenum = 0x8CA2;
+// ARB_clip_control.
+pub const GL_CLIP_ORIGIN: GLenum = 0x935C;
+pub const GL_CLIP_DEPTH_MODE: GLenum = 0x935D;
+pub const GL_NEGATIVE_ONE_TO_ONE: GLenum = 0x935E;
+pub const GL_ZERO_TO_ONE: GLenum = 0x935F;
 pub const GL_STENCIL_BACK_REF: GLenum = 0x8CA3;
 pub const GL_STENCIL_BACK_VALUE_MASK: GLenum = 0x8CA4;
 pub const GL_STENCIL_BACK_WRITEMASK: GLenum = 0x8CA5;

@@ -58,8 +58,10 @@ pub struct ClipPlanes {
     /// Guard band half-extent in normalized device coordinates (|x/w|, |y/w| ≤ this).
     pub guard_x: f32,
     pub guard_y: f32,
-    /// Clip against −w ≤ z ≤ w (off with GL_DEPTH_CLAMP).
+    /// Clip against the near and far planes (off with GL_DEPTH_CLAMP).
     pub clip_z: bool,
+    /// The near plane is z = 0 (GL_ZERO_TO_ONE, ARB_clip_control) instead of z = −w.
+    pub zero_to_one: bool,
     /// Enabled user clip planes, in eye coordinates.
     pub user: Vec<[f32; 4]>,
 }
@@ -84,10 +86,12 @@ impl ClipPlanes {
             2 => self.guard_y * w - y,
             3 => self.guard_y * w + y,
             4 => {
-                if self.clip_z {
-                    w + z
-                } else {
+                if !self.clip_z {
                     0.0
+                } else if self.zero_to_one {
+                    z
+                } else {
+                    w + z
                 }
             }
             5 => {
@@ -197,7 +201,7 @@ mod tests {
     }
 
     fn planes() -> ClipPlanes {
-        ClipPlanes { guard_x: 1.0, guard_y: 1.0, clip_z: true, user: Vec::new() }
+        ClipPlanes { guard_x: 1.0, guard_y: 1.0, clip_z: true, zero_to_one: false, user: Vec::new() }
     }
 
     #[test]
@@ -212,6 +216,19 @@ mod tests {
         for v in &poly {
             assert!(v.clip[2] >= -v.clip[3] - 1e-6);
         }
+    }
+
+    /// GL_ZERO_TO_ONE (ARB_clip_control): the near plane is z_c = 0, so a vertex with
+    /// −w ≤ z < 0 is outside, and the cut lands exactly on z = 0.
+    #[test]
+    fn zero_to_one_clips_at_z_zero() {
+        let p = ClipPlanes { zero_to_one: true, ..planes() };
+        assert_eq!(p.outcode(&vertex(0.0, 0.0, -0.5, 1.0)), 1 << 4);
+        assert_eq!(planes().outcode(&vertex(0.0, 0.0, -0.5, 1.0)), 0);
+        assert_eq!(p.outcode(&vertex(0.0, 0.0, 0.0, 1.0)), 0);
+        assert_eq!(p.outcode(&vertex(0.0, 0.0, 1.5, 1.0)), 1 << 5);
+        let (a, b) = p.clip_line(&vertex(0.0, 0.0, -1.0, 1.0), &vertex(0.0, 0.0, 1.0, 1.0), 1 << 4).unwrap();
+        assert_eq!((a.clip[2], b.clip[2]), (0.0, 1.0));
     }
 
     #[test]

@@ -15,6 +15,7 @@ use crate::framebuffer::{
 use crate::gl::enums::*;
 use crate::gl::limits::MAX_VIEWPORT_DIM;
 use crate::gl::types::GLenum;
+use crate::winsys::notice;
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex, MutexGuard, OnceLock};
 
@@ -50,6 +51,18 @@ impl PixelLayout {
             PixelLayout::Rgb => GL_RGB,
             PixelLayout::Bgr => OSMESA_BGR,
             PixelLayout::Rgb565 => OSMESA_RGB_565,
+        }
+    }
+
+    /// The format's name in <GL/osmesa.h> (for notices).
+    pub fn name(self) -> &'static str {
+        match self {
+            PixelLayout::Rgba => "OSMESA_RGBA",
+            PixelLayout::Bgra => "OSMESA_BGRA",
+            PixelLayout::Argb => "OSMESA_ARGB",
+            PixelLayout::Rgb => "OSMESA_RGB",
+            PixelLayout::Bgr => "OSMESA_BGR",
+            PixelLayout::Rgb565 => "OSMESA_RGB_565",
         }
     }
 
@@ -95,6 +108,17 @@ impl PixelLayout {
             _ => 4,
         };
         self.components() * component
+    }
+}
+
+/// A pixel type's name for a notice (its number when it is not one OSMesa knows).
+fn type_name(ty: GLenum) -> String {
+    match ty {
+        GL_UNSIGNED_BYTE => "GL_UNSIGNED_BYTE".into(),
+        GL_UNSIGNED_SHORT => "GL_UNSIGNED_SHORT".into(),
+        GL_UNSIGNED_SHORT_5_6_5 => "GL_UNSIGNED_SHORT_5_6_5".into(),
+        GL_FLOAT => "GL_FLOAT".into(),
+        other => format!("0x{other:x}"),
     }
 }
 
@@ -234,7 +258,21 @@ impl OsMesaContext {
         if width < 1 || height < 1 || width > MAX_VIEWPORT_DIM || height > MAX_VIEWPORT_DIM {
             return Err(BindFailure::BadArguments);
         }
-        let color = self.request.layout.color_format(ty).ok_or(BindFailure::BadArguments)?;
+        let Some(color) = self.request.layout.color_format(ty) else {
+            notice::once("osmesa-type", || {
+                format!(
+                    "OSMesaMakeCurrent asked for type {} with format {}; tessera provides {}",
+                    type_name(ty),
+                    self.request.layout.name(),
+                    if self.request.layout == PixelLayout::Rgb565 {
+                        "GL_UNSIGNED_SHORT_5_6_5 with OSMESA_RGB_565"
+                    } else {
+                        "GL_UNSIGNED_BYTE, GL_UNSIGNED_SHORT and GL_FLOAT with this format"
+                    }
+                )
+            });
+            return Err(BindFailure::BadArguments);
+        };
         if let Some(owner) = self.shared.bound_thread() {
             if owner != std::thread::current().id() {
                 return Err(BindFailure::CurrentElsewhere);
