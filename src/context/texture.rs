@@ -1342,6 +1342,20 @@ impl Context {
         }
         let (cf, ct) = match check_texture_format_type(format, ty) {
             Ok(p) => p,
+            // GL 2.1 §6.1.4 lists no index format for glGetTexImage: GL_INVALID_ENUM (§2.5),
+            // after the type's rules. (Mesa 22 accepts GL_COLOR_INDEX.)
+            Err(GL_INVALID_OPERATION) if matches!(format, GL_COLOR_INDEX | GL_STENCIL_INDEX) => {
+                return self.error(
+                    if matches!(
+                        super::read_pixels::client_type(ty),
+                        Some(ClientType::Packed(_) | ClientType::UnsignedInt24_8)
+                    ) {
+                        GL_INVALID_OPERATION
+                    } else {
+                        GL_INVALID_ENUM
+                    },
+                )
+            }
             Err(e) => return self.error(e),
         };
         let Some(lv) = self.with_image_object(it, |obj| obj.level(it.face, level as usize).cloned()) else {
