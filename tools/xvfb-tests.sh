@@ -15,8 +15,8 @@
 #   4. glxgears runs and its window shows the gears (not blank);
 #   5. piglit: every command of ../shared/piglit/fragment-ops.txt is run; each one
 #      tests/piglit/expected.txt marks "pass" must pass (a skip is not a pass).
-#   6. piglit's framebuffer-object tests: each command tests/piglit/fbo-expected.txt marks
-#      "pass" must pass.
+#   6. piglit's framebuffer-object tests and further GL 1.x tests: each command
+#      tests/piglit/fbo-expected.txt or tests/piglit/gl1x-expected.txt marks "pass" must pass.
 # Needs xvfb, piglit, mesa-utils, freeglut3-dev, libglfw3-dev, x11-apps, libx11-dev, python3 (installed by
 # tools/setup-debian.sh). Without them it skips loudly, except under CI=true where it fails.
 set -euo pipefail
@@ -262,23 +262,26 @@ for c in "${unexpected_passes[@]}"; do
     echo "xvfb-tests: piglit $c now passes: mark it 'pass' in $expected"
 done
 
-# 6. piglit's framebuffer-object tests: every command of tests/piglit/fbo-expected.txt.
-fbo_passed=0
-while read -r status command; do
-    [[ -z $status || $status == \#* ]] && continue
-    command=$(echo ${command%%#*})
-    output=$(cd "$piglit_bin" && "${on_tessera[@]}" timeout 120 ./$command 2>&1) || true
-    result=$(grep -o '"result": *"[a-z]*"' <<<"$output" | tail -1 | sed 's/.*"\([a-z]*\)"$/\1/')
-    result=${result:-crash}
-    case $status in
-    pass)
-        [[ $result == pass ]] && fbo_passed=$((fbo_passed + 1))
-        [[ $result == pass ]] || fail "piglit $command: $result (expected pass)"
-        ;;
-    *) [[ $result == pass ]] && echo "xvfb-tests: piglit $command now passes: mark it 'pass' in tests/piglit/fbo-expected.txt" ;;
-    esac
-done <tests/piglit/fbo-expected.txt
-echo "xvfb-tests: piglit fbo tests: $fbo_passed passed (expected: $(grep -c '^pass' tests/piglit/fbo-expected.txt))"
+# 6. piglit's framebuffer-object tests and further GL 1.x tests: every command of
+#    tests/piglit/fbo-expected.txt and tests/piglit/gl1x-expected.txt.
+for expectations in tests/piglit/fbo-expected.txt tests/piglit/gl1x-expected.txt; do
+    passed=0
+    while read -r status command; do
+        [[ -z $status || $status == \#* ]] && continue
+        command=$(echo ${command%%#*})
+        output=$(cd "$piglit_bin" && "${on_tessera[@]}" timeout 120 ./$command 2>&1) || true
+        result=$(grep -o '"result": *"[a-z]*"' <<<"$output" | tail -1 | sed 's/.*"\([a-z]*\)"$/\1/')
+        result=${result:-crash}
+        case $status in
+        pass)
+            [[ $result == pass ]] && passed=$((passed + 1))
+            [[ $result == pass ]] || fail "piglit $command: $result (expected pass)"
+            ;;
+        *) [[ $result == pass ]] && echo "xvfb-tests: piglit $command now passes: mark it 'pass' in $expectations" ;;
+        esac
+    done <"$expectations"
+    echo "xvfb-tests: piglit $(basename "$expectations" -expected.txt) tests: $passed passed (expected: $(grep -c '^pass' "$expectations"))"
+done
 
 if ((failures)); then
     echo "xvfb-tests: $failures check(s) FAILED" >&2

@@ -1110,7 +1110,7 @@ impl Context {
     /// Runs `f` on the draw framebuffer (an object's, assembled, or the window's).
     pub fn with_framebuffer<R>(&mut self, f: impl FnOnce(&mut Framebuffer) -> R) -> Option<R> {
         match self.fbo.draw {
-            0 => self.with_window_framebuffer(f),
+            0 => self.draw_into_window_framebuffer(f),
             name => self.with_object_framebuffer(name, true, f),
         }
     }

@@ -197,6 +197,14 @@ impl Context {
         Some(f(&mut guard.framebuffer))
     }
 
+    /// As `with_window_framebuffer`, for drawing: the drawable's next presentation shows
+    /// what `f` drew (an OSMesa buffer is written only when something was drawn).
+    pub fn draw_into_window_framebuffer<R>(&self, f: impl FnOnce(&mut Framebuffer) -> R) -> Option<R> {
+        let drawable = self.drawable.as_ref()?;
+        let mut guard = drawable.lock().unwrap_or_else(|p| p.into_inner());
+        Some(f(guard.framebuffer_to_draw()))
+    }
+
     /// Runs `f` on the window-system framebuffer pixels are read from: the read drawable's
     /// when one is bound apart from the draw drawable, else the draw drawable's; `None` without either.
     /// Rendering recorded for the draw drawable must have been flushed by the caller.
@@ -222,7 +230,7 @@ impl Context {
         height: usize,
     ) -> (Context, Arc<Mutex<Drawable>>) {
         let framebuffer = Framebuffer::new(visual, width, height).expect("test framebuffer");
-        let drawable = Arc::new(Mutex::new(Drawable { framebuffer, presenter: None }));
+        let drawable = Arc::new(Mutex::new(Drawable::new(framebuffer, None)));
         let mut ctx = Context::new(ContextConfig { visual });
         ctx.bind_drawable(Some(drawable.clone()));
         (ctx, drawable)

@@ -73,7 +73,7 @@ mod tests {
             0,
         );
         let framebuffer = Framebuffer::with_samples(visual, width, height, samples).unwrap();
-        let drawable = Arc::new(Mutex::new(Drawable { framebuffer, presenter: None }));
+        let drawable = Arc::new(Mutex::new(Drawable::new(framebuffer, None)));
         let mut ctx = Context::new(super::super::ContextConfig { visual });
         ctx.bind_drawable(Some(drawable.clone()));
         ctx.matrix_mode(GL_PROJECTION);

@@ -25,7 +25,7 @@
 //! GL_COLOR_INDEX (RGBA mode): indices shifted and offset, through I_TO_I under
 //! GL_MAP_COLOR, then through the I_TO_[RGBA] maps to colors (Mesa 22 matches without
 //! shift, offset or GL_MAP_COLOR, which it ignores for this format).
-use super::read_pixels::{check_format_and_type, read_format, ReadFormat};
+use super::read_pixels::{check_format_and_type, read_format, unknown_format_error, ReadFormat};
 use super::selection::FeedbackVertex;
 use super::state::PixelTransfer;
 use super::Context;
@@ -210,7 +210,7 @@ impl Context {
         if width < 0 || height < 0 {
             return Err(GL_INVALID_VALUE);
         }
-        let read = read_format(format).ok_or(GL_INVALID_ENUM)?;
+        let read = read_format(format).ok_or_else(|| unknown_format_error(ty))?;
         let client_type = check_format_and_type(read, ty)?;
         // Color indices are laid out as stencil indices (one component, bitmaps allowed).
         let (format, color_index) = match read {

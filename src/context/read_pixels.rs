@@ -63,6 +63,18 @@ pub(crate) fn read_format(format: GLenum) -> Option<ReadFormat> {
     }))
 }
 
+/// The error for a `format` no pixel transfer knows, given with `ty`: as in Mesa (whose
+/// type rules come before the format's validity; the GL 2.1 spec names both errors and no
+/// order), GL_INVALID_OPERATION when `ty` is a packed type, whose format rule excludes every
+/// unknown format, else GL_INVALID_ENUM. Shared by glReadPixels, glDrawPixels and the
+/// texture image commands.
+pub(crate) fn unknown_format_error(ty: GLenum) -> GLenum {
+    match client_type(ty) {
+        Some(ClientType::Packed(_) | ClientType::UnsignedInt24_8) => GL_INVALID_OPERATION,
+        _ => GL_INVALID_ENUM,
+    }
+}
+
 pub(crate) fn client_type(ty: GLenum) -> Option<ClientType> {
     use PackedType::*;
     Some(match ty {
@@ -266,9 +278,7 @@ impl Context {
             return None;
         }
         let Some(read_format) = read_format(format) else {
-            // As in Mesa, a packed type's format rule comes before the format's validity.
-            let packed = matches!(client_type(ty), Some(ClientType::Packed(_) | ClientType::UnsignedInt24_8));
-            self.error(if packed { GL_INVALID_OPERATION } else { GL_INVALID_ENUM });
+            self.error(unknown_format_error(ty));
             return None;
         };
         let layers = self.read_config().depth_stencil;

@@ -298,10 +298,10 @@ pub(super) fn check_texture_upload_format_type(
     if format != GL_COLOR_INDEX {
         return check_texture_format_type(format, ty);
     }
+    // Every array type and GL_BITMAP (GL_HALF_FLOAT too, with ARB_half_float_pixel, as in Mesa).
     match super::read_pixels::client_type(ty) {
         None => Err(GL_INVALID_ENUM),
         Some(ClientType::Packed(_) | ClientType::UnsignedInt24_8) => Err(GL_INVALID_OPERATION),
-        Some(ClientType::HalfFloat) => Err(GL_INVALID_ENUM),
         Some(t) => Ok((ClientFormat::StencilIndex, t)),
     }
 }
@@ -368,6 +368,9 @@ impl IndexToRgba {
                     ClientType::UnsignedInt => f64::from(u32::from_ne_bytes(raw)),
                     ClientType::Int => f64::from(i32::from_ne_bytes(raw)),
                     ClientType::Float => f64::from(f32::from_ne_bytes(raw)),
+                    ClientType::HalfFloat => {
+                        f64::from(crate::pixel::unpack::half_to_float(u16::from_ne_bytes([raw[0], raw[1]])))
+                    }
                     _ => 0.0,
                 }
             };
@@ -376,25 +379,39 @@ impl IndexToRgba {
     }
 }
 
-/// Checks a client format/type pair for texture data; the error when invalid.
+/// Checks a client format/type pair for texture data; the error when invalid. The rules
+/// go in Mesa's order (`_mesa_error_check_format_and_type`, then whether the format can
+/// hold texture data): a type's own rules first (GL_BITMAP only with index formats; a
+/// packed type only with its formats, GL_INVALID_OPERATION even for an unknown format),
+/// then the format's validity. The GL 2.1 spec names the errors but not their order.
 pub(super) fn check_texture_format_type(format: GLenum, ty: GLenum) -> Result<(ClientFormat, ClientType), GLenum> {
-    let client_type = super::read_pixels::client_type(ty);
+    use super::read_pixels::{read_format, unknown_format_error, ReadFormat};
+    if format == GL_DEPTH_STENCIL && ty != GL_UNSIGNED_INT_24_8 {
+        // GL_DEPTH_STENCIL data has the one packed type (Mesa: GL_INVALID_ENUM otherwise).
+        return Err(GL_INVALID_ENUM);
+    }
+    let client_type = super::read_pixels::client_type(ty).ok_or(GL_INVALID_ENUM)?;
+    let known = read_format(format);
+    match (client_type, known) {
+        (ClientType::Bitmap, Some(ReadFormat::ColorIndex | ReadFormat::Client(ClientFormat::StencilIndex))) => {}
+        (ClientType::Bitmap, _) => return Err(GL_INVALID_ENUM),
+        (ClientType::Packed(p), Some(ReadFormat::Client(f))) if p.accepts(f) => {}
+        (ClientType::Packed(_), _) => return Err(GL_INVALID_OPERATION),
+        (ClientType::UnsignedInt24_8, Some(ReadFormat::Client(ClientFormat::DepthStencil))) => {}
+        (ClientType::UnsignedInt24_8, _) => return Err(GL_INVALID_OPERATION),
+        _ => {}
+    }
     let Some(f) = texture_client_format(format) else {
-        // Formats that exist but cannot hold texture data.
-        return Err(match format {
-            GL_COLOR_INDEX | GL_STENCIL_INDEX => GL_INVALID_OPERATION,
-            _ => GL_INVALID_ENUM,
+        return Err(match known {
+            // Formats that exist but cannot hold texture data.
+            Some(_) => GL_INVALID_OPERATION,
+            None => unknown_format_error(ty),
         });
     };
     match client_type {
-        // GL_DEPTH_STENCIL data has the one packed type (Mesa: GL_INVALID_ENUM otherwise).
-        Some(ClientType::UnsignedInt24_8) if f == ClientFormat::DepthStencil => Ok((f, ClientType::UnsignedInt24_8)),
-        Some(_) if f == ClientFormat::DepthStencil => Err(GL_INVALID_ENUM),
-        None | Some(ClientType::Bitmap) => Err(GL_INVALID_ENUM),
-        Some(ClientType::UnsignedInt24_8) => Err(GL_INVALID_OPERATION),
-        Some(ClientType::Packed(p)) if !p.accepts(f) => Err(GL_INVALID_OPERATION),
-        Some(ClientType::Packed(_)) if f == ClientFormat::DepthComponent => Err(GL_INVALID_OPERATION),
-        Some(t) => Ok((f, t)),
+        ClientType::Bitmap => Err(GL_INVALID_ENUM),
+        ClientType::Packed(_) if f == ClientFormat::DepthComponent => Err(GL_INVALID_OPERATION),
+        t => Ok((f, t)),
     }
 }
 
@@ -652,20 +669,8 @@ impl Context {
             self.error(GL_INVALID_VALUE);
             return None;
         }
-        let Some(info) = format_info(a.internal_format) else {
-            self.error(GL_INVALID_VALUE);
-            return None;
-        };
-        let pair = match client {
-            Some((format, ty)) => match check_texture_upload_format_type(format, ty) {
-                Ok(p) => Some(p),
-                Err(e) => {
-                    self.error(e);
-                    return None;
-                }
-            },
-            None => None,
-        };
+        // Mesa's order (the GL 2.1 spec names the errors, not their order): the border, the
+        // sizes, the client format and type, the internal format.
         if a.border != 0 && a.border != 1 {
             self.error(GL_INVALID_VALUE);
             return None;
@@ -678,14 +683,43 @@ impl Context {
             && a.depth >= 0
             && dims_ok(a.width, true)
             && dims_ok(a.height, dims >= 2)
-            && dims_ok(a.depth, dims >= 3);
-        if !sizes_ok || (it.target == 3 && a.width != a.height) {
-            if it.proxy && a.width >= 0 && a.height >= 0 && a.depth >= 0 {
-                // Proxies report a failed allocation as zero state, not as an error.
-                self.clear_proxy_level(it, a.level as usize);
-                return None;
-            }
+            && dims_ok(a.depth, dims >= 3)
+            && !(it.target == 3 && a.width != a.height);
+        // glCopyTexImage's internalformat is an enum without the legacy 1-4 (GL 2.1
+        // §3.8.2): anything else is GL_INVALID_ENUM (§2.5), checked before the sizes as in
+        // Mesa; glTexImage's is an integer, GL_INVALID_VALUE when unknown (§3.8.1), checked
+        // after the client format and type.
+        let copy = client.is_none();
+        let info = match format_info(a.internal_format) {
+            Some(_) if copy && (1..=4).contains(&a.internal_format) => None,
+            info => info,
+        };
+        if copy && info.is_none() {
+            self.error(GL_INVALID_ENUM);
+            return None;
+        }
+        // Proxies report a size they cannot have as zero state (below), not as an error.
+        let proxy_size = it.proxy && a.width >= 0 && a.height >= 0 && a.depth >= 0;
+        if !sizes_ok && !proxy_size {
             self.error(GL_INVALID_VALUE);
+            return None;
+        }
+        let pair = match client {
+            Some((format, ty)) => match check_texture_upload_format_type(format, ty) {
+                Ok(p) => Some(p),
+                Err(e) => {
+                    self.error(e);
+                    return None;
+                }
+            },
+            None => None,
+        };
+        let Some(info) = info else {
+            self.error(GL_INVALID_VALUE);
+            return None;
+        };
+        if !sizes_ok {
+            self.clear_proxy_level(it, a.level as usize);
             return None;
         }
         if let Some((f, _)) = pair {
@@ -1308,6 +1342,20 @@ impl Context {
         }
         let (cf, ct) = match check_texture_format_type(format, ty) {
             Ok(p) => p,
+            // GL 2.1 §6.1.4 lists no index format for glGetTexImage: GL_INVALID_ENUM (§2.5),
+            // after the type's rules. (Mesa 22 accepts GL_COLOR_INDEX.)
+            Err(GL_INVALID_OPERATION) if matches!(format, GL_COLOR_INDEX | GL_STENCIL_INDEX) => {
+                return self.error(
+                    if matches!(
+                        super::read_pixels::client_type(ty),
+                        Some(ClientType::Packed(_) | ClientType::UnsignedInt24_8)
+                    ) {
+                        GL_INVALID_OPERATION
+                    } else {
+                        GL_INVALID_ENUM
+                    },
+                )
+            }
             Err(e) => return self.error(e),
         };
         let Some(lv) = self.with_image_object(it, |obj| obj.level(it.face, level as usize).cloned()) else {

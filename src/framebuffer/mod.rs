@@ -211,6 +211,14 @@ impl Framebuffer {
 pub trait Present: Send {
     fn present(&mut self, framebuffer: &Framebuffer);
 
+    /// Whether presenting is skipped when nothing was drawn since the last presentation.
+    /// OSMesa's caller buffer says yes: Mesa writes it only when something was drawn since
+    /// the last flush, and a program may free it after its last glFinish (then it must
+    /// not be written again). X windows say no: every flush shows the window again.
+    fn only_when_drawn(&self) -> bool {
+        false
+    }
+
     /// Frees what the presenter holds in another process (an X server's GC, a shared
     /// segment) while that is still possible; called when its target is destroyed.
     fn release(&mut self) {}
@@ -220,12 +228,29 @@ pub trait Present: Send {
 pub struct Drawable {
     pub framebuffer: Framebuffer,
     pub presenter: Option<Box<dyn Present>>,
+    /// Whether the framebuffer was drawn into since it was last presented.
+    drawn: bool,
 }
 
 impl Drawable {
+    pub fn new(framebuffer: Framebuffer, presenter: Option<Box<dyn Present>>) -> Drawable {
+        Drawable { framebuffer, presenter, drawn: false }
+    }
+
+    /// The framebuffer, for drawing into it: the next presentation shows the result.
+    pub fn framebuffer_to_draw(&mut self) -> &mut Framebuffer {
+        self.drawn = true;
+        &mut self.framebuffer
+    }
+
+    /// Shows the framebuffer through the presenter (unless it skips unchanged images and
+    /// nothing was drawn since the last presentation).
     pub fn present(&mut self) {
         if let Some(presenter) = self.presenter.as_mut() {
-            presenter.present(&self.framebuffer);
+            if self.drawn || !presenter.only_when_drawn() {
+                presenter.present(&self.framebuffer);
+            }
         }
+        self.drawn = false;
     }
 }

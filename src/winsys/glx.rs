@@ -482,7 +482,7 @@ impl GlxDrawable {
             kind,
             explicit,
             config: Mutex::new(config),
-            surface: Arc::new(Mutex::new(Drawable { framebuffer, presenter })),
+            surface: Arc::new(Mutex::new(Drawable::new(framebuffer, presenter))),
             event_mask: Default::default(),
         }))
     }

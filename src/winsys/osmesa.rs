@@ -1,9 +1,38 @@
 //! OSMesa: contexts that render into memory the caller owns.
 //!
 //! As Mesa does, tessera renders into its own framebuffer and writes the caller's buffer at
-//! the flush points (glFlush, glFinish, OSMesaGetColorBuffer); the caller's existing contents
-//! are never read. Rows go bottom-up (`OSMESA_Y_UP`, the default) or top-down, `OSMESA_ROW_LENGTH`
-//! pixels apart.
+//! the flush points only, and only when something was drawn since the last one; the
+//! caller's existing contents are never read. Rows go bottom-up (`OSMESA_Y_UP`, the
+//! default) or top-down, `OSMESA_ROW_LENGTH` pixels apart.
+//!
+//! The flush points, as Mesa 22's (checked by capi-tests/osmesa_free_then_destroy.c):
+//! glFlush, glFinish, OSMesaMakeCurrent of another context (the old context's buffer) and
+//! OSMesaMakeCurrent(NULL, NULL). Binding the same context to another buffer writes
+//! nothing: a buffer of the same size takes over the image, which reaches it at the next
+//! flush point. glReadPixels and OSMesaGetDepthBuffer complete rendering internally and
+//! write nothing. OSMesaGetColorBuffer is a flush point on tessera only (Mesa 22 returns
+//! the pointer without writing), so a program reading the pointer sees the image.
+//! OSMesaDestroyContext is never one: what was drawn since the last flush point is
+//! discarded, since programs like mesa-demos' osdemo free the buffer after their glFinish
+//! and then destroy the context. (Mesa 22, destroying a context while another is current,
+//! flushes the current one into its still-bound buffer; tessera leaves it for its next
+//! flush point.)
+//!
+//! Audit of caller memory written after the call that handed it over returned:
+//! - the OSMesa buffer, here: written only at the flush points above, while bound; it is
+//!   forgotten (presenter dropped) before OSMesaDestroyContext releases the context, and a
+//!   rebind replaces it before anything is presented;
+//! - glSelectBuffer/glFeedbackBuffer arrays: the records are kept inside the context and
+//!   copied only inside glRenderMode when it leaves GL_SELECT/GL_FEEDBACK (`api::gl_selection`),
+//!   never at a deferred flush nor at destroy;
+//! - client vertex and index arrays: read (never written) during the draw call that uses
+//!   them (`api::gl_arrays::CallerMemory`); what the deferred scene keeps is tessera's copy;
+//! - glReadPixels, glGetTexImage, glGetPolygonStipple, glGetMap, glGet* and the other
+//!   queries into client memory: the pending scene is rasterized and the memory written
+//!   before the entry point returns; glDrawPixels, glBitmap, glTexImage and friends copy
+//!   the caller's pixels before returning;
+//! - GLX windows and pixmaps are presented through the X server and XShm segments tessera
+//!   owns: no caller memory.
 use crate::api::osmesa::{OSMESA_ARGB, OSMESA_BGR, OSMESA_BGRA, OSMESA_RGB_565};
 use crate::context::current::{self, SharedContext};
 use crate::context::{Context, ContextConfig};
@@ -172,6 +201,10 @@ struct CallerPresenter {
 }
 
 impl Present for CallerPresenter {
+    fn only_when_drawn(&self) -> bool {
+        true
+    }
+
     fn present(&mut self, framebuffer: &Framebuffer) {
         let Some(color) = framebuffer.color(ColorSlot::FrontLeft) else {
             return;
@@ -292,7 +325,7 @@ impl OsMesaContext {
             None => {
                 let framebuffer = Framebuffer::new(self.request.config(color), width, height)
                     .map_err(|OutOfMemory| BindFailure::OutOfMemory)?;
-                Arc::new(Mutex::new(Drawable { framebuffer, presenter: Some(presenter) }))
+                Arc::new(Mutex::new(Drawable::new(framebuffer, Some(presenter))))
             }
         };
         *binding = Some(Binding { address: presenter_address, ty, width, height, drawable: drawable.clone() });
@@ -378,9 +411,12 @@ impl OsMesaContext {
         Some((b.width, b.height, bpv, address))
     }
 
-    /// The GL state's draw framebuffer is released when the context is destroyed.
-    fn release(&self) {
-        *self.lock_binding() = None;
+    /// Forgets the caller's buffer: nothing is written into it from now on, whatever was
+    /// drawn since the last flush point (OSMesaDestroyContext).
+    fn forget_buffer(&self) {
+        if let Some(b) = self.lock_binding().take() {
+            b.drawable.lock().unwrap_or_else(|p| p.into_inner()).presenter = None;
+        }
     }
 }
 
@@ -437,15 +473,18 @@ pub fn current_context() -> Option<Arc<OsMesaContext>> {
 }
 
 /// OSMesaDestroyContext: unregisters; releases it first if it is current on this thread.
+/// Like Mesa, it never writes the caller's buffer: what was drawn since the last flush
+/// point is discarded (osdemo frees its buffer after its glFinish, then destroys the
+/// context). The buffer is forgotten before the release, whose flush would present.
 pub fn destroy(handle: usize) {
     let Some(context) = registry().remove(&handle) else {
         return;
     };
+    context.forget_buffer();
     if current::current().is_some_and(|c| Arc::ptr_eq(&c, &context.shared)) {
         let _ = current::make_current(None);
     }
     context.shared.lock().bind_drawable(None);
-    context.release();
 }
 
 /// OSMesaMakeCurrent(NULL, NULL, ...): releases the current context.
