@@ -1,10 +1,10 @@
 //! tessera's own entry points (not in any system header): the accuracy mode of the current
-//! context (see `raster::accuracy` and the README's "Accuracy modes"). The mode codes are
+//! context (see `setup::accuracy` and the README's "Accuracy modes"). The mode codes are
 //! literals so that cbindgen writes them into `GL/tessera.h`.
 use super::with_context;
 use crate::gl::enums::*;
 use crate::gl::types::*;
-use crate::raster::accuracy::Accuracy;
+use crate::setup::accuracy::Accuracy;
 
 /// Perspective-correct f32 interpolation; the default, compared with Mesa by the tests.
 pub const TESSERA_ACCURACY_CONFORMANT: GLint = 0;

@@ -74,13 +74,9 @@ impl Context {
         let read_slot = self.current_read_slot();
         let draw_targets = if op == AccumOp::Return { self.draw_targets() } else { Vec::new() };
         let color_masks = self.state.color.color_mask;
-        let scissor = self.state.scissor.test.then_some(self.state.scissor.rect);
-        let clip = move |bounds: Rect| match scissor {
-            Some([x, y, w, h]) => bounds.intersect(Rect::from_xywh(x, y, w, h)),
-            None => bounds,
-        };
+        let scissor = self.state.scissor.clone();
         let _ = self.with_framebuffer(|fb| {
-            let rect = clip(fb.bounds());
+            let rect = scissor.clip(fb.bounds());
             if rect.is_empty() {
                 return;
             }

@@ -153,12 +153,7 @@ impl Context {
     /// The rectangle clears and fragments are confined to: the framebuffer, cut by the
     /// scissor box when the scissor test is on.
     pub fn clip_rect(&self, bounds: Rect) -> Rect {
-        if self.state.scissor.test {
-            let [x, y, w, h] = self.state.scissor.rect;
-            bounds.intersect(Rect::from_xywh(x, y, w, h))
-        } else {
-            bounds
-        }
+        self.state.scissor.clip(bounds)
     }
 
     /// glClear.
@@ -186,13 +181,9 @@ impl Context {
         let depth = (self.state.depth.write_mask, self.state.depth.clear);
         let stencil = (self.state.stencil.front.write_mask, self.state.stencil.clear);
         let accum_clear = self.state.accum.clear;
-        let scissor = self.state.scissor.test.then_some(self.state.scissor.rect);
-        let clip = move |bounds: Rect| match scissor {
-            Some([x, y, w, h]) => bounds.intersect(Rect::from_xywh(x, y, w, h)),
-            None => bounds,
-        };
+        let scissor = self.state.scissor.clone();
         let _ = self.with_framebuffer(|fb| {
-            let rect = clip(fb.bounds());
+            let rect = scissor.clip(fb.bounds());
             if rect.is_empty() {
                 return;
             }

@@ -25,20 +25,21 @@ mod select;
 
 use super::{debug, Context};
 use crate::context::state::LinePointState;
+use crate::fragment::pipeline::DrawState;
 use crate::fragment::{DepthTest, FragmentState};
 use crate::framebuffer::{ColorFormat, Rect};
 use crate::gl::enums::*;
 use crate::gl::limits::{MAX_LINE_WIDTH, MAX_POINT_SIZE};
 use crate::gl::types::GLenum;
-use crate::raster::accuracy::Accuracy;
-use crate::raster::line::{LineJob, LineVertex};
-use crate::raster::point::PointJob;
-use crate::raster::smooth::{SmoothJob, SmoothLine, SmoothPoint, SmoothTriangle};
-use crate::raster::triangle::{TriangleJob, WindowVertex};
-use crate::raster::{DrawState, Primitive as RasterPrimitive, Scene};
+use crate::setup::accuracy::Accuracy;
+use crate::setup::jobs::line::{LineJob, LineVertex};
+use crate::setup::jobs::point::PointJob;
+use crate::setup::jobs::smooth::{SmoothJob, SmoothLine, SmoothPoint, SmoothTriangle};
+use crate::setup::jobs::triangle::{TriangleJob, WindowVertex};
 use crate::setup::multisample::SampleQuad;
 use crate::setup::point::point_rect;
 use crate::setup::triangle::GUARD_BAND;
+use crate::setup::{Primitive as RasterPrimitive, Scene};
 use crate::vertex::assembly::{assemble, DrawPart, Primitive, QuadSplit};
 use crate::vertex::clip::{ClipPlanes, ClipVertex};
 use crate::vertex::lighting::{Lighting, NormalScaling};
@@ -353,7 +354,10 @@ impl Context {
 
     /// Adds a pixel rectangle to the scene under the current state; `make` builds it from the
     /// varyings the draw's stages read (none when only color is needed).
-    pub(super) fn draw_pixel_rect(&mut self, make: impl FnOnce(&[Attribute]) -> crate::raster::pixels::PixelRectJob) {
+    pub(super) fn draw_pixel_rect(
+        &mut self,
+        make: impl FnOnce(&[Attribute]) -> crate::setup::jobs::pixels::PixelRectJob,
+    ) {
         let Some((width, height, color_format, depth_bits, stencil_bits)) = self.target_format() else {
             return;
         };

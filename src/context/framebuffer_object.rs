@@ -43,7 +43,7 @@ use crate::framebuffer::layers::{color_buffer, depth_stencil_buffer};
 use crate::framebuffer::multisample::{resolve_color, resolve_depth_stencil, supported_samples};
 use crate::framebuffer::surface::{ColorPixels, DepthStencilPixels};
 use crate::framebuffer::{
-    ColorBuffer, ColorFormat, ColorSlot, DepthStencilBuffer, DepthStencilFormat, Framebuffer, FramebufferConfig, Rect,
+    ColorBuffer, ColorFormat, ColorSlot, DepthStencilBuffer, DepthStencilFormat, Framebuffer, FramebufferConfig,
 };
 use crate::gl::enums::*;
 use crate::gl::limits::MAX_DRAW_BUFFERS;
@@ -1437,14 +1437,9 @@ impl Context {
         }
         let targets: Vec<ColorSlot> = self.draw_targets().into_iter().map(|(s, _)| s).collect();
         let linear = filter == GL_LINEAR;
-        let scissor = (self.state.scissor.test, self.state.scissor.rect);
+        let scissor = self.state.scissor.clone();
         let _ = self.with_framebuffer(|fb| {
-            let mut clip = fb.bounds();
-            if scissor.0 {
-                let [sx, sy, sw, sh] = scissor.1;
-                clip = clip.intersect(Rect::from_xywh(sx, sy, sw, sh));
-            }
-            let rect = blit::destination(x, y, clip);
+            let rect = blit::destination(x, y, scissor.clip(fb.bounds()));
             if rect.is_empty() {
                 return;
             }

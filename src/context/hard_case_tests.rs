@@ -13,7 +13,7 @@ use crate::framebuffer::surface::{ColorPixels, DepthStencilPixels};
 use crate::framebuffer::{ColorFormat, ColorSlot, DepthStencilFormat, Drawable, FramebufferConfig};
 use crate::gl::enums::*;
 use crate::gl::types::GLenum;
-use crate::raster::accuracy::Accuracy;
+use crate::setup::accuracy::Accuracy;
 use crate::vertex::Vertex;
 use std::sync::{Arc, Mutex};
 

@@ -70,7 +70,7 @@ pub struct Context {
     /// it is not the draw drawable (glXMakeContextCurrent with a separate read drawable).
     read_drawable: Option<Arc<Mutex<Drawable>>>,
     /// Primitives recorded since the last flush point.
-    scene: Option<crate::raster::Scene>,
+    scene: Option<crate::setup::Scene>,
     /// Viewport and scissor are initialised to the drawable's size at the first bind only.
     bound_once: bool,
     /// Immediate mode and client vertex arrays (`vertex_input`).
@@ -78,7 +78,7 @@ pub struct Context {
     /// The buffer objects (one table, so that it can become shared between contexts).
     pub buffers: share::Shared<crate::vertex::buffer_objects::BufferTable>,
     /// The accuracy mode of the draws (`TESSERA_ACCURACY` at creation, `tesseraSetAccuracy`).
-    pub accuracy: crate::raster::accuracy::Accuracy,
+    pub accuracy: crate::setup::accuracy::Accuracy,
     /// The texture objects (`texture`).
     pub textures: share::Shared<texture::TextureTable>,
     /// Display lists: the (shareable) name space and the list being compiled.
@@ -111,7 +111,7 @@ impl Context {
             bound_once: false,
             vertex_input: vertex_input::VertexInput::default(),
             buffers: Default::default(),
-            accuracy: crate::raster::accuracy::Accuracy::from_env(),
+            accuracy: crate::setup::accuracy::Accuracy::from_env(),
             textures: share::Shared::new(texture::TextureTable::new()),
             lists: Default::default(),
             queries: Default::default(),

@@ -1,7 +1,7 @@
 //! Multisampling state: glSampleCoverage, the sample-count queries, and the multisample
-//! state a draw compiles into its [`DrawState`](crate::raster::DrawState).
+//! state a draw compiles into its [`DrawState`](crate::fragment::pipeline::DrawState).
 use super::Context;
-use crate::raster::multisample::{sample_coverage_mask, MultisampleState};
+use crate::fragment::multisample::{sample_coverage_mask, MultisampleState};
 
 impl Context {
     /// glSampleCoverage(value, invert): the value is clamped to [0, 1] (GL 2.1 §4.1.3).

@@ -34,7 +34,7 @@ use crate::gl::types::GLenum;
 use crate::pixel::layout::ImageLayout;
 use crate::pixel::unpack_rect::{unpack_components, unpack_rgba};
 use crate::pixel::{ClientFormat, ClientType, PackModes};
-use crate::raster::pixels::{PixelRectJob, PixelSource};
+use crate::setup::jobs::pixels::{PixelRectJob, PixelSource};
 use std::ops::Range;
 use std::sync::Arc;
 
@@ -548,7 +548,7 @@ impl Context {
         self.state.current.raster.window[1] += shift[1] as f32;
         self.draw_pixels(width, height, &data);
         self.state.current.raster.window = saved_window;
-        if len > crate::raster::Scene::BUDGET_BYTES {
+        if len > crate::setup::Scene::BUDGET_BYTES {
             // A large image is rendered now rather than held until the next flush point.
             self.flush_rendering();
         }

@@ -159,6 +159,19 @@ pub struct ScissorState {
     pub rect: [i32; 4],
 }
 
+impl ScissorState {
+    /// `bounds` cut by the scissor box when the scissor test is on: the rectangle clears,
+    /// accumulation operations, blits and fragments are confined to.
+    pub fn clip(&self, bounds: crate::framebuffer::Rect) -> crate::framebuffer::Rect {
+        if self.test {
+            let [x, y, w, h] = self.rect;
+            bounds.intersect(crate::framebuffer::Rect::from_xywh(x, y, w, h))
+        } else {
+            bounds
+        }
+    }
+}
+
 /// GL_VIEWPORT_BIT.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ViewportState {

@@ -1,18 +1,27 @@
-//! The per-fragment operations, applied to one span of a tile row at a time.
+//! The fragment pipeline: from a covered span to the framebuffer write.
 //!
-//! A draw's state is compiled into a [`FragmentState`] once; disabled operations are absent
-//! from it rather than tested per pixel. The span path (driven by `raster::shade_span`)
-//! runs them in GL order: alpha test, stencil test, depth test and the stencil operations
-//! ([`stencil_depth_test`]), then per color target blending or the logic op, dither and the
-//! masked write ([`output`]). Before them, the color sum and fog
-//! ([`fog`]) finish the fragment colors (`raster::shade_span` applies them once colors are known).
+//! [`pipeline`] is the driver, GL's stage order written once for single-sampled and
+//! multisampled targets ([`multisample`] supplies the per-sample coverage and the
+//! multisample operations). A draw's state is compiled into a [`FragmentState`] once;
+//! disabled operations are absent from it rather than tested per pixel. The stages:
+//! texturing (`crate::texture`), the alpha test ([`alpha`]), the stencil and depth tests
+//! with the stencil operations ([`stencil_depth_test`]), the color sum and fog ([`fog`]),
+//! then per color target blending ([`blend`]) or the logic op ([`logic_op`]), dither
+//! ([`dither`]) and the masked write ([`output`]).
+//!
+//! This room imports no room above it: jobs (`setup`) and tile workers (`raster`) hand it
+//! spans with closures for their depth, colors and varyings.
+#![deny(unsafe_code)]
+
 pub mod alpha;
 pub mod blend;
 pub mod describe;
 pub mod dither;
 pub mod fog;
 pub mod logic_op;
+pub mod multisample;
 pub mod output;
+pub mod pipeline;
 pub mod stencil;
 
 use crate::framebuffer::band::{ColorBand, DepthBand};
@@ -24,6 +33,17 @@ use stencil::StencilFace;
 
 /// Longest span the fragment stage processes at once (one tile row).
 pub const MAX_SPAN: usize = 64;
+
+/// The live-fragment mask of a whole `n`-pixel span (bit i: pixel i), n ≤ 64. Here, in
+/// the lowest room that builds such masks, so that fragment, raster and setup share one.
+#[inline]
+pub fn span_mask(n: usize) -> u64 {
+    if n >= 64 {
+        !0
+    } else {
+        (1u64 << n) - 1
+    }
+}
 
 /// The depth test of a draw.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -294,16 +314,6 @@ pub fn depth_test(test: &DepthTest, depth: &mut DepthBand<'_>, row_start: usize,
     }
 }
 
-/// The mask with the low `n` bits set (n ≤ 64).
-#[inline]
-fn full_mask(n: usize) -> u64 {
-    if n >= 64 {
-        !0
-    } else {
-        (1u64 << n) - 1
-    }
-}
-
 /// Writes `colors[i]` for every bit of `live` to the row of `target` starting at
 /// `row_start`, converting to the buffer's format and honouring the channel `mask`.
 pub fn write_colors(
@@ -317,7 +327,7 @@ pub fn write_colors(
     let all = mask.iter().all(|&m| m);
     let lanes = colors.iter().enumerate().filter(|(i, _)| live & (1 << i) != 0);
     match target {
-        ColorBand::Unorm8(px) if all && live == full_mask(colors.len()) => {
+        ColorBand::Unorm8(px) if all && live == span_mask(colors.len()) => {
             // Every fragment written, every channel: a plain loop the compiler can unroll.
             let cells = &mut px[row_start..row_start + colors.len()];
             for (cell, c) in cells.iter_mut().zip(colors) {
@@ -375,7 +385,7 @@ pub fn write_uniform_color(
     mask: [bool; 4],
     clamp_float: bool,
 ) {
-    let all_live = live == if n >= 64 { !0 } else { (1u64 << n) - 1 };
+    let all_live = live == span_mask(n);
     if let (ColorBand::Unorm8(px), [true, true, true, true]) = (&mut *target, mask) {
         let v = color.map(|x| float_to_unorm(x, 8) as u8);
         if all_live {

@@ -11,7 +11,7 @@
 use super::blend::{blend_f32, blend_unorm8, Blend};
 use super::dither::dither_rgb565;
 use super::logic_op::{logic_op_u16, logic_op_unorm8, LogicOp};
-use super::{write_colors, MAX_SPAN};
+use super::{span_mask, write_colors, MAX_SPAN};
 use crate::framebuffer::band::ColorBand;
 use crate::framebuffer::format::float_to_unorm;
 
@@ -25,16 +25,6 @@ pub struct TargetOps<'a> {
     pub blend_color: [f32; 4],
     pub mask: [bool; 4],
     pub clamp_float: bool,
-}
-
-/// The live mask of a whole `n`-pixel span.
-#[inline]
-fn full_span(n: usize) -> u64 {
-    if n >= 64 {
-        !0
-    } else {
-        (1u64 << n) - 1
-    }
 }
 
 /// Blends (or logic-ops), dithers and writes `colors[i]` for every bit `i` of `live` to the
@@ -65,7 +55,7 @@ pub fn write_target(
             } else {
                 out[..n].copy_from_slice(&src[..n]);
             }
-            if mask == [true; 4] && live == full_span(n) {
+            if mask == [true; 4] && live == span_mask(n) {
                 px.copy_from_slice(&out[..n]);
             } else {
                 for_live(live, n, |i| (0..4).filter(|&k| mask[k]).for_each(|k| px[i][k] = out[i][k]));
@@ -156,7 +146,7 @@ pub fn write_target(
 /// Calls `f(i)` for every bit `i < n` of `live`.
 #[inline(always)]
 fn for_live(live: u64, n: usize, mut f: impl FnMut(usize)) {
-    let mut bits = live & crate::raster::span_mask(n);
+    let mut bits = live & span_mask(n);
     while bits != 0 {
         f(bits.trailing_zeros() as usize);
         bits &= bits - 1;

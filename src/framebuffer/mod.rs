@@ -5,6 +5,8 @@
 //! numbers them. It knows formats and rectangles, not GL: the context decides which buffers
 //! and which rectangle an operation touches and passes plain values down.
 
+#![deny(unsafe_code)]
+
 pub mod band;
 pub mod blit;
 pub mod external;

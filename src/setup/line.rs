@@ -18,6 +18,7 @@
 //! computed from the viewport as llvmpipe does), and a pixel is sampled at its centre, i.e.
 //! at the integer corner after the vertices are moved by −½. Rows are converted back to
 //! GL's bottom-up rows only when spans are produced.
+use super::fixed::{div_ceil, div_floor};
 use crate::framebuffer::Rect;
 
 /// Subpixel bits, as for triangles.
@@ -117,22 +118,6 @@ pub struct LineSetup {
     /// Pixels that may be covered, in GL rows (exclusive maxima).
     pub bounds: Rect,
     pub gradient: LineGradient,
-}
-
-/// Floor division for i64 (rounds towards −∞).
-#[inline]
-fn div_floor(n: i64, d: i64) -> i64 {
-    let q = n / d;
-    if (n % d != 0) && ((n < 0) != (d < 0)) {
-        q - 1
-    } else {
-        q
-    }
-}
-
-#[inline]
-fn div_ceil(n: i64, d: i64) -> i64 {
-    -div_floor(-n, d)
 }
 
 /// `0 < v < 1`.

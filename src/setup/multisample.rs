@@ -7,6 +7,7 @@
 //! functions of the 8-subpixel-bit fixed-point vertices exactly, with the same fill rule as
 //! a pixel centre (which is the single sample at (8, 8)).
 use super::triangle::{to_fixed, TriangleSetup};
+use crate::framebuffer::multisample::MAX_SAMPLES;
 
 /// A sample position inside its pixel, in 1/256 pixel from the lower-left corner.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -127,6 +128,12 @@ impl SampleQuad {
 pub fn sample_position(samples: usize, index: usize) -> [f32; 2] {
     let o = sample_offsets(samples).get(index).copied().unwrap_or(CENTRE[0]);
     [o.x as f32 / 256.0, o.y as f32 / 256.0]
+}
+
+/// Sample positions relative to the pixel centre, in pixels (GL's y up): where a job
+/// evaluates its depth plane for each sample.
+pub fn sample_shifts(offsets: &[SampleOffset]) -> [[f32; 2]; MAX_SAMPLES] {
+    std::array::from_fn(|s| offsets.get(s).map_or([0.0; 2], |o| [o.x as f32 / 256.0 - 0.5, o.y as f32 / 256.0 - 0.5]))
 }
 
 #[cfg(test)]

@@ -9,6 +9,8 @@
 //! does (measured: a triangle with an edge on pixel centres of row 0 covers row 0). It makes
 //! triangles sharing an edge cover every pixel exactly once.
 
+use super::fixed::{div_ceil, div_floor};
+
 /// Subpixel bits of window coordinates.
 pub const SUBPIXEL_BITS: u32 = 8;
 /// One pixel in fixed point.
@@ -71,23 +73,6 @@ pub struct TriangleSetup {
     pub max_x: i32,
     pub min_y: i32,
     pub max_y: i32,
-}
-
-/// Floor division for i64 (rounds towards −∞).
-#[inline]
-fn div_floor(n: i64, d: i64) -> i64 {
-    let q = n / d;
-    if (n % d != 0) && ((n < 0) != (d < 0)) {
-        q - 1
-    } else {
-        q
-    }
-}
-
-/// Ceiling division for i64 (rounds towards +∞).
-#[inline]
-fn div_ceil(n: i64, d: i64) -> i64 {
-    -div_floor(-n, d)
 }
 
 impl TriangleSetup {

@@ -13,6 +13,8 @@
 //! their 16, 24 or 32 bits. Formats of more than 8 bits per color channel are stored with 8.
 //! Depth-stencil formats (GL_EXT_packed_depth_stencil) are depth images with a stencil
 //! plane beside the depth texels: sampling sees only the depth, as GL specifies.
+#![deny(unsafe_code)]
+
 pub mod env;
 pub mod sampler;
 

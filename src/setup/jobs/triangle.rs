@@ -1,5 +1,7 @@
-//! Triangles inside one tile: exact row spans from the edge functions, attribute planes
-//! evaluated at pixel centres, then the fragment operations span by span.
+//! Filled triangles: the job a set-up triangle becomes (its edges and attribute planes),
+//! and how it renders inside one tile: its exact row spans (at pixel centres, or at each
+//! sample position on a multisampled target) walked by `raster`, each span handed with its
+//! depth, colors and varyings to the fragment pipeline.
 //!
 //! Attribute planes are anchored at the triangle's first vertex (not the window origin), so
 //! their precision does not depend on where the triangle lies. Colors are interpolated
@@ -7,58 +9,22 @@
 //! equal the divide is skipped, which changes nothing but time. The accuracy mode
 //! ([`Accuracy`]) may instead interpolate affinely (fast) or compute every attribute from
 //! f64 barycentric coordinates at each pixel (exact).
-use super::accuracy::Accuracy;
-use super::interpolate::{self, Interpolant};
-use super::{shade_span, span_mask, walk_spans, Band, DrawState, Scratch, Span};
+use crate::fragment::pipeline::{shade_span, shade_span_samples, DrawState, Scratch, Span};
+use crate::fragment::{multisample::SampleMasks, span_mask};
+use crate::framebuffer::band::Band;
 use crate::framebuffer::Rect;
 use crate::gl::limits::MAX_TEXTURE_UNITS;
+use crate::raster::walk::{stipple_mask, walk_sample_spans, walk_spans};
+use crate::setup::accuracy::Accuracy;
+use crate::setup::multisample::{sample_offsets, sample_shifts, SampleOffset};
+use crate::setup::plane::{self, Plane};
 use crate::setup::triangle::{TriangleSetup, ONE};
 
-/// `a(x, y) = a0 + dadx·(x − x0) + dady·(y − y0)` around the anchor `(x0, y0)`.
-#[derive(Clone, Copy, Debug, PartialEq, Default)]
-pub struct Plane {
-    pub a0: f32,
-    pub dadx: f32,
-    pub dady: f32,
-}
-
-impl Plane {
-    /// The plane through three values at three points (in pixels, relative to the anchor at
-    /// the first point).
-    pub fn through(d1: [f64; 2], d2: [f64; 2], values: [f32; 3]) -> Plane {
-        let det = d1[0] * d2[1] - d2[0] * d1[1];
-        let (v0, v1, v2) = (values[0] as f64, values[1] as f64, values[2] as f64);
-        let (dv1, dv2) = (v1 - v0, v2 - v0);
-        Plane {
-            a0: values[0],
-            dadx: ((dv1 * d2[1] - dv2 * d1[1]) / det) as f32,
-            dady: ((d1[0] * dv2 - d2[0] * dv1) / det) as f32,
-        }
-    }
-
-    #[inline]
-    pub fn at(&self, dx: f32, dy: f32) -> f32 {
-        self.a0 + self.dadx * dx + self.dady * dy
-    }
-}
-
-impl Interpolant for Plane {
-    #[inline]
-    fn at(&self, dx: f32, dy: f32) -> f32 {
-        Plane::at(self, dx, dy)
-    }
-
-    #[inline]
-    fn step_x(&self) -> f32 {
-        self.dadx
-    }
-}
-
 /// How a triangle's color varies over it (planes around its anchor).
-pub type Shading = interpolate::Shading<Plane>;
+pub type Shading = plane::Shading<Plane>;
 
 /// A triangle's extra attributes (planes around its anchor).
-pub type Varyings = interpolate::Varyings<Plane>;
+pub type Varyings = plane::Varyings<Plane>;
 
 /// A set-up triangle with everything its fragments need.
 #[derive(Clone, Debug)]
@@ -295,29 +261,58 @@ impl TriangleJob {
     }
 }
 
-/// The polygon stipple bits of the 64 pixels from `(x0, y)` on: bit `i` for pixel `x0 + i`.
-/// The pattern's row `y % 32` holds column `x % 32` in bit `31 − x % 32` (§3.6.2).
-#[inline]
-pub fn stipple_mask(pattern: &[u32; 32], x0: i32, y: i32) -> u64 {
-    let row = pattern[y.rem_euclid(32) as usize];
-    // Rotate column x0 into bit 31, then reverse so that it lands in bit 0.
-    let bits = row.rotate_left(x0.rem_euclid(32) as u32).reverse_bits() as u64;
-    bits | bits << 32
-}
+impl TriangleJob {
+    /// The pixel rectangle that may contain covered samples: every pixel the triangle's
+    /// bounding box touches.
+    pub fn sample_bounds(&self) -> Rect {
+        let (x0, y0, x1, y1) = self.setup.pixel_box();
+        Rect { x0, y0, x1, y1 }
+    }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
+    /// Renders the part of the triangle inside `area` into a multisampled band, sample by
+    /// sample at the standard positions of `samples` samples, with the fill rule of pixel
+    /// centres applied to each sample.
+    pub fn render_samples(&self, state: &DrawState, area: Rect, band: &mut Band<'_>, scratch: &mut Scratch) {
+        let offsets = sample_offsets(band.samples);
+        walk_sample_spans(
+            area.intersect(self.sample_bounds()),
+            offsets,
+            |y, o, x0, x1| self.setup.row_span_at(y, o.x, o.y, x0, x1),
+            |y, x0, x1, masks| self.shade_samples(state, band, scratch, y, x0, x1, masks, offsets),
+        );
+    }
 
-    #[test]
-    fn stipple_mask_reads_bit_31_as_the_leftmost_column() {
-        let mut pattern = [0u32; 32];
-        pattern[3] = 0x8000_0001; // columns 0 and 31 of rows 3, 35, 67, …
-        assert_eq!(stipple_mask(&pattern, 0, 3), 1 | 1 << 31 | 1 << 32 | 1 << 63);
-        assert_eq!(stipple_mask(&pattern, 31, 35), 1 | 1 << 1 | 1 << 32 | 1 << 33);
-        assert_eq!(stipple_mask(&pattern, 5, 4), 0);
-        // Negative coordinates wrap like positive ones (x = −1 is column 31).
-        assert_eq!(stipple_mask(&pattern, -1, -29) & 3, 3);
+    #[allow(clippy::too_many_arguments)]
+    fn shade_samples(
+        &self,
+        state: &DrawState,
+        band: &mut Band<'_>,
+        scratch: &mut Scratch,
+        y: i32,
+        x0: i32,
+        x1: i32,
+        mut masks: SampleMasks,
+        offsets: &[SampleOffset],
+    ) {
+        let n = (x1 - x0) as usize;
+        if let Some(pattern) = &state.polygon_stipple {
+            let stipple = stipple_mask(pattern, x0, y);
+            masks.iter_mut().for_each(|m| *m &= stipple);
+        }
+        let dy = y as f32 + 0.5 - self.anchor[1];
+        let dx0 = x0 as f32 + 0.5 - self.anchor[0];
+        let shifts = sample_shifts(offsets);
+        let span = Span { y, x0, n, row_start: band.sample_index(y, x0, 0), front_facing: self.front_facing };
+        shade_span_samples(
+            state,
+            band,
+            scratch,
+            span,
+            masks,
+            |i, s| self.z.at(dx0 + i as f32 + shifts[s][0], dy + shifts[s][1]),
+            |colors| self.shading.span_colors(dx0, dy, n, colors),
+            |i, j, out| self.varyings.at(dx0 + i as f32, dy + j as f32, out),
+        );
     }
 }
 

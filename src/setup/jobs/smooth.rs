@@ -1,6 +1,7 @@
-//! Smooth (antialiased) lines, points and triangles inside one tile: every pixel the
-//! primitive touches gets its coverage ([`crate::setup::smooth`]) multiplied into its
-//! fragment's alpha, then the same fragment operations as aliased primitives.
+//! Smooth (antialiased) lines, points and triangles: the jobs they become, and how they
+//! render inside one tile. Every pixel the primitive touches gets its coverage
+//! ([`crate::setup::smooth`]) walked by `raster` and multiplied into its fragment's alpha
+//! by the same fragment pipeline as aliased primitives.
 //!
 //! A draw picks these jobs instead of the aliased ones when GL_LINE_SMOOTH,
 //! GL_POINT_SMOOTH or GL_POLYGON_SMOOTH is enabled, so aliased primitives never test for
@@ -9,13 +10,13 @@
 //! values (so they vary along the line only, over its length plus one pixel); a point has
 //! one value; a triangle interpolates over its plane, evaluated at pixel centres (also at
 //! centres outside it, for partly covered pixels).
-use super::interpolate::{Shading, Varyings};
-use super::triangle::{stipple_mask, Plane};
-use super::{shade_covered_span, Band, DrawState, Scratch, Span};
-use crate::fragment::MAX_SPAN;
+use super::line::LineVertex;
+use super::triangle::WindowVertex;
+use crate::fragment::pipeline::{shade_covered_span, DrawState, Scratch, Span};
+use crate::framebuffer::band::Band;
 use crate::framebuffer::Rect;
-use crate::raster::line::LineVertex;
-use crate::raster::triangle::WindowVertex;
+use crate::raster::walk::{stipple_mask, walk_covered};
+use crate::setup::plane::{Plane, Shading, Varyings};
 use crate::setup::smooth::{triangle_pixel_coverage, SmoothLineCoverage, SmoothPointCoverage};
 
 /// A smooth primitive ready for rasterization.
@@ -43,37 +44,6 @@ impl SmoothJob {
             SmoothJob::Point(job) => job.render(state, area, band, scratch),
             // Filled polygons are bounded by the viewport (they are clipped to a guard band).
             SmoothJob::Triangle(job) => job.render(state, area.intersect(state.fill_clip), band, scratch),
-        }
-    }
-}
-
-/// Calls `shade(y, x0, n, live, coverage)` for every piece (at most [`MAX_SPAN`] pixels) of
-/// every row of `area` with a covered pixel; `coverage(x, y)` is pixel (x, y)'s coverage,
-/// `columns(y)` the columns of row `y` that may be covered.
-#[inline]
-fn walk_covered(
-    area: Rect,
-    columns: impl Fn(i32) -> Option<(i32, i32)>,
-    coverage: impl Fn(i32, i32) -> f32,
-    mut shade: impl FnMut(i32, i32, usize, u64, &[f32]),
-) {
-    let mut values = [0.0f32; MAX_SPAN];
-    for y in area.y0..area.y1 {
-        let Some((first, end)) = columns(y) else { continue };
-        let (mut x0, x1) = (first.max(area.x0), end.min(area.x1));
-        while x0 < x1 {
-            let n = ((x1 - x0) as usize).min(MAX_SPAN);
-            let mut live = 0u64;
-            for (i, value) in values[..n].iter_mut().enumerate() {
-                *value = coverage(x0 + i as i32, y);
-                if *value > 0.0 {
-                    live |= 1 << i;
-                }
-            }
-            if live != 0 {
-                shade(y, x0, n, live, &values[..n]);
-            }
-            x0 += n as i32;
         }
     }
 }

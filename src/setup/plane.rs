@@ -1,9 +1,12 @@
-//! Attribute interpolation shared by triangles and lines: how color varies over a primitive
-//! ([`Shading`]) and the perspective-correct extra attributes ([`Varyings`]).
+//! Attribute planes: how a set-up primitive's depth, color and extra attributes vary over
+//! window space, built once per primitive and evaluated per pixel by the fragment inputs
+//! its job hands to the pipeline.
 //!
-//! Both are generic over the plane type, because triangles and lines evaluate their planes
-//! differently (triangles around their first vertex; lines over llvmpipe's y-down
-//! coordinates with fused multiply-adds), while the interpolation itself is the same.
+//! [`Shading`] (color) and [`Varyings`] (the perspective-correct extra attributes) are
+//! generic over the plane type, because triangles and lines evaluate their planes
+//! differently (triangles around their first vertex, [`Plane`]; lines over llvmpipe's
+//! y-down coordinates with fused multiply-adds, `LinePlane`), while the interpolation
+//! itself is the same.
 
 /// A linear function of pixel position.
 pub trait Interpolant {
@@ -87,5 +90,52 @@ impl<P: Interpolant> Varyings<P> {
         for (o, p) in out.iter_mut().zip(&self.over_w) {
             *o = p.at(x, y) * w;
         }
+    }
+}
+
+/// `a(x, y) = a0 + dadx·(x − x0) + dady·(y − y0)` around the anchor `(x0, y0)`.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct Plane {
+    pub a0: f32,
+    pub dadx: f32,
+    pub dady: f32,
+}
+
+impl Plane {
+    /// The plane through three values at three points (in pixels, relative to the anchor at
+    /// the first point).
+    pub fn through(d1: [f64; 2], d2: [f64; 2], values: [f32; 3]) -> Plane {
+        let det = d1[0] * d2[1] - d2[0] * d1[1];
+        let (v0, v1, v2) = (values[0] as f64, values[1] as f64, values[2] as f64);
+        let (dv1, dv2) = (v1 - v0, v2 - v0);
+        Plane {
+            a0: values[0],
+            dadx: ((dv1 * d2[1] - dv2 * d1[1]) / det) as f32,
+            dady: ((d1[0] * dv2 - d2[0] * dv1) / det) as f32,
+        }
+    }
+
+    #[inline]
+    pub fn at(&self, dx: f32, dy: f32) -> f32 {
+        self.a0 + self.dadx * dx + self.dady * dy
+    }
+}
+
+impl Interpolant for Plane {
+    #[inline]
+    fn at(&self, dx: f32, dy: f32) -> f32 {
+        Plane::at(self, dx, dy)
+    }
+
+    #[inline]
+    fn step_x(&self) -> f32 {
+        self.dadx
+    }
+}
+
+impl Interpolant for super::line::LinePlane {
+    #[inline]
+    fn at(&self, px: f32, py: f32) -> f32 {
+        super::line::LinePlane::at(self, px, py)
     }
 }

@@ -1,11 +1,14 @@
-//! Points inside one tile: an aliased point is a square of pixels with one depth and one
-//! color, so every row of it is a constant span. On a multisampled target with
+//! Aliased points: the job a set-up point becomes, and how it renders inside one tile. An
+//! aliased point is a square of pixels with one depth and one color, so every row of it is
+//! a constant span handed to the fragment pipeline. On a multisampled target with
 //! GL_MULTISAMPLE on, a point covers the samples of its unrounded square instead
 //! ([`SampleQuad::point`], llvmpipe's shape there).
-use super::multisample::{shade_span_samples, walk_sample_spans, SampleMasks};
-use super::{shade_span, span_mask, Band, DrawState, Scratch, Span};
-use crate::fragment::MAX_SPAN;
+use crate::fragment::multisample::SampleMasks;
+use crate::fragment::pipeline::{shade_span, shade_span_samples, DrawState, Scratch, Span};
+use crate::fragment::{span_mask, MAX_SPAN};
+use crate::framebuffer::band::Band;
 use crate::framebuffer::Rect;
+use crate::raster::walk::walk_sample_spans;
 use crate::setup::multisample::{sample_offsets, SampleQuad};
 
 /// A set-up point: its pixels, its window z and its color.

@@ -1,14 +1,16 @@
-//! Pixel rectangles (glBitmap, glDrawPixels) inside one tile: an image placed at the raster
-//! position and scaled by the pixel zoom, whose fragments go through the same per-fragment
-//! pipeline as primitives (one depth, one set of varyings for the whole rectangle).
+//! Pixel rectangles (glBitmap, glDrawPixels): the job such an image becomes (placed at the
+//! raster position and scaled by the pixel zoom), and how it renders inside one tile: its
+//! fragments go through the same fragment pipeline as primitives (one depth, one set of
+//! varyings for the whole rectangle); stencil and depth/stencil images are written
+//! straight to the buffer.
 //!
 //! Window pixel (x, y) takes image pixel (⌊(x + ½ − x_r) / zoom_x⌋, ⌊(y + ½ − y_r) / zoom_y⌋)
 //! when that lies inside the image: the fragments are the pixels whose centres lie in the
 //! zoomed image's rectangle (left and bottom edges included), which also handles negative
 //! zooms (the image then extends left of or below the raster position).
-use super::{shade_span, Band, DrawState, Scratch, Span};
+use crate::fragment::pipeline::{shade_span, DrawState, Scratch, Span};
 use crate::fragment::MAX_SPAN;
-use crate::framebuffer::band::DepthBand;
+use crate::framebuffer::band::{Band, DepthBand};
 use crate::framebuffer::format::fragment_depth_to_fixed;
 use crate::framebuffer::Rect;
 use std::sync::Arc;

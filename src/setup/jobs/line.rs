@@ -1,5 +1,6 @@
-//! Lines inside one tile: the row spans of a set-up line, its attribute planes evaluated at
-//! pixel centres, then the same fragment operations as triangles.
+//! Aliased lines: the job a set-up line becomes (its edges and attribute planes), and how
+//! it renders inside one tile: its row spans walked by `raster`, each handed with its
+//! depth, colors and varyings to the same fragment pipeline as triangles.
 //!
 //! Attributes follow llvmpipe's line planes: they vary along the major axis only, linearly
 //! in window space for z and perspective-correctly (planes of c/w and 1/w) for colors.
@@ -7,19 +8,15 @@
 //! On a multisampled target with GL_MULTISAMPLE on, a line covers the samples of its
 //! rectangle instead ([`SampleQuad::line`], llvmpipe's shape there); its color and varyings
 //! are still evaluated at pixel centres and its depth at each sample.
-use super::interpolate::{Interpolant, Shading, Varyings};
-use super::multisample::{sample_shifts, shade_span_samples, walk_sample_spans, SampleMasks};
-use super::{shade_span, span_mask, walk_spans, Band, DrawState, Scratch, Span};
+use crate::fragment::multisample::SampleMasks;
+use crate::fragment::pipeline::{shade_span, shade_span_samples, DrawState, Scratch, Span};
+use crate::fragment::span_mask;
+use crate::framebuffer::band::Band;
 use crate::framebuffer::Rect;
+use crate::raster::walk::{walk_sample_spans, walk_spans};
 use crate::setup::line::{LineGradient, LinePlane, LineSetup};
-use crate::setup::multisample::{sample_offsets, SampleQuad};
-
-impl Interpolant for LinePlane {
-    #[inline]
-    fn at(&self, px: f32, py: f32) -> f32 {
-        LinePlane::at(self, px, py)
-    }
-}
+use crate::setup::multisample::{sample_offsets, sample_shifts, SampleQuad};
+use crate::setup::plane::{Shading, Varyings};
 
 /// How a line's color varies along it (planes over y-down pixel coordinates).
 pub type LineShading = Shading<LinePlane>;

@@ -1,0 +1,251 @@
+//! The scene: a flush interval's draw states and set-up primitives, binned into the 64×64
+//! tiles each may touch, waiting for a flush point.
+//!
+//! A draw call adds its state snapshot ([`Scene::add_state`]) and its primitives
+//! ([`Scene::add`], [`Scene::add_narrow`]); each primitive is binned into the tiles its
+//! bounding box (or, for lines, its rows' columns) touches, clipped to the draw's scissor
+//! box. [`Scene::execute`] hands the bins to the tile workers (`raster`), which call back
+//! here to render each bin entry.
+
+use super::jobs::line::LineJob;
+use super::jobs::pixels::PixelRectJob;
+use super::jobs::point::PointJob;
+use super::jobs::smooth::SmoothJob;
+use super::jobs::triangle::TriangleJob;
+use crate::fragment::pipeline::DrawState;
+use crate::framebuffer::{ColorSlot, Framebuffer, Rect};
+use crate::raster::{render_tiles, thread_count, TILE_SIZE};
+use std::sync::Arc;
+
+/// How many of a scene's most recent draw states a new draw's state is compared with before
+/// it is added (see [`Scene::add_state`]).
+pub const STATE_CACHE: usize = 4;
+
+/// A primitive ready for rasterization.
+pub enum Primitive {
+    Triangle(TriangleJob),
+    Line(LineJob),
+    Point(PointJob),
+    /// A smooth (antialiased) line, point or triangle.
+    Smooth(SmoothJob),
+    /// A pixel rectangle (glBitmap, glDrawPixels).
+    Pixels(PixelRectJob),
+}
+
+/// Recorded rendering waiting for a flush point.
+pub struct Scene {
+    width: usize,
+    height: usize,
+    tiles_x: usize,
+    /// The color buffers the scene writes, in the order of every draw's color masks.
+    targets: Vec<ColorSlot>,
+    states: Vec<Arc<DrawState>>,
+    primitives: Vec<(u32, Primitive)>,
+    /// Per tile (row-major), indices into `primitives` in submission order.
+    bins: Vec<Vec<u32>>,
+    /// How many indices the bins hold in all.
+    binned: usize,
+}
+
+impl Scene {
+    /// An empty scene for a `width` × `height` framebuffer.
+    pub fn new(width: usize, height: usize) -> Scene {
+        let tiles_x = width.div_ceil(TILE_SIZE);
+        let tiles_y = height.div_ceil(TILE_SIZE);
+        Scene {
+            width,
+            height,
+            tiles_x,
+            targets: Vec::new(),
+            states: Vec::new(),
+            primitives: Vec::new(),
+            bins: vec![Vec::new(); tiles_x * tiles_y],
+            binned: 0,
+        }
+    }
+
+    /// The recorded primitives a scene may hold before the context renders it (whatever
+    /// the thread count, so the same commands flush at the same points): a long draw then
+    /// needs this much memory for its primitives, not memory in proportion to its length.
+    pub const BUDGET_BYTES: usize = 64 << 20;
+
+    /// About how much memory the recorded primitives and their bin entries take.
+    pub fn recorded_bytes(&self) -> usize {
+        self.primitives.len() * std::mem::size_of::<(u32, Primitive)>() + self.binned * std::mem::size_of::<u32>()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.primitives.is_empty()
+    }
+
+    pub fn size(&self) -> (usize, usize) {
+        (self.width, self.height)
+    }
+
+    /// The index of `slot` among the scene's color targets, adding it if new.
+    pub fn target_index(&mut self, slot: ColorSlot) -> usize {
+        if let Some(i) = self.targets.iter().position(|&s| s == slot) {
+            return i;
+        }
+        self.targets.push(slot);
+        self.targets.len() - 1
+    }
+
+    /// How many color targets the scene has so far.
+    pub fn target_count(&self) -> usize {
+        self.targets.len()
+    }
+
+    /// Adds a draw's state; primitives added afterwards refer to it. A state equal to one of
+    /// the last [`STATE_CACHE`] states is not added again: its index is returned, with
+    /// `true` for "cached" (a loop of glBegin/glEnd pairs with unchanged state shares one
+    /// compiled state).
+    pub fn add_state(&mut self, state: DrawState) -> (u32, bool) {
+        let recent = self.states.len().saturating_sub(STATE_CACHE);
+        if let Some(i) = self.states[recent..].iter().rposition(|s| **s == state) {
+            return ((recent + i) as u32, true);
+        }
+        self.states.push(Arc::new(state));
+        ((self.states.len() - 1) as u32, false)
+    }
+
+    /// How many distinct draw states the scene holds.
+    pub fn state_count(&self) -> usize {
+        self.states.len()
+    }
+
+    /// Bins a primitive covering at most the pixel rectangle `bounds` (inclusive min,
+    /// exclusive max), under draw state `state`.
+    pub fn add(&mut self, state: u32, bounds: Rect, primitive: Primitive) {
+        let drawn = &self.states[state as usize];
+        let clip = if matches!(primitive, Primitive::Triangle(_)) { drawn.fill_clip } else { drawn.clip };
+        // Rasterized per sample, a triangle may cover samples of pixels whose centre it misses.
+        let bounds = match &primitive {
+            Primitive::Triangle(job) if drawn.multisample.is_some_and(|m| m.per_sample()) => job.sample_bounds(),
+            _ => bounds,
+        };
+        let r = bounds.intersect(clip);
+        if r.is_empty() {
+            return;
+        }
+        let index = self.primitives.len() as u32;
+        self.primitives.push((state, primitive));
+        let t = TILE_SIZE as i32;
+        let (rows, columns) = ((r.y0 / t)..=((r.y1 - 1) / t), (r.x0 / t)..=((r.x1 - 1) / t));
+        self.binned += rows.clone().count() * columns.clone().count();
+        for ty in rows {
+            for tx in columns.clone() {
+                self.bins[ty as usize * self.tiles_x + tx as usize].push(index);
+            }
+        }
+    }
+
+    /// Bins a primitive covering at most `bounds`, but only into the tiles of each tile row
+    /// that `columns` (the half-open pixel columns it may cover within a half-open range
+    /// of rows) names: long thin primitives (lines) cross few of their bounding box's tiles.
+    pub fn add_narrow(
+        &mut self,
+        state: u32,
+        bounds: Rect,
+        primitive: Primitive,
+        columns: impl Fn(i32, i32) -> Option<(i32, i32)>,
+    ) {
+        let clip = self.states[state as usize].clip;
+        let r = bounds.intersect(clip);
+        if r.is_empty() {
+            return;
+        }
+        let index = self.primitives.len() as u32;
+        let t = TILE_SIZE as i32;
+        let mut binned = false;
+        for ty in (r.y0 / t)..=((r.y1 - 1) / t) {
+            let Some((x0, x1)) = columns(r.y0.max(ty * t), r.y1.min(ty * t + t)) else {
+                continue;
+            };
+            let (x0, x1) = (x0.max(r.x0), x1.min(r.x1));
+            if x0 >= x1 {
+                continue;
+            }
+            for tx in (x0 / t)..=((x1 - 1) / t) {
+                self.bins[ty as usize * self.tiles_x + tx as usize].push(index);
+                self.binned += 1;
+                binned = true;
+            }
+        }
+        if binned {
+            self.primitives.push((state, primitive));
+        }
+    }
+
+    /// Renders the scene into `framebuffer` (which must have the scene's size) on
+    /// `thread_count()` threads.
+    pub fn execute(self, framebuffer: &mut Framebuffer) {
+        self.execute_on(framebuffer, thread_count());
+    }
+
+    /// Renders the scene on up to `threads` threads (the caller's included): the tile
+    /// workers render each tile's bin in submission order, each entry by its job.
+    pub fn execute_on(self, framebuffer: &mut Framebuffer, threads: usize) {
+        if self.primitives.is_empty() {
+            return;
+        }
+        render_tiles(framebuffer, &self.targets, self.tiles_x, &self.bins, threads, |index, tile, band, scratch| {
+            let (state, primitive) = &self.primitives[index as usize];
+            let state = &self.states[*state as usize];
+            let area = tile.intersect(state.clip);
+            match primitive {
+                Primitive::Triangle(job) if state.multisample.is_some_and(|m| m.per_sample()) => {
+                    job.render_samples(state, tile.intersect(state.fill_clip), band, scratch)
+                }
+                Primitive::Triangle(job) => job.render(state, tile.intersect(state.fill_clip), band, scratch),
+                Primitive::Line(job) if job.per_sample() => job.render_samples(state, area, band, scratch),
+                Primitive::Line(job) => job.render(state, area, band, scratch),
+                Primitive::Point(job) if job.sample_square.is_some() => job.render_samples(state, area, band, scratch),
+                Primitive::Point(job) => job.render(state, area, band, scratch),
+                Primitive::Smooth(job) => job.render(state, area, band, scratch),
+                Primitive::Pixels(job) => job.render(state, area, band, scratch),
+            }
+        });
+        if framebuffer.samples() > 1 {
+            framebuffer.resolve(&self.targets, self.drawn_area());
+        }
+    }
+
+    /// The smallest rectangle holding every tile with something binned into it.
+    fn drawn_area(&self) -> Rect {
+        let mut area = Rect { x0: i32::MAX, y0: i32::MAX, x1: i32::MIN, y1: i32::MIN };
+        for (i, _) in self.bins.iter().enumerate().filter(|(_, b)| !b.is_empty()) {
+            let t = TILE_SIZE as i32;
+            let (tx, ty) = ((i % self.tiles_x) as i32, (i / self.tiles_x) as i32);
+            area.x0 = area.x0.min(tx * t);
+            area.y0 = area.y0.min(ty * t);
+            area.x1 = area.x1.max(tx * t + t);
+            area.y1 = area.y1.max(ty * t + t);
+        }
+        area
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::fragment::{AlphaTest, DepthTest, FragmentState};
+    use crate::gl::CompareFunc;
+
+    fn state(alpha: bool) -> DrawState {
+        let depth = Some(DepthTest { func: CompareFunc::Less, write: true });
+        let mut fragment = FragmentState::plain(depth, vec![Some([true; 4])], false);
+        fragment.alpha = alpha.then_some(AlphaTest { func: CompareFunc::Always, reference: 0.0, unorm8: true });
+        let clip = Rect::from_xywh(0, 0, 4, 1);
+        DrawState { fragment, clip, fill_clip: clip, polygon_stipple: None, samples_passed: None, multisample: None }
+    }
+
+    #[test]
+    fn equal_states_share_one_entry_of_the_scene() {
+        let mut scene = Scene::new(4, 1);
+        assert_eq!(scene.add_state(state(false)), (0, false));
+        assert_eq!(scene.add_state(state(true)), (1, false));
+        assert_eq!(scene.add_state(state(false)), (0, true));
+        assert_eq!(scene.state_count(), 2);
+    }
+}
