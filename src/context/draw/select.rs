@@ -1,7 +1,8 @@
 //! The geometry of selection and feedback modes: which primitives of a draw survive
-//! clipping (to the view volume and the user planes) and culling, and the window depths of what remains, handed to
-//! the hit record, or reported as feedback tokens (`context::selection`). Nothing is
-//! rasterized.
+//! clipping (to the view volume and the user planes) and culling, and the window depths of
+//! what remains, handed to the hit record, or reported as feedback tokens
+//! (`context::selection`). Nothing is rasterized. Transformation, clipping, facing and the
+//! viewport transform are `crate::vertex`'s, on the same snapshot a rendered draw takes.
 use super::super::Context;
 use crate::context::selection::FeedbackVertex;
 use crate::gl::enums::*;
