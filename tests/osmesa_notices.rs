@@ -6,7 +6,7 @@
 //! binary again, running only `refusals_child`), whose stderr the tests read.
 use std::ffi::c_int;
 use std::process::Command;
-use tessera::api::enums::*;
+use tessera::gl::enums::*;
 use tessera::api::osmesa::*;
 
 const CHILD: &str = "TESSERA_NOTICES_CHILD";

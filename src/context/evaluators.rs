@@ -28,7 +28,6 @@ use super::Context;
 use crate::gl::enums::*;
 use crate::gl::types::GLenum;
 use crate::vertex::bezier::{self, Point, MAX_EVAL_ORDER};
-use crate::vertex::immediate::vertex_from_current;
 
 /// Components per control point of the nine maps, in enum order.
 const COMPONENTS: [usize; 9] = [4, 1, 3, 1, 2, 3, 4, 3, 4];
@@ -265,7 +264,7 @@ impl Context {
             return;
         };
         let maps = &self.evaluators.map1;
-        let mut vertex = vertex_from_current(&self.state.current, [0.0, 0.0, 0.0, 1.0]);
+        let mut vertex = self.state.current.vertex_at([0.0, 0.0, 0.0, 1.0]);
         if enables[COLOR_4] {
             vertex.color = maps[COLOR_4].curve_at(u);
         }
@@ -287,7 +286,7 @@ impl Context {
             return;
         };
         let maps = &self.evaluators.map2;
-        let mut vertex = vertex_from_current(&self.state.current, [0.0, 0.0, 0.0, 1.0]);
+        let mut vertex = self.state.current.vertex_at([0.0, 0.0, 0.0, 1.0]);
         if enables[COLOR_4] {
             vertex.color = maps[COLOR_4].surface_at(uv);
         }

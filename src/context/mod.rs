@@ -5,6 +5,11 @@
 //! this module and its children validate arguments exactly as the GL 2.1 compatibility
 //! specification says, record the specified error and change nothing when invalid, and
 //! otherwise change state or hand work to the framebuffer.
+//!
+//! Drawing is not done here: at a draw, `draw` validates, compiles the fragment state,
+//! snapshots the state vertex processing reads into typed inputs and hands the vertices to
+//! `crate::vertex`, which owns transformation, lighting, clipping, primitive setup and the
+//! viewport transform; this module keeps the pending scene and renders it at flush points.
 
 pub mod accum;
 pub mod attrib;

@@ -55,7 +55,7 @@ impl Context {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::context::draw::tests::vertex;
+    use crate::context::draw::replay::vertex;
     use crate::framebuffer::{ColorFormat, ColorSlot, DepthStencilFormat, Drawable, Framebuffer, FramebufferConfig};
     use crate::gl::enums::*;
     use std::sync::{Arc, Mutex};

@@ -8,6 +8,8 @@ use crate::gl::enums::*;
 use crate::gl::limits::*;
 use crate::gl::types::GLenum;
 use crate::gl::CompareFunc;
+/// The lighting state lives with the lighting it parameterises; the context stores it.
+pub use crate::vertex::lighting::{Light, LightingState, Material};
 
 /// GL_COLOR_BUFFER_BIT: alpha test, blending, dithering, logic op, draw buffers, clear color
 /// and color masks.
@@ -252,117 +254,6 @@ impl Default for FogState {
             color: [0.0; 4],
             coord_src: GL_FRAGMENT_DEPTH,
             distance_mode: GL_EYE_PLANE_ABSOLUTE_NV,
-        }
-    }
-}
-
-/// One light source (glLight): colors, and position and spot direction in eye coordinates
-/// (transformed by the modelview matrix when they were specified).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Light {
-    pub ambient: [f32; 4],
-    pub diffuse: [f32; 4],
-    pub specular: [f32; 4],
-    /// GL_POSITION in eye coordinates; w = 0 for a directional light.
-    pub position: [f32; 4],
-    /// GL_SPOT_DIRECTION in eye coordinates.
-    pub spot_direction: [f32; 3],
-    pub spot_exponent: f32,
-    /// Degrees: [0, 90], or 180 (no spotlight).
-    pub spot_cutoff: f32,
-    /// Constant, linear and quadratic attenuation.
-    pub attenuation: [f32; 3],
-}
-
-impl Light {
-    /// GL's initial values: light 0 is white, the others black (diffuse and specular).
-    pub fn initial(index: usize) -> Self {
-        let white_if_first = if index == 0 { [1.0; 4] } else { [0.0, 0.0, 0.0, 1.0] };
-        Light {
-            ambient: [0.0, 0.0, 0.0, 1.0],
-            diffuse: white_if_first,
-            specular: white_if_first,
-            position: [0.0, 0.0, 1.0, 0.0],
-            spot_direction: [0.0, 0.0, -1.0],
-            spot_exponent: 0.0,
-            spot_cutoff: 180.0,
-            attenuation: [1.0, 0.0, 0.0],
-        }
-    }
-}
-
-/// The material of one face (glMaterial).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Material {
-    pub ambient: [f32; 4],
-    pub diffuse: [f32; 4],
-    pub specular: [f32; 4],
-    pub emission: [f32; 4],
-    pub shininess: f32,
-    /// GL_COLOR_INDEXES (ambient, diffuse, specular indexes; color-index lighting only).
-    pub color_indexes: [f32; 3],
-}
-
-impl Default for Material {
-    fn default() -> Self {
-        Material {
-            ambient: [0.2, 0.2, 0.2, 1.0],
-            diffuse: [0.8, 0.8, 0.8, 1.0],
-            specular: [0.0, 0.0, 0.0, 1.0],
-            emission: [0.0, 0.0, 0.0, 1.0],
-            shininess: 0.0,
-            color_indexes: [0.0, 1.0, 1.0],
-        }
-    }
-}
-
-/// GL_LIGHTING_BIT: enables, lights, light model, materials, color material, shading.
-#[derive(Clone, Debug, PartialEq)]
-pub struct LightingState {
-    pub enabled: bool,
-    pub lights: [bool; MAX_LIGHTS],
-    pub color_material: bool,
-    /// GL_CLAMP_VERTEX_COLOR.
-    pub clamp_vertex_color: GLenum,
-    /// glShadeModel: GL_SMOOTH or GL_FLAT.
-    pub shade_model: GLenum,
-    /// glProvokingVertex: GL_LAST_VERTEX_CONVENTION (GL's default) or GL_FIRST_VERTEX_CONVENTION.
-    pub provoking_vertex: GLenum,
-    /// The parameters of each light.
-    pub light: [Light; MAX_LIGHTS],
-    /// GL_LIGHT_MODEL_AMBIENT.
-    pub model_ambient: [f32; 4],
-    /// GL_LIGHT_MODEL_LOCAL_VIEWER.
-    pub local_viewer: bool,
-    /// GL_LIGHT_MODEL_TWO_SIDE.
-    pub two_side: bool,
-    /// GL_LIGHT_MODEL_COLOR_CONTROL: GL_SINGLE_COLOR or GL_SEPARATE_SPECULAR_COLOR.
-    pub color_control: GLenum,
-    /// Front and back materials.
-    pub materials: [Material; 2],
-    /// glColorMaterial: GL_FRONT, GL_BACK or GL_FRONT_AND_BACK.
-    pub color_material_face: GLenum,
-    /// glColorMaterial: GL_EMISSION, GL_AMBIENT, GL_DIFFUSE, GL_SPECULAR or GL_AMBIENT_AND_DIFFUSE.
-    pub color_material_mode: GLenum,
-}
-
-impl Default for LightingState {
-    fn default() -> Self {
-        LightingState {
-            enabled: false,
-            lights: [false; MAX_LIGHTS],
-            color_material: false,
-            clamp_vertex_color: GL_TRUE as GLenum,
-            shade_model: GL_SMOOTH,
-            provoking_vertex: GL_LAST_VERTEX_CONVENTION,
-            light: std::array::from_fn(Light::initial),
-            model_ambient: [0.2, 0.2, 0.2, 1.0],
-            local_viewer: false,
-            two_side: false,
-            color_control: GL_SINGLE_COLOR,
-            materials: [Material::default(); 2],
-            color_material_face: GL_FRONT_AND_BACK,
-            color_material_mode: GL_AMBIENT_AND_DIFFUSE,
         }
     }
 }
@@ -654,6 +545,22 @@ pub struct CurrentState {
     pub raster: crate::context::raster_pos::RasterPos,
 }
 
+impl CurrentState {
+    /// The vertex a glVertex call at `position` makes: every other attribute is the current one.
+    #[inline]
+    pub fn vertex_at(&self, position: [f32; 4]) -> crate::vertex::Vertex {
+        crate::vertex::Vertex {
+            position,
+            color: self.color,
+            secondary_color: self.secondary_color,
+            normal: self.normal,
+            tex_coords: self.tex_coords,
+            fog_coord: self.fog_coord,
+            edge_flag: self.edge_flag,
+        }
+    }
+}
+
 impl Default for CurrentState {
     fn default() -> Self {
         CurrentState {
@@ -725,5 +632,25 @@ impl State {
             },
             list_base: 0,
         }
+    }
+}
+
+#[cfg(test)]
+mod current_tests {
+    use super::*;
+
+    #[test]
+    fn vertices_snapshot_every_current_attribute() {
+        let mut current =
+            CurrentState { color: [0.1, 0.2, 0.3, 0.4], edge_flag: false, fog_coord: 9.0, ..Default::default() };
+        current.tex_coords[3] = [5.0, 6.0, 7.0, 8.0];
+        let v = current.vertex_at([1.0, 2.0, 3.0, 4.0]);
+        assert_eq!(v.position, [1.0, 2.0, 3.0, 4.0]);
+        assert_eq!(v.color, [0.1, 0.2, 0.3, 0.4]);
+        assert_eq!(v.secondary_color, [0.0, 0.0, 0.0, 1.0]);
+        assert_eq!(v.normal, [0.0, 0.0, 1.0]);
+        assert_eq!(v.tex_coords[3], [5.0, 6.0, 7.0, 8.0]);
+        assert_eq!(v.tex_coords[0], [0.0, 0.0, 0.0, 1.0]);
+        assert_eq!((v.fog_coord, v.edge_flag), (9.0, false));
     }
 }

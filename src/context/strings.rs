@@ -39,7 +39,7 @@ pub const VERSION: &str = concat!("1.5 tessera ", env!("CARGO_PKG_VERSION"), "\0
 // | 1.4     | Depth textures and shadows (compare mode)        | works  | capi texture_texgen_shadow |
 // | 1.4     | Fog coordinate                                   | works  | piglit ext_fog_coord-modes |
 // | 1.4     | glMultiDrawArrays/Elements                       | works  | capi draw_arrays |
-// | 1.4     | Point parameters (size min/max, attenuation)     | works  | context/draw.rs; capi point_attenuation (fade threshold: multisample only) |
+// | 1.4     | Point parameters (size min/max, attenuation)     | works  | vertex/point.rs; capi point_attenuation (fade threshold: multisample only) |
 // | 1.4     | Secondary color                                  | works  | capi lighting_*, fragment_ops_fog |
 // | 1.4     | glBlendFuncSeparate                              | works  | capi fragment_ops_blend |
 // | 1.4     | Stencil wrap                                     | works  | piglit stencil-wrap |

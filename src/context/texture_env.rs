@@ -1,12 +1,12 @@
-//! Per-unit texturing state and its compilation: glTexEnv*, glTexGen* and their queries, the
-//! texture coordinates of each vertex (texgen, then the texture matrix), and the per-draw
+//! Per-unit texturing state and its compilation: glTexEnv*, glTexGen* and their queries, what
+//! the texture coordinates of each vertex need (texgen, the texture matrix), and the per-draw
 //! [`Texturing`] the fragment stage runs: for each enabled unit with a complete texture, a
 //! sampler chosen once per draw and its compiled environment. An untextured draw compiles
 //! to `None` and its spans do no texture work at all.
 //!
 //! Eye planes are transformed by the inverse modelview at specification (GL 2.1 §2.11.4),
-//! as Mesa does. The eye-space normal (for SPHERE_MAP, NORMAL_MAP, REFLECTION_MAP) is
-//! computed by [`eye_normal`], kept separate so that lighting can share it.
+//! as Mesa does. The per-vertex work (texgen, the texture matrix) is
+//! [`crate::vertex::texgen`]'s; this module compiles what it reads per draw.
 use super::texture::{Level, TextureObject, MAX_TEXTURE_LOD_BIAS};
 use super::Context;
 use crate::gl::enums::*;
@@ -16,8 +16,8 @@ use crate::gl::CompareFunc;
 use crate::texture::env::{Combine, CombineFn, EnvMode, Operand, Source, TexEnv};
 use crate::texture::sampler::{DepthMode, Dim, Filter, Sampler, Wrap};
 use crate::texture::{BaseFormat, TextureStage, Texturing};
-use crate::vertex::Vertex;
-use glam::{Mat4, Vec3, Vec4};
+use crate::vertex::texgen::{Gen, TexCoordUnit};
+use glam::Mat4;
 
 /// GL_TEXTURE_ENV state of one unit.
 #[derive(Clone, Debug, PartialEq)]
@@ -87,30 +87,6 @@ impl Default for TextureUnitState {
         TextureUnitState { bindings: [0; 4], env: TexEnvState::default(), gen: std::array::from_fn(plane) }
     }
 }
-
-/// The eye-space normal of a vertex: the normal transformed by the inverse transpose of the
-/// modelview's upper 3×3, then normalized (GL_NORMALIZE) or rescaled (GL_RESCALE_NORMAL).
-pub fn eye_normal(modelview_inverse: &Mat4, normal: [f32; 3], normalize: bool, rescale: bool) -> Vec3 {
-    let inv = modelview_inverse;
-    let n = Vec3::from_array(normal);
-    // n' = n · M⁻¹ (a row vector times the inverse): n dotted with the columns of M⁻¹.
-    let cols = [inv.col(0).truncate(), inv.col(1).truncate(), inv.col(2).truncate()];
-    let mut e = Vec3::new(n.dot(cols[0]), n.dot(cols[1]), n.dot(cols[2]));
-    if normalize {
-        let len = e.length();
-        if len > 0.0 {
-            e /= len;
-        }
-    } else if rescale {
-        let row = Vec3::new(cols[0].z, cols[1].z, cols[2].z);
-        let len = row.length();
-        if len > 0.0 {
-            e /= len;
-        }
-    }
-    e
-}
-
 fn combine_fn(e: GLenum) -> Option<CombineFn> {
     Some(match e {
         GL_REPLACE => CombineFn::Replace,
@@ -377,64 +353,7 @@ impl Context {
         units
     }
 
-    /// Applies texgen and the texture matrix of every enabled unit to a vertex's texture
-    /// coordinates (object coordinates `v`, eye coordinates `eye`).
-    pub(super) fn vertex_tex_coords(
-        &self,
-        v: &Vertex,
-        eye: Vec4,
-        units: &[TexCoordUnit],
-    ) -> [[f32; 4]; MAX_TEXTURE_UNITS] {
-        let mut out = v.tex_coords;
-        for u in units {
-            let mut tc = v.tex_coords[u.unit];
-            if u.gen.iter().any(|g| g.is_some()) {
-                let normal = if u.needs_normal {
-                    eye_normal(&self.matrices.modelview_inverse(), v.normal, self.state.transform.normalize, {
-                        self.state.transform.rescale_normal
-                    })
-                } else {
-                    Vec3::Z
-                };
-                let unit_eye = {
-                    let p = eye.truncate();
-                    let len = p.length();
-                    if len > 0.0 {
-                        p / len
-                    } else {
-                        p
-                    }
-                };
-                let reflect = unit_eye - 2.0 * normal * normal.dot(unit_eye);
-                for (c, g) in u.gen.iter().enumerate() {
-                    let Some(g) = g else { continue };
-                    tc[c] = match *g {
-                        Gen::Object(p) => (0..4).map(|i| p[i] * v.position[i]).sum(),
-                        Gen::Eye(p) => (0..4).map(|i| p[i] * eye[i]).sum(),
-                        Gen::Sphere => {
-                            let m = 2.0
-                                * (reflect.x * reflect.x + reflect.y * reflect.y + (reflect.z + 1.0).powi(2)).sqrt();
-                            let r = if c == 0 { reflect.x } else { reflect.y };
-                            if m > 0.0 {
-                                r / m + 0.5
-                            } else {
-                                0.5
-                            }
-                        }
-                        Gen::Reflection => reflect[c],
-                        Gen::Normal => normal[c],
-                    };
-                }
-            }
-            if let Some(m) = &u.matrix {
-                tc = (*m * Vec4::from_array(tc)).to_array();
-            }
-            out[u.unit] = tc;
-        }
-        out
-    }
-
-    /// What [`Context::vertex_tex_coords`] needs per enabled unit, decided once per draw.
+    /// What texgen ([`crate::vertex::texgen`]) needs per enabled unit, decided once per draw.
     pub(super) fn tex_coord_units(&self) -> Vec<TexCoordUnit> {
         self.tex_coord_units_of(self.enabled_texture_units().into_iter().map(|(unit, _)| unit))
     }
@@ -488,26 +407,6 @@ impl Context {
         }
         Some(Texturing { stages, fb_height })
     }
-}
-
-/// Texture coordinate generation of one coordinate, compiled.
-#[derive(Clone, Copy, Debug)]
-pub(super) enum Gen {
-    Object([f32; 4]),
-    Eye([f32; 4]),
-    Sphere,
-    Reflection,
-    Normal,
-}
-
-/// Per-draw texture coordinate work of one enabled unit.
-#[derive(Clone, Debug)]
-pub(super) struct TexCoordUnit {
-    unit: usize,
-    gen: [Option<Gen>; 4],
-    needs_normal: bool,
-    /// The texture matrix, unless the identity.
-    matrix: Option<Mat4>,
 }
 
 fn compile_env(env: &TexEnvState, base: BaseFormat) -> TexEnv {

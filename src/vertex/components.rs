@@ -193,9 +193,17 @@ pub type Decoder = fn(bytes: &[u8], size: usize) -> [f32; 4];
 
 fn decode<T: Component, const NORMALIZED: bool>(bytes: &[u8], size: usize) -> [f32; 4] {
     let mut values = [0.0, 0.0, 0.0, 1.0];
-    for (value, chunk) in values.iter_mut().zip(bytes.chunks_exact(std::mem::size_of::<T>())).take(size) {
-        let component = T::from_bytes(chunk);
-        *value = if NORMALIZED { component.normalized() } else { component.to_f32() };
+    let width = std::mem::size_of::<T>();
+    // Component by component over the four slots, not a loop over the element's bytes: for
+    // floats that loop is a copy, which LLVM may turn into a call to memcpy of a variable
+    // length, several times the cost of the (at most four) loads.
+    for (i, value) in values.iter_mut().enumerate() {
+        if i < size {
+            if let Some(chunk) = bytes.get(i * width..(i + 1) * width) {
+                let component = T::from_bytes(chunk);
+                *value = if NORMALIZED { component.normalized() } else { component.to_f32() };
+            }
+        }
     }
     values
 }

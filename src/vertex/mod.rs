@@ -1,15 +1,62 @@
-//! Vertex processing: the vertices a draw call delivers (immediate mode, client arrays,
-//! buffer objects), their transformation to clip space, primitive assembly and clipping.
+//! Vertex processing: everything between the vertices a draw delivers and the primitives
+//! set up for rasterization — vertex input (immediate mode, client arrays, buffer objects),
+//! transformation, lighting, texgen and the fog coordinate, primitive assembly, clipping,
+//! the polygon modes, line stipple, culling, polygon offset, point size and the viewport
+//! transform.
+//!
+//! This room works on typed inputs, never on the context: `context` validates a draw,
+//! snapshots what the vertex stage reads into a [`transform::Transform`] (matrices by value,
+//! lighting state by reference) and a [`geometry::Geometry`] (the per-draw constants of
+//! everything after transformation), and hands them over with the vertices and the scene to
+//! bin into. The lighting state types are defined here ([`lighting`]) and stored by the
+//! context as they are, so the lighting pass borrows them instead of copying a light set per
+//! draw; everything else the snapshot holds is a handful of words computed once per draw.
+//! Nothing here imports `context`, `api` or `winsys`.
 //!
 //! Every source of vertices produces the same [`Vertex`] records, so everything after
-//! vertex input has one path.
+//! vertex input has one path: [`transform::transform`] makes clip-space vertices, and
+//! [`pipeline::draw`] assembles and clips them ([`assembly`], [`clip`]) and hands each
+//! primitive to its setup: [`triangle`] (with [`cull`] and [`offset`]), [`line`], [`point`]
+//! or, in the point and line polygon modes, [`outline`]; all of them map to window space
+//! through [`viewport`].
+//!
+//! Points, lines and polygons drawn in GL_POINT or GL_LINE mode follow Mesa 22's llvmpipe
+//! exactly (it is what programs are compared against), which pins down details GL leaves
+//! open: they are clipped to the view volume (points by their centre), in llvmpipe's y-down
+//! window space with its rounding (a fused multiply-add where its generated code has one);
+//! line stipple cuts lines into dashes, one pixel step along the major axis per pattern
+//! bit; polygon outlines come from Mesa's primitive decomposition, clipper (new vertices
+//! interpolated from the end nearer the plane), culling, polygon offset (per vertex, units
+//! scaled by twice the depth resolution) and edge order; quads keep their last vertex
+//! provoking under either convention, as Mesa's (GL_QUADS_FOLLOW_PROVOKING_VERTEX_CONVENTION
+//! false). Known deviations, where Mesa contradicts the GL specification: a strip whose
+//! first segment is clipped away entirely keeps the stipple counter of the previous draw in
+//! Mesa (here it restarts); Mesa turns a 3-vertex triangle fan into GL_TRIANGLES, changing
+//! its provoking vertex under GL_FIRST_VERTEX_CONVENTION (here it stays the second vertex);
+//! and when front and back faces have different modes, Mesa applies the polygon offset of
+//! the first triangle's mode to the whole draw (here each triangle gets its own mode's).
+#![deny(unsafe_code)]
 
 pub mod arrays;
+pub mod assembly;
+pub mod attribute;
 pub mod bezier;
 pub mod buffer_objects;
+pub mod clip;
 pub mod components;
+pub mod cull;
+pub mod geometry;
 pub mod immediate;
 pub mod lighting;
+pub mod line;
+pub mod offset;
+pub mod outline;
+pub mod pipeline;
+pub mod point;
+pub mod texgen;
+pub mod transform;
+pub mod triangle;
+pub mod viewport;
 
 use crate::gl::limits::MAX_TEXTURE_UNITS;
 
@@ -27,6 +74,3 @@ pub struct Vertex {
     /// Whether edges starting at this vertex are boundary edges (glEdgeFlag).
     pub edge_flag: bool,
 }
-
-pub mod assembly;
-pub mod clip;

@@ -1,13 +1,16 @@
-//! The geometry of selection and feedback modes: which primitives of a draw survive clipping (to the view
-//! volume and the user planes) and culling, and the window depths of what remains, handed to
-//! the hit record, or reported as feedback tokens (`context::selection`). Nothing is
-//! rasterized.
-use super::{Context, Geometry};
+//! The geometry of selection and feedback modes: which primitives of a draw survive
+//! clipping (to the view volume and the user planes) and culling, and the window depths of
+//! what remains, handed to the hit record, or reported as feedback tokens
+//! (`context::selection`). Nothing is rasterized. Transformation, clipping, facing and the
+//! viewport transform are `crate::vertex`'s, on the same snapshot a rendered draw takes.
+use super::super::Context;
 use crate::context::selection::FeedbackVertex;
 use crate::gl::enums::*;
 use crate::gl::types::GLenum;
 use crate::vertex::assembly::{assemble, Primitive, QuadSplit};
 use crate::vertex::clip::ClipVertex;
+use crate::vertex::cull::{culls, faces_front};
+use crate::vertex::geometry::Geometry;
 use crate::vertex::Vertex;
 
 impl Context {
@@ -22,7 +25,7 @@ impl Context {
             .map(|(_, height, config)| (config.depth_stencil.depth_bits(), height))
             .unwrap_or((24, 1));
         self.matrices.validate();
-        let clip_vertices = self.transform(vertices, true);
+        let clip_vertices = self.transform_units(vertices, true, &self.tex_coord_units());
         let g = self.geometry(depth_bits, height);
         let planes = &g.line_planes;
         let outcodes: Vec<u32> = clip_vertices.iter().map(|v| planes.outcode(v)).collect();
@@ -119,11 +122,5 @@ fn culled(g: &Geometry, v: [&ClipVertex; 3]) -> bool {
     if det == 0.0 {
         return g.cull.is_some();
     }
-    let front = (det > 0.0) == g.front_ccw;
-    match g.cull {
-        Some(GL_FRONT_AND_BACK) => true,
-        Some(GL_FRONT) => front,
-        Some(GL_BACK) => !front,
-        _ => false,
-    }
+    culls(g.cull, faces_front(g.front_ccw, det))
 }

@@ -13,7 +13,6 @@ use crate::gl::enums::*;
 use crate::gl::limits::MAX_TEXTURE_UNITS;
 use crate::gl::types::GLenum;
 use crate::vertex::arrays::ArrayId;
-use crate::vertex::immediate::vertex_from_current;
 use crate::vertex::Vertex;
 
 /// Which attributes of a captured vertex came from arrays.
@@ -107,7 +106,7 @@ impl Context {
             if batch.try_reserve(captured.len()).is_err() {
                 return self.error(GL_OUT_OF_MEMORY);
             }
-            let base = vertex_from_current(&self.state.current, [0.0, 0.0, 0.0, 1.0]);
+            let base = self.state.current.vertex_at([0.0, 0.0, 0.0, 1.0]);
             batch.extend(captured.iter().map(|c| {
                 let mut vertex = base;
                 compiled.supplied.merge(&mut vertex, c);

@@ -27,7 +27,7 @@ use crate::vertex::arrays::{
 };
 use crate::vertex::assembly::{continued_vertices, DrawPart};
 use crate::vertex::buffer_objects::BufferTable;
-use crate::vertex::immediate::{is_primitive_mode, vertex_from_current};
+use crate::vertex::immediate::is_primitive_mode;
 use crate::vertex::Vertex;
 
 /// How many arrays there are (`ClientArrays::all`).
@@ -172,7 +172,7 @@ fn assemble(
     }
     batch.try_reserve(elements.len()).map_err(|_| NoDraw::OutOfMemory)?;
     let start = batch.len();
-    batch.resize(start + elements.len(), vertex_from_current(current, [0.0, 0.0, 0.0, 1.0]));
+    batch.resize(start + elements.len(), current.vertex_at([0.0, 0.0, 0.0, 1.0]));
     let vertices = &mut batch[start..];
     for (id, array) in bound.iter().flatten() {
         match *id {

@@ -16,7 +16,7 @@ use crate::gl::enums::*;
 use crate::gl::limits::MAX_TEXTURE_UNITS;
 use crate::gl::types::GLenum;
 use crate::vertex::assembly::{continued_vertices, DrawPart};
-use crate::vertex::immediate::{is_primitive_mode, rect_positions, vertex_from_current};
+use crate::vertex::immediate::{is_primitive_mode, rect_positions};
 
 impl Context {
     /// glBegin.
@@ -53,7 +53,7 @@ impl Context {
         if !self.inside_begin_end {
             return;
         }
-        let vertex = vertex_from_current(&self.state.current, position);
+        let vertex = self.state.current.vertex_at(position);
         self.push_open_vertex(vertex);
     }
 
@@ -210,7 +210,7 @@ impl Context {
         if !self.check_outside_begin_end() {
             return;
         }
-        let vertices = rect_positions(corner1, corner2).map(|p| vertex_from_current(&self.state.current, p));
+        let vertices = rect_positions(corner1, corner2).map(|p| self.state.current.vertex_at(p));
         self.deliver(GL_POLYGON, &vertices);
     }
 }

@@ -1,0 +1,111 @@
+//! The primitive pipeline of a draw: its clip-space vertices assembled into points, lines
+//! and triangles (or, in the point and line polygon modes, outlines), each clipped only when
+//! it must be, and handed to the step that sets it up and bins it into the scene.
+use super::assembly::{assemble, DrawPart, Primitive, QuadSplit};
+use super::clip::ClipVertex;
+use super::geometry::Geometry;
+use super::line::{emit_clip_line, LineStipple};
+use super::outline::{decompose_outlines, Outline};
+use super::point::emit_point;
+use super::triangle::{emit_shaded_triangle, FlatColors};
+use crate::gl::enums::*;
+use crate::gl::types::GLenum;
+use crate::setup::jobs::triangle::WindowVertex;
+use crate::setup::Scene;
+
+/// Draws `clip_vertices` as primitives of `mode` into `scene` under the draw state
+/// `state_index`, with the per-draw constants `geometry`. `part` is the part of a long
+/// connected primitive these vertices are (see [`DrawPart`]); `stipple` is GL_LINE_STIPPLE's
+/// state where the part starts, and the state where it ends is returned.
+#[allow(clippy::too_many_arguments)]
+pub fn draw(
+    scene: &mut Scene,
+    state_index: u32,
+    geometry: &Geometry,
+    mode: GLenum,
+    clip_vertices: &[ClipVertex],
+    part: DrawPart,
+    mut stipple: Option<LineStipple>,
+) -> Option<LineStipple> {
+    let first_vertex = geometry.first_vertex;
+    let mut poly = Vec::new();
+    let mut scratch = Vec::new();
+    let polygons = (GL_TRIANGLES..=GL_POLYGON).contains(&mode);
+    let outlines = polygons && (geometry.mode_front != GL_FILL || geometry.mode_back != GL_FILL);
+    // Filled polygons are clipped to the guard band; points, lines and outlines to the
+    // view volume.
+    let planes = if polygons && !outlines { &geometry.planes } else { &geometry.line_planes };
+    let outcodes: Vec<u32> = clip_vertices.iter().map(|v| planes.outcode(v)).collect();
+    if outlines {
+        let mut outline = Outline { scene, state: state_index, g: geometry, stipple };
+        decompose_outlines(mode, clip_vertices.len() as u32, first_vertex, part, |t| {
+            let v = t.v.map(|i| &clip_vertices[i as usize]);
+            let codes = t.v.map(|i| outcodes[i as usize]);
+            outline.triangle(v, codes, t, &mut poly, &mut scratch);
+        });
+        return outline.stipple;
+    }
+    let split = if !first_vertex && mode == GL_QUADS && geometry.leaves_view_volume(clip_vertices) {
+        QuadSplit::SecondDiagonal
+    } else {
+        QuadSplit::FirstDiagonal
+    };
+    assemble(mode, clip_vertices.len() as u32, first_vertex, split, |primitive| match primitive {
+        Primitive::Point(i) => {
+            let i = i as usize;
+            if outcodes[i] == 0 {
+                emit_point(scene, state_index, geometry, &clip_vertices[i]);
+            }
+        }
+        Primitive::Line { v: [a, b], provoking } => {
+            if mode == GL_LINES {
+                // Every independent segment restarts the pattern (GL 2.1 §3.4.2).
+                if let Some(s) = stipple.as_mut() {
+                    s.counter = 0;
+                }
+            }
+            let provoking = &clip_vertices[provoking as usize];
+            let flat_color = geometry.flat.then_some(provoking.color);
+            let (a, b) = (a as usize, b as usize);
+            let codes = [outcodes[a], outcodes[b]];
+            if geometry.flat {
+                // Flat shading covers the secondary color too (the lit specular term).
+                let secondary_color = provoking.secondary_color;
+                let ea = ClipVertex { secondary_color, ..clip_vertices[a] };
+                let eb = ClipVertex { secondary_color, ..clip_vertices[b] };
+                emit_clip_line(scene, state_index, geometry, [&ea, &eb], codes, flat_color, stipple.as_mut());
+            } else {
+                let ends = [&clip_vertices[a], &clip_vertices[b]];
+                emit_clip_line(scene, state_index, geometry, ends, codes, flat_color, stipple.as_mut());
+            }
+        }
+        Primitive::Triangle { v, provoking, .. } => {
+            let [a, b, c] = v.map(|i| i as usize);
+            let (oa, ob, oc) = (outcodes[a], outcodes[b], outcodes[c]);
+            if oa & ob & oc != 0 {
+                return;
+            }
+            let flat = geometry.flat.then(|| FlatColors::of(&clip_vertices[provoking as usize]));
+            if oa | ob | oc == 0 {
+                let (va, vb, vc) = (&clip_vertices[a], &clip_vertices[b], &clip_vertices[c]);
+                let viewport = &geometry.viewport;
+                let w = [viewport.window(va), viewport.window(vb), viewport.window(vc)];
+                let back = [va.back_colors, vb.back_colors, vc.back_colors];
+                emit_shaded_triangle(scene, state_index, geometry, w, back, flat);
+            } else {
+                poly.clear();
+                poly.extend([clip_vertices[a], clip_vertices[b], clip_vertices[c]]);
+                geometry.planes.clip_polygon(&mut poly, &mut scratch, oa | ob | oc);
+                if poly.len() < 3 {
+                    return;
+                }
+                let w: Vec<WindowVertex> = poly.iter().map(|v| geometry.viewport.window(v)).collect();
+                for i in 1..w.len() - 1 {
+                    let back = [poly[0].back_colors, poly[i].back_colors, poly[i + 1].back_colors];
+                    emit_shaded_triangle(scene, state_index, geometry, [w[0], w[i], w[i + 1]], back, flat);
+                }
+            }
+        }
+    });
+    stipple
+}

@@ -1,0 +1,112 @@
+//! Points: their size (glPointSize, GL_POINT_SIZE_MIN/MAX and distance attenuation) and
+//! their setup into point jobs (aliased, smooth or covering samples), in llvmpipe's y-down
+//! window space.
+use super::clip::ClipVertex;
+use super::geometry::Geometry;
+use crate::framebuffer::Rect;
+use crate::gl::limits::MAX_POINT_SIZE;
+use crate::setup::jobs::line::LineVertex;
+use crate::setup::jobs::point::PointJob;
+use crate::setup::jobs::smooth::{SmoothJob, SmoothPoint};
+use crate::setup::{Primitive as RasterPrimitive, Scene};
+use crate::setup::multisample::SampleQuad;
+use crate::setup::point::point_rect;
+
+/// The size points are drawn with without distance attenuation: glPointSize `size` clamped to
+/// GL_POINT_SIZE_MIN/MAX (the minimum winning when they cross, as in Mesa) and to the
+/// implementation's range.
+pub fn point_size(size: f32, min: f32, max: f32) -> f32 {
+    clamp_point_size(size, min, max)
+}
+
+/// `size` clamped to [min, max] (min winning when they cross; NaN gives min) and to the
+/// implementation's range.
+fn clamp_point_size(size: f32, min: f32, max: f32) -> f32 {
+    let size = if size.is_nan() || size < min {
+        min
+    } else if size > max {
+        max
+    } else {
+        size
+    };
+    size.min(MAX_POINT_SIZE)
+}
+
+/// Point parameters' distance attenuation (GL 1.4, GL 2.1 §3.4): the derived size
+/// `size · 1/√(a + b·d + c·d²)` clamped to GL_POINT_SIZE_MIN/MAX. As Mesa's fixed-function
+/// vertex program, d is |z| of the eye coordinates (the spec's distance to the eye,
+/// approximated along the view axis; the same on the view axis) and the square root is of
+/// the absolute value. Without multisampling the derived size is the point's width (the
+/// fade threshold applies to multisampled points only).
+#[derive(Clone, Copy, Debug)]
+pub struct PointAttenuation {
+    pub size: f32,
+    pub coefficients: [f32; 3],
+    pub min: f32,
+    pub max: f32,
+}
+
+impl PointAttenuation {
+    pub fn size_at(&self, eye: [f32; 4]) -> f32 {
+        let d = eye[2].abs();
+        let [a, b, c] = self.coefficients;
+        let factor = d.mul_add(c, b).mul_add(d, a);
+        clamp_point_size(self.size / factor.abs().sqrt(), self.min, self.max)
+    }
+}
+
+impl Geometry {
+    /// The width of a point whose vertex has eye coordinates `eye`.
+    pub fn point_size_at(&self, eye: [f32; 4]) -> f32 {
+        self.point_attenuation.map_or(self.point_size, |a| a.size_at(eye))
+    }
+}
+
+/// Emits a point whose vertex is inside the view volume.
+pub fn emit_point(scene: &mut Scene, state: u32, g: &Geometry, v: &ClipVertex) {
+    let w = g.viewport.window_down(v, true);
+    emit_window_point(scene, state, g, &w, g.point_size_at(v.eye));
+}
+
+pub fn emit_window_point(scene: &mut Scene, state: u32, g: &Geometry, w: &LineVertex, size: f32) {
+    // llvmpipe interpolates point colors perspective-correctly too: (c/w)·w.
+    let color = if w.inv_w == 1.0 { w.color } else { w.color.map(|c| c * w.inv_w * (1.0 / w.inv_w)) };
+    let varyings = g.varyings.iter().map(|v| v.of_line(w)).collect();
+    if g.per_sample {
+        // The square of the unrounded size, as llvmpipe draws it on a multisampled target
+        // (sizes below 1 draw as 1 there, as for aliased points); GL_POINT_SMOOTH changes
+        // nothing there (measured on Mesa 22.3; GL 2.1 §3.3.3 would make it a circle).
+        if let Some(square) = SampleQuad::point([w.x, g.height as f32 - w.y_down], size.max(1.0)) {
+            let (x0, y0, x1, y1) = square.pixel_box();
+            let rect = Rect { x0, y0, x1, y1 };
+            let sample_square = Some(Box::new(square));
+            scene.add(state, rect, RasterPrimitive::Point(PointJob { rect, z: w.z, color, varyings, sample_square }));
+        }
+        return;
+    }
+    if g.smooth_points {
+        if let Some(job) = SmoothPoint::new(w, size, g.height, color, varyings) {
+            let job = SmoothJob::Point(Box::new(job));
+            scene.add(state, job.bounds(), RasterPrimitive::Smooth(job));
+        }
+        return;
+    }
+    let rect = point_rect(w.x, w.y_down, size, g.height);
+    let point = PointJob { rect, z: w.z, color, varyings, sample_square: None };
+    scene.add(state, rect, RasterPrimitive::Point(point));
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn point_size_clamps_like_mesa() {
+        assert_eq!(point_size(10.0, 2.0, 4.0), 4.0);
+        assert_eq!(point_size(1.0, 2.0, 4.0), 2.0);
+        // Crossed limits: the minimum wins below it, the maximum above.
+        assert_eq!(point_size(1.0, 6.0, 4.0), 6.0);
+        assert_eq!(point_size(9.0, 6.0, 4.0), 4.0);
+        assert_eq!(point_size(300.0, 0.0, MAX_POINT_SIZE), MAX_POINT_SIZE);
+    }
+}

@@ -1,0 +1,77 @@
+//! Filled triangles: the colors of their facing (two-sided lighting, flat shading), culling,
+//! polygon offset and their setup into triangle jobs (aliased or smooth).
+use super::clip::ClipVertex;
+use super::cull::{area2, culls, faces_front};
+use super::geometry::Geometry;
+use super::offset::{clamp_offset, polygon_offset};
+use crate::setup::jobs::smooth::{SmoothJob, SmoothTriangle};
+use crate::setup::jobs::triangle::{TriangleJob, WindowVertex};
+use crate::setup::{Primitive as RasterPrimitive, Scene};
+
+/// The colors of a flat-shaded primitive: its provoking vertex's front primary and
+/// secondary colors, and its back ones.
+#[derive(Clone, Copy, Debug)]
+pub struct FlatColors {
+    pub front: [[f32; 4]; 2],
+    pub back: [[f32; 4]; 2],
+}
+
+impl FlatColors {
+    pub fn of(v: &ClipVertex) -> Self {
+        FlatColors { front: [v.color, v.secondary_color], back: v.back_colors }
+    }
+}
+
+/// Emits a filled triangle with the colors of its facing: the back colors `back` of its
+/// corners when it faces back under two-sided lighting, and the provoking vertex's colors
+/// (primary and secondary) under flat shading.
+pub fn emit_shaded_triangle(
+    scene: &mut Scene,
+    state: u32,
+    g: &Geometry,
+    mut w: [WindowVertex; 3],
+    back: [[[f32; 4]; 2]; 3],
+    flat: Option<FlatColors>,
+) {
+    let use_back = g.two_side && !faces_front(g.front_ccw, area2(&w));
+    if use_back {
+        for (c, b) in w.iter_mut().zip(back) {
+            (c.color, c.secondary_color) = (b[0], b[1]);
+        }
+    }
+    let flat = flat.map(|f| if use_back { f.back } else { f.front });
+    if let Some([_, secondary]) = flat {
+        for c in &mut w {
+            c.secondary_color = secondary;
+        }
+    }
+    emit_triangle(scene, state, g, w, flat.map(|f| f[0]));
+}
+
+/// Culls, offsets, sets up and bins one window-space triangle.
+pub fn emit_triangle(scene: &mut Scene, state: u32, g: &Geometry, w: [WindowVertex; 3], flat: Option<[f32; 4]>) {
+    let area2 = area2(&w);
+    if !area2.is_finite() {
+        return;
+    }
+    let front = faces_front(g.front_ccw, area2);
+    if culls(g.cull, front) {
+        return;
+    }
+    let offset = g
+        .offset
+        .map_or(0.0, |(factor, units)| clamp_offset(polygon_offset(&w, factor, units, g.depth_bits), g.offset_clamp));
+    let varyings: Vec<[f32; 3]> = g.varyings.iter().map(|a| w.map(|v| a.of(&v))).collect();
+    if g.smooth_polygons {
+        if let Some(job) = SmoothTriangle::new(w, flat, offset, &varyings, front) {
+            let job = SmoothJob::Triangle(Box::new(job));
+            scene.add(state, job.bounds(), RasterPrimitive::Smooth(job));
+        }
+        return;
+    }
+    if let Some(mut job) = TriangleJob::with_accuracy(g.accuracy, w, flat, offset, &varyings) {
+        job.front_facing = front;
+        let bounds = job.bounds();
+        scene.add(state, bounds, RasterPrimitive::Triangle(job));
+    }
+}
