@@ -17,6 +17,7 @@
 #![allow(clippy::unnecessary_cast)]
 use super::guard;
 use crate::context::strings;
+use crate::gl::glx::*;
 use crate::gl::types::*;
 use crate::winsys::glx::{self as glx, DisplayAddr, DrawableKind, MakeCurrentError};
 use crate::winsys::glx_config::*;
@@ -34,35 +35,6 @@ pub type GLXextFuncPtr = Option<unsafe extern "C" fn()>;
 const TRUE: Bool = 1;
 const FALSE: Bool = 0;
 const SUCCESS: c_int = 0;
-const GLX_BAD_ATTRIBUTE: c_int = 2;
-const GLX_BAD_VISUAL: c_int = 4;
-const GLX_BAD_CONTEXT: c_int = 5;
-const GLX_VENDOR: c_int = 1;
-const GLX_VERSION: c_int = 2;
-const GLX_EXTENSIONS: c_int = 3;
-const GLX_WIDTH: c_int = 0x801D;
-const GLX_HEIGHT: c_int = 0x801E;
-const GLX_PRESERVED_CONTENTS: c_int = 0x801B;
-const GLX_LARGEST_PBUFFER: c_int = 0x801C;
-const GLX_PBUFFER_HEIGHT: c_int = 0x8040;
-const GLX_PBUFFER_WIDTH: c_int = 0x8041;
-const GLX_SHARE_CONTEXT_EXT: c_int = 0x800A;
-const GLX_SWAP_INTERVAL_EXT: c_int = 0x20F1;
-const GLX_MAX_SWAP_INTERVAL_EXT: c_int = 0x20F2;
-const GLX_CONTEXT_MAJOR_VERSION_ARB: c_int = 0x2091;
-const GLX_CONTEXT_MINOR_VERSION_ARB: c_int = 0x2092;
-const GLX_CONTEXT_FLAGS_ARB: c_int = 0x2094;
-const GLX_CONTEXT_PROFILE_MASK_ARB: c_int = 0x9126;
-const GLX_CONTEXT_CORE_PROFILE_BIT_ARB: c_int = 1;
-const GLX_CONTEXT_COMPATIBILITY_PROFILE_BIT_ARB: c_int = 2;
-const GLX_CONTEXT_DEBUG_BIT_ARB: c_int = 1;
-const GLX_CONTEXT_FORWARD_COMPATIBLE_BIT_ARB: c_int = 2;
-const GLX_CONTEXT_ROBUST_ACCESS_BIT_ARB: c_int = 4;
-const GLX_CONTEXT_RESET_NOTIFICATION_STRATEGY_ARB: c_int = 0x8256;
-const GLX_NO_RESET_NOTIFICATION_ARB: c_int = 0x8261;
-const GLX_COLOR_INDEX_TYPE: c_int = 0x8015;
-/// GLXBadProfileARB (glxproto.h), a GLX error code.
-const GLX_BAD_PROFILE_ARB: u8 = 13;
 
 const VENDOR: &CStr = c"tessera project";
 const VERSION: &CStr = c"1.4";

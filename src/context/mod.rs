@@ -5,6 +5,7 @@
 //! this module and its children validate arguments exactly as the GL 2.1 compatibility
 //! specification says, record the specified error and change nothing when invalid, and
 //! otherwise change state or hand work to the framebuffer.
+#![deny(unsafe_code)]
 
 pub mod accum;
 pub mod attrib;

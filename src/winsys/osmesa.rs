@@ -4,7 +4,6 @@
 //! the flush points (glFlush, glFinish, OSMesaGetColorBuffer); the caller's existing contents
 //! are never read. Rows go bottom-up (`OSMESA_Y_UP`, the default) or top-down, `OSMESA_ROW_LENGTH`
 //! pixels apart.
-use crate::api::osmesa::{OSMESA_ARGB, OSMESA_BGR, OSMESA_BGRA, OSMESA_RGB_565};
 use crate::context::current::{self, SharedContext};
 use crate::context::{Context, ContextConfig};
 use crate::framebuffer::external::CallerBuffer;
@@ -14,6 +13,7 @@ use crate::framebuffer::{
 };
 use crate::gl::enums::*;
 use crate::gl::limits::MAX_VIEWPORT_DIM;
+use crate::gl::osmesa::{OSMESA_ARGB, OSMESA_BGR, OSMESA_BGRA, OSMESA_RGB_565};
 use crate::gl::types::GLenum;
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex, MutexGuard, OnceLock};
