@@ -15,6 +15,7 @@
 // XIDs and visual ids are C `unsigned long`, kept as u64 inside: the casts are no-ops only
 // where `unsigned long` is 64 bits.
 #![allow(clippy::unnecessary_cast)]
+use super::caller_memory;
 use super::guard;
 use crate::context::strings;
 use crate::gl::glx::*;
@@ -55,27 +56,17 @@ fn report(display: *mut Display, error: GlxError, resource: u64, minor: u8) {
 /// # Safety
 /// `list` must be NULL or zero-terminated as the GLX calls require.
 unsafe fn attribute_list(list: *const c_int, singles: bool) -> Vec<i32> {
-    let mut out = Vec::new();
-    if list.is_null() {
-        return out;
-    }
-    let mut i = 0;
-    loop {
-        // SAFETY: the list is terminated by None (0); we stop there.
-        let attribute = unsafe { *list.add(i) };
-        if attribute == 0 {
-            break;
-        }
-        out.push(attribute);
+    let step = |attribute| {
         let boolean = singles && matches!(attribute, GLX_USE_GL | GLX_RGBA | GLX_DOUBLEBUFFER | GLX_STEREO);
-        if !boolean {
-            // SAFETY: a non-boolean attribute is followed by its value.
-            out.push(unsafe { *list.add(i + 1) });
-            i += 1;
+        // A non-boolean attribute is followed by its value.
+        if boolean {
+            1
+        } else {
+            2
         }
-        i += 1;
-    }
-    out
+    };
+    // SAFETY: the list is NULL or terminated by None (0), as the contract says.
+    unsafe { caller_memory::read_terminated(list, 0, step) }
 }
 
 /// A malloc'ed array of configuration handles (freed by the caller with XFree).
@@ -83,10 +74,8 @@ unsafe fn attribute_list(list: *const c_int, singles: bool) -> Vec<i32> {
 /// # Safety
 /// `count` must be NULL or writable.
 unsafe fn config_array(configs: &[&'static FbConfig], count: *mut c_int) -> *mut GLXFBConfig {
-    if !count.is_null() {
-        // SAFETY: checked non-null; the caller's out-parameter.
-        unsafe { *count = 0 };
-    }
+    // SAFETY: the caller's out-parameter, or NULL.
+    unsafe { caller_memory::write(count, 0) };
     if configs.is_empty() {
         return std::ptr::null_mut();
     }
@@ -99,10 +88,8 @@ unsafe fn config_array(configs: &[&'static FbConfig], count: *mut c_int) -> *mut
         // SAFETY: `array` holds `configs.len()` pointers.
         unsafe { *array.add(i) = glx::config_handle(c) as GLXFBConfig };
     }
-    if !count.is_null() {
-        // SAFETY: checked non-null.
-        unsafe { *count = configs.len() as c_int };
-    }
+    // SAFETY: the caller's out-parameter, or NULL.
+    unsafe { caller_memory::write(count, configs.len() as c_int) };
     array
 }
 
@@ -116,19 +103,18 @@ fn config_of(display: *mut Display, config: GLXFBConfig) -> Option<&'static FbCo
 /// # Safety
 /// `vis` must be NULL or point to an XVisualInfo.
 unsafe fn config_of_visual(display: *mut Display, vis: *const XVisualInfo) -> Option<&'static FbConfig> {
-    if vis.is_null() || display.is_null() {
+    if display.is_null() {
         return None;
     }
-    // SAFETY: checked non-null; the caller passes an XVisualInfo.
-    let visual_id = unsafe { (*vis).visualid } as u64;
+    // SAFETY: the caller passes an XVisualInfo, or NULL.
+    let visual_id = unsafe { caller_memory::read_at(vis, 0) }?.visualid as u64;
     glx::config_for_visual(addr(display), visual_id)
 }
 
 fn set<T>(out: *mut T, value: T) {
-    if !out.is_null() {
-        // SAFETY: non-null out-parameter of the caller.
-        unsafe { *out = value };
-    }
+    // SAFETY: an out-parameter of the caller, or NULL (the contracts of the GLX calls that
+    // use this).
+    unsafe { caller_memory::write(out, value) }
 }
 
 /// # Safety
@@ -886,11 +872,8 @@ pub extern "C" fn glXUseXFont(font: c_ulong, first: c_int, count: c_int, listBas
 /// `procName` must be NULL or NUL-terminated.
 #[no_mangle]
 pub unsafe extern "C" fn glXGetProcAddress(procName: *const GLubyte) -> GLXextFuncPtr {
-    if procName.is_null() {
-        return None;
-    }
-    // SAFETY: non-null and NUL-terminated by the contract.
-    let name = unsafe { CStr::from_ptr(procName.cast()) };
+    // SAFETY: NULL or NUL-terminated by the contract.
+    let name = unsafe { caller_memory::c_str(procName.cast()) }?;
     guard(None, || super::procs::lookup(name.to_bytes()))
 }
 
@@ -955,11 +938,10 @@ fn refuse_config(call: &str, handle: GLXFBConfig) {
 /// # Safety
 /// `vis` must be NULL or point to an XVisualInfo.
 unsafe fn describe_visual(vis: *const XVisualInfo) -> String {
-    if vis.is_null() {
+    // SAFETY: the caller passes an XVisualInfo, or NULL.
+    let Some(v) = (unsafe { caller_memory::read_at(vis, 0) }) else {
         return "no visual (NULL)".to_string();
-    }
-    // SAFETY: checked non-null; the caller passes an XVisualInfo.
-    let v = unsafe { &*vis };
+    };
     format!("visual {:#x} (depth {}, class {})", v.visualid, v.depth, v.class)
 }
 

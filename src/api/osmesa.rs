@@ -2,12 +2,13 @@
 //!
 //! Handles given to C are identifiers looked up in the registry of `winsys::osmesa`, never
 //! dereferenced, so a NULL, stale or foreign handle is refused instead of crashing.
+use super::caller_memory;
 use super::guard;
 use crate::framebuffer::external::CallerBuffer;
 use crate::gl::enums::*;
 use crate::gl::types::*;
 use crate::winsys::osmesa::{self as osm, BindFailure, PixelLayout, Request};
-use std::ffi::{c_char, c_int, c_uint, c_void, CStr};
+use std::ffi::{c_char, c_int, c_uint, c_void};
 
 use crate::gl::osmesa::*;
 
@@ -65,12 +66,11 @@ pub unsafe extern "C" fn OSMesaCreateContextAttribs(
         let mut i = 0;
         loop {
             // SAFETY: the list is zero-terminated; we read pairs until the terminator.
-            let attr = unsafe { *attribList.add(i) };
-            if attr == 0 {
+            let Some(attr) = (unsafe { caller_memory::read_at(attribList, i) }).filter(|&a| a != 0) else {
                 break;
-            }
+            };
             // SAFETY: a non-terminator attribute is followed by its value.
-            let value = unsafe { *attribList.add(i + 1) };
+            let value = unsafe { caller_memory::read_at(attribList, i + 1) }.unwrap_or_default();
             match attr {
                 a if a == OSMESA_FORMAT => format = value as GLenum,
                 OSMESA_DEPTH_BITS => depth = value,
@@ -182,9 +182,9 @@ pub unsafe extern "C" fn OSMesaGetIntegerv(pname: GLint, value: *mut GLint) {
             }
         })
     });
-    if let (Some(v), false) = (result, value.is_null()) {
-        // SAFETY: checked non-null; the caller passes a GLint to fill.
-        unsafe { *value = v }
+    if let Some(v) = result {
+        // SAFETY: the caller passes a GLint to fill, or NULL.
+        unsafe { caller_memory::write(value, v) }
     }
 }
 
@@ -193,10 +193,8 @@ pub unsafe extern "C" fn OSMesaGetIntegerv(pname: GLint, value: *mut GLint) {
 /// # Safety
 /// `p` must be NULL or valid for a write of `T`.
 unsafe fn out<T>(p: *mut T, v: T) {
-    if !p.is_null() {
-        // SAFETY: non-null, and valid for writes by the function's contract.
-        unsafe { p.write(v) }
-    }
+    // SAFETY: NULL or valid for writes by the function's contract.
+    unsafe { caller_memory::write(p, v) }
 }
 
 /// # Safety
@@ -251,11 +249,8 @@ pub unsafe extern "C" fn OSMesaGetColorBuffer(
 /// `funcName` must be NULL or a NUL-terminated string.
 #[no_mangle]
 pub unsafe extern "C" fn OSMesaGetProcAddress(funcName: *const c_char) -> OSMESAproc {
-    if funcName.is_null() {
-        return None;
-    }
-    // SAFETY: non-null and NUL-terminated by the contract.
-    let name = unsafe { CStr::from_ptr(funcName) };
+    // SAFETY: NULL or NUL-terminated by the contract.
+    let name = unsafe { caller_memory::c_str(funcName) }?;
     guard(None, || super::procs::lookup(name.to_bytes()))
 }
 
@@ -274,11 +269,10 @@ pub extern "C" fn OSMesaColorClamp(enable: GLboolean) {
 pub unsafe extern "C" fn OSMesaPostprocess(osmesa: OSMesaContext, filter: *const c_char, enable_value: c_uint) {
     let _ = (osmesa, enable_value);
     guard((), || {
-        let name = if filter.is_null() {
-            String::from("(null)")
-        } else {
-            // SAFETY: non-null and NUL-terminated by the contract.
-            unsafe { CStr::from_ptr(filter) }.to_string_lossy().into_owned()
+        // SAFETY: NULL or NUL-terminated by the contract.
+        let name = match unsafe { caller_memory::c_str(filter) } {
+            None => String::from("(null)"),
+            Some(name) => name.to_string_lossy().into_owned(),
         };
         eprintln!("tessera: OSMesaPostprocess filter '{name}' is not supported; rendering is unchanged");
     })
