@@ -64,11 +64,8 @@ pub unsafe extern "C" fn OSMesaCreateContextAttribs(
     let (mut major, mut minor) = (1, 0);
     if !attribList.is_null() {
         let mut i = 0;
-        loop {
-            // SAFETY: the list is zero-terminated; we read pairs until the terminator.
-            let Some(attr) = (unsafe { caller_memory::read_at(attribList, i) }).filter(|&a| a != 0) else {
-                break;
-            };
+        // SAFETY: the list is zero-terminated; we read pairs until the terminator.
+        while let Some(attr) = (unsafe { caller_memory::read_at(attribList, i) }).filter(|&a| a != 0) {
             // SAFETY: a non-terminator attribute is followed by its value.
             let value = unsafe { caller_memory::read_at(attribList, i + 1) }.unwrap_or_default();
             match attr {
