@@ -1,9 +1,10 @@
 //! Build script of the tessera crate.
 //!
 //! 1. Generates `include/GL/tessera.h` with cbindgen from the exported items of `src/api`
-//!    (every `gl*`/`OSMesa*` prototype) and `src/gl/enums.rs` (every enum value). Each `#define` is wrapped so the
-//!    header composes with the system's GL headers and fails the build (`#error`) if a value
-//!    differs from theirs; prototypes that differ fail as conflicting declarations.
+//!    (every `gl*`/`OSMesa*` prototype), `src/gl/enums.rs` (every enum value) and
+//!    `src/gl/osmesa.rs` (the OSMesa constants). Each `#define` is wrapped so the header
+//!    composes with the system's GL headers and fails the build (`#error`) if a value differs
+//!    from theirs; prototypes that differ fail as conflicting declarations.
 //! 2. Generates the name → function table behind OSMesaGetProcAddress/glXGetProcAddress from
 //!    the same sources, so every exported entry point is reachable by name.
 use std::fmt::Write as _;
@@ -120,6 +121,7 @@ fn generate_header(root: &Path, api: &Path) {
     let bindings = cbindgen::Builder::new()
         .with_config(config)
         .with_src(root.join("src/gl/enums.rs"))
+        .with_src(root.join("src/gl/osmesa.rs"))
         .with_src(api.join("mod.rs"))
         .with_after_include(TYPEDEFS)
         .generate()

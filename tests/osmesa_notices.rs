@@ -6,8 +6,9 @@
 //! binary again, running only `refusals_child`), whose stderr the tests read.
 use std::ffi::c_int;
 use std::process::Command;
-use tessera::gl::enums::*;
 use tessera::api::osmesa::*;
+use tessera::gl::enums::*;
+use tessera::gl::osmesa::*;
 
 const CHILD: &str = "TESSERA_NOTICES_CHILD";
 

@@ -6,40 +6,9 @@
 //!
 //! Array pointers are recorded as addresses. Client memory is read only through
 //! [`CallerMemory`], for the byte ranges the context computed from the draw's indices.
+use super::caller_memory::{self, read_array, CallerMemory};
 use super::with_context;
 use crate::gl::types::*;
-use crate::vertex::arrays::ClientMemory;
-
-/// The caller's memory, as GL's contract for client arrays and index arrays promises it.
-pub(crate) struct CallerMemory;
-
-impl ClientMemory for CallerMemory {
-    fn bytes(&self, address: usize, len: usize) -> Option<&[u8]> {
-        if address == 0 || address.checked_add(len)? > isize::MAX as usize {
-            return None;
-        }
-        if len == 0 {
-            return Some(&[]);
-        }
-        // SAFETY: the context asks for the bytes of the elements (or indices) a draw uses,
-        // computed from the pointer the caller gave and the draw's arguments (vertex_input's
-        // `byte_extent`). GL requires the caller to provide those elements in one array it
-        // owns, unchanged while the command runs; the slice lives only during the call.
-        Some(unsafe { std::slice::from_raw_parts(address as *const u8, len) })
-    }
-}
-
-/// The values of a C array of `count` elements; empty for NULL or a count below 1.
-///
-/// # Safety
-/// A non-null `values` must point to `count` readable values.
-unsafe fn caller_slice<'a, T>(values: *const T, count: GLsizei) -> &'a [T] {
-    if values.is_null() || count <= 0 {
-        return &[];
-    }
-    // SAFETY: the caller guarantees `count` readable values at `values`.
-    unsafe { std::slice::from_raw_parts(values, count as usize) }
-}
 
 #[no_mangle]
 pub extern "C" fn glVertexPointer(size: GLint, type_: GLenum, stride: GLsizei, ptr: *const GLvoid) {
@@ -169,10 +138,8 @@ pub extern "C" fn glInterleavedArrays(format: GLenum, stride: GLsizei, pointer: 
 #[no_mangle]
 pub unsafe extern "C" fn glGetPointerv(pname: GLenum, params: *mut *mut GLvoid) {
     if let Some(pointer) = with_context(None, |ctx| ctx.get_pointer(pname)) {
-        if !params.is_null() {
-            // SAFETY: the caller provides room for one pointer at `params`.
-            unsafe { params.write_unaligned(pointer as *mut GLvoid) }
-        }
+        // SAFETY: the caller provides room for one pointer at `params` (or passes NULL).
+        unsafe { caller_memory::write(params, pointer as *mut GLvoid) }
     }
 }
 
@@ -249,9 +216,9 @@ pub unsafe extern "C" fn glMultiDrawArrays(
     drawcount: GLsizei,
 ) {
     // SAFETY: the caller provides `drawcount` values in each array.
-    let (firsts, counts) = unsafe { (caller_slice(first, drawcount), caller_slice(count, drawcount)) };
+    let (firsts, counts) = unsafe { (read_array(first, drawcount), read_array(count, drawcount)) };
     with_context((), |ctx| {
-        ctx.draw_or_compile(|ctx| ctx.multi_draw_arrays(mode, firsts, counts, drawcount, &CallerMemory))
+        ctx.draw_or_compile(|ctx| ctx.multi_draw_arrays(mode, &firsts, &counts, drawcount, &CallerMemory))
     })
 }
 
@@ -279,11 +246,11 @@ pub unsafe extern "C" fn glMultiDrawElements(
     drawcount: GLsizei,
 ) {
     // SAFETY: the caller provides `drawcount` values in each array.
-    let (counts, pointers) = unsafe { (caller_slice(count, drawcount), caller_slice(indices, drawcount)) };
+    let (counts, pointers) = unsafe { (read_array(count, drawcount), read_array(indices, drawcount)) };
     // Addresses (or element buffer offsets), so the context never holds caller pointers.
     let addresses: Vec<usize> = pointers.iter().map(|&p| p as usize).collect();
     with_context((), |ctx| {
-        ctx.draw_or_compile(|ctx| ctx.multi_draw_elements(mode, counts, type_, &addresses, drawcount, &CallerMemory))
+        ctx.draw_or_compile(|ctx| ctx.multi_draw_elements(mode, &counts, type_, &addresses, drawcount, &CallerMemory))
     })
 }
 

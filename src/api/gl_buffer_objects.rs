@@ -1,4 +1,5 @@
 //! Entry points for buffer objects (GL 1.5) and their ARB_vertex_buffer_object aliases.
+use super::caller_memory;
 use super::{guard, with_context};
 use crate::gl::types::*;
 
@@ -8,10 +9,8 @@ use crate::gl::types::*;
 pub unsafe extern "C" fn glGenBuffers(n: GLsizei, buffers: *mut GLuint) {
     let names = guard(None, || crate::context::current::with_current(|ctx| ctx.gen_buffers(n)).flatten());
     if let Some(names) = names {
-        if !buffers.is_null() && !names.is_empty() {
-            // SAFETY: the caller provides room for `n` names, and `names` holds `n`.
-            unsafe { std::ptr::copy_nonoverlapping(names.as_ptr(), buffers, names.len()) }
-        }
+        // SAFETY: the caller provides room for `n` names (or passes NULL), and `names` holds `n`.
+        unsafe { caller_memory::write_all(buffers, names) }
     }
 }
 
@@ -19,13 +18,9 @@ pub unsafe extern "C" fn glGenBuffers(n: GLsizei, buffers: *mut GLuint) {
 /// `buffers` must point to `n` names.
 #[no_mangle]
 pub unsafe extern "C" fn glDeleteBuffers(n: GLsizei, buffers: *const GLuint) {
-    let names: &[GLuint] = if buffers.is_null() || n <= 0 {
-        &[]
-    } else {
-        // SAFETY: the caller provides `n` names at `buffers`.
-        unsafe { std::slice::from_raw_parts(buffers, n as usize) }
-    };
-    with_context((), |ctx| ctx.delete_buffers(n, names))
+    // SAFETY: the caller provides `n` names at `buffers`.
+    let names = unsafe { caller_memory::read_array(buffers, n) };
+    with_context((), |ctx| ctx.delete_buffers(n, &names))
 }
 
 #[no_mangle]
@@ -45,7 +40,7 @@ pub unsafe extern "C" fn glBufferData(target: GLenum, size: GLsizeiptr, data: *c
     with_context((), |ctx| {
         ctx.buffer_data(target, size, usage, |len| {
             // SAFETY: called with the validated `size`; the caller provides that many bytes.
-            (!data.is_null()).then(|| unsafe { std::slice::from_raw_parts(data as *const u8, len) })
+            unsafe { caller_memory::bytes(data, 0..len) }
         })
     })
 }
@@ -57,7 +52,7 @@ pub unsafe extern "C" fn glBufferSubData(target: GLenum, offset: GLintptr, size:
     with_context((), |ctx| {
         ctx.buffer_sub_data(target, offset, size, |len| {
             // SAFETY: called with the validated `size`; the caller provides that many bytes.
-            (!data.is_null()).then(|| unsafe { std::slice::from_raw_parts(data as *const u8, len) })
+            unsafe { caller_memory::bytes(data, 0..len) }
         })
     })
 }
@@ -70,7 +65,7 @@ pub unsafe extern "C" fn glGetBufferSubData(target: GLenum, offset: GLintptr, si
         ctx.get_buffer_sub_data(target, offset, size, |len| {
             // SAFETY: called with the validated `size`; the caller provides room for that many
             // bytes, which nothing else accesses during the call.
-            (!data.is_null()).then(|| unsafe { std::slice::from_raw_parts_mut(data as *mut u8, len) })
+            unsafe { caller_memory::bytes_mut(data, 0..len) }
         })
     })
 }
@@ -90,10 +85,8 @@ pub extern "C" fn glUnmapBuffer(target: GLenum) -> GLboolean {
 #[no_mangle]
 pub unsafe extern "C" fn glGetBufferParameteriv(target: GLenum, pname: GLenum, params: *mut GLint) {
     if let Some(value) = with_context(None, |ctx| ctx.get_buffer_parameter(target, pname)) {
-        if !params.is_null() {
-            // SAFETY: the caller provides room for one value.
-            unsafe { params.write_unaligned(value) }
-        }
+        // SAFETY: the caller provides room for one value (or passes NULL).
+        unsafe { caller_memory::write(params, value) }
     }
 }
 
@@ -102,10 +95,8 @@ pub unsafe extern "C" fn glGetBufferParameteriv(target: GLenum, pname: GLenum, p
 #[no_mangle]
 pub unsafe extern "C" fn glGetBufferPointerv(target: GLenum, pname: GLenum, params: *mut *mut GLvoid) {
     if let Some(pointer) = with_context(None, |ctx| ctx.get_buffer_pointer(target, pname)) {
-        if !params.is_null() {
-            // SAFETY: the caller provides room for one pointer.
-            unsafe { params.write_unaligned(pointer as *mut GLvoid) }
-        }
+        // SAFETY: the caller provides room for one pointer (or passes NULL).
+        unsafe { caller_memory::write(params, pointer as *mut GLvoid) }
     }
 }
 

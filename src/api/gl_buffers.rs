@@ -1,4 +1,5 @@
 //! Entry points for clears, write masks, draw/read buffers, scissor, viewport and glAccum.
+use super::caller_memory;
 use super::record_or_run;
 use crate::gl::enums::*;
 use crate::gl::types::*;
@@ -110,7 +111,7 @@ pub unsafe extern "C" fn glDrawBuffers(n: GLsizei, bufs: *const GLenum) {
         None
     } else {
         // SAFETY: the caller passes `n` enums at `bufs` (checked non-null, n bounded).
-        Some(unsafe { std::slice::from_raw_parts(bufs, n as usize) }.to_vec())
+        unsafe { caller_memory::read_vec(bufs, n as usize) }
     };
     record_or_run(move |ctx| match &list {
         Some(list) => ctx.draw_buffers(list),

@@ -6,6 +6,7 @@
 //! valid: otherwise nothing is read and the context reports the error. Every command but
 //! glGetMap is compiled into display lists. Double-precision arguments become floats, as
 //! Mesa keeps them.
+use super::caller_memory::{self, read};
 use super::{record_or_run, with_context};
 use crate::context::evaluators::readable_map;
 use crate::gl::types::*;
@@ -39,8 +40,8 @@ unsafe fn read_points<T: Copy>(
             for (c, value) in point.iter_mut().enumerate().take(components) {
                 let offset = i * ustride + j * vstride + c;
                 // SAFETY: the caller's array holds the values the strides and orders address
-                // (GL's contract for glMap); C arrays need not be aligned for the read.
-                *value = to_f32(unsafe { points.wrapping_add(offset).read_unaligned() });
+                // (GL's contract for glMap).
+                *value = to_f32(unsafe { caller_memory::read_at(points, offset) }?);
             }
             out.push(point);
         }
@@ -137,13 +138,8 @@ unsafe fn write_map<T>(target: GLenum, query: GLenum, v: *mut T, convert: impl F
         let Some(values) = ctx.get_map(target, query) else {
             return;
         };
-        if v.is_null() {
-            return;
-        }
-        for (i, &value) in values.iter().enumerate() {
-            // SAFETY: the caller provides room for the query's values.
-            unsafe { v.add(i).write_unaligned(convert(value)) }
-        }
+        // SAFETY: the caller provides room for the query's values (or passes NULL).
+        unsafe { caller_memory::write_all(v, values.iter().map(|&value| convert(value))) }
     })
 }
 
@@ -205,9 +201,9 @@ pub extern "C" fn glEvalCoord1d(u: GLdouble) {
 /// `u` must point to 1 value (NULL is ignored).
 #[no_mangle]
 pub unsafe extern "C" fn glEvalCoord1fv(u: *const GLfloat) {
-    if !u.is_null() {
-        // SAFETY: the caller provides one readable value.
-        glEvalCoord1f(unsafe { u.read_unaligned() })
+    // SAFETY: the caller provides one readable value (or NULL).
+    if let Some([a]) = unsafe { read(u) } {
+        glEvalCoord1f(a)
     }
 }
 
@@ -215,9 +211,9 @@ pub unsafe extern "C" fn glEvalCoord1fv(u: *const GLfloat) {
 /// `u` must point to 1 value (NULL is ignored).
 #[no_mangle]
 pub unsafe extern "C" fn glEvalCoord1dv(u: *const GLdouble) {
-    if !u.is_null() {
-        // SAFETY: the caller provides one readable value.
-        glEvalCoord1d(unsafe { u.read_unaligned() })
+    // SAFETY: the caller provides one readable value (or NULL).
+    if let Some([a]) = unsafe { read(u) } {
+        glEvalCoord1d(a)
     }
 }
 
@@ -235,9 +231,8 @@ pub extern "C" fn glEvalCoord2d(u: GLdouble, v: GLdouble) {
 /// `u` must point to 2 values (NULL is ignored).
 #[no_mangle]
 pub unsafe extern "C" fn glEvalCoord2fv(u: *const GLfloat) {
-    if !u.is_null() {
-        // SAFETY: the caller provides two readable values.
-        let [a, b] = unsafe { (u as *const [GLfloat; 2]).read_unaligned() };
+    // SAFETY: the caller provides two readable values (or NULL).
+    if let Some([a, b]) = unsafe { read(u) } {
         glEvalCoord2f(a, b)
     }
 }
@@ -246,9 +241,8 @@ pub unsafe extern "C" fn glEvalCoord2fv(u: *const GLfloat) {
 /// `u` must point to 2 values (NULL is ignored).
 #[no_mangle]
 pub unsafe extern "C" fn glEvalCoord2dv(u: *const GLdouble) {
-    if !u.is_null() {
-        // SAFETY: the caller provides two readable values.
-        let [a, b] = unsafe { (u as *const [GLdouble; 2]).read_unaligned() };
+    // SAFETY: the caller provides two readable values (or NULL).
+    if let Some([a, b]) = unsafe { read(u) } {
         glEvalCoord2d(a, b)
     }
 }

@@ -1,5 +1,6 @@
 //! Entry points for the per-fragment operations' state: alpha test, stencil, blending, logic
 //! op and fog (glDepthFunc, glStencilMask and the masks live with the buffers).
+use super::caller_memory;
 use super::record_or_run;
 use crate::context::Context;
 use crate::gl::types::*;
@@ -176,14 +177,11 @@ fn fog_param_count(pname: GLenum) -> usize {
 /// # Safety
 /// `params` is null or points to `fog_param_count(pname)` readable values.
 unsafe fn read_fog_params<T: Copy + Default>(pname: GLenum, params: *const T) -> Option<[T; 4]> {
-    if params.is_null() {
-        return None;
-    }
     let mut values = [T::default(); 4];
-    for (i, value) in values.iter_mut().enumerate().take(fog_param_count(pname)) {
-        // SAFETY: the caller guarantees `fog_param_count(pname)` readable values.
-        *value = unsafe { *params.add(i) };
-    }
+    let count = fog_param_count(pname).min(4);
+    // SAFETY: the caller guarantees `fog_param_count(pname)` readable values (or NULL).
+    let read = unsafe { caller_memory::read_vec(params, count) }?;
+    values[..count].copy_from_slice(&read);
     Some(values)
 }
 

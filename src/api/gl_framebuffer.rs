@@ -1,33 +1,8 @@
 //! Entry points of framebuffer and renderbuffer objects (ARB_framebuffer_object, with the
 //! EXT_framebuffer_object, EXT_framebuffer_blit and EXT_framebuffer_multisample names).
+use super::caller_memory::{self, read_array};
 use super::{guard, with_context};
 use crate::gl::types::*;
-
-/// Copies `names` to the caller's array.
-///
-/// # Safety
-/// `out` must have room for `names.len()` values (or be null).
-unsafe fn write_names(names: Option<Vec<GLuint>>, out: *mut GLuint) {
-    if let Some(names) = names {
-        if !out.is_null() && !names.is_empty() {
-            // SAFETY: the caller provides room for `n` names, and `names` holds `n`.
-            unsafe { std::ptr::copy_nonoverlapping(names.as_ptr(), out, names.len()) }
-        }
-    }
-}
-
-/// The caller's `n` names at `names`.
-///
-/// # Safety
-/// A non-null `names` must point to `n` values.
-unsafe fn read_names<'a>(n: GLsizei, names: *const GLuint) -> &'a [GLuint] {
-    if names.is_null() || n <= 0 {
-        &[]
-    } else {
-        // SAFETY: the caller provides `n` names at `names`.
-        unsafe { std::slice::from_raw_parts(names, n as usize) }
-    }
-}
 
 /// # Safety
 /// `framebuffers` must have room for `n` names.
@@ -35,7 +10,7 @@ unsafe fn read_names<'a>(n: GLsizei, names: *const GLuint) -> &'a [GLuint] {
 pub unsafe extern "C" fn glGenFramebuffers(n: GLsizei, framebuffers: *mut GLuint) {
     let names = guard(None, || crate::context::current::with_current(|ctx| ctx.gen_fbo_names(n, false)).flatten());
     // SAFETY: forwarded from the caller's contract.
-    unsafe { write_names(names, framebuffers) }
+    unsafe { caller_memory::write_all(framebuffers, names.unwrap_or_default()) }
 }
 
 /// # Safety
@@ -51,8 +26,8 @@ pub unsafe extern "C" fn glGenFramebuffersEXT(n: GLsizei, framebuffers: *mut GLu
 #[no_mangle]
 pub unsafe extern "C" fn glDeleteFramebuffers(n: GLsizei, framebuffers: *const GLuint) {
     // SAFETY: forwarded from the caller's contract.
-    let names = unsafe { read_names(n, framebuffers) };
-    with_context((), |ctx| ctx.delete_framebuffers(n, names))
+    let names = unsafe { read_array(framebuffers, n) };
+    with_context((), |ctx| ctx.delete_framebuffers(n, &names))
 }
 
 /// # Safety
@@ -202,9 +177,9 @@ pub unsafe extern "C" fn glGetFramebufferAttachmentParameteriv(
     params: *mut GLint,
 ) {
     let value = with_context(None, |ctx| ctx.get_framebuffer_attachment_parameter(target, attachment, pname));
-    if let (Some(v), false) = (value, params.is_null()) {
-        // SAFETY: the caller provides room for one value.
-        unsafe { *params = v }
+    if let Some(v) = value {
+        // SAFETY: the caller provides room for one value (or passes NULL).
+        unsafe { caller_memory::write(params, v) }
     }
 }
 
@@ -227,7 +202,7 @@ pub unsafe extern "C" fn glGetFramebufferAttachmentParameterivEXT(
 pub unsafe extern "C" fn glGenRenderbuffers(n: GLsizei, renderbuffers: *mut GLuint) {
     let names = guard(None, || crate::context::current::with_current(|ctx| ctx.gen_fbo_names(n, true)).flatten());
     // SAFETY: forwarded from the caller's contract.
-    unsafe { write_names(names, renderbuffers) }
+    unsafe { caller_memory::write_all(renderbuffers, names.unwrap_or_default()) }
 }
 
 /// # Safety
@@ -243,8 +218,8 @@ pub unsafe extern "C" fn glGenRenderbuffersEXT(n: GLsizei, renderbuffers: *mut G
 #[no_mangle]
 pub unsafe extern "C" fn glDeleteRenderbuffers(n: GLsizei, renderbuffers: *const GLuint) {
     // SAFETY: forwarded from the caller's contract.
-    let names = unsafe { read_names(n, renderbuffers) };
-    with_context((), |ctx| ctx.delete_renderbuffers(n, names))
+    let names = unsafe { read_array(renderbuffers, n) };
+    with_context((), |ctx| ctx.delete_renderbuffers(n, &names))
 }
 
 /// # Safety
@@ -312,9 +287,9 @@ pub extern "C" fn glRenderbufferStorageMultisampleEXT(
 #[no_mangle]
 pub unsafe extern "C" fn glGetRenderbufferParameteriv(target: GLenum, pname: GLenum, params: *mut GLint) {
     let value = with_context(None, |ctx| ctx.get_renderbuffer_parameter(target, pname));
-    if let (Some(v), false) = (value, params.is_null()) {
-        // SAFETY: the caller provides room for one value.
-        unsafe { *params = v }
+    if let Some(v) = value {
+        // SAFETY: the caller provides room for one value (or passes NULL).
+        unsafe { caller_memory::write(params, v) }
     }
 }
 

@@ -1,36 +1,11 @@
 //! Entry points for lights, the light model, materials and color material.
+use super::caller_memory::{read_vec, write_all};
 use super::{guard, record_or_run};
 use crate::context::lighting::{
     int_params_to_float, light_model_param_count, light_param_count, material_param_count, values_to_integers,
 };
 use crate::context::Context;
 use crate::gl::types::*;
-
-/// Reads the `count` values a parameter pointer holds; `None` for NULL.
-///
-/// # Safety
-/// `params` is NULL or points to `count` values.
-unsafe fn read_params<T: Copy>(params: *const T, count: usize) -> Option<Vec<T>> {
-    if params.is_null() {
-        return None;
-    }
-    // SAFETY: the caller passes a pointer to `count` values (GL's contract for the pname).
-    Some((0..count).map(|i| unsafe { params.add(i).read_unaligned() }).collect())
-}
-
-/// Writes query results through `params` (nothing for NULL or an empty answer).
-///
-/// # Safety
-/// `params` is NULL or has room for `values.len()` elements.
-unsafe fn write_params<T: Copy>(params: *mut T, values: &[T]) {
-    if params.is_null() {
-        return;
-    }
-    for (i, v) in values.iter().enumerate() {
-        // SAFETY: the caller provides room for every value of the pname (GL's contract).
-        unsafe { params.add(i).write_unaligned(*v) }
-    }
-}
 
 #[no_mangle]
 pub extern "C" fn glLightf(light: GLenum, pname: GLenum, param: GLfloat) {
@@ -47,7 +22,7 @@ pub extern "C" fn glLighti(light: GLenum, pname: GLenum, param: GLint) {
 #[no_mangle]
 pub unsafe extern "C" fn glLightfv(light: GLenum, pname: GLenum, params: *const GLfloat) {
     // SAFETY: forwarded contract of this entry point.
-    if let Some(p) = unsafe { read_params(params, light_param_count(pname)) } {
+    if let Some(p) = unsafe { read_vec(params, light_param_count(pname)) } {
         record_or_run(move |ctx| ctx.light(light, pname, &p))
     }
 }
@@ -57,7 +32,7 @@ pub unsafe extern "C" fn glLightfv(light: GLenum, pname: GLenum, params: *const 
 #[no_mangle]
 pub unsafe extern "C" fn glLightiv(light: GLenum, pname: GLenum, params: *const GLint) {
     // SAFETY: forwarded contract of this entry point.
-    if let Some(p) = unsafe { read_params(params, light_param_count(pname)) } {
+    if let Some(p) = unsafe { read_vec(params, light_param_count(pname)) } {
         record_or_run(move |ctx| ctx.light(light, pname, &int_params_to_float(pname, &p)))
     }
 }
@@ -68,7 +43,7 @@ pub unsafe extern "C" fn glLightiv(light: GLenum, pname: GLenum, params: *const 
 pub unsafe extern "C" fn glGetLightfv(light: GLenum, pname: GLenum, params: *mut GLfloat) {
     let values = query(|ctx| ctx.get_light(light, pname).iter().map(|v| v.to_float()).collect());
     // SAFETY: forwarded contract of this entry point.
-    unsafe { write_params(params, &values) }
+    unsafe { write_all(params, values) }
 }
 
 /// # Safety
@@ -77,7 +52,7 @@ pub unsafe extern "C" fn glGetLightfv(light: GLenum, pname: GLenum, params: *mut
 pub unsafe extern "C" fn glGetLightiv(light: GLenum, pname: GLenum, params: *mut GLint) {
     let values = query(|ctx| values_to_integers(&ctx.get_light(light, pname), false));
     // SAFETY: forwarded contract of this entry point.
-    unsafe { write_params(params, &values) }
+    unsafe { write_all(params, values) }
 }
 
 #[no_mangle]
@@ -95,7 +70,7 @@ pub extern "C" fn glLightModeli(pname: GLenum, param: GLint) {
 #[no_mangle]
 pub unsafe extern "C" fn glLightModelfv(pname: GLenum, params: *const GLfloat) {
     // SAFETY: forwarded contract of this entry point.
-    if let Some(p) = unsafe { read_params(params, light_model_param_count(pname)) } {
+    if let Some(p) = unsafe { read_vec(params, light_model_param_count(pname)) } {
         record_or_run(move |ctx| ctx.light_model(pname, &p))
     }
 }
@@ -105,7 +80,7 @@ pub unsafe extern "C" fn glLightModelfv(pname: GLenum, params: *const GLfloat) {
 #[no_mangle]
 pub unsafe extern "C" fn glLightModeliv(pname: GLenum, params: *const GLint) {
     // SAFETY: forwarded contract of this entry point.
-    if let Some(p) = unsafe { read_params(params, light_model_param_count(pname)) } {
+    if let Some(p) = unsafe { read_vec(params, light_model_param_count(pname)) } {
         record_or_run(move |ctx| ctx.light_model(pname, &int_params_to_float(pname, &p)))
     }
 }
@@ -125,7 +100,7 @@ pub extern "C" fn glMateriali(face: GLenum, pname: GLenum, param: GLint) {
 #[no_mangle]
 pub unsafe extern "C" fn glMaterialfv(face: GLenum, pname: GLenum, params: *const GLfloat) {
     // SAFETY: forwarded contract of this entry point.
-    if let Some(p) = unsafe { read_params(params, material_param_count(pname)) } {
+    if let Some(p) = unsafe { read_vec(params, material_param_count(pname)) } {
         record_or_run(move |ctx| ctx.material(face, pname, &p))
     }
 }
@@ -135,7 +110,7 @@ pub unsafe extern "C" fn glMaterialfv(face: GLenum, pname: GLenum, params: *cons
 #[no_mangle]
 pub unsafe extern "C" fn glMaterialiv(face: GLenum, pname: GLenum, params: *const GLint) {
     // SAFETY: forwarded contract of this entry point.
-    if let Some(p) = unsafe { read_params(params, material_param_count(pname)) } {
+    if let Some(p) = unsafe { read_vec(params, material_param_count(pname)) } {
         record_or_run(move |ctx| ctx.material(face, pname, &int_params_to_float(pname, &p)))
     }
 }
@@ -146,7 +121,7 @@ pub unsafe extern "C" fn glMaterialiv(face: GLenum, pname: GLenum, params: *cons
 pub unsafe extern "C" fn glGetMaterialfv(face: GLenum, pname: GLenum, params: *mut GLfloat) {
     let values = query(|ctx| ctx.get_material(face, pname).iter().map(|v| v.to_float()).collect());
     // SAFETY: forwarded contract of this entry point.
-    unsafe { write_params(params, &values) }
+    unsafe { write_all(params, values) }
 }
 
 /// # Safety
@@ -155,7 +130,7 @@ pub unsafe extern "C" fn glGetMaterialfv(face: GLenum, pname: GLenum, params: *m
 pub unsafe extern "C" fn glGetMaterialiv(face: GLenum, pname: GLenum, params: *mut GLint) {
     let values = query(|ctx| values_to_integers(&ctx.get_material(face, pname), true));
     // SAFETY: forwarded contract of this entry point.
-    unsafe { write_params(params, &values) }
+    unsafe { write_all(params, values) }
 }
 
 #[no_mangle]

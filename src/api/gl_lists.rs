@@ -4,6 +4,7 @@
 //! glCallList, glCallLists and glListBase are themselves compiled into lists; glCallLists
 //! copies its names when it is issued and adds the list base when it runs. The others always
 //! execute (GL 2.1 section 5.4).
+use super::caller_memory;
 use super::{record_or_run, with_context};
 use crate::context::lists::{call_lists_type_size, decode_call_lists};
 use crate::gl::enums::*;
@@ -36,7 +37,7 @@ pub unsafe extern "C" fn glCallLists(n: GLsizei, type_: GLenum, lists: *const GL
             Some(_) if n == 0 || lists.is_null() => Ok(Vec::new()),
             Some(size) => {
                 // SAFETY: the caller passes `n` names of `type_`, `size` bytes each.
-                let bytes = unsafe { std::slice::from_raw_parts(lists as *const u8, n as usize * size) };
+                let bytes = unsafe { caller_memory::bytes(lists, 0..n as usize * size) }.unwrap_or_default();
                 Ok(decode_call_lists(type_, bytes))
             }
         }

@@ -1,21 +1,10 @@
 //! Entry points of the raster position and pixel rectangles: glRasterPos*, glWindowPos*,
 //! glBitmap, glDrawPixels, glCopyPixels, glPixelZoom. All are compiled into display lists; glBitmap and
 //! glDrawPixels read their image (under the unpack modes) when issued.
+use super::caller_memory::{self, read};
 use super::{record_or_run, with_context};
 use crate::gl::types::*;
 use crate::vertex::components::Component;
-
-/// The `N` values a C array starts with; `None` for NULL.
-///
-/// # Safety
-/// A non-null `v` must point to `N` readable values of `T`.
-unsafe fn read<T: Copy, const N: usize>(v: *const T) -> Option<[T; N]> {
-    if v.is_null() {
-        return None;
-    }
-    // SAFETY: the caller guarantees `N` readable values at `v` (unaligned read).
-    Some(unsafe { std::ptr::read_unaligned(v as *const [T; N]) })
-}
 
 #[no_mangle]
 pub extern "C" fn glRasterPos2s(x: GLshort, y: GLshort) {
@@ -540,12 +529,9 @@ pub unsafe extern "C" fn glBitmap(
 ) {
     with_context((), |ctx| {
         let bits = ctx.unpack_bitmap(width, height, |span| {
-            if bitmap.is_null() {
-                return None;
-            }
             // SAFETY: the context computed `span` from the unpack parameters as the bytes the
             // bitmap occupies; by glBitmap's contract the caller's image holds them.
-            Some(unsafe { std::slice::from_raw_parts(bitmap.add(span.start), span.len()) })
+            unsafe { caller_memory::bytes(bitmap, span) }
         });
         ctx.record_or_run(move |ctx| ctx.bitmap(width, height, [xorig, yorig], [xmove, ymove], &bits))
     })
@@ -564,12 +550,9 @@ pub unsafe extern "C" fn glDrawPixels(
 ) {
     with_context((), |ctx| {
         let data = ctx.unpack_draw_pixels(width, height, format, type_, |span| {
-            if pixels.is_null() {
-                return None;
-            }
             // SAFETY: the context computed `span` from the unpack parameters as the bytes the
             // image occupies; by glDrawPixels' contract the caller's image holds them.
-            Some(unsafe { std::slice::from_raw_parts((pixels as *const u8).add(span.start), span.len()) })
+            unsafe { caller_memory::bytes(pixels, span) }
         });
         ctx.record_or_run(move |ctx| ctx.draw_pixels(width, height, &data))
     })
@@ -608,8 +591,8 @@ unsafe fn map_values<T: Copy>(mapsize: GLsizei, values: *const T, convert: impl 
                 .min(crate::context::pixel_rect::MAX_PIXEL_MAP_TABLE + 1)
         ];
     }
-    // SAFETY: the caller passes `mapsize` values at `values`.
-    unsafe { std::slice::from_raw_parts(values, mapsize as usize) }.iter().map(|&v| convert(v)).collect()
+    // SAFETY: the caller passes `mapsize` values at `values` (checked non-null above).
+    unsafe { caller_memory::read_array(values, mapsize) }.into_iter().map(convert).collect()
 }
 
 /// # Safety
@@ -648,14 +631,9 @@ pub unsafe extern "C" fn glPixelMapusv(map: GLenum, mapsize: GLsizei, values: *c
 unsafe fn write_map<T>(map: GLenum, values: *mut T, convert: impl Fn(f32, bool) -> T) {
     with_context((), |ctx| {
         if let Some(table) = ctx.get_pixel_map(map) {
-            if values.is_null() {
-                return;
-            }
             let color = !matches!(map, crate::gl::enums::GL_PIXEL_MAP_I_TO_I | crate::gl::enums::GL_PIXEL_MAP_S_TO_S);
-            for (i, &v) in table.iter().enumerate() {
-                // SAFETY: the caller provides room for the whole table.
-                unsafe { values.add(i).write_unaligned(convert(v, color)) }
-            }
+            // SAFETY: the caller provides room for the whole table (or passes NULL).
+            unsafe { caller_memory::write_all(values, table.iter().map(|&v| convert(v, color))) }
         }
     })
 }

@@ -1,4 +1,5 @@
 //! Entry points for glReadPixels and glPixelStore.
+use super::caller_memory;
 use super::with_context;
 use crate::gl::types::*;
 
@@ -18,13 +19,10 @@ pub unsafe extern "C" fn glReadPixels(
 ) {
     with_context((), |ctx| {
         ctx.read_pixels(x, y, width, height, format, type_, |span| {
-            if pixels.is_null() {
-                return None;
-            }
             // SAFETY: the context computed `span` from the pack parameters as the bytes of
             // the client image that the clipped read writes; by glReadPixels' contract the
             // caller's image holds them, and nothing else accesses that memory during the call.
-            Some(unsafe { std::slice::from_raw_parts_mut((pixels as *mut u8).add(span.start), span.len()) })
+            unsafe { caller_memory::bytes_mut(pixels, span) }
         })
     })
 }

@@ -1,5 +1,6 @@
 //! Occlusion query entry points (GL 1.5 and ARB_occlusion_query). glBeginQuery and
 //! glEndQuery are compiled into display lists; the others always execute.
+use super::caller_memory;
 use super::{record_or_run, with_context};
 use crate::gl::enums::*;
 use crate::gl::types::*;
@@ -10,10 +11,8 @@ use crate::gl::types::*;
 pub unsafe extern "C" fn glGenQueries(n: GLsizei, ids: *mut GLuint) {
     with_context((), |ctx| {
         if let Some(names) = ctx.gen_queries(n) {
-            if !ids.is_null() {
-                // SAFETY: the caller provides room for `n` names at `ids`.
-                unsafe { std::ptr::copy_nonoverlapping(names.as_ptr(), ids, names.len()) }
-            }
+            // SAFETY: the caller provides room for `n` names at `ids` (or passes NULL).
+            unsafe { caller_memory::write_all(ids, names) }
         }
     })
 }
@@ -22,13 +21,9 @@ pub unsafe extern "C" fn glGenQueries(n: GLsizei, ids: *mut GLuint) {
 /// `ids` must point to `n` names.
 #[no_mangle]
 pub unsafe extern "C" fn glDeleteQueries(n: GLsizei, ids: *const GLuint) {
-    let names: &[GLuint] = if ids.is_null() || n <= 0 {
-        &[]
-    } else {
-        // SAFETY: the caller passes `n` names at `ids`.
-        unsafe { std::slice::from_raw_parts(ids, n as usize) }
-    };
-    with_context((), |ctx| ctx.delete_queries(n, names))
+    // SAFETY: the caller passes `n` names at `ids`.
+    let names = unsafe { caller_memory::read_array(ids, n) };
+    with_context((), |ctx| ctx.delete_queries(n, &names))
 }
 
 #[no_mangle]
@@ -51,10 +46,8 @@ pub extern "C" fn glEndQuery(target: GLenum) {
 #[no_mangle]
 pub unsafe extern "C" fn glGetQueryiv(target: GLenum, pname: GLenum, params: *mut GLint) {
     if let Some(value) = with_context(None, |ctx| ctx.get_query(target, pname)) {
-        if !params.is_null() {
-            // SAFETY: the caller provides room for one value.
-            unsafe { params.write_unaligned(value) }
-        }
+        // SAFETY: the caller provides room for one value (or passes NULL).
+        unsafe { caller_memory::write(params, value) }
     }
 }
 
@@ -63,10 +56,8 @@ pub unsafe extern "C" fn glGetQueryiv(target: GLenum, pname: GLenum, params: *mu
 #[no_mangle]
 pub unsafe extern "C" fn glGetQueryObjectiv(id: GLuint, pname: GLenum, params: *mut GLint) {
     if let Some(value) = with_context(None, |ctx| ctx.get_query_object(id, pname)) {
-        if !params.is_null() {
-            // SAFETY: the caller provides room for one value.
-            unsafe { params.write_unaligned(value.min(i32::MAX as u64) as GLint) }
-        }
+        // SAFETY: the caller provides room for one value (or passes NULL).
+        unsafe { caller_memory::write(params, value.min(i32::MAX as u64) as GLint) }
     }
 }
 
@@ -75,10 +66,8 @@ pub unsafe extern "C" fn glGetQueryObjectiv(id: GLuint, pname: GLenum, params: *
 #[no_mangle]
 pub unsafe extern "C" fn glGetQueryObjectuiv(id: GLuint, pname: GLenum, params: *mut GLuint) {
     if let Some(value) = with_context(None, |ctx| ctx.get_query_object(id, pname)) {
-        if !params.is_null() {
-            // SAFETY: the caller provides room for one value.
-            unsafe { params.write_unaligned(value.min(u32::MAX as u64) as GLuint) }
-        }
+        // SAFETY: the caller provides room for one value (or passes NULL).
+        unsafe { caller_memory::write(params, value.min(u32::MAX as u64) as GLuint) }
     }
 }
 

@@ -1,5 +1,6 @@
 //! Entry points for the rasterization state: shading, faces, polygon modes and offset, lines,
 //! points and the polygon stipple.
+use super::caller_memory;
 use super::{record_or_run, with_context};
 use crate::context::Context;
 use crate::gl::types::*;
@@ -89,14 +90,12 @@ pub extern "C" fn glPointParameteri(pname: GLenum, param: GLint) {
 /// # Safety
 /// `params` is NULL or points to as many values as `pname` takes.
 unsafe fn read_point_params<T: Copy + Into<f64>>(pname: GLenum, params: *const T) -> Option<[GLfloat; 3]> {
-    if params.is_null() {
-        return None;
-    }
-    let count = Context::point_parameter_count(pname);
+    let count = Context::point_parameter_count(pname).min(3);
+    // SAFETY: the caller passes a pointer to `count` values (GL's contract for `pname`) or NULL.
+    let read = unsafe { caller_memory::read_vec(params, count) }?;
     let mut values = [0.0; 3];
-    for (i, value) in values.iter_mut().enumerate().take(count) {
-        // SAFETY: the caller passes a pointer to `count` values (GL's contract for `pname`).
-        *value = unsafe { params.add(i).read_unaligned() }.into() as GLfloat;
+    for (value, v) in values.iter_mut().zip(read) {
+        *value = v.into() as GLfloat;
     }
     Some(values)
 }
@@ -154,12 +153,9 @@ pub unsafe extern "C" fn glPointParameterfvEXT(pname: GLenum, params: *const GLf
 pub unsafe extern "C" fn glPolygonStipple(mask: *const GLubyte) {
     with_context((), |ctx| {
         let pattern = ctx.unpack_polygon_stipple(|span| {
-            if mask.is_null() {
-                return None;
-            }
             // SAFETY: the context computed `span` from the unpack parameters as the bytes the
             // 32×32 bitmap occupies; by glPolygonStipple's contract the caller's image holds them.
-            Some(unsafe { std::slice::from_raw_parts(mask.add(span.start), span.len()) })
+            unsafe { caller_memory::bytes(mask, span) }
         });
         ctx.record_or_run(move |ctx| ctx.set_polygon_stipple(pattern))
     })
@@ -172,13 +168,10 @@ pub unsafe extern "C" fn glPolygonStipple(mask: *const GLubyte) {
 pub unsafe extern "C" fn glGetPolygonStipple(mask: *mut GLubyte) {
     with_context((), |ctx| {
         ctx.get_polygon_stipple(|span| {
-            if mask.is_null() {
-                return None;
-            }
             // SAFETY: the context computed `span` from the pack parameters as the bytes the
             // 32×32 bitmap occupies; by glGetPolygonStipple's contract the caller provides them,
             // and nothing else accesses that memory during the call.
-            Some(unsafe { std::slice::from_raw_parts_mut(mask.add(span.start), span.len()) })
+            unsafe { caller_memory::bytes_mut(mask, span) }
         })
     })
 }

@@ -1,6 +1,7 @@
 //! Selection and feedback entry points: glRenderMode, glSelectBuffer, the name stack,
 //! glFeedbackBuffer and glPassThrough. The name stack commands and glPassThrough are compiled
 //! into display lists; glRenderMode, glSelectBuffer and glFeedbackBuffer always execute.
+use super::caller_memory;
 use super::{record_or_run, with_context};
 use crate::gl::types::*;
 
@@ -8,7 +9,7 @@ use crate::gl::types::*;
 fn copy_records(address: usize, words: &[u32]) {
     // SAFETY: `address` is the buffer the caller gave glSelectBuffer, with room for its
     // `size` words; `words` holds at most that many (the context truncates to the size).
-    unsafe { std::ptr::copy_nonoverlapping(words.as_ptr(), address as *mut GLuint, words.len()) }
+    unsafe { caller_memory::write_all(address as *mut GLuint, words.iter().copied()) }
 }
 
 #[no_mangle]
@@ -21,7 +22,7 @@ pub extern "C" fn glRenderMode(mode: GLenum) -> GLint {
         if let Some((address, values)) = &result.feedback {
             // SAFETY: `address` is the buffer the caller gave glFeedbackBuffer, with room for
             // its `size` floats; `values` holds at most that many.
-            unsafe { std::ptr::copy_nonoverlapping(values.as_ptr(), *address as *mut GLfloat, values.len()) }
+            unsafe { caller_memory::write_all(*address as *mut GLfloat, values.iter().copied()) }
         }
         result.value
     })

@@ -1,4 +1,5 @@
 //! Entry points for capabilities, errors, queries, hints, attribute stacks and flushing.
+use super::caller_memory;
 use super::{guard, record_or_run, with_context};
 use crate::gl::types::*;
 
@@ -112,26 +113,13 @@ pub extern "C" fn glPopClientAttrib() {
     with_context((), |ctx| ctx.pop_client_attrib())
 }
 
-/// Copies query results to the caller's array.
-///
-/// # Safety
-/// `data` must have room for `values.len()` elements (the count GL defines for the query).
-unsafe fn write_values<T: Copy>(data: *mut T, values: &[T]) {
-    if data.is_null() {
-        return;
-    }
-    // SAFETY: the caller of the glGet* entry point provides an array large enough for the
-    // query's value count, which is what `values` holds.
-    unsafe { std::ptr::copy_nonoverlapping(values.as_ptr(), data, values.len()) }
-}
-
 /// # Safety
 /// `data` must have room for the values `pname` returns.
 #[no_mangle]
 pub unsafe extern "C" fn glGetBooleanv(pname: GLenum, data: *mut GLboolean) {
     let values = with_context_vec(|ctx| ctx.get_booleans(pname));
     // SAFETY: forwarded contract of this entry point.
-    unsafe { write_values(data, &values) }
+    unsafe { caller_memory::write_all(data, values) }
 }
 
 /// # Safety
@@ -140,7 +128,7 @@ pub unsafe extern "C" fn glGetBooleanv(pname: GLenum, data: *mut GLboolean) {
 pub unsafe extern "C" fn glGetIntegerv(pname: GLenum, data: *mut GLint) {
     let values = with_context_vec(|ctx| ctx.get_integers(pname));
     // SAFETY: forwarded contract of this entry point.
-    unsafe { write_values(data, &values) }
+    unsafe { caller_memory::write_all(data, values) }
 }
 
 /// # Safety
@@ -149,7 +137,7 @@ pub unsafe extern "C" fn glGetIntegerv(pname: GLenum, data: *mut GLint) {
 pub unsafe extern "C" fn glGetFloatv(pname: GLenum, data: *mut GLfloat) {
     let values = with_context_vec(|ctx| ctx.get_floats(pname));
     // SAFETY: forwarded contract of this entry point.
-    unsafe { write_values(data, &values) }
+    unsafe { caller_memory::write_all(data, values) }
 }
 
 /// # Safety
@@ -158,7 +146,7 @@ pub unsafe extern "C" fn glGetFloatv(pname: GLenum, data: *mut GLfloat) {
 pub unsafe extern "C" fn glGetDoublev(pname: GLenum, data: *mut GLdouble) {
     let values = with_context_vec(|ctx| ctx.get_doubles(pname));
     // SAFETY: forwarded contract of this entry point.
-    unsafe { write_values(data, &values) }
+    unsafe { caller_memory::write_all(data, values) }
 }
 
 /// Runs a query returning a vector; empty when there is no context or the query failed.

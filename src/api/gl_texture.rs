@@ -1,34 +1,11 @@
 //! Entry points for textures: objects, images, parameters, the texture environment and
 //! texture coordinate generation. Compressed images are refused (no compressed format is
 //! supported or advertised).
+use super::caller_memory::{self, read_array};
 use super::{guard, record_or_run, with_context};
 use crate::context::texture::{ImageArgs, Region};
 use crate::gl::types::*;
 use std::ops::Range;
-
-/// `n` elements at `ptr`, or none for NULL or a non-positive count.
-///
-/// # Safety
-/// A non-null `ptr` must point to `n` readable elements.
-unsafe fn slice<'a, T>(ptr: *const T, n: GLsizei) -> &'a [T] {
-    if ptr.is_null() || n <= 0 {
-        &[]
-    } else {
-        // SAFETY: forwarded contract: `ptr` points to `n` elements.
-        unsafe { std::slice::from_raw_parts(ptr, n as usize) }
-    }
-}
-
-/// The client bytes `span` of an image at `pixels` (NULL: none).
-///
-/// # Safety
-/// A non-null `pixels` must hold the bytes the unpack parameters place the image in.
-unsafe fn image_bytes<'a>(pixels: *const GLvoid, span: std::ops::Range<usize>) -> Option<&'a [u8]> {
-    // SAFETY: the context computed `span` from the unpack parameters as the bytes of the
-    // client image the call reads; by the command's contract the caller's image holds them.
-    (!pixels.is_null())
-        .then(|| unsafe { std::slice::from_raw_parts((pixels as *const u8).add(span.start), span.len()) })
-}
 
 /// Runs an image command now, or, while a display list is compiled, records it with a copy
 /// of the client image read under the unpack state of this moment (GL 2.1 §5.4), which is
@@ -46,13 +23,15 @@ unsafe fn image_command(
 ) {
     with_context((), |ctx| {
         if !ctx.lists.compiling() {
-            // SAFETY: forwarded contract.
-            return run(ctx, &|span| unsafe { image_bytes(pixels, span) });
+            // SAFETY: the context computes `span` from the unpack parameters as the bytes of
+            // the client image the call reads; by the command's contract the caller's image
+            // holds them.
+            return run(ctx, &|span| unsafe { caller_memory::bytes(pixels, span) });
         }
         let unpack = ctx.pixel_store.unpack;
         let copy = ctx.client_image_span(dims, format, ty, size).and_then(|span| {
-            // SAFETY: forwarded contract.
-            unsafe { image_bytes(pixels, span.clone()) }.map(|bytes| (span.start, bytes.to_vec()))
+            // SAFETY: as above, for the bytes the unpack parameters of this moment place the image in.
+            unsafe { caller_memory::bytes(pixels, span.clone()) }.map(|bytes| (span.start, bytes.to_vec()))
         });
         ctx.record_or_run(move |ctx| {
             let saved = std::mem::replace(&mut ctx.pixel_store.unpack, unpack);
@@ -72,10 +51,8 @@ unsafe fn image_command(
 pub unsafe extern "C" fn glGenTextures(n: GLsizei, textures: *mut GLuint) {
     let names = guard(None, || crate::context::current::with_current(|ctx| ctx.gen_textures(n)).flatten());
     if let Some(names) = names {
-        if !textures.is_null() && !names.is_empty() {
-            // SAFETY: the caller provides room for `n` names, and `names` holds `n`.
-            unsafe { std::ptr::copy_nonoverlapping(names.as_ptr(), textures, names.len()) }
-        }
+        // SAFETY: the caller provides room for `n` names (or passes NULL), and `names` holds `n`.
+        unsafe { caller_memory::write_all(textures, names) }
     }
 }
 
@@ -84,8 +61,8 @@ pub unsafe extern "C" fn glGenTextures(n: GLsizei, textures: *mut GLuint) {
 #[no_mangle]
 pub unsafe extern "C" fn glDeleteTextures(n: GLsizei, textures: *const GLuint) {
     // SAFETY: forwarded contract.
-    let names = unsafe { slice(textures, n) };
-    with_context((), |ctx| ctx.delete_textures(n, names))
+    let names = unsafe { read_array(textures, n) };
+    with_context((), |ctx| ctx.delete_textures(n, &names))
 }
 
 #[no_mangle]
@@ -103,8 +80,8 @@ pub extern "C" fn glIsTexture(texture: GLuint) -> GLboolean {
 #[no_mangle]
 pub unsafe extern "C" fn glPrioritizeTextures(n: GLsizei, textures: *const GLuint, priorities: *const GLclampf) {
     // SAFETY: forwarded contract.
-    let (names, values) = unsafe { (slice(textures, n), slice(priorities, n)) };
-    with_context((), |ctx| ctx.prioritize_textures(n, names, values))
+    let (names, values) = unsafe { (read_array(textures, n), read_array(priorities, n)) };
+    with_context((), |ctx| ctx.prioritize_textures(n, &names, &values))
 }
 
 /// # Safety
@@ -117,8 +94,8 @@ pub unsafe extern "C" fn glAreTexturesResident(
 ) -> GLboolean {
     let _ = residences;
     // SAFETY: forwarded contract.
-    let names = unsafe { slice(textures, n) };
-    with_context(0, |ctx| ctx.are_textures_resident(n, names) as GLboolean)
+    let names = unsafe { read_array(textures, n) };
+    with_context(0, |ctx| ctx.are_textures_resident(n, &names) as GLboolean)
 }
 
 /// # Safety
@@ -357,8 +334,7 @@ pub unsafe extern "C" fn glGetTexImage(
             // SAFETY: the context computed `span` from the pack parameters as the bytes of
             // the client image the call writes; by glGetTexImage's contract the caller's
             // memory holds them.
-            (!pixels.is_null())
-                .then(|| unsafe { std::slice::from_raw_parts_mut((pixels as *mut u8).add(span.start), span.len()) })
+            unsafe { caller_memory::bytes_mut(pixels, span) }
         })
     })
 }
@@ -383,10 +359,8 @@ fn color_to_int(x: f32) -> GLint {
 #[no_mangle]
 pub unsafe extern "C" fn glGetTexLevelParameteriv(target: GLenum, level: GLint, pname: GLenum, params: *mut GLint) {
     if let Some(v) = with_context(None, |ctx| ctx.get_tex_level_parameter(target, level, pname)) {
-        if !params.is_null() {
-            // SAFETY: forwarded contract (one value).
-            unsafe { *params = v }
-        }
+        // SAFETY: forwarded contract (one value, or NULL).
+        unsafe { caller_memory::write(params, v) }
     }
 }
 
@@ -395,10 +369,8 @@ pub unsafe extern "C" fn glGetTexLevelParameteriv(target: GLenum, level: GLint, 
 #[no_mangle]
 pub unsafe extern "C" fn glGetTexLevelParameterfv(target: GLenum, level: GLint, pname: GLenum, params: *mut GLfloat) {
     if let Some(v) = with_context(None, |ctx| ctx.get_tex_level_parameter(target, level, pname)) {
-        if !params.is_null() {
-            // SAFETY: forwarded contract (one value).
-            unsafe { *params = v as GLfloat }
-        }
+        // SAFETY: forwarded contract (one value, or NULL).
+        unsafe { caller_memory::write(params, v as GLfloat) }
     }
 }
 
@@ -427,7 +399,7 @@ fn count(pname: GLenum) -> GLsizei {
 #[no_mangle]
 pub unsafe extern "C" fn glTexParameterfv(target: GLenum, pname: GLenum, params: *const GLfloat) {
     // SAFETY: forwarded contract.
-    let v = unsafe { slice(params, count(pname)) }.to_vec();
+    let v = unsafe { read_array(params, count(pname)) };
     record_or_run(move |ctx| ctx.tex_parameter(target, pname, &v, false))
 }
 
@@ -436,7 +408,7 @@ pub unsafe extern "C" fn glTexParameterfv(target: GLenum, pname: GLenum, params:
 #[no_mangle]
 pub unsafe extern "C" fn glTexParameteriv(target: GLenum, pname: GLenum, params: *const GLint) {
     // SAFETY: forwarded contract.
-    let v: Vec<f32> = unsafe { slice(params, count(pname)) }.iter().map(|&x| x as f32).collect();
+    let v: Vec<f32> = unsafe { read_array(params, count(pname)) }.into_iter().map(|x| x as f32).collect();
     record_or_run(move |ctx| ctx.tex_parameter(target, pname, &v, true))
 }
 
@@ -470,13 +442,8 @@ fn with_context_values<T: Clone>(f: impl FnOnce(&mut crate::context::Context) ->
 /// # Safety
 /// A non-null `out` must have room for `values.len()` elements.
 unsafe fn write<S: Copy, T>(out: *mut T, values: &[S], convert: impl Fn(S) -> T) {
-    if out.is_null() {
-        return;
-    }
-    for (i, &v) in values.iter().enumerate() {
-        // SAFETY: forwarded contract: room for every value.
-        unsafe { out.add(i).write(convert(v)) }
-    }
+    // SAFETY: forwarded contract: room for every value (or NULL).
+    unsafe { caller_memory::write_all(out, values.iter().map(|&v| convert(v))) }
 }
 
 #[no_mangle]
@@ -494,7 +461,7 @@ pub extern "C" fn glTexEnvi(target: GLenum, pname: GLenum, param: GLint) {
 #[no_mangle]
 pub unsafe extern "C" fn glTexEnvfv(target: GLenum, pname: GLenum, params: *const GLfloat) {
     // SAFETY: forwarded contract.
-    let v = unsafe { slice(params, count(pname)) }.to_vec();
+    let v = unsafe { read_array(params, count(pname)) };
     record_or_run(move |ctx| ctx.tex_env(target, pname, &v, false))
 }
 
@@ -503,7 +470,7 @@ pub unsafe extern "C" fn glTexEnvfv(target: GLenum, pname: GLenum, params: *cons
 #[no_mangle]
 pub unsafe extern "C" fn glTexEnviv(target: GLenum, pname: GLenum, params: *const GLint) {
     // SAFETY: forwarded contract.
-    let v: Vec<f32> = unsafe { slice(params, count(pname)) }.iter().map(|&x| x as f32).collect();
+    let v: Vec<f32> = unsafe { read_array(params, count(pname)) }.into_iter().map(|x| x as f32).collect();
     record_or_run(move |ctx| ctx.tex_env(target, pname, &v, true))
 }
 
@@ -557,7 +524,7 @@ fn gen_count(pname: GLenum) -> GLsizei {
 #[no_mangle]
 pub unsafe extern "C" fn glTexGendv(coord: GLenum, pname: GLenum, params: *const GLdouble) {
     // SAFETY: forwarded contract.
-    let v = unsafe { slice(params, gen_count(pname)) }.to_vec();
+    let v = unsafe { read_array(params, gen_count(pname)) };
     record_or_run(move |ctx| ctx.tex_gen(coord, pname, &v, true))
 }
 
@@ -566,7 +533,7 @@ pub unsafe extern "C" fn glTexGendv(coord: GLenum, pname: GLenum, params: *const
 #[no_mangle]
 pub unsafe extern "C" fn glTexGenfv(coord: GLenum, pname: GLenum, params: *const GLfloat) {
     // SAFETY: forwarded contract.
-    let v: Vec<f64> = unsafe { slice(params, gen_count(pname)) }.iter().map(|&x| x as f64).collect();
+    let v: Vec<f64> = unsafe { read_array(params, gen_count(pname)) }.into_iter().map(|x| x as f64).collect();
     record_or_run(move |ctx| ctx.tex_gen(coord, pname, &v, true))
 }
 
@@ -575,7 +542,7 @@ pub unsafe extern "C" fn glTexGenfv(coord: GLenum, pname: GLenum, params: *const
 #[no_mangle]
 pub unsafe extern "C" fn glTexGeniv(coord: GLenum, pname: GLenum, params: *const GLint) {
     // SAFETY: forwarded contract.
-    let v: Vec<f64> = unsafe { slice(params, gen_count(pname)) }.iter().map(|&x| x as f64).collect();
+    let v: Vec<f64> = unsafe { read_array(params, gen_count(pname)) }.into_iter().map(|x| x as f64).collect();
     record_or_run(move |ctx| ctx.tex_gen(coord, pname, &v, true))
 }
 

@@ -1,19 +1,7 @@
 //! Entry points for matrices, glActiveTexture and user clip planes.
+use super::caller_memory::{self, read};
 use super::{record_or_run, with_context};
 use crate::gl::types::*;
-
-/// Reads the 16 elements a matrix pointer names; `None` for NULL.
-///
-/// # Safety
-/// `m` is NULL or points to 16 readable `T`.
-unsafe fn read_matrix<T: Copy>(m: *const T) -> Option<[T; 16]> {
-    if m.is_null() {
-        return None;
-    }
-    // SAFETY: the caller (a GL entry point) forwards GL's contract that a non-NULL matrix
-    // pointer addresses 16 elements.
-    Some(unsafe { std::ptr::read_unaligned(m as *const [T; 16]) })
-}
 
 /// A double matrix converted to float, as every double matrix command does first.
 fn to_float(m: [GLdouble; 16]) -> [GLfloat; 16] {
@@ -55,7 +43,7 @@ pub extern "C" fn glLoadIdentity() {
 #[no_mangle]
 pub unsafe extern "C" fn glLoadMatrixf(m: *const GLfloat) {
     // SAFETY: forwarded contract of this entry point.
-    if let Some(m) = unsafe { read_matrix(m) } {
+    if let Some(m) = unsafe { read::<_, 16>(m) } {
         record_or_run(move |ctx| ctx.load_matrix(&m))
     }
 }
@@ -65,7 +53,7 @@ pub unsafe extern "C" fn glLoadMatrixf(m: *const GLfloat) {
 #[no_mangle]
 pub unsafe extern "C" fn glLoadMatrixd(m: *const GLdouble) {
     // SAFETY: forwarded contract of this entry point.
-    if let Some(m) = unsafe { read_matrix(m) } {
+    if let Some(m) = unsafe { read::<_, 16>(m) } {
         record_or_run(move |ctx| ctx.load_matrix(&to_float(m)))
     }
 }
@@ -75,7 +63,7 @@ pub unsafe extern "C" fn glLoadMatrixd(m: *const GLdouble) {
 #[no_mangle]
 pub unsafe extern "C" fn glMultMatrixf(m: *const GLfloat) {
     // SAFETY: forwarded contract of this entry point.
-    if let Some(m) = unsafe { read_matrix(m) } {
+    if let Some(m) = unsafe { read::<_, 16>(m) } {
         record_or_run(move |ctx| ctx.mult_matrix(&m))
     }
 }
@@ -85,7 +73,7 @@ pub unsafe extern "C" fn glMultMatrixf(m: *const GLfloat) {
 #[no_mangle]
 pub unsafe extern "C" fn glMultMatrixd(m: *const GLdouble) {
     // SAFETY: forwarded contract of this entry point.
-    if let Some(m) = unsafe { read_matrix(m) } {
+    if let Some(m) = unsafe { read::<_, 16>(m) } {
         record_or_run(move |ctx| ctx.mult_matrix(&to_float(m)))
     }
 }
@@ -98,7 +86,7 @@ pub unsafe extern "C" fn glMultMatrixd(m: *const GLdouble) {
 #[no_mangle]
 pub unsafe extern "C" fn glLoadTransposeMatrixf(m: *const GLfloat) {
     // SAFETY: forwarded contract of this entry point.
-    if let Some(m) = unsafe { read_matrix(m) } {
+    if let Some(m) = unsafe { read::<_, 16>(m) } {
         record_or_run(move |ctx| ctx.load_transpose_matrix(&m))
     }
 }
@@ -111,7 +99,7 @@ pub unsafe extern "C" fn glLoadTransposeMatrixf(m: *const GLfloat) {
 #[no_mangle]
 pub unsafe extern "C" fn glLoadTransposeMatrixd(m: *const GLdouble) {
     // SAFETY: forwarded contract of this entry point.
-    if let Some(m) = unsafe { read_matrix(m) } {
+    if let Some(m) = unsafe { read::<_, 16>(m) } {
         record_or_run(move |ctx| ctx.load_transpose_matrix(&to_float(m)))
     }
 }
@@ -124,7 +112,7 @@ pub unsafe extern "C" fn glLoadTransposeMatrixd(m: *const GLdouble) {
 #[no_mangle]
 pub unsafe extern "C" fn glMultTransposeMatrixf(m: *const GLfloat) {
     // SAFETY: forwarded contract of this entry point.
-    if let Some(m) = unsafe { read_matrix(m) } {
+    if let Some(m) = unsafe { read::<_, 16>(m) } {
         record_or_run(move |ctx| ctx.mult_transpose_matrix(&m))
     }
 }
@@ -137,7 +125,7 @@ pub unsafe extern "C" fn glMultTransposeMatrixf(m: *const GLfloat) {
 #[no_mangle]
 pub unsafe extern "C" fn glMultTransposeMatrixd(m: *const GLdouble) {
     // SAFETY: forwarded contract of this entry point.
-    if let Some(m) = unsafe { read_matrix(m) } {
+    if let Some(m) = unsafe { read::<_, 16>(m) } {
         record_or_run(move |ctx| ctx.mult_transpose_matrix(&to_float(m)))
     }
 }
@@ -238,11 +226,10 @@ pub extern "C" fn glClipControl(origin: GLenum, depth: GLenum) {
 /// `equation` is NULL (ignored) or points to 4 doubles.
 #[no_mangle]
 pub unsafe extern "C" fn glClipPlane(plane: GLenum, equation: *const GLdouble) {
-    if equation.is_null() {
-        return;
-    }
     // SAFETY: GL's contract: a plane equation is 4 doubles.
-    let equation = unsafe { std::ptr::read_unaligned(equation as *const [GLdouble; 4]) };
+    let Some(equation) = (unsafe { read::<_, 4>(equation) }) else {
+        return;
+    };
     record_or_run(move |ctx| ctx.clip_plane(plane, equation))
 }
 
@@ -253,8 +240,6 @@ pub unsafe extern "C" fn glGetClipPlane(plane: GLenum, equation: *mut GLdouble) 
     let Some(values) = with_context(None, |ctx| ctx.get_clip_plane(plane)) else {
         return;
     };
-    if !equation.is_null() {
-        // SAFETY: GL's contract: the caller provides room for 4 doubles.
-        unsafe { std::ptr::write_unaligned(equation as *mut [GLdouble; 4], values) }
-    }
+    // SAFETY: GL's contract: the caller provides room for 4 doubles (or passes NULL).
+    unsafe { caller_memory::write_all(equation, values) }
 }

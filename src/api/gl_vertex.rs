@@ -7,22 +7,10 @@
 //! them to the context; the vector (`v`) forms read their array and call the scalar form.
 //! Extension aliases (`EXT`, `ARB`) call the core function. The variants differ only in types
 //! and counts; they are written out one by one because cbindgen and build.rs read them.
+use super::caller_memory::read;
 use super::record_or_run;
 use crate::gl::types::*;
 use crate::vertex::components::Component;
-
-/// The `N` values a C array starts with; `None` for NULL.
-///
-/// # Safety
-/// A non-null `v` must point to `N` readable values of `T`.
-unsafe fn read<T: Copy, const N: usize>(v: *const T) -> Option<[T; N]> {
-    if v.is_null() {
-        return None;
-    }
-    // SAFETY: the caller guarantees `N` readable values at `v`; C arrays need not be aligned
-    // for the array type, so the read is unaligned.
-    Some(unsafe { std::ptr::read_unaligned(v as *const [T; N]) })
-}
 
 #[no_mangle]
 pub extern "C" fn glBegin(mode: GLenum) {

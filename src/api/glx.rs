@@ -15,8 +15,10 @@
 // XIDs and visual ids are C `unsigned long`, kept as u64 inside: the casts are no-ops only
 // where `unsigned long` is 64 bits.
 #![allow(clippy::unnecessary_cast)]
+use super::caller_memory;
 use super::guard;
 use crate::context::strings;
+use crate::gl::glx::*;
 use crate::gl::types::*;
 use crate::winsys::glx::{self as glx, DisplayAddr, DrawableKind, MakeCurrentError};
 use crate::winsys::glx_config::*;
@@ -34,35 +36,6 @@ pub type GLXextFuncPtr = Option<unsafe extern "C" fn()>;
 const TRUE: Bool = 1;
 const FALSE: Bool = 0;
 const SUCCESS: c_int = 0;
-const GLX_BAD_ATTRIBUTE: c_int = 2;
-const GLX_BAD_VISUAL: c_int = 4;
-const GLX_BAD_CONTEXT: c_int = 5;
-const GLX_VENDOR: c_int = 1;
-const GLX_VERSION: c_int = 2;
-const GLX_EXTENSIONS: c_int = 3;
-const GLX_WIDTH: c_int = 0x801D;
-const GLX_HEIGHT: c_int = 0x801E;
-const GLX_PRESERVED_CONTENTS: c_int = 0x801B;
-const GLX_LARGEST_PBUFFER: c_int = 0x801C;
-const GLX_PBUFFER_HEIGHT: c_int = 0x8040;
-const GLX_PBUFFER_WIDTH: c_int = 0x8041;
-const GLX_SHARE_CONTEXT_EXT: c_int = 0x800A;
-const GLX_SWAP_INTERVAL_EXT: c_int = 0x20F1;
-const GLX_MAX_SWAP_INTERVAL_EXT: c_int = 0x20F2;
-const GLX_CONTEXT_MAJOR_VERSION_ARB: c_int = 0x2091;
-const GLX_CONTEXT_MINOR_VERSION_ARB: c_int = 0x2092;
-const GLX_CONTEXT_FLAGS_ARB: c_int = 0x2094;
-const GLX_CONTEXT_PROFILE_MASK_ARB: c_int = 0x9126;
-const GLX_CONTEXT_CORE_PROFILE_BIT_ARB: c_int = 1;
-const GLX_CONTEXT_COMPATIBILITY_PROFILE_BIT_ARB: c_int = 2;
-const GLX_CONTEXT_DEBUG_BIT_ARB: c_int = 1;
-const GLX_CONTEXT_FORWARD_COMPATIBLE_BIT_ARB: c_int = 2;
-const GLX_CONTEXT_ROBUST_ACCESS_BIT_ARB: c_int = 4;
-const GLX_CONTEXT_RESET_NOTIFICATION_STRATEGY_ARB: c_int = 0x8256;
-const GLX_NO_RESET_NOTIFICATION_ARB: c_int = 0x8261;
-const GLX_COLOR_INDEX_TYPE: c_int = 0x8015;
-/// GLXBadProfileARB (glxproto.h), a GLX error code.
-const GLX_BAD_PROFILE_ARB: u8 = 13;
 
 const VENDOR: &CStr = c"tessera project";
 const VERSION: &CStr = c"1.4";
@@ -83,27 +56,17 @@ fn report(display: *mut Display, error: GlxError, resource: u64, minor: u8) {
 /// # Safety
 /// `list` must be NULL or zero-terminated as the GLX calls require.
 unsafe fn attribute_list(list: *const c_int, singles: bool) -> Vec<i32> {
-    let mut out = Vec::new();
-    if list.is_null() {
-        return out;
-    }
-    let mut i = 0;
-    loop {
-        // SAFETY: the list is terminated by None (0); we stop there.
-        let attribute = unsafe { *list.add(i) };
-        if attribute == 0 {
-            break;
-        }
-        out.push(attribute);
+    let step = |attribute| {
         let boolean = singles && matches!(attribute, GLX_USE_GL | GLX_RGBA | GLX_DOUBLEBUFFER | GLX_STEREO);
-        if !boolean {
-            // SAFETY: a non-boolean attribute is followed by its value.
-            out.push(unsafe { *list.add(i + 1) });
-            i += 1;
+        // A non-boolean attribute is followed by its value.
+        if boolean {
+            1
+        } else {
+            2
         }
-        i += 1;
-    }
-    out
+    };
+    // SAFETY: the list is NULL or terminated by None (0), as the contract says.
+    unsafe { caller_memory::read_terminated(list, 0, step) }
 }
 
 /// A malloc'ed array of configuration handles (freed by the caller with XFree).
@@ -111,10 +74,8 @@ unsafe fn attribute_list(list: *const c_int, singles: bool) -> Vec<i32> {
 /// # Safety
 /// `count` must be NULL or writable.
 unsafe fn config_array(configs: &[&'static FbConfig], count: *mut c_int) -> *mut GLXFBConfig {
-    if !count.is_null() {
-        // SAFETY: checked non-null; the caller's out-parameter.
-        unsafe { *count = 0 };
-    }
+    // SAFETY: the caller's out-parameter, or NULL.
+    unsafe { caller_memory::write(count, 0) };
     if configs.is_empty() {
         return std::ptr::null_mut();
     }
@@ -127,10 +88,8 @@ unsafe fn config_array(configs: &[&'static FbConfig], count: *mut c_int) -> *mut
         // SAFETY: `array` holds `configs.len()` pointers.
         unsafe { *array.add(i) = glx::config_handle(c) as GLXFBConfig };
     }
-    if !count.is_null() {
-        // SAFETY: checked non-null.
-        unsafe { *count = configs.len() as c_int };
-    }
+    // SAFETY: the caller's out-parameter, or NULL.
+    unsafe { caller_memory::write(count, configs.len() as c_int) };
     array
 }
 
@@ -144,19 +103,18 @@ fn config_of(display: *mut Display, config: GLXFBConfig) -> Option<&'static FbCo
 /// # Safety
 /// `vis` must be NULL or point to an XVisualInfo.
 unsafe fn config_of_visual(display: *mut Display, vis: *const XVisualInfo) -> Option<&'static FbConfig> {
-    if vis.is_null() || display.is_null() {
+    if display.is_null() {
         return None;
     }
-    // SAFETY: checked non-null; the caller passes an XVisualInfo.
-    let visual_id = unsafe { (*vis).visualid } as u64;
+    // SAFETY: the caller passes an XVisualInfo, or NULL.
+    let visual_id = unsafe { caller_memory::read_at(vis, 0) }?.visualid as u64;
     glx::config_for_visual(addr(display), visual_id)
 }
 
 fn set<T>(out: *mut T, value: T) {
-    if !out.is_null() {
-        // SAFETY: non-null out-parameter of the caller.
-        unsafe { *out = value };
-    }
+    // SAFETY: an out-parameter of the caller, or NULL (the contracts of the GLX calls that
+    // use this).
+    unsafe { caller_memory::write(out, value) }
 }
 
 /// # Safety
@@ -914,11 +872,8 @@ pub extern "C" fn glXUseXFont(font: c_ulong, first: c_int, count: c_int, listBas
 /// `procName` must be NULL or NUL-terminated.
 #[no_mangle]
 pub unsafe extern "C" fn glXGetProcAddress(procName: *const GLubyte) -> GLXextFuncPtr {
-    if procName.is_null() {
-        return None;
-    }
-    // SAFETY: non-null and NUL-terminated by the contract.
-    let name = unsafe { CStr::from_ptr(procName.cast()) };
+    // SAFETY: NULL or NUL-terminated by the contract.
+    let name = unsafe { caller_memory::c_str(procName.cast()) }?;
     guard(None, || super::procs::lookup(name.to_bytes()))
 }
 
@@ -983,11 +938,10 @@ fn refuse_config(call: &str, handle: GLXFBConfig) {
 /// # Safety
 /// `vis` must be NULL or point to an XVisualInfo.
 unsafe fn describe_visual(vis: *const XVisualInfo) -> String {
-    if vis.is_null() {
+    // SAFETY: the caller passes an XVisualInfo, or NULL.
+    let Some(v) = (unsafe { caller_memory::read_at(vis, 0) }) else {
         return "no visual (NULL)".to_string();
-    }
-    // SAFETY: checked non-null; the caller passes an XVisualInfo.
-    let v = unsafe { &*vis };
+    };
     format!("visual {:#x} (depth {}, class {})", v.visualid, v.depth, v.class)
 }
 

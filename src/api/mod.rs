@@ -11,6 +11,7 @@
 // Entry points keep the C names of the GL headers, parameters included.
 #![allow(non_snake_case)]
 
+mod caller_memory;
 pub mod gl_aliases;
 pub mod gl_arrays;
 pub mod gl_buffer_objects;

@@ -2,6 +2,7 @@
 //!
 //! Handles given to C are identifiers looked up in the registry of `winsys::osmesa`, never
 //! dereferenced, so a NULL, stale or foreign handle is refused instead of crashing.
+use super::caller_memory;
 use super::guard;
 use crate::context::strings;
 use crate::framebuffer::external::CallerBuffer;
@@ -9,31 +10,9 @@ use crate::gl::enums::*;
 use crate::gl::types::*;
 use crate::winsys::notice;
 use crate::winsys::osmesa::{self as osm, BindFailure, PixelLayout, Request};
-use std::ffi::{c_char, c_int, c_uint, c_void, CStr};
+use std::ffi::{c_char, c_int, c_uint, c_void};
 
-pub const OSMESA_COLOR_INDEX: GLenum = GL_COLOR_INDEX;
-pub const OSMESA_RGBA: GLenum = GL_RGBA;
-pub const OSMESA_BGRA: GLenum = 0x1;
-pub const OSMESA_ARGB: GLenum = 0x2;
-pub const OSMESA_RGB: GLenum = GL_RGB;
-pub const OSMESA_BGR: GLenum = 0x4;
-pub const OSMESA_RGB_565: GLenum = 0x5;
-pub const OSMESA_ROW_LENGTH: GLint = 0x10;
-pub const OSMESA_Y_UP: GLint = 0x11;
-pub const OSMESA_WIDTH: GLint = 0x20;
-pub const OSMESA_HEIGHT: GLint = 0x21;
-pub const OSMESA_FORMAT: GLint = 0x22;
-pub const OSMESA_TYPE: GLint = 0x23;
-pub const OSMESA_MAX_WIDTH: GLint = 0x24;
-pub const OSMESA_MAX_HEIGHT: GLint = 0x25;
-pub const OSMESA_DEPTH_BITS: c_int = 0x30;
-pub const OSMESA_STENCIL_BITS: c_int = 0x31;
-pub const OSMESA_ACCUM_BITS: c_int = 0x32;
-pub const OSMESA_PROFILE: c_int = 0x33;
-pub const OSMESA_CORE_PROFILE: c_int = 0x34;
-pub const OSMESA_COMPAT_PROFILE: c_int = 0x35;
-pub const OSMESA_CONTEXT_MAJOR_VERSION: c_int = 0x36;
-pub const OSMESA_CONTEXT_MINOR_VERSION: c_int = 0x37;
+use crate::gl::osmesa::*;
 
 fn handle_of(ctx: OSMesaContext) -> usize {
     ctx as usize
@@ -120,14 +99,10 @@ pub unsafe extern "C" fn OSMesaCreateContextAttribs(
     let (mut major, mut minor) = (1, 0);
     if !attribList.is_null() {
         let mut i = 0;
-        loop {
-            // SAFETY: the list is zero-terminated; we read pairs until the terminator.
-            let attr = unsafe { *attribList.add(i) };
-            if attr == 0 {
-                break;
-            }
+        // SAFETY: the list is zero-terminated; we read pairs until the terminator.
+        while let Some(attr) = (unsafe { caller_memory::read_at(attribList, i) }).filter(|&a| a != 0) {
             // SAFETY: a non-terminator attribute is followed by its value.
-            let value = unsafe { *attribList.add(i + 1) };
+            let value = unsafe { caller_memory::read_at(attribList, i + 1) }.unwrap_or_default();
             match attr {
                 a if a == OSMESA_FORMAT => format = value as GLenum,
                 OSMESA_DEPTH_BITS => depth = value,
@@ -256,9 +231,9 @@ pub unsafe extern "C" fn OSMesaGetIntegerv(pname: GLint, value: *mut GLint) {
             }
         })
     });
-    if let (Some(v), false) = (result, value.is_null()) {
-        // SAFETY: checked non-null; the caller passes a GLint to fill.
-        unsafe { *value = v }
+    if let Some(v) = result {
+        // SAFETY: the caller passes a GLint to fill, or NULL.
+        unsafe { caller_memory::write(value, v) }
     }
 }
 
@@ -267,10 +242,8 @@ pub unsafe extern "C" fn OSMesaGetIntegerv(pname: GLint, value: *mut GLint) {
 /// # Safety
 /// `p` must be NULL or valid for a write of `T`.
 unsafe fn out<T>(p: *mut T, v: T) {
-    if !p.is_null() {
-        // SAFETY: non-null, and valid for writes by the function's contract.
-        unsafe { p.write(v) }
-    }
+    // SAFETY: NULL or valid for writes by the function's contract.
+    unsafe { caller_memory::write(p, v) }
 }
 
 /// # Safety
@@ -325,11 +298,8 @@ pub unsafe extern "C" fn OSMesaGetColorBuffer(
 /// `funcName` must be NULL or a NUL-terminated string.
 #[no_mangle]
 pub unsafe extern "C" fn OSMesaGetProcAddress(funcName: *const c_char) -> OSMESAproc {
-    if funcName.is_null() {
-        return None;
-    }
-    // SAFETY: non-null and NUL-terminated by the contract.
-    let name = unsafe { CStr::from_ptr(funcName) };
+    // SAFETY: NULL or NUL-terminated by the contract.
+    let name = unsafe { caller_memory::c_str(funcName) }?;
     guard(None, || super::procs::lookup(name.to_bytes()))
 }
 
@@ -348,11 +318,10 @@ pub extern "C" fn OSMesaColorClamp(enable: GLboolean) {
 pub unsafe extern "C" fn OSMesaPostprocess(osmesa: OSMesaContext, filter: *const c_char, enable_value: c_uint) {
     let _ = (osmesa, enable_value);
     guard((), || {
-        let name = if filter.is_null() {
-            String::from("(null)")
-        } else {
-            // SAFETY: non-null and NUL-terminated by the contract.
-            unsafe { CStr::from_ptr(filter) }.to_string_lossy().into_owned()
+        // SAFETY: NULL or NUL-terminated by the contract.
+        let name = match unsafe { caller_memory::c_str(filter) } {
+            None => String::from("(null)"),
+            Some(name) => name.to_string_lossy().into_owned(),
         };
         eprintln!("tessera: OSMesaPostprocess filter '{name}' is not supported; rendering is unchanged");
     })

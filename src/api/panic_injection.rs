@@ -45,6 +45,7 @@ mod tests {
     use crate::api::gl_vertex::*;
     use crate::api::osmesa::*;
     use crate::gl::enums::*;
+    use crate::gl::osmesa::OSMESA_RGBA;
     use crate::gl::types::OSMesaContext;
     use std::ffi::c_void;
 

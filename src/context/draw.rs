@@ -100,7 +100,10 @@ impl Context {
 
     /// Adds a pixel rectangle to the scene under the current state; `make` builds it from the
     /// varyings the draw's stages read (none when only color is needed).
-    pub(super) fn draw_pixel_rect(&mut self, make: impl FnOnce(&[Attribute]) -> crate::setup::jobs::pixels::PixelRectJob) {
+    pub(super) fn draw_pixel_rect(
+        &mut self,
+        make: impl FnOnce(&[Attribute]) -> crate::setup::jobs::pixels::PixelRectJob,
+    ) {
         let Some((width, height, color_format, depth_bits, stencil_bits)) = self.target_format() else {
             return;
         };

@@ -36,6 +36,7 @@
 //! (sample rows), and a framebuffer object of multisampled attachments is assembled into a
 //! multisampled [`Framebuffer`] ([`Framebuffer::from_sample_layers`]) without resolved
 //! layers: reading it needs a glBlitFramebuffer resolve, as the specification says.
+use super::names::{NameTable, OutOfNames};
 use super::texture::TARGETS;
 use super::Context;
 use crate::framebuffer::blit::{self, BlitAxis, ColorSource, DepthStencilSource};
@@ -49,7 +50,6 @@ use crate::gl::enums::*;
 use crate::gl::limits::MAX_DRAW_BUFFERS;
 use crate::gl::types::GLenum;
 use crate::texture::{BaseFormat, TexImage, Texels};
-use std::collections::{HashMap, HashSet};
 use std::sync::Arc;
 
 /// GL_MAX_COLOR_ATTACHMENTS.
@@ -199,13 +199,8 @@ fn renderbuffer_supported(internal_format: GLenum) -> bool {
 /// The framebuffer and renderbuffer objects of a context and their bindings.
 #[derive(Debug)]
 pub struct FramebufferObjects {
-    framebuffers: HashMap<u32, FramebufferObject>,
-    renderbuffers: HashMap<u32, Renderbuffer>,
-    /// Names handed out by glGen* and not yet bound.
-    reserved_framebuffers: HashSet<u32>,
-    reserved_renderbuffers: HashSet<u32>,
-    largest_framebuffer: u32,
-    largest_renderbuffer: u32,
+    framebuffers: NameTable<FramebufferObject>,
+    renderbuffers: NameTable<Renderbuffer>,
     /// GL_DRAW_FRAMEBUFFER_BINDING and GL_READ_FRAMEBUFFER_BINDING (0: the window's).
     pub draw: u32,
     pub read: u32,
@@ -223,12 +218,8 @@ impl FramebufferObjects {
         let mut window_draw_buffers = [GL_NONE; MAX_DRAW_BUFFERS];
         window_draw_buffers[0] = window_buffer;
         FramebufferObjects {
-            framebuffers: HashMap::new(),
-            renderbuffers: HashMap::new(),
-            reserved_framebuffers: HashSet::new(),
-            reserved_renderbuffers: HashSet::new(),
-            largest_framebuffer: 0,
-            largest_renderbuffer: 0,
+            framebuffers: NameTable::default(),
+            renderbuffers: NameTable::default(),
             draw: 0,
             read: 0,
             renderbuffer: 0,
@@ -360,33 +351,28 @@ impl Context {
             self.error(GL_INVALID_VALUE);
             return None;
         }
-        let f = &mut self.fbo;
-        let (largest, reserved) = if renderbuffers {
-            (&mut f.largest_renderbuffer, &mut f.reserved_renderbuffers)
+        let names = if renderbuffers {
+            self.fbo.renderbuffers.generate(n as usize)
         } else {
-            (&mut f.largest_framebuffer, &mut f.reserved_framebuffers)
+            self.fbo.framebuffers.generate(n as usize)
         };
-        let mut names = Vec::new();
-        if names.try_reserve_exact(n as usize).is_err() {
-            self.error(GL_OUT_OF_MEMORY);
-            return None;
+        match names {
+            Ok(names) => Some(names),
+            Err(OutOfNames) => {
+                self.error(GL_OUT_OF_MEMORY);
+                None
+            }
         }
-        for _ in 0..n {
-            *largest += 1;
-            reserved.insert(*largest);
-            names.push(*largest);
-        }
-        Some(names)
     }
 
     /// glIsFramebuffer.
     pub fn is_framebuffer(&mut self, name: u32) -> bool {
-        self.check_outside_begin_end() && name != 0 && self.fbo.framebuffers.contains_key(&name)
+        self.check_outside_begin_end() && name != 0 && self.fbo.framebuffers.is_object(name)
     }
 
     /// glIsRenderbuffer.
     pub fn is_renderbuffer(&mut self, name: u32) -> bool {
-        self.check_outside_begin_end() && name != 0 && self.fbo.renderbuffers.contains_key(&name)
+        self.check_outside_begin_end() && name != 0 && self.fbo.renderbuffers.is_object(name)
     }
 
     /// glBindFramebuffer: `target` GL_FRAMEBUFFER binds both, GL_DRAW_/READ_FRAMEBUFFER one.
@@ -401,20 +387,16 @@ impl Context {
             GL_READ_FRAMEBUFFER => (false, true),
             _ => return self.error(GL_INVALID_ENUM),
         };
-        if name != 0 && !self.fbo.framebuffers.contains_key(&name) {
-            self.fbo.reserved_framebuffers.remove(&name);
-            self.fbo.largest_framebuffer = self.fbo.largest_framebuffer.max(name);
-            self.fbo.framebuffers.insert(name, FramebufferObject::new());
-        }
+        self.fbo.framebuffers.get_or_create(name, FramebufferObject::new);
         if draw && self.fbo.draw != name {
             // What was recorded belongs to the old draw framebuffer.
             self.flush_rendering();
             let current = self.state.color.draw_buffers;
-            match self.fbo.framebuffers.get_mut(&self.fbo.draw) {
+            match self.fbo.framebuffers.get_mut(self.fbo.draw) {
                 Some(old) => old.draw_buffers = current,
                 None => self.fbo.window_draw_buffers = current,
             }
-            self.state.color.draw_buffers = match self.fbo.framebuffers.get(&name) {
+            self.state.color.draw_buffers = match self.fbo.framebuffers.get(name) {
                 Some(new) => new.draw_buffers,
                 None => self.fbo.window_draw_buffers,
             };
@@ -422,11 +404,11 @@ impl Context {
         }
         if read && self.fbo.read != name {
             let current = self.state.pixel_mode.read_buffer;
-            match self.fbo.framebuffers.get_mut(&self.fbo.read) {
+            match self.fbo.framebuffers.get_mut(self.fbo.read) {
                 Some(old) => old.read_buffer = current,
                 None => self.fbo.window_read_buffer = current,
             }
-            self.state.pixel_mode.read_buffer = match self.fbo.framebuffers.get(&name) {
+            self.state.pixel_mode.read_buffer = match self.fbo.framebuffers.get(name) {
                 Some(new) => new.read_buffer,
                 None => self.fbo.window_read_buffer,
             };
@@ -453,8 +435,7 @@ impl Context {
             if self.fbo.read == name {
                 self.bind_framebuffer(GL_READ_FRAMEBUFFER, 0);
             }
-            self.fbo.framebuffers.remove(&name);
-            self.fbo.reserved_framebuffers.remove(&name);
+            self.fbo.framebuffers.delete(name);
         }
     }
 
@@ -466,20 +447,15 @@ impl Context {
         if target != GL_RENDERBUFFER {
             return self.error(GL_INVALID_ENUM);
         }
-        if name != 0 && !self.fbo.renderbuffers.contains_key(&name) {
-            self.fbo.reserved_renderbuffers.remove(&name);
-            self.fbo.largest_renderbuffer = self.fbo.largest_renderbuffer.max(name);
-            let rb = Renderbuffer {
-                internal_format: GL_RGBA,
-                width: 0,
-                height: 0,
-                requested_samples: 0,
-                samples: 1,
-                format: None,
-                storage: RenderbufferStorage::None,
-            };
-            self.fbo.renderbuffers.insert(name, rb);
-        }
+        self.fbo.renderbuffers.get_or_create(name, || Renderbuffer {
+            internal_format: GL_RGBA,
+            width: 0,
+            height: 0,
+            requested_samples: 0,
+            samples: 1,
+            format: None,
+            storage: RenderbufferStorage::None,
+        });
         self.fbo.renderbuffer = name;
     }
 
@@ -496,10 +472,12 @@ impl Context {
             if name == 0 {
                 continue;
             }
-            self.fbo.reserved_renderbuffers.remove(&name);
-            if self.fbo.renderbuffers.contains_key(&name) {
+            if !self.fbo.renderbuffers.is_object(name) {
+                // A reserved name is only freed.
+                self.fbo.renderbuffers.delete(name);
+            } else {
                 self.detach_everywhere(Attachment::Renderbuffer(name));
-                self.fbo.renderbuffers.remove(&name);
+                self.fbo.renderbuffers.delete(name);
                 if self.fbo.renderbuffer == name {
                     self.fbo.renderbuffer = 0;
                 }
@@ -578,7 +556,7 @@ impl Context {
         let Ok(storage) = storage else {
             return self.error(GL_OUT_OF_MEMORY);
         };
-        if let Some(rb) = self.fbo.renderbuffers.get_mut(&name) {
+        if let Some(rb) = self.fbo.renderbuffers.get_mut(name) {
             *rb = Renderbuffer {
                 internal_format,
                 width: w,
@@ -600,7 +578,7 @@ impl Context {
             self.error(GL_INVALID_ENUM);
             return None;
         }
-        let Some(rb) = self.fbo.renderbuffers.get(&self.fbo.renderbuffer) else {
+        let Some(rb) = self.fbo.renderbuffers.get(self.fbo.renderbuffer) else {
             self.error(GL_INVALID_OPERATION);
             return None;
         };
@@ -645,7 +623,7 @@ impl Context {
         if fbo == self.fbo.draw {
             self.flush_rendering();
         }
-        let Some(object) = self.fbo.framebuffers.get_mut(&fbo) else { return };
+        let Some(object) = self.fbo.framebuffers.get_mut(fbo) else { return };
         if attachment == GL_DEPTH_STENCIL_ATTACHMENT {
             object.attachments[DEPTH] = value;
             object.attachments[STENCIL] = value;
@@ -692,7 +670,7 @@ impl Context {
         if rb_target != GL_RENDERBUFFER {
             return self.error(GL_INVALID_ENUM);
         }
-        if rb != 0 && !self.fbo.renderbuffers.contains_key(&rb) {
+        if rb != 0 && !self.fbo.renderbuffers.is_object(rb) {
             return self.error(GL_INVALID_OPERATION);
         }
         self.set_attachment(fbo, attachment, (rb != 0).then_some(Attachment::Renderbuffer(rb)));
@@ -893,7 +871,7 @@ impl Context {
     /// when the image does not exist.
     fn image_info(&self, attachment: Option<Attachment>) -> Option<Option<ImageInfo>> {
         Some(match attachment? {
-            Attachment::Renderbuffer(name) => self.fbo.renderbuffers.get(&name).and_then(|rb| {
+            Attachment::Renderbuffer(name) => self.fbo.renderbuffers.get(name).and_then(|rb| {
                 let samples = reported_samples(rb.samples);
                 Some(ImageInfo {
                     width: rb.width,
@@ -931,7 +909,7 @@ impl Context {
 
     /// The completeness status of framebuffer object `name` (0: the window's, complete).
     fn framebuffer_status(&self, name: u32) -> GLenum {
-        let Some(object) = self.fbo.framebuffers.get(&name) else {
+        let Some(object) = self.fbo.framebuffers.get(name) else {
             return GL_FRAMEBUFFER_COMPLETE;
         };
         let images: [Option<Option<ImageInfo>>; POINTS] =
@@ -985,7 +963,7 @@ impl Context {
     /// The configuration of object `name`: its depth/stencil layers and as color format
     /// the format of the first attached image among `buffers`, else of any color image.
     fn object_config(&self, name: u32, buffers: &[GLenum]) -> FramebufferConfig {
-        let Some(object) = self.fbo.framebuffers.get(&name) else {
+        let Some(object) = self.fbo.framebuffers.get(name) else {
             return self.config.visual;
         };
         let color_of = |point: usize| match self.image_info(object.attachments[point]) {
@@ -1031,7 +1009,7 @@ impl Context {
     /// blending then reads as destination alpha).
     pub fn write_mask(&self, slot: ColorSlot, index: usize) -> [bool; 4] {
         let mut mask = self.state.color.color_mask[index];
-        if let (ColorSlot::Attachment(i), Some(object)) = (slot, self.fbo.framebuffers.get(&self.fbo.draw)) {
+        if let (ColorSlot::Attachment(i), Some(object)) = (slot, self.fbo.framebuffers.get(self.fbo.draw)) {
             if let Some(Some(ImageInfo { format: Renderable::Color(f), .. })) =
                 self.image_info(object.attachments[i as usize])
             {
@@ -1081,7 +1059,7 @@ impl Context {
         if self.framebuffer_status(name) != GL_FRAMEBUFFER_COMPLETE {
             return None;
         }
-        let object = self.fbo.framebuffers.get(&name)?;
+        let object = self.fbo.framebuffers.get(name)?;
         let first = object.attachments.iter().flatten().next().copied();
         let info = self.image_info(first).flatten()?;
         let config = if draw { self.draw_config() } else { self.read_config() };
@@ -1099,7 +1077,7 @@ impl Context {
             let window = self.drawable().map(|d| d.lock().unwrap_or_else(|p| p.into_inner()).framebuffer.samples());
             return window.unwrap_or(1);
         }
-        let Some(object) = self.fbo.framebuffers.get(&name) else { return 1 };
+        let Some(object) = self.fbo.framebuffers.get(name) else { return 1 };
         let first = object.attachments.iter().flatten().next().copied();
         match self.image_info(first) {
             Some(Some(info)) => (info.samples as usize).max(1),
@@ -1135,7 +1113,7 @@ impl Context {
         if self.framebuffer_status(name) != GL_FRAMEBUFFER_COMPLETE {
             return None;
         }
-        let object = self.fbo.framebuffers.get(&name)?.clone();
+        let object = self.fbo.framebuffers.get(name)?.clone();
         // The color format draws compile for: that of the draw buffers (or the read buffer).
         let config = if name == self.fbo.draw { self.draw_config() } else { self.read_config() };
         let first = object.attachments.iter().flatten().next().copied();
@@ -1187,7 +1165,7 @@ impl Context {
     }
 
     fn take_storage(&mut self, rb: u32) -> RenderbufferStorage {
-        self.fbo.renderbuffers.get_mut(&rb).map(|r| std::mem::take(&mut r.storage)).unwrap_or_default()
+        self.fbo.renderbuffers.get_mut(rb).map(|r| std::mem::take(&mut r.storage)).unwrap_or_default()
     }
 
     /// Puts the layers of an assembled framebuffer back where they came from.
@@ -1202,7 +1180,7 @@ impl Context {
             let ColorSlot::Attachment(i) = slot else { continue };
             match object.attachments[i as usize] {
                 Some(Attachment::Renderbuffer(rb)) => {
-                    if let Some(r) = self.fbo.renderbuffers.get_mut(&rb) {
+                    if let Some(r) = self.fbo.renderbuffers.get_mut(rb) {
                         r.storage = RenderbufferStorage::Color(buffer);
                     }
                 }
@@ -1213,7 +1191,7 @@ impl Context {
         let Some(depth_stencil) = depth_stencil else { return };
         match object.attachments[DEPTH].or(object.attachments[STENCIL]) {
             Some(Attachment::Renderbuffer(rb)) => {
-                if let Some(r) = self.fbo.renderbuffers.get_mut(&rb) {
+                if let Some(r) = self.fbo.renderbuffers.get_mut(rb) {
                     r.storage = RenderbufferStorage::DepthStencil(depth_stencil);
                 }
             }

@@ -21,10 +21,10 @@
 //! runs; beyond [`MAX_LIST_NESTING`] levels further calls are ignored, as the specification
 //! says.
 use super::get::Value;
+use super::names::{NameTable, OutOfNames};
 use super::Context;
 use crate::gl::enums::*;
 use crate::gl::types::GLenum;
-use std::collections::BTreeMap;
 use std::sync::{Arc, Mutex, MutexGuard};
 
 /// GL_MAX_LIST_NESTING (the specification's minimum, and Mesa's value).
@@ -45,7 +45,7 @@ pub const MAX_RESERVED_BLOCK: u32 = 1 << 22;
 
 /// The display list names of a share group: a name maps to its list (an empty list for names
 /// reserved by glGenLists).
-pub type ListNames = Arc<Mutex<BTreeMap<u32, Arc<DisplayList>>>>;
+pub type ListNames = Arc<Mutex<NameTable<Arc<DisplayList>>>>;
 
 /// The list under construction between glNewList and glEndList.
 struct Compiling {
@@ -64,7 +64,7 @@ pub struct ListState {
 
 impl Default for ListState {
     fn default() -> Self {
-        ListState { names: Arc::new(Mutex::new(BTreeMap::new())), compiling: None, depth: 0 }
+        ListState { names: Arc::new(Mutex::new(NameTable::default())), compiling: None, depth: 0 }
     }
 }
 
@@ -85,32 +85,9 @@ impl ListState {
         self.compiling.is_some()
     }
 
-    fn table(&self) -> MutexGuard<'_, BTreeMap<u32, Arc<DisplayList>>> {
+    fn table(&self) -> MutexGuard<'_, NameTable<Arc<DisplayList>>> {
         self.names.lock().unwrap_or_else(|p| p.into_inner())
     }
-}
-
-/// The first of `range` consecutive names not in `table`: after the largest name in use when
-/// there is room (as Mesa), else the first gap large enough (names start at 1); `None` if the
-/// name space has no such gap.
-fn free_block(table: &BTreeMap<u32, Arc<DisplayList>>, range: u32) -> Option<u32> {
-    let after_last = match table.keys().next_back() {
-        None => Some(1),
-        Some(&last) => last.checked_add(1),
-    };
-    if let Some(after_last) = after_last.filter(|&first| u32::MAX - first >= range - 1) {
-        return Some(after_last);
-    }
-    let mut candidate: u32 = 1;
-    for &used in table.keys() {
-        if used >= candidate {
-            if used - candidate >= range {
-                return Some(candidate);
-            }
-            candidate = used.checked_add(1)?;
-        }
-    }
-    (u32::MAX - candidate >= range - 1).then_some(candidate)
 }
 
 /// Decodes glCallLists' `lists` array of `n` names of `type_` (the caller passes exactly the
@@ -210,7 +187,7 @@ impl Context {
         if self.lists.depth >= MAX_LIST_NESTING {
             return;
         }
-        let Some(list) = self.lists.table().get(&name).cloned() else {
+        let Some(list) = self.lists.table().get(name).cloned() else {
             return;
         };
         self.lists.depth += 1;
@@ -259,17 +236,15 @@ impl Context {
             self.error(GL_OUT_OF_MEMORY);
             return 0;
         }
-        let mut table = self.lists.table();
-        let Some(first) = free_block(&table, range as u32) else {
-            drop(table);
-            self.error(GL_OUT_OF_MEMORY);
-            return 0;
-        };
         let empty = Arc::new(DisplayList::default());
-        for name in first..=first + (range as u32 - 1) {
-            table.insert(name, empty.clone());
+        let names = self.lists.table().generate_objects(range as usize, || empty.clone());
+        match names {
+            Ok(names) => names[0],
+            Err(OutOfNames) => {
+                self.error(GL_OUT_OF_MEMORY);
+                0
+            }
         }
-        first
     }
 
     /// glDeleteLists.
@@ -284,11 +259,7 @@ impl Context {
             return;
         }
         let last = first.saturating_add(range as u32 - 1);
-        let mut table = self.lists.table();
-        let doomed: Vec<u32> = table.range(first..=last).map(|(&name, _)| name).collect();
-        for name in doomed {
-            table.remove(&name);
-        }
+        self.lists.table().delete_range(first..=last);
     }
 
     /// glIsList.
@@ -296,7 +267,7 @@ impl Context {
         if !self.check_outside_begin_end() {
             return false;
         }
-        self.lists.table().contains_key(&name)
+        self.lists.table().is_object(name)
     }
 
     /// The glGet values of the display list state; `None` for other pnames.
@@ -352,16 +323,12 @@ mod tests {
         assert_eq!(ctx.take_error(), GL_NO_ERROR);
         assert_eq!(ctx.gen_lists(-1), 0);
         assert_eq!(ctx.take_error(), GL_INVALID_VALUE);
-        // Near the end of the name space, the first gap large enough.
-        let mut table = BTreeMap::new();
-        table.insert(u32::MAX - 1, Arc::new(DisplayList::default()));
-        assert_eq!(free_block(&table, 1), Some(u32::MAX));
-        assert_eq!(free_block(&table, 5), Some(1));
-        table.insert(3, Arc::new(DisplayList::default()));
-        assert_eq!(free_block(&table, 2), Some(1));
-        assert_eq!(free_block(&table, 3), Some(4));
-        table.insert(u32::MAX, Arc::new(DisplayList::default()));
-        assert_eq!(free_block(&table, 1), Some(1));
+        // Near the end of the name space, the first gap large enough (context::names).
+        ctx.new_list(u32::MAX - 1, GL_COMPILE);
+        ctx.end_list();
+        assert_eq!(ctx.gen_lists(5), 7, "5 names do not fit after u32::MAX - 1: the first gap");
+        assert_eq!(ctx.gen_lists(1), u32::MAX, "one does");
+        assert_eq!(ctx.gen_lists(1), 2, "then the first gap from 1");
     }
 
     #[test]

@@ -11,6 +11,8 @@
 //! `crate::vertex`, which owns transformation, lighting, clipping, primitive setup and the
 //! viewport transform; this module keeps the pending scene and renders it at flush points.
 
+#![deny(unsafe_code)]
+
 pub mod accum;
 pub mod attrib;
 pub mod buffers;
@@ -29,6 +31,7 @@ pub mod lighting;
 pub mod lists;
 pub mod matrix;
 pub mod multisample;
+pub mod names;
 pub mod pixel_rect;
 pub mod queries;
 pub mod raster_pos;

@@ -32,6 +32,7 @@ use super::Context;
 use crate::gl::enums::*;
 use crate::gl::types::GLenum;
 use crate::pixel::layout::ImageLayout;
+use crate::pixel::unpack::{bitmap_bit, index_value};
 use crate::pixel::unpack_rect::{unpack_components, unpack_rgba};
 use crate::pixel::{ClientFormat, ClientType, PackModes};
 use crate::setup::jobs::pixels::{PixelRectJob, PixelSource};
@@ -76,26 +77,6 @@ fn stencil_index(bytes: &[u8], ty: ClientType, swap: bool) -> u8 {
     index_value(bytes, ty, swap) as i64 as u8
 }
 
-/// A color or stencil index of an integer or float type.
-fn index_value(bytes: &[u8], ty: ClientType, swap: bool) -> f64 {
-    let size = ty.element_bytes();
-    let mut raw = [0u8; 4];
-    raw[..size].copy_from_slice(&bytes[..size]);
-    if swap {
-        raw[..size].reverse();
-    }
-    match ty {
-        ClientType::UnsignedByte => raw[0] as f64,
-        ClientType::Byte => raw[0] as i8 as f64,
-        ClientType::UnsignedShort => u16::from_ne_bytes([raw[0], raw[1]]) as f64,
-        ClientType::Short => i16::from_ne_bytes([raw[0], raw[1]]) as f64,
-        ClientType::UnsignedInt => u32::from_ne_bytes(raw) as f64,
-        ClientType::Int => i32::from_ne_bytes(raw) as f64,
-        ClientType::Float => f32::from_ne_bytes(raw) as f64,
-        _ => 0.0,
-    }
-}
-
 impl Context {
     /// The bits of a `width` × `height` bitmap under the unpack modes (`Ok(None)`: NULL or
     /// an empty bitmap); `source` maps the byte span the bitmap occupies to the caller's bytes.
@@ -127,8 +108,7 @@ impl Context {
             for col in 0..w {
                 let bit = layout.bit_index(col);
                 let byte = client.get(row_offset + bit / 8 - start).copied().unwrap_or(0);
-                let mask = if modes.lsb_first { 1 << (bit % 8) } else { 0x80 >> (bit % 8) };
-                bits.push(byte & mask != 0);
+                bits.push(bitmap_bit(byte, bit, modes.lsb_first));
             }
         }
         Ok(Some(Arc::new(bits)))
@@ -243,8 +223,7 @@ impl Context {
                         let at = layout.pixel_offset(col, row).map(|o| o - start);
                         let byte = at.and_then(|o| client.get(o)).copied().unwrap_or(0);
                         let bit = layout.bit_index(col);
-                        let mask = if modes.lsb_first { 1 << (bit % 8) } else { 0x80 >> (bit % 8) };
-                        (byte & mask != 0) as u8 as f64
+                        bitmap_bit(byte, bit, modes.lsb_first) as u8 as f64
                     } else {
                         pixel(col, row).map_or(0.0, |bytes| index_value(bytes, client_type, modes.swap_bytes))
                     };
@@ -285,8 +264,7 @@ impl Context {
                         let at = layout.pixel_offset(col, row).map(|o| o - start);
                         let byte = at.and_then(|o| client.get(o)).copied().unwrap_or(0);
                         let bit = layout.bit_index(col);
-                        let mask = if modes.lsb_first { 1 << (bit % 8) } else { 0x80 >> (bit % 8) };
-                        (byte & mask != 0) as u8
+                        bitmap_bit(byte, bit, modes.lsb_first) as u8
                     } else {
                         pixel(col, row).map_or(0, |bytes| stencil_index(bytes, client_type, modes.swap_bytes))
                     };

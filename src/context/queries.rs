@@ -5,10 +5,10 @@
 //! rasterizer adds the fragments of each span that pass the depth and stencil tests (a sum,
 //! so the count is exact and the same for any number of threads). Asking for the result
 //! runs the pending scene first, so a result is always available when asked for.
+use super::names::{NameTable, OutOfNames};
 use super::Context;
 use crate::gl::enums::*;
 use crate::gl::types::GLenum;
-use std::collections::HashMap;
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::Arc;
 
@@ -22,10 +22,8 @@ struct QueryObject {
 /// The query objects of a context and the active occlusion query.
 #[derive(Debug, Default)]
 pub struct QueryState {
-    objects: HashMap<u32, QueryObject>,
+    objects: NameTable<QueryObject>,
     active: Option<(u32, Arc<AtomicU64>)>,
-    /// The largest name handed out by glGenQueries (names are never reused before wrapping).
-    last_name: u32,
 }
 
 impl QueryState {
@@ -45,16 +43,13 @@ impl Context {
             self.error(GL_INVALID_VALUE);
             return None;
         }
-        let queries = &mut self.queries;
-        let mut names = Vec::with_capacity(n as usize);
-        while names.len() < n as usize {
-            queries.last_name = queries.last_name.wrapping_add(1).max(1);
-            if !queries.objects.contains_key(&queries.last_name) {
-                names.push(queries.last_name);
-                queries.objects.insert(queries.last_name, QueryObject::default());
+        match self.queries.objects.generate_objects(n as usize, QueryObject::default) {
+            Ok(names) => Some(names),
+            Err(OutOfNames) => {
+                self.error(GL_OUT_OF_MEMORY);
+                None
             }
         }
-        Some(names)
     }
 
     /// glDeleteQueries: deleting the active query ends it.
@@ -69,7 +64,7 @@ impl Context {
             if self.queries.active.as_ref().is_some_and(|(active, _)| active == name) {
                 self.queries.active = None;
             }
-            self.queries.objects.remove(name);
+            self.queries.objects.delete(*name);
         }
     }
 
@@ -78,7 +73,7 @@ impl Context {
         if !self.check_outside_begin_end() {
             return false;
         }
-        name != 0 && self.queries.objects.contains_key(&name)
+        name != 0 && self.queries.objects.is_object(name)
     }
 
     /// glBeginQuery.
@@ -93,7 +88,9 @@ impl Context {
             return self.error(GL_INVALID_OPERATION);
         }
         let counter = Arc::new(AtomicU64::new(0));
-        self.queries.objects.entry(name).or_default().counter = Some(counter.clone());
+        if let Some(object) = self.queries.objects.get_or_create(name, QueryObject::default) {
+            object.counter = Some(counter.clone());
+        }
         self.queries.active = Some((name, counter));
     }
 
@@ -136,7 +133,7 @@ impl Context {
             return None;
         }
         let active = self.queries.active.as_ref().is_some_and(|(a, _)| *a == name);
-        let Some(object) = self.queries.objects.get(&name).filter(|_| name != 0 && !active) else {
+        let Some(object) = self.queries.objects.get(name).filter(|_| name != 0 && !active) else {
             self.error(GL_INVALID_OPERATION);
             return None;
         };

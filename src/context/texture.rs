@@ -16,14 +16,14 @@
 //! (glCompressedTexImage* is GL_INVALID_ENUM). GL_COLOR_INDEX image data (every index type,
 //! GL_BITMAP included) becomes RGBA through GL_INDEX_SHIFT/OFFSET and the GL_PIXEL_MAP_I_TO_*
 //! tables (GL 2.1 §3.6.5, "Color Index Lookup"); glGetTexImage cannot return indices.
+use super::names::{NameTable, OutOfNames};
 use super::Context;
 use crate::gl::enums::*;
 use crate::gl::types::GLenum;
-use crate::pixel::layout::ImageLayout;
-use crate::pixel::unpack::{unpack_color_row, unpack_depth_row};
+use crate::pixel::layout::VolumeLayout;
+use crate::pixel::unpack::{bitmap_bit, index_value, unpack_color_row, unpack_depth_row, unpack_depth_stencil_row};
 use crate::pixel::{ClientFormat, ClientType, PackModes};
 use crate::texture::{quantize_depth, quantize_to_u8, BaseFormat, TexImage, Texels};
-use std::collections::HashMap;
 use std::ops::Range;
 use std::sync::Arc;
 
@@ -187,10 +187,8 @@ impl TextureObject {
 /// Every texture object of a context, the default objects (name 0) and the proxies.
 #[derive(Clone, Debug, Default)]
 pub struct TextureTable {
-    objects: HashMap<u32, TextureObject>,
-    /// Names handed out by glGenTextures and not yet bound.
-    reserved: std::collections::HashSet<u32>,
-    largest: u32,
+    /// The named objects (name 0 is the default object of each target, below).
+    names: NameTable<TextureObject>,
     defaults: [TextureObject; 4],
     proxies: [TextureObject; 4],
 }
@@ -209,7 +207,7 @@ impl TextureTable {
         if name == 0 {
             Some(&self.defaults[target_idx])
         } else {
-            self.objects.get(&name)
+            self.names.get(name)
         }
     }
 
@@ -217,17 +215,17 @@ impl TextureTable {
         if name == 0 {
             Some(&mut self.defaults[target_idx])
         } else {
-            self.objects.get_mut(&name)
+            self.names.get_mut(name)
         }
     }
 
     /// The object named `name` (not 0) once it has been bound (framebuffer attachments).
     pub fn object(&self, name: u32) -> Option<&TextureObject> {
-        self.objects.get(&name)
+        self.names.get(name)
     }
 
     pub fn object_mut(&mut self, name: u32) -> Option<&mut TextureObject> {
-        self.objects.get_mut(&name)
+        self.names.get_mut(name)
     }
 }
 
@@ -351,28 +349,10 @@ impl IndexToRgba {
             let value = if ty == ClientType::Bitmap {
                 let bit = first_bit % 8 + i;
                 let byte = row.get(bit / 8).copied().unwrap_or(0);
-                let mask = if lsb_first { 1 << (bit % 8) } else { 0x80 >> (bit % 8) };
-                f64::from(u8::from(byte & mask != 0))
+                f64::from(u8::from(bitmap_bit(byte, bit, lsb_first)))
             } else {
                 let Some(bytes) = row.get(i * size..(i + 1) * size) else { break };
-                let mut raw = [0u8; 4];
-                raw[..size].copy_from_slice(bytes);
-                if swap {
-                    raw[..size].reverse();
-                }
-                match ty {
-                    ClientType::UnsignedByte => f64::from(raw[0]),
-                    ClientType::Byte => f64::from(raw[0] as i8),
-                    ClientType::UnsignedShort => f64::from(u16::from_ne_bytes([raw[0], raw[1]])),
-                    ClientType::Short => f64::from(i16::from_ne_bytes([raw[0], raw[1]])),
-                    ClientType::UnsignedInt => f64::from(u32::from_ne_bytes(raw)),
-                    ClientType::Int => f64::from(i32::from_ne_bytes(raw)),
-                    ClientType::Float => f64::from(f32::from_ne_bytes(raw)),
-                    ClientType::HalfFloat => {
-                        f64::from(crate::pixel::unpack::half_to_float(u16::from_ne_bytes([raw[0], raw[1]])))
-                    }
-                    _ => 0.0,
-                }
+                index_value(bytes, ty, swap)
             };
             *px = self.color(value);
         }
@@ -415,57 +395,19 @@ pub(super) fn check_texture_format_type(format: GLenum, ty: GLenum) -> Result<(C
     }
 }
 
-/// The client layout of a 1D/2D/3D image transfer: byte offset of each row.
-pub(super) struct ClientImage {
-    layout: ImageLayout,
-    image_stride: usize,
-    skip_images: usize,
-    pub pixel_bytes: usize,
-}
-
-impl ClientImage {
-    pub(super) fn new(
-        format: ClientFormat,
-        ty: ClientType,
-        modes: &super::state::PixelStoreModes,
-        width: usize,
-        height: usize,
-        dims: usize,
-    ) -> Option<ClientImage> {
-        let pack = PackModes::from(modes);
-        let layout = ImageLayout::new(format, ty, &pack, width)?;
-        let rows = if dims == 3 && modes.image_height > 0 { modes.image_height as usize } else { height };
-        let image_stride = rows.checked_mul(layout.row_stride())?;
-        let skip_images = if dims == 3 { modes.skip_images.max(0) as usize } else { 0 };
-        Some(ClientImage { layout, image_stride, skip_images, pixel_bytes: layout.pixel_bytes() })
-    }
-
-    /// Byte offset of the first pixel of row `y` of image `z`.
-    pub(super) fn row_offset(&self, y: usize, z: usize) -> Option<usize> {
-        let image = self.skip_images.checked_add(z)?.checked_mul(self.image_stride)?;
-        image.checked_add(self.layout.pixel_offset(0, y)?)
-    }
-
-    /// The bit of the first pixel of a row within the row's first byte (bitmaps).
-    fn first_bit(&self) -> usize {
-        self.layout.bit_index(0) % 8
-    }
-
-    /// The bytes a `width` × `height` × `depth` transfer touches.
-    pub(super) fn span(&self, width: usize, height: usize, depth: usize) -> Option<Range<usize>> {
-        if width == 0 || height == 0 || depth == 0 {
-            return Some(0..0);
-        }
-        let start = self.row_offset(0, 0)?;
-        let last_row_bytes = if self.pixel_bytes == 0 {
-            // A bitmap row: the bytes from the one holding its first bit to its last bit's.
-            self.layout.bit_index(width - 1) / 8 - self.layout.bit_index(0) / 8 + 1
-        } else {
-            width.checked_mul(self.pixel_bytes)?
-        };
-        let end = self.row_offset(height - 1, depth - 1)?.checked_add(last_row_bytes)?;
-        (end <= isize::MAX as usize).then_some(start..end)
-    }
+/// The client layout of a 1D/2D/3D image transfer of `width` × `height` pixels under the
+/// pixel store `modes` (the image height and skipped images count for volumes only).
+pub(super) fn client_image(
+    format: ClientFormat,
+    ty: ClientType,
+    modes: &super::state::PixelStoreModes,
+    width: usize,
+    height: usize,
+    dims: usize,
+) -> Option<VolumeLayout> {
+    let (image_height, skip_images) =
+        if dims == 3 { (modes.image_height.max(0) as usize, modes.skip_images.max(0) as usize) } else { (0, 0) };
+    VolumeLayout::new(format, ty, &PackModes::from(modes), [width, height], image_height, skip_images)
 }
 
 /// The sizes and placement of an image command, already converted from GL integers.
@@ -506,27 +448,14 @@ impl Context {
             self.error(GL_INVALID_VALUE);
             return None;
         }
-        let mut names = Vec::new();
-        if names.try_reserve_exact(n as usize).is_err() {
-            self.error(GL_OUT_OF_MEMORY);
-            return None;
-        }
-        let mut t = self.textures.lock();
-        let mut candidate = t.largest;
-        while names.len() < n as usize {
-            candidate = candidate.wrapping_add(1);
-            if candidate == 0 {
-                continue;
-            }
-            if !t.objects.contains_key(&candidate) && !t.reserved.contains(&candidate) {
-                names.push(candidate);
+        let names = self.textures.lock().names.generate(n as usize);
+        match names {
+            Ok(names) => Some(names),
+            Err(OutOfNames) => {
+                self.error(GL_OUT_OF_MEMORY);
+                None
             }
         }
-        for &name in &names {
-            t.reserved.insert(name);
-            t.largest = t.largest.max(name);
-        }
-        Some(names)
     }
 
     /// glDeleteTextures: bindings of deleted objects revert to the default objects.
@@ -541,11 +470,7 @@ impl Context {
             if name == 0 {
                 continue;
             }
-            let removed = {
-                let mut t = self.textures.lock();
-                t.reserved.remove(&name);
-                t.objects.remove(&name).is_some()
-            };
+            let removed = self.textures.lock().names.delete(name).is_some();
             if removed {
                 self.detach_texture(name);
                 for unit in &mut self.state.texture.unit_state {
@@ -561,7 +486,7 @@ impl Context {
 
     /// glIsTexture: true for names of objects that have been bound.
     pub fn is_texture(&mut self, name: u32) -> bool {
-        self.check_outside_begin_end() && name != 0 && self.textures.lock().objects.contains_key(&name)
+        self.check_outside_begin_end() && name != 0 && self.textures.lock().names.is_object(name)
     }
 
     /// glBindTexture.
@@ -575,15 +500,9 @@ impl Context {
         if name != 0 {
             let other_target = {
                 let mut t = self.textures.lock();
-                match t.objects.get(&name) {
-                    Some(obj) => obj.target != target,
-                    None => {
-                        t.reserved.remove(&name);
-                        t.largest = t.largest.max(name);
-                        t.objects.insert(name, TextureObject::with_target(target));
-                        false
-                    }
-                }
+                t.names
+                    .get_or_create(name, || TextureObject::with_target(target))
+                    .is_some_and(|obj| obj.target != target)
             };
             if other_target {
                 return self.error(GL_INVALID_OPERATION);
@@ -606,7 +525,7 @@ impl Context {
             if name == 0 {
                 continue;
             }
-            if let Some(obj) = self.textures.lock().objects.get_mut(&name) {
+            if let Some(obj) = self.textures.lock().names.get_mut(name) {
                 obj.params.priority = p.clamp(0.0, 1.0);
             }
         }
@@ -624,7 +543,7 @@ impl Context {
         }
         let unknown = {
             let t = self.textures.lock();
-            names.iter().any(|&name| name == 0 || !t.objects.contains_key(&name))
+            names.iter().any(|&name| name == 0 || !t.names.is_object(name))
         };
         if unknown {
             self.error(GL_INVALID_VALUE);
@@ -637,13 +556,19 @@ impl Context {
     /// locked meanwhile: `f` must not lock it again).
     fn with_image_object<R>(&self, it: ImageTarget, f: impl FnOnce(&mut TextureObject) -> R) -> R {
         let name = self.bound_texture(it.target);
-        let mut t = self.textures.lock();
+        let mut guard = self.textures.lock();
+        let t = &mut *guard;
         let obj = if it.proxy {
             &mut t.proxies[it.target]
         } else if name == 0 {
             &mut t.defaults[it.target]
         } else {
-            t.objects.entry(name).or_insert_with(|| TextureObject::with_target(TARGETS[it.target]))
+            let target = TARGETS[it.target];
+            // A name is bound only once it is an object, so this creates nothing in practice.
+            match t.names.get_or_create(name, || TextureObject::with_target(target)) {
+                Some(obj) => obj,
+                None => &mut t.defaults[it.target],
+            }
         };
         f(obj)
     }
@@ -769,7 +694,7 @@ impl Context {
             return None;
         }
         let [w, h, d] = size.map(|s| s.max(1) as usize);
-        let client = ClientImage::new(cf, ct, &self.pixel_store.unpack, size[0] as usize, h, dims)?;
+        let client = client_image(cf, ct, &self.pixel_store.unpack, size[0] as usize, h, dims)?;
         client.span(w.min(size[0] as usize), h, d)
     }
 
@@ -808,7 +733,7 @@ impl Context {
         let Ok(mut image) = new_image(iw, ih, id, b, &info) else {
             return self.error(GL_OUT_OF_MEMORY);
         };
-        let Some(client) = ClientImage::new(cf, ct, &self.pixel_store.unpack, iw, ih, dims) else {
+        let Some(client) = client_image(cf, ct, &self.pixel_store.unpack, iw, ih, dims) else {
             return self.error(GL_INVALID_VALUE);
         };
         let Some(span) = client.span(iw, ih, id) else {
@@ -914,7 +839,7 @@ impl Context {
         let r =
             Region { height: if dims >= 2 { r.height } else { 1 }, depth: if dims >= 3 { r.depth } else { 1 }, ..r };
         let (w, h, d) = (r.width as usize, r.height as usize, r.depth as usize);
-        let Some(client) = ClientImage::new(cf, ct, &self.pixel_store.unpack, w, h, dims) else {
+        let Some(client) = client_image(cf, ct, &self.pixel_store.unpack, w, h, dims) else {
             return self.error(GL_INVALID_VALUE);
         };
         let Some(span) = client.span(w, h, d) else {
@@ -1372,7 +1297,7 @@ impl Context {
         let Some(image) = lv.image else { return };
         self.flush_rendering();
         let (w, h, d) = (image.width, image.height, image.depth);
-        let Some(client) = ClientImage::new(cf, ct, &self.pixel_store.pack, w, h, dims) else {
+        let Some(client) = client_image(cf, ct, &self.pixel_store.pack, w, h, dims) else {
             return self.error(GL_INVALID_VALUE);
         };
         let Some(span) = client.span(w, h, d) else {
@@ -1386,7 +1311,7 @@ impl Context {
         for z in 0..d {
             for y in 0..h {
                 let Some(offset) = client.row_offset(y, z) else { continue };
-                let row = &mut out[offset - span.start..offset - span.start + w * client.pixel_bytes];
+                let row = &mut out[offset - span.start..offset - span.start + w * client.pixel_bytes()];
                 let start = image.index(0, y, z);
                 if cf == ClientFormat::DepthStencil {
                     let Texels::Depth(t) = &image.texels else { continue };
@@ -1447,7 +1372,7 @@ struct Unpack {
 fn store_client(
     image: &mut TexImage,
     info: &FormatInfo,
-    client: &ClientImage,
+    client: &VolumeLayout,
     span_start: usize,
     bytes: &[u8],
     cf: ClientFormat,
@@ -1477,18 +1402,9 @@ fn store_client(
                     }
                 }
                 Texels::Depth(t) if cf == ClientFormat::DepthStencil => {
-                    // GL_UNSIGNED_INT_24_8: depth in the high 24 bits, stencil in the low 8.
-                    for (k, word) in row.chunks_exact(4).take(w).enumerate() {
-                        let mut bytes = [word[0], word[1], word[2], word[3]];
-                        if swap {
-                            bytes.reverse();
-                        }
-                        let word = u32::from_ne_bytes(bytes);
-                        t[start + k] = crate::pixel::convert::depth_to_float(word >> 8, 24);
-                        if let Some(s) = image.stencil.get_mut(start + k) {
-                            *s = word as u8;
-                        }
-                    }
+                    let stencils = image.stencil.get_mut(start..).unwrap_or_default();
+                    let n = unpack_depth_stencil_row(swap, row, &mut depths, stencils);
+                    t[start..start + n].copy_from_slice(&depths[..n]);
                 }
                 Texels::Depth(t) => {
                     unpack_depth_row(ct, swap, row, &mut depths);

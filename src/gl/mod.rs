@@ -1,12 +1,16 @@
-//! The GL vocabulary: enum values, C types, implementation limits and the small value types
-//! every room shares (the comparison function).
+//! The GL vocabulary: enum values, C types, implementation limits, the small value types
+//! every room shares (the comparison function) and the constants of the window-system
+//! headers (`<GL/osmesa.h>`, `<GL/glx.h>`).
 //!
 //! This is the bottom room: every other room may import it, and it imports nothing of the
-//! crate. cbindgen reads `enums.rs` for the `#define`s of `include/GL/tessera.h`.
+//! crate. cbindgen reads `enums.rs` and `osmesa.rs` for the `#define`s of `include/GL/tessera.h`.
+#![deny(unsafe_code)]
 
 pub mod compare;
 pub mod enums;
+pub mod glx;
 pub mod limits;
+pub mod osmesa;
 pub mod types;
 
 pub use compare::CompareFunc;

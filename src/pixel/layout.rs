@@ -78,6 +78,67 @@ impl ImageLayout {
     }
 }
 
+/// The addressing of a client volume (glTexImage3D; 1D and 2D images are volumes one image
+/// deep): images of `image_height` rows (GL_UNPACK_IMAGE_HEIGHT, or the height) follow each
+/// other, the first `skip_images` of them skipped (GL 2.1 §3.8.1).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct VolumeLayout {
+    layout: ImageLayout,
+    image_stride: usize,
+    skip_images: usize,
+}
+
+impl VolumeLayout {
+    /// The layout of images `width` × `height` in `format`/`ty` under `modes`, `image_height`
+    /// rows apart (0: `height`), `skip_images` of them skipped; `None` if it overflows.
+    pub fn new(
+        format: ClientFormat,
+        ty: ClientType,
+        modes: &PackModes,
+        [width, height]: [usize; 2],
+        image_height: usize,
+        skip_images: usize,
+    ) -> Option<VolumeLayout> {
+        let layout = ImageLayout::new(format, ty, modes, width)?;
+        let rows = if image_height > 0 { image_height } else { height };
+        let image_stride = rows.checked_mul(layout.row_stride())?;
+        Some(VolumeLayout { layout, image_stride, skip_images })
+    }
+
+    /// Bytes per pixel; 0 for bitmaps.
+    pub fn pixel_bytes(&self) -> usize {
+        self.layout.pixel_bytes()
+    }
+
+    /// Byte offset of the first pixel of row `y` of image `z`.
+    pub fn row_offset(&self, y: usize, z: usize) -> Option<usize> {
+        let image = self.skip_images.checked_add(z)?.checked_mul(self.image_stride)?;
+        image.checked_add(self.layout.pixel_offset(0, y)?)
+    }
+
+    /// The bit of the first pixel of a row within the row's first byte (bitmaps).
+    pub fn first_bit(&self) -> usize {
+        self.layout.bit_index(0) % 8
+    }
+
+    /// The bytes a `width` × `height` × `depth` transfer touches; `None` if the span leaves
+    /// the address space.
+    pub fn span(&self, width: usize, height: usize, depth: usize) -> Option<Range<usize>> {
+        if width == 0 || height == 0 || depth == 0 {
+            return Some(0..0);
+        }
+        let start = self.row_offset(0, 0)?;
+        let last_row_bytes = if self.pixel_bytes() == 0 {
+            // A bitmap row: the bytes from the one holding its first bit to its last bit's.
+            self.layout.bit_index(width - 1) / 8 - self.layout.bit_index(0) / 8 + 1
+        } else {
+            width.checked_mul(self.pixel_bytes())?
+        };
+        let end = self.row_offset(height - 1, depth - 1)?.checked_add(last_row_bytes)?;
+        (end <= isize::MAX as usize).then_some(start..end)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -112,6 +173,19 @@ mod tests {
         // Two rows of two pixels starting at column 1.
         assert_eq!(l.span(1..3, 0..2), Some(96..144));
         assert_eq!(l.span(1..1, 0..2), Some(0..0));
+    }
+
+    #[test]
+    fn volumes_skip_whole_images() {
+        let m = PackModes { alignment: 1, ..PackModes::default() };
+        let v = VolumeLayout::new(ClientFormat::Rgba, ClientType::UnsignedByte, &m, [2, 3], 5, 1).unwrap();
+        // Images of 5 rows of 8 bytes; the first one skipped.
+        assert_eq!(v.row_offset(0, 0), Some(40));
+        assert_eq!(v.row_offset(2, 1), Some(80 + 16));
+        assert_eq!(v.span(2, 3, 2), Some(40..80 + 24));
+        assert_eq!(v.span(0, 3, 2), Some(0..0));
+        let flat = VolumeLayout::new(ClientFormat::Rgba, ClientType::UnsignedByte, &m, [2, 3], 0, 0).unwrap();
+        assert_eq!(flat.row_offset(0, 1), Some(24), "image height 0: the height");
     }
 
     #[test]

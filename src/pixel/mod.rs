@@ -9,6 +9,7 @@
 //! - [`convert`]: the scalar conversions, bit-exact with Mesa 22's;
 //! - [`color`]: rows of color buffer pixels → client color formats;
 //! - [`depth`]: rows of depth and stencil values → depth, stencil and depth/stencil formats.
+#![deny(unsafe_code)]
 
 pub mod color;
 pub mod convert;

@@ -99,6 +99,51 @@ pub fn unpack_color_row(format: ClientFormat, ty: ClientType, swap: bool, row: &
     }
 }
 
+/// A color or stencil index of an integer or float type at the start of `bytes` (the
+/// fraction of a float index is kept; the caller takes the integer part where GL does).
+pub fn index_value(bytes: &[u8], ty: ClientType, swap: bool) -> f64 {
+    let size = ty.element_bytes();
+    let mut raw = [0u8; 4];
+    raw[..size].copy_from_slice(&bytes[..size]);
+    if swap {
+        raw[..size].reverse();
+    }
+    match ty {
+        ClientType::UnsignedByte => f64::from(raw[0]),
+        ClientType::Byte => f64::from(raw[0] as i8),
+        ClientType::UnsignedShort => f64::from(u16::from_ne_bytes([raw[0], raw[1]])),
+        ClientType::Short => f64::from(i16::from_ne_bytes([raw[0], raw[1]])),
+        ClientType::UnsignedInt => f64::from(u32::from_ne_bytes(raw)),
+        ClientType::Int => f64::from(i32::from_ne_bytes(raw)),
+        ClientType::Float => f64::from(f32::from_ne_bytes(raw)),
+        ClientType::HalfFloat => f64::from(half_to_float(u16::from_ne_bytes([raw[0], raw[1]]))),
+        _ => 0.0,
+    }
+}
+
+/// Bit `bit` of a bitmap row's `byte` (`bit` counts within the row; GL_UNPACK_LSB_FIRST
+/// numbers a byte's bits from its least significant one).
+pub fn bitmap_bit(byte: u8, bit: usize, lsb_first: bool) -> bool {
+    let mask = if lsb_first { 1 << (bit % 8) } else { 0x80 >> (bit % 8) };
+    byte & mask != 0
+}
+
+/// Unpacks `depths.len()` GL_UNSIGNED_INT_24_8 depth/stencil pixels from `row`: depth in the
+/// high 24 bits (to [0, 1]), stencil in the low 8 (into `stencils`, as far as it reaches).
+/// Returns how many pixels `row` held (at most `depths.len()`).
+pub fn unpack_depth_stencil_row(swap: bool, row: &[u8], depths: &mut [f32], stencils: &mut [u8]) -> usize {
+    let mut count = 0;
+    for (k, word) in row.chunks_exact(4).take(depths.len()).enumerate() {
+        let word = read_uint::<4>(word, swap);
+        depths[k] = super::convert::depth_to_float(word >> 8, 24);
+        if let Some(s) = stencils.get_mut(k) {
+            *s = word as u8;
+        }
+        count = k + 1;
+    }
+    count
+}
+
 /// Unpacks `out.len()` GL_DEPTH_COMPONENT values of type `ty` from `row`, clamped to [0, 1].
 pub fn unpack_depth_row(ty: ClientType, swap: bool, row: &[u8], out: &mut [f32]) {
     let size = ty.element_bytes();
@@ -117,6 +162,22 @@ pub fn unpack_depth_row(ty: ClientType, swap: bool, row: &[u8], out: &mut [f32])
 mod tests {
     use super::*;
     use crate::pixel::PackedType;
+
+    #[test]
+    fn indices_bits_and_depth_stencil_words() {
+        assert_eq!(index_value(&[0xff], ClientType::Byte, false), -1.0);
+        assert_eq!(
+            index_value(&300u16.to_be_bytes(), ClientType::UnsignedShort, cfg!(target_endian = "little")),
+            300.0
+        );
+        assert_eq!(index_value(&2.75f32.to_ne_bytes(), ClientType::Float, false), 2.75);
+        assert!(bitmap_bit(0b1000_0000, 8, false) && !bitmap_bit(0b1000_0000, 8, true));
+        assert!(bitmap_bit(0b0000_0010, 1, true));
+        let words: Vec<u8> = [(0xffffffu32 << 8) | 7, 0x12].iter().flat_map(|w| w.to_ne_bytes()).collect();
+        let (mut depths, mut stencils) = ([0.5f32; 3], [0u8; 1]);
+        assert_eq!(unpack_depth_stencil_row(false, &words, &mut depths, &mut stencils), 2);
+        assert_eq!((depths, stencils), ([1.0, 0.0, 0.5], [7]));
+    }
 
     #[test]
     fn formats_extend_to_rgba() {

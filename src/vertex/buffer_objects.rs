@@ -6,9 +6,9 @@
 //! glUnmapBuffer, glBufferData or glDeleteBuffers. While a buffer is mapped the context does
 //! not touch its bytes (glBufferSubData and friends are GL_INVALID_OPERATION, draws too), so
 //! the caller's writes through the mapped pointer never race with a Rust reference.
+use crate::context::names::NameTable;
 use crate::gl::enums::*;
 use crate::gl::types::GLenum;
-use std::collections::HashMap;
 
 /// The binding points tessera implements (GL_PIXEL_PACK/UNPACK_BUFFER belong to GL 2.1,
 /// which is not advertised, and are refused).
@@ -131,75 +131,43 @@ impl BufferObject {
     }
 }
 
-/// A name and what it holds.
-#[derive(Debug)]
-enum Slot {
-    /// Returned by glGenBuffers, no object yet (glIsBuffer is false until the first bind).
-    Reserved,
-    Object(BufferObject),
-}
-
 /// Every buffer name of a context (later: of a share group).
 #[derive(Debug, Default)]
 pub struct BufferTable {
-    slots: HashMap<u32, Slot>,
-    /// The largest name ever used: new names continue after it.
-    largest: u32,
+    names: NameTable<BufferObject>,
 }
 
 impl BufferTable {
-    /// glGenBuffers: `n` unused names, reserved. Like Mesa, names continue after the largest
-    /// name ever used (deleted names are not reused), and only search for free names when
-    /// that would overflow. A count the memory cannot hold is [`OutOfMemory`], not an abort.
+    /// glGenBuffers: `n` unused names, reserved (see [`NameTable`]: like Mesa, names continue
+    /// after the largest name ever used). A count the memory cannot hold is [`OutOfMemory`],
+    /// not an abort.
     pub fn generate(&mut self, n: usize) -> Result<Vec<u32>, OutOfMemory> {
-        let mut names = Vec::new();
-        names.try_reserve_exact(n).map_err(|_| OutOfMemory)?;
-        self.slots.try_reserve(n).map_err(|_| OutOfMemory)?;
-        let largest = self.largest;
-        match largest.checked_add(n as u32).filter(|_| n <= u32::MAX as usize) {
-            Some(_) => names.extend((1..=n as u32).map(|i| largest + i)),
-            None => names.extend((1..=u32::MAX).filter(|name| !self.slots.contains_key(name)).take(n)),
-        }
-        for &name in &names {
-            self.slots.insert(name, Slot::Reserved);
-            self.largest = self.largest.max(name);
-        }
-        Ok(names)
+        self.names.generate(n).map_err(|_| OutOfMemory)
     }
 
     /// glBindBuffer's object creation: any nonzero name becomes an object at its first bind.
     pub fn create_on_bind(&mut self, name: u32) {
-        if name != 0 {
-            self.largest = self.largest.max(name);
-            let slot = self.slots.entry(name).or_insert(Slot::Reserved);
-            if matches!(slot, Slot::Reserved) {
-                *slot = Slot::Object(BufferObject::default());
-            }
-        }
+        self.names.get_or_create(name, BufferObject::default);
     }
 
     /// glIsBuffer.
     pub fn is_buffer(&self, name: u32) -> bool {
-        matches!(self.slots.get(&name), Some(Slot::Object(_)))
+        self.names.is_object(name)
     }
 
     /// Frees `name` (and its storage); false when it was not a name in use.
     pub fn delete(&mut self, name: u32) -> bool {
-        name != 0 && self.slots.remove(&name).is_some()
+        let used = self.names.is_used(name);
+        self.names.delete(name);
+        used
     }
 
     pub fn get(&self, name: u32) -> Option<&BufferObject> {
-        match self.slots.get(&name) {
-            Some(Slot::Object(buffer)) => Some(buffer),
-            _ => None,
-        }
+        self.names.get(name)
     }
 
     pub fn get_mut(&mut self, name: u32) -> Option<&mut BufferObject> {
-        match self.slots.get_mut(&name) {
-            Some(Slot::Object(buffer)) => Some(buffer),
-            _ => None,
-        }
+        self.names.get_mut(name)
     }
 }
 

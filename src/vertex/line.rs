@@ -5,8 +5,8 @@ use super::clip::ClipVertex;
 use super::geometry::Geometry;
 use crate::setup::jobs::line::{LineJob, LineVertex};
 use crate::setup::jobs::smooth::{SmoothJob, SmoothLine};
-use crate::setup::{Primitive as RasterPrimitive, Scene};
 use crate::setup::multisample::SampleQuad;
+use crate::setup::{Primitive as RasterPrimitive, Scene};
 
 /// The line stipple of a draw: GL's repeat factor and pattern, and the running counter
 /// (in pixel steps along the lines' major axes).

@@ -8,9 +8,9 @@ use crate::gl::limits::MAX_POINT_SIZE;
 use crate::setup::jobs::line::LineVertex;
 use crate::setup::jobs::point::PointJob;
 use crate::setup::jobs::smooth::{SmoothJob, SmoothPoint};
-use crate::setup::{Primitive as RasterPrimitive, Scene};
 use crate::setup::multisample::SampleQuad;
 use crate::setup::point::point_rect;
+use crate::setup::{Primitive as RasterPrimitive, Scene};
 
 /// The size points are drawn with without distance attenuation: glPointSize `size` clamped to
 /// GL_POINT_SIZE_MIN/MAX (the minimum winning when they cross, as in Mesa) and to the

@@ -10,56 +10,8 @@
 //! drawables render into multisample buffers and present the resolved image. This module is
 //! pure data and rules, without X calls, so it is unit-tested.
 use crate::framebuffer::{ColorFormat, DepthStencilFormat, FramebufferConfig};
+use crate::gl::glx::*;
 use crate::gl::limits::MAX_VIEWPORT_DIM;
-
-pub const GLX_USE_GL: i32 = 1;
-pub const GLX_BUFFER_SIZE: i32 = 2;
-pub const GLX_LEVEL: i32 = 3;
-pub const GLX_RGBA: i32 = 4;
-pub const GLX_DOUBLEBUFFER: i32 = 5;
-pub const GLX_STEREO: i32 = 6;
-pub const GLX_AUX_BUFFERS: i32 = 7;
-pub const GLX_RED_SIZE: i32 = 8;
-pub const GLX_GREEN_SIZE: i32 = 9;
-pub const GLX_BLUE_SIZE: i32 = 10;
-pub const GLX_ALPHA_SIZE: i32 = 11;
-pub const GLX_DEPTH_SIZE: i32 = 12;
-pub const GLX_STENCIL_SIZE: i32 = 13;
-pub const GLX_ACCUM_RED_SIZE: i32 = 14;
-pub const GLX_ACCUM_GREEN_SIZE: i32 = 15;
-pub const GLX_ACCUM_BLUE_SIZE: i32 = 16;
-pub const GLX_ACCUM_ALPHA_SIZE: i32 = 17;
-pub const GLX_CONFIG_CAVEAT: i32 = 0x20;
-pub const GLX_X_VISUAL_TYPE: i32 = 0x22;
-pub const GLX_TRANSPARENT_TYPE: i32 = 0x23;
-pub const GLX_TRANSPARENT_INDEX_VALUE: i32 = 0x24;
-pub const GLX_TRANSPARENT_RED_VALUE: i32 = 0x25;
-pub const GLX_TRANSPARENT_GREEN_VALUE: i32 = 0x26;
-pub const GLX_TRANSPARENT_BLUE_VALUE: i32 = 0x27;
-pub const GLX_TRANSPARENT_ALPHA_VALUE: i32 = 0x28;
-pub const GLX_DONT_CARE: i32 = -1;
-pub const GLX_NONE: i32 = 0x8000;
-pub const GLX_TRUE_COLOR: i32 = 0x8002;
-pub const GLX_DIRECT_COLOR: i32 = 0x8003;
-pub const GLX_VISUAL_ID: i32 = 0x800B;
-pub const GLX_SCREEN: i32 = 0x800C;
-pub const GLX_DRAWABLE_TYPE: i32 = 0x8010;
-pub const GLX_RENDER_TYPE: i32 = 0x8011;
-pub const GLX_X_RENDERABLE: i32 = 0x8012;
-pub const GLX_FBCONFIG_ID: i32 = 0x8013;
-pub const GLX_RGBA_TYPE: i32 = 0x8014;
-pub const GLX_MAX_PBUFFER_WIDTH: i32 = 0x8016;
-pub const GLX_MAX_PBUFFER_HEIGHT: i32 = 0x8017;
-pub const GLX_MAX_PBUFFER_PIXELS: i32 = 0x8018;
-pub const GLX_WINDOW_BIT: i32 = 1;
-pub const GLX_PIXMAP_BIT: i32 = 2;
-pub const GLX_PBUFFER_BIT: i32 = 4;
-pub const GLX_RGBA_BIT: i32 = 1;
-pub const GLX_SAMPLE_BUFFERS: i32 = 100000;
-pub const GLX_SAMPLES: i32 = 100001;
-pub const GLX_FRAMEBUFFER_SRGB_CAPABLE_ARB: i32 = 0x20B2;
-pub const GLX_SWAP_METHOD_OML: i32 = 0x8060;
-pub const GLX_SWAP_COPY_OML: i32 = 0x8062;
 
 /// X visual classes (X.h).
 pub const X_TRUE_COLOR: i32 = 4;

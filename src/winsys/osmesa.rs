@@ -33,7 +33,6 @@
 //!   the caller's pixels before returning;
 //! - GLX windows and pixmaps are presented through the X server and XShm segments tessera
 //!   owns: no caller memory.
-use crate::api::osmesa::{OSMESA_ARGB, OSMESA_BGR, OSMESA_BGRA, OSMESA_RGB_565};
 use crate::context::current::{self, SharedContext};
 use crate::context::{Context, ContextConfig};
 use crate::framebuffer::external::CallerBuffer;
@@ -43,6 +42,7 @@ use crate::framebuffer::{
 };
 use crate::gl::enums::*;
 use crate::gl::limits::MAX_VIEWPORT_DIM;
+use crate::gl::osmesa::{OSMESA_ARGB, OSMESA_BGR, OSMESA_BGRA, OSMESA_RGB_565};
 use crate::gl::types::GLenum;
 use crate::winsys::notice;
 use std::collections::HashMap;

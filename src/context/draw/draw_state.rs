@@ -2,12 +2,12 @@
 //! and multisample state a draw records into the scene, and the varyings (attributes beyond
 //! color) that its enabled per-fragment stages read.
 use super::super::Context;
+use crate::fragment::pipeline::DrawState;
 use crate::fragment::{DepthTest, FragmentState};
 use crate::framebuffer::{ColorFormat, Rect};
 use crate::gl::enums::*;
 use crate::gl::types::GLenum;
 use crate::setup::accuracy::Accuracy;
-use crate::fragment::pipeline::DrawState;
 use crate::setup::Scene;
 use crate::vertex::attribute::Attribute;
 
