@@ -170,6 +170,9 @@ struct Geometry {
     front_ccw: bool,
     offset: Option<(f32, f32)>,
     depth_bits: u32,
+    /// The depth buffer stores floats (ARB_depth_buffer_float): polygon offset units are
+    /// scaled per primitive, by the exponent of its largest depth.
+    float_depth: bool,
     /// Framebuffer height (for llvmpipe's y-down window space).
     height: i32,
     line_width: f32,
@@ -181,7 +184,8 @@ struct Geometry {
     mode_front: GLenum,
     mode_back: GLenum,
     /// The depth offsets of polygons drawn as lines and as points: (factor, units × 2r),
-    /// r the depth buffer's resolution, as Mesa's offset stage applies them.
+    /// r the depth buffer's resolution, as Mesa's offset stage applies them; (factor,
+    /// units) on a float depth buffer, whose r depends on the primitive.
     offset_line: Option<(f32, f32)>,
     offset_point: Option<(f32, f32)>,
     /// GL_POLYGON_OFFSET_CLAMP (EXT_polygon_offset_clamp): the bound of every offset.
@@ -606,7 +610,14 @@ impl Context {
         let lp = &self.state.line_point;
         // Mesa's offset stage scales units by twice the depth buffer's resolution.
         let (depth_scale, depth_offset) = self.depth_transform();
-        let units_scale = if depth_bits > 0 { (2.0 / ((1u64 << depth_bits) - 1) as f64) as f32 } else { 0.0 };
+        let float_depth = self.draw_config().depth_stencil.is_float_depth();
+        let units_scale = if float_depth {
+            1.0
+        } else if depth_bits > 0 {
+            (2.0 / ((1u64 << depth_bits) - 1) as f64) as f32
+        } else {
+            0.0
+        };
         Geometry {
             accuracy: self.accuracy,
             smooth_lines: lp.line_smooth,
@@ -654,6 +665,7 @@ impl Context {
             offset: polygon.offset_fill.then_some((polygon.offset_factor, polygon.offset_units)),
             offset_clamp: polygon.offset_clamp,
             depth_bits,
+            float_depth,
         }
     }
 }
@@ -903,6 +915,7 @@ impl Outline<'_> {
             let inv_det = 1.0 / det;
             let dzdx = ((ey * fz - ez * fy) * inv_det).abs();
             let dzdy = ((ez * fx - ex * fz) * inv_det).abs();
+            let units = if g.float_depth { units * float_depth_resolution(l.iter().map(|c| c.z)) } else { units };
             let z_offset = clamp_offset(units + dzdx.max(dzdy) * factor, g.offset_clamp);
             for c in &mut l {
                 c.z = (c.z + z_offset).clamp(0.0, 1.0);
@@ -1072,9 +1085,8 @@ fn emit_triangle(scene: &mut Scene, state: u32, g: &Geometry, w: [WindowVertex; 
         Some(GL_BACK) if !front => return,
         _ => {}
     }
-    let offset = g
-        .offset
-        .map_or(0.0, |(factor, units)| clamp_offset(polygon_offset(&w, factor, units, g.depth_bits), g.offset_clamp));
+    let offset =
+        g.offset.map_or(0.0, |(factor, units)| clamp_offset(polygon_offset(&w, factor, units, g), g.offset_clamp));
     let varyings: Vec<[f32; 3]> = g.varyings.iter().map(|a| w.map(|v| a.of(&v))).collect();
     if g.smooth_polygons {
         if let Some(job) = SmoothTriangle::new(w, flat, offset, &varyings, front) {
@@ -1304,9 +1316,21 @@ fn clamp_offset(offset: f32, clamp: f32) -> f32 {
     }
 }
 
+/// The smallest resolvable difference r of a float depth buffer for a primitive whose
+/// depths are `z` (GL 3.0 §3.6.5, ARB_depth_buffer_float): 2^(e − 23), e the exponent of
+/// the largest |z|. Computed on the bit pattern as Mesa's offset stage does, including its
+/// clamp to 0 when e − 23 falls below the smallest exponent (llvmpipe's triangle setup
+/// omits that clamp and scales by a huge negative number for depths below 2⁻¹⁰³, which
+/// no program relies on).
+fn float_depth_resolution(z: impl Iterator<Item = f32>) -> f32 {
+    let max = z.fold(0.0f32, |m, z| m.max(z.abs()));
+    let exponent = (max.to_bits() & (0xff << 23)) as i32;
+    f32::from_bits((exponent - (23 << 23)).max(0) as u32)
+}
+
 /// glPolygonOffset's depth offset for a triangle: factor × max depth slope + units × r,
 /// where r is the smallest resolvable difference of the depth buffer.
-fn polygon_offset(w: &[WindowVertex; 3], factor: f32, units: f32, depth_bits: u32) -> f32 {
+fn polygon_offset(w: &[WindowVertex; 3], factor: f32, units: f32, g: &Geometry) -> f32 {
     let (x1, y1, z1) = (w[1].x - w[0].x, w[1].y - w[0].y, w[1].z - w[0].z);
     let (x2, y2, z2) = (w[2].x - w[0].x, w[2].y - w[0].y, w[2].z - w[0].z);
     let det = x1 * y2 - x2 * y1;
@@ -1317,7 +1341,13 @@ fn polygon_offset(w: &[WindowVertex; 3], factor: f32, units: f32, depth_bits: u3
     } else {
         0.0
     };
-    let r = if depth_bits > 0 { 1.0 / ((1u64 << depth_bits) - 1) as f32 } else { 0.0 };
+    let r = if g.float_depth {
+        float_depth_resolution(w.iter().map(|v| v.z))
+    } else if g.depth_bits > 0 {
+        1.0 / ((1u64 << g.depth_bits) - 1) as f32
+    } else {
+        0.0
+    };
     factor * slope + units * r
 }
 

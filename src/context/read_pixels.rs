@@ -349,7 +349,7 @@ fn read_into(fb: &Framebuffer, slot: Option<crate::framebuffer::ColorSlot>, job:
     match job.format {
         ClientFormat::DepthComponent | ClientFormat::StencilIndex | ClientFormat::DepthStencil => {
             let ds = fb.depth_stencil();
-            let bits = ds.depth_bits();
+            let encoding = ds.depth_encoding();
             let (mut depth, mut stencil) = (Vec::with_capacity(cols), Vec::with_capacity(cols));
             for (j, y) in (rect.y0..rect.y1).enumerate() {
                 let Some(start) = row_start(j) else { return };
@@ -377,12 +377,12 @@ fn read_into(fb: &Framebuffer, slot: Option<crate::framebuffer::ColorSlot>, job:
                     }
                     (ClientFormat::DepthComponent, ty) => {
                         if let Some(o) = out.get_mut(start..start + row_bytes) {
-                            pack_depth_row(&depth, bits, ty, swap, o);
+                            pack_depth_row(&depth, encoding, ty, swap, o);
                         }
                     }
                     _ => {
                         if let Some(o) = out.get_mut(start..start + row_bytes) {
-                            pack_depth_stencil_row(&depth, bits, &stencil, swap, o);
+                            pack_depth_stencil_row(&depth, encoding, &stencil, swap, o);
                         }
                     }
                 }
