@@ -14,7 +14,10 @@
  *    GL_UNSIGNED_INT, GL_TEXTURE_DEPTH_SIZE, glGetTexImage as GL_FLOAT, rendering into
  *    the texture and reading it back, sampling with depth compare;
  *  - glBlitFramebuffer of depth between float and fixed-point buffers: GL_INVALID_OPERATION
- *    (the formats differ), between two float buffers: exact. */
+ *    (the formats differ), between two float buffers: exact;
+ *  - the pixel type GL_FLOAT_32_UNSIGNED_INT_24_8_REV: glReadPixels and glDrawPixels of
+ *    GL_DEPTH_STENCIL on float and 24-bit buffers, glTexImage2D/glGetTexImage of a
+ *    GL_DEPTH32F_STENCIL8 texture, and its errors with other formats. */
 #include "common.h"
 
 #define W 16
@@ -420,6 +423,91 @@ static void blits(void)
     free_fbo(f32, c1, d1, 0);
 }
 
+static void rev_type(void)
+{
+    GLuint color, depth;
+    GLuint fb = make_fbo(GL_DEPTH32F_STENCIL8, 0, &color, &depth);
+    /* glDrawPixels of two pixels: depth 3e-8 / 1.5 (clamped), stencil 0x33 / 0x1ff (0xff). */
+    const GLuint in[4] = {0, 0x33, 0, 0x1ff};
+    GLfloat d0 = 3e-8f, d1 = 1.5f;
+    GLuint words[4];
+    memcpy(&words[0], &d0, 4);
+    memcpy(&words[2], &d1, 4);
+    words[1] = in[1];
+    words[3] = in[3];
+    glClearDepth(0.5);
+    glClearStencil(0);
+    glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    glWindowPos2i(3, 4);
+    glDrawPixels(2, 1, GL_DEPTH_STENCIL, GL_FLOAT_32_UNSIGNED_INT_24_8_REV, words);
+    capi_expect_error(GL_NO_ERROR, "glDrawPixels GL_FLOAT_32_UNSIGNED_INT_24_8_REV");
+    GLuint out[6] = {0xdeadbeef, 0xdeadbeef, 0xdeadbeef, 0xdeadbeef, 0xdeadbeef, 0xdeadbeef};
+    glReadPixels(2, 4, 3, 1, GL_DEPTH_STENCIL, GL_FLOAT_32_UNSIGNED_INT_24_8_REV, out);
+    capi_expect_error(GL_NO_ERROR, "glReadPixels GL_FLOAT_32_UNSIGNED_INT_24_8_REV");
+    capi_value("rev.read_float", "%08x %08x %08x %08x %08x %08x", out[0], out[1], out[2], out[3], out[4], out[5]);
+    float got;
+    memcpy(&got, &out[2], 4);
+    capi_check(got == 3e-8f && (out[3] & 0xff) == 0x33, "REV round trip: %a 0x%x", got, out[3]);
+    GLuint packed[3];
+    glReadPixels(2, 4, 3, 1, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, packed);
+    capi_value("rev.read_24_8", "%08x %08x %08x", packed[0], packed[1], packed[2]);
+    glPixelStorei(GL_PACK_SWAP_BYTES, GL_TRUE);
+    glReadPixels(3, 4, 1, 1, GL_DEPTH_STENCIL, GL_FLOAT_32_UNSIGNED_INT_24_8_REV, out);
+    glPixelStorei(GL_PACK_SWAP_BYTES, GL_FALSE);
+    /* GL_PACK_SWAP_BYTES swaps each 4-byte word, the depth and the stencil word. Mesa 22
+     * swaps the depth word and leaves the stencil word of this one-pixel read unswapped
+     * (0x00000033); tessera swaps both as the spec says (0x33000000). */
+    capi_value("rev.read_swapped", "%08x", out[0]);
+    if (capi_is_tessera())
+        capi_check(out[1] == 0x33000000u, "swapped stencil word 0x%08x", out[1]);
+    /* Errors: the type needs GL_DEPTH_STENCIL. */
+    glReadPixels(0, 0, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT_32_UNSIGNED_INT_24_8_REV, out);
+    capi_expect_error(GL_INVALID_OPERATION, "glReadPixels DEPTH_COMPONENT with the REV type");
+    glReadPixels(0, 0, 1, 1, GL_RGBA, GL_FLOAT_32_UNSIGNED_INT_24_8_REV, out);
+    capi_expect_error(GL_INVALID_OPERATION, "glReadPixels RGBA with the REV type");
+    glReadPixels(0, 0, 1, 1, GL_DEPTH_STENCIL, GL_FLOAT, out);
+    capi_expect_error(GL_INVALID_ENUM, "glReadPixels DEPTH_STENCIL as GL_FLOAT");
+    free_fbo(fb, color, depth, 0);
+
+    /* From a 24-bit depth-stencil buffer. */
+    fb = make_fbo(GL_DEPTH24_STENCIL8, 0, &color, &depth);
+    glClearDepth(0.1);
+    glClearStencil(0x81);
+    glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    glReadPixels(0, 0, 1, 1, GL_DEPTH_STENCIL, GL_FLOAT_32_UNSIGNED_INT_24_8_REV, out);
+    capi_value("rev.read_d24s8", "%08x %08x", out[0], out[1]);
+    glWindowPos2i(0, 0);
+    glDrawPixels(1, 1, GL_DEPTH_STENCIL, GL_FLOAT_32_UNSIGNED_INT_24_8_REV, words);
+    glReadPixels(0, 0, 1, 1, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, packed);
+    capi_value("rev.draw_d24s8", "%08x", packed[0]);
+    glClearDepth(1);
+    glClearStencil(0);
+    capi_expect_error(GL_NO_ERROR, "REV on 24-bit");
+    free_fbo(fb, color, depth, 0);
+
+    /* Texture data. */
+    GLuint tex;
+    glGenTextures(1, &tex);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH32F_STENCIL8, 2, 1, 0, GL_DEPTH_STENCIL, GL_FLOAT_32_UNSIGNED_INT_24_8_REV,
+                 words);
+    capi_expect_error(GL_NO_ERROR, "glTexImage2D DEPTH32F_STENCIL8 from the REV type");
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_STENCIL, GL_FLOAT_32_UNSIGNED_INT_24_8_REV, out);
+    capi_value("rev.teximage", "%08x %08x %08x %08x", out[0], out[1], out[2], out[3]);
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, packed);
+    capi_value("rev.teximage_24_8", "%08x %08x", packed[0], packed[1]);
+    const GLuint d24s8[2] = {0x80000012u, 0xffffff34u};
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH32F_STENCIL8, 2, 1, 0, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, d24s8);
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_STENCIL, GL_FLOAT_32_UNSIGNED_INT_24_8_REV, out);
+    capi_value("rev.teximage_from_24_8", "%08x %08x %08x %08x", out[0], out[1], out[2], out[3]);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT32F, 2, 1, 0, GL_DEPTH_COMPONENT,
+                 GL_FLOAT_32_UNSIGNED_INT_24_8_REV, words);
+    capi_expect_error(GL_INVALID_OPERATION, "glTexImage2D DEPTH_COMPONENT with the REV type");
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 2, 1, 0, GL_RGBA, GL_FLOAT_32_UNSIGNED_INT_24_8_REV, words);
+    capi_expect_error(GL_INVALID_OPERATION, "glTexImage2D RGBA with the REV type");
+    glDeleteTextures(1, &tex);
+}
+
 int main(void)
 {
     capi_make_context(OSMESA_RGBA, GL_UNSIGNED_BYTE, 24, 8, 0, W, H, NULL);
@@ -440,6 +528,7 @@ int main(void)
     polygon_offset();
     textures();
     blits();
+    rev_type();
     capi_expect_error(GL_NO_ERROR, "end");
     return capi_finish();
 }

@@ -29,7 +29,9 @@ use crate::gl::enums::*;
 use crate::gl::types::GLenum;
 use crate::pixel::color::{ColorPlan, ColorScratch};
 use crate::pixel::convert::pixel_store_round;
-use crate::pixel::depth::{pack_depth_row, pack_depth_stencil_row, pack_stencil_bitmap_row, pack_stencil_row};
+use crate::pixel::depth::{
+    pack_depth_row, pack_depth_stencil_float_row, pack_depth_stencil_row, pack_stencil_bitmap_row, pack_stencil_row,
+};
 use crate::pixel::layout::ImageLayout;
 use crate::pixel::{ClientFormat, ClientType, PackModes, PackedType};
 use std::ops::Range;
@@ -76,6 +78,7 @@ pub(crate) fn client_type(ty: GLenum) -> Option<ClientType> {
         GL_HALF_FLOAT => ClientType::HalfFloat,
         GL_BITMAP => ClientType::Bitmap,
         GL_UNSIGNED_INT_24_8 => ClientType::UnsignedInt24_8,
+        GL_FLOAT_32_UNSIGNED_INT_24_8_REV => ClientType::Float32UnsignedInt24_8Rev,
         GL_UNSIGNED_BYTE_3_3_2 => ClientType::Packed(UnsignedByte332),
         GL_UNSIGNED_BYTE_2_3_3_REV => ClientType::Packed(UnsignedByte233Rev),
         GL_UNSIGNED_SHORT_5_6_5 => ClientType::Packed(UnsignedShort565),
@@ -96,7 +99,10 @@ pub(crate) fn client_type(ty: GLenum) -> Option<ClientType> {
 /// desktop GL, restricted to what GL 2.1 and ARB_half_float_pixel define).
 pub(crate) fn check_format_and_type(format: ReadFormat, ty: GLenum) -> Result<ClientType, GLenum> {
     use ClientFormat::*;
-    if format == ReadFormat::Client(DepthStencil) && ty != GL_UNSIGNED_INT_24_8 {
+    if format == ReadFormat::Client(DepthStencil)
+        && ty != GL_UNSIGNED_INT_24_8
+        && ty != GL_FLOAT_32_UNSIGNED_INT_24_8_REV
+    {
         return Err(GL_INVALID_ENUM);
     }
     let ty = client_type(ty).ok_or(GL_INVALID_ENUM)?;
@@ -106,8 +112,10 @@ pub(crate) fn check_format_and_type(format: ReadFormat, ty: GLenum) -> Result<Cl
         (ClientType::Bitmap, _) => return Err(GL_INVALID_ENUM),
         (ClientType::Packed(packed), ReadFormat::Client(f)) if packed.accepts(f) => return Ok(ty),
         (ClientType::Packed(_), _) => return Err(GL_INVALID_OPERATION),
-        (ClientType::UnsignedInt24_8, ReadFormat::Client(DepthStencil)) => return Ok(ty),
-        (ClientType::UnsignedInt24_8, _) => return Err(GL_INVALID_OPERATION),
+        (ClientType::UnsignedInt24_8 | ClientType::Float32UnsignedInt24_8Rev, ReadFormat::Client(DepthStencil)) => {
+            return Ok(ty)
+        }
+        (ClientType::UnsignedInt24_8 | ClientType::Float32UnsignedInt24_8Rev, _) => return Err(GL_INVALID_OPERATION),
         _ => {}
     }
     // Every remaining type is an array type, which every remaining format accepts.
@@ -267,7 +275,10 @@ impl Context {
         }
         let Some(read_format) = read_format(format) else {
             // As in Mesa, a packed type's format rule comes before the format's validity.
-            let packed = matches!(client_type(ty), Some(ClientType::Packed(_) | ClientType::UnsignedInt24_8));
+            let packed = matches!(
+                client_type(ty),
+                Some(ClientType::Packed(_) | ClientType::UnsignedInt24_8 | ClientType::Float32UnsignedInt24_8Rev)
+            );
             self.error(if packed { GL_INVALID_OPERATION } else { GL_INVALID_ENUM });
             return None;
         };
@@ -378,6 +389,11 @@ fn read_into(fb: &Framebuffer, slot: Option<crate::framebuffer::ColorSlot>, job:
                     (ClientFormat::DepthComponent, ty) => {
                         if let Some(o) = out.get_mut(start..start + row_bytes) {
                             pack_depth_row(&depth, encoding, ty, swap, o);
+                        }
+                    }
+                    (_, ClientType::Float32UnsignedInt24_8Rev) => {
+                        if let Some(o) = out.get_mut(start..start + row_bytes) {
+                            pack_depth_stencil_float_row(&depth, encoding, &stencil, swap, o);
                         }
                     }
                     _ => {

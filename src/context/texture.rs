@@ -320,7 +320,9 @@ pub(super) fn check_texture_upload_format_type(
     }
     match super::read_pixels::client_type(ty) {
         None => Err(GL_INVALID_ENUM),
-        Some(ClientType::Packed(_) | ClientType::UnsignedInt24_8) => Err(GL_INVALID_OPERATION),
+        Some(ClientType::Packed(_) | ClientType::UnsignedInt24_8 | ClientType::Float32UnsignedInt24_8Rev) => {
+            Err(GL_INVALID_OPERATION)
+        }
         Some(ClientType::HalfFloat) => Err(GL_INVALID_ENUM),
         Some(t) => Ok((ClientFormat::StencilIndex, t)),
     }
@@ -407,11 +409,15 @@ pub(super) fn check_texture_format_type(format: GLenum, ty: GLenum) -> Result<(C
         });
     };
     match client_type {
-        // GL_DEPTH_STENCIL data has the one packed type (Mesa: GL_INVALID_ENUM otherwise).
-        Some(ClientType::UnsignedInt24_8) if f == ClientFormat::DepthStencil => Ok((f, ClientType::UnsignedInt24_8)),
+        // GL_DEPTH_STENCIL data has the two packed types (Mesa: GL_INVALID_ENUM otherwise).
+        Some(t @ (ClientType::UnsignedInt24_8 | ClientType::Float32UnsignedInt24_8Rev))
+            if f == ClientFormat::DepthStencil =>
+        {
+            Ok((f, t))
+        }
         Some(_) if f == ClientFormat::DepthStencil => Err(GL_INVALID_ENUM),
         None | Some(ClientType::Bitmap) => Err(GL_INVALID_ENUM),
-        Some(ClientType::UnsignedInt24_8) => Err(GL_INVALID_OPERATION),
+        Some(ClientType::UnsignedInt24_8 | ClientType::Float32UnsignedInt24_8Rev) => Err(GL_INVALID_OPERATION),
         Some(ClientType::Packed(p)) if !p.accepts(f) => Err(GL_INVALID_OPERATION),
         Some(ClientType::Packed(_)) if f == ClientFormat::DepthComponent => Err(GL_INVALID_OPERATION),
         Some(t) => Ok((f, t)),
@@ -1361,10 +1367,40 @@ impl Context {
                 let start = image.index(0, y, z);
                 if cf == ClientFormat::DepthStencil {
                     let Texels::Depth(t) = &image.texels else { continue };
-                    let fixed: Vec<u32> =
-                        t[start..start + w].iter().map(|&d| (d as f64 * 16_777_215.0).round() as u32).collect();
                     let stencil = image.stencil.get(start..start + w).unwrap_or(&[]);
-                    crate::pixel::depth::pack_depth_stencil_row(&fixed, DepthEncoding::Unorm(24), stencil, swap, row);
+                    let texels = &t[start..start + w];
+                    if lv.info.float_depth || ct == ClientType::Float32UnsignedInt24_8Rev {
+                        // The texels as float depth values (a float's bit pattern is its
+                        // DepthEncoding::Float value).
+                        let bits: Vec<u32> = texels.iter().map(|d| d.to_bits()).collect();
+                        if ct == ClientType::Float32UnsignedInt24_8Rev {
+                            crate::pixel::depth::pack_depth_stencil_float_row(
+                                &bits,
+                                DepthEncoding::Float,
+                                stencil,
+                                swap,
+                                row,
+                            );
+                        } else {
+                            crate::pixel::depth::pack_depth_stencil_row(
+                                &bits,
+                                DepthEncoding::Float,
+                                stencil,
+                                swap,
+                                row,
+                            );
+                        }
+                    } else {
+                        let fixed: Vec<u32> =
+                            texels.iter().map(|&d| (d as f64 * 16_777_215.0).round() as u32).collect();
+                        crate::pixel::depth::pack_depth_stencil_row(
+                            &fixed,
+                            DepthEncoding::Unorm(24),
+                            stencil,
+                            swap,
+                            row,
+                        );
+                    }
                 } else {
                     pack_texels_row(&image, start, w, cf, ct, swap, row);
                 }
@@ -1445,6 +1481,15 @@ fn store_client(
                     }
                     for (k, c) in colors.iter().enumerate() {
                         t[start + k] = texel8(info, *c);
+                    }
+                }
+                Texels::Depth(t) if cf == ClientFormat::DepthStencil && ct == ClientType::Float32UnsignedInt24_8Rev => {
+                    for (k, pixel) in row.chunks_exact(8).take(w).enumerate() {
+                        let (depth, index) = crate::pixel::depth::unpack_depth_stencil_float(pixel, swap);
+                        t[start + k] = info.store_depth(depth);
+                        if let Some(s) = image.stencil.get_mut(start + k) {
+                            *s = index;
+                        }
                     }
                 }
                 Texels::Depth(t) if cf == ClientFormat::DepthStencil => {

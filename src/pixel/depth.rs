@@ -51,7 +51,13 @@ pub fn pack_depth_row(values: &[u32], encoding: DepthEncoding, ty: ClientType, s
         (ClientType::Float, _) => each(values, out, swap, |v| d(v).to_ne_bytes()),
         (ClientType::HalfFloat, _) => each(values, out, swap, |v| float_to_half(d(v)).to_ne_bytes()),
         // Not depth types (validated before).
-        (ClientType::Packed(_) | ClientType::Bitmap | ClientType::UnsignedInt24_8, _) => {}
+        (
+            ClientType::Packed(_)
+            | ClientType::Bitmap
+            | ClientType::UnsignedInt24_8
+            | ClientType::Float32UnsignedInt24_8Rev,
+            _,
+        ) => {}
     }
 }
 
@@ -69,7 +75,10 @@ pub fn pack_stencil_row(values: &[u8], ty: ClientType, swap: bool, out: &mut [u8
         ClientType::UnsignedInt | ClientType::Int => each(values, out, swap, |s| (s as u32).to_ne_bytes()),
         ClientType::Float => each(values, out, swap, |s| (s as f32).to_ne_bytes()),
         ClientType::HalfFloat => each(values, out, swap, |s| float_to_half(s as f32).to_ne_bytes()),
-        ClientType::Packed(_) | ClientType::Bitmap | ClientType::UnsignedInt24_8 => {}
+        ClientType::Packed(_)
+        | ClientType::Bitmap
+        | ClientType::UnsignedInt24_8
+        | ClientType::Float32UnsignedInt24_8Rev => {}
     }
 }
 
@@ -106,6 +115,37 @@ pub fn pack_depth_stencil_row(depth: &[u32], encoding: DepthEncoding, stencil: &
     } else {
         each(depth, stencil, out, false, |z, s| (unorm_widen_to_u32(z, bits) & 0xffff_ff00) | s as u32);
     }
+}
+
+/// Packs one row of stored depth and stencil values as GL_DEPTH_STENCIL /
+/// GL_FLOAT_32_UNSIGNED_INT_24_8_REV: per pixel the depth as a float in [0, 1], then a
+/// 32-bit word holding the stencil index (each word byte-swapped on its own when `swap`).
+pub fn pack_depth_stencil_float_row(
+    depth: &[u32],
+    encoding: DepthEncoding,
+    stencil: &[u8],
+    swap: bool,
+    out: &mut [u8],
+) {
+    for ((o, &z), &s) in out.chunks_exact_mut(8).zip(depth).zip(stencil) {
+        put(&mut o[..4], encoding.decode(z).to_ne_bytes(), swap);
+        put(&mut o[4..], (s as u32).to_ne_bytes(), swap);
+    }
+}
+
+/// One GL_FLOAT_32_UNSIGNED_INT_24_8_REV pixel (8 bytes): its depth (clamped to [0, 1],
+/// as every depth stored) and stencil index.
+pub fn unpack_depth_stencil_float(bytes: &[u8], swap: bool) -> (f32, u8) {
+    let word = |at: usize| {
+        let mut b = [bytes[at], bytes[at + 1], bytes[at + 2], bytes[at + 3]];
+        if swap {
+            b.reverse();
+        }
+        b
+    };
+    let depth = f32::from_ne_bytes(word(0));
+    let depth = f32::from_bits(crate::framebuffer::format::float_depth_bits(depth));
+    (depth, u32::from_ne_bytes(word(4)) as u8)
 }
 
 #[cfg(test)]
