@@ -972,6 +972,25 @@ mod color_tests {
     }
 
     #[test]
+    fn float_depth_clears_store_the_float_and_keep_stencil() {
+        let mut ds = DepthStencilBuffer::new(DepthStencilFormat::Float32 { stencil: true }, 4, 16).unwrap();
+        ds.clear_stencil(Rect::from_xywh(0, 0, 4, 4), 0x5a, 0xff);
+        ds.clear_depth(Rect::from_xywh(0, 0, 4, 4), 0.1);
+        let mut row = Vec::new();
+        ds.read_depth_row(0, 0, 1, &mut row);
+        assert_eq!(row, vec![0.1f32.to_bits()], "a whole clear stores 0.1f itself");
+        assert_eq!(ds.depth_to_float(row[0]), 0.1);
+        ds.clear_depth(Rect::from_xywh(0, 0, 2, 2), 2.0);
+        ds.clear_depth(Rect::from_xywh(2, 0, 2, 2), -1.0);
+        row.clear();
+        ds.read_depth_row(0, 0, 4, &mut row);
+        assert_eq!(row, vec![1.0f32.to_bits(), 1.0f32.to_bits(), 0, 0], "clears clamp to [0, 1]");
+        let mut stencil = Vec::new();
+        ds.read_stencil_row(0, 0, 4, &mut stencil);
+        assert_eq!(stencil, vec![0x5a; 4]);
+    }
+
+    #[test]
     fn sixteen_bit_clears_break_ties_like_llvmpipe() {
         // 0.3 · 65535 rounds to 19660.5 in single precision: whole-buffer clears give 19661,
         // partial (scissored or masked) ones 19660, as measured on Mesa 22 llvmpipe.
