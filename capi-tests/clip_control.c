@@ -15,9 +15,8 @@
  *    every pixel shows the nearest card whatever the drawing order, read-back depths are
  *    n/d. The same cards with a classic projection into a 24-bit depth buffer z-fight
  *    (checked: some pixels show a farther card).
- * tessera stores GL_DEPTH_COMPONENT32F as 32-bit fixed point, llvmpipe as float: the
- * separations are chosen so that both resolve them, and the read-back depths agree to 1e-9
- * (manifest). */
+ * Both tessera and llvmpipe store GL_DEPTH_COMPONENT32F as float (ARB_depth_buffer_float,
+ * capi depth_buffer_float), and the read-back depths agree exactly. */
 #include "common.h"
 
 #define W 64

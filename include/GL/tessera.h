@@ -6150,6 +6150,18 @@ typedef void (*OSMESAproc)();
 #error "GL_DEPTH_COMPONENT32F differs from the system GL headers"
 #endif
 
+#if !defined(GL_DEPTH32F_STENCIL8)
+#define GL_DEPTH32F_STENCIL8 36013
+#elif (GL_DEPTH32F_STENCIL8) != (36013)
+#error "GL_DEPTH32F_STENCIL8 differs from the system GL headers"
+#endif
+
+#if !defined(GL_FLOAT_32_UNSIGNED_INT_24_8_REV)
+#define GL_FLOAT_32_UNSIGNED_INT_24_8_REV 36269
+#elif (GL_FLOAT_32_UNSIGNED_INT_24_8_REV) != (36269)
+#error "GL_FLOAT_32_UNSIGNED_INT_24_8_REV differs from the system GL headers"
+#endif
+
 #if !defined(GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_3D_ZOFFSET_EXT)
 #define GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_3D_ZOFFSET_EXT 36052
 #elif (GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_3D_ZOFFSET_EXT) != (36052)

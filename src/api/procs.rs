@@ -122,7 +122,8 @@ mod tests {
                 .flat_map(|(n, t)| [format!("glWindowPos{n}{t}ARB"), format!("glWindowPos{n}{t}vARB")])
                 .collect(),
             "GL_EXT_texture3D" => list("glTexImage3DEXT glTexSubImage3DEXT"),
-            "GL_ARB_depth_texture"
+            "GL_ARB_depth_buffer_float"
+            | "GL_ARB_depth_texture"
             | "GL_ARB_shadow"
             | "GL_ARB_texture_border_clamp"
             | "GL_ARB_texture_cube_map"

@@ -155,7 +155,10 @@ pub fn renderbuffer_format(internal_format: GLenum) -> Option<Renderable> {
         GL_RGBA16F | GL_RGBA32F => Renderable::Color(Float32 { alpha: true }),
         GL_DEPTH_COMPONENT16 => Renderable::DepthStencil(Depth16),
         GL_DEPTH_COMPONENT | GL_DEPTH_COMPONENT24 => Renderable::DepthStencil(Packed24 { depth: true, stencil: false }),
-        GL_DEPTH_COMPONENT32 | GL_DEPTH_COMPONENT32F => Renderable::DepthStencil(Depth32 { stencil: false }),
+        GL_DEPTH_COMPONENT32 => Renderable::DepthStencil(Depth32 { stencil: false }),
+        // ARB_depth_buffer_float: depth stored as floats.
+        GL_DEPTH_COMPONENT32F => Renderable::DepthStencil(DepthStencilFormat::Float32 { stencil: false }),
+        GL_DEPTH32F_STENCIL8 => Renderable::DepthStencil(DepthStencilFormat::Float32 { stencil: true }),
         GL_DEPTH_STENCIL | GL_DEPTH24_STENCIL8 => Renderable::DepthStencil(Packed24 { depth: true, stencil: true }),
         // Accepted (ARB_framebuffer_object makes them color-renderable in the compatibility
         // profile) but stored as RGBA8 and reported GL_FRAMEBUFFER_UNSUPPORTED when attached.
@@ -330,9 +333,11 @@ fn completeness(
     GL_FRAMEBUFFER_COMPLETE
 }
 
-/// The depth/stencil format an f32 depth texture of `bits` renders through.
-fn depth_texture_format(bits: u32, stencil: bool) -> DepthStencilFormat {
+/// The depth/stencil format an f32 depth texture of `bits` renders through (`float`: a
+/// GL_DEPTH_COMPONENT32F / GL_DEPTH32F_STENCIL8 texture).
+fn depth_texture_format(bits: u32, stencil: bool, float: bool) -> DepthStencilFormat {
     match bits {
+        _ if float => DepthStencilFormat::Float32 { stencil },
         16 => DepthStencilFormat::Depth16,
         32 => DepthStencilFormat::Depth32 { stencil },
         _ => DepthStencilFormat::Packed24 { depth: true, stencil },
@@ -795,7 +800,10 @@ impl Context {
                 return None;
             }
             (GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, Some(_)) => match format {
-                Some(Renderable::Color(ColorFormat::Float32 { .. })) => GL_FLOAT as i32,
+                // A float depth format answers GL_FLOAT for its stencil too (Mesa: the
+                // datatype of the whole Z32F_S8 format).
+                Some(Renderable::Color(ColorFormat::Float32 { .. }))
+                | Some(Renderable::DepthStencil(DepthStencilFormat::Float32 { .. })) => GL_FLOAT as i32,
                 _ => GL_UNSIGNED_NORMALIZED as i32,
             },
             (GL_FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING, Some(_)) => GL_LINEAR as i32,
@@ -850,7 +858,7 @@ impl Context {
                 }
             }
             GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE => {
-                if color && visual.color.is_float() {
+                if (color && visual.color.is_float()) || (!color && visual.depth_stencil.is_float_depth()) {
                     GL_FLOAT as i32
                 } else {
                     GL_UNSIGNED_NORMALIZED as i32
@@ -889,7 +897,14 @@ impl Context {
                     }
                     let base = l.info.base;
                     let (format, supported) = if base == BaseFormat::Depth {
-                        (Renderable::DepthStencil(depth_texture_format(l.info.bits[0], l.info.has_stencil())), true)
+                        (
+                            Renderable::DepthStencil(depth_texture_format(
+                                l.info.bits[0],
+                                l.info.has_stencil(),
+                                l.info.float_depth,
+                            )),
+                            true,
+                        )
                     } else {
                         let alpha = l.info.bits[3] > 0;
                         let rgb = matches!(base, BaseFormat::Rgb | BaseFormat::Rgba);
@@ -1232,8 +1247,8 @@ impl Context {
             return None;
         };
         let mut buffer = depth_stencil_buffer(format, width, height).ok()?;
-        let max = crate::framebuffer::format::unorm_max(format.depth_bits()) as f64;
-        let fixed = |d: f32| (d as f64 * max).round() as u32;
+        let encoding = format.depth_encoding();
+        let fixed = |d: f32| encoding.encode_f32(d);
         let copied = self.with_texture_slice(attachment, |image, area| {
             let Texels::Depth(texels) = &image.texels else { return false };
             let texels = &texels[layer * area..(layer + 1) * area];
@@ -1299,7 +1314,7 @@ impl Context {
 
     fn store_texture_depth(&mut self, attachment: Attachment, buffer: &DepthStencilBuffer) {
         let Attachment::Texture { layer, .. } = attachment else { return };
-        let bits = buffer.depth_bits();
+        let encoding = buffer.depth_encoding();
         self.with_texture_image_mut(attachment, |image, _| {
             let (width, height) = (image.width, image.height);
             let mut values = Vec::new();
@@ -1309,7 +1324,7 @@ impl Context {
             let area = width * height;
             if let Texels::Depth(texels) = &mut image.texels {
                 for (t, &v) in texels[layer * area..(layer + 1) * area].iter_mut().zip(&values) {
-                    *t = crate::pixel::convert::depth_to_float(v, bits);
+                    *t = encoding.decode(v);
                 }
             }
             if let Some(plane) = image.stencil.get_mut(layer * area..(layer + 1) * area) {
@@ -1348,15 +1363,15 @@ impl Context {
         }
         let (read, draw) = (self.read_config(), self.draw_config());
         let (rds, dds) = (read.depth_stencil, draw.depth_stencil);
-        // Depth/stencil blits need the same format in both (when both have the buffer).
-        let depth_mismatch = mask & GL_DEPTH_BUFFER_BIT != 0
-            && rds.depth_bits() > 0
-            && dds.depth_bits() > 0
-            && (rds.depth_bits() != dds.depth_bits() || rds.stencil_bits() != dds.stencil_bits());
-        let stencil_mismatch = mask & GL_STENCIL_BUFFER_BIT != 0
-            && rds.stencil_bits() > 0
-            && dds.stencil_bits() > 0
-            && (rds.depth_bits() != dds.depth_bits() || rds.stencil_bits() != dds.stencil_bits());
+        // Depth/stencil blits need the same format in both (when both have the buffer): the
+        // same bits and the same type, so float and fixed-point depth do not blit into each
+        // other (GL_INVALID_OPERATION, as Mesa checks the formats' datatypes too).
+        let differ = rds.depth_bits() != dds.depth_bits()
+            || rds.stencil_bits() != dds.stencil_bits()
+            || rds.is_float_depth() != dds.is_float_depth();
+        let depth_mismatch = mask & GL_DEPTH_BUFFER_BIT != 0 && rds.depth_bits() > 0 && dds.depth_bits() > 0 && differ;
+        let stencil_mismatch =
+            mask & GL_STENCIL_BUFFER_BIT != 0 && rds.stencil_bits() > 0 && dds.stencil_bits() > 0 && differ;
         if depth_mismatch || stencil_mismatch {
             return self.error(GL_INVALID_OPERATION);
         }

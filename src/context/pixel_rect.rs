@@ -235,13 +235,21 @@ impl Context {
                 format: ClientFormat::Rgba,
             }));
         } else if format == ClientFormat::DepthStencil {
-            // GL_UNSIGNED_INT_24_8 (the only type GL 2.1 and EXT_packed_depth_stencil allow):
-            // depth in the high 24 bits, stencil in the low 8.
+            // GL_UNSIGNED_INT_24_8 (EXT_packed_depth_stencil): depth in the high 24 bits,
+            // stencil in the low 8; GL_FLOAT_32_UNSIGNED_INT_24_8_REV (ARB_depth_buffer_float):
+            // a float depth, then a word with the stencil index.
             let (mut depths, mut stencil) = (Vec::new(), Vec::new());
             depths.try_reserve_exact(count).map_err(|_| GL_OUT_OF_MEMORY)?;
             stencil.try_reserve_exact(count).map_err(|_| GL_OUT_OF_MEMORY)?;
             for row in 0..h {
                 for col in 0..w {
+                    if client_type == ClientType::Float32UnsignedInt24_8Rev {
+                        let (depth, index) = pixel(col, row)
+                            .map_or((0.0, 0), |b| crate::pixel::depth::unpack_depth_stencil_float(b, modes.swap_bytes));
+                        depths.push(depth);
+                        stencil.push(index);
+                        continue;
+                    }
                     let word = pixel(col, row).map_or(0, |b| {
                         let word = u32::from_ne_bytes([b[0], b[1], b[2], b[3]]);
                         if modes.swap_bytes {

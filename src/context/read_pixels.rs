@@ -29,7 +29,9 @@ use crate::gl::enums::*;
 use crate::gl::types::GLenum;
 use crate::pixel::color::{ColorPlan, ColorScratch};
 use crate::pixel::convert::pixel_store_round;
-use crate::pixel::depth::{pack_depth_row, pack_depth_stencil_row, pack_stencil_bitmap_row, pack_stencil_row};
+use crate::pixel::depth::{
+    pack_depth_row, pack_depth_stencil_float_row, pack_depth_stencil_row, pack_stencil_bitmap_row, pack_stencil_row,
+};
 use crate::pixel::layout::ImageLayout;
 use crate::pixel::{ClientFormat, ClientType, PackModes, PackedType};
 use std::ops::Range;
@@ -70,7 +72,9 @@ pub(crate) fn read_format(format: GLenum) -> Option<ReadFormat> {
 /// texture image commands.
 pub(crate) fn unknown_format_error(ty: GLenum) -> GLenum {
     match client_type(ty) {
-        Some(ClientType::Packed(_) | ClientType::UnsignedInt24_8) => GL_INVALID_OPERATION,
+        Some(ClientType::Packed(_) | ClientType::UnsignedInt24_8 | ClientType::Float32UnsignedInt24_8Rev) => {
+            GL_INVALID_OPERATION
+        }
         _ => GL_INVALID_ENUM,
     }
 }
@@ -88,6 +92,7 @@ pub(crate) fn client_type(ty: GLenum) -> Option<ClientType> {
         GL_HALF_FLOAT => ClientType::HalfFloat,
         GL_BITMAP => ClientType::Bitmap,
         GL_UNSIGNED_INT_24_8 => ClientType::UnsignedInt24_8,
+        GL_FLOAT_32_UNSIGNED_INT_24_8_REV => ClientType::Float32UnsignedInt24_8Rev,
         GL_UNSIGNED_BYTE_3_3_2 => ClientType::Packed(UnsignedByte332),
         GL_UNSIGNED_BYTE_2_3_3_REV => ClientType::Packed(UnsignedByte233Rev),
         GL_UNSIGNED_SHORT_5_6_5 => ClientType::Packed(UnsignedShort565),
@@ -108,7 +113,10 @@ pub(crate) fn client_type(ty: GLenum) -> Option<ClientType> {
 /// desktop GL, restricted to what GL 2.1 and ARB_half_float_pixel define).
 pub(crate) fn check_format_and_type(format: ReadFormat, ty: GLenum) -> Result<ClientType, GLenum> {
     use ClientFormat::*;
-    if format == ReadFormat::Client(DepthStencil) && ty != GL_UNSIGNED_INT_24_8 {
+    if format == ReadFormat::Client(DepthStencil)
+        && ty != GL_UNSIGNED_INT_24_8
+        && ty != GL_FLOAT_32_UNSIGNED_INT_24_8_REV
+    {
         return Err(GL_INVALID_ENUM);
     }
     let ty = client_type(ty).ok_or(GL_INVALID_ENUM)?;
@@ -118,8 +126,10 @@ pub(crate) fn check_format_and_type(format: ReadFormat, ty: GLenum) -> Result<Cl
         (ClientType::Bitmap, _) => return Err(GL_INVALID_ENUM),
         (ClientType::Packed(packed), ReadFormat::Client(f)) if packed.accepts(f) => return Ok(ty),
         (ClientType::Packed(_), _) => return Err(GL_INVALID_OPERATION),
-        (ClientType::UnsignedInt24_8, ReadFormat::Client(DepthStencil)) => return Ok(ty),
-        (ClientType::UnsignedInt24_8, _) => return Err(GL_INVALID_OPERATION),
+        (ClientType::UnsignedInt24_8 | ClientType::Float32UnsignedInt24_8Rev, ReadFormat::Client(DepthStencil)) => {
+            return Ok(ty)
+        }
+        (ClientType::UnsignedInt24_8 | ClientType::Float32UnsignedInt24_8Rev, _) => return Err(GL_INVALID_OPERATION),
         _ => {}
     }
     // Every remaining type is an array type, which every remaining format accepts.
@@ -359,7 +369,7 @@ fn read_into(fb: &Framebuffer, slot: Option<crate::framebuffer::ColorSlot>, job:
     match job.format {
         ClientFormat::DepthComponent | ClientFormat::StencilIndex | ClientFormat::DepthStencil => {
             let ds = fb.depth_stencil();
-            let bits = ds.depth_bits();
+            let encoding = ds.depth_encoding();
             let (mut depth, mut stencil) = (Vec::with_capacity(cols), Vec::with_capacity(cols));
             for (j, y) in (rect.y0..rect.y1).enumerate() {
                 let Some(start) = row_start(j) else { return };
@@ -387,12 +397,17 @@ fn read_into(fb: &Framebuffer, slot: Option<crate::framebuffer::ColorSlot>, job:
                     }
                     (ClientFormat::DepthComponent, ty) => {
                         if let Some(o) = out.get_mut(start..start + row_bytes) {
-                            pack_depth_row(&depth, bits, ty, swap, o);
+                            pack_depth_row(&depth, encoding, ty, swap, o);
+                        }
+                    }
+                    (_, ClientType::Float32UnsignedInt24_8Rev) => {
+                        if let Some(o) = out.get_mut(start..start + row_bytes) {
+                            pack_depth_stencil_float_row(&depth, encoding, &stencil, swap, o);
                         }
                     }
                     _ => {
                         if let Some(o) = out.get_mut(start..start + row_bytes) {
-                            pack_depth_stencil_row(&depth, bits, &stencil, swap, o);
+                            pack_depth_stencil_row(&depth, encoding, &stencil, swap, o);
                         }
                     }
                 }

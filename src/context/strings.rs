@@ -58,6 +58,12 @@ pub const VERSION: &str = concat!("1.5 tessera ", env!("CARGO_PKG_VERSION"), "\0
 // | GL_ARB_clip_control  | glClipControl, GL_CLIP_ORIGIN/DEPTH_MODE queries, GL_TRANSFORM_BIT | works | context/transform.rs; capi clip_control |
 // |                      | GL_ZERO_TO_ONE clipping and depth mapping (draws, glRasterPos) | works | vertex/clip.rs, context/draw.rs, raster_pos.rs; capi clip_control (reversed-Z scene) |
 // |                      | GL_UPPER_LEFT: y mirrored, facing mirrored    | works | context/draw.rs; capi clip_control (culling) |
+// | GL_ARB_depth_buffer_float | GL_DEPTH_COMPONENT32F, GL_DEPTH32F_STENCIL8 renderbuffers (float depth, clamped to [0, 1]) | works | framebuffer/format.rs DepthEncoding; capi depth_buffer_float |
+// |                      | the same as depth textures (sampling, compare, glGetTexImage, glCopyTexImage, render to texture) | works | context/texture.rs; capi depth_buffer_float |
+// |                      | glReadPixels/glDrawPixels/glTexImage of depth as GL_FLOAT (exact), clears, GL_DEPTH_BITS 32, component type GL_FLOAT | works | pixel/depth.rs; capi depth_buffer_float |
+// |                      | polygon offset r = 2^(e − 23) of the largest depth | works | context/draw.rs float_depth_resolution; capi depth_buffer_float |
+// |                      | glBlitFramebuffer float ↔ fixed depth: GL_INVALID_OPERATION (formats differ, as Mesa) | works | capi depth_buffer_float |
+// |                      | GL_FLOAT_32_UNSIGNED_INT_24_8_REV pixel type  | see below | |
 //
 // Outside these lists but needed by every version: GL 1.0's evaluators (capi evaluators),
 // polygon/line/point smoothing (capi smooth_primitives), and color-index pixel data in RGBA
@@ -73,6 +79,7 @@ pub const VERSION: &str = concat!("1.5 tessera ", env!("CARGO_PKG_VERSION"), "\0
 /// ones tessera implements), GL_EXT_abgr (GL_ABGR_EXT is not a pixel format here).
 pub const EXTENSIONS: &[&str] = &[
     "GL_ARB_clip_control",
+    "GL_ARB_depth_buffer_float",
     "GL_ARB_depth_clamp",
     "GL_ARB_depth_texture",
     "GL_ARB_draw_buffers",

@@ -18,6 +18,7 @@
 //! tables (GL 2.1 §3.6.5, "Color Index Lookup"); glGetTexImage cannot return indices.
 use super::names::{NameTable, OutOfNames};
 use super::Context;
+use crate::framebuffer::format::DepthEncoding;
 use crate::gl::enums::*;
 use crate::gl::types::GLenum;
 use crate::pixel::layout::VolumeLayout;
@@ -50,12 +51,24 @@ pub struct FormatInfo {
     pub bits: [u32; 4],
     /// GL_TEXTURE_RED/GREEN/BLUE/ALPHA/LUMINANCE/INTENSITY/DEPTH/STENCIL_SIZE.
     pub sizes: [i32; 8],
+    /// Depth kept as floats, only clamped to [0, 1] (ARB_depth_buffer_float's
+    /// GL_DEPTH_COMPONENT32F and GL_DEPTH32F_STENCIL8), instead of quantized to `bits[0]`.
+    pub float_depth: bool,
 }
 
 impl FormatInfo {
     /// Whether images of the format keep stencil beside depth (GL_DEPTH_STENCIL formats).
     pub fn has_stencil(&self) -> bool {
         self.sizes[7] > 0
+    }
+
+    /// A depth value as a texel of this format stores it.
+    pub fn store_depth(&self, value: f32) -> f32 {
+        if self.float_depth {
+            f32::from_bits(crate::framebuffer::format::float_depth_bits(value))
+        } else {
+            quantize_depth(value, self.bits[0])
+        }
     }
 }
 
@@ -67,11 +80,19 @@ pub fn format_info(internal_format: i32) -> Option<FormatInfo> {
         base,
         bits: [r, g, b, a],
         sizes: [r as i32, g as i32, b as i32, a as i32, 0, 0, 0, 0],
+        float_depth: false,
     };
     let lum = |l: u32, a: u32| FormatInfo {
         base: if a > 0 { LuminanceAlpha } else { Luminance },
         bits: [l, l, l, a],
         sizes: [0, 0, 0, a as i32, l as i32, 0, 0, 0],
+        float_depth: false,
+    };
+    let depth = |bits: u32, stencil: i32, float_depth: bool| FormatInfo {
+        base: Depth,
+        bits: [bits, 0, 0, 0],
+        sizes: [0, 0, 0, 0, 0, 0, bits as i32, stencil],
+        float_depth,
     };
     Some(match f {
         1 | GL_LUMINANCE | GL_LUMINANCE8 | GL_LUMINANCE12 | GL_LUMINANCE16 | GL_COMPRESSED_LUMINANCE => lum(8, 0),
@@ -87,7 +108,7 @@ pub fn format_info(internal_format: i32) -> Option<FormatInfo> {
         GL_LUMINANCE4_ALPHA4 => lum(4, 4),
         GL_ALPHA | GL_ALPHA4 | GL_ALPHA8 | GL_ALPHA12 | GL_ALPHA16 | GL_COMPRESSED_ALPHA => rgba(Alpha, 0, 0, 0, 8),
         GL_INTENSITY | GL_INTENSITY4 | GL_INTENSITY8 | GL_INTENSITY12 | GL_INTENSITY16 | GL_COMPRESSED_INTENSITY => {
-            FormatInfo { base: Intensity, bits: [8; 4], sizes: [0, 0, 0, 0, 0, 8, 0, 0] }
+            FormatInfo { base: Intensity, bits: [8; 4], sizes: [0, 0, 0, 0, 0, 8, 0, 0], float_depth: false }
         }
         3 | GL_RGB | GL_RGB8 | GL_RGB10 | GL_RGB12 | GL_RGB16 | GL_COMPRESSED_RGB => rgba(Rgb, 8, 8, 8, 0),
         GL_R3_G3_B2 => rgba(Rgb, 3, 3, 2, 0),
@@ -97,15 +118,14 @@ pub fn format_info(internal_format: i32) -> Option<FormatInfo> {
         GL_RGBA2 | GL_RGBA4 => rgba(Rgba, 4, 4, 4, 4),
         GL_RGB5_A1 => rgba(Rgba, 5, 5, 5, 1),
         GL_RGB10_A2 => rgba(Rgba, 8, 8, 8, 2),
-        GL_DEPTH_COMPONENT | GL_DEPTH_COMPONENT24 => {
-            FormatInfo { base: Depth, bits: [24, 0, 0, 0], sizes: [0, 0, 0, 0, 0, 0, 24, 0] }
-        }
-        GL_DEPTH_COMPONENT16 => FormatInfo { base: Depth, bits: [16, 0, 0, 0], sizes: [0, 0, 0, 0, 0, 0, 16, 0] },
-        GL_DEPTH_COMPONENT32 => FormatInfo { base: Depth, bits: [32, 0, 0, 0], sizes: [0, 0, 0, 0, 0, 0, 32, 0] },
+        GL_DEPTH_COMPONENT | GL_DEPTH_COMPONENT24 => depth(24, 0, false),
+        GL_DEPTH_COMPONENT16 => depth(16, 0, false),
+        GL_DEPTH_COMPONENT32 => depth(32, 0, false),
         // GL_EXT_packed_depth_stencil: 24-bit depth and 8-bit stencil (Mesa's Z24_S8).
-        GL_DEPTH_STENCIL | GL_DEPTH24_STENCIL8 => {
-            FormatInfo { base: Depth, bits: [24, 0, 0, 0], sizes: [0, 0, 0, 0, 0, 0, 24, 8] }
-        }
+        GL_DEPTH_STENCIL | GL_DEPTH24_STENCIL8 => depth(24, 8, false),
+        // ARB_depth_buffer_float (Mesa's Z32_FLOAT and Z32_FLOAT_S8X24_UINT).
+        GL_DEPTH_COMPONENT32F => depth(32, 0, true),
+        GL_DEPTH32F_STENCIL8 => depth(32, 8, true),
         _ => return None,
     })
 }
@@ -299,7 +319,9 @@ pub(super) fn check_texture_upload_format_type(
     // Every array type and GL_BITMAP (GL_HALF_FLOAT too, with ARB_half_float_pixel, as in Mesa).
     match super::read_pixels::client_type(ty) {
         None => Err(GL_INVALID_ENUM),
-        Some(ClientType::Packed(_) | ClientType::UnsignedInt24_8) => Err(GL_INVALID_OPERATION),
+        Some(ClientType::Packed(_) | ClientType::UnsignedInt24_8 | ClientType::Float32UnsignedInt24_8Rev) => {
+            Err(GL_INVALID_OPERATION)
+        }
         Some(t) => Ok((ClientFormat::StencilIndex, t)),
     }
 }
@@ -366,8 +388,8 @@ impl IndexToRgba {
 /// then the format's validity. The GL 2.1 spec names the errors but not their order.
 pub(super) fn check_texture_format_type(format: GLenum, ty: GLenum) -> Result<(ClientFormat, ClientType), GLenum> {
     use super::read_pixels::{read_format, unknown_format_error, ReadFormat};
-    if format == GL_DEPTH_STENCIL && ty != GL_UNSIGNED_INT_24_8 {
-        // GL_DEPTH_STENCIL data has the one packed type (Mesa: GL_INVALID_ENUM otherwise).
+    if format == GL_DEPTH_STENCIL && ty != GL_UNSIGNED_INT_24_8 && ty != GL_FLOAT_32_UNSIGNED_INT_24_8_REV {
+        // GL_DEPTH_STENCIL data has the two packed types (Mesa: GL_INVALID_ENUM otherwise).
         return Err(GL_INVALID_ENUM);
     }
     let client_type = super::read_pixels::client_type(ty).ok_or(GL_INVALID_ENUM)?;
@@ -377,8 +399,11 @@ pub(super) fn check_texture_format_type(format: GLenum, ty: GLenum) -> Result<(C
         (ClientType::Bitmap, _) => return Err(GL_INVALID_ENUM),
         (ClientType::Packed(p), Some(ReadFormat::Client(f))) if p.accepts(f) => {}
         (ClientType::Packed(_), _) => return Err(GL_INVALID_OPERATION),
-        (ClientType::UnsignedInt24_8, Some(ReadFormat::Client(ClientFormat::DepthStencil))) => {}
-        (ClientType::UnsignedInt24_8, _) => return Err(GL_INVALID_OPERATION),
+        (
+            ClientType::UnsignedInt24_8 | ClientType::Float32UnsignedInt24_8Rev,
+            Some(ReadFormat::Client(ClientFormat::DepthStencil)),
+        ) => {}
+        (ClientType::UnsignedInt24_8 | ClientType::Float32UnsignedInt24_8Rev, _) => return Err(GL_INVALID_OPERATION),
         _ => {}
     }
     let Some(f) = texture_client_format(format) else {
@@ -977,11 +1002,10 @@ impl Context {
                 if info.base == BaseFormat::Depth {
                     depths.clear();
                     fb.depth_stencil().read_depth_row(sy, x0, x1, &mut depths);
-                    let bits = fb.depth_stencil().depth_bits();
+                    let encoding = fb.depth_stencil().depth_encoding();
                     if let Texels::Depth(t) = &mut image.texels {
                         for (k, &d) in depths.iter().enumerate() {
-                            let f = crate::pixel::convert::depth_to_float(d, bits);
-                            t[start + k] = quantize_depth(f, info.bits[0]);
+                            t[start + k] = info.store_depth(encoding.decode(d));
                         }
                     }
                     if info.has_stencil() {
@@ -1315,10 +1339,40 @@ impl Context {
                 let start = image.index(0, y, z);
                 if cf == ClientFormat::DepthStencil {
                     let Texels::Depth(t) = &image.texels else { continue };
-                    let fixed: Vec<u32> =
-                        t[start..start + w].iter().map(|&d| (d as f64 * 16_777_215.0).round() as u32).collect();
                     let stencil = image.stencil.get(start..start + w).unwrap_or(&[]);
-                    crate::pixel::depth::pack_depth_stencil_row(&fixed, 24, stencil, swap, row);
+                    let texels = &t[start..start + w];
+                    if lv.info.float_depth || ct == ClientType::Float32UnsignedInt24_8Rev {
+                        // The texels as float depth values (a float's bit pattern is its
+                        // DepthEncoding::Float value).
+                        let bits: Vec<u32> = texels.iter().map(|d| d.to_bits()).collect();
+                        if ct == ClientType::Float32UnsignedInt24_8Rev {
+                            crate::pixel::depth::pack_depth_stencil_float_row(
+                                &bits,
+                                DepthEncoding::Float,
+                                stencil,
+                                swap,
+                                row,
+                            );
+                        } else {
+                            crate::pixel::depth::pack_depth_stencil_row(
+                                &bits,
+                                DepthEncoding::Float,
+                                stencil,
+                                swap,
+                                row,
+                            );
+                        }
+                    } else {
+                        let fixed: Vec<u32> =
+                            texels.iter().map(|&d| (d as f64 * 16_777_215.0).round() as u32).collect();
+                        crate::pixel::depth::pack_depth_stencil_row(
+                            &fixed,
+                            DepthEncoding::Unorm(24),
+                            stencil,
+                            swap,
+                            row,
+                        );
+                    }
                 } else {
                     pack_texels_row(&image, start, w, cf, ct, swap, row);
                 }
@@ -1401,6 +1455,15 @@ fn store_client(
                         t[start + k] = texel8(info, *c);
                     }
                 }
+                Texels::Depth(t) if cf == ClientFormat::DepthStencil && ct == ClientType::Float32UnsignedInt24_8Rev => {
+                    for (k, pixel) in row.chunks_exact(8).take(w).enumerate() {
+                        let (depth, index) = crate::pixel::depth::unpack_depth_stencil_float(pixel, swap);
+                        t[start + k] = info.store_depth(depth);
+                        if let Some(s) = image.stencil.get_mut(start + k) {
+                            *s = index;
+                        }
+                    }
+                }
                 Texels::Depth(t) if cf == ClientFormat::DepthStencil => {
                     let stencils = image.stencil.get_mut(start..).unwrap_or_default();
                     let n = unpack_depth_stencil_row(swap, row, &mut depths, stencils);
@@ -1409,7 +1472,7 @@ fn store_client(
                 Texels::Depth(t) => {
                     unpack_depth_row(ct, swap, row, &mut depths);
                     for (k, &d) in depths.iter().enumerate() {
-                        t[start + k] = quantize_depth(d, info.bits[0]);
+                        t[start + k] = info.store_depth(d);
                     }
                 }
             }

@@ -25,7 +25,7 @@ pub mod pipeline;
 pub mod stencil;
 
 use crate::framebuffer::band::{ColorBand, DepthBand};
-use crate::framebuffer::format::{float_to_unorm, fragment_depth_to_fixed};
+use crate::framebuffer::format::float_to_unorm;
 use crate::gl::CompareFunc;
 use blend::Blend;
 use logic_op::LogicOp;
@@ -231,7 +231,9 @@ pub fn stencil_depth_test(
     let values = &mut values[..n];
     match band {
         DepthBand::Packed24(px) => stencil::load_packed(&px[row_start..row_start + n], values),
-        DepthBand::Depth32(_, Some(s)) => values.copy_from_slice(&s[row_start..row_start + n]),
+        DepthBand::Depth32(_, Some(s)) | DepthBand::Float32(_, Some(s)) => {
+            values.copy_from_slice(&s[row_start..row_start + n])
+        }
         // No stencil bits: the context compiles no stencil test then.
         _ => return live,
     }
@@ -241,7 +243,9 @@ pub fn stencil_depth_test(
     });
     match band {
         DepthBand::Packed24(px) => stencil::store_packed(values, &mut px[row_start..row_start + n]),
-        DepthBand::Depth32(_, Some(s)) => s[row_start..row_start + n].copy_from_slice(values),
+        DepthBand::Depth32(_, Some(s)) | DepthBand::Float32(_, Some(s)) => {
+            s[row_start..row_start + n].copy_from_slice(values)
+        }
         _ => {}
     }
     pass
@@ -266,17 +270,18 @@ pub(crate) fn passes(func: CompareFunc, fragment: u32, stored: u32) -> bool {
 /// row of `depth` starting at `offset`, updating stored depth where the test passes and
 /// writing is enabled. `z` holds window-space depths. Returns the fragments that pass.
 pub fn depth_test(test: &DepthTest, depth: &mut DepthBand<'_>, row_start: usize, z: &[f32], live: u64) -> u64 {
+    use crate::framebuffer::format::DepthEncoding::{Float, Unorm};
     // One loop per comparison function and format, so that the comparison is not chosen
     // again at every pixel.
     macro_rules! run_with {
-        ($px:expr, $bits:expr, $read:expr, $write:expr, $cmp:expr) => {{
+        ($px:expr, $encoding:expr, $read:expr, $write:expr, $cmp:expr) => {{
             let mut pass = 0u64;
             let cells = &mut $px[row_start..row_start + z.len()];
             for (i, (&zf, cell)) in z.iter().zip(cells.iter_mut()).enumerate() {
                 if live & (1 << i) == 0 {
                     continue;
                 }
-                let frag = fragment_depth_to_fixed(zf, $bits);
+                let frag = $encoding.encode_fragment(zf);
                 #[allow(clippy::redundant_closure_call)]
                 let stored = ($read)(*cell);
                 #[allow(clippy::redundant_closure_call)]
@@ -306,11 +311,13 @@ pub fn depth_test(test: &DepthTest, depth: &mut DepthBand<'_>, row_start: usize,
     }
     match depth {
         DepthBand::None => live,
-        DepthBand::Depth16(px) => run!(px, 16, |v: u16| v as u32, |c: &mut u16, f: u32| *c = f as u16),
+        DepthBand::Depth16(px) => run!(px, Unorm(16), |v: u16| v as u32, |c: &mut u16, f: u32| *c = f as u16),
         DepthBand::Packed24(px) => {
-            run!(px, 24, |v: u32| v & 0x00ff_ffff, |c: &mut u32, f: u32| *c = (*c & 0xff00_0000) | f)
+            run!(px, Unorm(24), |v: u32| v & 0x00ff_ffff, |c: &mut u32, f: u32| *c = (*c & 0xff00_0000) | f)
         }
-        DepthBand::Depth32(px, _) => run!(px, 32, |v: u32| v, |c: &mut u32, f: u32| *c = f),
+        DepthBand::Depth32(px, _) => run!(px, Unorm(32), |v: u32| v, |c: &mut u32, f: u32| *c = f),
+        // Float bit patterns of values in [0, 1] compare as the values: same integer test.
+        DepthBand::Float32(px, _) => run!(px, Float, |v: u32| v, |c: &mut u32, f: u32| *c = f),
     }
 }
 
@@ -408,6 +415,7 @@ pub fn write_uniform_color(
 mod tests {
     use super::stencil::StencilOp as O;
     use super::*;
+    use crate::framebuffer::format::fragment_depth_to_fixed;
 
     const FACE: StencilFace = StencilFace {
         func: CompareFunc::Equal,

@@ -22,6 +22,8 @@ pub enum DepthBand<'a> {
     Depth16(&'a mut [u16]),
     Packed24(&'a mut [u32]),
     Depth32(&'a mut [u32], Option<&'a mut [u8]>),
+    /// Float depth as bit patterns ([`super::format::DepthEncoding::Float`]), stencil plane.
+    Float32(&'a mut [u32], Option<&'a mut [u8]>),
 }
 
 /// One color target of a band: the buffer's pixels and its format.
@@ -104,6 +106,7 @@ impl Framebuffer {
                 band.colors.push(ColorTarget { slot, format, pixels });
             }
         }
+        let float_depth = depth_layer.format().is_float_depth();
         let depth_pieces: Vec<DepthBand<'_>> = match depth_layer.pixels_mut() {
             DepthStencilPixels::None => Vec::new(),
             DepthStencilPixels::Depth16(px) => split(px, chunk).into_iter().map(DepthBand::Depth16).collect(),
@@ -112,7 +115,14 @@ impl Framebuffer {
                 let mut stencil_pieces = stencil.as_mut().map(|s| split(s, chunk).into_iter());
                 split(px, chunk)
                     .into_iter()
-                    .map(|d| DepthBand::Depth32(d, stencil_pieces.as_mut().and_then(|s| s.next())))
+                    .map(|d| {
+                        let stencil = stencil_pieces.as_mut().and_then(|s| s.next());
+                        if float_depth {
+                            DepthBand::Float32(d, stencil)
+                        } else {
+                            DepthBand::Depth32(d, stencil)
+                        }
+                    })
                     .collect()
             }
         };

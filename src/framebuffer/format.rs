@@ -4,6 +4,17 @@
 //! `round(clamp(f, 0, 1) · (2ⁿ − 1))` with ties to even (as Mesa's `_mesa_float_to_unorm`),
 //! unorm → float is `u / (2ⁿ − 1)`, and widening unorm → unorm replicates bits, which equals
 //! the exact rational conversion rounded to nearest.
+//!
+//! Depth has two encodings ([`DepthEncoding`]), chosen once per buffer: n-bit unsigned
+//! normalized integers, and single-precision floats (GL_ARB_depth_buffer_float's
+//! GL_DEPTH_COMPONENT32F and GL_DEPTH32F_STENCIL8). A float depth is kept as its IEEE bit
+//! pattern in the same u32 plane as 32-bit fixed point. Depth written to a float buffer is
+//! clamped to [0, 1] (the extension keeps the depth range clamped) and −0 is stored as +0;
+//! for non-negative floats the bit patterns order exactly as the values do, so the depth
+//! test, the stencil plane, blits between buffers of one format and every integer path
+//! stay as they are, and only the conversions into and out of the plane differ. (A
+//! separate `f32` plane would have meant a second copy of every depth loop for the same
+//! comparisons.)
 
 /// How a color buffer stores its channels. Every format stores red, green, blue and alpha;
 /// formats without alpha bits keep alpha at its maximum, so destination alpha reads 1.0.
@@ -52,6 +63,9 @@ pub enum DepthStencilFormat {
     Packed24 { depth: bool, stencil: bool },
     /// 32-bit depth, with an optional separate 8-bit stencil plane.
     Depth32 { stencil: bool },
+    /// Single-precision float depth (its bit pattern, see [`DepthEncoding::Float`]) in the
+    /// layout of `Depth32`, with an optional separate 8-bit stencil plane.
+    Float32 { stencil: bool },
 }
 
 impl DepthStencilFormat {
@@ -66,15 +80,106 @@ impl DepthStencilFormat {
                     0
                 }
             }
-            DepthStencilFormat::Depth32 { .. } => 32,
+            DepthStencilFormat::Depth32 { .. } | DepthStencilFormat::Float32 { .. } => 32,
         }
     }
 
     pub fn stencil_bits(self) -> u32 {
         match self {
-            DepthStencilFormat::Packed24 { stencil: true, .. } | DepthStencilFormat::Depth32 { stencil: true } => 8,
+            DepthStencilFormat::Packed24 { stencil: true, .. }
+            | DepthStencilFormat::Depth32 { stencil: true }
+            | DepthStencilFormat::Float32 { stencil: true } => 8,
             _ => 0,
         }
+    }
+
+    /// How depth values are stored (unorm of `depth_bits()` bits, or float).
+    pub fn depth_encoding(self) -> DepthEncoding {
+        match self {
+            DepthStencilFormat::Float32 { .. } => DepthEncoding::Float,
+            f => DepthEncoding::Unorm(f.depth_bits()),
+        }
+    }
+
+    /// Whether depth is stored as floating point.
+    pub fn is_float_depth(self) -> bool {
+        matches!(self, DepthStencilFormat::Float32 { .. })
+    }
+}
+
+/// The encoding of stored depth values: the single place where depth crosses between
+/// floats and the integers kept in depth planes. Every writer and reader of depth goes
+/// through it, so fixed-point and float buffers share one code path and the choice is
+/// made once per buffer (per draw, per read), not per pixel.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum DepthEncoding {
+    /// n-bit unsigned normalized (n = 0 for no depth, else 16, 24 or 32).
+    Unorm(u32),
+    /// The bit pattern of an f32 in [0, 1] (+0 for zero).
+    Float,
+}
+
+impl DepthEncoding {
+    /// A fragment's window-space depth (single precision) as stored: for unorm, the
+    /// product in single precision rounded to nearest even as llvmpipe's depth stores
+    /// compute it; for float, clamped to [0, 1] with −0 and NaN as +0. NaN becomes 0.
+    #[inline(always)]
+    pub fn encode_fragment(self, z: f32) -> u32 {
+        match self {
+            DepthEncoding::Unorm(bits) => fragment_depth_to_fixed(z, bits),
+            DepthEncoding::Float => float_depth_bits(z),
+        }
+    }
+
+    /// A depth value given in double precision (glClearDepth of a whole buffer) as stored.
+    #[inline]
+    pub fn encode_f64(self, depth: f64) -> u32 {
+        match self {
+            DepthEncoding::Unorm(bits) => depth_to_fixed(depth, bits),
+            DepthEncoding::Float => float_depth_bits(depth as f32),
+        }
+    }
+
+    /// A depth in single precision (texture texels, client data) as stored: unorm rounds
+    /// the exact product to nearest; float keeps the value (clamped to [0, 1]).
+    #[inline]
+    pub fn encode_f32(self, depth: f32) -> u32 {
+        match self {
+            DepthEncoding::Unorm(bits) => depth_to_fixed(depth as f64, bits),
+            DepthEncoding::Float => float_depth_bits(depth),
+        }
+    }
+
+    /// A stored value as a float in [0, 1]: `u / (2ⁿ − 1)` rounded once, or the float itself.
+    #[inline]
+    pub fn decode(self, stored: u32) -> f32 {
+        match self {
+            DepthEncoding::Unorm(bits) => unorm_to_float(stored, bits),
+            DepthEncoding::Float => f32::from_bits(stored),
+        }
+    }
+
+    /// The depth a stored value of this encoding has after storing it in `target`
+    /// (blits, copies between buffers): the bits unchanged when the encodings agree.
+    #[inline]
+    pub fn convert_to(self, stored: u32, target: DepthEncoding) -> u32 {
+        if self == target {
+            stored
+        } else {
+            target.encode_f32(self.decode(stored))
+        }
+    }
+}
+
+/// A depth as a float depth buffer stores it: clamped to [0, 1], NaN and −0 as +0, as
+/// its bit pattern (which orders as the values do).
+#[inline(always)]
+pub fn float_depth_bits(z: f32) -> u32 {
+    // `z > 0.0` is false for NaN, −0 and +0, which all store as +0.
+    if z > 0.0 {
+        z.min(1.0).to_bits()
+    } else {
+        0
     }
 }
 
@@ -168,6 +273,46 @@ pub fn unorm_widen_to_u32(value: u32, bits: u32) -> u32 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn float_depth_bit_patterns_order_as_the_values() {
+        let enc = DepthEncoding::Float;
+        // A walk over [0, 1] at a stride, plus the neighbours of 0 and 1.
+        let mut values: Vec<f32> = (0..=1.0f32.to_bits()).step_by(9973).map(f32::from_bits).collect();
+        values.extend([0.0, f32::from_bits(1), f32::MIN_POSITIVE, 1.0 - f32::EPSILON / 2.0, 1.0]);
+        values.sort_by(f32::total_cmp);
+        for pair in values.windows(2) {
+            let (a, b) = (enc.encode_fragment(pair[0]), enc.encode_fragment(pair[1]));
+            assert_eq!(pair[0].partial_cmp(&pair[1]), a.partial_cmp(&b), "{} vs {}", pair[0], pair[1]);
+            assert_eq!(enc.decode(a), pair[0], "float depth is stored exactly");
+        }
+    }
+
+    #[test]
+    fn float_depth_clamps_and_drops_negative_zero() {
+        let enc = DepthEncoding::Float;
+        assert_eq!(enc.encode_fragment(-0.0), 0, "−0 stores as +0, so −0 == +0 in the depth test");
+        assert_eq!(enc.encode_fragment(-0.0), enc.encode_fragment(0.0));
+        assert_eq!(enc.encode_fragment(-1e-30), 0);
+        assert_eq!(enc.encode_fragment(f32::NAN), 0);
+        assert_eq!(enc.encode_fragment(1.5), 1.0f32.to_bits());
+        assert_eq!(enc.encode_fragment(f32::INFINITY), 1.0f32.to_bits());
+        assert_eq!(enc.encode_f64(0.1), 0.1f32.to_bits());
+        assert_eq!(enc.decode(enc.encode_f32(1e-7)), 1e-7, "small depths are kept exactly");
+        // Depths 1e-8 apart near 0 (reversed Z, far away) stay apart in float, not in 24 bits.
+        assert!(enc.encode_fragment(1e-8) < enc.encode_fragment(2e-8));
+        assert_eq!(fragment_depth_to_fixed(1e-8, 24), fragment_depth_to_fixed(2e-8, 24));
+    }
+
+    #[test]
+    fn converting_between_encodings_goes_through_the_value() {
+        let (fixed, float) = (DepthEncoding::Unorm(24), DepthEncoding::Float);
+        assert_eq!(fixed.convert_to(0xff_ffff, float), 1.0f32.to_bits());
+        assert_eq!(float.convert_to(0.5f32.to_bits(), fixed), 0x80_0000);
+        assert_eq!(float.convert_to(0x1234_5678, float), 0x1234_5678, "same encoding: bits unchanged");
+        assert_eq!(DepthStencilFormat::Float32 { stencil: true }.depth_encoding(), float);
+        assert_eq!(DepthStencilFormat::Depth32 { stencil: false }.depth_encoding(), DepthEncoding::Unorm(32));
+    }
 
     #[test]
     fn single_precision_rounding_equals_the_double_precision_route() {

@@ -3,8 +3,8 @@
 //! Rows are stored bottom-up with no padding; pixel (x, y) is at `y * width + x`. Every
 //! allocation goes through [`alloc_filled`] so that running out of memory is an error value.
 use super::format::{
-    depth_to_fixed, float_to_unorm, float_to_unorm16_half_up, fragment_depth_to_fixed, unorm_max, unorm_to_float,
-    unorm_widen_to_u32, ColorFormat, DepthStencilFormat,
+    float_to_unorm, float_to_unorm16_half_up, unorm_to_float, unorm_widen_to_u32, ColorFormat, DepthEncoding,
+    DepthStencilFormat,
 };
 use super::{OutOfMemory, Rect};
 
@@ -295,7 +295,8 @@ pub enum DepthStencilPixels {
     Depth16(Vec<u16>),
     /// depth24 | stencil << 24
     Packed24(Vec<u32>),
-    /// 32-bit depth and an optional stencil plane.
+    /// 32-bit depth (fixed point, or float bit patterns in a `Float32` buffer) and an
+    /// optional stencil plane.
     Depth32(Vec<u32>, Option<Vec<u8>>),
 }
 
@@ -313,10 +314,12 @@ impl DepthStencilBuffer {
             DepthStencilFormat::None => DepthStencilPixels::None,
             DepthStencilFormat::Depth16 => DepthStencilPixels::Depth16(alloc_filled(pixels, 0)?),
             DepthStencilFormat::Packed24 { .. } => DepthStencilPixels::Packed24(alloc_filled(pixels, 0)?),
-            DepthStencilFormat::Depth32 { stencil } => DepthStencilPixels::Depth32(
-                alloc_filled(pixels, 0)?,
-                if stencil { Some(alloc_filled(pixels, 0)?) } else { None },
-            ),
+            DepthStencilFormat::Depth32 { stencil } | DepthStencilFormat::Float32 { stencil } => {
+                DepthStencilPixels::Depth32(
+                    alloc_filled(pixels, 0)?,
+                    if stencil { Some(alloc_filled(pixels, 0)?) } else { None },
+                )
+            }
         };
         Ok(DepthStencilBuffer { format, width, pixels: storage })
     }
@@ -358,11 +361,12 @@ impl DepthStencilBuffer {
         // partial (scissored) clear as a quad at NDC depth 2d − 1, which the viewport maps
         // back in single precision before the fragment depth store: 0.1 clears a 16-bit
         // buffer to 0x199a, a scissored part of it to 0x1999 (matches Mesa on 4082 samples).
+        let encoding = self.format.depth_encoding();
         let value = if whole_buffer {
-            depth_to_fixed(depth, bits)
+            encoding.encode_f64(depth)
         } else {
             let ndc = depth as f32 * 2.0 - 1.0;
-            fragment_depth_to_fixed(ndc * 0.5 + 0.5, bits)
+            encoding.encode_fragment(ndc * 0.5 + 0.5)
         };
         let width = self.width;
         for y in rect.y0..rect.y1 {
@@ -416,7 +420,7 @@ impl DepthStencilBuffer {
         }
     }
 
-    /// Reads depth of `[x0, x1)` in row `y` as n-bit fixed point values (n = depth bits).
+    /// Reads depth of `[x0, x1)` in row `y` as stored (see [`Self::depth_encoding`]).
     pub fn read_depth_row(&self, y: i32, x0: i32, x1: i32, out: &mut Vec<u32>) {
         let r = span(self.width, y, x0, x1);
         match &self.pixels {
@@ -437,10 +441,14 @@ impl DepthStencilBuffer {
         }
     }
 
-    /// Depth as a float in [0, 1] from an n-bit fixed point value.
+    /// Depth as a float in [0, 1] from a stored value.
     pub fn depth_to_float(&self, value: u32) -> f32 {
-        let bits = self.depth_bits();
-        (value as f64 / unorm_max(bits) as f64) as f32
+        self.format.depth_encoding().decode(value)
+    }
+
+    /// How the values [`Self::read_depth_row`] returns encode depth.
+    pub fn depth_encoding(&self) -> DepthEncoding {
+        self.format.depth_encoding()
     }
 }
 
@@ -961,6 +969,25 @@ mod color_tests {
         depth.clear_depth(Rect::from_xywh(0, 0, 2, 2), 0.1);
         depth.read_depth_row(0, 0, 1, &mut row);
         assert_eq!(row, vec![0x199a, 0x1999]);
+    }
+
+    #[test]
+    fn float_depth_clears_store_the_float_and_keep_stencil() {
+        let mut ds = DepthStencilBuffer::new(DepthStencilFormat::Float32 { stencil: true }, 4, 16).unwrap();
+        ds.clear_stencil(Rect::from_xywh(0, 0, 4, 4), 0x5a, 0xff);
+        ds.clear_depth(Rect::from_xywh(0, 0, 4, 4), 0.1);
+        let mut row = Vec::new();
+        ds.read_depth_row(0, 0, 1, &mut row);
+        assert_eq!(row, vec![0.1f32.to_bits()], "a whole clear stores 0.1f itself");
+        assert_eq!(ds.depth_to_float(row[0]), 0.1);
+        ds.clear_depth(Rect::from_xywh(0, 0, 2, 2), 2.0);
+        ds.clear_depth(Rect::from_xywh(2, 0, 2, 2), -1.0);
+        row.clear();
+        ds.read_depth_row(0, 0, 4, &mut row);
+        assert_eq!(row, vec![1.0f32.to_bits(), 1.0f32.to_bits(), 0, 0], "clears clamp to [0, 1]");
+        let mut stencil = Vec::new();
+        ds.read_stencil_row(0, 0, 4, &mut stencil);
+        assert_eq!(stencil, vec![0x5a; 4]);
     }
 
     #[test]

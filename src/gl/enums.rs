@@ -1018,7 +1018,10 @@ pub const GL_RGBA16F: GLenum = 0x881A;
 pub const GL_RGB16F: GLenum = 0x881B;
 pub const GL_RGBA32F: GLenum = 0x8814;
 pub const GL_RGB32F: GLenum = 0x8815;
+// ARB_depth_buffer_float: its two internal formats and its packed pixel type.
 pub const GL_DEPTH_COMPONENT32F: GLenum = 0x8CAC;
+pub const GL_DEPTH32F_STENCIL8: GLenum = 0x8CAD;
+pub const GL_FLOAT_32_UNSIGNED_INT_24_8_REV: GLenum = 0x8DAD;
 pub const GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_3D_ZOFFSET_EXT: GLenum = 0x8CD4;
 pub const GL_DEPTH_STENCIL_EXT: GLenum = 0x84F9;
 pub const GL_UNSIGNED_INT_24_8_EXT: GLenum = 0x84FA;

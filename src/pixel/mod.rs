@@ -89,6 +89,9 @@ pub enum ClientType {
     Bitmap,
     /// GL_UNSIGNED_INT_24_8: depth in the high 24 bits, stencil in the low 8.
     UnsignedInt24_8,
+    /// GL_FLOAT_32_UNSIGNED_INT_24_8_REV (ARB_depth_buffer_float): a float depth, then a
+    /// 32-bit word with the stencil index in its low 8 bits (the other 24 unused).
+    Float32UnsignedInt24_8Rev,
 }
 
 impl ClientType {
@@ -99,6 +102,7 @@ impl ClientType {
             UnsignedByte | Byte => 1,
             UnsignedShort | Short | HalfFloat => 2,
             UnsignedInt | Int | Float | UnsignedInt24_8 => 4,
+            Float32UnsignedInt24_8Rev => 8,
             Packed(p) => p.bytes(),
             Bitmap => 0,
         }
@@ -112,7 +116,9 @@ impl ClientType {
     /// Bytes per pixel of `format` in this type; 0 for bitmaps.
     pub fn pixel_bytes(self, format: ClientFormat) -> usize {
         match self {
-            ClientType::Packed(_) | ClientType::UnsignedInt24_8 => self.element_bytes(),
+            ClientType::Packed(_) | ClientType::UnsignedInt24_8 | ClientType::Float32UnsignedInt24_8Rev => {
+                self.element_bytes()
+            }
             _ => self.element_bytes() * format.components(),
         }
     }
@@ -246,6 +252,7 @@ mod tests {
         assert_eq!(ClientType::HalfFloat.pixel_bytes(ClientFormat::LuminanceAlpha), 4);
         assert_eq!(ClientType::Packed(PackedType::UnsignedShort4444).pixel_bytes(ClientFormat::Bgra), 2);
         assert_eq!(ClientType::UnsignedInt24_8.pixel_bytes(ClientFormat::DepthStencil), 4);
+        assert_eq!(ClientType::Float32UnsignedInt24_8Rev.pixel_bytes(ClientFormat::DepthStencil), 8);
         assert_eq!(ClientType::Bitmap.pixel_bytes(ClientFormat::StencilIndex), 0);
     }
 }

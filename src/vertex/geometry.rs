@@ -9,6 +9,7 @@ use super::attribute::Attribute;
 use super::clip::{ClipPlanes, ClipVertex};
 use super::point::PointAttenuation;
 use super::viewport::Viewport;
+use crate::framebuffer::format::DepthEncoding;
 use crate::gl::types::GLenum;
 use crate::setup::accuracy::Accuracy;
 
@@ -27,7 +28,9 @@ pub struct Geometry {
     pub cull: Option<GLenum>,
     pub front_ccw: bool,
     pub offset: Option<(f32, f32)>,
-    pub depth_bits: u32,
+    /// How the depth buffer stores depth: its resolution scales polygon offset units (per
+    /// primitive on a float buffer, by the exponent of its largest depth).
+    pub depth: DepthEncoding,
     /// Framebuffer height (for llvmpipe's y-down window space).
     pub height: i32,
     pub line_width: f32,

@@ -6,9 +6,10 @@ use super::clip::{ClipPlanes, ClipVertex};
 use super::cull::{culls, faces_front};
 use super::geometry::Geometry;
 use super::line::{emit_window_line, LineStipple};
-use super::offset::clamp_offset;
+use super::offset::{clamp_offset, depth_resolution};
 use super::point::emit_window_point;
 use super::triangle::{emit_shaded_triangle, FlatColors};
+use crate::framebuffer::format::DepthEncoding;
 use crate::gl::enums::*;
 use crate::gl::types::GLenum;
 use crate::setup::jobs::line::LineVertex;
@@ -198,6 +199,11 @@ impl Outline<'_> {
             let inv_det = 1.0 / det;
             let dzdx = ((ey * fz - ez * fy) * inv_det).abs();
             let dzdy = ((ez * fx - ex * fz) * inv_det).abs();
+            // On a float depth buffer r depends on the primitive (unorm units came scaled).
+            let units = match g.depth {
+                DepthEncoding::Float => units * depth_resolution(g.depth, l.iter().map(|c| c.z)),
+                DepthEncoding::Unorm(_) => units,
+            };
             let z_offset = clamp_offset(units + dzdx.max(dzdy) * factor, g.offset_clamp);
             for c in &mut l {
                 c.z = (c.z + z_offset).clamp(0.0, 1.0);

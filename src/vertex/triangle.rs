@@ -60,7 +60,7 @@ pub fn emit_triangle(scene: &mut Scene, state: u32, g: &Geometry, w: [WindowVert
     }
     let offset = g
         .offset
-        .map_or(0.0, |(factor, units)| clamp_offset(polygon_offset(&w, factor, units, g.depth_bits), g.offset_clamp));
+        .map_or(0.0, |(factor, units)| clamp_offset(polygon_offset(&w, factor, units, g.depth), g.offset_clamp));
     let varyings: Vec<[f32; 3]> = g.varyings.iter().map(|a| w.map(|v| a.of(&v))).collect();
     if g.smooth_polygons {
         if let Some(job) = SmoothTriangle::new(w, flat, offset, &varyings, front) {

@@ -5,8 +5,8 @@ backend and checks that MuJoCo finds what it asks for.
 MuJoCo reads depth with reversed Z (mjDEPTH_ZEROFAR) and needs GL_ARB_clip_control for it;
 without the extension its first depth rendering prints "ARB_clip_control unavailable while
 mjDEPTH_ZEROFAR requested, depth accuracy will be limited". This script renders color and
-depth, fails when that warning appears (with --strict: any MuJoCo warning; tessera still
-lacks GL_ARB_depth_buffer_float, which MuJoCo checks next), saves the color image as PNG and
+depth, fails when that warning appears (with --strict: any MuJoCo warning, such as
+"ARB_depth_buffer_float unavailable", which MuJoCo checks next), saves the color image as PNG and
 prints the GL renderer and the time per color frame.
 
     python3 -m venv /tmp/mjvenv && /tmp/mjvenv/bin/pip install mujoco PyOpenGL pillow numpy

@@ -2,6 +2,7 @@
 //! stage ([`Transform`]) and of everything after it ([`Geometry`]), and the line stipple
 //! where a draw starts, taken from the context's state once per draw.
 use super::super::Context;
+use crate::framebuffer::format::DepthEncoding;
 use crate::gl::enums::*;
 use crate::gl::limits::MAX_LINE_WIDTH;
 use crate::gl::types::GLenum;
@@ -95,8 +96,18 @@ impl Context {
         let planes =
             ClipPlanes { guard_x, guard_y, clip_z: !transform.depth_clamp, zero_to_one: self.clip_zero_to_one(), user };
         let lp = &self.state.line_point;
-        // Mesa's offset stage scales units by twice the depth buffer's resolution.
-        let units_scale = if depth_bits > 0 { (2.0 / ((1u64 << depth_bits) - 1) as f64) as f32 } else { 0.0 };
+        let depth = if self.draw_config().depth_stencil.is_float_depth() {
+            DepthEncoding::Float
+        } else {
+            DepthEncoding::Unorm(depth_bits)
+        };
+        // Mesa's offset stage scales units by twice the depth buffer's resolution; a float
+        // buffer's resolution depends on the primitive, so its units are scaled there.
+        let units_scale = match depth {
+            DepthEncoding::Float => 1.0,
+            DepthEncoding::Unorm(0) => 0.0,
+            DepthEncoding::Unorm(bits) => (2.0 / ((1u64 << bits) - 1) as f64) as f32,
+        };
         Geometry {
             accuracy: self.accuracy,
             smooth_lines: lp.line_smooth,
@@ -139,7 +150,7 @@ impl Context {
             front_ccw: (polygon.front_face == GL_CCW) != (self.viewport_y_sign() < 0.0),
             offset: polygon.offset_fill.then_some((polygon.offset_factor, polygon.offset_units)),
             offset_clamp: polygon.offset_clamp,
-            depth_bits,
+            depth,
         }
     }
 }

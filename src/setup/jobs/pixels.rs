@@ -11,7 +11,7 @@
 use crate::fragment::pipeline::{shade_span, DrawState, Scratch, Span};
 use crate::fragment::MAX_SPAN;
 use crate::framebuffer::band::{Band, DepthBand};
-use crate::framebuffer::format::fragment_depth_to_fixed;
+use crate::framebuffer::format::DepthEncoding::{Float, Unorm};
 use crate::framebuffer::Rect;
 use std::sync::Arc;
 
@@ -155,9 +155,10 @@ fn write_depth(band: &mut Band<'_>, row_start: usize, columns: &[usize], live: u
         let z = depths[column];
         let at = row_start + k;
         match &mut band.depth {
-            DepthBand::Depth16(px) => px[at] = fragment_depth_to_fixed(z, 16) as u16,
-            DepthBand::Packed24(px) => px[at] = (px[at] & 0xff00_0000) | fragment_depth_to_fixed(z, 24),
-            DepthBand::Depth32(px, _) => px[at] = fragment_depth_to_fixed(z, 32),
+            DepthBand::Depth16(px) => px[at] = Unorm(16).encode_fragment(z) as u16,
+            DepthBand::Packed24(px) => px[at] = (px[at] & 0xff00_0000) | Unorm(24).encode_fragment(z),
+            DepthBand::Depth32(px, _) => px[at] = Unorm(32).encode_fragment(z),
+            DepthBand::Float32(px, _) => px[at] = Float.encode_fragment(z),
             DepthBand::None => return,
         }
     }
@@ -177,7 +178,7 @@ fn write_stencil(band: &mut Band<'_>, row_start: usize, columns: &[usize], live:
                 let stencil = ((old >> 24) & !mask) | (v & mask);
                 px[row_start + k] = (old & 0x00ff_ffff) | stencil << 24;
             }
-            DepthBand::Depth32(_, Some(s)) => {
+            DepthBand::Depth32(_, Some(s)) | DepthBand::Float32(_, Some(s)) => {
                 let old = s[row_start + k] as u32;
                 s[row_start + k] = ((old & !mask) | (v & mask)) as u8;
             }
