@@ -1,12 +1,35 @@
-//! tessera: a software OpenGL 1.x/2.x implementation that C programs use without recompiling.
+//! tessera: a software OpenGL implementation that programs use without recompiling, shipped
+//! as drop-in `libOSMesa.so.8` and `libGL.so.1` (see the README).
 //!
-//! The folders are the GL pipeline, and data flows one way through them:
-//! `api` (the extern "C" edge) → `context` (the GL state machine) → `framebuffer` (buffers and
-//! pixel formats, the only code that touches raw pixel memory), with `pixel` for the GL pixel
-//! transfer formats and `winsys` for the window-system bindings (OSMesa, later GLX). Lower rooms
-//! know nothing of the rooms above them: `framebuffer` knows formats, not GL enums.
+//! The folders are the GL pipeline, and data flows one way, top to bottom. A room imports
+//! only itself and the rooms below it (`tests/rooms.rs` checks it in CI); every room but the
+//! FFI edge (`api`, `winsys`) denies unsafe code, and in the engine only the wrapper around
+//! caller-owned pixel memory (`framebuffer/external.rs`) may use it.
+//!
+//! ```text
+//! api          extern "C": gl*, OSMesa*, glX*; caller memory in one module (api/caller_memory.rs)
+//! winsys       OSMesa buffers, GLX drawables on a run-time loaded Xlib, refusal notices
+//! context      the GL state machine: typed state, errors, objects, attrib stacks, glGet*;
+//!              at a draw: validate, snapshot, hand over (context/draw.rs), flush the scene
+//! vertex       vertices → primitives: transform and lighting (transform.rs, lighting.rs),
+//!              texgen, clipping (clip.rs), viewport (viewport.rs), culling (cull.rs),
+//!              polygon offset (offset.rs), polygon modes (outline.rs), lines and stipple
+//!              (line.rs), points (point.rs)
+//! setup        window-space primitives → jobs: fixed-point edges (triangle.rs, line.rs),
+//!              attribute planes (plane.rs), the scene and its per-tile bins (scene.rs)
+//! raster       tile workers and the thread pool (mod.rs), coverage walking into spans (walk.rs)
+//! fragment     a covered span → the framebuffer, GL's stage order written once (pipeline.rs):
+//!              scissor, alpha (alpha.rs), stencil (stencil.rs), depth (mod.rs), fog (fog.rs),
+//!              blending (blend.rs), logic op, dither, write masks (output.rs), multisample
+//! texture      texture storage, sampling (sampler.rs) and the texture environments (env.rs)
+//! pixel        GL pixel transfer: client formats and types, pack and unpack
+//! framebuffer  buffers and pixel formats, the only code that touches raw pixel memory
+//! gl           the GL vocabulary: enums, C types, limits, OSMesa/GLX constants, small value types
+//! ```
 //!
 //! See `../shared/DESIGN.md` and the README for the rules that make it fast and exact.
+//! `shader` (programs: the shading IR, the fixed-function generators, GLSL) is the room to
+//! come between `fragment` and `texture`.
 
 pub mod api;
 pub mod context;

@@ -36,7 +36,7 @@
 //! (sample rows), and a framebuffer object of multisampled attachments is assembled into a
 //! multisampled [`Framebuffer`] ([`Framebuffer::from_sample_layers`]) without resolved
 //! layers: reading it needs a glBlitFramebuffer resolve, as the specification says.
-use super::names::{NameTable, OutOfNames};
+use crate::gl::names::{NameTable, OutOfNames};
 use super::texture::TARGETS;
 use super::Context;
 use crate::framebuffer::blit::{self, BlitAxis, ColorSource, DepthStencilSource};

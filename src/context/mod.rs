@@ -31,7 +31,6 @@ pub mod lighting;
 pub mod lists;
 pub mod matrix;
 pub mod multisample;
-pub mod names;
 pub mod pixel_rect;
 pub mod queries;
 pub mod raster_pos;

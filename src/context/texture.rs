@@ -16,7 +16,7 @@
 //! (glCompressedTexImage* is GL_INVALID_ENUM). GL_COLOR_INDEX image data (every index type,
 //! GL_BITMAP included) becomes RGBA through GL_INDEX_SHIFT/OFFSET and the GL_PIXEL_MAP_I_TO_*
 //! tables (GL 2.1 §3.6.5, "Color Index Lookup"); glGetTexImage cannot return indices.
-use super::names::{NameTable, OutOfNames};
+use crate::gl::names::{NameTable, OutOfNames};
 use super::Context;
 use crate::framebuffer::format::DepthEncoding;
 use crate::gl::enums::*;

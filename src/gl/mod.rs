@@ -1,5 +1,6 @@
 //! The GL vocabulary: enum values, C types, implementation limits, the small value types
-//! every room shares (the comparison function) and the constants of the window-system
+//! every room shares (the comparison function, the name space of GL objects) and the
+//! constants of the window-system
 //! headers (`<GL/osmesa.h>`, `<GL/glx.h>`).
 //!
 //! This is the bottom room: every other room may import it, and it imports nothing of the
@@ -10,6 +11,7 @@ pub mod compare;
 pub mod enums;
 pub mod glx;
 pub mod limits;
+pub mod names;
 pub mod osmesa;
 pub mod types;
 

@@ -6,7 +6,7 @@
 //! glUnmapBuffer, glBufferData or glDeleteBuffers. While a buffer is mapped the context does
 //! not touch its bytes (glBufferSubData and friends are GL_INVALID_OPERATION, draws too), so
 //! the caller's writes through the mapped pointer never race with a Rust reference.
-use crate::context::names::NameTable;
+use crate::gl::names::NameTable;
 use crate::gl::enums::*;
 use crate::gl::types::GLenum;
 
