@@ -25,6 +25,7 @@ use tessera::api::gl_raster_state as raster;
 use tessera::api::gl_state as state;
 use tessera::api::gl_vertex as vertex;
 use tessera::api::osmesa::*;
+use tessera::gl::osmesa::*;
 use tessera::gl::types::OSMesaContext;
 
 include!(concat!(env!("OUT_DIR"), "/generated.rs"));
