@@ -36,7 +36,6 @@
 //! (sample rows), and a framebuffer object of multisampled attachments is assembled into a
 //! multisampled [`Framebuffer`] ([`Framebuffer::from_sample_layers`]) without resolved
 //! layers: reading it needs a glBlitFramebuffer resolve, as the specification says.
-use crate::gl::names::{NameTable, OutOfNames};
 use super::texture::TARGETS;
 use super::Context;
 use crate::framebuffer::blit::{self, BlitAxis, ColorSource, DepthStencilSource};
@@ -48,6 +47,7 @@ use crate::framebuffer::{
 };
 use crate::gl::enums::*;
 use crate::gl::limits::MAX_DRAW_BUFFERS;
+use crate::gl::names::{NameTable, OutOfNames};
 use crate::gl::types::GLenum;
 use crate::texture::{BaseFormat, TexImage, Texels};
 use std::sync::Arc;

@@ -21,9 +21,9 @@
 //! runs; beyond [`MAX_LIST_NESTING`] levels further calls are ignored, as the specification
 //! says.
 use super::get::Value;
-use crate::gl::names::{NameTable, OutOfNames};
 use super::Context;
 use crate::gl::enums::*;
+use crate::gl::names::{NameTable, OutOfNames};
 use crate::gl::types::GLenum;
 use std::sync::{Arc, Mutex, MutexGuard};
 

@@ -5,9 +5,9 @@
 //! rasterizer adds the fragments of each span that pass the depth and stencil tests (a sum,
 //! so the count is exact and the same for any number of threads). Asking for the result
 //! runs the pending scene first, so a result is always available when asked for.
-use crate::gl::names::{NameTable, OutOfNames};
 use super::Context;
 use crate::gl::enums::*;
+use crate::gl::names::{NameTable, OutOfNames};
 use crate::gl::types::GLenum;
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::Arc;

@@ -16,10 +16,10 @@
 //! (glCompressedTexImage* is GL_INVALID_ENUM). GL_COLOR_INDEX image data (every index type,
 //! GL_BITMAP included) becomes RGBA through GL_INDEX_SHIFT/OFFSET and the GL_PIXEL_MAP_I_TO_*
 //! tables (GL 2.1 §3.6.5, "Color Index Lookup"); glGetTexImage cannot return indices.
-use crate::gl::names::{NameTable, OutOfNames};
 use super::Context;
 use crate::framebuffer::format::DepthEncoding;
 use crate::gl::enums::*;
+use crate::gl::names::{NameTable, OutOfNames};
 use crate::gl::types::GLenum;
 use crate::pixel::layout::VolumeLayout;
 use crate::pixel::unpack::{bitmap_bit, index_value, unpack_color_row, unpack_depth_row, unpack_depth_stencil_row};

@@ -6,8 +6,8 @@
 //! glUnmapBuffer, glBufferData or glDeleteBuffers. While a buffer is mapped the context does
 //! not touch its bytes (glBufferSubData and friends are GL_INVALID_OPERATION, draws too), so
 //! the caller's writes through the mapped pointer never race with a Rust reference.
-use crate::gl::names::NameTable;
 use crate::gl::enums::*;
+use crate::gl::names::NameTable;
 use crate::gl::types::GLenum;
 
 /// The binding points tessera implements (GL_PIXEL_PACK/UNPACK_BUFFER belong to GL 2.1,
