@@ -32,16 +32,7 @@ enum { X_GLXDestroyContext = 4, X_GLXMakeCurrent = 5, X_GLXCopyContext = 10, X_G
        X_GLXGetDrawableAttributes = 29, X_GLXCreateWindow = 31, X_GLXDestroyWindow = 32,
        X_GLXCreateContextAttribsARB = 34 };
 
-static int failures;
-#define CHECK(cond, ...)                                                                                               \
-    do {                                                                                                               \
-        if (!(cond)) {                                                                                                 \
-            printf("FAIL line %d: ", __LINE__);                                                                        \
-            printf(__VA_ARGS__);                                                                                       \
-            printf("\n");                                                                                              \
-            failures++;                                                                                                \
-        }                                                                                                              \
-    } while (0)
+#include "check.h"
 
 static int errors_seen, last_code, last_major, last_minor;
 
