@@ -1,21 +1,31 @@
 //! Framebuffer objects and renderbuffers (ARB/EXT_framebuffer_object, EXT_framebuffer_blit):
 //! the objects, their bindings, completeness, queries, and what draws and reads go to.
 //!
-//! **Where attached images live.** A renderbuffer owns a framebuffer-format buffer (a
-//! [`ColorBuffer`] or [`DepthStencilBuffer`], the same types a window's framebuffer is made
-//! of). A texture keeps its images in the texture store (RGBA8 or f32 depth, sampled
-//! directly). Whenever the context needs the bound framebuffer object as a [`Framebuffer`]
-//! (to execute the recorded scene, clear, read, blit), [`Context::with_object_framebuffer`]
-//! assembles one: renderbuffer storage is *moved* in (a vector move, no pixel copied), each
-//! attached texture image is converted into a framebuffer-format buffer of its exact values
-//! (RGBA8 texels are 8-bit unorm pixels; f32 depth texels are their 16/24/32-bit fixed-point
-//! values), and after the operation everything is moved or converted back (textures only when
-//! the operation wrote). The conversions are exact in both directions, so rendering into a
-//! texture gives the same texels as rendering into a renderbuffer of its format and reading
-//! back. The rasterizer is unchanged: the scene executes on a `Framebuffer` split into bands
-//! as for a window, so tiles still own pixels and results do not depend on the thread count.
-//! Recorded draws run when the draw binding or an attachment changes (a flush point), so the
-//! texture store is always current when the texture is next sampled.
+//! **Where attached images live, and rendering in place.** A renderbuffer owns a
+//! framebuffer-format buffer (a [`ColorBuffer`] or [`DepthStencilBuffer`], the same types a
+//! window's framebuffer is made of). A texture keeps its images in the texture store in the
+//! same storage (`crate::texture`: RGBA8 texels are the pixels of an 8-bit unorm color
+//! buffer, a depth image is a [`DepthStencilBuffer`] of its format, which the sampler
+//! decodes per fetch). Whenever the context needs the bound framebuffer object as a
+//! [`Framebuffer`] (to execute the recorded scene, clear, read, blit),
+//! [`Context::with_object_framebuffer`] assembles one by *moving* each attached image in:
+//! a renderbuffer's storage, or a texture image's texel vector (the image leaves the shared
+//! texture table meanwhile), and moves them back afterwards. No pixel is copied or converted
+//! per scene, draw or bind, so rendering into a texture costs what rendering into a
+//! renderbuffer costs and gives the same values. The rasterizer is unchanged: the scene
+//! executes on a `Framebuffer` split into bands as for a window, so tiles still own pixels
+//! and results do not depend on the thread count. Recorded draws run when the draw binding
+//! or an attachment changes (a flush point), so the texture store is current whenever the
+//! texture is next sampled, read or specified.
+//!
+//! What still copies, only where it must: a layer of a 3D texture (a slice of one texel
+//! vector) is copied into a framebuffer-sized buffer and written back after rendering; a
+//! texture image still shared when it is lent (GL's undefined feedback loop of sampling a
+//! texture while rendering into it, or another context's recorded draws) is cloned, so that
+//! the holder keeps sampling the texels it recorded; and color formats of fewer than 8 bits
+//! per channel (GL_RGBA4, GL_RGB5_A1, GL_R3_G3_B2, ...) are rendered as 8-bit and quantized
+//! to their bits in place after each scene that wrote them (a table lookup per texel), as
+//! the texture store keeps every image of them quantized.
 //!
 //! **Formats** (storage, reported sizes): RGB/RGBA(8) and the smaller unorm formats as
 //! 8-bit unorm, RGB(A)12/16 as 16-bit unorm, RGB(A)16F/32F as f32 (16F keeps f32 precision),
@@ -41,7 +51,7 @@ use super::Context;
 use crate::framebuffer::blit::{self, BlitAxis, ColorSource, DepthStencilSource};
 use crate::framebuffer::layers::{color_buffer, depth_stencil_buffer};
 use crate::framebuffer::multisample::{resolve_color, resolve_depth_stencil, supported_samples};
-use crate::framebuffer::surface::{ColorPixels, DepthStencilPixels};
+use crate::framebuffer::surface::ColorPixels;
 use crate::framebuffer::{
     ColorBuffer, ColorFormat, ColorSlot, DepthStencilBuffer, DepthStencilFormat, Framebuffer, FramebufferConfig,
 };
@@ -333,14 +343,41 @@ fn completeness(
     GL_FRAMEBUFFER_COMPLETE
 }
 
-/// The depth/stencil format an f32 depth texture of `bits` renders through (`float`: a
-/// GL_DEPTH_COMPONENT32F / GL_DEPTH32F_STENCIL8 texture).
-fn depth_texture_format(bits: u32, stencil: bool, float: bool) -> DepthStencilFormat {
-    match bits {
-        _ if float => DepthStencilFormat::Float32 { stencil },
-        16 => DepthStencilFormat::Depth16,
-        32 => DepthStencilFormat::Depth32 { stencil },
-        _ => DepthStencilFormat::Packed24 { depth: true, stencil },
+/// How an attached texture image was lent to an assembled framebuffer
+/// ([`Context::lend_texture`]); `bits`: the bits per channel its format stores.
+enum Lent {
+    /// The whole image: `shell` is the image without its texels (moved into the
+    /// framebuffer). `shared` is the table's `Arc` when something else held it too (the
+    /// texels were then cloned).
+    Whole { shell: TexImage, shared: Option<Arc<TexImage>>, bits: [u32; 4] },
+    /// A copy of one layer of a 3D image.
+    Layer { bits: [u32; 4] },
+}
+
+impl Lent {
+    fn bits(&self) -> [u32; 4] {
+        match self {
+            Lent::Whole { bits, .. } | Lent::Layer { bits } => *bits,
+        }
+    }
+}
+
+/// Quantizes rendered 8-bit texels to the `bits` per channel of their format (GL_RGB5_A1,
+/// GL_RGBA4, GL_R3_G3_B2, GL_RGB10_A2's alpha, ...), as the texture store keeps every image
+/// of such formats; nothing to do for 8-bit formats. Channels of 0 bits keep their value
+/// (alpha 1 of formats without alpha).
+fn quantize_texels(texels: &mut [[u8; 4]], bits: [u32; 4]) {
+    if bits.iter().all(|&b| b == 0 || b >= 8) {
+        return;
+    }
+    let tables: [[u8; 256]; 4] = std::array::from_fn(|c| {
+        std::array::from_fn(|v| match bits[c] {
+            1..=7 => crate::texture::quantize_to_u8(v as f32 / 255.0, bits[c]),
+            _ => v as u8,
+        })
+    });
+    for t in texels {
+        *t = std::array::from_fn(|c| tables[c][t[c] as usize]);
     }
 }
 
@@ -897,14 +934,7 @@ impl Context {
                     }
                     let base = l.info.base;
                     let (format, supported) = if base == BaseFormat::Depth {
-                        (
-                            Renderable::DepthStencil(depth_texture_format(
-                                l.info.bits[0],
-                                l.info.has_stencil(),
-                                l.info.float_depth,
-                            )),
-                            true,
-                        )
+                        (Renderable::DepthStencil(l.info.depth_format()), true)
                     } else {
                         let alpha = l.info.bits[3] > 0;
                         let rgb = matches!(base, BaseFormat::Rgb | BaseFormat::Rgba);
@@ -1117,8 +1147,10 @@ impl Context {
     }
 
     /// Assembles framebuffer object `name` from its attached images, runs `f` on it and
-    /// puts the images back (texture images only when `write` is set); `None` when the
-    /// object is not complete or a texture image cannot be converted (out of memory).
+    /// puts the images back; `None` when the object is not complete or a layer of a 3D
+    /// texture cannot be copied (out of memory). Renderbuffer storage and texture images are
+    /// moved in and out (see the module documentation); only a layer of a 3D texture is
+    /// copied, and written back when `write` is set.
     pub fn with_object_framebuffer<R>(
         &mut self,
         name: u32,
@@ -1134,6 +1166,7 @@ impl Context {
         let first = object.attachments.iter().flatten().next().copied();
         let info = self.image_info(first).flatten()?;
         let (width, height) = (info.width, info.height);
+        let mut lent: Vec<Option<Lent>> = (0..POINTS).map(|_| None).collect();
         let mut colors = Vec::new();
         for (i, attachment) in object.attachments[..MAX_COLOR_ATTACHMENTS].iter().enumerate() {
             let Some(attachment) = *attachment else { continue };
@@ -1142,12 +1175,25 @@ impl Context {
                     RenderbufferStorage::Color(b) => Some(b),
                     _ => None,
                 },
-                Attachment::Texture { .. } => self.texture_color_buffer(attachment, width, height),
+                Attachment::Texture { .. } => self.lend_texture(attachment, width, height).and_then(|(texels, l)| {
+                    let alpha = l.bits()[3] > 0;
+                    match texels {
+                        Texels::Rgba8(px) => {
+                            lent[i] = Some(l);
+                            let format = ColorFormat::Unorm8 { alpha };
+                            Some(ColorBuffer::from_pixels(format, width, ColorPixels::Unorm8(px)))
+                        }
+                        other => {
+                            self.give_back_texture(attachment, other, l, false);
+                            None
+                        }
+                    }
+                }),
             };
             match buffer {
                 Some(b) => colors.push((ColorSlot::Attachment(i as u8), b)),
                 None => {
-                    self.return_layers(&object, colors, None, false);
+                    self.return_layers(&object, colors, None, lent, false);
                     self.error(GL_OUT_OF_MEMORY);
                     return None;
                 }
@@ -1160,9 +1206,18 @@ impl Context {
                 _ => None,
             },
             Some(texture) => {
-                let buffer = self.texture_depth_buffer(texture, width, height);
+                let buffer = self.lend_texture(texture, width, height).and_then(|(texels, l)| match texels {
+                    Texels::Depth(buffer) => {
+                        lent[DEPTH] = Some(l);
+                        Some(buffer)
+                    }
+                    other => {
+                        self.give_back_texture(texture, other, l, false);
+                        None
+                    }
+                });
                 if buffer.is_none() {
-                    self.return_layers(&object, colors, None, false);
+                    self.return_layers(&object, colors, None, lent, false);
                     self.error(GL_OUT_OF_MEMORY);
                     return None;
                 }
@@ -1175,7 +1230,7 @@ impl Context {
         };
         let result = f(&mut framebuffer);
         let (colors, depth_stencil) = framebuffer.into_layers();
-        self.return_layers(&object, colors, Some(depth_stencil), write);
+        self.return_layers(&object, colors, Some(depth_stencil), lent, write);
         Some(result)
     }
 
@@ -1183,12 +1238,15 @@ impl Context {
         self.fbo.renderbuffers.get_mut(rb).map(|r| std::mem::take(&mut r.storage)).unwrap_or_default()
     }
 
-    /// Puts the layers of an assembled framebuffer back where they came from.
+    /// Puts the layers of an assembled framebuffer back where they came from (`lent` says
+    /// how each texture image was lent): renderbuffer storage and whole texture images
+    /// always (they were moved), copied 3D layers only after a `write`.
     fn return_layers(
         &mut self,
         object: &FramebufferObject,
         colors: Vec<(ColorSlot, ColorBuffer)>,
         depth_stencil: Option<DepthStencilBuffer>,
+        mut lent: Vec<Option<Lent>>,
         write: bool,
     ) {
         for (slot, buffer) in colors {
@@ -1199,8 +1257,12 @@ impl Context {
                         r.storage = RenderbufferStorage::Color(buffer);
                     }
                 }
-                Some(texture) if write => self.store_texture_color(texture, &buffer),
-                _ => {}
+                Some(texture) => {
+                    if let (Some(l), ColorPixels::Unorm8(px)) = (lent[i as usize].take(), buffer.into_pixels()) {
+                        self.give_back_texture(texture, Texels::Rgba8(px), l, write);
+                    }
+                }
+                None => {}
             }
         }
         let Some(depth_stencil) = depth_stencil else { return };
@@ -1210,133 +1272,125 @@ impl Context {
                     r.storage = RenderbufferStorage::DepthStencil(depth_stencil);
                 }
             }
-            Some(texture) if write => self.store_texture_depth(texture, &depth_stencil),
-            _ => {}
+            Some(texture) => {
+                if let Some(l) = lent[DEPTH].take() {
+                    self.give_back_texture(texture, Texels::Depth(depth_stencil), l, write);
+                }
+            }
+            None => {}
         }
     }
 
-    /// Runs `f` on the texels of an attached texture image and the pixel count of one 2D
-    /// slice (the shared texture table locked meanwhile).
-    fn with_texture_slice<R>(&self, attachment: Attachment, f: impl FnOnce(&TexImage, usize) -> R) -> Option<R> {
-        let Attachment::Texture { name, face, level, .. } = attachment else { return None };
-        let table = self.textures.lock();
-        let image = table.object(name)?.level(face, level)?.image.as_ref()?;
-        Some(f(image, image.width * image.height))
-    }
-
-    /// A framebuffer-format copy of an attached RGB/RGBA8 texture image.
-    fn texture_color_buffer(&self, attachment: Attachment, width: usize, height: usize) -> Option<ColorBuffer> {
-        let Attachment::Texture { layer, .. } = attachment else { return None };
-        let alpha = matches!(self.image_info(Some(attachment)), Some(Some(ImageInfo { format: Renderable::Color(f), .. })) if f.has_alpha());
-        let mut buffer = color_buffer(ColorFormat::Unorm8 { alpha }, width, height).ok()?;
-        let copied = self.with_texture_slice(attachment, |image, area| {
-            let (Texels::Rgba8(texels), ColorPixels::Unorm8(px)) = (&image.texels, buffer.pixels_mut()) else {
-                return false;
+    /// Lends the texels of an attached texture image to a `width` × `height` framebuffer.
+    /// A whole image (every 1D and 2D image, a cube face) is taken out of the texture table
+    /// and its texel vector moved; the table holds no image for the level until
+    /// [`Context::give_back_texture`] (another context sharing the table then sees an
+    /// incomplete texture rather than one being drawn). If something else still holds the
+    /// image (a recorded draw of another context, or of the scene being rendered: GL's
+    /// undefined feedback loop), the texels are cloned, so that holder keeps sampling what it
+    /// recorded. A layer of a 3D image is copied.
+    fn lend_texture(&self, attachment: Attachment, width: usize, height: usize) -> Option<(Texels, Lent)> {
+        let Attachment::Texture { name, face, level, layer, .. } = attachment else { return None };
+        let mut table = self.textures.lock();
+        let lv = table.object_mut(name)?.faces.get_mut(face)?.get_mut(level)?.as_mut()?;
+        let bits = lv.info.bits;
+        let image = lv.image.as_ref()?;
+        if (image.width, image.height, image.depth, image.border) == (width, height, 1, 0) {
+            let (mut shell, shared) = match Arc::try_unwrap(lv.image.take()?) {
+                Ok(image) => (image, None),
+                Err(shared) => ((*shared).clone(), Some(shared)),
             };
-            px.copy_from_slice(&texels[layer * area..(layer + 1) * area]);
-            true
-        })?;
-        copied.then_some(buffer)
+            let texels = std::mem::replace(&mut shell.texels, Texels::Rgba8(Vec::new()));
+            return Some((texels, Lent::Whole { shell, shared, bits }));
+        }
+        let area = width.checked_mul(height)?;
+        let range = layer.checked_mul(area)?..(layer + 1).checked_mul(area)?;
+        let texels = match &image.texels {
+            Texels::Rgba8(t) => {
+                let slice = t.get(range)?;
+                let mut copy = Vec::new();
+                copy.try_reserve_exact(area).ok()?;
+                copy.extend_from_slice(slice);
+                Texels::Rgba8(copy)
+            }
+            Texels::Depth(d) => {
+                if d.len() < range.end {
+                    return None;
+                }
+                let mut copy = depth_stencil_buffer(d.format(), width, height).ok()?;
+                for (k, i) in range.enumerate() {
+                    copy.set_depth_value(k, d.depth_value(i));
+                    copy.set_stencil_value(k, d.stencil_value(i));
+                }
+                Texels::Depth(copy)
+            }
+        };
+        Some((texels, Lent::Layer { bits }))
     }
 
-    /// A fixed-point copy of an attached depth texture image.
-    fn texture_depth_buffer(&self, attachment: Attachment, width: usize, height: usize) -> Option<DepthStencilBuffer> {
-        let Attachment::Texture { layer, .. } = attachment else { return None };
-        let Some(Some(ImageInfo { format: Renderable::DepthStencil(format), .. })) = self.image_info(Some(attachment))
-        else {
-            return None;
-        };
-        let mut buffer = depth_stencil_buffer(format, width, height).ok()?;
-        let encoding = format.depth_encoding();
-        let fixed = |d: f32| encoding.encode_f32(d);
-        let copied = self.with_texture_slice(attachment, |image, area| {
-            let Texels::Depth(texels) = &image.texels else { return false };
-            let texels = &texels[layer * area..(layer + 1) * area];
-            // Depth-stencil images keep their stencil indices beside the depth texels.
-            let stencil = image.stencil.get(layer * area..(layer + 1) * area).unwrap_or(&[]);
-            let index = |i: usize| stencil.get(i).copied().unwrap_or(0);
-            match buffer.pixels_mut() {
-                DepthStencilPixels::Depth16(px) => px.iter_mut().zip(texels).for_each(|(p, &d)| *p = fixed(d) as u16),
-                DepthStencilPixels::Packed24(px) => {
-                    for (i, (p, &d)) in px.iter_mut().zip(texels).enumerate() {
-                        *p = fixed(d) | (index(i) as u32) << 24;
-                    }
-                }
-                DepthStencilPixels::Depth32(px, plane) => {
-                    px.iter_mut().zip(texels).for_each(|(p, &d)| *p = fixed(d));
-                    if let Some(plane) = plane {
-                        plane.iter_mut().enumerate().for_each(|(i, p)| *p = index(i));
-                    }
-                }
-                DepthStencilPixels::None => {}
+    /// Gives back what [`Context::lend_texture`] lent, holding `texels` as the framebuffer
+    /// left them. A whole image returns to the table (unless the level was specified anew
+    /// meanwhile by another context sharing the table: then what was drawn is dropped); a
+    /// copied layer is written back after a `write`. After a write, texels of a format of
+    /// fewer than 8 bits per channel are quantized to its bits, as the texture store keeps
+    /// every image of such formats (the one conversion left, a pass over the image that only
+    /// those formats pay).
+    fn give_back_texture(&mut self, attachment: Attachment, mut texels: Texels, lent: Lent, write: bool) {
+        let Attachment::Texture { name, face, level, layer, .. } = attachment else { return };
+        if write {
+            if let Texels::Rgba8(px) = &mut texels {
+                quantize_texels(px, lent.bits());
             }
-            true
-        })?;
-        copied.then_some(buffer)
+        }
+        match lent {
+            Lent::Whole { mut shell, shared, .. } => {
+                let image = match shared {
+                    // Nothing was written: the image the table held goes back as it was.
+                    Some(original) if !write => original,
+                    _ => {
+                        shell.texels = texels;
+                        Arc::new(shell)
+                    }
+                };
+                let mut table = self.textures.lock();
+                let slot = table.object_mut(name).and_then(|o| o.faces.get_mut(face)?.get_mut(level)?.as_mut());
+                if let Some(lv) = slot {
+                    if lv.image.is_none() {
+                        lv.image = Some(image);
+                    }
+                }
+            }
+            Lent::Layer { .. } if write => {
+                self.with_texture_image_mut(attachment, |image| {
+                    let area = image.width * image.height;
+                    let range = layer * area..(layer + 1) * area;
+                    match (&mut image.texels, &texels) {
+                        (Texels::Rgba8(t), Texels::Rgba8(px)) => {
+                            if let Some(slice) = t.get_mut(range) {
+                                slice.copy_from_slice(&px[..area.min(px.len())]);
+                            }
+                        }
+                        (Texels::Depth(d), Texels::Depth(copy)) if d.len() >= range.end && copy.len() >= area => {
+                            for (k, i) in range.enumerate() {
+                                d.set_depth_value(i, copy.depth_value(k));
+                                d.set_stencil_value(i, copy.stencil_value(k));
+                            }
+                        }
+                        _ => {}
+                    }
+                });
+            }
+            Lent::Layer { .. } => {}
+        }
     }
 
     /// Runs `f` on the texture image level an attachment names, for writing (copy on
-    /// write), with the level's stored bits per channel; the shared texture table is locked
-    /// meanwhile.
-    fn with_texture_image_mut<R>(
-        &mut self,
-        attachment: Attachment,
-        f: impl FnOnce(&mut crate::texture::TexImage, [u32; 4]) -> R,
-    ) -> Option<R> {
+    /// write); the shared texture table is locked meanwhile.
+    fn with_texture_image_mut<R>(&mut self, attachment: Attachment, f: impl FnOnce(&mut TexImage) -> R) -> Option<R> {
         let Attachment::Texture { name, face, level, .. } = attachment else { return None };
         let mut table = self.textures.lock();
         let level = table.object_mut(name)?.faces.get_mut(face)?.get_mut(level)?.as_mut()?;
-        let bits = level.info.bits;
-        level.image.as_mut().map(Arc::make_mut).map(|image| f(image, bits))
-    }
-
-    fn store_texture_color(&mut self, attachment: Attachment, buffer: &ColorBuffer) {
-        let Attachment::Texture { layer, .. } = attachment else { return };
-        let ColorPixels::Unorm8(px) = buffer.pixels() else { return };
-        self.with_texture_image_mut(attachment, |image, bits| {
-            let area = image.width * image.height;
-            let Texels::Rgba8(texels) = &mut image.texels else { return };
-            let slice = &mut texels[layer * area..(layer + 1) * area];
-            if bits.iter().all(|&b| b == 8 || b == 0) {
-                slice.copy_from_slice(px);
-            } else {
-                // Formats of fewer bits (GL_RGB5_A1, GL_RGB10_A2 kept in 8, ...) are stored
-                // quantized, as the texture store keeps every image of them.
-                for (t, p) in slice.iter_mut().zip(px) {
-                    for c in 0..4 {
-                        let v = p[c] as f32 / 255.0;
-                        t[c] = if bits[c] == 0 { p[c] } else { crate::texture::quantize_to_u8(v, bits[c]) };
-                    }
-                }
-            }
-        });
-    }
-
-    fn store_texture_depth(&mut self, attachment: Attachment, buffer: &DepthStencilBuffer) {
-        let Attachment::Texture { layer, .. } = attachment else { return };
-        let encoding = buffer.depth_encoding();
-        self.with_texture_image_mut(attachment, |image, _| {
-            let (width, height) = (image.width, image.height);
-            let mut values = Vec::new();
-            for y in 0..height as i32 {
-                buffer.read_depth_row(y, 0, width as i32, &mut values);
-            }
-            let area = width * height;
-            if let Texels::Depth(texels) = &mut image.texels {
-                for (t, &v) in texels[layer * area..(layer + 1) * area].iter_mut().zip(&values) {
-                    *t = encoding.decode(v);
-                }
-            }
-            if let Some(plane) = image.stencil.get_mut(layer * area..(layer + 1) * area) {
-                let mut indices = Vec::new();
-                for y in 0..height as i32 {
-                    buffer.read_stencil_row(y, 0, width as i32, &mut indices);
-                }
-                if indices.len() == plane.len() {
-                    plane.copy_from_slice(&indices);
-                }
-            }
-        });
+        level.image.as_mut().map(Arc::make_mut).map(f)
     }
 
     // ---- Blits --------------------------------------------------------------------------
@@ -1620,6 +1674,142 @@ mod tests {
         ctx.delete_framebuffers(1, &[fb]);
         assert_eq!((ctx.fbo.draw, ctx.fbo.read), (0, 0));
         assert_eq!(ctx.state.color.draw_buffers[0], GL_FRONT);
+        assert_eq!(ctx.take_error(), GL_NO_ERROR);
+    }
+
+    /// A texture image of `internal_format` (4 × 4) attached at `attachment` of a new bound
+    /// framebuffer object; the texture's name.
+    fn attached_texture(ctx: &mut Context, internal_format: GLenum, attachment: GLenum) -> u32 {
+        let tex = ctx.gen_textures(1).unwrap()[0];
+        ctx.bind_texture(GL_TEXTURE_2D, tex);
+        let (format, ty) = if attachment == GL_COLOR_ATTACHMENT0 {
+            (GL_RGBA, GL_UNSIGNED_BYTE)
+        } else {
+            (GL_DEPTH_COMPONENT, GL_FLOAT)
+        };
+        let args = super::super::texture::ImageArgs {
+            target: GL_TEXTURE_2D,
+            level: 0,
+            internal_format: internal_format as i32,
+            width: 4,
+            height: 4,
+            depth: 1,
+            border: 0,
+        };
+        ctx.tex_image(2, args, format, ty, |_| None);
+        ctx.framebuffer_texture(2, GL_FRAMEBUFFER, attachment, GL_TEXTURE_2D, tex, 0, 0);
+        tex
+    }
+
+    /// The level 0 image of texture `name`.
+    fn level0(ctx: &Context, name: u32) -> Arc<TexImage> {
+        ctx.textures.lock().object(name).unwrap().level(0, 0).unwrap().image.clone().unwrap()
+    }
+
+    /// Where the texels of an image are: the same address after rendering means rendered in
+    /// place.
+    fn texel_address(image: &TexImage) -> usize {
+        match &image.texels {
+            Texels::Rgba8(t) => t.as_ptr() as usize,
+            Texels::Depth(d) => match d.pixels() {
+                crate::framebuffer::surface::DepthStencilPixels::Packed24(px) => px.as_ptr() as usize,
+                _ => 0,
+            },
+        }
+    }
+
+    #[test]
+    fn attached_texture_images_are_rendered_in_place() {
+        let mut ctx = context();
+        let fb = ctx.gen_fbo_names(1, false).unwrap()[0];
+        ctx.bind_framebuffer(GL_FRAMEBUFFER, fb);
+        let color = attached_texture(&mut ctx, GL_RGBA8, GL_COLOR_ATTACHMENT0);
+        let depth = attached_texture(&mut ctx, GL_DEPTH24_STENCIL8, GL_DEPTH_STENCIL_ATTACHMENT);
+        assert_eq!(ctx.check_framebuffer_status(GL_FRAMEBUFFER), GL_FRAMEBUFFER_COMPLETE);
+        let addresses = |ctx: &Context| (texel_address(&level0(ctx, color)), texel_address(&level0(ctx, depth)));
+        let before = addresses(&ctx);
+        ctx.state.color.clear_color = [1.0, 0.5, 0.0, 1.0];
+        ctx.state.depth.clear = 0.25;
+        ctx.state.stencil.clear = 7;
+        ctx.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+        ctx.flush_rendering();
+        let _ = ctx.with_read_framebuffer(|_| ());
+        assert_eq!(addresses(&ctx), before, "drawing and reading moved the texels, copying none");
+        // The framebuffer's layers are the texture's texel vectors themselves.
+        let layers = ctx.with_framebuffer(|fb| {
+            let ColorPixels::Unorm8(px) = fb.color(ColorSlot::Attachment(0)).unwrap().pixels() else { return (0, 0) };
+            let crate::framebuffer::surface::DepthStencilPixels::Packed24(ds) = fb.depth_stencil().pixels() else {
+                return (0, 0);
+            };
+            (px.as_ptr() as usize, ds.as_ptr() as usize)
+        });
+        assert_eq!(layers, Some(before));
+        let (c, d) = (level0(&ctx, color), level0(&ctx, depth));
+        assert_eq!(c.texels, Texels::Rgba8(vec![[255, 128, 0, 255]; 16]));
+        assert_eq!((d.depth_f32(5), d.stencil(5)), (crate::pixel::convert::depth_to_float(0x40_0000, 24), 7));
+        drop((c, d));
+
+        // Something that still holds the image (a draw recorded in another context) keeps the
+        // texels it holds; the table gets the drawn ones.
+        let held = level0(&ctx, color);
+        ctx.state.color.clear_color = [0.0, 0.0, 1.0, 1.0];
+        ctx.clear(GL_COLOR_BUFFER_BIT);
+        ctx.flush_rendering();
+        assert_eq!(held.texels, Texels::Rgba8(vec![[255, 128, 0, 255]; 16]));
+        assert_eq!(level0(&ctx, color).texels, Texels::Rgba8(vec![[0, 0, 255, 255]; 16]));
+        // A read while the image is held gives the table its image back unchanged.
+        let held = level0(&ctx, color);
+        let _ = ctx.with_read_framebuffer(|_| ());
+        assert!(Arc::ptr_eq(&held, &level0(&ctx, color)));
+        assert_eq!(ctx.take_error(), GL_NO_ERROR);
+    }
+
+    #[test]
+    fn rendered_texels_of_small_formats_are_quantized() {
+        let mut ctx = context();
+        let fb = ctx.gen_fbo_names(1, false).unwrap()[0];
+        ctx.bind_framebuffer(GL_FRAMEBUFFER, fb);
+        let tex = attached_texture(&mut ctx, GL_RGBA4, GL_COLOR_ATTACHMENT0);
+        // 0.6 is 153 in 8 bits and 9 (0x99) in 4; 0.2 is 51 and 3 (0x33).
+        ctx.state.color.clear_color = [0.6, 0.2, 1.0, 0.0];
+        ctx.clear(GL_COLOR_BUFFER_BIT);
+        ctx.flush_rendering();
+        assert_eq!(level0(&ctx, tex).texels, Texels::Rgba8(vec![[0x99, 0x33, 0xff, 0]; 16]));
+        ctx.state.color.clear_color = [0.5, 0.5, 0.5, 0.5];
+        ctx.clear(GL_COLOR_BUFFER_BIT);
+        ctx.flush_rendering();
+        // 0.5 → 128 → 128/255 · 15 = 7.53 → 8 (0x88).
+        assert_eq!(level0(&ctx, tex).texels, Texels::Rgba8(vec![[0x88; 4]; 16]));
+        let mut texels = vec![[0u8, 17, 128, 255]];
+        quantize_texels(&mut texels, [8, 4, 1, 0]);
+        assert_eq!(texels, vec![[0, 17, 255, 255]]);
+    }
+
+    #[test]
+    fn a_layer_of_a_3d_texture_is_copied_in_and_out() {
+        let mut ctx = context();
+        let fb = ctx.gen_fbo_names(1, false).unwrap()[0];
+        ctx.bind_framebuffer(GL_FRAMEBUFFER, fb);
+        let tex = ctx.gen_textures(1).unwrap()[0];
+        ctx.bind_texture(GL_TEXTURE_3D, tex);
+        let args = super::super::texture::ImageArgs {
+            target: GL_TEXTURE_3D,
+            level: 0,
+            internal_format: GL_RGBA8 as i32,
+            width: 2,
+            height: 2,
+            depth: 3,
+            border: 0,
+        };
+        ctx.tex_image(3, args, GL_RGBA, GL_UNSIGNED_BYTE, |_| None);
+        ctx.framebuffer_texture(3, GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_3D, tex, 0, 1);
+        assert_eq!(ctx.check_framebuffer_status(GL_FRAMEBUFFER), GL_FRAMEBUFFER_COMPLETE);
+        ctx.state.color.clear_color = [1.0, 1.0, 1.0, 1.0];
+        ctx.clear(GL_COLOR_BUFFER_BIT);
+        ctx.flush_rendering();
+        let mut expected = vec![[0u8; 4]; 12];
+        expected[4..8].fill([255; 4]);
+        assert_eq!(level0(&ctx, tex).texels, Texels::Rgba8(expected));
         assert_eq!(ctx.take_error(), GL_NO_ERROR);
     }
 

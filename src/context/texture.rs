@@ -24,7 +24,7 @@ use crate::gl::types::GLenum;
 use crate::pixel::layout::VolumeLayout;
 use crate::pixel::unpack::{bitmap_bit, index_value, unpack_color_row, unpack_depth_row, unpack_depth_stencil_row};
 use crate::pixel::{ClientFormat, ClientType, PackModes};
-use crate::texture::{quantize_depth, quantize_to_u8, BaseFormat, TexImage, Texels};
+use crate::texture::{depth_storage, quantize_to_u8, BaseFormat, TexImage, Texels};
 use std::ops::Range;
 use std::sync::Arc;
 
@@ -62,13 +62,9 @@ impl FormatInfo {
         self.sizes[7] > 0
     }
 
-    /// A depth value as a texel of this format stores it.
-    pub fn store_depth(&self, value: f32) -> f32 {
-        if self.float_depth {
-            f32::from_bits(crate::framebuffer::format::float_depth_bits(value))
-        } else {
-            quantize_depth(value, self.bits[0])
-        }
+    /// How images of a depth format are stored (and render): a depth buffer of this format.
+    pub fn depth_format(&self) -> crate::framebuffer::DepthStencilFormat {
+        depth_storage(self.bits[0], self.has_stencil(), self.float_depth)
     }
 }
 
@@ -1003,16 +999,14 @@ impl Context {
                     depths.clear();
                     fb.depth_stencil().read_depth_row(sy, x0, x1, &mut depths);
                     let encoding = fb.depth_stencil().depth_encoding();
-                    if let Texels::Depth(t) = &mut image.texels {
-                        for (k, &d) in depths.iter().enumerate() {
-                            t[start + k] = info.store_depth(encoding.decode(d));
-                        }
+                    for (k, &d) in depths.iter().enumerate() {
+                        image.set_depth_f32(start + k, encoding.decode(d));
                     }
                     if info.has_stencil() {
                         stencils.clear();
                         fb.depth_stencil().read_stencil_row(sy, x0, x1, &mut stencils);
-                        if let Some(t) = image.stencil.get_mut(start..start + stencils.len()) {
-                            t.copy_from_slice(&stencils);
+                        for (k, &s) in stencils.iter().enumerate() {
+                            image.set_stencil(start + k, s);
                         }
                     }
                 } else if let Some(buffer) = slot.and_then(|s| fb.color(s)) {
@@ -1339,12 +1333,12 @@ impl Context {
                 let start = image.index(0, y, z);
                 if cf == ClientFormat::DepthStencil {
                     let Texels::Depth(t) = &image.texels else { continue };
-                    let stencil = image.stencil.get(start..start + w).unwrap_or(&[]);
-                    let texels = &t[start..start + w];
+                    let stencil: Vec<u8> = (start..start + w).map(|i| t.stencil_value(i)).collect();
+                    let stencil = &stencil[..];
                     if lv.info.float_depth || ct == ClientType::Float32UnsignedInt24_8Rev {
                         // The texels as float depth values (a float's bit pattern is its
                         // DepthEncoding::Float value).
-                        let bits: Vec<u32> = texels.iter().map(|d| d.to_bits()).collect();
+                        let bits: Vec<u32> = (start..start + w).map(|i| image.depth_f32(i).to_bits()).collect();
                         if ct == ClientType::Float32UnsignedInt24_8Rev {
                             crate::pixel::depth::pack_depth_stencil_float_row(
                                 &bits,
@@ -1363,8 +1357,8 @@ impl Context {
                             );
                         }
                     } else {
-                        let fixed: Vec<u32> =
-                            texels.iter().map(|&d| (d as f64 * 16_777_215.0).round() as u32).collect();
+                        // A depth-stencil format with fixed-point depth keeps 24 bits.
+                        let fixed: Vec<u32> = (start..start + w).map(|i| t.depth_value(i)).collect();
                         crate::pixel::depth::pack_depth_stencil_row(
                             &fixed,
                             DepthEncoding::Unorm(24),
@@ -1381,7 +1375,8 @@ impl Context {
     }
 }
 
-/// A zero image of a format (with a stencil plane for depth-stencil formats).
+/// A zero image of a format (depth formats in their depth-buffer storage, with stencil for
+/// depth-stencil formats).
 fn new_image(
     w: usize,
     h: usize,
@@ -1389,11 +1384,10 @@ fn new_image(
     border: usize,
     info: &FormatInfo,
 ) -> Result<TexImage, crate::texture::OutOfMemory> {
-    let image = TexImage::new(w, h, d, border, info.base)?;
-    if info.has_stencil() {
-        image.with_stencil()
+    if info.base == BaseFormat::Depth {
+        TexImage::new_depth(w, h, d, border, info.depth_format())
     } else {
-        Ok(image)
+        TexImage::new(w, h, d, border, info.base)
     }
 }
 
@@ -1438,6 +1432,7 @@ fn store_client(
     let w = r.width as usize;
     let mut colors = vec![[0f32; 4]; w];
     let mut depths = vec![0f32; w];
+    let mut stencils = Vec::new();
     for z in 0..r.depth as usize {
         for y in 0..r.height as usize {
             let Some(offset) = client.row_offset(y, z) else { continue };
@@ -1455,24 +1450,26 @@ fn store_client(
                         t[start + k] = texel8(info, *c);
                     }
                 }
-                Texels::Depth(t) if cf == ClientFormat::DepthStencil && ct == ClientType::Float32UnsignedInt24_8Rev => {
+                Texels::Depth(_) if cf == ClientFormat::DepthStencil && ct == ClientType::Float32UnsignedInt24_8Rev => {
                     for (k, pixel) in row.chunks_exact(8).take(w).enumerate() {
                         let (depth, index) = crate::pixel::depth::unpack_depth_stencil_float(pixel, swap);
-                        t[start + k] = info.store_depth(depth);
-                        if let Some(s) = image.stencil.get_mut(start + k) {
-                            *s = index;
-                        }
+                        image.set_depth_f32(start + k, depth);
+                        image.set_stencil(start + k, index);
                     }
                 }
-                Texels::Depth(t) if cf == ClientFormat::DepthStencil => {
-                    let stencils = image.stencil.get_mut(start..).unwrap_or_default();
-                    let n = unpack_depth_stencil_row(swap, row, &mut depths, stencils);
-                    t[start..start + n].copy_from_slice(&depths[..n]);
+                Texels::Depth(_) if cf == ClientFormat::DepthStencil => {
+                    // Depth-stencil data gives a depth-only image its depth alone.
+                    stencils.resize(w, 0);
+                    let n = unpack_depth_stencil_row(swap, row, &mut depths, &mut stencils);
+                    for k in 0..n {
+                        image.set_depth_f32(start + k, depths[k]);
+                        image.set_stencil(start + k, stencils[k]);
+                    }
                 }
-                Texels::Depth(t) => {
+                Texels::Depth(_) => {
                     unpack_depth_row(ct, swap, row, &mut depths);
                     for (k, &d) in depths.iter().enumerate() {
-                        t[start + k] = info.store_depth(d);
+                        image.set_depth_f32(start + k, d);
                     }
                 }
             }
@@ -1552,7 +1549,7 @@ fn pack_texels_row(
                     _ => c,
                 })
             }
-            Texels::Depth(d) => Err(d[start + i]),
+            Texels::Depth(_) => Err(image.depth_f32(start + i)),
         }
     };
     for i in 0..count {
@@ -1625,11 +1622,11 @@ mod tests {
             assert!(info.has_stencil());
             assert!(data_fits(ClientFormat::DepthStencil, &info) && data_fits(ClientFormat::DepthComponent, &info));
             assert!(!data_fits(ClientFormat::Rgba, &info));
-            assert_eq!(new_image(2, 2, 1, 0, &info).unwrap().stencil, vec![0; 4]);
+            assert!(new_image(2, 2, 1, 0, &info).unwrap().has_stencil());
         }
         let depth = format_info(GL_DEPTH_COMPONENT24 as i32).unwrap();
         assert!(!depth.has_stencil() && data_fits(ClientFormat::DepthStencil, &depth));
-        assert!(new_image(2, 2, 1, 0, &depth).unwrap().stencil.is_empty());
+        assert!(!new_image(2, 2, 1, 0, &depth).unwrap().has_stencil());
         let color = format_info(GL_RGBA8 as i32).unwrap();
         assert!(!data_fits(ClientFormat::DepthStencil, &color) && !data_fits(ClientFormat::DepthComponent, &color));
     }

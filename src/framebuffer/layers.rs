@@ -4,6 +4,9 @@
 //! To draw into them, the context moves each attached image into a [`Framebuffer`] made by
 //! [`Framebuffer::from_layers`], runs the same scene execution, clears and reads on it as on
 //! a window's framebuffer, and takes the images back with [`Framebuffer::into_layers`].
+//! Texture images are stored as these layers store pixels (see `crate::texture`), so a
+//! texture's texel vector is moved in as a layer ([`ColorBuffer::from_pixels`], or the
+//! depth texture's own [`DepthStencilBuffer`]) just as a renderbuffer's storage is.
 //! Moving a buffer moves its pixel vector, not the pixels, so the tiled rasterizer, the
 //! binner and the thread pool see a framebuffer like any other: tiles still own pixels.
 use super::{

@@ -2,6 +2,10 @@
 //!
 //! Rows are stored bottom-up with no padding; pixel (x, y) is at `y * width + x`. Every
 //! allocation goes through [`alloc_filled`] so that running out of memory is an error value.
+//! Texture images use the same storage (`crate::texture`): an 8-bit color texture's texels
+//! are the pixels of a [`ColorPixels::Unorm8`] buffer and a depth texture is a
+//! [`DepthStencilBuffer`], so that a framebuffer object renders into them where they live
+//! ([`ColorBuffer::from_pixels`] and [`ColorBuffer::into_pixels`] move the vector).
 use super::format::{
     float_to_unorm, float_to_unorm16_half_up, unorm_to_float, unorm_widen_to_u32, ColorFormat, DepthEncoding,
     DepthStencilFormat,
@@ -63,6 +67,24 @@ impl ColorBuffer {
             }
         };
         Ok(ColorBuffer { format, width, pixels })
+    }
+
+    /// A color buffer made of `pixels` (moved, not copied), `width` pixels per row: a texture
+    /// image rendered in place. `pixels` must be of `format`'s type.
+    pub fn from_pixels(format: ColorFormat, width: usize, pixels: ColorPixels) -> ColorBuffer {
+        debug_assert!(matches!(
+            (format, &pixels),
+            (ColorFormat::Unorm8 { .. }, ColorPixels::Unorm8(_))
+                | (ColorFormat::Rgb565, ColorPixels::Rgb565(_))
+                | (ColorFormat::Unorm16 { .. }, ColorPixels::Unorm16(_))
+                | (ColorFormat::Float32 { .. }, ColorPixels::Float32(_))
+        ));
+        ColorBuffer { format, width, pixels }
+    }
+
+    /// The pixels, moved out of the buffer.
+    pub fn into_pixels(self) -> ColorPixels {
+        self.pixels
     }
 
     pub fn format(&self) -> ColorFormat {
@@ -289,8 +311,9 @@ fn fill_masked<T: Copy>(px: &mut [[T; 4]], width: usize, rect: Rect, value: [T; 
 }
 
 /// Depth and stencil values, in the layout of [`DepthStencilFormat`].
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, PartialEq, Default)]
 pub enum DepthStencilPixels {
+    #[default]
     None,
     Depth16(Vec<u16>),
     /// depth24 | stencil << 24
@@ -300,12 +323,20 @@ pub enum DepthStencilPixels {
     Depth32(Vec<u32>, Option<Vec<u8>>),
 }
 
-/// The depth/stencil layer of a framebuffer.
-#[derive(Clone, Debug)]
+/// The depth/stencil layer of a framebuffer (or the texels of a depth texture). The default
+/// buffer is empty (no depth, no stencil, no pixels): what is left behind when a texture's
+/// buffer is moved into a framebuffer.
+#[derive(Clone, Debug, PartialEq)]
 pub struct DepthStencilBuffer {
     format: DepthStencilFormat,
     width: usize,
     pixels: DepthStencilPixels,
+}
+
+impl Default for DepthStencilBuffer {
+    fn default() -> Self {
+        DepthStencilBuffer { format: DepthStencilFormat::None, width: 0, pixels: DepthStencilPixels::None }
+    }
 }
 
 impl DepthStencilBuffer {
@@ -385,7 +416,7 @@ impl DepthStencilBuffer {
     }
 
     /// Pixels in the buffer.
-    fn len(&self) -> usize {
+    pub fn len(&self) -> usize {
         match &self.pixels {
             DepthStencilPixels::None => 0,
             DepthStencilPixels::Depth16(px) => px.len(),
@@ -417,6 +448,54 @@ impl DepthStencilBuffer {
                 }
                 _ => {}
             }
+        }
+    }
+
+    /// Whether the buffer has no pixels.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// The stored depth of pixel `i` (see [`Self::depth_encoding`]; 0 without depth).
+    #[inline]
+    pub fn depth_value(&self, i: usize) -> u32 {
+        match &self.pixels {
+            DepthStencilPixels::Depth16(px) => px[i] as u32,
+            DepthStencilPixels::Packed24(px) => px[i] & 0x00ff_ffff,
+            DepthStencilPixels::Depth32(px, _) => px[i],
+            DepthStencilPixels::None => 0,
+        }
+    }
+
+    /// Sets the stored depth of pixel `i`, keeping its stencil index.
+    #[inline]
+    pub fn set_depth_value(&mut self, i: usize, value: u32) {
+        match &mut self.pixels {
+            DepthStencilPixels::Depth16(px) => px[i] = value as u16,
+            DepthStencilPixels::Packed24(px) => px[i] = (px[i] & 0xff00_0000) | (value & 0x00ff_ffff),
+            DepthStencilPixels::Depth32(px, _) => px[i] = value,
+            DepthStencilPixels::None => {}
+        }
+    }
+
+    /// The stencil index of pixel `i` (0 without stencil).
+    #[inline]
+    pub fn stencil_value(&self, i: usize) -> u8 {
+        match &self.pixels {
+            DepthStencilPixels::Packed24(px) if self.stencil_bits() > 0 => (px[i] >> 24) as u8,
+            DepthStencilPixels::Depth32(_, Some(st)) => st[i],
+            _ => 0,
+        }
+    }
+
+    /// Sets the stencil index of pixel `i` (nothing without stencil).
+    #[inline]
+    pub fn set_stencil_value(&mut self, i: usize, index: u8) {
+        let stencil = self.stencil_bits() > 0;
+        match &mut self.pixels {
+            DepthStencilPixels::Packed24(px) if stencil => px[i] = (px[i] & 0x00ff_ffff) | (index as u32) << 24,
+            DepthStencilPixels::Depth32(_, Some(st)) => st[i] = index,
+            _ => {}
         }
     }
 

@@ -9,14 +9,36 @@
 //! texture-color form of its base format (GL 2.1 table 3.20: ALPHA as (0, 0, 0, A),
 //! LUMINANCE as (L, L, L, 1), INTENSITY as (I, I, I, I), RGB with A = 1), quantized to the
 //! bits of the format Mesa 22 chooses for the internal format (GL_RGBA4 keeps 4 bits per
-//! channel, widened back to 8 by replication); depth formats are kept as f32 quantized to
-//! their 16, 24 or 32 bits. Formats of more than 8 bits per color channel are stored with 8.
-//! Depth-stencil formats (GL_EXT_packed_depth_stencil) are depth images with a stencil
-//! plane beside the depth texels: sampling sees only the depth, as GL specifies.
+//! channel, widened back to 8 by replication). Formats of more than 8 bits per color channel
+//! are stored with 8.
+//!
+//! **Images are stored as the framebuffer stores them**, so that a texture image attached
+//! to a framebuffer object is rendered where it lives (`context::framebuffer_object` moves
+//! the pixel vector into a [`crate::framebuffer::Framebuffer`] and back; no texel is copied
+//! or converted per scene). The layout is linear: rows bottom-up, x fastest, no padding,
+//! which is what both users want. The tile workers address a framebuffer by rows (a band is
+//! a range of rows, a span a run of one row), and the sampler fetches 2×2 neighbourhoods at
+//! arbitrary positions, for which a linear image costs one multiply-add per texel and keeps
+//! the two rows of a bilinear footprint one row stride apart; a tiled layout would need a
+//! swizzle in every span loop of the tile workers, in every row copy of glReadPixels,
+//! glTexSubImage and glGetTexImage, and would only pay for sampling patterns (rotated
+//! minification) that the scenes we measure do not have. Color images are
+//! [`Texels::Rgba8`], the pixels of an 8-bit unorm color buffer. Depth images are a
+//! [`DepthStencilBuffer`] of their format (16-bit, packed 24-bit depth with an 8-bit stencil
+//! index above it, 32-bit fixed point, or the f32 bit patterns of float depth with a
+//! separate stencil plane): the values a depth test compares, and the sampler decodes them
+//! per fetch (an integer-to-float conversion and one multiplication, see [`depth_texel`]),
+//! which is cheaper than converting a whole image per scene. Depth-stencil formats
+//! (GL_EXT_packed_depth_stencil) keep their stencil indices in that buffer: sampling sees
+//! only the depth, as GL specifies.
 #![deny(unsafe_code)]
 
 pub mod env;
 pub mod sampler;
+
+use crate::framebuffer::format::DepthEncoding;
+pub use crate::framebuffer::surface::DepthStencilPixels;
+pub use crate::framebuffer::{DepthStencilBuffer, DepthStencilFormat};
 
 /// The base internal format of a texture image (GL 2.1 table 3.15).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -48,8 +70,11 @@ impl BaseFormat {
 /// The texels of one image, row-major (x fastest, then y, then z), border included.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Texels {
+    /// The pixels of an 8-bit unorm color buffer.
     Rgba8(Vec<[u8; 4]>),
-    Depth(Vec<f32>),
+    /// Depth (and stencil indices) as a depth/stencil buffer of the image's format stores
+    /// them, one buffer row per image row.
+    Depth(DepthStencilBuffer),
 }
 
 /// One mipmap level of one face: its size (border included), border width and texels.
@@ -61,8 +86,6 @@ pub struct TexImage {
     pub border: usize,
     pub base: BaseFormat,
     pub texels: Texels,
-    /// The stencil index of each texel of a depth-stencil image; empty for other images.
-    pub stencil: Vec<u8>,
 }
 
 /// Why an image could not be made.
@@ -81,17 +104,46 @@ pub fn quantize_to_u8(value: f32, bits: u32) -> u8 {
     crate::pixel::convert::unorm_to_unorm(n, bits, 8) as u8
 }
 
-/// Quantizes depth to `bits` bits (16, 24 or 32) and returns it as a float.
+/// The storage of a depth texture format: depth of `bits` bits (16, 24 or 32), `float` for
+/// the f32 depth of ARB_depth_buffer_float, with a stencil index per texel when `stencil`.
+/// It is also the format of the depth buffer the texture renders as.
+pub fn depth_storage(bits: u32, stencil: bool, float: bool) -> DepthStencilFormat {
+    match bits {
+        _ if float => DepthStencilFormat::Float32 { stencil },
+        16 => DepthStencilFormat::Depth16,
+        32 => DepthStencilFormat::Depth32 { stencil },
+        _ => DepthStencilFormat::Packed24 { depth: true, stencil },
+    }
+}
+
+/// A depth value (client data, a copied depth) as a depth texel of `encoding` stores it:
+/// fixed point rounds the clamped value times 2ⁿ − 1 to nearest in double precision; float
+/// depth keeps the clamped value.
 #[inline]
-pub fn quantize_depth(value: f32, bits: u32) -> f32 {
-    let v = if value > 0.0 { value.min(1.0) } else { 0.0 };
-    let max = crate::pixel::convert::unorm_max(bits) as f64;
-    let q = (v as f64 * max).round() as u32;
-    crate::pixel::convert::depth_to_float(q, bits)
+pub fn encode_depth(encoding: DepthEncoding, value: f32) -> u32 {
+    match encoding {
+        DepthEncoding::Unorm(bits) => {
+            let v = if value > 0.0 { value.min(1.0) } else { 0.0 };
+            let max = crate::pixel::convert::unorm_max(bits) as f64;
+            (v as f64 * max).round() as u32
+        }
+        DepthEncoding::Float => crate::framebuffer::format::float_depth_bits(value),
+    }
+}
+
+/// A stored depth texel as the sampler reads it: n-bit fixed point as Mesa's texture
+/// fetches convert it (`crate::pixel::convert::depth_to_float`), float depth as itself.
+#[inline]
+pub fn depth_texel(encoding: DepthEncoding, stored: u32) -> f32 {
+    match encoding {
+        DepthEncoding::Unorm(bits) => crate::pixel::convert::depth_to_float(stored, bits),
+        DepthEncoding::Float => f32::from_bits(stored),
+    }
 }
 
 impl TexImage {
-    /// A `width` × `height` × `depth` image (border included) of zero texels.
+    /// A `width` × `height` × `depth` color image (border included) of zero texels (a
+    /// depth image of 24 bits for [`BaseFormat::Depth`]; see [`TexImage::new_depth`]).
     pub fn new(
         width: usize,
         height: usize,
@@ -99,27 +151,28 @@ impl TexImage {
         border: usize,
         base: BaseFormat,
     ) -> Result<TexImage, OutOfMemory> {
+        if base == BaseFormat::Depth {
+            return TexImage::new_depth(width, height, depth, border, depth_storage(24, false, false));
+        }
         let count = width.checked_mul(height).and_then(|n| n.checked_mul(depth)).ok_or(OutOfMemory)?;
-        let texels = if base == BaseFormat::Depth {
-            let mut v = Vec::new();
-            v.try_reserve_exact(count).map_err(|_| OutOfMemory)?;
-            v.resize(count, 0.0);
-            Texels::Depth(v)
-        } else {
-            let mut v = Vec::new();
-            v.try_reserve_exact(count).map_err(|_| OutOfMemory)?;
-            v.resize(count, base_texel(base));
-            Texels::Rgba8(v)
-        };
-        Ok(TexImage { width, height, depth, border, base, texels, stencil: Vec::new() })
+        let mut v = Vec::new();
+        v.try_reserve_exact(count).map_err(|_| OutOfMemory)?;
+        v.resize(count, base_texel(base));
+        Ok(TexImage { width, height, depth, border, base, texels: Texels::Rgba8(v) })
     }
 
-    /// This image with a stencil plane of zeros (a depth-stencil image).
-    pub fn with_stencil(mut self) -> Result<TexImage, OutOfMemory> {
-        let count = self.width * self.height * self.depth;
-        self.stencil.try_reserve_exact(count).map_err(|_| OutOfMemory)?;
-        self.stencil.resize(count, 0);
-        Ok(self)
+    /// A `width` × `height` × `depth` depth image (border included) of `format`, depth and
+    /// stencil zero.
+    pub fn new_depth(
+        width: usize,
+        height: usize,
+        depth: usize,
+        border: usize,
+        format: DepthStencilFormat,
+    ) -> Result<TexImage, OutOfMemory> {
+        let rows = height.checked_mul(depth).ok_or(OutOfMemory)?;
+        let buffer = crate::framebuffer::layers::depth_stencil_buffer(format, width, rows).map_err(|_| OutOfMemory)?;
+        Ok(TexImage { width, height, depth, border, base: BaseFormat::Depth, texels: Texels::Depth(buffer) })
     }
 
     /// Index of texel (x, y, z) (border included).
@@ -128,11 +181,60 @@ impl TexImage {
         (z * self.height + y) * self.width + x
     }
 
+    /// The format of a depth image's storage (`None` for color images).
+    pub fn depth_format(&self) -> Option<DepthStencilFormat> {
+        match &self.texels {
+            Texels::Depth(d) => Some(d.format()),
+            Texels::Rgba8(_) => None,
+        }
+    }
+
+    /// Whether the image keeps a stencil index per texel (a depth-stencil image).
+    pub fn has_stencil(&self) -> bool {
+        self.depth_format().is_some_and(|f| f.stencil_bits() > 0)
+    }
+
+    /// Depth texel `i` as the sampler reads it (0 for color images).
+    #[inline]
+    pub fn depth_f32(&self, i: usize) -> f32 {
+        match &self.texels {
+            Texels::Depth(d) => depth_texel(d.depth_encoding(), d.depth_value(i)),
+            Texels::Rgba8(_) => 0.0,
+        }
+    }
+
+    /// Stores `value` (clamped to [0, 1]) as depth texel `i` of a depth image, its stencil
+    /// index unchanged.
+    #[inline]
+    pub fn set_depth_f32(&mut self, i: usize, value: f32) {
+        if let Texels::Depth(d) = &mut self.texels {
+            let stored = encode_depth(d.depth_encoding(), value);
+            d.set_depth_value(i, stored);
+        }
+    }
+
+    /// The stencil index of texel `i` (0 without stencil).
+    #[inline]
+    pub fn stencil(&self, i: usize) -> u8 {
+        match &self.texels {
+            Texels::Depth(d) => d.stencil_value(i),
+            Texels::Rgba8(_) => 0,
+        }
+    }
+
+    /// Sets the stencil index of texel `i` (nothing without stencil).
+    #[inline]
+    pub fn set_stencil(&mut self, i: usize, index: u8) {
+        if let Texels::Depth(d) = &mut self.texels {
+            d.set_stencil_value(i, index);
+        }
+    }
+
     /// The texel at (x, y, z) as RGBA floats (depth in R, G, B and A).
     pub fn texel_f32(&self, i: usize) -> [f32; 4] {
         match &self.texels {
             Texels::Rgba8(t) => t[i].map(|c| c as f32 / 255.0),
-            Texels::Depth(d) => [d[i]; 4],
+            Texels::Depth(_) => [self.depth_f32(i); 4],
         }
     }
 }
@@ -164,10 +266,10 @@ pub fn downsample(src: &TexImage, dims: usize) -> Result<TexImage, OutOfMemory> 
     let h = if dims >= 2 { h } else { 1 };
     let d = if dims >= 3 { d - 2 * b } else { 1 };
     let (nw, nh, nd) = ((w / 2).max(1), (h / 2).max(1), (d / 2).max(1));
-    let mut out = TexImage::new(nw, nh, nd, 0, src.base)?;
-    if !src.stencil.is_empty() {
-        out = out.with_stencil()?;
-    }
+    let mut out = match src.depth_format() {
+        Some(format) => TexImage::new_depth(nw, nh, nd, 0, format)?,
+        None => TexImage::new(nw, nh, nd, 0, src.base)?,
+    };
     let (fx, fy, fz) = (if w > 1 { 2 } else { 1 }, if h > 1 { 2 } else { 1 }, if d > 1 { 2 } else { 1 });
     let by = if dims >= 2 { b } else { 0 };
     let bz = if dims >= 3 { b } else { 0 };
@@ -200,11 +302,11 @@ pub fn downsample(src: &TexImage, dims: usize) -> Result<TexImage, OutOfMemory> 
                 let o = out.index(x, y, z);
                 match &mut out.texels {
                     Texels::Rgba8(t) => t[o] = v.map(|c| (c * 255.0).round() as u8),
-                    Texels::Depth(t) => t[o] = v[0],
+                    Texels::Depth(_) => out.set_depth_f32(o, v[0]),
                 }
-                if !out.stencil.is_empty() {
+                if out.has_stencil() {
                     // Stencil indices are not averaged: each keeps its box's first index.
-                    out.stencil[o] = src.stencil[src.index(x * fx + b, y * fy + by, z * fz + bz)];
+                    out.set_stencil(o, src.stencil(src.index(x * fx + b, y * fy + by, z * fz + bz)));
                 }
             }
         }
@@ -329,7 +431,37 @@ mod tests {
         assert_eq!(quantize_to_u8(0.75, 1), 255);
         assert_eq!(quantize_to_u8(0.2, 8), 51);
         assert_eq!(quantize_to_u8(-1.0, 8), 0);
-        assert_eq!(quantize_depth(0.5, 16), 32768.0 * (1.0 / 65535.0f32));
+    }
+
+    #[test]
+    fn depth_texels_keep_the_depth_buffer_encoding() {
+        // Fixed point rounds to nearest (0.5 · 65535 = 32767.5 → 32768) and reads back as
+        // Mesa's fetch converts it; float depth keeps the clamped value, −0 as +0.
+        assert_eq!(encode_depth(DepthEncoding::Unorm(16), 0.5), 32768);
+        assert_eq!(depth_texel(DepthEncoding::Unorm(16), 32768), 32768.0 * (1.0 / 65535.0f32));
+        assert_eq!(encode_depth(DepthEncoding::Unorm(24), 2.0), 0xff_ffff);
+        assert_eq!(encode_depth(DepthEncoding::Unorm(24), f32::NAN), 0);
+        assert_eq!(depth_texel(DepthEncoding::Unorm(24), 0xff_ffff), 1.0);
+        assert_eq!(encode_depth(DepthEncoding::Float, -0.0), 0);
+        assert_eq!(depth_texel(DepthEncoding::Float, encode_depth(DepthEncoding::Float, 0.3)), 0.3);
+        // A depth-stencil image: depth and stencil share a packed word, and setting one
+        // keeps the other.
+        let format = depth_storage(24, true, false);
+        assert_eq!(format, DepthStencilFormat::Packed24 { depth: true, stencil: true });
+        let mut image = TexImage::new_depth(2, 1, 1, 0, format).unwrap();
+        image.set_stencil(1, 0xa5);
+        image.set_depth_f32(1, 1.0);
+        image.set_depth_f32(0, 0.25);
+        let Texels::Depth(buffer) = &image.texels else { unreachable!() };
+        let DepthStencilPixels::Packed24(words) = buffer.pixels() else { unreachable!() };
+        assert_eq!(words, &vec![0x40_0000, 0xa5ff_ffff]);
+        assert_eq!((image.stencil(1), image.depth_f32(1)), (0xa5, 1.0));
+        let float = TexImage::new_depth(1, 1, 1, 0, depth_storage(32, true, true)).unwrap();
+        assert_eq!(float.depth_format(), Some(DepthStencilFormat::Float32 { stencil: true }));
+        assert!(
+            float.has_stencil()
+                && !TexImage::new_depth(1, 1, 1, 0, depth_storage(16, false, false)).unwrap().has_stencil()
+        );
     }
 
     #[test]
@@ -340,12 +472,17 @@ mod tests {
         assert_eq!((next.width, next.height), (1, 1));
         assert_eq!(next.texels, Texels::Rgba8(vec![[128, 128, 1, 0]]));
         assert_eq!(level_size(5, 1), 2);
-        // A depth-stencil image keeps a stencil plane; each box keeps its first index.
-        let mut ds = TexImage::new(2, 2, 1, 0, BaseFormat::Depth).unwrap().with_stencil().unwrap();
-        ds.texels = Texels::Depth(vec![0.0, 0.5, 0.5, 1.0]);
-        ds.stencil = vec![7, 1, 2, 3];
+        // A depth-stencil image keeps its stencil indices; each box keeps its first index,
+        // and the averaged depth is stored in the image's format.
+        let format = depth_storage(24, true, false);
+        let mut ds = TexImage::new_depth(2, 2, 1, 0, format).unwrap();
+        for (i, (d, s)) in [(0.0, 7), (0.5, 1), (0.5, 2), (1.0, 3)].into_iter().enumerate() {
+            ds.set_depth_f32(i, d);
+            ds.set_stencil(i, s);
+        }
         let next = downsample(&ds, 2).unwrap();
-        assert_eq!((next.texels, next.stencil), (Texels::Depth(vec![0.5]), vec![7]));
+        assert_eq!(next.depth_format(), Some(format));
+        assert_eq!((next.depth_f32(0), next.stencil(0)), (depth_texel(DepthEncoding::Unorm(24), 0x80_0000), 7));
         assert_eq!(level_size(5, 9), 1);
     }
 }

@@ -8,8 +8,10 @@
 //!
 //! Filtering of RGBA8 images uses 8-bit fixed-point weights as llvmpipe's AoS path does: the
 //! texel position is taken to 1/256 of a texel and the lerps are integer; depth images (and
-//! depth comparison) filter in float.
-use super::{BaseFormat, TexImage, Texels};
+//! depth comparison) filter in float, decoding each texel from the depth-buffer encoding the
+//! image is stored in (`super::depth_texel`).
+use super::{depth_texel, BaseFormat, DepthStencilPixels, TexImage, Texels};
+use crate::framebuffer::format::DepthEncoding::Unorm;
 use crate::gl::CompareFunc;
 use std::sync::Arc;
 
@@ -341,31 +343,20 @@ impl Sampler {
                 Ok(v)
             }
             (Texels::Depth(t), compare) => {
-                let reference = c_ref(c, self.dim);
-                let fetch = |x, y, z| -> f32 {
-                    let d = at(x, y, z).map_or(self.border[0], |i| t[i]);
-                    match compare {
-                        Some(func) => {
-                            if depth_passes(func, reference, d) {
-                                1.0
-                            } else {
-                                0.0
-                            }
-                        }
-                        None => d,
+                // Depth texels are stored as a depth buffer stores them; the decoding is
+                // chosen once per lookup, not per texel.
+                let lookup = DepthLookup { at: &at, ax, ay, az, dims, filter, compare, reference: c_ref(c, self.dim) };
+                let border = self.border[0];
+                let d = match t.pixels() {
+                    DepthStencilPixels::Depth16(px) => lookup.filter(border, |i| depth_texel(Unorm(16), px[i] as u32)),
+                    DepthStencilPixels::Packed24(px) => {
+                        lookup.filter(border, |i| depth_texel(Unorm(24), px[i] & 0x00ff_ffff))
                     }
-                };
-                let lerp = |a: f32, b: f32, w: f32| a + w * (b - a);
-                let row = |y, z| lerp(fetch(ax.i0, y, z), fetch(ax.i1, y, z), ax.wf);
-                let plane = |z| lerp(row(ay.i0, z), row(ay.i1, z), ay.wf);
-                let d = if filter == Filter::Nearest {
-                    fetch(ax.i0, ay.i0, az.i0)
-                } else if dims == 1 {
-                    row(0, 0)
-                } else if dims == 2 {
-                    plane(0)
-                } else {
-                    lerp(plane(az.i0), plane(az.i1), az.wf)
+                    DepthStencilPixels::Depth32(px, _) => {
+                        let encoding = t.depth_encoding();
+                        lookup.filter(border, |i| depth_texel(encoding, px[i]))
+                    }
+                    DepthStencilPixels::None => border,
                 };
                 Err(match self.depth_mode {
                     DepthMode::Luminance => [d, d, d, 1.0],
@@ -373,6 +364,52 @@ impl Sampler {
                     DepthMode::Alpha => [0.0, 0.0, 0.0, d],
                 })
             }
+        }
+    }
+}
+
+/// One filtered lookup in a depth image: where its texels are and how they combine.
+struct DepthLookup<'a, A: Fn(i32, i32, i32) -> Option<usize>> {
+    /// The index of a texel, `None` for the border.
+    at: &'a A,
+    ax: Axis,
+    ay: Axis,
+    az: Axis,
+    dims: usize,
+    filter: Filter,
+    compare: Option<CompareFunc>,
+    reference: f32,
+}
+
+impl<A: Fn(i32, i32, i32) -> Option<usize>> DepthLookup<'_, A> {
+    /// The filtered depth (or comparison result), texel `i` being `texel(i)`.
+    #[inline]
+    fn filter(&self, border: f32, texel: impl Fn(usize) -> f32) -> f32 {
+        let (ax, ay, az) = (self.ax, self.ay, self.az);
+        let fetch = |x, y, z| -> f32 {
+            let d = (self.at)(x, y, z).map_or(border, &texel);
+            match self.compare {
+                Some(func) => {
+                    if depth_passes(func, self.reference, d) {
+                        1.0
+                    } else {
+                        0.0
+                    }
+                }
+                None => d,
+            }
+        };
+        let lerp = |a: f32, b: f32, w: f32| a + w * (b - a);
+        let row = |y, z| lerp(fetch(ax.i0, y, z), fetch(ax.i1, y, z), ax.wf);
+        let plane = |z| lerp(row(ay.i0, z), row(ay.i1, z), ay.wf);
+        if self.filter == Filter::Nearest {
+            fetch(ax.i0, ay.i0, az.i0)
+        } else if self.dims == 1 {
+            row(0, 0)
+        } else if self.dims == 2 {
+            plane(0)
+        } else {
+            lerp(plane(az.i0), plane(az.i1), az.wf)
         }
     }
 }
@@ -410,7 +447,6 @@ mod tests {
             border: 0,
             base: BaseFormat::Rgba,
             texels: Texels::Rgba8(texels),
-            stencil: Vec::new(),
         })
     }
 
@@ -490,15 +526,10 @@ mod tests {
 
     #[test]
     fn depth_comparison_and_modes() {
-        let img = Arc::new(TexImage {
-            width: 2,
-            height: 1,
-            depth: 1,
-            border: 0,
-            base: BaseFormat::Depth,
-            texels: Texels::Depth(vec![0.25, 0.75]),
-            stencil: Vec::new(),
-        });
+        let mut img = TexImage::new_depth(2, 1, 1, 0, super::super::depth_storage(32, false, true)).unwrap();
+        img.set_depth_f32(0, 0.25);
+        img.set_depth_f32(1, 0.75);
+        let img = Arc::new(img);
         let mut s = sampler(vec![img], Wrap::ClampToEdge, Filter::Linear);
         s.base = BaseFormat::Depth;
         s.compare = Some(CompareFunc::LessEqual);

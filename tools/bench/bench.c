@@ -340,6 +340,67 @@ static double scene_textured(void)
     return (double)LAYERS * W * H;
 }
 
+/* Render to texture, as a shadow-mapping client does each frame: depth is drawn into a
+ * 2048 x 2048 GL_DEPTH_COMPONENT24 texture attached to a framebuffer object (a cleared map and
+ * 8 overlapping occluder quads), then the window is filled with that texture sampled with
+ * depth comparison (GL_COMPARE_R_TO_TEXTURE, linear filtering). */
+#define SHADOW_SIZE 2048
+static double scene_fbo_shadow_map(void)
+{
+    static GLuint texture, fbo;
+    if (!fbo) {
+        glGenTextures(1, &texture);
+        glBindTexture(GL_TEXTURE_2D, texture);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, SHADOW_SIZE, SHADOW_SIZE, 0, GL_DEPTH_COMPONENT,
+                     GL_UNSIGNED_INT, NULL);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_R_TO_TEXTURE);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+        glGenFramebuffers(1, &fbo);
+        glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, texture, 0);
+        glDrawBuffer(GL_NONE);
+        glReadBuffer(GL_NONE);
+        if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+            fprintf(stderr, "bench: the shadow map framebuffer is not complete\n");
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    }
+    /* The depth pass. */
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glViewport(0, 0, SHADOW_SIZE, SHADOW_SIZE);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    for (int l = 0; l < LAYERS; l++) {
+        float x0 = -1.0f + 0.2f * l, y0 = -0.9f + 0.15f * l, z = 0.8f - 0.2f * l;
+        glBegin(GL_QUADS);
+        glVertex3f(x0, y0, z);
+        glVertex3f(x0 + 1.0f, y0, z - 0.3f);
+        glVertex3f(x0 + 1.0f, y0 + 1.0f, z - 0.3f);
+        glVertex3f(x0, y0 + 1.0f, z);
+        glEnd();
+    }
+    glDisable(GL_DEPTH_TEST);
+    /* The lit pass: the window, each pixel compared against the map. */
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, W, H);
+    glBindTexture(GL_TEXTURE_2D, texture);
+    glEnable(GL_TEXTURE_2D);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+    const float xs[4] = {-1, 1, 1, -1}, ys[4] = {-1, -1, 1, 1};
+    glBegin(GL_QUADS);
+    for (int i = 0; i < 4; i++) {
+        glColor4f(0.9f, 0.8f, 0.6f, 1.0f);
+        glTexCoord3f((xs[i] + 1) * 0.5f, (ys[i] + 1) * 0.5f, 0.3f + 0.2f * (xs[i] + 1));
+        glVertex2f(xs[i], ys[i]);
+    }
+    glEnd();
+    glDisable(GL_TEXTURE_2D);
+    return (double)LAYERS * SHADOW_SIZE * SHADOW_SIZE / 4 + (double)W * H;
+}
+
 /* The per-stage scene: the smooth scene with one fragment stage enabled (all passing). */
 static const char *stage_name = "none";
 static double scene_stage(void)
@@ -514,6 +575,7 @@ int main(int argc, char **argv)
     run(dir, "fog_blend", scene_fog_blend, reps);
     run(dir, "lit_mesh", scene_lit_mesh, reps);
     run(dir, "textured_fill", scene_textured, reps);
+    run(dir, "fbo_shadow_map", scene_fbo_shadow_map, reps);
     const char *stages[] = {"none", "scissor", "alpha", "stencil", "depth", "blend", "logic_op", "fog", "dither"};
     for (unsigned s = 0; s < sizeof stages / sizeof *stages; s++) {
         char name[64];
