@@ -24,6 +24,7 @@ SCENES = [
     ("fog_blend", "Fog + blend (8 layers)"),
     ("lit_mesh", "Lit mesh (128×128 quads, 2 lights, specular)"),
     ("textured_fill", "Textured fill, trilinear (8 layers)"),
+    ("fbo_shadow_map", "Render to texture: 2048² depth texture in an FBO (8 quads), then sampled with depth compare"),
 ]
 STAGES = ["none", "scissor", "alpha", "stencil", "depth", "blend", "logic_op", "fog", "dither"]
 GOAL_FILL = {"flat_fill", "smooth_fill", "blend_fill", "depth_overdraw", "stencil_shadow", "fog_blend"}
