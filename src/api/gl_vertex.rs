@@ -24,7 +24,7 @@ pub extern "C" fn glEnd() {
 
 #[no_mangle]
 pub extern "C" fn glVertex2s(x: GLshort, y: GLshort) {
-    record_or_run(move |ctx| ctx.vertex([x.to_f32(), y.to_f32(), 0.0, 1.0]))
+    record_or_run(move |ctx| ctx.vertex_xyzw(x.to_f32(), y.to_f32(), 0.0, 1.0))
 }
 
 /// # Safety
@@ -39,7 +39,7 @@ pub unsafe extern "C" fn glVertex2sv(v: *const GLshort) {
 
 #[no_mangle]
 pub extern "C" fn glVertex2i(x: GLint, y: GLint) {
-    record_or_run(move |ctx| ctx.vertex([x.to_f32(), y.to_f32(), 0.0, 1.0]))
+    record_or_run(move |ctx| ctx.vertex_xyzw(x.to_f32(), y.to_f32(), 0.0, 1.0))
 }
 
 /// # Safety
@@ -54,7 +54,7 @@ pub unsafe extern "C" fn glVertex2iv(v: *const GLint) {
 
 #[no_mangle]
 pub extern "C" fn glVertex2f(x: GLfloat, y: GLfloat) {
-    record_or_run(move |ctx| ctx.vertex([x, y, 0.0, 1.0]))
+    record_or_run(move |ctx| ctx.vertex_xyzw(x, y, 0.0, 1.0))
 }
 
 /// # Safety
@@ -69,7 +69,7 @@ pub unsafe extern "C" fn glVertex2fv(v: *const GLfloat) {
 
 #[no_mangle]
 pub extern "C" fn glVertex2d(x: GLdouble, y: GLdouble) {
-    record_or_run(move |ctx| ctx.vertex([x.to_f32(), y.to_f32(), 0.0, 1.0]))
+    record_or_run(move |ctx| ctx.vertex_xyzw(x.to_f32(), y.to_f32(), 0.0, 1.0))
 }
 
 /// # Safety
@@ -84,7 +84,7 @@ pub unsafe extern "C" fn glVertex2dv(v: *const GLdouble) {
 
 #[no_mangle]
 pub extern "C" fn glVertex3s(x: GLshort, y: GLshort, z: GLshort) {
-    record_or_run(move |ctx| ctx.vertex([x.to_f32(), y.to_f32(), z.to_f32(), 1.0]))
+    record_or_run(move |ctx| ctx.vertex_xyzw(x.to_f32(), y.to_f32(), z.to_f32(), 1.0))
 }
 
 /// # Safety
@@ -99,7 +99,7 @@ pub unsafe extern "C" fn glVertex3sv(v: *const GLshort) {
 
 #[no_mangle]
 pub extern "C" fn glVertex3i(x: GLint, y: GLint, z: GLint) {
-    record_or_run(move |ctx| ctx.vertex([x.to_f32(), y.to_f32(), z.to_f32(), 1.0]))
+    record_or_run(move |ctx| ctx.vertex_xyzw(x.to_f32(), y.to_f32(), z.to_f32(), 1.0))
 }
 
 /// # Safety
@@ -114,7 +114,7 @@ pub unsafe extern "C" fn glVertex3iv(v: *const GLint) {
 
 #[no_mangle]
 pub extern "C" fn glVertex3f(x: GLfloat, y: GLfloat, z: GLfloat) {
-    record_or_run(move |ctx| ctx.vertex([x, y, z, 1.0]))
+    record_or_run(move |ctx| ctx.vertex_xyzw(x, y, z, 1.0))
 }
 
 /// # Safety
@@ -129,7 +129,7 @@ pub unsafe extern "C" fn glVertex3fv(v: *const GLfloat) {
 
 #[no_mangle]
 pub extern "C" fn glVertex3d(x: GLdouble, y: GLdouble, z: GLdouble) {
-    record_or_run(move |ctx| ctx.vertex([x.to_f32(), y.to_f32(), z.to_f32(), 1.0]))
+    record_or_run(move |ctx| ctx.vertex_xyzw(x.to_f32(), y.to_f32(), z.to_f32(), 1.0))
 }
 
 /// # Safety
@@ -144,7 +144,7 @@ pub unsafe extern "C" fn glVertex3dv(v: *const GLdouble) {
 
 #[no_mangle]
 pub extern "C" fn glVertex4s(x: GLshort, y: GLshort, z: GLshort, w: GLshort) {
-    record_or_run(move |ctx| ctx.vertex([x.to_f32(), y.to_f32(), z.to_f32(), w.to_f32()]))
+    record_or_run(move |ctx| ctx.vertex_xyzw(x.to_f32(), y.to_f32(), z.to_f32(), w.to_f32()))
 }
 
 /// # Safety
@@ -159,7 +159,7 @@ pub unsafe extern "C" fn glVertex4sv(v: *const GLshort) {
 
 #[no_mangle]
 pub extern "C" fn glVertex4i(x: GLint, y: GLint, z: GLint, w: GLint) {
-    record_or_run(move |ctx| ctx.vertex([x.to_f32(), y.to_f32(), z.to_f32(), w.to_f32()]))
+    record_or_run(move |ctx| ctx.vertex_xyzw(x.to_f32(), y.to_f32(), z.to_f32(), w.to_f32()))
 }
 
 /// # Safety
@@ -174,7 +174,7 @@ pub unsafe extern "C" fn glVertex4iv(v: *const GLint) {
 
 #[no_mangle]
 pub extern "C" fn glVertex4f(x: GLfloat, y: GLfloat, z: GLfloat, w: GLfloat) {
-    record_or_run(move |ctx| ctx.vertex([x, y, z, w]))
+    record_or_run(move |ctx| ctx.vertex_xyzw(x, y, z, w))
 }
 
 /// # Safety
@@ -189,7 +189,7 @@ pub unsafe extern "C" fn glVertex4fv(v: *const GLfloat) {
 
 #[no_mangle]
 pub extern "C" fn glVertex4d(x: GLdouble, y: GLdouble, z: GLdouble, w: GLdouble) {
-    record_or_run(move |ctx| ctx.vertex([x.to_f32(), y.to_f32(), z.to_f32(), w.to_f32()]))
+    record_or_run(move |ctx| ctx.vertex_xyzw(x.to_f32(), y.to_f32(), z.to_f32(), w.to_f32()))
 }
 
 /// # Safety

@@ -64,8 +64,14 @@ pub(crate) fn with_context<R: Copy>(default: R, f: impl FnOnce(&mut Context) -> 
 /// context, or records it in the list being compiled (see `context::lists`). The closure owns
 /// its arguments (`move`), so anything a pointer argument designates must be read into owned
 /// values before (vector forms call the scalar form; arrays are copied).
-pub(crate) fn record_or_run(command: impl Fn(&mut Context) + Send + Sync + 'static) {
-    with_context((), |ctx| ctx.record_or_run(command))
+///
+/// The closure is used by reference and cloned only when a list records it: moved into the
+/// guarded closure, its captured arguments were copied through memory with loads wider than
+/// the stores that wrote them (two `f32` stores read back as one `u64`), a store-forwarding
+/// stall that was most of an immediate-mode call's cost (glColor3f: 20 ns against 5).
+pub(crate) fn record_or_run<F: Fn(&mut Context) + Clone + Send + Sync + 'static>(command: F) {
+    let command = &command;
+    with_context((), |ctx| if ctx.lists.compiling() { ctx.record_or_run(command.clone()) } else { command(ctx) })
 }
 
 /// Runs `f` with panics caught; returns `default` if it panicked.

@@ -199,12 +199,19 @@ impl Context {
                     fb.clear_color_samples(slot, rect, value, color_masks[index]);
                 }
             }
-            if mask & GL_DEPTH_BUFFER_BIT != 0 && depth.0 {
+            let (clear_depth, clear_stencil) =
+                (mask & GL_DEPTH_BUFFER_BIT != 0 && depth.0, mask & GL_STENCIL_BUFFER_BIT != 0);
+            if clear_depth && clear_stencil {
+                fb.depth_stencil_mut().clear_depth_and_stencil(rect, depth.1, stencil.1 as u8, stencil.0 as u8);
+            } else if clear_depth {
                 fb.depth_stencil_mut().clear_depth(rect, depth.1);
+            } else if clear_stencil {
+                fb.depth_stencil_mut().clear_stencil(rect, stencil.1 as u8, stencil.0 as u8);
+            }
+            if clear_depth {
                 fb.clear_depth_samples(rect, depth.1);
             }
-            if mask & GL_STENCIL_BUFFER_BIT != 0 {
-                fb.depth_stencil_mut().clear_stencil(rect, stencil.1 as u8, stencil.0 as u8);
+            if clear_stencil {
                 fb.clear_stencil_samples(rect, stencil.1 as u8, stencil.0 as u8);
             }
             if mask & GL_ACCUM_BUFFER_BIT != 0 {

@@ -49,13 +49,28 @@ impl<T: Default> Default for Shared<T> {
     }
 }
 
+/// The handles of a share group's tables. A context keeps a copy beside its state
+/// (`current::SharedContext`), so that a new context can join the group of one that is
+/// current on another thread, whose state that thread holds.
+#[derive(Clone)]
+pub struct ShareGroup {
+    textures: Shared<crate::context::texture::TextureTable>,
+    buffers: Shared<crate::vertex::buffer_objects::BufferTable>,
+    lists: super::lists::ListNames,
+}
+
 impl super::Context {
-    /// Makes this (new) context share the objects of `other`'s share group: its texture
-    /// objects, buffer objects and display lists.
-    pub fn share_objects_with(&mut self, other: &super::Context) {
-        self.textures = other.textures.clone();
-        self.buffers = other.buffers.clone();
-        self.lists.share(other.lists.names());
+    /// The share group this context belongs to.
+    pub fn share_group(&self) -> ShareGroup {
+        ShareGroup { textures: self.textures.clone(), buffers: self.buffers.clone(), lists: self.lists.names() }
+    }
+
+    /// Makes this (new) context share the objects of `group`: its texture objects, buffer
+    /// objects and display lists.
+    pub fn join_share_group(&mut self, group: &ShareGroup) {
+        self.textures = group.textures.clone();
+        self.buffers = group.buffers.clone();
+        self.lists.share(group.lists.clone());
     }
 }
 

@@ -13,12 +13,27 @@ use super::format::{
 use super::{OutOfMemory, Rect};
 
 /// A vector of `len` copies of `value`, or [`OutOfMemory`].
+///
+/// `vec!` asks the allocator for zeroed memory when `value` is all zero bits (the usual
+/// case: black, depth 0, stencil 0), and for a large buffer that is fresh pages, which the
+/// kernel zeroes when they are first touched: a buffer that the first glClear overwrites is
+/// then written once, not twice (a 1024×1024 context wrote 8 MB of zeros before its first
+/// clear wrote them again). `vec!` aborts when the allocation fails, so a large buffer is
+/// probed first with a fallible reservation (freed at once). Not below [`PROBE_ABOVE`]:
+/// glibc serves a block it has just freed from its heap rather than from fresh pages once
+/// the freed block was smaller than 32 MiB (its mmap threshold adapts), and must then zero
+/// it with memset; a smaller buffer failing to allocate means the process is out of memory
+/// anyway.
 fn alloc_filled<T: Clone>(len: usize, value: T) -> Result<Vec<T>, OutOfMemory> {
-    let mut v = Vec::new();
-    v.try_reserve_exact(len).map_err(|_| OutOfMemory)?;
-    v.resize(len, value);
-    Ok(v)
+    let bytes = len.checked_mul(std::mem::size_of::<T>()).ok_or(OutOfMemory)?;
+    if bytes > PROBE_ABOVE {
+        Vec::<T>::new().try_reserve_exact(len).map_err(|_| OutOfMemory)?;
+    }
+    Ok(vec![value; len])
 }
+
+/// The size above which [`alloc_filled`] probes the allocation before making it.
+const PROBE_ABOVE: usize = 64 << 20;
 
 /// Index range of row `y` between `x0` and `x1` in a buffer `width` wide.
 #[inline]
@@ -386,19 +401,7 @@ impl DepthStencilBuffer {
         if bits == 0 || rect.is_empty() {
             return;
         }
-        let rows = self.len().checked_div(self.width).unwrap_or(0);
-        let whole_buffer = rect == Rect::from_xywh(0, 0, self.width as i32, rows as i32);
-        // llvmpipe packs a whole-buffer clear from the double-precision depth, and draws a
-        // partial (scissored) clear as a quad at NDC depth 2d − 1, which the viewport maps
-        // back in single precision before the fragment depth store: 0.1 clears a 16-bit
-        // buffer to 0x199a, a scissored part of it to 0x1999 (matches Mesa on 4082 samples).
-        let encoding = self.format.depth_encoding();
-        let value = if whole_buffer {
-            encoding.encode_f64(depth)
-        } else {
-            let ndc = depth as f32 * 2.0 - 1.0;
-            encoding.encode_fragment(ndc * 0.5 + 0.5)
-        };
+        let value = self.depth_clear_value(rect, depth);
         let width = self.width;
         for y in rect.y0..rect.y1 {
             let r = span(width, y, rect.x0, rect.x1);
@@ -411,6 +414,46 @@ impl DepthStencilBuffer {
                 }
                 DepthStencilPixels::Depth32(px, _) => px[r].fill(value),
                 DepthStencilPixels::None => {}
+            }
+        }
+    }
+
+    /// The stored value a depth clear of `rect` to `depth` writes.
+    fn depth_clear_value(&self, rect: Rect, depth: f64) -> u32 {
+        let rows = self.len().checked_div(self.width).unwrap_or(0);
+        let whole_buffer = rect == Rect::from_xywh(0, 0, self.width as i32, rows as i32);
+        // llvmpipe packs a whole-buffer clear from the double-precision depth, and draws a
+        // partial (scissored) clear as a quad at NDC depth 2d − 1, which the viewport maps
+        // back in single precision before the fragment depth store: 0.1 clears a 16-bit
+        // buffer to 0x199a, a scissored part of it to 0x1999 (matches Mesa on 4082 samples).
+        let encoding = self.format.depth_encoding();
+        if whole_buffer {
+            encoding.encode_f64(depth)
+        } else {
+            let ndc = depth as f32 * 2.0 - 1.0;
+            encoding.encode_fragment(ndc * 0.5 + 0.5)
+        }
+    }
+
+    /// Clears depth and stencil in `rect` together: the same as [`Self::clear_depth`] then
+    /// [`Self::clear_stencil`]. Packed 24/8 with every stencil bit written is one store per
+    /// pixel, with no read: the two read-modify-write passes read a fresh buffer's pages
+    /// before writing them, which costs the kernel two page faults per page instead of one.
+    pub fn clear_depth_and_stencil(&mut self, rect: Rect, depth: f64, stencil: u8, write_mask: u8) {
+        let whole_word = matches!(self.pixels, DepthStencilPixels::Packed24(_))
+            && self.depth_bits() == 24
+            && self.stencil_bits() == 8
+            && write_mask == 0xff;
+        if !whole_word || rect.is_empty() {
+            self.clear_depth(rect, depth);
+            self.clear_stencil(rect, stencil, write_mask);
+            return;
+        }
+        let value = self.depth_clear_value(rect, depth) | (stencil as u32) << 24;
+        let width = self.width;
+        if let DepthStencilPixels::Packed24(px) = &mut self.pixels {
+            for y in rect.y0..rect.y1 {
+                px[span(width, y, rect.x0, rect.x1)].fill(value);
             }
         }
     }
@@ -1067,6 +1110,41 @@ mod color_tests {
         let mut stencil = Vec::new();
         ds.read_stencil_row(0, 0, 4, &mut stencil);
         assert_eq!(stencil, vec![0x5a; 4]);
+    }
+
+    #[test]
+    fn a_joint_depth_and_stencil_clear_stores_what_the_two_clears_store() {
+        let packed = DepthStencilFormat::Packed24 { depth: true, stencil: true };
+        let cases = [
+            (Rect::from_xywh(0, 0, 4, 4), 0.1, 0x5a, 0xff),
+            (Rect::from_xywh(1, 1, 2, 3), 0.7, 0x3c, 0xff),
+            (Rect::from_xywh(0, 0, 4, 4), 0.3, 0xa5, 0x0f),
+        ];
+        for (rect, depth, stencil, mask) in cases {
+            let mut joint = DepthStencilBuffer::new(packed, 4, 16).unwrap();
+            let mut apart = DepthStencilBuffer::new(packed, 4, 16).unwrap();
+            // Different earlier contents per pixel, so that a clear outside `rect` or of
+            // masked bits would show.
+            for ds in [&mut joint, &mut apart] {
+                for i in 0..4 {
+                    ds.clear_depth(Rect::from_xywh(i, 0, 1, 4), 0.2 * i as f64);
+                    ds.clear_stencil(Rect::from_xywh(0, i, 4, 1), 0x11 * i as u8, 0xff);
+                }
+            }
+            joint.clear_depth_and_stencil(rect, depth, stencil, mask);
+            apart.clear_depth(rect, depth);
+            apart.clear_stencil(rect, stencil, mask);
+            let (DepthStencilPixels::Packed24(a), DepthStencilPixels::Packed24(b)) = (joint.pixels(), apart.pixels())
+            else {
+                unreachable!()
+            };
+            assert_eq!(a, b, "{rect:?}");
+            // Pixel (1, 1) is inside every rectangle.
+            assert_eq!(a[5] & 0x00ff_ffff, apart.depth_clear_value(rect, depth));
+            if mask == 0xff {
+                assert_eq!(a[5] >> 24, stencil as u32);
+            }
+        }
     }
 
     #[test]

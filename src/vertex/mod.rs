@@ -62,14 +62,20 @@ use crate::gl::limits::MAX_TEXTURE_UNITS;
 
 /// One vertex as a draw call delivers it: object-space position and every attribute the
 /// fixed-function pipeline may use (unused ones keep the current values).
+///
+/// The layout is fixed, with every four-float attribute on a 16-byte boundary: the compiler's
+/// own layout put the texture coordinates at byte 76, and immediate mode's copy of a vertex
+/// then read 16-byte pieces that straddled two earlier stores, a store-forwarding stall that
+/// was a third of a glVertex call.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[repr(C, align(16))]
 pub struct Vertex {
     /// Object coordinates (x, y, z, w).
     pub position: [f32; 4],
     pub color: [f32; 4],
     pub secondary_color: [f32; 4],
-    pub normal: [f32; 3],
     pub tex_coords: [[f32; 4]; MAX_TEXTURE_UNITS],
+    pub normal: [f32; 3],
     pub fog_coord: f32,
     /// Whether edges starting at this vertex are boundary edges (glEdgeFlag).
     pub edge_flag: bool,

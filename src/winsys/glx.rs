@@ -656,7 +656,7 @@ pub fn create_context(display: DisplayAddr, config: &'static FbConfig, share: us
     };
     let mut context = Context::new(ContextConfig { visual: config.framebuffer_config() });
     if let Some(source) = share_source {
-        context.share_objects_with(&source.shared.lock());
+        context.join_share_group(source.shared.share_group());
     }
     let glx = Arc::new(GlxContext { shared: SharedContext::new(context), config, display, share });
     let handle = Arc::as_ptr(&glx) as usize;
@@ -717,9 +717,7 @@ pub enum MakeCurrentError {
 
 /// Completes the rendering of this thread's current context.
 fn flush_current_rendering() {
-    if let Some(shared) = current::current() {
-        shared.lock().flush_rendering();
-    }
+    current::with_current(|gl| gl.flush_rendering());
 }
 
 /// Releases this thread's current GLX context (if `except` is not it) from its drawable: its
@@ -731,7 +729,7 @@ fn release_current_glx(except: Option<&Arc<SharedContext>>) {
     }
     if let Some(shared) = current::current() {
         if !except.is_some_and(|e| Arc::ptr_eq(e, &shared)) {
-            shared.lock().bind_drawable(None);
+            current::with_current(|gl| gl.bind_drawable(None));
         }
     }
 }
@@ -763,11 +761,10 @@ pub fn make_current(display: DisplayAddr, draw: u64, read: u64, context: usize) 
     read_drawable.follow_size();
     release_current_glx(Some(&glx.shared));
     current::make_current(Some(glx.shared.clone())).map_err(|_| MakeCurrentError::BadAccess)?;
-    {
-        let mut context = glx.shared.lock();
+    current::with_current(|context| {
         context.bind_drawable(Some(drawable.surface.clone()));
         context.bind_read_drawable(Some(read_drawable.surface.clone()));
-    }
+    });
     set_binding(CurrentBinding { context, draw, read, display }, Arc::as_ptr(&glx.shared) as usize);
     Ok(())
 }
@@ -793,9 +790,7 @@ pub fn swap_buffers(display: DisplayAddr, xid: u64) {
 
 /// glXWaitGL: completes rendering and shows the front buffer.
 pub fn wait_gl() {
-    if let Some(shared) = current::current() {
-        shared.lock().finish();
-    }
+    current::with_current(|gl| gl.finish());
 }
 
 /// glXWaitX: waits until the X server processed the application's requests.
@@ -818,16 +813,12 @@ pub fn server_extension(display: DisplayAddr, name: &std::ffi::CStr) -> Option<(
 
 /// glXCopyContext: copies the attribute groups of `mask` from `source` to `target`.
 pub fn copy_context(source: &GlxContext, target: &GlxContext, mask: u32) -> bool {
-    if Arc::ptr_eq(&source.shared, &target.shared) {
-        return false;
-    }
+    // A destination current on some thread (this one included), or a source current on
+    // another thread, cannot be reached: BadAccess.
     if target.shared.bound_thread().is_some() {
         return false;
     }
-    let mut src = source.shared.lock();
-    let mut dst = target.shared.lock();
-    dst.copy_attribs_from(&mut src, mask);
-    true
+    current::with_two(&source.shared, &target.shared, |src, dst| dst.copy_attribs_from(src, mask)).is_some()
 }
 
 #[cfg(test)]

@@ -331,7 +331,7 @@ impl OsMesaContext {
         *binding = Some(Binding { address: presenter_address, ty, width, height, drawable: drawable.clone() });
         drop(binding);
         current::make_current(Some(self.shared.clone())).map_err(|_| BindFailure::CurrentElsewhere)?;
-        self.shared.lock().bind_drawable(Some(drawable));
+        self.shared.with_gl(|gl| gl.bind_drawable(Some(drawable)));
         Ok(())
     }
 
@@ -384,7 +384,7 @@ impl OsMesaContext {
 
     /// The caller's buffer address and size, after flushing rendering into it.
     pub fn color_buffer(&self) -> Option<(usize, usize, usize)> {
-        self.shared.lock().flush_rendering();
+        self.shared.with_gl(|gl| gl.flush_rendering());
         let binding = self.lock_binding();
         let b = binding.as_ref()?;
         b.drawable.lock().unwrap_or_else(|p| p.into_inner()).present();
@@ -394,7 +394,7 @@ impl OsMesaContext {
     /// The internal depth buffer: (width, height, bytes per value, address), after flushing.
     /// `None` without depth bits.
     pub fn depth_buffer(&self) -> Option<(usize, usize, usize, usize)> {
-        self.shared.lock().flush_rendering();
+        self.shared.with_gl(|gl| gl.flush_rendering());
         let binding = self.lock_binding();
         let b = binding.as_ref()?;
         let drawable = b.drawable.lock().unwrap_or_else(|p| p.into_inner());
@@ -443,7 +443,7 @@ pub fn create(request: Request, share: Option<usize>) -> Option<usize> {
     let placeholder = request.layout.color_format(GL_UNSIGNED_BYTE).unwrap_or(ColorFormat::Rgb565);
     let mut context = Context::new(ContextConfig { visual: request.config(placeholder) });
     if let Some(share) = share {
-        context.share_objects_with(&share.shared.lock());
+        context.join_share_group(share.shared.share_group());
     }
     let osmesa = Arc::new(OsMesaContext {
         shared: SharedContext::new(context),
@@ -484,7 +484,7 @@ pub fn destroy(handle: usize) {
     if current::current().is_some_and(|c| Arc::ptr_eq(&c, &context.shared)) {
         let _ = current::make_current(None);
     }
-    context.shared.lock().bind_drawable(None);
+    context.shared.with_gl(|gl| gl.bind_drawable(None));
 }
 
 /// OSMesaMakeCurrent(NULL, NULL, ...): releases the current context.

@@ -3,10 +3,14 @@
 
 Reads <dir>/<implementation>/round<N>.txt (bench.c's output) and the images of the last
 round, <dir>/<implementation>/<scene>.rgba; errors are measured by `bench --compare` against
-tessera's exact mode on one thread. Standard library only.
+tessera's exact mode on one thread. Also, when present: <dir>/sizes.txt (library sizes),
+<dir>/immediate-<impl>-round<N>.txt (immediate.c's output) and <dir>/mujoco-round<N>.json
+(tools/clients/mujoco_compare.py --json). Standard library only.
 """
 import argparse
 import datetime
+import glob
+import json
 import math
 import os
 import platform
@@ -27,6 +31,7 @@ SCENES = [
     ("fbo_shadow_map", "Render to texture: 2048² depth texture in an FBO (8 quads), then sampled with depth compare"),
 ]
 STAGES = ["none", "scissor", "alpha", "stencil", "depth", "blend", "logic_op", "fog", "dither"]
+LIBRARY_LIMIT_MB = 5.0
 GOAL_FILL = {"flat_fill", "smooth_fill", "blend_fill", "depth_overdraw", "stencil_shadow", "fog_blend"}
 
 
@@ -47,7 +52,8 @@ def parse(path):
 
 
 def implementations(directory):
-    names = sorted(n for n in os.listdir(directory) if os.path.isdir(os.path.join(directory, n)))
+    # The folders holding bench.c's output (not mujoco/, the MuJoCo script's images).
+    names = sorted(n for n in os.listdir(directory) if glob.glob(os.path.join(directory, n, "round*.txt")))
 
     def key(name):
         if name == "llvmpipe":
@@ -84,6 +90,37 @@ def compare(bench, reference, image):
     parts = out.split()
     values = dict(zip(parts[0::2], parts[1::2]))
     return values
+
+
+def extras(directory):
+    """Library sizes, immediate-mode ns per call (median over rounds) and MuJoCo ms per frame."""
+    sizes = {}
+    path = os.path.join(directory, "sizes.txt")
+    if os.path.exists(path):
+        with open(path) as f:
+            sizes = {name: int(size) for name, size in (line.split() for line in f if line.strip())}
+    calls = {}
+    for path in sorted(glob.glob(os.path.join(directory, "immediate-*-round*.txt"))):
+        impl = os.path.basename(path)[len("immediate-") :].rsplit("-round", 1)[0]
+        with open(path) as f:
+            for line in f:
+                parts = line.split()
+                if len(parts) == 3 and parts[0] == "call":
+                    calls.setdefault(parts[1], {}).setdefault(impl, []).append(float(parts[2]))
+    calls = {name: {impl: statistics.median(v) for impl, v in by_impl.items()} for name, by_impl in calls.items()}
+    mujoco = {}
+    for path in sorted(glob.glob(os.path.join(directory, "mujoco-round*.json"))):
+        with open(path) as f:
+            run = json.load(f)
+        for impl in ("tessera", "mesa"):
+            if isinstance(run.get(impl), dict):
+                mujoco.setdefault(impl, []).append(run[impl]["per_frame_ms"])
+        mujoco["frames"] = run.get("frames")
+        mujoco["difference"] = run.get("difference")
+    for impl in ("tessera", "mesa"):
+        if impl in mujoco:
+            mujoco[impl] = statistics.median(mujoco[impl])
+    return sizes, calls, mujoco
 
 
 def fmt_ms(ms):
@@ -161,6 +198,7 @@ def main():
         bench = "target/bench/bench"
     impls = implementations(args.dir)
     results = {impl: collect(args.dir, impl) for impl in impls}
+    sizes, calls, mujoco = extras(args.dir)
     reference = "tessera-exact-1t"
     default = f"tessera-conformant-{args.cores}t"
     for impl in impls:
@@ -234,6 +272,76 @@ def main():
             f"| Context + first frame | {fmt_ms(ctx)} ms | {fmt_ms(results['llvmpipe']['first_frame'])} ms | "
             f"{results['llvmpipe']['first_frame'] / ctx:.2f}× | < 1 ms | {'yes' if ctx < 1 else 'no'} |"
         )
+    if "tessera" in mujoco and "mesa" in mujoco:
+        ratio = mujoco["mesa"] / mujoco["tessera"]
+        md.append(
+            f"| MuJoCo renderer frame (640×480, default shadows, reflections) | {fmt_ms(mujoco['tessera'])} ms | "
+            f"{fmt_ms(mujoco['mesa'])} ms | {ratio:.2f}× | 1× | {'yes' if ratio >= 1 else 'no'} |"
+        )
+    for name, ns in calls.items():
+        if "tessera" in ns and "llvmpipe" in ns:
+            cost = ns["tessera"] / ns["llvmpipe"]
+            md.append(
+                f"| `{name}` call | {ns['tessera']:.1f} ns | {ns['llvmpipe']:.1f} ns | {1 / cost:.2f}× | 0.5× | "
+                f"{'yes' if cost <= 2 else 'no'} |"
+            )
+    for name, size in sizes.items():
+        mb = size / 1e6
+        md.append(f"| `{name}` size | {mb:.2f} MB | | | ≤ {LIBRARY_LIMIT_MB:g} MB | {'yes' if mb <= LIBRARY_LIMIT_MB else 'no'} |")
+    md.append("")
+
+    md.append("## Shipped libraries")
+    md.append("")
+    md.append(
+        "Size on disk of the drop-in libraries of `cargo build --release` (the release profile: fat LTO, one "
+        "codegen unit, no debug information; the symbol table is kept so that perf and callgrind name functions)."
+    )
+    md.append("")
+    md.append("| Library | Bytes | MB | Limit |")
+    md.append("|---|---:|---:|---:|")
+    for name, size in sizes.items():
+        md.append(f"| `{name}` | {size} | {size / 1e6:.2f} | {LIBRARY_LIMIT_MB:g} MB |")
+    if not sizes:
+        md.append("| (not measured) | | | |")
+    md.append("")
+
+    md.append("## Immediate-mode calls")
+    md.append("")
+    md.append(
+        "tools/bench/immediate.c: nanoseconds per call through OSMesa, best of 7 loops of many calls in each "
+        "process, median over the processes (tessera alternating with llvmpipe). The attribute calls only set "
+        "the current value; `glVertex3f` draws points outside the viewport 64 per glBegin/glEnd, so it includes "
+        "each vertex's transform and clipping; `glBegin/glEnd` is an empty pair. Goal: tessera within 2× of Mesa."
+    )
+    md.append("")
+    md.append("| Call | tessera ns | llvmpipe ns | tessera ÷ llvmpipe |")
+    md.append("|---|---:|---:|---:|")
+    for name, ns in calls.items():
+        t, m = ns.get("tessera", float("nan")), ns.get("llvmpipe", float("nan"))
+        md.append(f"| `{name}` | {t:.1f} | {m:.1f} | {t / m:.2f}× |")
+    if not calls:
+        md.append("| (not measured) | | | |")
+    md.append("")
+
+    md.append("## MuJoCo renderer")
+    md.append("")
+    if "tessera" in mujoco and "mesa" in mujoco:
+        diff = mujoco.get("difference") or {}
+        md.append(
+            "tools/clients/mujoco_compare.py `--default-shadows`: MuJoCo's `Renderer` (MUJOCO_GL=osmesa) at 640×480, "
+            "a reflective floor, two lights casting shadows with MuJoCo's default 4096² shadow map; time per color "
+            f"frame over {mujoco.get('frames')} frames after a first one, median over the rounds, tessera (all cores) "
+            "then llvmpipe in each round."
+        )
+        md.append("")
+        md.append("| tessera ms/frame | llvmpipe ms/frame | llvmpipe ÷ tessera | mean / max color difference |")
+        md.append("|---:|---:|---:|---:|")
+        md.append(
+            f"| {fmt_ms(mujoco['tessera'])} | {fmt_ms(mujoco['mesa'])} | {mujoco['mesa'] / mujoco['tessera']:.2f}× | "
+            f"{diff.get('mean_error', float('nan')):.2f} / {diff.get('max_error', '-')} |"
+        )
+    else:
+        md.append("Not measured: no MuJoCo venv (tools/clients.sh builds target/clients-venv), or a run failed.")
     md.append("")
 
     md.append("## Context creation and first frame")
@@ -283,14 +391,18 @@ def main():
         "The smooth-fill scene (8 full-window layers, w varying) with one fragment stage enabled at a time, set up "
         "so that every fragment passes (scissor box one pixel inside the window, alpha > 0.1 on alpha 0.75, stencil "
         "ALWAYS/REPLACE, depth LEQUAL, blend SRC_ALPHA/ONE_MINUS_SRC_ALPHA, logic op XOR, linear fog, dither on "
-        "RGBA8). \"Cost\" is the frame time over the same implementation's time with no stage (`none`); the last "
-        "column is llvmpipe's time over tessera's (above 1: tessera faster)."
+        "RGBA8). \"Added\" is the stage's cost: the frame time minus the same implementation's time with no "
+        "stage (`none`); \"cost\" is their ratio; the last column is llvmpipe's time over tessera's (above 1: "
+        "tessera faster)."
     )
     md.append("")
     tess1 = "tessera-conformant-1t"
-    header = f"| Stage | llvmpipe ms | llvmpipe cost | {default} ms | cost | {tess1} ms | cost | tessera ({args.cores}t) vs llvmpipe |"
+    header = (
+        f"| Stage | llvmpipe ms | llvmpipe added ms | llvmpipe cost | {default} ms | added ms | cost | "
+        f"{tess1} ms | added ms | cost | tessera ({args.cores}t) vs llvmpipe |"
+    )
     md.append(header)
-    md.append("|---|---:|---:|---:|---:|---:|---:|---:|")
+    md.append("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
 
     def stage_ms(impl, stage):
         entry = results.get(impl, {}).get("scenes", {}).get(f"stage_{stage}")
@@ -300,7 +412,8 @@ def main():
         row = [stage]
         for impl in ("llvmpipe", default, tess1):
             ms = stage_ms(impl, stage)
-            row += [fmt_ms(ms), f"{ms / stage_ms(impl, 'none'):.2f}×"]
+            none = stage_ms(impl, "none")
+            row += [fmt_ms(ms), f"{ms - none:+.2f}", f"{ms / none:.2f}×"]
         row.append(f"{stage_ms('llvmpipe', stage) / stage_ms(default, stage):.2f}×")
         md.append("| " + " | ".join(row) + " |")
     md.append("")

@@ -9,15 +9,17 @@ depth, fails when that warning appears (with --strict: any MuJoCo warning, such 
 "ARB_depth_buffer_float unavailable", which MuJoCo checks next), saves the color image as PNG and
 prints the GL renderer and the time per color frame.
 
-    python3 -m venv /tmp/mjvenv && /tmp/mjvenv/bin/pip install mujoco PyOpenGL pillow numpy
+    python3 -m venv /tmp/mjvenv && /tmp/mjvenv/bin/pip install mujoco PyOpenGL numpy   # pillow too for PNGs
     /tmp/mjvenv/bin/python tools/clients/mujoco_compare.py [--lib target/release] [--out DIR]
-        [--frames N] [--compare-with-mesa]
+        [--frames N] [--compare-with-mesa] [--default-shadows] [--json FILE]
 
 --lib is put first on LD_LIBRARY_PATH of the rendering process (MUJOCO_GL=osmesa,
 PYOPENGL_PLATFORM=osmesa); --compare-with-mesa renders the same frames again on the system's
 Mesa (no LD_LIBRARY_PATH) and reports the difference of the two images (fails above
 --max-mean-error, in 8-bit steps averaged over all channels). Exit status 0: no warning, and
-the images agree when compared.
+the images agree when compared. --default-shadows renders with MuJoCo's default shadow map
+(4096², instead of the 2048² of the checking scene): the benchmark's scene (tools/bench.sh).
+--json writes each implementation's time per frame and the image difference to FILE.
 """
 import argparse
 import json
@@ -65,13 +67,13 @@ MODEL = """
 """
 
 
-def render(out, frames):
+def render(out, frames, default_shadows):
     """The child process: renders `frames` frames, saves the last as PNG, prints JSON."""
     import mujoco
     import numpy as np
-    from PIL import Image
 
-    model = mujoco.MjModel.from_xml_string(MODEL)
+    xml = MODEL.replace('<quality shadowsize="2048"/>', "") if default_shadows else MODEL
+    model = mujoco.MjModel.from_xml_string(xml)
     data = mujoco.MjData(model)
     mujoco.mj_forward(model, data)
     renderer = mujoco.Renderer(model, HEIGHT, WIDTH)
@@ -87,7 +89,15 @@ def render(out, frames):
         renderer.update_scene(data, camera)
         image = renderer.render()
     per_frame = (time.perf_counter() - start) / max(frames, 1)
-    Image.fromarray(image).save(out)
+    # The pixels for the comparison; a PNG for people when Pillow is there (the clients venv
+    # of tools/clients.sh has none).
+    np.save(out[: -len(".png")] + "_color.npy", image)
+    try:
+        from PIL import Image
+
+        Image.fromarray(image).save(out)
+    except ImportError:
+        pass
     # The depth rendering is where MuJoCo checks for reversed-Z support.
     renderer.enable_depth_rendering()
     renderer.update_scene(data, camera)
@@ -107,7 +117,7 @@ def render(out, frames):
     )
 
 
-def run_child(lib, out, frames):
+def run_child(lib, out, frames, default_shadows=False):
     """Renders in a child process (MuJoCo's warnings go to the C streams) and returns its
     result and everything it printed."""
     env = dict(os.environ, MUJOCO_GL="osmesa", PYOPENGL_PLATFORM="osmesa")
@@ -115,7 +125,8 @@ def run_child(lib, out, frames):
     if lib:
         env["LD_LIBRARY_PATH"] = os.path.abspath(lib)
     child = subprocess.run(
-        [sys.executable, __file__, "--child", out, "--frames", str(frames)],
+        [sys.executable, __file__, "--child", out, "--frames", str(frames)]
+        + (["--default-shadows"] if default_shadows else []),
         env=env,
         capture_output=True,
         text=True,
@@ -132,10 +143,9 @@ def run_child(lib, out, frames):
 def image_difference(a, b):
     """Color difference in 8-bit steps, and the depth maps' (linear distances) relative one."""
     import numpy as np
-    from PIL import Image
 
-    x = np.asarray(Image.open(a), dtype=np.int32)
-    y = np.asarray(Image.open(b), dtype=np.int32)
+    x = np.load(a[: -len(".png")] + "_color.npy").astype(np.int32)
+    y = np.load(b[: -len(".png")] + "_color.npy").astype(np.int32)
     d = np.abs(x - y)
     za = np.load(a[: -len(".png")] + "_depth.npy")
     zb = np.load(b[: -len(".png")] + "_depth.npy")
@@ -159,9 +169,11 @@ def main():
     parser.add_argument("--compare-with-mesa", action="store_true")
     parser.add_argument("--max-mean-error", type=float, default=2.0)
     parser.add_argument("--strict", action="store_true", help="fail on any MuJoCo warning")
+    parser.add_argument("--default-shadows", action="store_true", help="MuJoCo's default 4096² shadow map")
+    parser.add_argument("--json", help="write the times per frame and the difference here")
     args = parser.parse_args()
     if args.child:
-        render(args.child, args.frames)
+        render(args.child, args.frames, args.default_shadows)
         return 0
 
     os.makedirs(args.out, exist_ok=True)
@@ -170,7 +182,7 @@ def main():
     results = {}
     for name, lib in runs:
         png = os.path.abspath(os.path.join(args.out, f"mujoco_{name}.png"))
-        code, result, output = run_child(lib, png, args.frames)
+        code, result, output = run_child(lib, png, args.frames, args.default_shadows)
         warnings = [l for l in output.splitlines() if "WARNING" in l or WARNING in l]
         print(f"{name}: exit {code}, renderer {result and result['renderer']!r}, "
               f"{result and round(result['per_frame_ms'], 1)} ms/frame, {png}")
@@ -187,11 +199,17 @@ def main():
             if any(WARNING in w for w in warnings) or (args.strict and warnings):
                 failed = True
         results[name] = result
+    diff = None
     if "tessera" in results and "mesa" in results:
         diff = image_difference(results["tessera"]["png"], results["mesa"]["png"])
         print(f"tessera vs mesa: {json.dumps(diff)}")
         if diff["mean_error"] > args.max_mean_error:
             failed = True
+    if args.json:
+        summary = {name: {"per_frame_ms": r["per_frame_ms"], "renderer": r["renderer"]} for name, r in results.items()}
+        summary.update(frames=args.frames, width=WIDTH, height=HEIGHT, difference=diff, failed=failed)
+        with open(args.json, "w") as f:
+            json.dump(summary, f, indent=1)
     print("FAIL" if failed else "ok")
     return 1 if failed else 0
 

@@ -48,13 +48,23 @@ impl Context {
 
     /// glVertex: appends a vertex at `position` with the current attributes (object
     /// coordinates; missing components are z = 0, w = 1).
-    #[inline]
+    #[inline(always)]
     pub fn vertex(&mut self, position: [f32; 4]) {
         if !self.inside_begin_end {
             return;
         }
         let vertex = self.state.current.vertex_at(position);
         self.push_open_vertex(vertex);
+    }
+
+    /// glVertex as the entry points call it: the coordinates come as four scalars, in
+    /// registers. Passed as an array, they were stored as four floats and read back as one
+    /// 16-byte value (or two 8-byte ones), a store-forwarding stall that cost more than the
+    /// rest of the call; out of line so that the entry points' closures stay small enough to
+    /// be inlined into them.
+    #[inline(never)]
+    pub fn vertex_xyzw(&mut self, x: f32, y: f32, z: f32, w: f32) {
+        self.vertex([x, y, z, w])
     }
 
     /// Appends a finished vertex to the open primitive (glVertex, glEvalCoord).
