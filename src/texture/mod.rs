@@ -16,6 +16,7 @@
 #![deny(unsafe_code)]
 
 pub mod env;
+mod kernel;
 pub mod sampler;
 
 /// The base internal format of a texture image (GL 2.1 table 3.15).
@@ -220,6 +221,15 @@ pub struct TextureStage {
     pub sampler: sampler::Sampler,
     pub env: env::TexEnv,
     pub slot: usize,
+    /// How the sampler's lookups run, chosen from it.
+    kernel: kernel::Kernel,
+}
+
+impl TextureStage {
+    pub fn new(unit: usize, sampler: sampler::Sampler, env: env::TexEnv, slot: usize) -> TextureStage {
+        let kernel = kernel::Kernel::choose(&sampler);
+        TextureStage { unit, sampler, env, slot, kernel }
+    }
 }
 
 /// The texturing of a draw: only the units that are enabled and complete, in unit order.
@@ -252,6 +262,9 @@ impl PartialEq for Texturing {
 /// Most texture units a draw can use.
 pub const MAX_UNITS: usize = crate::gl::limits::MAX_TEXTURE_UNITS;
 
+/// Fragments in a block given to [`Texturing::texture_quads`]: four 2×2 quads.
+pub const LANES: usize = 16;
+
 /// The projected coordinates (s/q, t/q, r/q) of a stage from a fragment's varyings.
 #[inline]
 fn projected(v: &[f32], slot: usize) -> [f32; 3] {
@@ -261,6 +274,67 @@ fn projected(v: &[f32], slot: usize) -> [f32; 3] {
 }
 
 impl Texturing {
+    /// Textures the lanes `live` of one quad: `coords[k][lane]` are stage k's projected
+    /// coordinates (every lane's: the derivatives need the upper row and the left column
+    /// even where their fragments are not live), `colors` the primary colors, replaced by
+    /// the last unit's output.
+    #[inline]
+    fn texture_quad(&self, coords: &[[[f32; 3]; 4]; MAX_UNITS], live: u8, colors: &mut [[f32; 4]; 4]) {
+        let mut texels = [[[0.0, 0.0, 0.0, 1.0]; MAX_UNITS]; 4];
+        for (k, s) in self.stages.iter().enumerate() {
+            let mut out = [[0.0; 4]; 4];
+            s.kernel.sample_quad(&s.sampler, &coords[k], live, &mut out);
+            for (lane, t) in texels.iter_mut().enumerate() {
+                t[s.unit] = out[lane];
+            }
+        }
+        for (lane, color) in colors.iter_mut().enumerate() {
+            if live & (1 << lane) == 0 {
+                continue;
+            }
+            let primary = *color;
+            let mut previous = primary;
+            for s in &self.stages {
+                previous = s.env.apply(s.unit, previous, primary, &texels[lane]);
+            }
+            *color = previous;
+        }
+    }
+
+    /// Textures the fragments `live` of a block of [`LANES`] lanes in structure-of-arrays
+    /// form: lane `4·q + 2·r + c` is column c (0 left) of row r (0 the upper in llvmpipe's
+    /// y-down rows) of quad q. `varyings[v][lane]` holds varying v of the draw (stage k's
+    /// s, t, r, q at its slot); every lane of a quad with a live lane must hold its
+    /// pixel's varyings (helper lanes give the derivatives). `colors[channel][lane]` holds
+    /// the primary colors and receives the last unit's output for the live lanes.
+    pub fn texture_quads(&self, varyings: &[[f32; LANES]], live: u16, colors: &mut [[f32; LANES]; 4]) {
+        for q in 0..LANES / 4 {
+            let quad_live = ((live >> (4 * q)) & 0xf) as u8;
+            if quad_live == 0 {
+                continue;
+            }
+            let mut coords = [[[0.0; 3]; 4]; MAX_UNITS];
+            for (k, s) in self.stages.iter().enumerate() {
+                for (lane, c) in coords[k].iter_mut().enumerate() {
+                    let v = [0, 1, 2, 3].map(|j| varyings[s.slot + j][4 * q + lane]);
+                    *c = projected(&v, 0);
+                }
+            }
+            let mut quad = [[0.0; 4]; 4];
+            for (lane, c) in quad.iter_mut().enumerate() {
+                *c = std::array::from_fn(|ch| colors[ch][4 * q + lane]);
+            }
+            self.texture_quad(&coords, quad_live, &mut quad);
+            for (lane, c) in quad.iter().enumerate() {
+                if quad_live & (1 << lane) != 0 {
+                    for ch in 0..4 {
+                        colors[ch][4 * q + lane] = c[ch];
+                    }
+                }
+            }
+        }
+    }
+
     /// Textures the fragments of `live` of the span at window row `y`, columns `x0..`:
     /// `colors` holds the primary colors and receives the last unit's output.
     /// `varyings_at(dx, dy, out)` evaluates the draw's varyings at the pixel `dx` columns
@@ -277,42 +351,57 @@ impl Texturing {
     ) {
         let n = self.stages.iter().map(|s| s.slot + 4).max().unwrap_or(0);
         scratch.resize(4 * n, 0.0);
-        let (here, rest) = scratch.split_at_mut(n);
-        let (tl, rest) = rest.split_at_mut(n);
-        let (tr, bl) = rest.split_at_mut(n);
-        // Quad rows in llvmpipe's y-down numbering: the quad's top row, and the one below.
+        let mut lane_varyings = scratch.chunks_exact_mut(n);
+        let mut lane = || lane_varyings.next().unwrap_or_default();
+        let v = [lane(), lane(), lane(), lane()];
+        // Quad rows in llvmpipe's y-down numbering: the quad's upper row, and the one below;
+        // the span is one of them (`row`), its fragments the lanes 2·row and 2·row + 1.
         let y_down = self.fb_height - 1 - y;
-        let top = self.fb_height - 1 - (y_down & !1);
-        let mut quad_x = i32::MIN;
-        let mut derivatives = [([0f32; 3], [0f32; 3]); MAX_UNITS];
-        let mut texels = [[0.0, 0.0, 0.0, 1.0]; MAX_UNITS];
-        for (i, color) in colors.iter_mut().enumerate() {
-            if live & (1 << i) == 0 {
-                continue;
-            }
-            let x = x0 + i as i32;
-            let qx = x & !1;
-            if qx != quad_x {
-                quad_x = qx;
-                varyings_at(qx - x0, top - y, tl);
-                varyings_at(qx + 1 - x0, top - y, tr);
-                varyings_at(qx - x0, top - 1 - y, bl);
-                for (k, s) in self.stages.iter().enumerate() {
-                    let (a, b, c) = (projected(tl, s.slot), projected(tr, s.slot), projected(bl, s.slot));
-                    derivatives[k] = (std::array::from_fn(|j| b[j] - a[j]), std::array::from_fn(|j| c[j] - a[j]));
+        let upper = self.fb_height - 1 - (y_down & !1) - y;
+        let row = usize::from(upper != 0);
+        let live = live & if colors.len() >= 64 { u64::MAX } else { (1 << colors.len()) - 1 };
+        let in_span = |i: i32| (0..64).contains(&i) && live & (1 << i) != 0;
+        let mut rest = live;
+        while rest != 0 {
+            let i = rest.trailing_zeros() as i32;
+            // The span index of the quad's left column (−1 when the span starts on its right).
+            let left = ((x0 + i) & !1) - x0;
+            let mut quad_live = 0u8;
+            for c in 0..2 {
+                if in_span(left + c) {
+                    quad_live |= 1 << (2 * row + c as usize);
+                    rest &= !(1 << (left + c));
                 }
             }
-            varyings_at(i as i32, 0, here);
+            // The upper row and the left column give the derivatives; the lower right
+            // pixel is evaluated only as a fragment of the span. A fragment's own lane is
+            // evaluated at the very arguments of its pixel (dy = 0), so it is the same.
+            varyings_at(left, upper, v[0]);
+            varyings_at(left + 1, upper, v[1]);
+            varyings_at(left, upper - 1, v[2]);
+            if quad_live & 8 != 0 {
+                varyings_at(left + 1, upper - 1, v[3]);
+            }
+            let mut coords = [[[0.0; 3]; 4]; MAX_UNITS];
             for (k, s) in self.stages.iter().enumerate() {
-                let (ddx, ddy) = derivatives[k];
-                texels[s.unit] = s.sampler.sample(projected(here, s.slot), ddx, ddy);
+                for (l, c) in coords[k].iter_mut().enumerate() {
+                    if l < 3 || quad_live & 8 != 0 {
+                        *c = projected(v[l], s.slot);
+                    }
+                }
             }
-            let primary = *color;
-            let mut previous = primary;
-            for s in &self.stages {
-                previous = s.env.apply(s.unit, previous, primary, &texels);
+            let mut quad = [[0.0; 4]; 4];
+            for c in 0..2 {
+                if quad_live & (1 << (2 * row + c)) != 0 {
+                    quad[2 * row + c] = colors[(left + c as i32) as usize];
+                }
             }
-            *color = previous;
+            self.texture_quad(&coords, quad_live, &mut quad);
+            for c in 0..2 {
+                if quad_live & (1 << (2 * row + c)) != 0 {
+                    colors[(left + c as i32) as usize] = quad[2 * row + c];
+                }
+            }
         }
     }
 }
