@@ -280,6 +280,20 @@ impl Texturing {
     /// the last unit's output.
     #[inline]
     fn texture_quad(&self, coords: &[[[f32; 3]; 4]; MAX_UNITS], live: u8, colors: &mut [[f32; 4]; 4]) {
+        if let [s] = self.stages.as_slice() {
+            // One unit, and an environment that reads no other unit's texture: no table of
+            // every unit's texels.
+            if !matches!(s.env.mode, env::EnvMode::Combine(_)) {
+                let mut out = [[0.0; 4]; 4];
+                s.kernel.sample_quad(&s.sampler, &coords[0], live, &mut out);
+                for (lane, (color, texel)) in colors.iter_mut().zip(&out).enumerate() {
+                    if live & (1 << lane) != 0 {
+                        *color = s.env.apply(0, *color, *color, std::slice::from_ref(texel));
+                    }
+                }
+                return;
+            }
+        }
         let mut texels = [[[0.0, 0.0, 0.0, 1.0]; MAX_UNITS]; 4];
         for (k, s) in self.stages.iter().enumerate() {
             let mut out = [[0.0; 4]; 4];
@@ -349,7 +363,8 @@ impl Texturing {
         scratch: &mut Vec<f32>,
         varyings_at: impl Fn(i32, i32, &mut [f32]),
     ) {
-        let n = self.stages.iter().map(|s| s.slot + 4).max().unwrap_or(0);
+        // No complete unit: the colors pass unchanged.
+        let Some(n) = self.stages.iter().map(|s| s.slot + 4).max() else { return };
         scratch.resize(4 * n, 0.0);
         let mut lane_varyings = scratch.chunks_exact_mut(n);
         let mut lane = || lane_varyings.next().unwrap_or_default();
@@ -419,6 +434,101 @@ mod tests {
         assert_eq!(quantize_to_u8(0.2, 8), 51);
         assert_eq!(quantize_to_u8(-1.0, 8), 0);
         assert_eq!(quantize_depth(0.5, 16), 32768.0 * (1.0 / 65535.0f32));
+    }
+
+    #[test]
+    fn quads_and_spans_texture_alike() {
+        use sampler::{DepthMode, Dim, Filter, Sampler, Wrap};
+        use std::sync::Arc;
+        let mut seed = 0x2545_f491u32;
+        let mut next = move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 17;
+            seed ^= seed << 5;
+            seed
+        };
+        let levels: Vec<_> = [8usize, 4, 2, 1]
+            .iter()
+            .map(|&n| {
+                let mut img = TexImage::new(n, n, 1, 0, BaseFormat::Rgba).unwrap();
+                img.texels = Texels::Rgba8((0..n * n).map(|_| next().to_le_bytes()).collect());
+                Arc::new(img)
+            })
+            .collect();
+        let sampler = Sampler {
+            dim: Dim::D2,
+            faces: vec![levels],
+            wrap: [Wrap::Repeat, Wrap::MirroredRepeat, Wrap::Repeat],
+            mag: Filter::Linear,
+            min: Filter::Linear,
+            mip: Some(Filter::Linear),
+            border: [0.0; 4],
+            lod_bias: 0.0,
+            min_lod: -1000.0,
+            max_lod: 1000.0,
+            compare: None,
+            depth_mode: DepthMode::Luminance,
+            base: BaseFormat::Rgba,
+        };
+        let env = env::TexEnv { mode: env::EnvMode::Modulate, base: BaseFormat::Rgba, color: [0.0; 4] };
+        let (w, h) = (9, 7);
+        let texturing = Texturing { stages: vec![TextureStage::new(0, sampler, env, 1)], fb_height: h };
+        // Varyings: one unused, then s, t, r, q with perspective.
+        let at = |x: i32, y: i32, out: &mut [f32]| {
+            let (x, y) = (x as f32 + 0.5, y as f32 + 0.5);
+            let q = 1.0 + 0.05 * x - 0.02 * y;
+            out[..5].copy_from_slice(&[9.0, (0.13 * x + 0.04 * y) / q, (0.02 * x - 0.3 * y) / q, 0.0, q]);
+        };
+        let primary = |x: i32, y: i32| [x as f32 / 9.0, y as f32 / 7.0, 0.5, 1.0];
+        // Spans: one per row from column 1, every other pixel but two live.
+        let mut image = vec![[[0.0; 4]; 9]; 7];
+        let mut scratch = Vec::new();
+        for y in 0..h {
+            let mut colors: Vec<_> = (1..w).map(|x| primary(x, y)).collect();
+            texturing
+                .texture_span(&mut colors, 0xff & !0b100100, 1, y, &mut scratch, |dx, dy, out| at(1 + dx, y + dy, out));
+            for (x, c) in colors.iter().enumerate() {
+                image[y as usize][x + 1] = *c;
+            }
+        }
+        // The same pixels as quads: the upper rows of the y-down pairs.
+        let mut compared = 0;
+        for upper in (1..h).rev().filter(|y| (h - 1 - y) % 2 == 0) {
+            for x0 in (0..w - 1).step_by(2) {
+                let mut varyings = vec![[0.0; LANES]; 5];
+                let mut colors = [[0.0; LANES]; 4];
+                let mut live = 0u16;
+                for lane in 0..4 {
+                    let (x, y) = (x0 + (lane % 2) as i32, upper - (lane / 2) as i32);
+                    let mut v = [0.0; 5];
+                    at(x, y, &mut v);
+                    for (k, value) in v.iter().enumerate() {
+                        varyings[k][lane] = *value;
+                    }
+                    let p = primary(x, y);
+                    for ch in 0..4 {
+                        colors[ch][lane] = p[ch];
+                    }
+                    if (1..w).contains(&x) && ![2, 5].contains(&(x - 1)) {
+                        live |= 1 << lane;
+                    }
+                }
+                texturing.texture_quads(&varyings, live, &mut colors);
+                for lane in (0..4).filter(|l| live & (1 << l) != 0) {
+                    let (x, y) = (x0 + (lane % 2) as i32, upper - (lane / 2) as i32);
+                    let quad: [f32; 4] = std::array::from_fn(|ch| colors[ch][lane]);
+                    assert_eq!(quad, image[y as usize][x as usize], "pixel ({x}, {y})");
+                    assert_ne!(quad, primary(x, y));
+                    compared += 1;
+                }
+            }
+        }
+        assert_eq!(compared, 30);
+        // No complete unit: the colors pass unchanged.
+        let none = Texturing { stages: Vec::new(), fb_height: h };
+        let mut colors = vec![[0.25; 4]; 3];
+        none.texture_span(&mut colors, 0b111, 0, 0, &mut scratch, |_, _, _| unreachable!());
+        assert_eq!(colors, vec![[0.25; 4]; 3]);
     }
 
     #[test]
