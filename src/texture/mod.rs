@@ -1,6 +1,8 @@
 //! Texturing: texture images as stored ([`TexImage`]), the samplers a draw compiles from
-//! texture objects ([`sampler`]), and the texture environments that combine texels with the
-//! fragment color ([`env`]).
+//! texture objects ([`sampler`]), the kernels that run their lookups a 2×2 quad at a time
+//! (`kernel`, chosen once per draw), and the texture environments that combine texels with
+//! the fragment color ([`env`]). [`Texturing::texture_quads`] textures 16 lanes given in
+//! structure-of-arrays form; [`Texturing::texture_span`] runs the same quads for a span.
 //!
 //! Like `fragment`, this room knows no GL enums and no context: the context validates and
 //! converts, then hands over images, compiled samplers and compiled environments.

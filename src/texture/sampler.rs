@@ -141,7 +141,7 @@ pub(super) fn floor_i32(u: f32) -> i32 {
 #[inline]
 pub fn floor(x: f32) -> f32 {
     // From 2²³ on every float is an integer (and NaN and the infinities are themselves).
-    if !(x.abs() < 8_388_608.0) {
+    if x.is_nan() || x.abs() >= 8_388_608.0 {
         return x;
     }
     let t = (x as i32 as f32).copysign(x);
@@ -163,7 +163,7 @@ pub fn ceil(x: f32) -> f32 {
 /// is summed to about 10⁻¹⁷, then rounded once to f32; exact at powers of two, within
 /// half an ulp (plus a 10⁻¹⁶ relative) elsewhere. Zero gives −∞, negatives NaN.
 pub fn log2(x: f32) -> f32 {
-    if !(x > 0.0) || x == f32::INFINITY {
+    if x.is_nan() || x <= 0.0 || x == f32::INFINITY {
         return if x == 0.0 {
             f32::NEG_INFINITY
         } else if x > 0.0 {
