@@ -403,7 +403,7 @@ impl Context {
                 (b, _) => b,
             };
             let env = compile_env(&st.env, base);
-            stages.push(TextureStage { unit, sampler, env, slot: first_slot + 4 * k });
+            stages.push(TextureStage::new(unit, sampler, env, first_slot + 4 * k));
         }
         Some(Texturing { stages, fb_height })
     }

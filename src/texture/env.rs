@@ -86,6 +86,7 @@ fn clamp01(x: f32) -> f32 {
 impl TexEnv {
     /// The unit's output color from the previous unit's `previous`, the fragment's `primary`
     /// color and the texture colors of every unit (`texels[unit]`, this one's at `unit`).
+    #[inline(always)]
     pub fn apply(&self, unit: usize, previous: [f32; 4], primary: [f32; 4], texels: &[[f32; 4]]) -> [f32; 4] {
         let t = texels[unit];
         let (cf, cc) = (previous, self.color);
@@ -150,6 +151,7 @@ fn source(
     }
 }
 
+#[inline(never)]
 fn combine(
     comb: &Combine,
     unit: usize,

@@ -1,6 +1,8 @@
 //! Texturing: texture images as stored ([`TexImage`]), the samplers a draw compiles from
-//! texture objects ([`sampler`]), and the texture environments that combine texels with the
-//! fragment color ([`env`]).
+//! texture objects ([`sampler`]), the kernels that run their lookups a 2×2 quad at a time
+//! (`kernel`, chosen once per draw), and the texture environments that combine texels with
+//! the fragment color ([`env`]). [`Texturing::texture_quads`] textures 16 lanes given in
+//! structure-of-arrays form; [`Texturing::texture_span`] runs the same quads for a span.
 //!
 //! Like `fragment`, this room knows no GL enums and no context: the context validates and
 //! converts, then hands over images, compiled samplers and compiled environments.
@@ -34,6 +36,7 @@
 #![deny(unsafe_code)]
 
 pub mod env;
+mod kernel;
 pub mod sampler;
 
 use crate::framebuffer::format::DepthEncoding;
@@ -322,6 +325,15 @@ pub struct TextureStage {
     pub sampler: sampler::Sampler,
     pub env: env::TexEnv,
     pub slot: usize,
+    /// How the sampler's lookups run, chosen from it.
+    kernel: kernel::Kernel,
+}
+
+impl TextureStage {
+    pub fn new(unit: usize, sampler: sampler::Sampler, env: env::TexEnv, slot: usize) -> TextureStage {
+        let kernel = kernel::Kernel::choose(&sampler);
+        TextureStage { unit, sampler, env, slot, kernel }
+    }
 }
 
 /// The texturing of a draw: only the units that are enabled and complete, in unit order.
@@ -354,6 +366,9 @@ impl PartialEq for Texturing {
 /// Most texture units a draw can use.
 pub const MAX_UNITS: usize = crate::gl::limits::MAX_TEXTURE_UNITS;
 
+/// Fragments in a block given to [`Texturing::texture_quads`]: four 2×2 quads.
+pub const LANES: usize = 16;
+
 /// The projected coordinates (s/q, t/q, r/q) of a stage from a fragment's varyings.
 #[inline]
 fn projected(v: &[f32], slot: usize) -> [f32; 3] {
@@ -363,6 +378,81 @@ fn projected(v: &[f32], slot: usize) -> [f32; 3] {
 }
 
 impl Texturing {
+    /// Textures the lanes `live` of one quad: `coords[k][lane]` are stage k's projected
+    /// coordinates (every lane's: the derivatives need the upper row and the left column
+    /// even where their fragments are not live), `colors` the primary colors, replaced by
+    /// the last unit's output.
+    #[inline]
+    fn texture_quad(&self, coords: &[[[f32; 3]; 4]; MAX_UNITS], live: u8, colors: &mut [[f32; 4]; 4]) {
+        if let [s] = self.stages.as_slice() {
+            // One unit, and an environment that reads no other unit's texture: no table of
+            // every unit's texels.
+            if !matches!(s.env.mode, env::EnvMode::Combine(_)) {
+                let mut out = [[0.0; 4]; 4];
+                s.kernel.sample_quad(&s.sampler, &coords[0], live, &mut out);
+                for (lane, (color, texel)) in colors.iter_mut().zip(&out).enumerate() {
+                    if live & (1 << lane) != 0 {
+                        *color = s.env.apply(0, *color, *color, std::slice::from_ref(texel));
+                    }
+                }
+                return;
+            }
+        }
+        let mut texels = [[[0.0, 0.0, 0.0, 1.0]; MAX_UNITS]; 4];
+        for (k, s) in self.stages.iter().enumerate() {
+            let mut out = [[0.0; 4]; 4];
+            s.kernel.sample_quad(&s.sampler, &coords[k], live, &mut out);
+            for (lane, t) in texels.iter_mut().enumerate() {
+                t[s.unit] = out[lane];
+            }
+        }
+        for (lane, color) in colors.iter_mut().enumerate() {
+            if live & (1 << lane) == 0 {
+                continue;
+            }
+            let primary = *color;
+            let mut previous = primary;
+            for s in &self.stages {
+                previous = s.env.apply(s.unit, previous, primary, &texels[lane]);
+            }
+            *color = previous;
+        }
+    }
+
+    /// Textures the fragments `live` of a block of [`LANES`] lanes in structure-of-arrays
+    /// form: lane `4·q + 2·r + c` is column c (0 left) of row r (0 the upper in llvmpipe's
+    /// y-down rows) of quad q. `varyings[v][lane]` holds varying v of the draw (stage k's
+    /// s, t, r, q at its slot); every lane of a quad with a live lane must hold its
+    /// pixel's varyings (helper lanes give the derivatives). `colors[channel][lane]` holds
+    /// the primary colors and receives the last unit's output for the live lanes.
+    pub fn texture_quads(&self, varyings: &[[f32; LANES]], live: u16, colors: &mut [[f32; LANES]; 4]) {
+        for q in 0..LANES / 4 {
+            let quad_live = ((live >> (4 * q)) & 0xf) as u8;
+            if quad_live == 0 {
+                continue;
+            }
+            let mut coords = [[[0.0; 3]; 4]; MAX_UNITS];
+            for (k, s) in self.stages.iter().enumerate() {
+                for (lane, c) in coords[k].iter_mut().enumerate() {
+                    let v = [0, 1, 2, 3].map(|j| varyings[s.slot + j][4 * q + lane]);
+                    *c = projected(&v, 0);
+                }
+            }
+            let mut quad = [[0.0; 4]; 4];
+            for (lane, c) in quad.iter_mut().enumerate() {
+                *c = std::array::from_fn(|ch| colors[ch][4 * q + lane]);
+            }
+            self.texture_quad(&coords, quad_live, &mut quad);
+            for (lane, c) in quad.iter().enumerate() {
+                if quad_live & (1 << lane) != 0 {
+                    for ch in 0..4 {
+                        colors[ch][4 * q + lane] = c[ch];
+                    }
+                }
+            }
+        }
+    }
+
     /// Textures the fragments of `live` of the span at window row `y`, columns `x0..`:
     /// `colors` holds the primary colors and receives the last unit's output.
     /// `varyings_at(dx, dy, out)` evaluates the draw's varyings at the pixel `dx` columns
@@ -377,44 +467,60 @@ impl Texturing {
         scratch: &mut Vec<f32>,
         varyings_at: impl Fn(i32, i32, &mut [f32]),
     ) {
-        let n = self.stages.iter().map(|s| s.slot + 4).max().unwrap_or(0);
+        // No complete unit: the colors pass unchanged.
+        let Some(n) = self.stages.iter().map(|s| s.slot + 4).max() else { return };
         scratch.resize(4 * n, 0.0);
-        let (here, rest) = scratch.split_at_mut(n);
-        let (tl, rest) = rest.split_at_mut(n);
-        let (tr, bl) = rest.split_at_mut(n);
-        // Quad rows in llvmpipe's y-down numbering: the quad's top row, and the one below.
+        let mut lane_varyings = scratch.chunks_exact_mut(n);
+        let mut lane = || lane_varyings.next().unwrap_or_default();
+        let v = [lane(), lane(), lane(), lane()];
+        // Quad rows in llvmpipe's y-down numbering: the quad's upper row, and the one below;
+        // the span is one of them (`row`), its fragments the lanes 2·row and 2·row + 1.
         let y_down = self.fb_height - 1 - y;
-        let top = self.fb_height - 1 - (y_down & !1);
-        let mut quad_x = i32::MIN;
-        let mut derivatives = [([0f32; 3], [0f32; 3]); MAX_UNITS];
-        let mut texels = [[0.0, 0.0, 0.0, 1.0]; MAX_UNITS];
-        for (i, color) in colors.iter_mut().enumerate() {
-            if live & (1 << i) == 0 {
-                continue;
-            }
-            let x = x0 + i as i32;
-            let qx = x & !1;
-            if qx != quad_x {
-                quad_x = qx;
-                varyings_at(qx - x0, top - y, tl);
-                varyings_at(qx + 1 - x0, top - y, tr);
-                varyings_at(qx - x0, top - 1 - y, bl);
-                for (k, s) in self.stages.iter().enumerate() {
-                    let (a, b, c) = (projected(tl, s.slot), projected(tr, s.slot), projected(bl, s.slot));
-                    derivatives[k] = (std::array::from_fn(|j| b[j] - a[j]), std::array::from_fn(|j| c[j] - a[j]));
+        let upper = self.fb_height - 1 - (y_down & !1) - y;
+        let row = usize::from(upper != 0);
+        let live = live & if colors.len() >= 64 { u64::MAX } else { (1 << colors.len()) - 1 };
+        let in_span = |i: i32| (0..64).contains(&i) && live & (1 << i) != 0;
+        let mut rest = live;
+        while rest != 0 {
+            let i = rest.trailing_zeros() as i32;
+            // The span index of the quad's left column (−1 when the span starts on its right).
+            let left = ((x0 + i) & !1) - x0;
+            let mut quad_live = 0u8;
+            for c in 0..2 {
+                if in_span(left + c) {
+                    quad_live |= 1 << (2 * row + c as usize);
+                    rest &= !(1 << (left + c));
                 }
             }
-            varyings_at(i as i32, 0, here);
+            // The upper row and the left column give the derivatives; the lower right
+            // pixel is evaluated only as a fragment of the span. A fragment's own lane is
+            // evaluated at the very arguments of its pixel (dy = 0), so it is the same.
+            varyings_at(left, upper, v[0]);
+            varyings_at(left + 1, upper, v[1]);
+            varyings_at(left, upper - 1, v[2]);
+            if quad_live & 8 != 0 {
+                varyings_at(left + 1, upper - 1, v[3]);
+            }
+            let mut coords = [[[0.0; 3]; 4]; MAX_UNITS];
             for (k, s) in self.stages.iter().enumerate() {
-                let (ddx, ddy) = derivatives[k];
-                texels[s.unit] = s.sampler.sample(projected(here, s.slot), ddx, ddy);
+                for (l, c) in coords[k].iter_mut().enumerate() {
+                    if l < 3 || quad_live & 8 != 0 {
+                        *c = projected(v[l], s.slot);
+                    }
+                }
             }
-            let primary = *color;
-            let mut previous = primary;
-            for s in &self.stages {
-                previous = s.env.apply(s.unit, previous, primary, &texels);
+            let mut quad = [[0.0; 4]; 4];
+            for c in 0..2 {
+                if quad_live & (1 << (2 * row + c)) != 0 {
+                    quad[2 * row + c] = colors[(left + c as i32) as usize];
+                }
             }
-            *color = previous;
+            self.texture_quad(&coords, quad_live, &mut quad);
+            for c in 0..2 {
+                if quad_live & (1 << (2 * row + c)) != 0 {
+                    colors[(left + c as i32) as usize] = quad[2 * row + c];
+                }
+            }
         }
     }
 }
@@ -462,6 +568,101 @@ mod tests {
             float.has_stencil()
                 && !TexImage::new_depth(1, 1, 1, 0, depth_storage(16, false, false)).unwrap().has_stencil()
         );
+    }
+
+    #[test]
+    fn quads_and_spans_texture_alike() {
+        use sampler::{DepthMode, Dim, Filter, Sampler, Wrap};
+        use std::sync::Arc;
+        let mut seed = 0x2545_f491u32;
+        let mut next = move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 17;
+            seed ^= seed << 5;
+            seed
+        };
+        let levels: Vec<_> = [8usize, 4, 2, 1]
+            .iter()
+            .map(|&n| {
+                let mut img = TexImage::new(n, n, 1, 0, BaseFormat::Rgba).unwrap();
+                img.texels = Texels::Rgba8((0..n * n).map(|_| next().to_le_bytes()).collect());
+                Arc::new(img)
+            })
+            .collect();
+        let sampler = Sampler {
+            dim: Dim::D2,
+            faces: vec![levels],
+            wrap: [Wrap::Repeat, Wrap::MirroredRepeat, Wrap::Repeat],
+            mag: Filter::Linear,
+            min: Filter::Linear,
+            mip: Some(Filter::Linear),
+            border: [0.0; 4],
+            lod_bias: 0.0,
+            min_lod: -1000.0,
+            max_lod: 1000.0,
+            compare: None,
+            depth_mode: DepthMode::Luminance,
+            base: BaseFormat::Rgba,
+        };
+        let env = env::TexEnv { mode: env::EnvMode::Modulate, base: BaseFormat::Rgba, color: [0.0; 4] };
+        let (w, h) = (9, 7);
+        let texturing = Texturing { stages: vec![TextureStage::new(0, sampler, env, 1)], fb_height: h };
+        // Varyings: one unused, then s, t, r, q with perspective.
+        let at = |x: i32, y: i32, out: &mut [f32]| {
+            let (x, y) = (x as f32 + 0.5, y as f32 + 0.5);
+            let q = 1.0 + 0.05 * x - 0.02 * y;
+            out[..5].copy_from_slice(&[9.0, (0.13 * x + 0.04 * y) / q, (0.02 * x - 0.3 * y) / q, 0.0, q]);
+        };
+        let primary = |x: i32, y: i32| [x as f32 / 9.0, y as f32 / 7.0, 0.5, 1.0];
+        // Spans: one per row from column 1, every other pixel but two live.
+        let mut image = vec![[[0.0; 4]; 9]; 7];
+        let mut scratch = Vec::new();
+        for y in 0..h {
+            let mut colors: Vec<_> = (1..w).map(|x| primary(x, y)).collect();
+            texturing
+                .texture_span(&mut colors, 0xff & !0b100100, 1, y, &mut scratch, |dx, dy, out| at(1 + dx, y + dy, out));
+            for (x, c) in colors.iter().enumerate() {
+                image[y as usize][x + 1] = *c;
+            }
+        }
+        // The same pixels as quads: the upper rows of the y-down pairs.
+        let mut compared = 0;
+        for upper in (1..h).rev().filter(|y| (h - 1 - y) % 2 == 0) {
+            for x0 in (0..w - 1).step_by(2) {
+                let mut varyings = vec![[0.0; LANES]; 5];
+                let mut colors = [[0.0; LANES]; 4];
+                let mut live = 0u16;
+                for lane in 0..4 {
+                    let (x, y) = (x0 + (lane % 2) as i32, upper - (lane / 2) as i32);
+                    let mut v = [0.0; 5];
+                    at(x, y, &mut v);
+                    for (k, value) in v.iter().enumerate() {
+                        varyings[k][lane] = *value;
+                    }
+                    let p = primary(x, y);
+                    for ch in 0..4 {
+                        colors[ch][lane] = p[ch];
+                    }
+                    if (1..w).contains(&x) && ![2, 5].contains(&(x - 1)) {
+                        live |= 1 << lane;
+                    }
+                }
+                texturing.texture_quads(&varyings, live, &mut colors);
+                for lane in (0..4).filter(|l| live & (1 << l) != 0) {
+                    let (x, y) = (x0 + (lane % 2) as i32, upper - (lane / 2) as i32);
+                    let quad: [f32; 4] = std::array::from_fn(|ch| colors[ch][lane]);
+                    assert_eq!(quad, image[y as usize][x as usize], "pixel ({x}, {y})");
+                    assert_ne!(quad, primary(x, y));
+                    compared += 1;
+                }
+            }
+        }
+        assert_eq!(compared, 30);
+        // No complete unit: the colors pass unchanged.
+        let none = Texturing { stages: Vec::new(), fb_height: h };
+        let mut colors = vec![[0.25; 4]; 3];
+        none.texture_span(&mut colors, 0b111, 0, 0, &mut scratch, |_, _, _| unreachable!());
+        assert_eq!(colors, vec![[0.25; 4]; 3]);
     }
 
     #[test]

@@ -84,13 +84,21 @@ pub struct Sampler {
     pub base: BaseFormat,
 }
 
+/// The levels a lookup reads: one, with the magnification or minification filter, or two
+/// blended by the fraction of λ (with the minification filter).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) enum Levels {
+    One(usize, Filter),
+    Two(usize, usize, f32),
+}
+
 /// The texels of one lookup and their weights along one axis.
 #[derive(Clone, Copy, Debug)]
-struct Axis {
-    i0: i32,
-    i1: i32,
+pub(super) struct Axis {
+    pub(super) i0: i32,
+    pub(super) i1: i32,
     /// Weight of `i1` in 1/256 (0 for nearest).
-    w: i32,
+    pub(super) w: i32,
     /// The same weight as a float.
     wf: f32,
 }
@@ -98,16 +106,102 @@ struct Axis {
 /// The fixed-point position of a coordinate in texels: 8 fractional bits, rounded to
 /// nearest even as llvmpipe's float → int conversion does.
 #[inline]
-fn fixed(u: f32) -> i32 {
-    let v = crate::pixel::convert::round_even((u * 256.0).clamp(-1.0e9, 1.0e9));
-    v as i32
+pub(super) fn fixed(u: f32) -> i32 {
+    let v = u * 256.0;
+    // The common case first: the clamp matters only beyond 2²².
+    if v.abs() < 4_194_304.0 {
+        round_even_i32(v)
+    } else {
+        round_even_i32(v.clamp(-1.0e9, 1.0e9))
+    }
+}
+
+/// `v` rounded to the nearest integer, ties to even, for |v| ≤ 10⁹ (no libm, no SSE4.1):
+/// below 2²² adding 1.5·2²³ leaves the rounded integer in the low mantissa bits (the
+/// addition rounds to nearest even, and the magic number is even); from 2²² on the
+/// bit-exact [`round_even`](crate::pixel::convert::round_even) does it.
+#[inline(always)]
+pub(super) fn round_even_i32(v: f32) -> i32 {
+    const MAGIC: f32 = 12_582_912.0;
+    if v.abs() < 4_194_304.0 {
+        ((v + MAGIC).to_bits() as i32).wrapping_sub(MAGIC.to_bits() as i32)
+    } else {
+        crate::pixel::convert::round_even(v) as i32
+    }
+}
+
+/// ⌊u⌋ clamped to ±10⁹, for finite `u`: truncation, one less where it went up.
+#[inline(always)]
+pub(super) fn floor_i32(u: f32) -> i32 {
+    let c = u.clamp(-1.0e9, 1.0e9);
+    let t = c as i32;
+    t - i32::from(t as f32 > c)
+}
+
+/// ⌊x⌋ exactly as IEEE `floor` (signed zeros, infinities and NaN included), from
+/// truncation: no libm call (`floorf` is one without SSE4.1).
+#[inline]
+pub fn floor(x: f32) -> f32 {
+    // From 2²³ on every float is an integer (and NaN and the infinities are themselves).
+    if x.is_nan() || x.abs() >= 8_388_608.0 {
+        return x;
+    }
+    let t = (x as i32 as f32).copysign(x);
+    if t > x {
+        t - 1.0
+    } else {
+        t
+    }
+}
+
+/// ⌈x⌉ exactly as IEEE `ceil`: −⌊−x⌋.
+#[inline]
+pub fn ceil(x: f32) -> f32 {
+    -floor(-x)
+}
+
+/// log₂ x from IEEE double arithmetic only (no libm, so the same bits on every CPU):
+/// exponent plus 2·atanh((m − 1)/(m + 1))/ln 2 of the mantissa m ∈ [√½, √2), whose series
+/// is summed to about 10⁻¹⁷, then rounded once to f32; exact at powers of two, within
+/// half an ulp (plus a 10⁻¹⁶ relative) elsewhere. Zero gives −∞, negatives NaN.
+pub fn log2(x: f32) -> f32 {
+    if x.is_nan() || x <= 0.0 || x == f32::INFINITY {
+        return if x == 0.0 {
+            f32::NEG_INFINITY
+        } else if x > 0.0 {
+            x
+        } else {
+            f32::NAN
+        };
+    }
+    let (mut bits, mut e) = (x.to_bits(), 0i32);
+    if bits < 0x0080_0000 {
+        // Subnormal: scale by 2³² (exactly) into the normal range.
+        bits = (x * 4_294_967_296.0).to_bits();
+        e = -32;
+    }
+    e += (bits >> 23) as i32 - 127;
+    let mut m = f32::from_bits((bits & 0x007f_ffff) | 0x3f80_0000) as f64;
+    if m > std::f64::consts::SQRT_2 {
+        m *= 0.5;
+        e += 1;
+    }
+    let s = (m - 1.0) / (m + 1.0);
+    let s2 = s * s;
+    // |s| ≤ 0.1716, s² ≤ 0.0295: ten terms of s·Σ s²ᵏ/(2k + 1).
+    let mut p = 1.0 / 21.0;
+    for k in (0..10).rev() {
+        p = p * s2 + 1.0 / (2 * k + 1) as f64;
+    }
+    let ln = 2.0 * s * p;
+    (e as f64 + ln * std::f64::consts::LOG2_E) as f32
 }
 
 /// Mirrors `s` for GL_MIRRORED_REPEAT: `s − floor(s)` on even periods, `1 − (s − floor(s))`
 /// on odd ones.
 #[inline]
-fn mirror(s: f32) -> f32 {
-    let f = s.floor();
+pub(super) fn mirror(s: f32) -> f32 {
+    let f = floor(s);
     let frac = s - f;
     if (f as i64).rem_euclid(2) == 0 {
         frac
@@ -118,8 +212,8 @@ fn mirror(s: f32) -> f32 {
 
 /// The texel indices of coordinate `s` along an axis of `size` texels (border excluded).
 /// Indices may be −1 or `size` for the border; [`Sampler`] maps them.
-#[inline]
-fn axis(s: f32, size: i32, wrap: Wrap, filter: Filter) -> Axis {
+#[inline(always)]
+pub(super) fn axis(s: f32, size: i32, wrap: Wrap, filter: Filter) -> Axis {
     let sizef = size as f32;
     let s = match wrap {
         Wrap::Clamp => s.clamp(0.0, 1.0),
@@ -129,9 +223,9 @@ fn axis(s: f32, size: i32, wrap: Wrap, filter: Filter) -> Axis {
     match filter {
         Filter::Nearest => {
             let u = s * sizef;
-            let i = if u.is_finite() { u.floor().clamp(-1.0e9, 1.0e9) as i32 } else { 0 };
+            let i = if u.is_finite() { floor_i32(u) } else { 0 };
             let i = match wrap {
-                Wrap::Repeat => i.rem_euclid(size),
+                Wrap::Repeat => repeat(i, size),
                 Wrap::Clamp | Wrap::ClampToEdge | Wrap::MirroredRepeat => i.clamp(0, size - 1),
                 Wrap::ClampToBorder => i.clamp(-1, size),
             };
@@ -142,7 +236,7 @@ fn axis(s: f32, size: i32, wrap: Wrap, filter: Filter) -> Axis {
             let f = fixed(u);
             let (i0, w) = (f >> 8, f & 0xff);
             let (i0, i1) = match wrap {
-                Wrap::Repeat => (i0.rem_euclid(size), (i0 + 1).rem_euclid(size)),
+                Wrap::Repeat => (repeat(i0, size), repeat(i0 + 1, size)),
                 Wrap::ClampToEdge | Wrap::MirroredRepeat => (i0.clamp(0, size - 1), (i0 + 1).clamp(0, size - 1)),
                 Wrap::Clamp | Wrap::ClampToBorder => (i0.clamp(-1, size), (i0 + 1).clamp(-1, size)),
             };
@@ -151,12 +245,25 @@ fn axis(s: f32, size: i32, wrap: Wrap, filter: Filter) -> Axis {
     }
 }
 
+/// `i` modulo `size` (> 0), in [0, size): GL_REPEAT's index. Most indices are in range
+/// already, and most sizes are powers of two: no division for either.
+#[inline(always)]
+pub(super) fn repeat(i: i32, size: i32) -> i32 {
+    if (i as u32) < size as u32 {
+        i
+    } else if size & (size - 1) == 0 {
+        i & (size - 1)
+    } else {
+        i.rem_euclid(size)
+    }
+}
+
 /// log₂ x approximated as llvmpipe's `lp_build_fast_log2`: the exponent plus the mantissa
 /// minus one (exact at powers of two, linear in between).
 #[inline]
 pub fn fast_log2(x: f32) -> f32 {
     if x.is_nan() || x <= 0.0 || !x.is_finite() {
-        return x.log2();
+        return log2(x);
     }
     let bits = x.to_bits();
     let exponent = ((bits >> 23) & 0xff) as i32 - 127;
@@ -208,31 +315,11 @@ impl Sampler {
         };
         let levels = &self.faces[face.min(self.faces.len() - 1)];
         let lambda = self.lambda(&levels[0], ddx, ddy, c);
-        // c: the magnification/minification switch-over point (§3.8.9).
-        let switch = if self.mag == Filter::Linear && self.mip == Some(Filter::Nearest) && self.min == Filter::Nearest {
-            0.5
-        } else {
-            0.0
-        };
-        let last = (levels.len() - 1) as f32;
-        if lambda <= switch || lambda.is_nan() {
-            return self.filter_level(&levels[0], coords, self.mag);
-        }
-        match self.mip {
-            None => self.filter_level(&levels[0], coords, self.min),
-            Some(Filter::Nearest) => {
-                let d = if lambda <= 0.5 { 0.0 } else { ((lambda + 0.5).ceil() - 1.0).min(last) };
-                self.filter_level(&levels[d as usize], coords, self.min)
-            }
-            Some(Filter::Linear) => {
-                let d1 = lambda.floor().min(last);
-                let d2 = (d1 + 1.0).min(last);
-                let frac = lambda - lambda.floor();
-                if d1 == d2 || frac == 0.0 {
-                    return self.filter_level(&levels[d1 as usize], coords, self.min);
-                }
-                let a = self.filter_level_raw(&levels[d1 as usize], coords, self.min);
-                let b = self.filter_level_raw(&levels[d2 as usize], coords, self.min);
+        match self.levels(lambda, levels.len()) {
+            Levels::One(d, filter) => self.filter_level(&levels[d], coords, filter),
+            Levels::Two(d1, d2, frac) => {
+                let a = self.filter_level_raw(&levels[d1], coords, self.min);
+                let b = self.filter_level_raw(&levels[d2], coords, self.min);
                 match (a, b) {
                     (Ok(a), Ok(b)) => {
                         let w = (frac * 256.0) as i32;
@@ -246,8 +333,42 @@ impl Sampler {
         }
     }
 
+    /// The level or levels (of `count`) a lookup at level of detail `lambda` reads, and
+    /// with which filter (§3.8.8, §3.8.9).
+    #[inline]
+    pub(super) fn levels(&self, lambda: f32, count: usize) -> Levels {
+        // c: the magnification/minification switch-over point (§3.8.9).
+        let switch = if self.mag == Filter::Linear && self.mip == Some(Filter::Nearest) && self.min == Filter::Nearest {
+            0.5
+        } else {
+            0.0
+        };
+        let last = (count - 1) as f32;
+        if lambda <= switch || lambda.is_nan() {
+            return Levels::One(0, self.mag);
+        }
+        match self.mip {
+            None => Levels::One(0, self.min),
+            Some(Filter::Nearest) => {
+                let d = if lambda <= 0.5 { 0.0 } else { (ceil(lambda + 0.5) - 1.0).min(last) };
+                Levels::One(d as usize, self.min)
+            }
+            Some(Filter::Linear) => {
+                let whole = floor(lambda);
+                let d1 = whole.min(last);
+                let d2 = (d1 + 1.0).min(last);
+                let frac = lambda - whole;
+                if d1 == d2 || frac == 0.0 {
+                    Levels::One(d1 as usize, self.min)
+                } else {
+                    Levels::Two(d1 as usize, d2 as usize, frac)
+                }
+            }
+        }
+    }
+
     /// λ: log₂ of the largest scaled derivative, biased and clamped.
-    fn lambda(&self, base: &TexImage, ddx: [f32; 3], ddy: [f32; 3], c: [f32; 3]) -> f32 {
+    pub(super) fn lambda(&self, base: &TexImage, ddx: [f32; 3], ddy: [f32; 3], c: [f32; 3]) -> f32 {
         let b2 = 2 * base.border;
         let mut size = [(base.width - b2) as f32, (base.height - b2.min(base.height - 1)) as f32, 1.0];
         let dims = self.dim.coords();
@@ -268,9 +389,17 @@ impl Sampler {
         // With a mipmap blend, llvmpipe takes log₂ piecewise linearly between powers of two
         // (exponent plus mantissa − 1) of ρ², and halves it; the level choice of the other
         // filters is exact.
-        let log2 = if self.mip == Some(Filter::Linear) { 0.5 * fast_log2(rho2) } else { 0.5 * rho2.log2() };
-        let lambda = log2 + self.lod_bias;
-        lambda.clamp(self.min_lod, self.max_lod)
+        let half_log2 = if self.mip == Some(Filter::Linear) { 0.5 * fast_log2(rho2) } else { 0.5 * log2(rho2) };
+        // As `f32::clamp`, without its panic when GL_TEXTURE_MIN_LOD > GL_TEXTURE_MAX_LOD
+        // (then the maximum wins, as in llvmpipe); NaN stays NaN.
+        let mut lambda = half_log2 + self.lod_bias;
+        if lambda < self.min_lod {
+            lambda = self.min_lod;
+        }
+        if lambda > self.max_lod {
+            lambda = self.max_lod;
+        }
+        lambda
     }
 
     /// One filtered lookup in one image.
@@ -540,6 +669,54 @@ mod tests {
         s.compare = None;
         s.depth_mode = DepthMode::Intensity;
         assert_eq!(s.sample([0.25, 0.5, 0.0], ZERO, ZERO), [0.25; 4]);
+    }
+
+    #[test]
+    fn floor_ceil_and_log2_without_libm() {
+        let mut x = 0x1234_5678u32;
+        let mut values = vec![0.0, -0.0, 0.5, -0.5, 1.0, -1.0, 2.5, -2.5, 8_388_607.5, -8_388_607.5, 1.0e20, -1.0e20];
+        values.extend([f32::INFINITY, f32::NEG_INFINITY, f32::MIN_POSITIVE, -f32::MIN_POSITIVE, 1.0e-40]);
+        for _ in 0..200_000 {
+            x ^= x << 13;
+            x ^= x >> 17;
+            x ^= x << 5;
+            values.push(f32::from_bits(x));
+        }
+        let mut off_by_an_ulp = 0;
+        for &v in &values {
+            if v.is_nan() {
+                assert!(floor(v).is_nan() && ceil(v).is_nan() && log2(v).is_nan());
+                continue;
+            }
+            assert_eq!(floor(v).to_bits(), v.floor().to_bits(), "floor {v}");
+            assert_eq!(ceil(v).to_bits(), v.ceil().to_bits(), "ceil {v}");
+            let (mine, libm) = (log2(v), v.log2());
+            if libm.is_nan() {
+                assert!(mine.is_nan());
+            } else if mine != libm {
+                // Within an ulp of the C library's (which is not correctly rounded either).
+                assert_eq!((mine.to_bits() as i64 - libm.to_bits() as i64).abs(), 1, "log2 {v}");
+                off_by_an_ulp += 1;
+            }
+        }
+        assert!(off_by_an_ulp < values.len() / 1000, "{off_by_an_ulp}");
+        for e in -149..128 {
+            let power =
+                if e >= -126 { f32::from_bits(((e + 127) as u32) << 23) } else { f32::from_bits(1 << (e + 149)) };
+            assert_eq!(log2(power), e as f32);
+        }
+        assert_eq!(log2(0.0), f32::NEG_INFINITY);
+    }
+
+    #[test]
+    fn min_lod_above_max_lod_takes_the_maximum() {
+        let l0 = image(4, 4, vec![[255, 0, 0, 255]; 16]);
+        let l1 = image(2, 2, vec![[0, 255, 0, 255]; 4]);
+        let l2 = image(1, 1, vec![[0, 0, 255, 255]]);
+        let mut s = sampler(vec![l0, l1, l2], Wrap::Repeat, Filter::Nearest);
+        s.mip = Some(Filter::Nearest);
+        (s.min_lod, s.max_lod) = (2.0, 1.0);
+        assert_eq!(s.sample([0.5; 3], ZERO, ZERO), [0.0, 1.0, 0.0, 1.0]);
     }
 
     #[test]
