@@ -330,7 +330,6 @@ mod tests {
                 border: 0,
                 base: BaseFormat::Rgba,
                 texels: Texels::Rgba8(texels),
-                stencil: Vec::new(),
             }));
             if w == 1 && h == 1 {
                 return levels;
