@@ -104,7 +104,7 @@ pub fn emit_window_line(
     // draw module does for them.
     let (dx, dy) = ((a.x - b.x).abs(), (a.y_down - b.y_down).abs());
     let length = if g.smooth_lines { (dx * dx + dy * dy).sqrt() } else { dx.max(dy) };
-    let steps = if length.is_finite() { length.ceil() as i32 } else { 0 };
+    let steps = if length.is_finite() { crate::gl::float::ceil_to_i32(length) } else { 0 };
     let base = stipple.counter;
     let bit = |i: i32| stipple.pattern >> (((base + i) / stipple.factor) & 15) & 1 != 0;
     let mut dash_start = None;

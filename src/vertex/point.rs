@@ -4,6 +4,7 @@
 use super::clip::ClipVertex;
 use super::geometry::Geometry;
 use crate::framebuffer::Rect;
+use crate::gl::float::fused_multiply_add;
 use crate::gl::limits::MAX_POINT_SIZE;
 use crate::setup::jobs::line::LineVertex;
 use crate::setup::jobs::point::PointJob;
@@ -50,7 +51,7 @@ impl PointAttenuation {
     pub fn size_at(&self, eye: [f32; 4]) -> f32 {
         let d = eye[2].abs();
         let [a, b, c] = self.coefficients;
-        let factor = d.mul_add(c, b).mul_add(d, a);
+        let factor = fused_multiply_add(fused_multiply_add(d, c, b), d, a);
         clamp_point_size(self.size / factor.abs().sqrt(), self.min, self.max)
     }
 }
