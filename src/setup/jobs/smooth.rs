@@ -17,7 +17,7 @@ use crate::framebuffer::band::Band;
 use crate::framebuffer::Rect;
 use crate::gl::float::{ceil_to_i32, floor_f64, floor_to_i32};
 use crate::raster::walk::{stipple_mask, walk_covered};
-use crate::setup::plane::{Plane, Shading, Varyings};
+use crate::setup::plane::{Plane, PointVaryings, Shading, Varyings};
 use crate::setup::smooth::{triangle_pixel_coverage, SmoothLineCoverage, SmoothPointCoverage};
 
 /// A smooth primitive ready for rasterization.
@@ -109,7 +109,7 @@ impl SmoothLine {
                 inv_w: plane(a.inv_w, b.inv_w),
             },
         };
-        let over_w = varyings.iter().map(|v| plane(v[0] * a.inv_w, v[1] * b.inv_w)).collect();
+        let over_w = varyings.iter().map(|v| plane(v[0] * a.inv_w, v[1] * b.inv_w));
         Some(SmoothLine {
             coverage,
             bounds: rect_from_down(lo, hi, height),
@@ -167,13 +167,19 @@ pub struct SmoothPoint {
     height: i32,
     z: f32,
     color: [f32; 4],
-    varyings: Vec<f32>,
+    varyings: PointVaryings,
 }
 
 impl SmoothPoint {
     /// The smooth point at `v` (y-down window coordinates) of size `size` in a framebuffer
     /// `height` rows high, with `color` and the draw's `varyings`.
-    pub fn new(v: &LineVertex, size: f32, height: i32, color: [f32; 4], varyings: Vec<f32>) -> Option<SmoothPoint> {
+    pub fn new(
+        v: &LineVertex,
+        size: f32,
+        height: i32,
+        color: [f32; 4],
+        varyings: PointVaryings,
+    ) -> Option<SmoothPoint> {
         if !(v.x.is_finite() && v.y_down.is_finite()) {
             return None;
         }
@@ -259,7 +265,7 @@ impl SmoothTriangle {
                 inv_w: plane(inv_w),
             },
         };
-        let over_w = varyings.iter().map(|a| plane([0, 1, 2].map(|i| a[i] * inv_w[i]))).collect();
+        let over_w = varyings.iter().map(|a| plane([0, 1, 2].map(|i| a[i] * inv_w[i])));
         let to_i32 = |f: f64| f.clamp(i32::MIN as f64 / 2.0, i32::MAX as f64 / 2.0) as i32;
         let (xs, ys) = (p.map(|q| q[0]), p.map(|q| q[1]));
         let min = |a: [f64; 3]| a[0].min(a[1]).min(a[2]);
