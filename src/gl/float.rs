@@ -33,7 +33,7 @@ pub fn ceil_to_i32(v: f32) -> i32 {
 #[inline]
 pub fn floor_f32(v: f32) -> f32 {
     // From 2²³ on every float is an integer (and NaN, ±∞ are returned as they are).
-    if !(v.abs() < (1 << 23) as f32) {
+    if v.is_nan() || v.abs() >= (1 << 23) as f32 {
         return v;
     }
     let t = v as i32 as f32;
@@ -49,7 +49,7 @@ pub fn floor_f32(v: f32) -> f32 {
 /// `floor(v)` as an `f64`, exactly `f64::floor` for every input.
 #[inline]
 pub fn floor_f64(v: f64) -> f64 {
-    if !(v.abs() < (1u64 << 52) as f64) {
+    if v.is_nan() || v.abs() >= (1u64 << 52) as f64 {
         return v;
     }
     let t = v as i64 as f64;

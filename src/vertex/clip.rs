@@ -119,7 +119,7 @@ impl ClipPlanes {
     #[inline]
     pub fn outcode(&self, v: &ClipVertex) -> u32 {
         let [x, y, z, w] = v.clip;
-        let outside = |d: f32| !(d >= 0.0) as u32;
+        let outside = |d: f32| (d.is_nan() || d < 0.0) as u32;
         let (near, far) = match (self.clip_z, self.zero_to_one) {
             (false, _) => (0.0, 0.0),
             (true, true) => (z, w - z),

@@ -550,7 +550,8 @@ fn long_draws_keep_the_scene_within_its_budget() {
     memory.add(0x1000, floats(&xy));
     ctx.vertex_pointer(2, GL_FLOAT, 0, 0x1000);
     ctx.enable_client_state(GL_VERTEX_ARRAY, true);
-    let draws: [(&str, &dyn Fn(&mut Context)); 3] = [
+    type Draw<'a> = (&'a str, &'a dyn Fn(&mut Context));
+    let draws: [Draw; 3] = [
         ("immediate mode", &|ctx| {
             ctx.begin(GL_TRIANGLE_STRIP);
             for i in 0..N {
