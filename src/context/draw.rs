@@ -145,10 +145,7 @@ impl Context {
                 if let Some(old) = other {
                     self.run_scene(old);
                 }
-                match self.spare_scene.take() {
-                    Some(spare) if spare.size() == (width, height) => spare,
-                    _ => Scene::new(width, height),
-                }
+                Scene::new(width, height)
             }
         }
     }
@@ -160,15 +157,11 @@ impl Context {
         }
     }
 
-    /// Rasterizes `scene` into the bound framebuffer, then keeps it, emptied, for the next
-    /// draws to record into ([`Scene::clear`]).
-    fn run_scene(&mut self, mut scene: Scene) {
+    fn run_scene(&mut self, scene: Scene) {
         let _ = self.with_framebuffer(|fb| {
             if scene.size() == (fb.width(), fb.height()) {
                 scene.execute(fb);
             }
         });
-        scene.clear();
-        self.spare_scene = Some(scene);
     }
 }

@@ -190,13 +190,13 @@ impl Scene {
 
     /// Renders the scene into `framebuffer` (which must have the scene's size) on
     /// `thread_count()` threads.
-    pub fn execute(&self, framebuffer: &mut Framebuffer) {
+    pub fn execute(self, framebuffer: &mut Framebuffer) {
         self.execute_on(framebuffer, thread_count());
     }
 
     /// Renders the scene on up to `threads` threads (the caller's included): the tile
     /// workers render each tile's bin in submission order, each entry by its job.
-    pub fn execute_on(&self, framebuffer: &mut Framebuffer, threads: usize) {
+    pub fn execute_on(self, framebuffer: &mut Framebuffer, threads: usize) {
         if self.primitives.is_empty() {
             return;
         }
@@ -220,19 +220,6 @@ impl Scene {
         if framebuffer.samples() > 1 {
             framebuffer.resolve(&self.targets, self.drawn_area());
         }
-    }
-
-    /// Empties the scene for the next flush interval but keeps its vectors' storage: the
-    /// next scene then records into memory already mapped, instead of a fresh allocation
-    /// the kernel must fault in page by page every frame (measured on small_triangles at
-    /// 1024²: a third of the page faults).
-    pub fn clear(&mut self) {
-        self.targets.clear();
-        self.states.clear();
-        self.primitives.clear();
-        self.primitive_states.clear();
-        self.bins.iter_mut().for_each(Vec::clear);
-        self.binned = 0;
     }
 
     /// The smallest rectangle holding every tile with something binned into it.
