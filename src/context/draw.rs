@@ -28,6 +28,13 @@ use crate::vertex::pipeline;
 use crate::vertex::transform::transform;
 use crate::vertex::Vertex;
 
+#[cfg(test)]
+thread_local! {
+    /// The most bytes a scene of this thread has recorded when a draw (or part) ended: what
+    /// the tests of bounded memory read.
+    pub(crate) static PEAK_SCENE_BYTES: std::cell::Cell<usize> = const { std::cell::Cell::new(0) };
+}
+
 impl Context {
     /// Draws `vertices` as primitives of `mode` (GL_POINTS … GL_POLYGON, already validated),
     /// with the current state. Vertex sources (glBegin/glEnd, glDrawArrays, …) call this.
@@ -91,6 +98,8 @@ impl Context {
 
     /// Puts `scene` back as the pending scene, or renders it when it is over its budget.
     fn keep_scene(&mut self, scene: Scene) {
+        #[cfg(test)]
+        PEAK_SCENE_BYTES.with(|peak| peak.set(peak.get().max(scene.recorded_bytes())));
         if scene.recorded_bytes() > Scene::BUDGET_BYTES {
             self.run_scene(scene);
         } else {

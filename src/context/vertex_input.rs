@@ -13,7 +13,9 @@
 //! ([`continued_vertices`](crate::vertex::assembly::continued_vertices)), so a draw of any length needs bounded
 //! memory and draws the same pixels as delivered whole; they are delivered whole while a
 //! display list captures an array draw, in selection and feedback modes, and after
-//! glMaterial between glBegin and glEnd (whose marks count vertices from glBegin).
+//! glMaterial between glBegin and glEnd (whose marks count vertices from glBegin). A
+//! captured draw is cut into parts again when the list is called
+//! ([`Context::deliver_in_parts`]): the list holds its vertices, the draw needs no more.
 //!
 //! Deliberate differences from Mesa 22 (which implements GL 4.5 and is lenient where GL 2.1
 //! is not) are listed with the commands they concern, in the submodules.
@@ -29,7 +31,7 @@ use super::Context;
 use crate::gl::enums::*;
 use crate::gl::types::GLenum;
 use crate::vertex::arrays::{ArrayId, ClientArrays};
-use crate::vertex::assembly::DrawPart;
+use crate::vertex::assembly::{continued_vertices, DrawPart};
 use crate::vertex::Vertex;
 
 /// GL_MAX_ELEMENTS_VERTICES / GL_MAX_ELEMENTS_INDICES: a recommendation only (any count
@@ -96,6 +98,40 @@ impl Context {
     /// Hands finished vertices to the geometry pipeline.
     fn deliver(&mut self, mode: GLenum, vertices: &[Vertex]) {
         self.deliver_part(mode, vertices, DrawPart::WHOLE);
+    }
+
+    /// Hands `vertices` to the geometry pipeline as [`Context::deliver`] does, but a long
+    /// strip, fan, loop or polygon in parts of [`BATCH_VERTICES`] plus the vertices each
+    /// part repeats, exactly as an array draw delivers one (`draw_in_parts`), when parts may
+    /// be delivered: a display list's captured draw then needs no more memory to draw than a
+    /// draw from the arrays.
+    fn deliver_in_parts(&mut self, mode: GLenum, vertices: &[Vertex]) {
+        let count = vertices.len();
+        let kept = continued_vertices(mode, BATCH_VERTICES);
+        let Some(kept) = kept.filter(|_| count > BATCH_VERTICES + 2 && self.may_deliver_parts()) else {
+            return self.deliver(mode, vertices);
+        };
+        let loop_ = mode == GL_LINE_LOOP;
+        let part_mode = if loop_ { GL_LINE_STRIP } else { mode };
+        let mut part_vertices = Vec::with_capacity(BATCH_VERTICES + 1);
+        let mut start = 0;
+        loop {
+            let end = (start + BATCH_VERTICES).min(count);
+            let part = DrawPart { first: start == 0, last: end == count };
+            part_vertices.clear();
+            if kept.first && !loop_ && !part.first {
+                part_vertices.push(vertices[0]);
+            }
+            part_vertices.extend_from_slice(&vertices[start..end]);
+            if loop_ && part.last {
+                part_vertices.push(vertices[0]);
+            }
+            self.deliver_part(part_mode, &part_vertices, part);
+            if part.last {
+                return;
+            }
+            start = end - kept.tail;
+        }
     }
 
     /// Hands one part of a draw to the geometry pipeline (whole draws are

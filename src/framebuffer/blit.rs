@@ -10,6 +10,7 @@
 //! the rectangles to the read buffer, which leaves them unwritten too).
 use super::surface::DepthStencilPixels;
 use super::{ColorBuffer, DepthStencilBuffer, Rect};
+use crate::gl::float::floor_f64;
 
 /// One axis of a blit: source edges `src0`, `src1` and destination edges `dst0`, `dst1`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -42,14 +43,14 @@ impl BlitAxis {
         if self.is_copy() {
             return d - self.dst0 + self.src0;
         }
-        self.source_coord(d).floor() as i32
+        floor_f64(self.source_coord(d)) as i32
     }
 
     /// The two source pixels LINEAR weighs for destination pixel `d` and the weight of the
     /// second, both clamped to `[lo, hi)`.
     pub fn linear(&self, d: i32, lo: i32, hi: i32) -> (i32, i32, f32) {
         let s = self.source_coord(d) - 0.5;
-        let i = s.floor();
+        let i = floor_f64(s);
         let weight = (s - i) as f32;
         let i = i as i32;
         (i.clamp(lo, hi - 1), (i + 1).clamp(lo, hi - 1), weight)

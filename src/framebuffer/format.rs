@@ -240,7 +240,10 @@ pub fn unorm_to_float(value: u32, bits: u32) -> f32 {
 pub fn depth_to_fixed(depth: f64, bits: u32) -> u32 {
     let max = unorm_max(bits) as f64;
     let clamped = if depth > 0.0 { depth.min(1.0) } else { 0.0 };
-    (clamped * max).round_ties_even() as u32
+    // Below 2³²: adding 2⁵² leaves no fraction bits and rounds to nearest even, as
+    // `round_ties_even` does without its libm call on baseline x86-64.
+    const MAGIC: f64 = (1u64 << 52) as f64;
+    ((clamped * max + MAGIC) - MAGIC) as u32
 }
 
 /// Window-space depth of a fragment (single precision, in [0, 1]) → n-bit depth value:

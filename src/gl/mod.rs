@@ -1,5 +1,6 @@
 //! The GL vocabulary: enum values, C types, implementation limits, the small value types
-//! every room shares (the comparison function, the name space of GL objects) and the
+//! every room shares (the comparison function, the name space of GL objects, exact float
+//! operations without libm) and the
 //! constants of the window-system
 //! headers (`<GL/osmesa.h>`, `<GL/glx.h>`).
 //!
@@ -9,6 +10,7 @@
 
 pub mod compare;
 pub mod enums;
+pub mod float;
 pub mod glx;
 pub mod limits;
 pub mod names;

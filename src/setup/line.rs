@@ -20,6 +20,7 @@
 //! GL's bottom-up rows only when spans are produced.
 use super::fixed::{div_ceil, div_floor};
 use crate::framebuffer::Rect;
+use crate::gl::float::{floor_f32, fused_multiply_add};
 
 /// Subpixel bits, as for triangles.
 const ORDER: u32 = 8;
@@ -81,10 +82,11 @@ pub struct LinePlane {
 
 impl LinePlane {
     /// The value at pixel (px, py) (y-down), with llvmpipe's two fused multiply-adds (the
-    /// last bit decides depth-test ties).
+    /// last bit decides depth-test ties), computed exactly without FMA hardware
+    /// ([`fused_multiply_add`]): the same bits on every machine.
     #[inline]
     pub fn at(&self, px: f32, py: f32) -> f32 {
-        self.dady.mul_add(py, self.dadx.mul_add(px, self.a0))
+        fused_multiply_add(self.dady, py, fused_multiply_add(self.dadx, px, self.a0))
     }
 }
 
@@ -129,7 +131,7 @@ fn open_unit(v: f32) -> bool {
 /// Fractional part of a coordinate, `f − floor(f)`.
 #[inline]
 fn fract(f: f32) -> f32 {
-    f - f.floor()
+    f - floor_f32(f)
 }
 
 impl LineSetup {
@@ -151,7 +153,7 @@ impl LineSetup {
         }
         let inv_length2 = 1.0 / length2;
         // Offset of each endpoint from the centre of the pixel containing it.
-        let centre_offset = |v: f32| v - v.floor() - 0.5;
+        let centre_offset = |v: f32| v - floor_f32(v) - 0.5;
         let (x1d, y1d) = (centre_offset(p1[0]), centre_offset(p1[1]));
         let (mut x2d, mut y2d) = (centre_offset(p2[0]), centre_offset(p2[1]));
         // Widths count whole pixels (halves round up); at least one.

@@ -7,6 +7,18 @@
 //! differently (triangles around their first vertex, [`Plane`]; lines over llvmpipe's
 //! y-down coordinates with fused multiply-adds, `LinePlane`), while the interpolation
 //! itself is the same.
+//!
+//! A primitive's planes live inside its job, in fixed-capacity arrays sized by the GL limits
+//! ([`MAX_VARYINGS`]), not in a vector per primitive nor in an arena of the scene: setting
+//! up and binning a primitive then allocates nothing, and a job stays self-contained, so the
+//! code that renders it (the tile workers, each job's `render`) reads its planes next to its
+//! edges with no scene at hand. The price is room: every triangle or line job carries
+//! `MAX_VARYINGS` planes (240 bytes), used or not, which the scene's byte budget counts.
+use crate::gl::limits::MAX_TEXTURE_UNITS;
+
+/// The most scalar varyings a draw interpolates: the secondary color's RGB (GL_COLOR_SUM),
+/// the fog coordinate and the four texture coordinates of every texture unit.
+pub const MAX_VARYINGS: usize = 3 + 1 + 4 * MAX_TEXTURE_UNITS;
 
 /// A linear function of pixel position.
 pub trait Interpolant {
@@ -62,35 +74,67 @@ impl<P: Interpolant> Shading<P> {
 
 /// The attributes beyond color that a draw's later stages read (secondary color, fog
 /// coordinate, texture coordinates), interpolated perspective-correctly: planes of a/w and
-/// the plane of 1/w. Empty (and free) when the draw needs none.
-#[derive(Clone, Debug, Default, PartialEq)]
+/// the plane of 1/w, held inline (see the module docs). Empty when the draw needs none.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Varyings<P> {
-    over_w: Vec<P>,
+    /// The first `len` are the planes; the rest stay default.
+    over_w: [P; MAX_VARYINGS],
+    len: u8,
     inv_w: P,
 }
 
-impl<P: Interpolant> Varyings<P> {
-    pub fn new(over_w: Vec<P>, inv_w: P) -> Self {
-        Varyings { over_w, inv_w }
+impl<P: Interpolant + Copy + Default> Varyings<P> {
+    /// The planes `over_w` (at most [`MAX_VARYINGS`]; a draw never has more, and any beyond
+    /// are dropped) with the plane of 1/w.
+    #[inline]
+    pub fn new(over_w: impl IntoIterator<Item = P>, inv_w: P) -> Self {
+        let mut planes = [P::default(); MAX_VARYINGS];
+        let mut len = 0;
+        for (slot, p) in planes.iter_mut().zip(over_w) {
+            *slot = p;
+            len += 1;
+        }
+        Varyings { over_w: planes, len, inv_w }
     }
+}
 
+impl<P: Interpolant> Varyings<P> {
     /// How many scalar attributes are interpolated.
     pub fn len(&self) -> usize {
-        self.over_w.len()
+        self.len as usize
     }
 
     pub fn is_empty(&self) -> bool {
-        self.over_w.is_empty()
+        self.len == 0
+    }
+
+    /// The planes of a/w.
+    #[inline]
+    pub fn planes(&self) -> &[P] {
+        &self.over_w[..self.len as usize]
     }
 
     /// The attributes at (x, y), into `out`.
     #[inline]
     pub fn at(&self, x: f32, y: f32, out: &mut [f32]) {
         let w = 1.0 / self.inv_w.at(x, y);
-        for (o, p) in out.iter_mut().zip(&self.over_w) {
+        for (o, p) in out.iter_mut().zip(self.planes()) {
             *o = p.at(x, y) * w;
         }
     }
+}
+
+/// The varyings of a point, one value each over the whole point, inline (the first as many
+/// as the draw has; the rest are zero and never read: the fragment stages ask for the
+/// draw's count).
+pub type PointVaryings = [f32; MAX_VARYINGS];
+
+/// The values of `values` (at most [`MAX_VARYINGS`]) as [`PointVaryings`].
+#[inline]
+pub fn point_varyings(values: impl IntoIterator<Item = f32>) -> PointVaryings {
+    let mut out = [0.0; MAX_VARYINGS];
+    out.iter_mut().zip(values).for_each(|(o, v)| *o = v);
+    out
 }
 
 /// `a(x, y) = a0 + dadx·(x − x0) + dady·(y − y0)` around the anchor `(x0, y0)`.

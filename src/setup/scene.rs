@@ -40,7 +40,10 @@ pub struct Scene {
     /// The color buffers the scene writes, in the order of every draw's color masks.
     targets: Vec<ColorSlot>,
     states: Vec<Arc<DrawState>>,
-    primitives: Vec<(u32, Primitive)>,
+    /// The primitives, and apart (so that adding one copies the job once, straight into
+    /// place) the index of each one's draw state.
+    primitives: Vec<Primitive>,
+    primitive_states: Vec<u32>,
     /// Per tile (row-major), indices into `primitives` in submission order.
     bins: Vec<Vec<u32>>,
     /// How many indices the bins hold in all.
@@ -59,6 +62,7 @@ impl Scene {
             targets: Vec::new(),
             states: Vec::new(),
             primitives: Vec::new(),
+            primitive_states: Vec::new(),
             bins: vec![Vec::new(); tiles_x * tiles_y],
             binned: 0,
         }
@@ -67,11 +71,15 @@ impl Scene {
     /// The recorded primitives a scene may hold before the context renders it (whatever
     /// the thread count, so the same commands flush at the same points): a long draw then
     /// needs this much memory for its primitives, not memory in proportion to its length.
+    /// The context checks after every part of a draw (every draw of any length is delivered
+    /// in parts of at most `BATCH_VERTICES` + 2 vertices, display-list replays included),
+    /// so a scene passes the budget by at most one part's primitives.
     pub const BUDGET_BYTES: usize = 64 << 20;
 
     /// About how much memory the recorded primitives and their bin entries take.
     pub fn recorded_bytes(&self) -> usize {
-        self.primitives.len() * std::mem::size_of::<(u32, Primitive)>() + self.binned * std::mem::size_of::<u32>()
+        self.primitives.len() * (std::mem::size_of::<Primitive>() + std::mem::size_of::<u32>())
+            + self.binned * std::mem::size_of::<u32>()
     }
 
     pub fn is_empty(&self) -> bool {
@@ -116,6 +124,7 @@ impl Scene {
 
     /// Bins a primitive covering at most the pixel rectangle `bounds` (inclusive min,
     /// exclusive max), under draw state `state`.
+    #[inline]
     pub fn add(&mut self, state: u32, bounds: Rect, primitive: Primitive) {
         let drawn = &self.states[state as usize];
         let clip = if matches!(primitive, Primitive::Triangle(_)) { drawn.fill_clip } else { drawn.clip };
@@ -129,7 +138,8 @@ impl Scene {
             return;
         }
         let index = self.primitives.len() as u32;
-        self.primitives.push((state, primitive));
+        self.primitives.push(primitive);
+        self.primitive_states.push(state);
         let t = TILE_SIZE as i32;
         let (rows, columns) = ((r.y0 / t)..=((r.y1 - 1) / t), (r.x0 / t)..=((r.x1 - 1) / t));
         self.binned += rows.clone().count() * columns.clone().count();
@@ -173,7 +183,8 @@ impl Scene {
             }
         }
         if binned {
-            self.primitives.push((state, primitive));
+            self.primitives.push(primitive);
+            self.primitive_states.push(state);
         }
     }
 
@@ -190,8 +201,8 @@ impl Scene {
             return;
         }
         render_tiles(framebuffer, &self.targets, self.tiles_x, &self.bins, threads, |index, tile, band, scratch| {
-            let (state, primitive) = &self.primitives[index as usize];
-            let state = &self.states[*state as usize];
+            let primitive = &self.primitives[index as usize];
+            let state = &self.states[self.primitive_states[index as usize] as usize];
             let area = tile.intersect(state.clip);
             match primitive {
                 Primitive::Triangle(job) if state.multisample.is_some_and(|m| m.per_sample()) => {

@@ -10,6 +10,7 @@
 //! triangles sharing an edge cover every pixel exactly once.
 
 use super::fixed::{div_ceil, div_floor};
+use crate::gl::float::round_half_away_f64;
 
 /// Subpixel bits of window coordinates.
 pub const SUBPIXEL_BITS: u32 = 8;
@@ -22,10 +23,11 @@ const HALF: i64 = ONE / 2;
 /// and every edge-function product below 2^63.
 pub const GUARD_BAND: f32 = (1 << 22) as f32;
 
-/// Snaps a window coordinate to fixed point (round to nearest).
+/// Snaps a window coordinate to fixed point (round to nearest, half away from zero; the
+/// product is exact, and |v| ≤ [`GUARD_BAND`] keeps it below 2³¹).
 #[inline]
 pub fn to_fixed(v: f32) -> i64 {
-    (v as f64 * ONE as f64).round() as i64
+    round_half_away_f64(v as f64 * ONE as f64)
 }
 
 /// One edge: `E(x, y) = a·x + b·y + c` over fixed-point coordinates, inside when
@@ -85,7 +87,8 @@ impl TriangleSetup {
         if !window.iter().flatten().all(|c| c.abs() <= GUARD_BAND) {
             return None;
         }
-        let mut v = window.map(|p| [to_fixed(p[0]), to_fixed(p[1])]);
+        let fixed = |p: [f32; 2]| [to_fixed(p[0]), to_fixed(p[1])];
+        let mut v = [fixed(window[0]), fixed(window[1]), fixed(window[2])];
         let area2 = (v[1][0] - v[0][0]) * (v[2][1] - v[0][1]) - (v[2][0] - v[0][0]) * (v[1][1] - v[0][1]);
         if area2 == 0 {
             return None;

@@ -112,14 +112,28 @@ impl ClipPlanes {
     }
 
     /// Bit set of the planes `v` is outside of (NaN counts as outside).
+    ///
+    /// The fixed planes' distances are written out (the same expressions as
+    /// [`ClipPlanes::distance`], so the same bits) and tested without branches: this runs for
+    /// every vertex of every draw.
     #[inline]
     pub fn outcode(&self, v: &ClipVertex) -> u32 {
-        let mut code = 0;
-        for i in 0..self.count() {
-            let d = self.distance(i, v);
-            if d.is_nan() || d < 0.0 {
-                code |= 1 << i;
-            }
+        let [x, y, z, w] = v.clip;
+        let outside = |d: f32| (d.is_nan() || d < 0.0) as u32;
+        let (near, far) = match (self.clip_z, self.zero_to_one) {
+            (false, _) => (0.0, 0.0),
+            (true, true) => (z, w - z),
+            (true, false) => (w + z, w - z),
+        };
+        let mut code = outside(self.guard_x * w - x)
+            | outside(self.guard_x * w + x) << 1
+            | outside(self.guard_y * w - y) << 2
+            | outside(self.guard_y * w + y) << 3
+            | outside(near) << 4
+            | outside(far) << 5
+            | outside(w - W_EPSILON) << 6;
+        for i in FIXED_PLANES..self.count() {
+            code |= outside(self.distance(i, v)) << i;
         }
         code
     }

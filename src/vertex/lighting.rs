@@ -26,6 +26,7 @@
 //! stored by `context` as it is: a draw's lighting pass borrows it, so nothing is copied or
 //! converted on the way to the per-draw constants.
 use crate::gl::enums::*;
+use crate::gl::float::{floor_f32, fused_multiply_add};
 use crate::gl::limits::MAX_LIGHTS;
 use crate::gl::types::GLenum;
 
@@ -331,10 +332,10 @@ fn polynomial(x: f32, coefficients: &[f64]) -> f32 {
     for (i, &c) in coefficients.iter().enumerate().rev() {
         let c = c as f32;
         let slot = if i % 2 == 0 { &mut even } else { &mut odd };
-        *slot = Some(slot.map_or(c, |acc| x2.mul_add(acc, c)));
+        *slot = Some(slot.map_or(c, |acc| fused_multiply_add(x2, acc, c)));
     }
     match (odd, even) {
-        (Some(odd), Some(even)) => odd.mul_add(x, even),
+        (Some(odd), Some(even)) => fused_multiply_add(odd, x, even),
         (None, Some(even)) => even,
         _ => 0.0,
     }
@@ -355,7 +356,7 @@ fn log2_approx(x: f32) -> f32 {
     let exponent = (((bits & 0x7f80_0000) >> 23) as i32 - 127) as f32;
     let mantissa = f32::from_bits((bits & 0x007f_ffff) | 1.0f32.to_bits());
     let y = (mantissa - 1.0) / (mantissa + 1.0);
-    y.mul_add(polynomial(y * y, &LOG2_POLYNOMIAL), exponent)
+    fused_multiply_add(y, polynomial(y * y, &LOG2_POLYNOMIAL), exponent)
 }
 
 /// llvmpipe's 2^x: 2^floor(x) from the exponent bits times a polynomial of the fraction.
@@ -364,7 +365,7 @@ fn exp2_approx(x: f32) -> f32 {
         return x;
     }
     let x = x.clamp(-126.99999, 128.0);
-    let floor = x.floor();
+    let floor = floor_f32(x);
     let whole = f32::from_bits(((floor as i32 + 127) as u32) << 23);
     whole * polynomial(x - floor, &EXP2_POLYNOMIAL)
 }

@@ -6,6 +6,7 @@ use super::geometry::Geometry;
 use crate::setup::jobs::line::{LineJob, LineVertex};
 use crate::setup::jobs::smooth::{SmoothJob, SmoothLine};
 use crate::setup::multisample::SampleQuad;
+use crate::setup::plane::MAX_VARYINGS;
 use crate::setup::{Primitive as RasterPrimitive, Scene};
 
 /// The line stipple of a draw: GL's repeat factor and pattern, and the running counter
@@ -104,7 +105,7 @@ pub fn emit_window_line(
     // draw module does for them.
     let (dx, dy) = ((a.x - b.x).abs(), (a.y_down - b.y_down).abs());
     let length = if g.smooth_lines { (dx * dx + dy * dy).sqrt() } else { dx.max(dy) };
-    let steps = if length.is_finite() { length.ceil() as i32 } else { 0 };
+    let steps = if length.is_finite() { crate::gl::float::ceil_to_i32(length) } else { 0 };
     let base = stipple.counter;
     let bit = |i: i32| stipple.pattern >> (((base + i) / stipple.factor) & 15) & 1 != 0;
     let mut dash_start = None;
@@ -167,9 +168,15 @@ pub fn emit_line_job(
     b: &LineVertex,
     flat: Option<[f32; 4]>,
 ) {
-    let varyings: Vec<[f32; 2]> = g.varyings.iter().map(|v| [v.of_line(a), v.of_line(b)]).collect();
+    // On the stack: setting up a line allocates nothing.
+    let mut values = [[0.0f32; 2]; MAX_VARYINGS];
+    let n = g.varyings.len().min(MAX_VARYINGS);
+    for (value, v) in values.iter_mut().zip(&g.varyings) {
+        *value = [v.of_line(a), v.of_line(b)];
+    }
+    let varyings = &values[..n];
     if g.smooth_lines {
-        if let Some(job) = SmoothLine::new(a, b, g.line_width, g.height, flat, &varyings) {
+        if let Some(job) = SmoothLine::new(a, b, g.line_width, g.height, flat, varyings) {
             let job = SmoothJob::Line(Box::new(job));
             scene.add(state, job.bounds(), RasterPrimitive::Smooth(job));
         }
@@ -180,12 +187,12 @@ pub fn emit_line_job(
         // (widths below 1 draw as 1 there, Mesa's minimum line width).
         let up = |v: &LineVertex| [v.x, g.height as f32 - v.y_down];
         let quad = SampleQuad::line(up(a), up(b), g.line_width.max(1.0));
-        if let Some(job) = quad.and_then(|quad| LineJob::covering_samples(a, b, g.height, flat, &varyings, quad)) {
+        if let Some(job) = quad.and_then(|quad| LineJob::covering_samples(a, b, g.height, flat, varyings, quad)) {
             scene.add(state, job.bounds(), RasterPrimitive::Line(job));
         }
         return;
     }
-    if let Some(job) = LineJob::new(a, b, g.line_width, g.height, flat, &varyings) {
+    if let Some(job) = LineJob::new(a, b, g.line_width, g.height, flat, varyings) {
         let (bounds, setup) = (job.bounds(), job.setup().clone());
         scene.add_narrow(state, bounds, RasterPrimitive::Line(job), |y0, y1| setup.columns(y0, y1));
     }

@@ -10,7 +10,6 @@ use super::point::emit_point;
 use super::triangle::{emit_shaded_triangle, FlatColors};
 use crate::gl::enums::*;
 use crate::gl::types::GLenum;
-use crate::setup::jobs::triangle::WindowVertex;
 use crate::setup::Scene;
 
 /// Draws `clip_vertices` as primitives of `mode` into `scene` under the draw state
@@ -99,10 +98,14 @@ pub fn draw(
                 if poly.len() < 3 {
                     return;
                 }
-                let w: Vec<WindowVertex> = poly.iter().map(|v| geometry.viewport.window(v)).collect();
-                for i in 1..w.len() - 1 {
+                // A fan around the first vertex, each vertex mapped to window space once.
+                let window = |v: &ClipVertex| geometry.viewport.window(v);
+                let (w0, mut previous) = (window(&poly[0]), window(&poly[1]));
+                for i in 1..poly.len() - 1 {
+                    let next = window(&poly[i + 1]);
                     let back = [poly[0].back_colors, poly[i].back_colors, poly[i + 1].back_colors];
-                    emit_shaded_triangle(scene, state_index, geometry, [w[0], w[i], w[i + 1]], back, flat);
+                    emit_shaded_triangle(scene, state_index, geometry, [w0, previous, next], back, flat);
+                    previous = next;
                 }
             }
         }

@@ -4,11 +4,13 @@
 use super::clip::ClipVertex;
 use super::geometry::Geometry;
 use crate::framebuffer::Rect;
+use crate::gl::float::fused_multiply_add;
 use crate::gl::limits::MAX_POINT_SIZE;
 use crate::setup::jobs::line::LineVertex;
 use crate::setup::jobs::point::PointJob;
 use crate::setup::jobs::smooth::{SmoothJob, SmoothPoint};
 use crate::setup::multisample::SampleQuad;
+use crate::setup::plane::point_varyings;
 use crate::setup::point::point_rect;
 use crate::setup::{Primitive as RasterPrimitive, Scene};
 
@@ -50,7 +52,7 @@ impl PointAttenuation {
     pub fn size_at(&self, eye: [f32; 4]) -> f32 {
         let d = eye[2].abs();
         let [a, b, c] = self.coefficients;
-        let factor = d.mul_add(c, b).mul_add(d, a);
+        let factor = fused_multiply_add(fused_multiply_add(d, c, b), d, a);
         clamp_point_size(self.size / factor.abs().sqrt(), self.min, self.max)
     }
 }
@@ -71,7 +73,7 @@ pub fn emit_point(scene: &mut Scene, state: u32, g: &Geometry, v: &ClipVertex) {
 pub fn emit_window_point(scene: &mut Scene, state: u32, g: &Geometry, w: &LineVertex, size: f32) {
     // llvmpipe interpolates point colors perspective-correctly too: (c/w)·w.
     let color = if w.inv_w == 1.0 { w.color } else { w.color.map(|c| c * w.inv_w * (1.0 / w.inv_w)) };
-    let varyings = g.varyings.iter().map(|v| v.of_line(w)).collect();
+    let varyings = point_varyings(g.varyings.iter().map(|v| v.of_line(w)));
     if g.per_sample {
         // The square of the unrounded size, as llvmpipe draws it on a multisampled target
         // (sizes below 1 draw as 1 there, as for aliased points); GL_POINT_SMOOTH changes

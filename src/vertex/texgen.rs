@@ -67,7 +67,10 @@ impl TexGen<'_> {
                         Gen::Eye(p) => (0..4).map(|i| p[i] * eye[i]).sum(),
                         Gen::Sphere => {
                             let m = 2.0
-                                * (reflect.x * reflect.x + reflect.y * reflect.y + (reflect.z + 1.0).powi(2)).sqrt();
+                                * (reflect.x * reflect.x
+                                    + reflect.y * reflect.y
+                                    + (reflect.z + 1.0) * (reflect.z + 1.0))
+                                    .sqrt();
                             let r = if c == 0 { reflect.x } else { reflect.y };
                             if m > 0.0 {
                                 r / m + 0.5

@@ -6,6 +6,7 @@ use super::geometry::Geometry;
 use super::offset::{clamp_offset, polygon_offset};
 use crate::setup::jobs::smooth::{SmoothJob, SmoothTriangle};
 use crate::setup::jobs::triangle::{TriangleJob, WindowVertex};
+use crate::setup::plane::MAX_VARYINGS;
 use crate::setup::{Primitive as RasterPrimitive, Scene};
 
 /// The colors of a flat-shaded primitive: its provoking vertex's front primary and
@@ -61,15 +62,21 @@ pub fn emit_triangle(scene: &mut Scene, state: u32, g: &Geometry, w: [WindowVert
     let offset = g
         .offset
         .map_or(0.0, |(factor, units)| clamp_offset(polygon_offset(&w, factor, units, g.depth), g.offset_clamp));
-    let varyings: Vec<[f32; 3]> = g.varyings.iter().map(|a| w.map(|v| a.of(&v))).collect();
+    // On the stack: setting up a triangle allocates nothing.
+    let mut values = [[0.0f32; 3]; MAX_VARYINGS];
+    let n = g.varyings.len().min(MAX_VARYINGS);
+    for (value, a) in values.iter_mut().zip(&g.varyings) {
+        *value = w.map(|v| a.of(&v));
+    }
+    let varyings = &values[..n];
     if g.smooth_polygons {
-        if let Some(job) = SmoothTriangle::new(w, flat, offset, &varyings, front) {
+        if let Some(job) = SmoothTriangle::new(w, flat, offset, varyings, front) {
             let job = SmoothJob::Triangle(Box::new(job));
             scene.add(state, job.bounds(), RasterPrimitive::Smooth(job));
         }
         return;
     }
-    if let Some(mut job) = TriangleJob::with_accuracy(g.accuracy, w, flat, offset, &varyings) {
+    if let Some(mut job) = TriangleJob::with_accuracy(g.accuracy, w, flat, offset, varyings) {
         job.front_facing = front;
         let bounds = job.bounds();
         scene.add(state, bounds, RasterPrimitive::Triangle(job));

@@ -2,6 +2,7 @@
 //! glDepthRange), in GL's y-up window space for filled polygons and in llvmpipe's y-down
 //! window space for lines and points. This is the only place that maps to window space.
 use super::clip::ClipVertex;
+use crate::gl::float::fused_multiply_add;
 use crate::setup::jobs::line::LineVertex;
 use crate::setup::jobs::triangle::WindowVertex;
 use crate::setup::triangle::GUARD_BAND;
@@ -65,7 +66,13 @@ impl Viewport {
     pub fn window_down(&self, v: &ClipVertex, fused: bool) -> LineVertex {
         let inv_w = 1.0 / v.clip[3];
         let ndc = [v.clip[0] * inv_w, v.clip[1] * inv_w, v.clip[2] * inv_w];
-        let map = |n: f32, scale: f32, offset: f32| if fused { n.mul_add(scale, offset) } else { n * scale + offset };
+        let map = |n: f32, scale: f32, offset: f32| {
+            if fused {
+                fused_multiply_add(n, scale, offset)
+            } else {
+                n * scale + offset
+            }
+        };
         LineVertex {
             x: map(ndc[0], self.scale[0], self.offset[0]),
             y_down: map(ndc[1], -self.scale[1], self.offset_down),

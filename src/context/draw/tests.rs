@@ -518,3 +518,69 @@ fn a_scene_over_its_budget_is_rendered_at_the_next_draw() {
     let expected = [(last * 255.0).round() as u8, ((1.0 - last) * 255.0).round() as u8, 128, 255];
     assert!(pixels(&mut ctx, &d).iter().all(|&p| p == expected));
 }
+
+/// A long triangle strip of small triangles (zig-zag rows over a 64 × 64 window), drawn in
+/// immediate mode, from a client array, and from a display list that captured that array
+/// draw: the scene is rendered whenever it passes its budget, so what it records never
+/// exceeds the budget by more than one part of a draw. (Before display-list draws were cut
+/// into parts again at replay, the list's strip was drawn as one part: 300 000 vertices
+/// made a scene of about 170 MB.)
+#[test]
+fn long_draws_keep_the_scene_within_its_budget() {
+    use super::PEAK_SCENE_BYTES;
+    use crate::context::vertex_input::test_support::{floats, FakeMemory};
+    use crate::context::vertex_input::BATCH_VERTICES;
+    const N: usize = 300_000;
+    let position = |i: usize| {
+        let (column, row) = ((i / 2) % 100, (i / 2) / 100);
+        [1.0 + 0.5 * column as f32, ((row % 30) * 2 + (i & 1) * 2) as f32 + 0.25]
+    };
+    let (mut ctx, _d) = Context::with_test_drawable(
+        FramebufferConfig::single_buffered(ColorFormat::Unorm8 { alpha: true }, DepthStencilFormat::None, 0),
+        64,
+        64,
+    );
+    ctx.matrix_mode(GL_PROJECTION);
+    ctx.ortho(0.0, 64.0, 0.0, 64.0, -1.0, 1.0);
+    // One part of a strip: its triangles, one bin entry each (the window is one tile).
+    let part = (BATCH_VERTICES + 2) * (std::mem::size_of::<(u32, RasterPrimitive)>() + std::mem::size_of::<u32>());
+    let bound = Scene::BUDGET_BYTES + part;
+    let mut memory = FakeMemory::default();
+    let xy: Vec<f32> = (0..N).flat_map(position).collect();
+    memory.add(0x1000, floats(&xy));
+    ctx.vertex_pointer(2, GL_FLOAT, 0, 0x1000);
+    ctx.enable_client_state(GL_VERTEX_ARRAY, true);
+    type Draw<'a> = (&'a str, &'a dyn Fn(&mut Context));
+    let draws: [Draw; 3] = [
+        ("immediate mode", &|ctx| {
+            ctx.begin(GL_TRIANGLE_STRIP);
+            for i in 0..N {
+                let [x, y] = position(i);
+                ctx.vertex([x, y, 0.0, 1.0]);
+            }
+            ctx.end();
+        }),
+        ("client array", &|ctx| ctx.draw_arrays(GL_TRIANGLE_STRIP, 0, N as i32, &memory)),
+        ("display list", &|ctx| {
+            ctx.new_list(1, GL_COMPILE);
+            ctx.draw_or_compile(|ctx| ctx.draw_arrays(GL_TRIANGLE_STRIP, 0, N as i32, &memory));
+            ctx.end_list();
+            ctx.vertex_input.delivered.clear();
+            PEAK_SCENE_BYTES.with(|p| p.set(0));
+            ctx.call_list(1);
+        }),
+    ];
+    for (how, draw) in draws {
+        ctx.flush_rendering();
+        ctx.vertex_input.delivered.clear();
+        PEAK_SCENE_BYTES.with(|p| p.set(0));
+        draw(&mut ctx);
+        assert_eq!(ctx.take_error(), GL_NO_ERROR);
+        let peak = PEAK_SCENE_BYTES.with(|p| p.get());
+        assert!(peak > Scene::BUDGET_BYTES / 2, "{how}: the draw must be long enough to fill a scene");
+        assert!(peak <= bound, "{how}: the scene recorded {peak} bytes, over {bound}");
+        let delivered = &ctx.vertex_input.delivered;
+        assert!(delivered.iter().all(|(_, v)| v.len() <= BATCH_VERTICES + 2), "{how}: a part too long");
+        assert_eq!(delivered.iter().map(|(_, v)| v.len() - 2).sum::<usize>(), N - 2, "{how}: every triangle once");
+    }
+}

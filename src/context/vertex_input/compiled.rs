@@ -112,7 +112,7 @@ impl Context {
                 compiled.supplied.merge(&mut vertex, c);
                 vertex
             }));
-            self.deliver(*mode, &batch);
+            self.deliver_in_parts(*mode, &batch);
             batch.clear();
             self.vertex_input.batch = batch;
         }

@@ -100,7 +100,7 @@ impl LineJob {
                 inv_w: g.plane(a.inv_w, b.inv_w),
             },
         };
-        let over_w = varyings.iter().map(|v| g.plane(v[0] * a.inv_w, v[1] * b.inv_w)).collect();
+        let over_w = varyings.iter().map(|v| g.plane(v[0] * a.inv_w, v[1] * b.inv_w));
         let varyings = Varyings::new(over_w, g.plane(a.inv_w, b.inv_w));
         LineJob { setup, z, shading, varyings, sample_quad: None }
     }

@@ -13,6 +13,7 @@ use crate::fragment::MAX_SPAN;
 use crate::framebuffer::band::{Band, DepthBand};
 use crate::framebuffer::format::DepthEncoding::{Float, Unorm};
 use crate::framebuffer::Rect;
+use crate::gl::float::ceil_f64_to_i32;
 use std::sync::Arc;
 
 /// What a pixel rectangle's fragments hold.
@@ -51,8 +52,10 @@ pub struct PixelRectJob {
 /// The image column (or row) window column `x` takes, if any.
 #[inline]
 fn image_index(x: i32, origin: f64, zoom: f64, size: usize) -> Option<usize> {
-    let i = ((x as f64 + 0.5 - origin) / zoom).floor();
-    (i >= 0.0 && i < size as f64).then_some(i as usize)
+    // For q ≥ 0 truncation is floor, and floor(q) ∈ [0, size) ⇔ q ∈ [0, size) (no libm
+    // call per pixel).
+    let q = (x as f64 + 0.5 - origin) / zoom;
+    (q >= 0.0 && q < size as f64).then_some(q as usize)
 }
 
 /// The half-open range of window columns whose centres lie in [`origin`, `origin` + zoom·size)
@@ -60,8 +63,7 @@ fn image_index(x: i32, origin: f64, zoom: f64, size: usize) -> Option<usize> {
 pub fn covered_columns(origin: f64, zoom: f64, size: usize) -> (i32, i32) {
     let end = origin + zoom * size as f64;
     let (lo, hi) = if zoom >= 0.0 { (origin, end) } else { (end, origin) };
-    let clamp = |v: f64| v.clamp(i32::MIN as f64 / 2.0, i32::MAX as f64 / 2.0) as i32;
-    (clamp((lo - 0.5).ceil()), clamp((hi - 0.5).ceil()))
+    (ceil_f64_to_i32(lo - 0.5), ceil_f64_to_i32(hi - 0.5))
 }
 
 impl PixelRectJob {

@@ -10,6 +10,7 @@ use crate::framebuffer::band::Band;
 use crate::framebuffer::Rect;
 use crate::raster::walk::walk_sample_spans;
 use crate::setup::multisample::{sample_offsets, SampleQuad};
+use crate::setup::plane::PointVaryings;
 
 /// A set-up point: its pixels, its window z and its color.
 #[derive(Clone, Debug)]
@@ -18,7 +19,7 @@ pub struct PointJob {
     pub z: f32,
     pub color: [f32; 4],
     /// The varyings the draw needs (one value each over the whole point).
-    pub varyings: Vec<f32>,
+    pub varyings: PointVaryings,
     /// The square covered sample by sample, when rasterized per sample (`rect` is then its
     /// pixel box).
     pub sample_square: Option<Box<SampleQuad>>,

@@ -15,8 +15,9 @@ use super::triangle::WindowVertex;
 use crate::fragment::pipeline::{shade_covered_span, DrawState, Scratch, Span};
 use crate::framebuffer::band::Band;
 use crate::framebuffer::Rect;
+use crate::gl::float::{ceil_to_i32, floor_f64, floor_to_i32};
 use crate::raster::walk::{stipple_mask, walk_covered};
-use crate::setup::plane::{Plane, Shading, Varyings};
+use crate::setup::plane::{Plane, PointVaryings, Shading, Varyings};
 use crate::setup::smooth::{triangle_pixel_coverage, SmoothLineCoverage, SmoothPointCoverage};
 
 /// A smooth primitive ready for rasterization.
@@ -51,12 +52,11 @@ impl SmoothJob {
 /// The GL pixel rectangle holding the window-space box `[lo, hi]` given in y-down
 /// coordinates of a framebuffer `height` rows high.
 fn rect_from_down(lo: [f32; 2], hi: [f32; 2], height: i32) -> Rect {
-    let to_i32 = |v: f32| v.clamp(i32::MIN as f32 / 2.0, i32::MAX as f32 / 2.0) as i32;
     Rect {
-        x0: to_i32(lo[0].floor()),
-        x1: to_i32(hi[0].ceil()),
-        y0: height - to_i32(hi[1].ceil()),
-        y1: height - to_i32(lo[1].floor()),
+        x0: floor_to_i32(lo[0]),
+        x1: ceil_to_i32(hi[0]),
+        y0: height - ceil_to_i32(hi[1]),
+        y1: height - floor_to_i32(lo[1]),
     }
 }
 
@@ -109,7 +109,7 @@ impl SmoothLine {
                 inv_w: plane(a.inv_w, b.inv_w),
             },
         };
-        let over_w = varyings.iter().map(|v| plane(v[0] * a.inv_w, v[1] * b.inv_w)).collect();
+        let over_w = varyings.iter().map(|v| plane(v[0] * a.inv_w, v[1] * b.inv_w));
         Some(SmoothLine {
             coverage,
             bounds: rect_from_down(lo, hi, height),
@@ -133,8 +133,7 @@ impl SmoothLine {
             |y| {
                 // Centres strictly inside the range, with a pixel of margin for rounding.
                 let (lo, hi) = self.coverage.x_range(centre_down(y))?;
-                let to_i32 = |v: f32| v.clamp(i32::MIN as f32 / 2.0, i32::MAX as f32 / 2.0) as i32;
-                Some((to_i32((lo - 0.5).floor()) - 1, to_i32((hi - 0.5).ceil()) + 2))
+                Some((floor_to_i32(lo - 0.5) - 1, ceil_to_i32(hi - 0.5) + 2))
             },
             |x, y| self.coverage.at(x as f32 + 0.5, centre_down(y)),
             |y, x0, n, live, coverage| {
@@ -168,13 +167,19 @@ pub struct SmoothPoint {
     height: i32,
     z: f32,
     color: [f32; 4],
-    varyings: Vec<f32>,
+    varyings: PointVaryings,
 }
 
 impl SmoothPoint {
     /// The smooth point at `v` (y-down window coordinates) of size `size` in a framebuffer
     /// `height` rows high, with `color` and the draw's `varyings`.
-    pub fn new(v: &LineVertex, size: f32, height: i32, color: [f32; 4], varyings: Vec<f32>) -> Option<SmoothPoint> {
+    pub fn new(
+        v: &LineVertex,
+        size: f32,
+        height: i32,
+        color: [f32; 4],
+        varyings: PointVaryings,
+    ) -> Option<SmoothPoint> {
         if !(v.x.is_finite() && v.y_down.is_finite()) {
             return None;
         }
@@ -260,7 +265,7 @@ impl SmoothTriangle {
                 inv_w: plane(inv_w),
             },
         };
-        let over_w = varyings.iter().map(|a| plane([0, 1, 2].map(|i| a[i] * inv_w[i]))).collect();
+        let over_w = varyings.iter().map(|a| plane([0, 1, 2].map(|i| a[i] * inv_w[i])));
         let to_i32 = |f: f64| f.clamp(i32::MIN as f64 / 2.0, i32::MAX as f64 / 2.0) as i32;
         let (xs, ys) = (p.map(|q| q[0]), p.map(|q| q[1]));
         let min = |a: [f64; 3]| a[0].min(a[1]).min(a[2]);
@@ -269,10 +274,10 @@ impl SmoothTriangle {
             vertices: p,
             winding: area2.signum(),
             bounds: Rect {
-                x0: to_i32(min(xs).floor()),
-                x1: to_i32(max(xs).ceil()),
-                y0: to_i32(min(ys).floor()),
-                y1: to_i32(max(ys).ceil()),
+                x0: to_i32(floor_f64(min(xs))),
+                x1: to_i32(-floor_f64(-max(xs))),
+                y0: to_i32(floor_f64(min(ys))),
+                y1: to_i32(-floor_f64(-max(ys))),
             },
             anchor: [v[0].x, v[0].y],
             z,

@@ -156,16 +156,13 @@ impl TriangleJob {
         let varyings = if varyings.is_empty() {
             Varyings::default()
         } else if fast {
-            let linear = varyings.iter().map(|a| plane(order.map(|i| a[i]))).collect();
+            let linear = varyings.iter().map(|a| plane(order.map(|i| a[i])));
             Varyings::new(linear, Plane { a0: 1.0, dadx: 0.0, dady: 0.0 })
         } else {
-            let over_w = varyings
-                .iter()
-                .map(|a| {
-                    let a = order.map(|i| a[i]);
-                    plane([a[0] * inv_w[0], a[1] * inv_w[1], a[2] * inv_w[2]])
-                })
-                .collect();
+            let over_w = varyings.iter().map(|a| {
+                let a = order.map(|i| a[i]);
+                plane([a[0] * inv_w[0], a[1] * inv_w[1], a[2] * inv_w[2]])
+            });
             Varyings::new(over_w, plane(inv_w))
         };
         Some(TriangleJob {
