@@ -4,11 +4,11 @@
 //! tessera is built for the x86-64 baseline (SSE2), so without help every loop is SSE2
 //! code. [`per_level!`] wraps an expression (usually a block) in a closure marked
 //! `#[inline(always)]` and hands it to one wrapper per level (`dispatch.rs`): a function
-//! compiled with `#[target_feature(enable = "sse4.1")]`, one with `"avx2"`, and the plain
-//! SSE2 call. The closure is inlined into each wrapper, so the block and everything the
+//! compiled with `#[target_feature(enable = "sse4.1")]`, one with `"avx2"`, and one for the
+//! SSE2 baseline. The closure is inlined into each wrapper, so the block and everything the
 //! compiler inlines into it are compiled three times, each with its level's instructions
 //! (AVX2's 256-bit vectors and three-operand VEX forms, SSE4.1's `pminsd`/`pmulld`/
-//! `roundps`/`blendvps`/`pmovzx`), and [`level`] picks the copy at run time. Functions the
+//! `roundps`/`blendvps`/`pmovzx`), and [`current`] picks the copy at run time. Functions the
 //! block calls without inlining them stay SSE2 code (a `target_feature` is a property of a
 //! compiled function, not inherited by its callees), so there are two ways to use it:
 //! - around a driver whose hot loops are all inlined into it: the tile workers' per-band
@@ -19,8 +19,10 @@
 //!   written as plain loops (an iterator adaptor such as `Vec::extend` may stay a call out of
 //!   the copy). Today: `fragment::output::write_target` (conversion, blending),
 //!   `fragment::write_colors` (conversion) and `setup::plane::Shading::span_colors` (color
-//!   planes). The dispatch costs a call and a load per use, so a kernel should do a span's
-//!   or a block's work per call, not a pixel's.
+//!   planes). A dispatch costs a call and a few loads per use (measured: 20–40
+//!   instructions, +3–8 % on the benchmark's small and thin triangles, whose spans are a few
+//!   pixels long), so a kernel should do a block's or a long span's work per call; the
+//!   per-band copy costs nothing per span, which is where the 4×4 block kernels belong.
 //!
 //! **Same bytes at every level.** The levels differ only in how many lanes an instruction
 //! carries and in encodings, never in the value of an operation: IEEE 754 add, subtract,
@@ -30,7 +32,9 @@
 //! (every AVX2 CPU has it, but a fused multiply-add rounds once where `a * b + c` rounds
 //! twice), and Rust never contracts `a * b + c` into a fused operation on its own (it gives
 //! LLVM no fast-math or contraction flags), so AVX2 without FMA performs exactly the source's
-//! two roundings, as SSE2 does; `mul_add` is not used on hot paths. Without fast-math the
+//! two roundings, as SSE2 does. Where tessera means a fused operation (line planes and the
+//! viewport, to match llvmpipe), it writes `mul_add`, which is fused at every level: the C
+//! library's correctly rounded `fmaf`, since no level enables `fma`. Without fast-math the
 //! compiler does not reassociate float arithmetic either, so a vectorised loop computes each
 //! element with the scalar loop's operations in the scalar loop's order. Rounding and floor
 //! on hot paths are integer or bit formulations, not libm calls whose code could differ.
@@ -136,6 +140,7 @@ impl std::fmt::Display for Level {
 
 /// A level this CPU has: the only way to run code compiled for a level
 /// ([`dispatch::run`]), so the `target_feature` calls there need no check of their own.
+/// Made only by [`Supported::new`], which checks.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Supported(Level);
 
@@ -246,7 +251,7 @@ macro_rules! simd_per_level {
         )
     };
 }
-pub use crate::simd_per_level as per_level;
+pub use super::simd_per_level as per_level;
 
 #[cfg(test)]
 mod tests {
@@ -283,6 +288,7 @@ mod tests {
     #[test]
     fn the_process_level_is_one_the_cpu_has() {
         assert!(level().available());
+        assert_eq!(current(), current());
         assert!(Level::best() >= level() || choice().requested.is_some());
         assert!(Level::ALL[0].available());
     }
