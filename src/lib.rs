@@ -4,7 +4,8 @@
 //! The folders are the GL pipeline, and data flows one way, top to bottom. A room imports
 //! only itself and the rooms below it (`tests/rooms.rs` checks it in CI); every room but the
 //! FFI edge (`api`, `winsys`) denies unsafe code, and in the engine only the wrapper around
-//! caller-owned pixel memory (`framebuffer/external.rs`) may use it.
+//! caller-owned pixel memory (`framebuffer/external.rs`) and the calls of code compiled per
+//! SIMD level (`simd/dispatch.rs`) may use it.
 //!
 //! ```text
 //! api          extern "C": gl*, OSMesa*, glX*; caller memory in one module (api/caller_memory.rs)
@@ -24,6 +25,8 @@
 //! texture      texture storage, sampling (sampler.rs) and the texture environments (env.rs)
 //! pixel        GL pixel transfer: client formats and types, pack and unpack
 //! framebuffer  buffers and pixel formats, the only code that touches raw pixel memory
+//! simd         the instruction-set level (SSE2, SSE4.1, AVX2; TESSERA_SIMD) and per_level!,
+//!              which compiles a hot block once per level and runs the CPU's copy (dispatch.rs)
 //! gl           the GL vocabulary: enums, C types, limits, OSMesa/GLX constants, small value types
 //! ```
 //!
@@ -39,6 +42,7 @@ pub mod gl;
 pub mod pixel;
 pub mod raster;
 pub mod setup;
+pub mod simd;
 pub mod texture;
 pub mod vertex;
 pub mod winsys;

@@ -3,16 +3,17 @@
 //!
 //! The rooms of `src/`, from the top (the C edge) to the bottom (the GL vocabulary):
 //! `api → winsys → context → vertex → setup → raster → fragment → shader → texture → pixel →
-//! framebuffer → gl`. A room may name (`crate::<room>`, in a `use` or a path) only itself and
+//! framebuffer → simd → gl`. A room may name (`crate::<room>`, in a `use` or a path) only itself and
 //! rooms below it; in particular the engine rooms never name `api`, `context` or `winsys`.
 //! Every room but the FFI edge (`api`, `winsys`: Xlib and the C ABI) denies unsafe code at its
 //! root, and within the engine only the wrapper around caller-owned pixel memory
-//! (`framebuffer/external.rs`) may allow it again.
+//! (`framebuffer/external.rs`) and the calls of code compiled per SIMD level
+//! (`simd/dispatch.rs`) may allow it again.
 
 use std::path::{Path, PathBuf};
 
 /// The rooms in pipeline order, top first.
-const ROOMS: [&str; 12] = [
+const ROOMS: [&str; 13] = [
     "api",
     "winsys",
     "context",
@@ -24,14 +25,16 @@ const ROOMS: [&str; 12] = [
     "texture",
     "pixel",
     "framebuffer",
+    "simd",
     "gl",
 ];
 
 /// Rooms where `unsafe` is the point: the C ABI and Xlib.
 const FFI_ROOMS: [&str; 2] = ["api", "winsys"];
 
-/// Files of an engine room that may hold `unsafe` (each block with a `// SAFETY:` line).
-const UNSAFE_WRAPPERS: [&str; 1] = ["src/framebuffer/external.rs"];
+/// Files of an engine room that may hold `unsafe` (each block with a `// SAFETY:` line): the
+/// caller's pixel memory, and the calls of `target_feature` functions.
+const UNSAFE_WRAPPERS: [&str; 2] = ["src/framebuffer/external.rs", "src/simd/dispatch.rs"];
 
 fn src() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("src")

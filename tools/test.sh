@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Everything CI checks: set-up, the release build (the drop-in libraries the capi tests
 # load), the tests (Rust unit tests and tests/capi.rs, which runs every capi-tests/*.c on
-# Mesa and on tessera; compare/tests/examples.rs, which runs tessera-compare on examples-c/
+# Mesa and on tessera; tests/simd_levels.rs, which renders the capi tests and examples at
+# every TESSERA_SIMD level the CPU has on 1 and 2 threads and compares the bytes (about a
+# minute on 2 cores); compare/tests/examples.rs, which runs tessera-compare on examples-c/
 # against Mesa and opens its HTML report in headless chromium), the GLX checks under Xvfb
 # (tools/xvfb-tests.sh, piglit included), real Python clients (tools/clients.sh), the fuzz target (tools/fuzz.sh), formatting and clippy.
 set -euo pipefail

@@ -3,6 +3,9 @@
 //! The variable is a comma-separated list of topics, read once per process:
 //! - `pipeline`: every draw prints (on stderr) the fragment stages its state compiled to, in
 //!   order, and whether the state was compiled anew or found in the scene's cache.
+//! - `config`: the first context created prints the renderer's configuration, one line per
+//!   setting: `tessera config: simd avx2 (detected; TESSERA_SIMD unset)` (the SIMD level of
+//!   the hot loops, `crate::simd`), `... threads 2`, `... accuracy conformant`.
 
 use std::sync::OnceLock;
 
@@ -17,6 +20,20 @@ pub fn enabled(topic: &str) -> bool {
         })
         .iter()
         .any(|t| t == topic)
+}
+
+/// Under `TESSERA_DEBUG=config`, prints the renderer's configuration on stderr, once per
+/// process: the SIMD level the hot loops run at and why, the rasterizer thread count, the
+/// accuracy mode new contexts start in.
+pub fn print_config_once() {
+    static PRINTED: std::sync::Once = std::sync::Once::new();
+    if enabled("config") {
+        PRINTED.call_once(|| {
+            eprintln!("tessera config: simd {}", crate::simd::describe());
+            eprintln!("tessera config: threads {}", crate::raster::thread_count());
+            eprintln!("tessera config: accuracy {}", crate::setup::accuracy::Accuracy::from_env().name());
+        });
+    }
 }
 
 /// The name of a primitive mode (GL_POINTS … GL_POLYGON) for diagnostics.

@@ -102,6 +102,7 @@ pub struct Context {
 
 impl Context {
     pub fn new(config: ContextConfig) -> Context {
+        debug::print_config_once();
         let buffer = if config.visual.double_buffered { GL_BACK } else { GL_FRONT };
         Context {
             state: State::new(buffer),

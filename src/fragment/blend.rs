@@ -122,6 +122,7 @@ pub fn mul_unorm8(a: u32, b: u32) -> u32 {
 }
 
 /// Fills channels `lo..hi` of `out[i]` (i < n) with `factor` evaluated for unorm8 colors.
+#[inline(always)] // into the per-level copies of write_target (crate::simd)
 fn factor_unorm8(
     factor: BlendFactor,
     src: &[[u8; 4]],
@@ -169,6 +170,7 @@ fn factor_unorm8(
 }
 
 /// Combines source and destination with their factors on channels `lo..hi`, writing to `out`.
+#[inline(always)] // into the per-level copies of write_target (crate::simd)
 fn equation_unorm8(
     equation: BlendEquation,
     src: &[[u8; 4]],
@@ -215,6 +217,7 @@ fn equation_unorm8(
 /// Blends the unorm8 source colors `src` (pixel i of the span) into `dst` for every bit of
 /// `live`; `constant` is the blend color converted to unorm8. Channel masks are applied by
 /// the caller's write, not here.
+#[inline(always)] // into the per-level copies of write_target (crate::simd)
 pub fn blend_unorm8(blend: &Blend, constant: [u8; 4], src: &[[u8; 4]], dst: &mut [[u8; 4]], live: u64) {
     let n = src.len().min(dst.len()).min(super::MAX_SPAN);
     let mut sf = [[0u8; 4]; super::MAX_SPAN];

@@ -331,6 +331,21 @@ pub fn write_colors(
     mask: [bool; 4],
     clamp_float: bool,
 ) {
+    // One copy per SIMD level (`crate::simd`): the body's conversion loops run with the CPU's
+    // instructions.
+    crate::simd::per_level!(write_colors_body(target, row_start, colors, live, mask, clamp_float))
+}
+
+/// The body of the function above, inlined into each level's copy.
+#[inline(always)]
+fn write_colors_body(
+    target: &mut ColorBand<'_>,
+    row_start: usize,
+    colors: &[[f32; 4]],
+    live: u64,
+    mask: [bool; 4],
+    clamp_float: bool,
+) {
     let all = mask.iter().all(|&m| m);
     let lanes = colors.iter().enumerate().filter(|(i, _)| live & (1 << i) != 0);
     match target {

@@ -38,6 +38,22 @@ pub fn write_target(
     live: u64,
     ops: &TargetOps<'_>,
 ) {
+    // One copy per SIMD level (`crate::simd`): the conversion and blend loops inlined into
+    // the body run with the CPU's instructions.
+    crate::simd::per_level!(write_target_body(target, row_start, x0, y, colors, live, ops))
+}
+
+/// The body of the function above, inlined into each level's copy.
+#[inline(always)]
+fn write_target_body(
+    target: &mut ColorBand<'_>,
+    row_start: usize,
+    x0: i32,
+    y: i32,
+    colors: &[[f32; 4]],
+    live: u64,
+    ops: &TargetOps<'_>,
+) {
     let n = colors.len().min(MAX_SPAN);
     let colors = &colors[..n];
     let mask = ops.mask;
@@ -153,6 +169,7 @@ fn for_live(live: u64, n: usize, mut f: impl FnMut(usize)) {
     }
 }
 
+#[inline(always)] // into the per-level copies of write_target (crate::simd)
 fn to_unorm8(colors: &[[f32; 4]], out: &mut [[u8; 4]; MAX_SPAN]) {
     for (o, c) in out.iter_mut().zip(colors) {
         *o = c.map(|x| float_to_unorm(x, 8) as u8);

@@ -6,7 +6,8 @@
 //! `TESSERA_THREADS` workers (the calling thread included) take bands one at a time, and
 //! each band renders its tiles, each tile its bin in submission order ([`render_tiles`]).
 //! A pixel is only ever touched by the one worker owning its band, in submission order, so
-//! the bytes are identical for any number of threads. What a bin holds and how each
+//! the bytes are identical for any number of threads. Each band's work is compiled once per
+//! SIMD level and runs the CPU's copy (`crate::simd`), with identical bytes at every level. What a bin holds and how each
 //! primitive is rendered is `setup`'s (the room above); this room only knows tiles, bands,
 //! threads and coverage ([`walk`]).
 #![deny(unsafe_code)]
@@ -36,15 +37,19 @@ pub fn render_tiles<T: Copy + Sync>(
     let bounds = framebuffer.bounds();
     let bands = framebuffer.bands(TILE_SIZE, targets);
     run_parallel(bands, threads, |mut band| {
-        let ty = band.y0 as usize / TILE_SIZE;
-        let mut scratch = Scratch::default();
-        for tx in 0..tiles_x {
-            let tile =
-                Rect::from_xywh((tx * TILE_SIZE) as i32, band.y0, TILE_SIZE as i32, band.rows as i32).intersect(bounds);
-            for &item in &bins[ty * tiles_x + tx] {
-                render(item, tile, &mut band, &mut scratch);
+        // One copy of the band's work per SIMD level (`crate::simd`): the tile loop and what
+        // the compiler inlines into it run with the CPU's instructions, same bytes at each.
+        crate::simd::per_level!({
+            let ty = band.y0 as usize / TILE_SIZE;
+            let mut scratch = Scratch::default();
+            for tx in 0..tiles_x {
+                let tile = Rect::from_xywh((tx * TILE_SIZE) as i32, band.y0, TILE_SIZE as i32, band.rows as i32)
+                    .intersect(bounds);
+                for &item in &bins[ty * tiles_x + tx] {
+                    render(item, tile, &mut band, &mut scratch);
+                }
             }
-        }
+        })
     });
 }
 

@@ -51,24 +51,47 @@ impl<P: Interpolant> Shading<P> {
     /// for flat shading nothing is appended and the one color is returned instead.
     #[inline]
     pub fn span_colors(&self, x0: f32, y: f32, n: usize, colors: &mut Vec<[f32; 4]>) -> Option<[f32; 4]> {
+        if let Shading::Flat(c) = self {
+            return Some(*c);
+        }
+        // One copy of the evaluation loops per SIMD level (`crate::simd`).
+        crate::simd::per_level!(self.span_colors_body(x0, y, n, colors));
+        None
+    }
+
+    /// The loops of [`Self::span_colors`], inlined into each level's copy: plain loops over
+    /// the appended pixels (an iterator `extend` would be a call out of the copy).
+    #[inline(always)]
+    fn span_colors_body(&self, x0: f32, y: f32, n: usize, colors: &mut Vec<[f32; 4]>) {
+        if matches!(self, Shading::Flat(_)) {
+            return;
+        }
+        let start = colors.len();
+        colors.resize(start + n, [0.0; 4]);
+        let out = &mut colors[start..];
         match self {
-            Shading::Flat(c) => return Some(*c),
-            Shading::Affine(planes) => colors.extend((0..n).map(|i| planes.each_ref().map(|p| p.at(x0 + i as f32, y)))),
-            Shading::Perspective { color_over_w, inv_w } => colors.extend((0..n).map(|i| {
-                let x = x0 + i as f32;
-                let w = 1.0 / inv_w.at(x, y);
-                color_over_w.each_ref().map(|p| p.at(x, y) * w)
-            })),
+            Shading::Flat(_) => {}
+            Shading::Affine(planes) => {
+                for (i, o) in out.iter_mut().enumerate() {
+                    *o = planes.each_ref().map(|p| p.at(x0 + i as f32, y));
+                }
+            }
+            Shading::Perspective { color_over_w, inv_w } => {
+                for (i, o) in out.iter_mut().enumerate() {
+                    let x = x0 + i as f32;
+                    let w = 1.0 / inv_w.at(x, y);
+                    *o = color_over_w.each_ref().map(|p| p.at(x, y) * w);
+                }
+            }
             Shading::Stepped(planes) => {
                 let start = planes.each_ref().map(|p| p.at(x0, y));
                 let step = planes.each_ref().map(|p| p.step_x());
-                colors.extend((0..n).map(|i| {
+                for (i, o) in out.iter_mut().enumerate() {
                     let i = i as f32;
-                    std::array::from_fn(|c| start[c] + step[c] * i)
-                }))
+                    *o = std::array::from_fn(|c| start[c] + step[c] * i);
+                }
             }
         }
-        None
     }
 }
 
