@@ -33,8 +33,8 @@
 //! twice), and Rust never contracts `a * b + c` into a fused operation on its own (it gives
 //! LLVM no fast-math or contraction flags), so AVX2 without FMA performs exactly the source's
 //! two roundings, as SSE2 does. Where tessera means a fused operation (line planes and the
-//! viewport, to match llvmpipe), it writes `mul_add`, which is fused at every level: the C
-//! library's correctly rounded `fmaf`, since no level enables `fma`. Without fast-math the
+//! viewport, to match llvmpipe), it calls `gl::float::fused_multiply_add`, an exact fused
+//! multiply-add built from plain IEEE operations, the same at every level. Without fast-math the
 //! compiler does not reassociate float arithmetic either, so a vectorised loop computes each
 //! element with the scalar loop's operations in the scalar loop's order. Rounding and floor
 //! on hot paths are integer or bit formulations, not libm calls whose code could differ.
