@@ -8,9 +8,11 @@
 //! A pixel is only ever touched by the one worker owning its band, in submission order, so
 //! the bytes are identical for any number of threads. What a bin holds and how each
 //! primitive is rendered is `setup`'s (the room above); this room only knows tiles, bands,
-//! threads and coverage ([`walk`]).
+//! threads and coverage: 4×4 blocks of filled triangles walked hierarchically
+//! ([`blocks`]), spans for everything else ([`walk`]).
 #![deny(unsafe_code)]
 
+pub mod blocks;
 pub mod walk;
 
 use crate::fragment::pipeline::Scratch;

@@ -368,3 +368,95 @@ mod varying_tests {
         assert!(TriangleJob::new(v, None, 0.0, &[]).unwrap().varyings.is_empty());
     }
 }
+
+#[cfg(test)]
+mod block_walk_tests {
+    use super::*;
+    use crate::raster::blocks::{walk_blocks, PixelEdge};
+    use crate::setup::triangle::GUARD_BAND;
+
+    /// A tiny deterministic generator (xorshift) in [0, 1).
+    fn unit(seed: &mut u64) -> f32 {
+        *seed ^= *seed << 13;
+        *seed ^= *seed >> 7;
+        *seed ^= *seed << 17;
+        ((*seed >> 11) as f64 / (1u64 << 53) as f64) as f32
+    }
+
+    /// Walks `area` in blocks and compares every pixel of it (and of the blocks around it)
+    /// with the per-pixel reference test.
+    fn assert_blocks_match(t: &TriangleSetup, area: Rect) {
+        let edges = t.pixel_edges().map(PixelEdge::from_array);
+        let (w, h) = (area.width(), area.height());
+        let mut seen = vec![false; w * h];
+        walk_blocks(area, &edges, None, |x, y, mask| {
+            assert!(x % 4 == 0 && y % 4 == 0, "block origin ({x},{y})");
+            for i in 0..16 {
+                if mask & (1 << i) != 0 {
+                    let (px, py) = (x + (i & 3), y + (i >> 2));
+                    assert!(px >= area.x0 && px < area.x1 && py >= area.y0 && py < area.y1, "({px},{py}) outside");
+                    let cell = &mut seen[(py - area.y0) as usize * w + (px - area.x0) as usize];
+                    assert!(!*cell, "({px},{py}) twice");
+                    *cell = true;
+                }
+            }
+        });
+        for y in 0..h {
+            for x in 0..w {
+                let (px, py) = (area.x0 + x as i32, area.y0 + y as i32);
+                let span = t.row_span(py, area.x0, area.x1).is_some_and(|(a, b)| a <= px && px < b);
+                assert_eq!(seen[y * w + x], t.covers(px, py), "pixel ({px},{py}) of {:?}", t.vertices);
+                assert_eq!(span, t.covers(px, py));
+            }
+        }
+    }
+
+    #[test]
+    fn blocks_cover_exactly_the_pixels_of_the_edge_test() {
+        let mut seed = 0x2545_f491_4f6c_dd1d;
+        for round in 0..3000 {
+            // Small, tile-sized and huge triangles (vertices near the guard band), some
+            // with vertices on pixel centres and edges through them (the fill rule).
+            let range = match round % 4 {
+                0 => 20.0,
+                1 => 150.0,
+                2 => 2.0 * GUARD_BAND,
+                _ => 4000.0,
+            };
+            let mut v = [0, 1, 2].map(|_| [unit(&mut seed) * range - range / 3.0, unit(&mut seed) * range - range / 3.0]);
+            if round % 5 == 0 {
+                v = v.map(|p| p.map(|c| (c.clamp(-GUARD_BAND, GUARD_BAND) as i32) as f32 + 0.5));
+            }
+            let v = v.map(|p| p.map(|c| c.clamp(-GUARD_BAND, GUARD_BAND)));
+            let Some(t) = TriangleSetup::new(v) else { continue };
+            // A tile-sized area somewhere in a 16384-wide framebuffer, not aligned.
+            let x0 = (unit(&mut seed) * 200.0) as i32 + if round % 3 == 0 { 16000 } else { 0 };
+            let y0 = (unit(&mut seed) * 200.0) as i32;
+            let area = Rect::from_xywh(x0, y0, 1 + (unit(&mut seed) * 90.0) as i32, 1 + (unit(&mut seed) * 90.0) as i32);
+            assert_blocks_match(&t, area);
+        }
+    }
+
+    #[test]
+    fn shared_edges_through_centres_are_walked_once() {
+        let quad = [[0.5, 0.5], [40.5, 0.5], [40.5, 33.5], [0.5, 33.5]];
+        let a = TriangleSetup::new([quad[0], quad[1], quad[2]]).unwrap();
+        let b = TriangleSetup::new([quad[0], quad[2], quad[3]]).unwrap();
+        let mut hits = vec![0u8; 64 * 64];
+        for t in [&a, &b] {
+            walk_blocks(Rect::from_xywh(0, 0, 64, 64), &t.pixel_edges().map(PixelEdge::from_array), None, |x, y, m| {
+                for i in 0..16 {
+                    if m & (1 << i) != 0 {
+                        hits[((y + (i >> 2)) * 64 + x + (i & 3)) as usize] += 1;
+                    }
+                }
+            });
+        }
+        for y in 0..64 {
+            for x in 0..64 {
+                let inside = x < 40 && y < 33;
+                assert_eq!(hits[y * 64 + x], inside as u8, "({x},{y})");
+            }
+        }
+    }
+}
