@@ -6,14 +6,19 @@
 //! bounding box (or, for lines, its rows' columns) touches, clipped to the draw's scissor
 //! box. [`Scene::execute`] hands the bins to the tile workers (`raster`), which call back
 //! here to render each bin entry.
+//!
+//! At execution each draw state is compiled once into the lane
+//! kernels of `fragment::block` for the framebuffer's formats, and single-sampled filled
+//! triangles render through them in 4×4 blocks.
 
 use super::jobs::line::LineJob;
 use super::jobs::pixels::PixelRectJob;
 use super::jobs::point::PointJob;
 use super::jobs::smooth::SmoothJob;
 use super::jobs::triangle::TriangleJob;
+use crate::fragment::block::BlockPipeline;
 use crate::fragment::pipeline::DrawState;
-use crate::framebuffer::{ColorSlot, Framebuffer, Rect};
+use crate::framebuffer::{ColorFormat, ColorSlot, Framebuffer, Rect};
 use crate::raster::{render_tiles, thread_count, TILE_SIZE};
 use std::sync::Arc;
 
@@ -189,11 +194,29 @@ impl Scene {
         if self.primitives.is_empty() {
             return;
         }
+        // Each draw state compiled once into lane kernels for this framebuffer's formats (the
+        // band's colour targets are the scene's targets the framebuffer has, in order).
+        let single_sampled = framebuffer.samples() == 1;
+        let formats: Vec<ColorFormat> =
+            self.targets.iter().filter_map(|&slot| framebuffer.color(slot).map(|b| b.format())).collect();
+        let depth_format = framebuffer.depth_stencil().format();
+        let pipelines: Vec<Option<BlockPipeline>> = self
+            .states
+            .iter()
+            .map(|s| {
+                (single_sampled && s.multisample.is_none())
+                    .then(|| BlockPipeline::compile(&s.fragment, &formats, depth_format))
+            })
+            .collect();
         render_tiles(framebuffer, &self.targets, self.tiles_x, &self.bins, threads, |index, tile, band, scratch| {
-            let (state, primitive) = &self.primitives[index as usize];
-            let state = &self.states[*state as usize];
+            let (state_index, primitive) = &self.primitives[index as usize];
+            let state = &self.states[*state_index as usize];
             let area = tile.intersect(state.clip);
             match primitive {
+                Primitive::Triangle(job) if band.samples == 1 && pipelines[*state_index as usize].is_some() => {
+                    let pipeline = pipelines[*state_index as usize].as_ref().expect("compiled above");
+                    job.render_blocks(state, pipeline, tile.intersect(state.fill_clip), band, scratch)
+                }
                 Primitive::Triangle(job) if state.multisample.is_some_and(|m| m.per_sample()) => {
                     job.render_samples(state, tile.intersect(state.fill_clip), band, scratch)
                 }

@@ -9,11 +9,20 @@
 //! equal the divide is skipped, which changes nothing but time. The accuracy mode
 //! ([`Accuracy`]) may instead interpolate affinely (fast) or compute every attribute from
 //! f64 barycentric coordinates at each pixel (exact).
+//!
+//! On a single-sampled target (outside the exact mode) a triangle renders in 4×4 blocks:
+//! the tile is walked hierarchically on its integer edge functions
+//! (`raster::blocks`) and each block runs the lane pipeline (`fragment::block`), with
+//! depth, colours and varyings evaluated per lane from the same planes and the same
+//! arithmetic as the span path ([`TriangleJob::render_blocks`]). Multisampled targets
+//! and the exact mode keep the span path.
+use crate::fragment::block::{shade_block, BlockColors, BlockInputs, BlockPipeline, F32s, LANES};
 use crate::fragment::pipeline::{shade_span, shade_span_samples, DrawState, Scratch, Span};
 use crate::fragment::{multisample::SampleMasks, span_mask};
 use crate::framebuffer::band::Band;
 use crate::framebuffer::Rect;
 use crate::gl::limits::MAX_TEXTURE_UNITS;
+use crate::raster::blocks::{walk_blocks, PixelEdge};
 use crate::raster::walk::{stipple_mask, walk_sample_spans, walk_spans};
 use crate::setup::accuracy::Accuracy;
 use crate::setup::multisample::{sample_offsets, sample_shifts, SampleOffset};
@@ -198,6 +207,42 @@ impl TriangleJob {
         );
     }
 
+    /// Renders the part of the triangle inside `area` (within the band) into a
+    /// single-sampled `band` in 4×4 blocks through the compiled lane `pipeline`; the exact
+    /// accuracy mode renders spans instead ([`TriangleJob::render`]).
+    pub fn render_blocks(
+        &self,
+        state: &DrawState,
+        pipeline: &BlockPipeline,
+        area: Rect,
+        band: &mut Band<'_>,
+        scratch: &mut Scratch,
+    ) {
+        if self.exact.is_some() {
+            return self.render(state, area, band, scratch);
+        }
+        let area = area.intersect(self.bounds());
+        if area.is_empty() {
+            return;
+        }
+        let edges = self.setup.pixel_edges().map(PixelEdge::from_array);
+        walk_blocks(area, &edges, state.polygon_stipple.as_ref(), |x, y, mask| {
+            shade_block(pipeline, state, band, scratch, x, y, mask, self.front_facing, self)
+        });
+    }
+
+    /// The planes' x offsets of the block's lanes (pixel centres relative to the anchor,
+    /// computed as the span path computes a span's first pixel).
+    #[inline(always)]
+    fn lane_dx(&self, x: i32) -> F32s {
+        std::array::from_fn(|i| (x + (i & 3) as i32) as f32 + 0.5 - self.anchor[0])
+    }
+
+    #[inline(always)]
+    fn lane_dy(&self, y: i32) -> F32s {
+        std::array::from_fn(|i| (y + (i >> 2) as i32) as f32 + 0.5 - self.anchor[1])
+    }
+
     fn shade_span(&self, state: &DrawState, band: &mut Band<'_>, y: i32, x0: i32, x1: i32, scratch: &mut Scratch) {
         let n = (x1 - x0) as usize;
         let dy = y as f32 + 0.5 - self.anchor[1];
@@ -258,6 +303,55 @@ impl TriangleJob {
             |colors| self.shading.span_colors(dx0, dy, n, colors),
             |i, j, out| self.varyings.at(dx0 + i as f32, dy + j as f32, out),
         );
+    }
+}
+
+/// A plane over a block's lanes: `a0 + dadx·dx + dady·dy` per lane, as [`Plane::at`].
+#[inline(always)]
+fn plane_lanes(p: &Plane, dx: &F32s, dy: &F32s) -> F32s {
+    std::array::from_fn(|i| p.a0 + p.dadx * dx[i] + p.dady * dy[i])
+}
+
+impl BlockInputs for TriangleJob {
+    #[inline(always)]
+    fn z(&self, x: i32, y: i32) -> F32s {
+        plane_lanes(&self.z, &self.lane_dx(x), &self.lane_dy(y))
+    }
+
+    #[inline(always)]
+    fn colors(&self, x: i32, y: i32) -> BlockColors {
+        let (dx, dy) = (self.lane_dx(x), self.lane_dy(y));
+        match &self.shading {
+            Shading::Flat(c) => BlockColors::Uniform(*c),
+            Shading::Affine(planes) => BlockColors::Lanes(planes.each_ref().map(|p| plane_lanes(p, &dx, &dy))),
+            Shading::Perspective { color_over_w, inv_w } => {
+                let q = plane_lanes(inv_w, &dx, &dy);
+                let w: F32s = std::array::from_fn(|i| 1.0 / q[i]);
+                BlockColors::Lanes(color_over_w.each_ref().map(|p| {
+                    let v = plane_lanes(p, &dx, &dy);
+                    std::array::from_fn(|i| v[i] * w[i])
+                }))
+            }
+            Shading::Stepped(planes) => BlockColors::Lanes(planes.each_ref().map(|p| {
+                // The fast mode's stepping from each row's first pixel (the block's column 0).
+                let step = p.dadx;
+                let mut out = [0f32; LANES];
+                for r in 0..4 {
+                    let start = p.at(dx[0], dy[4 * r]);
+                    for c in 0..4 {
+                        out[4 * r + c] = start + step * c as f32;
+                    }
+                }
+                out
+            })),
+        }
+    }
+
+    #[inline]
+    fn varyings(&self, x: i32, y: i32, dx: i32, dy: i32, out: &mut [f32]) {
+        let dx0 = x as f32 + 0.5 - self.anchor[0];
+        let dy0 = y as f32 + 0.5 - self.anchor[1];
+        self.varyings.at(dx0 + dx as f32, dy0 + dy as f32, out);
     }
 }
 
