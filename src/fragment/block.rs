@@ -28,9 +28,8 @@ pub mod kernels;
 use super::pipeline::{DrawState, Scratch};
 use super::{AlphaTest, FragmentState};
 use crate::framebuffer::band::Band;
-use crate::framebuffer::format::float_to_unorm;
 use crate::framebuffer::{ColorFormat, DepthStencilFormat};
-use kernels::{compare_bits, compare_lanes, DepthStencilKernel, TargetKernel};
+use kernels::{compare_bits, compare_lanes_small, DepthStencilKernel, TargetKernel};
 use std::sync::atomic::Ordering;
 
 /// Lanes per block.
@@ -38,6 +37,23 @@ pub const LANES: usize = 16;
 pub type F32s = [f32; LANES];
 pub type U16s = [u16; LANES];
 pub type U32s = [u32; LANES];
+
+/// The lanes `f(0) … f(15)`: a plain fixed-size loop, which LLVM vectorises (unlike
+/// `std::array::from_fn` and `<[T; N]>::map`, which it leaves as 16 calls of a closure).
+#[inline(always)]
+pub fn lanes<T: Copy + Default>(f: impl Fn(usize) -> T) -> [T; LANES] {
+    let mut out = [T::default(); LANES];
+    for (i, o) in out.iter_mut().enumerate() {
+        *o = f(i);
+    }
+    out
+}
+
+/// `f` on every lane of `a`.
+#[inline(always)]
+pub fn map_lanes<T: Copy, U: Copy + Default>(a: &[T; LANES], f: impl Fn(T) -> U) -> [U; LANES] {
+    lanes(|i| f(a[i]))
+}
 
 /// Where a block lies in its band: window position, the index of its lane 0 in the band's
 /// slices, the band's row length, and which lanes are pixels of the band (all but at the
@@ -129,7 +145,7 @@ impl BlockColors {
     #[inline(always)]
     pub fn lanes(&self) -> [F32s; 4] {
         match self {
-            BlockColors::Uniform(c) => c.map(|v| [v; LANES]),
+            BlockColors::Uniform(c) => [[c[0]; LANES], [c[1]; LANES], [c[2]; LANES], [c[3]; LANES]],
             BlockColors::Lanes(l) => *l,
         }
     }
@@ -149,8 +165,8 @@ impl BlockColors {
 pub trait BlockInputs {
     /// The window depth of the 16 lanes of the block at `(x, y)`.
     fn z(&self, x: i32, y: i32) -> F32s;
-    /// The interpolated (or flat) colours of the block at `(x, y)`.
-    fn colors(&self, x: i32, y: i32) -> BlockColors;
+    /// The interpolated (or flat) colours of the block at `(x, y)`, into `out`.
+    fn colors(&self, x: i32, y: i32, out: &mut BlockColors);
     /// The varyings of the pixel `dx` columns right of and `dy` rows above `(x, y)`, evaluated
     /// as the span path does from a span starting at `(x, y)`.
     fn varyings(&self, x: i32, y: i32, dx: i32, dy: i32, out: &mut [f32]);
@@ -187,13 +203,13 @@ impl AlphaKernel {
     #[inline]
     fn test(&self, alpha: &F32s, live: u16) -> u16 {
         if self.unorm8 {
-            let a: U32s = std::array::from_fn(|i| float_to_unorm(alpha[i], 8));
-            compare_lanes(self.func, &a, &[self.reference8; LANES]) & live
+            let a: U32s = map_lanes(&kernels::unorm8_lanes(alpha), u32::from);
+            compare_lanes_small(self.func, &a, &[self.reference8; LANES]) & live
         } else {
             // Clamped to [0, 1] (NaN as 0): the bit patterns of non-negative floats order
             // as their values.
-            let a: U32s = std::array::from_fn(|i| if alpha[i] > 0.0 { alpha[i].min(1.0).to_bits() } else { 0 });
-            compare_lanes(self.func, &a, &[self.reference.to_bits(); LANES]) & live
+            let a: U32s = lanes(|i| if alpha[i] > 0.0 { alpha[i].min(1.0).to_bits() } else { 0 });
+            compare_lanes_small(self.func, &a, &[self.reference.to_bits(); LANES]) & live
         }
     }
 }
@@ -234,17 +250,16 @@ pub fn shade_block(
     let fragment = &state.fragment;
     let at = BlockAt::new(band, x, y);
     let mut live = mask;
-    let mut colors = None;
+    let mut colors = BlockColors::Uniform([0.0; 4]);
     if let Some(alpha) = &pipeline.alpha {
-        let c = shade_colors(fragment, scratch, &at, live, inputs);
-        live = match c {
+        shade_colors(fragment, scratch, &at, live, inputs, &mut colors);
+        live = match &colors {
             BlockColors::Uniform(c) => alpha.test(&[c[3]; LANES], live),
             BlockColors::Lanes(l) => alpha.test(&l[3], live),
         };
         if live == 0 {
             return;
         }
-        colors = Some(c);
     }
     if let Some(kernel) = &pipeline.depth_stencil {
         live = kernel.run(&mut band.depth, &at, live, front_facing, || inputs.z(x, y));
@@ -255,10 +270,9 @@ pub fn shade_block(
     if let Some(counter) = &state.samples_passed {
         counter.fetch_add(live.count_ones() as u64, Ordering::Relaxed);
     }
-    let mut colors = match colors {
-        Some(c) => c,
-        None => shade_colors(fragment, scratch, &at, live, inputs),
-    };
+    if pipeline.alpha.is_none() {
+        shade_colors(fragment, scratch, &at, live, inputs, &mut colors);
+    }
     if fragment.needs_varyings() {
         let mut lanes = colors.lanes();
         let fog_slot = usize::from(fragment.color_sum) * 3;
@@ -270,7 +284,9 @@ pub fn shade_block(
             }
             let mut row = colors.row(r);
             let y = at.y + r as i32;
-            fragment.sum_and_fog(&mut row, row_live, &mut scratch.varyings, |i, out| inputs.varyings(x, y, i as i32, 0, out));
+            fragment.sum_and_fog(&mut row, row_live, &mut scratch.varyings, |i, out| {
+                inputs.varyings(x, y, i as i32, 0, out)
+            });
             for (c, pixel) in row.iter().enumerate() {
                 for k in 0..4 {
                     lanes[k][4 * r + c] = pixel[k];
@@ -293,10 +309,11 @@ fn shade_colors(
     at: &BlockAt,
     live: u16,
     inputs: &impl BlockInputs,
-) -> BlockColors {
-    let colors = inputs.colors(at.x, at.y);
+    colors: &mut BlockColors,
+) {
+    inputs.colors(at.x, at.y, colors);
     let Some(texturing) = &fragment.texturing else {
-        return colors;
+        return;
     };
     let mut lanes = colors.lanes();
     for r in 0..4 {
@@ -315,7 +332,7 @@ fn shade_colors(
             }
         }
     }
-    BlockColors::Lanes(lanes)
+    *colors = BlockColors::Lanes(lanes);
 }
 
 #[cfg(test)]

@@ -67,6 +67,17 @@ pub fn walk_blocks(area: Rect, edges: &[PixelEdge; 3], stipple: Option<&[u32; 32
         return;
     }
     let mut walker = Walker { area, edges, stipple, emit };
+    // A small area (a small triangle's box) starts at the smallest aligned block holding it.
+    let within = |size: i32| {
+        let m = !(size - 1);
+        (area.x0 & m) == ((area.x1 - 1) & m) && (area.y0 & m) == ((area.y1 - 1) & m)
+    };
+    for size in [4, 16] {
+        if within(size) {
+            let m = !(size - 1);
+            return walker.level(size, area.x0 & m, area.y0 & m, 0b111);
+        }
+    }
     let mut ty = area.y0 & !63;
     while ty < area.y1 {
         let mut tx = area.x0 & !63;
@@ -160,14 +171,20 @@ impl<F: FnMut(i32, i32, u16)> Walker<'_, F> {
     }
 }
 
-/// The lanes of the 4×4 block at `(x, y)` inside edge `e`.
+/// The lanes of the 4×4 block at `(x, y)` inside edge `e`: each lane's value as the
+/// block corner's plus a column and a row step (adds only), its sign bit packed.
 #[inline(always)]
 fn lane_mask(e: &PixelEdge, x: i32, y: i32) -> u16 {
     let v = e.at(x, y);
+    let cols = [v, v + e.a, v + 2 * e.a, v + 3 * e.a];
+    let rows = [0, e.b, 2 * e.b, 3 * e.b];
     let mut outside = 0u16;
-    for i in 0..16 {
-        let value = v + e.a * (i & 3) as i64 + e.b * (i >> 2) as i64;
-        outside |= ((value >> 63) as u16 & 1) << i;
+    for (r, &row) in rows.iter().enumerate() {
+        let mut bits = 0u16;
+        for (c, &col) in cols.iter().enumerate() {
+            bits |= (((col + row) as u64 >> 63) as u16) << c;
+        }
+        outside |= bits << (4 * r);
     }
     !outside
 }

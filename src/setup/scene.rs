@@ -151,7 +151,12 @@ impl Scene {
                 if let Some(setup) = &opaque {
                     let tile = Rect::from_xywh(tx * t, ty * t, t, t).intersect(bounds);
                     let inside = tile.intersect(r) == tile;
-                    let corners = [(tile.x0, tile.y0), (tile.x1 - 1, tile.y0), (tile.x0, tile.y1 - 1), (tile.x1 - 1, tile.y1 - 1)];
+                    let corners = [
+                        (tile.x0, tile.y0),
+                        (tile.x1 - 1, tile.y0),
+                        (tile.x0, tile.y1 - 1),
+                        (tile.x1 - 1, tile.y1 - 1),
+                    ];
                     if inside && corners.iter().all(|&(x, y)| setup.covers(x, y)) && self.droppable(bin, drawn) {
                         self.binned -= self.bins[bin].len();
                         self.bins[bin].clear();

@@ -17,7 +17,7 @@
 //! - 16-bit unorm and float targets: the span path's f32 stages (`super::super::output`),
 //!   called on the block's rows.
 
-use super::{load, store, BlockAt, BlockColors, F32s, U16s, U32s, LANES};
+use super::{lanes, load, map_lanes, store, BlockAt, BlockColors, F32s, U16s, U32s, LANES};
 use crate::fragment::blend::{Blend, BlendEquation, BlendFactor};
 use crate::fragment::dither::{dither_channel, BAYER4};
 use crate::fragment::logic_op::LogicOp;
@@ -43,23 +43,55 @@ pub fn compare_bits(func: CompareFunc) -> u8 {
     }
 }
 
-/// The lanes where `fragment func stored` holds, branch-free.
+/// The lanes where `fragment func stored` holds, branch-free: each relation as an
+/// all-ones lane mask, the function's three bits as all-ones or zero words, then the lane
+/// masks packed into bits.
 #[inline(always)]
 pub fn compare_lanes(func: u8, fragment: &U32s, stored: &U32s) -> u16 {
-    let (lt, eq, gt) = (func & 1 != 0, func & 2 != 0, func & 4 != 0);
-    let mut pass = 0u16;
-    for i in 0..LANES {
+    let bit = |b: u8| if func & b != 0 { !0u32 } else { 0 };
+    let (lt, eq, gt) = (bit(1), bit(2), bit(4));
+    let ok = lanes(|i| {
         let (f, s) = (fragment[i], stored[i]);
-        let ok = (lt & (f < s)) | (eq & (f == s)) | (gt & (f > s));
-        pass |= (ok as u16) << i;
+        let all = |c: bool| if c { !0u32 } else { 0 };
+        (all(f < s) & lt) | (all(f == s) & eq) | (all(f > s) & gt)
+    });
+    pack_mask(&ok)
+}
+
+/// [`compare_lanes`] for values below 2³¹ (unorm depth up to 24 bits, float depth bits,
+/// stencil and alpha): signed comparisons, which SSE2 has, one plain comparison loop per
+/// function (the function is the draw's: the branch goes the same way every block).
+#[inline(always)]
+pub fn compare_lanes_small(func: u8, fragment: &U32s, stored: &U32s) -> u16 {
+    let f = map_lanes(fragment, |v| v as i32);
+    let s = map_lanes(stored, |v| v as i32);
+    let mask = |c: &dyn Fn(i32, i32) -> bool| pack_mask(&lanes(|i| if c(f[i], s[i]) { !0u32 } else { 0 }));
+    match func {
+        0 => 0,
+        1 => mask(&|a, b| a < b),
+        2 => mask(&|a, b| a == b),
+        3 => mask(&|a, b| a <= b),
+        4 => mask(&|a, b| a > b),
+        5 => mask(&|a, b| a != b),
+        6 => mask(&|a, b| a >= b),
+        _ => 0xffff,
     }
-    pass
+}
+
+/// Lane masks (all-ones or zero words) packed into one bit per lane.
+#[inline(always)]
+fn pack_mask(m: &U32s) -> u16 {
+    let mut bits = 0u16;
+    for (i, &v) in m.iter().enumerate() {
+        bits |= ((v >> 31) as u16) << i;
+    }
+    bits
 }
 
 /// The lanes of `mask` as all-ones / zero words, for selects.
 #[inline(always)]
 fn select_u32(mask: u16, new: &U32s, old: &U32s) -> U32s {
-    std::array::from_fn(|i| if mask & (1 << i) != 0 { new[i] } else { old[i] })
+    lanes(|i| if mask & (1 << i) != 0 { new[i] } else { old[i] })
 }
 
 // ---------------------------------------------------------------------------------------
@@ -215,6 +247,48 @@ impl DepthStencilKernel {
     }
 }
 
+/// `DepthEncoding::encode_fragment` on lanes, branch-free: the clamp as selects (NaN and
+/// −0 give 0), then for unorm the same single-precision product rounded to nearest even
+/// through f64 (`format::round_half_even`), for float the clamped value's bits.
+#[inline(always)]
+fn encode_depth(encoding: DepthEncoding, z: &F32s) -> U32s {
+    let clamped = lanes(|i| {
+        let v = z[i];
+        let v = if v > 0.0 { v } else { 0.0 };
+        if v < 1.0 {
+            v
+        } else {
+            1.0
+        }
+    });
+    match encoding {
+        DepthEncoding::Unorm(bits) if bits <= 24 => {
+            // Below 2²³ adding 2²³ in single precision rounds to nearest even; from 2²³ on
+            // every f32 is an integer already: the f64 rounding's result, without f64.
+            const MAGIC: f32 = (1u32 << 23) as f32;
+            let max = crate::framebuffer::format::unorm_max(bits) as f32;
+            // The integer read from the bits: below 2²³ those of `p + 2²³` minus 2²³'s; from
+            // 2²³ to 2²⁴ (exponent 23) the mantissa plus the implicit bit.
+            lanes(|i| {
+                let p = clamped[i] * max;
+                let small = (p + MAGIC).to_bits().wrapping_sub(MAGIC.to_bits());
+                let large = (p.to_bits() & 0x007f_ffff) | 0x0080_0000;
+                if p < MAGIC {
+                    small
+                } else {
+                    large
+                }
+            })
+        }
+        DepthEncoding::Unorm(bits) => {
+            const MAGIC: f64 = (1u64 << 52) as f64;
+            let max = crate::framebuffer::format::unorm_max(bits) as f32;
+            lanes(|i| (((clamped[i] * max) as f64 + MAGIC) - MAGIC) as u32)
+        }
+        DepthEncoding::Float => map_lanes(&clamped, f32::to_bits),
+    }
+}
+
 /// The stencil test, the depth test and the stencil operations on one format (see
 /// [`crate::fragment::stencil_depth_test`], whose order this is).
 fn depth_stencil<const FMT: u8>(
@@ -233,14 +307,14 @@ fn depth_stencil<const FMT: u8>(
     };
     // Stored depth and stencil as lanes.
     let (stored, mut stencil): (U32s, U32s) = match band {
-        DepthBand::Depth16(px) if FMT == D16 => (load(px, at).map(|v| v as u32), [0; LANES]),
+        DepthBand::Depth16(px) if FMT == D16 => (map_lanes(&load(px, at), |v| v as u32), [0; LANES]),
         DepthBand::Packed24(px) if FMT == PACKED24 => {
             let words = load(px, at);
-            (words.map(|w| w & 0x00ff_ffff), words.map(|w| w >> 24))
+            (map_lanes(&words, |w| w & 0x00ff_ffff), map_lanes(&words, |w| w >> 24))
         }
         DepthBand::Depth32(px, s) | DepthBand::Float32(px, s) if FMT == D32 || FMT == F32 => {
             let stencil = match (s, p.stencil.is_some()) {
-                (Some(s), true) => load(s, at).map(|v| v as u32),
+                (Some(s), true) => map_lanes(&load(s, at), |v| v as u32),
                 _ => [0; LANES],
             };
             (load(px, at), stencil)
@@ -251,14 +325,18 @@ fn depth_stencil<const FMT: u8>(
     let mut passing = live;
     if let Some(face) = &face {
         let reference = [face.reference & face.value_mask; LANES];
-        let masked = stencil.map(|v| v & face.value_mask);
-        passing = compare_lanes(face.func, &reference, &masked) & live;
+        let masked = map_lanes(&stencil, |v| v & face.value_mask);
+        passing = compare_lanes_small(face.func, &reference, &masked) & live;
         FaceKernel::apply(face.sfail, &mut stencil, face.reference, live & !passing, face.write_mask);
     }
     let mut depth_out = None;
     if let Some((func, write)) = p.depth {
-        let fragment: U32s = std::array::from_fn(|i| encoding.encode_fragment(z[i]));
-        let depth_pass = compare_lanes(func, &fragment, &stored) & passing;
+        let fragment = encode_depth(encoding, z);
+        let depth_pass = if FMT == D32 {
+            compare_lanes(func, &fragment, &stored)
+        } else {
+            compare_lanes_small(func, &fragment, &stored)
+        } & passing;
         if write && depth_pass != 0 {
             depth_out = Some(select_u32(depth_pass, &fragment, &stored));
         }
@@ -276,10 +354,10 @@ fn depth_stencil<const FMT: u8>(
     }
     let depth = depth_out.unwrap_or(stored);
     match band {
-        DepthBand::Depth16(px) => store(px, at, &depth.map(|v| v as u16), live),
+        DepthBand::Depth16(px) => store(px, at, &map_lanes(&depth, |v| v as u16), live),
         DepthBand::Packed24(px) => {
             // `stencil` holds the stored high bytes even without a stencil test.
-            let words: U32s = std::array::from_fn(|i| depth[i] | stencil[i] << 24);
+            let words: U32s = lanes(|i| depth[i] | stencil[i] << 24);
             store(px, at, &words, live);
         }
         DepthBand::Depth32(px, s) | DepthBand::Float32(px, s) => {
@@ -287,7 +365,7 @@ fn depth_stencil<const FMT: u8>(
                 store(px, at, &depth, live);
             }
             if let (Some(s), true) = (s, stencil_out) {
-                store(s, at, &stencil.map(|v| v as u8), live);
+                store(s, at, &map_lanes(&stencil, |v| v as u8), live);
             }
         }
         DepthBand::None => {}
@@ -328,7 +406,9 @@ impl TargetKernel {
     pub fn new(fragment: &FragmentState, index: usize, format: ColorFormat, mask: [bool; 4]) -> Self {
         let blend = fragment.blend.get(index).copied().flatten().filter(|_| fragment.logic_op.is_none());
         let keep8 = (0..4).filter(|&k| !mask[k]).fold(0u32, |m, k| m | 0xff << (8 * k));
-        let keep565 = (if mask[0] { 0 } else { 0xf800 }) | (if mask[1] { 0 } else { 0x07e0 }) | (if mask[2] { 0 } else { 0x001f });
+        let keep565 = (if mask[0] { 0 } else { 0xf800 })
+            | (if mask[1] { 0 } else { 0x07e0 })
+            | (if mask[2] { 0 } else { 0x001f });
         let params = TargetParams {
             mask,
             keep8,
@@ -366,31 +446,49 @@ impl TargetKernel {
     }
 }
 
+/// `float_to_unorm(x, 8)` on lanes, branch-free so that it vectorises: the clamp as two
+/// selects (NaN and −0 give 0, +∞ gives 1, as there), then the same single-precision
+/// product and round-to-nearest-even by adding 2²³.
+#[inline(always)]
+pub fn unorm8_lanes(x: &F32s) -> U16s {
+    const MAGIC: f32 = (1u32 << 23) as f32;
+    lanes(|i| {
+        let v = x[i];
+        let v = if v > 0.0 { v } else { 0.0 };
+        let v = if v < 1.0 { v } else { 1.0 };
+        ((v * 255.0 + MAGIC).to_bits() - MAGIC.to_bits()) as u16
+    })
+}
+
 /// A block's colours as unorm8 channel lanes (the span path's `float_to_unorm`).
 #[inline(always)]
 fn to_unorm8(colors: &BlockColors) -> [U16s; 4] {
     match colors {
-        BlockColors::Uniform(c) => c.map(|v| [float_to_unorm(v, 8) as u16; LANES]),
-        BlockColors::Lanes(l) => l.map(|ch| ch.map(|v| float_to_unorm(v, 8) as u16)),
+        BlockColors::Uniform(c) => {
+            let v = |k: usize| [float_to_unorm(c[k], 8) as u16; LANES];
+            [v(0), v(1), v(2), v(3)]
+        }
+        BlockColors::Lanes(l) => [unorm8_lanes(&l[0]), unorm8_lanes(&l[1]), unorm8_lanes(&l[2]), unorm8_lanes(&l[3])],
     }
 }
 
 /// Packs unorm8 channel lanes into RGBA words (byte k: channel k).
 #[inline(always)]
 fn pack8(c: &[U16s; 4]) -> U32s {
-    std::array::from_fn(|i| c[0][i] as u32 | (c[1][i] as u32) << 8 | (c[2][i] as u32) << 16 | (c[3][i] as u32) << 24)
+    lanes(|i| c[0][i] as u32 | (c[1][i] as u32) << 8 | (c[2][i] as u32) << 16 | (c[3][i] as u32) << 24)
 }
 
 /// Unpacks RGBA words into unorm8 channel lanes.
 #[inline(always)]
 fn unpack8(w: &U32s) -> [U16s; 4] {
-    std::array::from_fn(|k| w.map(|v| ((v >> (8 * k)) & 0xff) as u16))
+    let channel = |k: usize| map_lanes(w, |v| ((v >> (8 * k)) & 0xff) as u16);
+    [channel(0), channel(1), channel(2), channel(3)]
 }
 
 /// Loads a unorm8 target's block as packed words.
 #[inline(always)]
 fn load8(px: &[[u8; 4]], at: &BlockAt) -> U32s {
-    load(px, at).map(u32::from_le_bytes)
+    map_lanes(&load(px, at), u32::from_le_bytes)
 }
 
 /// Stores packed words through the channel mask into the lanes of `live`.
@@ -398,13 +496,13 @@ fn load8(px: &[[u8; 4]], at: &BlockAt) -> U32s {
 fn store8(p: &TargetParams, px: &mut [[u8; 4]], at: &BlockAt, words: &U32s, old: Option<&U32s>, live: u16) {
     let words = match (p.keep8, old) {
         (0, _) => *words,
-        (keep, Some(old)) => std::array::from_fn(|i| (old[i] & keep) | (words[i] & !keep)),
+        (keep, Some(old)) => lanes(|i| (old[i] & keep) | (words[i] & !keep)),
         (keep, None) => {
             let old = load8(px, at);
-            std::array::from_fn(|i| (old[i] & keep) | (words[i] & !keep))
+            lanes(|i| (old[i] & keep) | (words[i] & !keep))
         }
     };
-    store(px, at, &words.map(u32::to_le_bytes), live);
+    store(px, at, &map_lanes(&words, u32::to_le_bytes), live);
 }
 
 /// unorm8, no blend or logic op: convert and store.
@@ -432,7 +530,7 @@ fn unorm8_logic_op(p: &TargetParams, band: &mut ColorBand<'_>, at: &BlockAt, col
 fn logic_lanes(op: LogicOp, src: &U32s, dst: &U32s) -> U32s {
     let t = op as u32;
     let m = [0, 1, 2, 3].map(|b| 0u32.wrapping_sub((t >> b) & 1));
-    std::array::from_fn(|i| {
+    lanes(|i| {
         let (s, d) = (src[i], dst[i]);
         (s & d & m[0]) | (s & !d & m[1]) | (!s & d & m[2]) | (!s & !d & m[3])
     })
@@ -441,7 +539,7 @@ fn logic_lanes(op: LogicOp, src: &U32s, dst: &U32s) -> U32s {
 /// `a·b/255` rounded to nearest on lanes (exact for a, b ≤ 255; no u16 overflow).
 #[inline(always)]
 fn mul8(a: &U16s, b: &U16s) -> U16s {
-    std::array::from_fn(|i| {
+    lanes(|i| {
         let t = a[i] * b[i] + 128;
         (t + (t >> 8)) >> 8
     })
@@ -451,7 +549,7 @@ fn mul8(a: &U16s, b: &U16s) -> U16s {
 /// `BlendFactor::ALL`'s indices).
 #[inline(always)]
 fn factor8(f: u8, k: usize, s: &[U16s; 4], d: &[U16s; 4], c: &[u16; 4]) -> U16s {
-    let inv = |v: &U16s| v.map(|x| 255 - x);
+    let inv = |v: &U16s| map_lanes(v, |x| 255 - x);
     match f {
         0 => [0; LANES],
         1 => [255; LANES],
@@ -468,7 +566,7 @@ fn factor8(f: u8, k: usize, s: &[U16s; 4], d: &[U16s; 4], c: &[u16; 4]) -> U16s 
         12 => [c[3]; LANES],
         13 => [255 - c[3]; LANES],
         _ if k == 3 => [255; LANES],
-        _ => std::array::from_fn(|i| s[3][i].min(255 - d[3][i])),
+        _ => lanes(|i| s[3][i].min(255 - d[3][i])),
     }
 }
 
@@ -476,14 +574,14 @@ fn factor8(f: u8, k: usize, s: &[U16s; 4], d: &[U16s; 4], c: &[u16; 4]) -> U16s 
 #[inline(always)]
 fn equation8(e: u8, s: &U16s, sf: &U16s, d: &U16s, df: &U16s) -> U16s {
     match e {
-        3 => std::array::from_fn(|i| s[i].min(d[i])),
-        4 => std::array::from_fn(|i| s[i].max(d[i])),
+        3 => lanes(|i| s[i].min(d[i])),
+        4 => lanes(|i| s[i].max(d[i])),
         _ => {
             let (a, b) = (mul8(s, sf), mul8(d, df));
             match e {
-                0 => std::array::from_fn(|i| (a[i] + b[i]).min(255)),
-                1 => std::array::from_fn(|i| a[i].saturating_sub(b[i])),
-                _ => std::array::from_fn(|i| b[i].saturating_sub(a[i])),
+                0 => lanes(|i| (a[i] + b[i]).min(255)),
+                1 => lanes(|i| a[i].saturating_sub(b[i])),
+                _ => lanes(|i| b[i].saturating_sub(a[i])),
             }
         }
     }
@@ -545,11 +643,12 @@ impl BlendFns {
 
     #[inline(always)]
     fn blend(&self, s: &[U16s; 4], d: &[U16s; 4], c: &[u16; 4]) -> [U16s; 4] {
-        std::array::from_fn(|k| {
+        let channel = |k: usize| {
             let sf = (self.src[k])(k, s, d, c);
             let df = (self.dst[k])(k, s, d, c);
             (self.equation[k])(&s[k], &sf, &d[k], &df)
-        })
+        };
+        [channel(0), channel(1), channel(2), channel(3)]
     }
 }
 
@@ -574,12 +673,21 @@ fn unorm8_blend_fixed<const SRC: u8, const DST: u8>(
     let ColorBand::Unorm8(px) = band else { return };
     let dst_words = load8(px, at);
     let (s, d) = (to_unorm8(colors), unpack8(&dst_words));
-    let out: [U16s; 4] = std::array::from_fn(|k| {
-        let sf = factor8(SRC, k, &s, &d, &p.constant8);
-        let df = factor8(DST, k, &s, &d, &p.constant8);
-        equation8(0, &s[k], &sf, &d[k], &df)
-    });
+    let c = &p.constant8;
+    let out = [
+        fixed_channel::<SRC, DST>(0, &s, &d, c),
+        fixed_channel::<SRC, DST>(1, &s, &d, c),
+        fixed_channel::<SRC, DST>(2, &s, &d, c),
+        fixed_channel::<SRC, DST>(3, &s, &d, c),
+    ];
     store8(p, px, at, &pack8(&out), Some(&dst_words), live);
+}
+
+#[inline(always)]
+fn fixed_channel<const SRC: u8, const DST: u8>(k: usize, s: &[U16s; 4], d: &[U16s; 4], c: &[u16; 4]) -> U16s {
+    let sf = factor8(SRC, k, s, d, c);
+    let df = factor8(DST, k, s, d, c);
+    equation8(0, &s[k], &sf, &d[k], &df)
 }
 
 /// RGB565: blend on the destination widened to 8 bits (bit replication), dither or
@@ -590,15 +698,15 @@ fn rgb565(p: &TargetParams, band: &mut ColorBand<'_>, at: &BlockAt, colors: &Blo
     let mut color = to_unorm8(colors);
     if let (Some(fns), None) = (&p.blend_fns, p.logic_op) {
         let widened: [U16s; 4] = [
-            dst.map(|w| {
+            map_lanes(&dst, |w| {
                 let r = w >> 11;
                 (r << 3) | (r >> 2)
             }),
-            dst.map(|w| {
+            map_lanes(&dst, |w| {
                 let g = (w >> 5) & 0x3f;
                 (g << 2) | (g >> 4)
             }),
-            dst.map(|w| {
+            map_lanes(&dst, |w| {
                 let b = w & 0x1f;
                 (b << 3) | (b >> 2)
             }),
@@ -608,7 +716,7 @@ fn rgb565(p: &TargetParams, band: &mut ColorBand<'_>, at: &BlockAt, colors: &Blo
     }
     let mut words: U16s = if p.dither {
         let row_of = |i: usize| &BAYER4[((at.y as u32 + (i >> 2) as u32) & 3) as usize];
-        std::array::from_fn(|i| {
+        lanes(|i| {
             let m = row_of(i)[((at.x as u32 + (i & 3) as u32) & 3) as usize];
             let r = dither_channel(color[0][i] as u8, 5, m);
             let g = dither_channel(color[1][i] as u8, 6, m);
@@ -616,14 +724,14 @@ fn rgb565(p: &TargetParams, band: &mut ColorBand<'_>, at: &BlockAt, colors: &Blo
             (r << 11 | g << 5 | b) as u16
         })
     } else {
-        std::array::from_fn(|i| ((color[0][i] >> 3) << 11) | ((color[1][i] >> 2) << 5) | (color[2][i] >> 3))
+        lanes(|i| ((color[0][i] >> 3) << 11) | ((color[1][i] >> 2) << 5) | (color[2][i] >> 3))
     };
     if let Some(op) = p.logic_op {
-        let out = logic_lanes(op, &words.map(u32::from), &dst.map(u32::from));
-        words = out.map(|w| w as u16);
+        let out = logic_lanes(op, &map_lanes(&words, u32::from), &map_lanes(&dst, u32::from));
+        words = map_lanes(&out, |w| w as u16);
     }
     let keep = p.keep565;
-    let words: U16s = std::array::from_fn(|i| (dst[i] & keep) | (words[i] & !keep));
+    let words: U16s = lanes(|i| (dst[i] & keep) | (words[i] & !keep));
     store(px, at, &words, live);
 }
 
@@ -687,7 +795,8 @@ mod tests {
     fn lane_blending_equals_the_span_blend_for_every_factor_and_equation() {
         // Every factor pair and equation on 16 lanes of assorted values, separate RGB and
         // alpha functions: byte for byte the span path's integer blend.
-        let src: [[u8; 4]; LANES] = std::array::from_fn(|i| [(i * 17) as u8, 255 - (i * 13) as u8, (i * 7 + 3) as u8, (i * 16) as u8]);
+        let src: [[u8; 4]; LANES] =
+            std::array::from_fn(|i| [(i * 17) as u8, 255 - (i * 13) as u8, (i * 7 + 3) as u8, (i * 16) as u8]);
         let dst: [[u8; 4]; LANES] = std::array::from_fn(|i| [(i * 5) as u8, (i * 29) as u8, 200, 255 - (i * 11) as u8]);
         let constant = [51u8, 102, 153, 204];
         let lanes = |p: &[[u8; 4]; LANES]| -> [U16s; 4] { std::array::from_fn(|k| p.map(|c| c[k] as u16)) };

@@ -16,7 +16,7 @@
 //! depth, colours and varyings evaluated per lane from the same planes and the same
 //! arithmetic as the span path ([`TriangleJob::render_blocks`]). Multisampled targets
 //! and the exact mode keep the span path.
-use crate::fragment::block::{shade_block, BlockColors, BlockInputs, BlockPipeline, F32s, LANES};
+use crate::fragment::block::{lanes, shade_block, BlockColors, BlockInputs, BlockPipeline, F32s, LANES};
 use crate::fragment::pipeline::{shade_span, shade_span_samples, DrawState, Scratch, Span};
 use crate::fragment::{multisample::SampleMasks, span_mask};
 use crate::framebuffer::band::Band;
@@ -235,12 +235,12 @@ impl TriangleJob {
     /// computed as the span path computes a span's first pixel).
     #[inline(always)]
     fn lane_dx(&self, x: i32) -> F32s {
-        std::array::from_fn(|i| (x + (i & 3) as i32) as f32 + 0.5 - self.anchor[0])
+        lanes(|i| (x + (i & 3) as i32) as f32 + 0.5 - self.anchor[0])
     }
 
     #[inline(always)]
     fn lane_dy(&self, y: i32) -> F32s {
-        std::array::from_fn(|i| (y + (i >> 2) as i32) as f32 + 0.5 - self.anchor[1])
+        lanes(|i| (y + (i >> 2) as i32) as f32 + 0.5 - self.anchor[1])
     }
 
     fn shade_span(&self, state: &DrawState, band: &mut Band<'_>, y: i32, x0: i32, x1: i32, scratch: &mut Scratch) {
@@ -309,7 +309,7 @@ impl TriangleJob {
 /// A plane over a block's lanes: `a0 + dadx·dx + dady·dy` per lane, as [`Plane::at`].
 #[inline(always)]
 fn plane_lanes(p: &Plane, dx: &F32s, dy: &F32s) -> F32s {
-    std::array::from_fn(|i| p.a0 + p.dadx * dx[i] + p.dady * dy[i])
+    lanes(|i| p.a0 + p.dadx * dx[i] + p.dady * dy[i])
 }
 
 impl BlockInputs for TriangleJob {
@@ -319,18 +319,29 @@ impl BlockInputs for TriangleJob {
     }
 
     #[inline(always)]
-    fn colors(&self, x: i32, y: i32) -> BlockColors {
+    fn colors(&self, x: i32, y: i32, out: &mut BlockColors) {
+        if let Shading::Flat(c) = &self.shading {
+            *out = BlockColors::Uniform(*c);
+            return;
+        }
         let (dx, dy) = (self.lane_dx(x), self.lane_dy(y));
-        match &self.shading {
+        *out = match &self.shading {
             Shading::Flat(c) => BlockColors::Uniform(*c),
-            Shading::Affine(planes) => BlockColors::Lanes(planes.each_ref().map(|p| plane_lanes(p, &dx, &dy))),
+            Shading::Affine([r, g, b, a]) => BlockColors::Lanes([
+                plane_lanes(r, &dx, &dy),
+                plane_lanes(g, &dx, &dy),
+                plane_lanes(b, &dx, &dy),
+                plane_lanes(a, &dx, &dy),
+            ]),
             Shading::Perspective { color_over_w, inv_w } => {
                 let q = plane_lanes(inv_w, &dx, &dy);
-                let w: F32s = std::array::from_fn(|i| 1.0 / q[i]);
-                BlockColors::Lanes(color_over_w.each_ref().map(|p| {
+                let w: F32s = lanes(|i| 1.0 / q[i]);
+                let channel = |p: &Plane| {
                     let v = plane_lanes(p, &dx, &dy);
-                    std::array::from_fn(|i| v[i] * w[i])
-                }))
+                    lanes(|i| v[i] * w[i])
+                };
+                let [r, g, b, a] = color_over_w;
+                BlockColors::Lanes([channel(r), channel(g), channel(b), channel(a)])
             }
             Shading::Stepped(planes) => BlockColors::Lanes(planes.each_ref().map(|p| {
                 // The fast mode's stepping from each row's first pixel (the block's column 0).
@@ -344,7 +355,7 @@ impl BlockInputs for TriangleJob {
                 }
                 out
             })),
-        }
+        };
     }
 
     #[inline]
@@ -517,7 +528,8 @@ mod block_walk_tests {
                 2 => 2.0 * GUARD_BAND,
                 _ => 4000.0,
             };
-            let mut v = [0, 1, 2].map(|_| [unit(&mut seed) * range - range / 3.0, unit(&mut seed) * range - range / 3.0]);
+            let mut v =
+                [0, 1, 2].map(|_| [unit(&mut seed) * range - range / 3.0, unit(&mut seed) * range - range / 3.0]);
             if round % 5 == 0 {
                 v = v.map(|p| p.map(|c| (c.clamp(-GUARD_BAND, GUARD_BAND) as i32) as f32 + 0.5));
             }
@@ -526,7 +538,8 @@ mod block_walk_tests {
             // A tile-sized area somewhere in a 16384-wide framebuffer, not aligned.
             let x0 = (unit(&mut seed) * 200.0) as i32 + if round % 3 == 0 { 16000 } else { 0 };
             let y0 = (unit(&mut seed) * 200.0) as i32;
-            let area = Rect::from_xywh(x0, y0, 1 + (unit(&mut seed) * 90.0) as i32, 1 + (unit(&mut seed) * 90.0) as i32);
+            let area =
+                Rect::from_xywh(x0, y0, 1 + (unit(&mut seed) * 90.0) as i32, 1 + (unit(&mut seed) * 90.0) as i32);
             assert_blocks_match(&t, area);
         }
     }
