@@ -274,23 +274,22 @@ pub fn shade_block(
         shade_colors(fragment, scratch, &at, live, inputs, &mut colors);
     }
     if fragment.needs_varyings() {
-        let mut lanes = colors.lanes();
+        // The colour sum and fog of the span path, once over the block's 16 fragments
+        // (fragment i is lane i; its varyings are those of its row's span).
+        let mut pixels = [[0f32; 4]; LANES];
+        let l = colors.lanes();
+        for (i, p) in pixels.iter_mut().enumerate() {
+            *p = [l[0][i], l[1][i], l[2][i], l[3][i]];
+        }
         let fog_slot = usize::from(fragment.color_sum) * 3;
         scratch.varyings.resize(fog_slot + 1, 0.0);
-        for r in 0..4 {
-            let row_live = (live >> (4 * r)) as u64 & 0xf;
-            if row_live == 0 {
-                continue;
-            }
-            let mut row = colors.row(r);
-            let y = at.y + r as i32;
-            fragment.sum_and_fog(&mut row, row_live, &mut scratch.varyings, |i, out| {
-                inputs.varyings(x, y, i as i32, 0, out)
-            });
-            for (c, pixel) in row.iter().enumerate() {
-                for k in 0..4 {
-                    lanes[k][4 * r + c] = pixel[k];
-                }
+        fragment.sum_and_fog(&mut pixels, live as u64, &mut scratch.varyings, |i, out| {
+            inputs.varyings(x, y + (i >> 2) as i32, (i & 3) as i32, 0, out)
+        });
+        let mut lanes = [[0f32; LANES]; 4];
+        for (i, p) in pixels.iter().enumerate() {
+            for k in 0..4 {
+                lanes[k][i] = p[k];
             }
         }
         colors = BlockColors::Lanes(lanes);
