@@ -9,12 +9,16 @@
 //! then per color target blending ([`blend`]) or the logic op ([`logic_op`]), dither
 //! ([`dither`]) and the masked write ([`output`]).
 //!
+//! Filled triangles on single-sampled targets run the same stages on 4×4 blocks of
+//! 16 lanes instead ([`block`]), with kernels compiled once per draw state.
+//!
 //! This room imports no room above it: jobs (`setup`) and tile workers (`raster`) hand it
 //! spans with closures for their depth, colors and varyings.
 #![deny(unsafe_code)]
 
 pub mod alpha;
 pub mod blend;
+pub mod block;
 pub mod describe;
 pub mod dither;
 pub mod fog;

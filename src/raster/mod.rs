@@ -9,9 +9,11 @@
 //! the bytes are identical for any number of threads. Each band's work is compiled once per
 //! SIMD level and runs the CPU's copy (`crate::simd`), with identical bytes at every level. What a bin holds and how each
 //! primitive is rendered is `setup`'s (the room above); this room only knows tiles, bands,
-//! threads and coverage ([`walk`]).
+//! threads and coverage: 4×4 blocks of filled triangles walked hierarchically
+//! ([`blocks`]), spans for everything else ([`walk`]).
 #![deny(unsafe_code)]
 
+pub mod blocks;
 pub mod walk;
 
 use crate::fragment::pipeline::Scratch;

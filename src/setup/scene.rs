@@ -6,14 +6,21 @@
 //! bounding box (or, for lines, its rows' columns) touches, clipped to the draw's scissor
 //! box. [`Scene::execute`] hands the bins to the tile workers (`raster`), which call back
 //! here to render each bin entry.
+//!
+//! Only the scene's work is done: a filled triangle that covers a whole tile and writes
+//! every pixel of it unconditionally (see [`Scene::overwrites`]) drops that tile's earlier
+//! entries, as llvmpipe does. At execution each draw state is compiled once into the lane
+//! kernels of `fragment::block` for the framebuffer's formats, and single-sampled filled
+//! triangles render through them in 4×4 blocks.
 
 use super::jobs::line::LineJob;
 use super::jobs::pixels::PixelRectJob;
 use super::jobs::point::PointJob;
 use super::jobs::smooth::SmoothJob;
 use super::jobs::triangle::TriangleJob;
+use crate::fragment::block::BlockPipeline;
 use crate::fragment::pipeline::DrawState;
-use crate::framebuffer::{ColorSlot, Framebuffer, Rect};
+use crate::framebuffer::{ColorFormat, ColorSlot, Framebuffer, Rect};
 use crate::raster::{render_tiles, thread_count, TILE_SIZE};
 use std::sync::Arc;
 
@@ -138,16 +145,69 @@ impl Scene {
             return;
         }
         let index = self.primitives.len() as u32;
-        self.primitives.push(primitive);
-        self.primitive_states.push(state);
         let t = TILE_SIZE as i32;
         let (rows, columns) = ((r.y0 / t)..=((r.y1 - 1) / t), (r.x0 / t)..=((r.x1 - 1) / t));
+        let opaque = match &primitive {
+            Primitive::Triangle(job) if self.overwrites(drawn) => Some(job.setup.clone()),
+            _ => None,
+        };
+        self.primitives.push(primitive);
+        self.primitive_states.push(state);
         self.binned += rows.clone().count() * columns.clone().count();
+        let bounds = Rect::from_xywh(0, 0, self.width as i32, self.height as i32);
         for ty in rows {
             for tx in columns.clone() {
-                self.bins[ty as usize * self.tiles_x + tx as usize].push(index);
+                let bin = ty as usize * self.tiles_x + tx as usize;
+                if let Some(setup) = &opaque {
+                    let tile = Rect::from_xywh(tx * t, ty * t, t, t).intersect(bounds);
+                    let inside = tile.intersect(r) == tile;
+                    let corners = [
+                        (tile.x0, tile.y0),
+                        (tile.x1 - 1, tile.y0),
+                        (tile.x0, tile.y1 - 1),
+                        (tile.x1 - 1, tile.y1 - 1),
+                    ];
+                    if inside && corners.iter().all(|&(x, y)| setup.covers(x, y)) && self.droppable(bin, drawn) {
+                        self.binned -= self.bins[bin].len();
+                        self.bins[bin].clear();
+                    }
+                }
+                self.bins[bin].push(index);
             }
         }
+    }
+
+    /// Whether a filled triangle drawn with `state` writes every pixel it covers
+    /// unconditionally, replacing whatever the scene drew there before: single-sampled, no
+    /// alpha or stencil test, no depth test or one that always passes, no blending, logic
+    /// op or stipple, every colour channel of every target of the scene written.
+    fn overwrites(&self, state: &DrawState) -> bool {
+        let f = &state.fragment;
+        state.multisample.is_none()
+            && state.polygon_stipple.is_none()
+            && f.alpha.is_none()
+            && f.stencil.is_none()
+            && f.logic_op.is_none()
+            && f.depth.is_none_or(|d| d.func == crate::gl::CompareFunc::Always)
+            && f.blend.iter().all(|b| b.is_none())
+            && f.color_masks.len() == self.targets.len()
+            && f.color_masks.iter().all(|m| *m == Some([true; 4]))
+    }
+
+    /// Whether the entries of tile `bin` leave nothing that a triangle overwriting the
+    /// whole tile with `state` would not replace: no stencil changes, no occlusion query
+    /// counting them, no pixel rectangle (which may write depth or stencil directly), and
+    /// depth written only if `state` writes depth too.
+    fn droppable(&self, bin: usize, state: &DrawState) -> bool {
+        let writes_depth = state.fragment.depth.is_some_and(|d| d.write);
+        self.bins[bin].iter().all(|&i| {
+            let primitive = &self.primitives[i as usize];
+            let s = &self.states[self.primitive_states[i as usize] as usize];
+            !matches!(primitive, Primitive::Pixels(_))
+                && s.samples_passed.is_none()
+                && s.fragment.stencil.is_none()
+                && (writes_depth || s.fragment.depth.is_none_or(|d| !d.write))
+        })
     }
 
     /// Bins a primitive covering at most `bounds`, but only into the tiles of each tile row
@@ -200,11 +260,30 @@ impl Scene {
         if self.primitives.is_empty() {
             return;
         }
+        // Each draw state compiled once into lane kernels for this framebuffer's formats (the
+        // band's colour targets are the scene's targets the framebuffer has, in order).
+        let single_sampled = framebuffer.samples() == 1;
+        let formats: Vec<ColorFormat> =
+            self.targets.iter().filter_map(|&slot| framebuffer.color(slot).map(|b| b.format())).collect();
+        let depth_format = framebuffer.depth_stencil().format();
+        let pipelines: Vec<Option<BlockPipeline>> = self
+            .states
+            .iter()
+            .map(|s| {
+                (single_sampled && s.multisample.is_none())
+                    .then(|| BlockPipeline::compile(&s.fragment, &formats, depth_format))
+            })
+            .collect();
         render_tiles(framebuffer, &self.targets, self.tiles_x, &self.bins, threads, |index, tile, band, scratch| {
             let primitive = &self.primitives[index as usize];
-            let state = &self.states[self.primitive_states[index as usize] as usize];
+            let state_index = self.primitive_states[index as usize] as usize;
+            let state = &self.states[state_index];
             let area = tile.intersect(state.clip);
             match primitive {
+                Primitive::Triangle(job) if band.samples == 1 && pipelines[state_index].is_some() => {
+                    let pipeline = pipelines[state_index].as_ref().expect("compiled above");
+                    job.render_blocks(state, pipeline, tile.intersect(state.fill_clip), band, scratch)
+                }
                 Primitive::Triangle(job) if state.multisample.is_some_and(|m| m.per_sample()) => {
                     job.render_samples(state, tile.intersect(state.fill_clip), band, scratch)
                 }

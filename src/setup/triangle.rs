@@ -145,6 +145,15 @@ impl TriangleSetup {
         Some((lo as i32, hi as i32))
     }
 
+    /// The three edge functions over pixel centres, for the hierarchical block walker
+    /// (`raster::blocks`): pixel (x, y) is covered exactly when every
+    /// `c + a·x + b·y ≥ 0`, the same test as [`TriangleSetup::covers`] with the centre's
+    /// half pixel and the fill rule's bias folded into `c`. Within the guard band every value
+    /// at a pixel of a framebuffer (x, y < 2¹⁵) stays below 2⁶³ (see [`GUARD_BAND`]).
+    pub fn pixel_edges(&self) -> [[i64; 3]; 3] {
+        self.edges.map(|e| [e.a * HALF + e.b * HALF + e.c - e.bias, e.a * ONE, e.b * ONE])
+    }
+
     /// The pixel box that may hold covered samples anywhere in a pixel (inclusive min,
     /// exclusive max): `(x0, y0, x1, y1)`.
     pub fn pixel_box(&self) -> (i32, i32, i32, i32) {

@@ -9,11 +9,20 @@
 //! equal the divide is skipped, which changes nothing but time. The accuracy mode
 //! ([`Accuracy`]) may instead interpolate affinely (fast) or compute every attribute from
 //! f64 barycentric coordinates at each pixel (exact).
+//!
+//! On a single-sampled target (outside the exact mode) a triangle renders in 4×4 blocks:
+//! the tile is walked hierarchically on its integer edge functions
+//! (`raster::blocks`) and each block runs the lane pipeline (`fragment::block`), with
+//! depth, colours and varyings evaluated per lane from the same planes and the same
+//! arithmetic as the span path ([`TriangleJob::render_blocks`]). Multisampled targets
+//! and the exact mode keep the span path.
+use crate::fragment::block::{lanes, shade_block, BlockColors, BlockInputs, BlockPipeline, F32s, LANES};
 use crate::fragment::pipeline::{shade_span, shade_span_samples, DrawState, Scratch, Span};
 use crate::fragment::{multisample::SampleMasks, span_mask};
 use crate::framebuffer::band::Band;
 use crate::framebuffer::Rect;
 use crate::gl::limits::MAX_TEXTURE_UNITS;
+use crate::raster::blocks::{walk_blocks, PixelEdge};
 use crate::raster::walk::{stipple_mask, walk_sample_spans, walk_spans};
 use crate::setup::accuracy::Accuracy;
 use crate::setup::multisample::{sample_offsets, sample_shifts, SampleOffset};
@@ -195,6 +204,42 @@ impl TriangleJob {
         );
     }
 
+    /// Renders the part of the triangle inside `area` (within the band) into a
+    /// single-sampled `band` in 4×4 blocks through the compiled lane `pipeline`; the exact
+    /// accuracy mode renders spans instead ([`TriangleJob::render`]).
+    pub fn render_blocks(
+        &self,
+        state: &DrawState,
+        pipeline: &BlockPipeline,
+        area: Rect,
+        band: &mut Band<'_>,
+        scratch: &mut Scratch,
+    ) {
+        if self.exact.is_some() {
+            return self.render(state, area, band, scratch);
+        }
+        let area = area.intersect(self.bounds());
+        if area.is_empty() {
+            return;
+        }
+        let edges = self.setup.pixel_edges().map(PixelEdge::from_array);
+        walk_blocks(area, &edges, state.polygon_stipple.as_ref(), |x, y, mask| {
+            shade_block(pipeline, state, band, scratch, x, y, mask, self.front_facing, self)
+        });
+    }
+
+    /// The planes' x offsets of the block's lanes (pixel centres relative to the anchor,
+    /// computed as the span path computes a span's first pixel).
+    #[inline(always)]
+    fn lane_dx(&self, x: i32) -> F32s {
+        lanes(|i| (x + (i & 3) as i32) as f32 + 0.5 - self.anchor[0])
+    }
+
+    #[inline(always)]
+    fn lane_dy(&self, y: i32) -> F32s {
+        lanes(|i| (y + (i >> 2) as i32) as f32 + 0.5 - self.anchor[1])
+    }
+
     fn shade_span(&self, state: &DrawState, band: &mut Band<'_>, y: i32, x0: i32, x1: i32, scratch: &mut Scratch) {
         let n = (x1 - x0) as usize;
         let dy = y as f32 + 0.5 - self.anchor[1];
@@ -255,6 +300,66 @@ impl TriangleJob {
             |colors| self.shading.span_colors(dx0, dy, n, colors),
             |i, j, out| self.varyings.at(dx0 + i as f32, dy + j as f32, out),
         );
+    }
+}
+
+/// A plane over a block's lanes: `a0 + dadx·dx + dady·dy` per lane, as [`Plane::at`].
+#[inline(always)]
+fn plane_lanes(p: &Plane, dx: &F32s, dy: &F32s) -> F32s {
+    lanes(|i| p.a0 + p.dadx * dx[i] + p.dady * dy[i])
+}
+
+impl BlockInputs for TriangleJob {
+    #[inline(always)]
+    fn z(&self, x: i32, y: i32) -> F32s {
+        plane_lanes(&self.z, &self.lane_dx(x), &self.lane_dy(y))
+    }
+
+    #[inline(always)]
+    fn colors(&self, x: i32, y: i32, out: &mut BlockColors) {
+        if let Shading::Flat(c) = &self.shading {
+            *out = BlockColors::Uniform(*c);
+            return;
+        }
+        let (dx, dy) = (self.lane_dx(x), self.lane_dy(y));
+        *out = match &self.shading {
+            Shading::Flat(c) => BlockColors::Uniform(*c),
+            Shading::Affine([r, g, b, a]) => BlockColors::Lanes([
+                plane_lanes(r, &dx, &dy),
+                plane_lanes(g, &dx, &dy),
+                plane_lanes(b, &dx, &dy),
+                plane_lanes(a, &dx, &dy),
+            ]),
+            Shading::Perspective { color_over_w, inv_w } => {
+                let q = plane_lanes(inv_w, &dx, &dy);
+                let w: F32s = lanes(|i| 1.0 / q[i]);
+                let channel = |p: &Plane| {
+                    let v = plane_lanes(p, &dx, &dy);
+                    lanes(|i| v[i] * w[i])
+                };
+                let [r, g, b, a] = color_over_w;
+                BlockColors::Lanes([channel(r), channel(g), channel(b), channel(a)])
+            }
+            Shading::Stepped(planes) => BlockColors::Lanes(planes.each_ref().map(|p| {
+                // The fast mode's stepping from each row's first pixel (the block's column 0).
+                let step = p.dadx;
+                let mut out = [0f32; LANES];
+                for r in 0..4 {
+                    let start = p.at(dx[0], dy[4 * r]);
+                    for c in 0..4 {
+                        out[4 * r + c] = start + step * c as f32;
+                    }
+                }
+                out
+            })),
+        };
+    }
+
+    #[inline]
+    fn varyings(&self, x: i32, y: i32, dx: i32, dy: i32, out: &mut [f32]) {
+        let dx0 = x as f32 + 0.5 - self.anchor[0];
+        let dy0 = y as f32 + 0.5 - self.anchor[1];
+        self.varyings.at(dx0 + dx as f32, dy0 + dy as f32, out);
     }
 }
 
@@ -363,5 +468,99 @@ mod varying_tests {
     fn draws_without_varyings_carry_none() {
         let v = [vertex(1.0, 1.0, 1.0), vertex(60.0, 4.0, 8.0), vertex(10.0, 50.0, 2.5)];
         assert!(TriangleJob::new(v, None, 0.0, &[]).unwrap().varyings.is_empty());
+    }
+}
+
+#[cfg(test)]
+mod block_walk_tests {
+    use super::*;
+    use crate::raster::blocks::{walk_blocks, PixelEdge};
+    use crate::setup::triangle::GUARD_BAND;
+
+    /// A tiny deterministic generator (xorshift) in [0, 1).
+    fn unit(seed: &mut u64) -> f32 {
+        *seed ^= *seed << 13;
+        *seed ^= *seed >> 7;
+        *seed ^= *seed << 17;
+        ((*seed >> 11) as f64 / (1u64 << 53) as f64) as f32
+    }
+
+    /// Walks `area` in blocks and compares every pixel of it (and of the blocks around it)
+    /// with the per-pixel reference test.
+    fn assert_blocks_match(t: &TriangleSetup, area: Rect) {
+        let edges = t.pixel_edges().map(PixelEdge::from_array);
+        let (w, h) = (area.width(), area.height());
+        let mut seen = vec![false; w * h];
+        walk_blocks(area, &edges, None, |x, y, mask| {
+            assert!(x % 4 == 0 && y % 4 == 0, "block origin ({x},{y})");
+            for i in 0..16 {
+                if mask & (1 << i) != 0 {
+                    let (px, py) = (x + (i & 3), y + (i >> 2));
+                    assert!(px >= area.x0 && px < area.x1 && py >= area.y0 && py < area.y1, "({px},{py}) outside");
+                    let cell = &mut seen[(py - area.y0) as usize * w + (px - area.x0) as usize];
+                    assert!(!*cell, "({px},{py}) twice");
+                    *cell = true;
+                }
+            }
+        });
+        for y in 0..h {
+            for x in 0..w {
+                let (px, py) = (area.x0 + x as i32, area.y0 + y as i32);
+                let span = t.row_span(py, area.x0, area.x1).is_some_and(|(a, b)| a <= px && px < b);
+                assert_eq!(seen[y * w + x], t.covers(px, py), "pixel ({px},{py}) of {:?}", t.vertices);
+                assert_eq!(span, t.covers(px, py));
+            }
+        }
+    }
+
+    #[test]
+    fn blocks_cover_exactly_the_pixels_of_the_edge_test() {
+        let mut seed = 0x2545_f491_4f6c_dd1d;
+        for round in 0..3000 {
+            // Small, tile-sized and huge triangles (vertices near the guard band), some
+            // with vertices on pixel centres and edges through them (the fill rule).
+            let range = match round % 4 {
+                0 => 20.0,
+                1 => 150.0,
+                2 => 2.0 * GUARD_BAND,
+                _ => 4000.0,
+            };
+            let mut v =
+                [0, 1, 2].map(|_| [unit(&mut seed) * range - range / 3.0, unit(&mut seed) * range - range / 3.0]);
+            if round % 5 == 0 {
+                v = v.map(|p| p.map(|c| (c.clamp(-GUARD_BAND, GUARD_BAND) as i32) as f32 + 0.5));
+            }
+            let v = v.map(|p| p.map(|c| c.clamp(-GUARD_BAND, GUARD_BAND)));
+            let Some(t) = TriangleSetup::new(v) else { continue };
+            // A tile-sized area somewhere in a 16384-wide framebuffer, not aligned.
+            let x0 = (unit(&mut seed) * 200.0) as i32 + if round % 3 == 0 { 16000 } else { 0 };
+            let y0 = (unit(&mut seed) * 200.0) as i32;
+            let area =
+                Rect::from_xywh(x0, y0, 1 + (unit(&mut seed) * 90.0) as i32, 1 + (unit(&mut seed) * 90.0) as i32);
+            assert_blocks_match(&t, area);
+        }
+    }
+
+    #[test]
+    fn shared_edges_through_centres_are_walked_once() {
+        let quad = [[0.5, 0.5], [40.5, 0.5], [40.5, 33.5], [0.5, 33.5]];
+        let a = TriangleSetup::new([quad[0], quad[1], quad[2]]).unwrap();
+        let b = TriangleSetup::new([quad[0], quad[2], quad[3]]).unwrap();
+        let mut hits = vec![0u8; 64 * 64];
+        for t in [&a, &b] {
+            walk_blocks(Rect::from_xywh(0, 0, 64, 64), &t.pixel_edges().map(PixelEdge::from_array), None, |x, y, m| {
+                for i in 0..16 {
+                    if m & (1 << i) != 0 {
+                        hits[((y + (i >> 2)) * 64 + x + (i & 3)) as usize] += 1;
+                    }
+                }
+            });
+        }
+        for y in 0..64 {
+            for x in 0..64 {
+                let inside = x < 40 && y < 33;
+                assert_eq!(hits[y * 64 + x], inside as u8, "({x},{y})");
+            }
+        }
     }
 }
