@@ -299,78 +299,80 @@ fn depth_stencil<const FMT: u8>(
     live: u16,
     front_facing: bool,
 ) -> u16 {
-    let encoding = match FMT {
-        D16 => DepthEncoding::Unorm(16),
-        PACKED24 => DepthEncoding::Unorm(24),
-        D32 => DepthEncoding::Unorm(32),
-        _ => DepthEncoding::Float,
-    };
-    // Stored depth and stencil as lanes.
-    let (stored, mut stencil): (U32s, U32s) = match band {
-        DepthBand::Depth16(px) if FMT == D16 => (map_lanes(&load(px, at), |v| v as u32), [0; LANES]),
-        DepthBand::Packed24(px) if FMT == PACKED24 => {
-            let words = load(px, at);
-            (map_lanes(&words, |w| w & 0x00ff_ffff), map_lanes(&words, |w| w >> 24))
+    crate::simd::per_level!({
+        let encoding = match FMT {
+            D16 => DepthEncoding::Unorm(16),
+            PACKED24 => DepthEncoding::Unorm(24),
+            D32 => DepthEncoding::Unorm(32),
+            _ => DepthEncoding::Float,
+        };
+        // Stored depth and stencil as lanes.
+        let (stored, mut stencil): (U32s, U32s) = match band {
+            DepthBand::Depth16(px) if FMT == D16 => (map_lanes(&load(px, at), |v| v as u32), [0; LANES]),
+            DepthBand::Packed24(px) if FMT == PACKED24 => {
+                let words = load(px, at);
+                (map_lanes(&words, |w| w & 0x00ff_ffff), map_lanes(&words, |w| w >> 24))
+            }
+            DepthBand::Depth32(px, s) | DepthBand::Float32(px, s) if FMT == D32 || FMT == F32 => {
+                let stencil = match (s, p.stencil.is_some()) {
+                    (Some(s), true) => map_lanes(&load(s, at), |v| v as u32),
+                    _ => [0; LANES],
+                };
+                (load(px, at), stencil)
+            }
+            _ => return live,
+        };
+        let face = p.stencil.map(|f| f[usize::from(!front_facing)]);
+        let mut passing = live;
+        if let Some(face) = &face {
+            let reference = [face.reference & face.value_mask; LANES];
+            let masked = map_lanes(&stencil, |v| v & face.value_mask);
+            passing = compare_lanes_small(face.func, &reference, &masked) & live;
+            FaceKernel::apply(face.sfail, &mut stencil, face.reference, live & !passing, face.write_mask);
         }
-        DepthBand::Depth32(px, s) | DepthBand::Float32(px, s) if FMT == D32 || FMT == F32 => {
-            let stencil = match (s, p.stencil.is_some()) {
-                (Some(s), true) => map_lanes(&load(s, at), |v| v as u32),
-                _ => [0; LANES],
-            };
-            (load(px, at), stencil)
-        }
-        _ => return live,
-    };
-    let face = p.stencil.map(|f| f[usize::from(!front_facing)]);
-    let mut passing = live;
-    if let Some(face) = &face {
-        let reference = [face.reference & face.value_mask; LANES];
-        let masked = map_lanes(&stencil, |v| v & face.value_mask);
-        passing = compare_lanes_small(face.func, &reference, &masked) & live;
-        FaceKernel::apply(face.sfail, &mut stencil, face.reference, live & !passing, face.write_mask);
-    }
-    let mut depth_out = None;
-    if let Some((func, write)) = p.depth {
-        let fragment = encode_depth(encoding, z);
-        let depth_pass = if FMT == D32 {
-            compare_lanes(func, &fragment, &stored)
-        } else {
-            compare_lanes_small(func, &fragment, &stored)
-        } & passing;
-        if write && depth_pass != 0 {
-            depth_out = Some(select_u32(depth_pass, &fragment, &stored));
+        let mut depth_out = None;
+        if let Some((func, write)) = p.depth {
+            let fragment = encode_depth(encoding, z);
+            let depth_pass = if FMT == D32 {
+                compare_lanes(func, &fragment, &stored)
+            } else {
+                compare_lanes_small(func, &fragment, &stored)
+            } & passing;
+            if write && depth_pass != 0 {
+                depth_out = Some(select_u32(depth_pass, &fragment, &stored));
+            }
+            if let Some(face) = &face {
+                FaceKernel::apply(face.zfail, &mut stencil, face.reference, passing & !depth_pass, face.write_mask);
+            }
+            passing = depth_pass;
         }
         if let Some(face) = &face {
-            FaceKernel::apply(face.zfail, &mut stencil, face.reference, passing & !depth_pass, face.write_mask);
+            FaceKernel::apply(face.zpass, &mut stencil, face.reference, passing, face.write_mask);
         }
-        passing = depth_pass;
-    }
-    if let Some(face) = &face {
-        FaceKernel::apply(face.zpass, &mut stencil, face.reference, passing, face.write_mask);
-    }
-    let stencil_out = p.stencil_writes;
-    if depth_out.is_none() && !stencil_out {
-        return passing;
-    }
-    let depth = depth_out.unwrap_or(stored);
-    match band {
-        DepthBand::Depth16(px) => store(px, at, &map_lanes(&depth, |v| v as u16), live),
-        DepthBand::Packed24(px) => {
-            // `stencil` holds the stored high bytes even without a stencil test.
-            let words: U32s = lanes(|i| depth[i] | stencil[i] << 24);
-            store(px, at, &words, live);
+        let stencil_out = p.stencil_writes;
+        if depth_out.is_none() && !stencil_out {
+            return passing;
         }
-        DepthBand::Depth32(px, s) | DepthBand::Float32(px, s) => {
-            if depth_out.is_some() {
-                store(px, at, &depth, live);
+        let depth = depth_out.unwrap_or(stored);
+        match band {
+            DepthBand::Depth16(px) => store(px, at, &map_lanes(&depth, |v| v as u16), live),
+            DepthBand::Packed24(px) => {
+                // `stencil` holds the stored high bytes even without a stencil test.
+                let words: U32s = lanes(|i| depth[i] | stencil[i] << 24);
+                store(px, at, &words, live);
             }
-            if let (Some(s), true) = (s, stencil_out) {
-                store(s, at, &map_lanes(&stencil, |v| v as u8), live);
+            DepthBand::Depth32(px, s) | DepthBand::Float32(px, s) => {
+                if depth_out.is_some() {
+                    store(px, at, &depth, live);
+                }
+                if let (Some(s), true) = (s, stencil_out) {
+                    store(s, at, &map_lanes(&stencil, |v| v as u8), live);
+                }
             }
+            DepthBand::None => {}
         }
-        DepthBand::None => {}
-    }
-    passing
+        passing
+    })
 }
 
 // ---------------------------------------------------------------------------------------
@@ -507,22 +509,26 @@ fn store8(p: &TargetParams, px: &mut [[u8; 4]], at: &BlockAt, words: &U32s, old:
 
 /// unorm8, no blend or logic op: convert and store.
 fn unorm8_store(p: &TargetParams, band: &mut ColorBand<'_>, at: &BlockAt, colors: &BlockColors, live: u16) {
-    let ColorBand::Unorm8(px) = band else { return };
-    let words = match colors {
-        BlockColors::Uniform(c) => [u32::from_le_bytes(c.map(|v| float_to_unorm(v, 8) as u8)); LANES],
-        _ => pack8(&to_unorm8(colors)),
-    };
-    store8(p, px, at, &words, None, live);
+    crate::simd::per_level!({
+        let ColorBand::Unorm8(px) = band else { return };
+        let words = match colors {
+            BlockColors::Uniform(c) => [u32::from_le_bytes(c.map(|v| float_to_unorm(v, 8) as u8)); LANES],
+            _ => pack8(&to_unorm8(colors)),
+        };
+        store8(p, px, at, &words, None, live);
+    })
 }
 
 /// unorm8 with the logic op on the packed words.
 fn unorm8_logic_op(p: &TargetParams, band: &mut ColorBand<'_>, at: &BlockAt, colors: &BlockColors, live: u16) {
-    let ColorBand::Unorm8(px) = band else { return };
-    let Some(op) = p.logic_op else { return };
-    let src = pack8(&to_unorm8(colors));
-    let dst = load8(px, at);
-    let words = logic_lanes(op, &src, &dst);
-    store8(p, px, at, &words, Some(&dst), live);
+    crate::simd::per_level!({
+        let ColorBand::Unorm8(px) = band else { return };
+        let Some(op) = p.logic_op else { return };
+        let src = pack8(&to_unorm8(colors));
+        let dst = load8(px, at);
+        let words = logic_lanes(op, &src, &dst);
+        store8(p, px, at, &words, Some(&dst), live);
+    })
 }
 
 /// `op(s, d)` on every lane, from the truth table (see `logic_op`).
@@ -654,11 +660,13 @@ impl BlendFns {
 
 /// unorm8 blending with any factors and equations.
 fn unorm8_blend(p: &TargetParams, band: &mut ColorBand<'_>, at: &BlockAt, colors: &BlockColors, live: u16) {
-    let ColorBand::Unorm8(px) = band else { return };
-    let Some(fns) = &p.blend_fns else { return };
-    let dst_words = load8(px, at);
-    let out = fns.blend(&to_unorm8(colors), &unpack8(&dst_words), &p.constant8);
-    store8(p, px, at, &pack8(&out), Some(&dst_words), live);
+    crate::simd::per_level!({
+        let ColorBand::Unorm8(px) = band else { return };
+        let Some(fns) = &p.blend_fns else { return };
+        let dst_words = load8(px, at);
+        let out = fns.blend(&to_unorm8(colors), &unpack8(&dst_words), &p.constant8);
+        store8(p, px, at, &pack8(&out), Some(&dst_words), live);
+    })
 }
 
 /// unorm8 blending with one factor pair (codes as [`factor8`]) and GL_FUNC_ADD on RGB and
@@ -671,16 +679,19 @@ fn unorm8_blend_fixed<const SRC: u8, const DST: u8>(
     live: u16,
 ) {
     let ColorBand::Unorm8(px) = band else { return };
-    let dst_words = load8(px, at);
-    let (s, d) = (to_unorm8(colors), unpack8(&dst_words));
-    let c = &p.constant8;
-    let out = [
-        fixed_channel::<SRC, DST>(0, &s, &d, c),
-        fixed_channel::<SRC, DST>(1, &s, &d, c),
-        fixed_channel::<SRC, DST>(2, &s, &d, c),
-        fixed_channel::<SRC, DST>(3, &s, &d, c),
-    ];
-    store8(p, px, at, &pack8(&out), Some(&dst_words), live);
+    // The whole block's arithmetic is compiled once per SIMD level: one dispatch per block.
+    crate::simd::per_level!({
+        let dst_words = load8(px, at);
+        let (s, d) = (to_unorm8(colors), unpack8(&dst_words));
+        let c = &p.constant8;
+        let out = [
+            fixed_channel::<SRC, DST>(0, &s, &d, c),
+            fixed_channel::<SRC, DST>(1, &s, &d, c),
+            fixed_channel::<SRC, DST>(2, &s, &d, c),
+            fixed_channel::<SRC, DST>(3, &s, &d, c),
+        ];
+        store8(p, px, at, &pack8(&out), Some(&dst_words), live);
+    })
 }
 
 #[inline(always)]
