@@ -337,67 +337,56 @@ pub fn write_colors(
 ) {
     // One copy per SIMD level (`crate::simd`): the body's conversion loops run with the CPU's
     // instructions.
-    crate::simd::per_level!(write_colors_body(target, row_start, colors, live, mask, clamp_float))
-}
-
-/// The body of the function above, inlined into each level's copy.
-#[inline(always)]
-fn write_colors_body(
-    target: &mut ColorBand<'_>,
-    row_start: usize,
-    colors: &[[f32; 4]],
-    live: u64,
-    mask: [bool; 4],
-    clamp_float: bool,
-) {
-    let all = mask.iter().all(|&m| m);
-    let lanes = colors.iter().enumerate().filter(|(i, _)| live & (1 << i) != 0);
-    match target {
-        ColorBand::Unorm8(px) if all && live == span_mask(colors.len()) => {
-            // Every fragment written, every channel: a plain loop the compiler can unroll.
-            let cells = &mut px[row_start..row_start + colors.len()];
-            for (cell, c) in cells.iter_mut().zip(colors) {
-                *cell = c.map(|x| float_to_unorm(x, 8) as u8);
+    crate::simd::per_level!({
+        let all = mask.iter().all(|&m| m);
+        let lanes = colors.iter().enumerate().filter(|(i, _)| live & (1 << i) != 0);
+        match target {
+            ColorBand::Unorm8(px) if all && live == span_mask(colors.len()) => {
+                // Every fragment written, every channel: a plain loop the compiler can unroll.
+                let cells = &mut px[row_start..row_start + colors.len()];
+                for (cell, c) in cells.iter_mut().zip(colors) {
+                    *cell = c.map(|x| float_to_unorm(x, 8) as u8);
+                }
             }
-        }
-        ColorBand::Unorm8(px) => {
-            for (i, c) in lanes {
-                let v = c.map(|x| float_to_unorm(x, 8) as u8);
-                let cell = &mut px[row_start + i];
-                if all {
-                    *cell = v;
-                } else {
+            ColorBand::Unorm8(px) => {
+                for (i, c) in lanes {
+                    let v = c.map(|x| float_to_unorm(x, 8) as u8);
+                    let cell = &mut px[row_start + i];
+                    if all {
+                        *cell = v;
+                    } else {
+                        (0..4).filter(|&k| mask[k]).for_each(|k| cell[k] = v[k]);
+                    }
+                }
+            }
+            ColorBand::Unorm16(px) => {
+                for (i, c) in lanes {
+                    let v = c.map(|x| float_to_unorm(x, 16) as u16);
+                    let cell = &mut px[row_start + i];
                     (0..4).filter(|&k| mask[k]).for_each(|k| cell[k] = v[k]);
                 }
             }
-        }
-        ColorBand::Unorm16(px) => {
-            for (i, c) in lanes {
-                let v = c.map(|x| float_to_unorm(x, 16) as u16);
-                let cell = &mut px[row_start + i];
-                (0..4).filter(|&k| mask[k]).for_each(|k| cell[k] = v[k]);
+            ColorBand::Float32(px) => {
+                for (i, c) in lanes {
+                    let v = if clamp_float { c.map(|x| if x > 0.0 { x.min(1.0) } else { 0.0 }) } else { *c };
+                    let cell = &mut px[row_start + i];
+                    (0..4).filter(|&k| mask[k]).for_each(|k| cell[k] = v[k]);
+                }
+            }
+            ColorBand::Rgb565(px) => {
+                // 5/6-bit stores take the top bits of the 8-bit conversion, as llvmpipe's do.
+                let keep: u16 = (if mask[0] { 0 } else { 0xf800 })
+                    | (if mask[1] { 0 } else { 0x07e0 })
+                    | (if mask[2] { 0 } else { 0x001f });
+                for (i, c) in lanes {
+                    let [r, g, b, _] = c.map(|x| float_to_unorm(x, 8));
+                    let v = ((r >> 3) << 11 | (g >> 2) << 5 | (b >> 3)) as u16;
+                    let cell = &mut px[row_start + i];
+                    *cell = (*cell & keep) | (v & !keep);
+                }
             }
         }
-        ColorBand::Float32(px) => {
-            for (i, c) in lanes {
-                let v = if clamp_float { c.map(|x| if x > 0.0 { x.min(1.0) } else { 0.0 }) } else { *c };
-                let cell = &mut px[row_start + i];
-                (0..4).filter(|&k| mask[k]).for_each(|k| cell[k] = v[k]);
-            }
-        }
-        ColorBand::Rgb565(px) => {
-            // 5/6-bit stores take the top bits of the 8-bit conversion, as llvmpipe's do.
-            let keep: u16 = (if mask[0] { 0 } else { 0xf800 })
-                | (if mask[1] { 0 } else { 0x07e0 })
-                | (if mask[2] { 0 } else { 0x001f });
-            for (i, c) in lanes {
-                let [r, g, b, _] = c.map(|x| float_to_unorm(x, 8));
-                let v = ((r >> 3) << 11 | (g >> 2) << 5 | (b >> 3)) as u16;
-                let cell = &mut px[row_start + i];
-                *cell = (*cell & keep) | (v & !keep);
-            }
-        }
-    }
+    })
 }
 
 /// Writes one color to every fragment of `live` in the `n` pixels from `row_start`: the flat
