@@ -4,6 +4,12 @@
 //! mirroring) a path with no per-fragment dispatch on format or border and texels
 //! filtered four channels at once in one 64-bit word.
 //!
+//! 2D depth textures without border (shadow maps) have their own path: texels decoded from
+//! the depth-buffer encoding they are stored in, compared against r when comparison is on,
+//! and filtered in float, with no per-fragment dispatch on format, wrap or comparison.
+//! A sampler whose level cannot depend on λ (no mipmaps, one filter for magnification and
+//! minification, the usual shadow map) computes no λ at all.
+//!
 //! Every kernel gives the very bits of [`Sampler::sample`], the reference lookup (which
 //! remains the path of every other texture): the tests here compare them on random
 //! coordinates.
@@ -12,8 +18,10 @@
 //! lerps all its channels with two multiplications, `(a·(256 − w) + b·w + 128) >> 8`,
 //! which is llvmpipe's `a + ((b − a)·w + 128) >> 8` (the `256·a` is a whole multiple of 256)
 //! and never carries between fields (at most 255·256 + 128 < 2¹⁶).
-use super::sampler::{fixed, floor_i32, mirror, repeat, Dim, Filter, Levels, Sampler, Wrap};
-use super::{TexImage, Texels};
+use super::sampler::{depth_passes, fixed, floor_i32, mirror, repeat, DepthMode, Dim, Filter, Levels, Sampler, Wrap};
+use super::{depth_texel, DepthStencilPixels, TexImage, Texels};
+use crate::framebuffer::format::DepthEncoding;
+use crate::gl::CompareFunc;
 
 /// The lookups of one stage, chosen when the draw compiles its texturing.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -23,6 +31,8 @@ pub(super) enum Kernel {
     /// A 2D RGBA8 texture, borderless, wrapped by repeat, edge clamping or mirroring: every
     /// index the wrap gives is inside the image.
     Rgba2d,
+    /// A 2D depth texture, borderless, wrapped by repeat, edge clamping or mirroring.
+    Depth2d,
 }
 
 impl Kernel {
@@ -31,14 +41,17 @@ impl Kernel {
         let inside = |w: Wrap| matches!(w, Wrap::Repeat | Wrap::ClampToEdge | Wrap::MirroredRepeat);
         let rgba_borderless =
             |img: &TexImage| img.border == 0 && matches!(img.texels, Texels::Rgba8(_)) && img.depth == 1;
-        if sampler.dim == Dim::D2
+        let depth_borderless =
+            |img: &TexImage| img.border == 0 && matches!(img.texels, Texels::Depth(_)) && img.depth == 1;
+        let plain_2d = sampler.dim == Dim::D2
             && sampler.faces.len() == 1
             && !sampler.faces[0].is_empty()
-            && sampler.faces[0].iter().all(|l| rgba_borderless(l))
             && inside(sampler.wrap[0])
-            && inside(sampler.wrap[1])
-        {
+            && inside(sampler.wrap[1]);
+        if plain_2d && sampler.faces[0].iter().all(|l| rgba_borderless(l)) {
             Kernel::Rgba2d
+        } else if plain_2d && sampler.faces[0].iter().all(|l| depth_borderless(l)) {
+            Kernel::Depth2d
         } else {
             Kernel::Reference
         }
@@ -92,15 +105,29 @@ fn lerp(a: u64, b: u64, w: u64) -> u64 {
     ((a * (256 - w) + b * w + 0x0080_0080_0080_0080) >> 8) & 0x00ff_00ff_00ff_00ff
 }
 
+/// The size of one level of a borderless 2D image, as its lookups need it.
+#[derive(Clone, Copy)]
+struct Grid {
+    size: [i32; 2],
+    sizef: [f32; 2],
+    /// `size − 1` for sides that are powers of two (GL_REPEAT is a mask), else −1.
+    mask: [i32; 2],
+}
+
+impl Grid {
+    #[inline(always)]
+    fn of(img: &TexImage) -> Grid {
+        let size = [img.width as i32, img.height as i32];
+        Grid { size, sizef: size.map(|n| n as f32), mask: size.map(|n| if n & (n - 1) == 0 { n - 1 } else { -1 }) }
+    }
+}
+
 /// One level of an RGBA8 2D image, borderless, with what its lookups need.
 #[derive(Clone, Copy)]
 struct Level2d<'a> {
     texels: &'a [[u8; 4]],
     width: i32,
-    size: [i32; 2],
-    sizef: [f32; 2],
-    /// `size − 1` for sides that are powers of two (GL_REPEAT is a mask), else −1.
-    mask: [i32; 2],
+    grid: Grid,
 }
 
 impl<'a> Level2d<'a> {
@@ -111,14 +138,7 @@ impl<'a> Level2d<'a> {
             // Kernel::choose admits RGBA8 images only.
             Texels::Depth(_) => &[],
         };
-        let size = [img.width as i32, img.height as i32];
-        Level2d {
-            texels,
-            width: size[0],
-            size,
-            sizef: size.map(|n| n as f32),
-            mask: size.map(|n| if n & (n - 1) == 0 { n - 1 } else { -1 }),
-        }
+        Level2d { texels, width: img.width as i32, grid: Grid::of(img) }
     }
 
     #[inline(always)]
@@ -175,7 +195,7 @@ impl AxisWrap for Mirror {
 
 /// The nearest texel's index along axis `k` of the folded coordinate `s`.
 #[inline(always)]
-fn nearest<W: AxisWrap>(level: &Level2d, k: usize, s: f32) -> i32 {
+fn nearest<W: AxisWrap>(level: &Grid, k: usize, s: f32) -> i32 {
     let u = s * level.sizef[k];
     let i = if u.is_finite() { floor_i32(u) } else { 0 };
     W::index(i, level.size[k], level.mask[k])
@@ -184,7 +204,7 @@ fn nearest<W: AxisWrap>(level: &Level2d, k: usize, s: f32) -> i32 {
 /// The two texels' indices along axis `k` of the folded coordinate `s`, and the weight
 /// of the second in 1/256.
 #[inline(always)]
-fn linear<W: AxisWrap>(level: &Level2d, k: usize, s: f32) -> (i32, i32, u64) {
+fn linear<W: AxisWrap>(level: &Grid, k: usize, s: f32) -> (i32, i32, u64) {
     let u = if s.is_finite() { s * level.sizef[k] - 0.5 } else { 0.0 };
     let f = fixed(u);
     let i0 = f >> 8;
@@ -196,13 +216,13 @@ fn linear<W: AxisWrap>(level: &Level2d, k: usize, s: f32) -> (i32, i32, u64) {
 #[inline(always)]
 fn filter<X: AxisWrap, Y: AxisWrap, const LINEAR: bool>(level: &Level2d, s: f32, t: f32) -> u64 {
     if LINEAR {
-        let (x0, x1, wx) = linear::<X>(level, 0, s);
-        let (y0, y1, wy) = linear::<Y>(level, 1, t);
+        let (x0, x1, wx) = linear::<X>(&level.grid, 0, s);
+        let (y0, y1, wy) = linear::<Y>(&level.grid, 1, t);
         let upper = lerp(level.fetch(x0, y0), level.fetch(x1, y0), wx);
         let lower = lerp(level.fetch(x0, y1), level.fetch(x1, y1), wx);
         lerp(upper, lower, wy)
     } else {
-        level.fetch(nearest::<X>(level, 0, s), nearest::<Y>(level, 1, t))
+        level.fetch(nearest::<X>(&level.grid, 0, s), nearest::<Y>(&level.grid, 1, t))
     }
 }
 
@@ -239,18 +259,19 @@ fn two_levels<X: AxisWrap, Y: AxisWrap, const LINEAR: bool>(
     }
 }
 
-/// Calls `$f::<X, Y, LINEAR>($args…)` with the types of the wrap modes `$wrap` and the filter.
+/// Calls `$f::<X, Y, LINEAR $more>($args…)` with the types of the wrap modes `$wrap` and
+/// the filter (`$more`: the function's further generic arguments, `, _` to infer them).
 macro_rules! dispatch {
-    ($f:ident, $wrap:expr, $filter:expr, $($args:expr),*) => {{
+    ($f:ident [$($more:tt)*], $wrap:expr, $filter:expr, $($args:expr),*) => {{
         macro_rules! with_y {
             ($x:ty) => {
                 match ($wrap[1], $filter) {
-                    (Wrap::Repeat, Filter::Linear) => $f::<$x, Repeat, true>($($args),*),
-                    (Wrap::Repeat, Filter::Nearest) => $f::<$x, Repeat, false>($($args),*),
-                    (Wrap::MirroredRepeat, Filter::Linear) => $f::<$x, Mirror, true>($($args),*),
-                    (Wrap::MirroredRepeat, Filter::Nearest) => $f::<$x, Mirror, false>($($args),*),
-                    (_, Filter::Linear) => $f::<$x, Edge, true>($($args),*),
-                    (_, Filter::Nearest) => $f::<$x, Edge, false>($($args),*),
+                    (Wrap::Repeat, Filter::Linear) => $f::<$x, Repeat, true $($more)*>($($args),*),
+                    (Wrap::Repeat, Filter::Nearest) => $f::<$x, Repeat, false $($more)*>($($args),*),
+                    (Wrap::MirroredRepeat, Filter::Linear) => $f::<$x, Mirror, true $($more)*>($($args),*),
+                    (Wrap::MirroredRepeat, Filter::Nearest) => $f::<$x, Mirror, false $($more)*>($($args),*),
+                    (_, Filter::Linear) => $f::<$x, Edge, true $($more)*>($($args),*),
+                    (_, Filter::Nearest) => $f::<$x, Edge, false $($more)*>($($args),*),
                 }
             };
         }
@@ -279,22 +300,246 @@ impl Kernel {
             }
             Kernel::Rgba2d => {
                 let levels = &sampler.faces[0];
-                // λ of a 2D texture depends on the derivatives only: one per quad.
-                let lambda = sampler.lambda(&levels[0], ddx, ddy, c[0]);
                 let wrap = sampler.wrap;
-                match sampler.levels(lambda, levels.len()) {
+                match quad_levels(sampler, ddx, ddy, c) {
                     Levels::One(d, filter) => {
-                        dispatch!(one_level, wrap, filter, Level2d::of(&levels[d]), c, live, out)
+                        dispatch!(one_level [], wrap, filter, Level2d::of(&levels[d]), c, live, out)
                     }
                     Levels::Two(d1, d2, frac) => {
                         let w = (frac * 256.0) as i32 as u64;
                         let pair = (Level2d::of(&levels[d1]), Level2d::of(&levels[d2]), w);
-                        dispatch!(two_levels, wrap, sampler.min, pair, c, live, out)
+                        dispatch!(two_levels [], wrap, sampler.min, pair, c, live, out)
                     }
+                }
+            }
+            Kernel::Depth2d => {
+                let levels = &sampler.faces[0];
+                let which = quad_levels(sampler, ddx, ddy, c);
+                let done = match &levels[0].texels {
+                    Texels::Depth(buffer) => match (buffer.pixels(), buffer.depth_encoding()) {
+                        (DepthStencilPixels::Depth16(_), _) => depth_quad::<Unorm16>(sampler, which, c, live, out),
+                        (DepthStencilPixels::Packed24(_), _) => depth_quad::<Unorm24>(sampler, which, c, live, out),
+                        (DepthStencilPixels::Depth32(..), DepthEncoding::Float) => {
+                            depth_quad::<FloatDepth>(sampler, which, c, live, out)
+                        }
+                        (DepthStencilPixels::Depth32(..), _) => depth_quad::<Unorm32>(sampler, which, c, live, out),
+                        (DepthStencilPixels::None, _) => false,
+                    },
+                    Texels::Rgba8(_) => false,
+                };
+                if !done {
+                    // An image without texels (attached to the framebuffer being drawn)
+                    // or of another format: the reference answers.
+                    Kernel::Reference.sample_quad(sampler, c, live, out);
                 }
             }
         }
     }
+}
+
+/// The levels the lookups of a quad read. λ of a 2D texture depends on the derivatives
+/// only: one per quad; and none at all when every λ gives the same level and filter (no
+/// mipmaps, the same filter for magnification and minification).
+#[inline(always)]
+fn quad_levels(sampler: &Sampler, ddx: [f32; 3], ddy: [f32; 3], c: &[[f32; 3]; 4]) -> Levels {
+    if sampler.mip.is_none() && sampler.mag == sampler.min {
+        Levels::One(0, sampler.mag)
+    } else {
+        let levels = &sampler.faces[0];
+        sampler.levels(sampler.lambda(&levels[0], ddx, ddy, c[0]), levels.len())
+    }
+}
+
+/// The texels of one level of a depth image in one storage format, decoded as
+/// [`depth_texel`] does.
+trait DepthTexels<'a>: Copy {
+    /// The level's texels, if `img` holds this format.
+    fn of(img: &'a TexImage) -> Option<Self>;
+    fn texel(self, i: usize) -> f32;
+}
+
+#[derive(Clone, Copy)]
+struct Unorm16<'a>(&'a [u16]);
+#[derive(Clone, Copy)]
+struct Unorm24<'a>(&'a [u32]);
+#[derive(Clone, Copy)]
+struct Unorm32<'a>(&'a [u32]);
+#[derive(Clone, Copy)]
+struct FloatDepth<'a>(&'a [u32]);
+
+/// The pixels of a depth image, if it holds any.
+fn depth_pixels(img: &TexImage) -> Option<(&DepthStencilPixels, DepthEncoding)> {
+    match &img.texels {
+        Texels::Depth(buffer) => Some((buffer.pixels(), buffer.depth_encoding())),
+        Texels::Rgba8(_) => None,
+    }
+}
+
+impl<'a> DepthTexels<'a> for Unorm16<'a> {
+    fn of(img: &'a TexImage) -> Option<Self> {
+        match depth_pixels(img)? {
+            (DepthStencilPixels::Depth16(px), _) => Some(Unorm16(px)),
+            _ => None,
+        }
+    }
+    #[inline(always)]
+    fn texel(self, i: usize) -> f32 {
+        depth_texel(DepthEncoding::Unorm(16), self.0[i] as u32)
+    }
+}
+
+impl<'a> DepthTexels<'a> for Unorm24<'a> {
+    fn of(img: &'a TexImage) -> Option<Self> {
+        match depth_pixels(img)? {
+            (DepthStencilPixels::Packed24(px), _) => Some(Unorm24(px)),
+            _ => None,
+        }
+    }
+    #[inline(always)]
+    fn texel(self, i: usize) -> f32 {
+        depth_texel(DepthEncoding::Unorm(24), self.0[i] & 0x00ff_ffff)
+    }
+}
+
+impl<'a> DepthTexels<'a> for Unorm32<'a> {
+    fn of(img: &'a TexImage) -> Option<Self> {
+        match depth_pixels(img)? {
+            (DepthStencilPixels::Depth32(px, _), DepthEncoding::Unorm(32)) => Some(Unorm32(px)),
+            _ => None,
+        }
+    }
+    #[inline(always)]
+    fn texel(self, i: usize) -> f32 {
+        depth_texel(DepthEncoding::Unorm(32), self.0[i])
+    }
+}
+
+impl<'a> DepthTexels<'a> for FloatDepth<'a> {
+    fn of(img: &'a TexImage) -> Option<Self> {
+        match depth_pixels(img)? {
+            (DepthStencilPixels::Depth32(px, _), DepthEncoding::Float) => Some(FloatDepth(px)),
+            _ => None,
+        }
+    }
+    #[inline(always)]
+    fn texel(self, i: usize) -> f32 {
+        depth_texel(DepthEncoding::Float, self.0[i])
+    }
+}
+
+/// One level of a borderless 2D depth image.
+#[derive(Clone, Copy)]
+struct DepthLevel2d<T> {
+    texels: T,
+    width: usize,
+    grid: Grid,
+}
+
+impl<'a, T: DepthTexels<'a>> DepthLevel2d<T> {
+    fn of(img: &'a TexImage) -> Option<Self> {
+        // Every texel index the wrap modes give must be inside the texels.
+        let count = img.width * img.height;
+        let texels = T::of(img)?;
+        let long_enough = match depth_pixels(img)? {
+            (DepthStencilPixels::Depth16(px), _) => px.len() >= count,
+            (DepthStencilPixels::Packed24(px), _) | (DepthStencilPixels::Depth32(px, _), _) => px.len() >= count,
+            (DepthStencilPixels::None, _) => false,
+        };
+        (long_enough && count > 0).then(|| DepthLevel2d { texels, width: img.width, grid: Grid::of(img) })
+    }
+
+    /// The filtered depth, or the filtered comparison of `reference` with the texels, at
+    /// the folded coordinates (s, t): `DepthLookup::filter` of the reference.
+    #[inline(always)]
+    fn filter<X: AxisWrap, Y: AxisWrap, const LINEAR: bool>(
+        &self,
+        compare: Option<CompareFunc>,
+        reference: f32,
+        s: f32,
+        t: f32,
+    ) -> f32 {
+        let fetch = |x: i32, y: i32| {
+            let d = self.texels.texel(y as usize * self.width + x as usize);
+            match compare {
+                Some(func) => {
+                    if depth_passes(func, reference, d) {
+                        1.0
+                    } else {
+                        0.0
+                    }
+                }
+                None => d,
+            }
+        };
+        if LINEAR {
+            let (x0, x1, wx) = linear::<X>(&self.grid, 0, s);
+            let (y0, y1, wy) = linear::<Y>(&self.grid, 1, t);
+            let (wx, wy) = (wx as f32 / 256.0, wy as f32 / 256.0);
+            let lerp = |a: f32, b: f32, w: f32| a + w * (b - a);
+            let row = |y| lerp(fetch(x0, y), fetch(x1, y), wx);
+            lerp(row(y0), row(y1), wy)
+        } else {
+            fetch(nearest::<X>(&self.grid, 0, s), nearest::<Y>(&self.grid, 1, t))
+        }
+    }
+}
+
+/// The depth lookups of a quad in one level (`second`: blended with a second level by
+/// `frac`, in float as the reference blends depth): the filtered values of the live lanes.
+fn depth_levels<'a, X: AxisWrap, Y: AxisWrap, const LINEAR: bool, T: DepthTexels<'a>>(
+    (first, second): (DepthLevel2d<T>, Option<(DepthLevel2d<T>, f32)>),
+    compare: Option<CompareFunc>,
+    c: &[[f32; 3]; 4],
+    live: u8,
+    out: &mut [f32; 4],
+) {
+    for l in lanes(live) {
+        let (s, t) = (X::fold(c[l][0]), Y::fold(c[l][1]));
+        // The reference value: r, clamped as fixed-point depth formats require.
+        let reference = c[l][2].clamp(0.0, 1.0);
+        let a = first.filter::<X, Y, LINEAR>(compare, reference, s, t);
+        out[l] = match second {
+            None => a,
+            Some((level, frac)) => a + frac * (level.filter::<X, Y, LINEAR>(compare, reference, s, t) - a),
+        };
+    }
+}
+
+/// The depth lookups of the lanes `live` of a quad in the levels `which`, as texture
+/// colors of the sampler's depth mode; false (and `out` untouched) if a level does not
+/// hold texels of format `T`.
+fn depth_quad<'a, T: DepthTexels<'a>>(
+    sampler: &'a Sampler,
+    which: Levels,
+    c: &[[f32; 3]; 4],
+    live: u8,
+    out: &mut [[f32; 4]; 4],
+) -> bool {
+    let levels = &sampler.faces[0];
+    let level = |d: usize| DepthLevel2d::<T>::of(&levels[d]);
+    let (pair, filter) = match which {
+        Levels::One(d, filter) => match level(d) {
+            Some(a) => ((a, None), filter),
+            None => return false,
+        },
+        Levels::Two(d1, d2, frac) => match (level(d1), level(d2)) {
+            (Some(a), Some(b)) => ((a, Some((b, frac))), sampler.min),
+            _ => return false,
+        },
+    };
+    let mut d = [0.0; 4];
+    dispatch!(depth_levels [, _], sampler.wrap, filter, pair, sampler.compare, c, live, &mut d);
+    // A blend of two levels blends every channel alike: the constant channels stay
+    // (1 + f·0 = 1, 0 + f·0 = 0), the others are the blended depth.
+    for l in lanes(live) {
+        let d = d[l];
+        out[l] = match sampler.depth_mode {
+            DepthMode::Luminance => [d, d, d, 1.0],
+            DepthMode::Intensity => [d; 4],
+            DepthMode::Alpha => [0.0, 0.0, 0.0, d],
+        };
+    }
+    true
 }
 
 #[cfg(test)]
@@ -403,6 +648,146 @@ mod tests {
             }
         }
         assert!(checked > 10_000);
+    }
+
+    /// A chain of depth levels of `format` from `w` × `h` down to 1 × 1, random depths
+    /// (a few exactly 0, 1 and repeated values, where comparisons tie).
+    fn depth_chain(rng: &mut Rng, w: usize, h: usize, format: crate::texture::DepthStencilFormat) -> Vec<Arc<TexImage>> {
+        let mut levels = Vec::new();
+        let (mut w, mut h) = (w, h);
+        loop {
+            let mut img = TexImage::new_depth(w, h, 1, 0, format).unwrap();
+            for i in 0..w * h {
+                let v = match rng.next() % 8 {
+                    0 => 0.0,
+                    1 => 1.0,
+                    2 => 0.5,
+                    _ => rng.unit(),
+                };
+                img.set_depth_f32(i, v);
+            }
+            levels.push(Arc::new(img));
+            if w == 1 && h == 1 {
+                return levels;
+            }
+            (w, h) = ((w / 2).max(1), (h / 2).max(1));
+        }
+    }
+
+    #[test]
+    fn depth_kernels_give_the_reference_bits() {
+        use crate::texture::{depth_storage, DepthStencilFormat};
+        let mut rng = Rng(0x2545_f491_4f6c_dd1d);
+        let wraps = [Wrap::Repeat, Wrap::ClampToEdge, Wrap::MirroredRepeat];
+        let filters = [Filter::Nearest, Filter::Linear];
+        let funcs = [
+            None,
+            Some(CompareFunc::LessEqual),
+            Some(CompareFunc::GreaterEqual),
+            Some(CompareFunc::Less),
+            Some(CompareFunc::Greater),
+            Some(CompareFunc::Equal),
+            Some(CompareFunc::NotEqual),
+            Some(CompareFunc::Always),
+            Some(CompareFunc::Never),
+        ];
+        let modes = [DepthMode::Luminance, DepthMode::Intensity, DepthMode::Alpha];
+        let formats = [
+            depth_storage(16, false, false),
+            depth_storage(24, true, false),
+            depth_storage(32, false, false),
+            depth_storage(32, true, true),
+        ];
+        assert!(matches!(formats[3], DepthStencilFormat::Float32 { .. }));
+        let mut checked = 0;
+        for (f, format) in formats.iter().enumerate() {
+            for (w, h) in [(8, 8), (5, 3), (16, 1), (12, 20)] {
+                let levels = depth_chain(&mut rng, w, h, *format);
+                for mip in [None, Some(Filter::Nearest), Some(Filter::Linear)] {
+                    for case in 0..36 {
+                        let sampler = Sampler {
+                            dim: Dim::D2,
+                            faces: vec![levels.clone()],
+                            wrap: [wraps[case % 3], wraps[(case / 3) % 3], Wrap::Repeat],
+                            mag: filters[(case / 9) % 2],
+                            min: filters[(case / 18 + case) % 2],
+                            mip,
+                            border: [0.25, 0.0, 0.0, 0.0],
+                            lod_bias: [0.0, 0.5, -1.25][case % 3],
+                            min_lod: -1000.0,
+                            max_lod: [1000.0, 2.5][case % 2],
+                            compare: funcs[(case + f) % funcs.len()],
+                            depth_mode: modes[(case / 4) % 3],
+                            base: BaseFormat::Depth,
+                        };
+                        let kernel = Kernel::choose(&sampler);
+                        assert_eq!(kernel, Kernel::Depth2d);
+                        for _ in 0..30 {
+                            let scale = [0.001, 0.05, 0.3, 2.0][(rng.next() % 4) as usize];
+                            let origin = [rng.unit() * 3.0 - 1.0, rng.unit() * 3.0 - 1.0];
+                            let step = [(rng.unit() - 0.5) * scale, (rng.unit() - 0.5) * scale];
+                            let down = [(rng.unit() - 0.5) * scale, (rng.unit() - 0.5) * scale];
+                            // r around [0, 1] (clamped as the reference value), sometimes a
+                            // stored value exactly.
+                            let r0 = [rng.unit() * 1.4 - 0.2, 0.5, 1.0, 0.0][(rng.next() % 4) as usize];
+                            let c: [[f32; 3]; 4] = std::array::from_fn(|l| {
+                                let (x, y) = ((l % 2) as f32, (l / 2) as f32);
+                                let jitter = (rng.unit() - 0.5) * scale * 0.1;
+                                let r = if rng.next() % 2 == 0 { r0 } else { r0 + (rng.unit() - 0.5) * 0.01 };
+                                [origin[0] + step[0] * x + down[0] * y + jitter, origin[1] + step[1] * x + down[1] * y, r]
+                            });
+                            let live = [0b1111, 0b0110, 0b1000][(rng.next() % 3) as usize];
+                            let mut out = [[9.0; 4]; 4];
+                            kernel.sample_quad(&sampler, &c, live, &mut out);
+                            let mut reference = [[9.0; 4]; 4];
+                            Kernel::Reference.sample_quad(&sampler, &c, live, &mut reference);
+                            assert_eq!(
+                                out.map(|l| l.map(f32::to_bits)),
+                                reference.map(|l| l.map(f32::to_bits)),
+                                "{format:?} {w}x{h} {sampler:?} {c:?}"
+                            );
+                            checked += live.count_ones();
+                        }
+                    }
+                }
+            }
+        }
+        assert!(checked > 20_000, "{checked}");
+    }
+
+    #[test]
+    fn depth_images_without_texels_take_the_reference_path() {
+        // A depth texture attached to the framebuffer being drawn has lent its texels to
+        // it: the lookups give the border depth as the reference does.
+        use crate::texture::depth_storage;
+        let mut img = TexImage::new_depth(4, 4, 1, 0, depth_storage(24, false, false)).unwrap();
+        if let Texels::Depth(buffer) = &mut img.texels {
+            *buffer = crate::texture::DepthStencilBuffer::default();
+        }
+        let sampler = Sampler {
+            dim: Dim::D2,
+            faces: vec![vec![Arc::new(img)]],
+            wrap: [Wrap::ClampToEdge; 3],
+            mag: Filter::Nearest,
+            min: Filter::Nearest,
+            mip: None,
+            border: [0.75, 0.0, 0.0, 0.0],
+            lod_bias: 0.0,
+            min_lod: -1000.0,
+            max_lod: 1000.0,
+            compare: Some(CompareFunc::LessEqual),
+            depth_mode: DepthMode::Intensity,
+            base: BaseFormat::Depth,
+        };
+        assert_eq!(Kernel::choose(&sampler), Kernel::Depth2d);
+        let c = [[0.5, 0.5, 0.5]; 4];
+        let mut out = [[9.0; 4]; 4];
+        Kernel::Depth2d.sample_quad(&sampler, &c, 0b0101, &mut out);
+        let mut reference = [[9.0; 4]; 4];
+        Kernel::Reference.sample_quad(&sampler, &c, 0b0101, &mut reference);
+        assert_eq!(out, reference);
+        assert_eq!(out[0], [0.75; 4]);
+        assert_eq!(out[1], [9.0; 4], "lanes outside the mask are left alone");
     }
 
     #[test]
