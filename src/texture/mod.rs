@@ -327,12 +327,17 @@ pub struct TextureStage {
     pub slot: usize,
     /// How the sampler's lookups run, chosen from it.
     kernel: kernel::Kernel,
+    /// Whether a lookup depends on the derivatives of its coordinates: not when every λ
+    /// gives the same level and filter (no mipmaps, one filter for magnification and
+    /// minification), as for most shadow maps.
+    derivatives: bool,
 }
 
 impl TextureStage {
     pub fn new(unit: usize, sampler: sampler::Sampler, env: env::TexEnv, slot: usize) -> TextureStage {
         let kernel = kernel::Kernel::choose(&sampler);
-        TextureStage { unit, sampler, env, slot, kernel }
+        let derivatives = sampler.mip.is_some() || sampler.mag != sampler.min;
+        TextureStage { unit, sampler, env, slot, kernel, derivatives }
     }
 }
 
@@ -480,6 +485,9 @@ impl Texturing {
         let row = usize::from(upper != 0);
         let live = live & if colors.len() >= 64 { u64::MAX } else { (1 << colors.len()) - 1 };
         let in_span = |i: i32| (0..64).contains(&i) && live & (1 << i) != 0;
+        // Without derivatives a quad needs only its live fragments' coordinates: each is
+        // evaluated at its own pixel as below, and nothing else is.
+        let derivatives = self.stages.iter().any(|s| s.derivatives);
         let mut rest = live;
         while rest != 0 {
             let i = rest.trailing_zeros() as i32;
@@ -495,16 +503,19 @@ impl Texturing {
             // The upper row and the left column give the derivatives; the lower right
             // pixel is evaluated only as a fragment of the span. A fragment's own lane is
             // evaluated at the very arguments of its pixel (dy = 0), so it is the same.
-            varyings_at(left, upper, v[0]);
-            varyings_at(left + 1, upper, v[1]);
-            varyings_at(left, upper - 1, v[2]);
-            if quad_live & 8 != 0 {
-                varyings_at(left + 1, upper - 1, v[3]);
+            let needed = if derivatives { 0b0111 | (quad_live & 8) } else { quad_live };
+            for (l, (dx, dy)) in [(left, upper), (left + 1, upper), (left, upper - 1), (left + 1, upper - 1)]
+                .into_iter()
+                .enumerate()
+            {
+                if needed & (1 << l) != 0 {
+                    varyings_at(dx, dy, v[l]);
+                }
             }
             let mut coords = [[[0.0; 3]; 4]; MAX_UNITS];
             for (k, s) in self.stages.iter().enumerate() {
                 for (l, c) in coords[k].iter_mut().enumerate() {
-                    if l < 3 || quad_live & 8 != 0 {
+                    if needed & (1 << l) != 0 {
                         *c = projected(v[l], s.slot);
                     }
                 }
@@ -663,6 +674,77 @@ mod tests {
         let mut colors = vec![[0.25; 4]; 3];
         none.texture_span(&mut colors, 0b111, 0, 0, &mut scratch, |_, _, _| unreachable!());
         assert_eq!(colors, vec![[0.25; 4]; 3]);
+    }
+
+    #[test]
+    fn lookups_without_derivatives_evaluate_only_the_live_fragments() {
+        use sampler::{DepthMode, Dim, Filter, Sampler, Wrap};
+        use std::cell::Cell;
+        use std::sync::Arc;
+        // A depth texture with comparison and no mipmaps (a shadow map) on unit 1 and an
+        // unmipmapped RGBA texture on unit 0: no λ, so no neighbour is evaluated.
+        let mut depth = TexImage::new_depth(8, 8, 1, 0, depth_storage(24, true, false)).unwrap();
+        for i in 0..64 {
+            depth.set_depth_f32(i, (i % 7) as f32 / 6.0);
+        }
+        let mut rgba = TexImage::new(4, 4, 1, 0, BaseFormat::Rgba).unwrap();
+        rgba.texels = Texels::Rgba8((0..16u8).map(|i| [i * 16, 255 - i * 9, i * 3, 200]).collect());
+        let sampler = |image: TexImage, filter: Filter, compare| Sampler {
+            dim: Dim::D2,
+            faces: vec![vec![Arc::new(image)]],
+            wrap: [Wrap::ClampToEdge, Wrap::Repeat, Wrap::Repeat],
+            mag: filter,
+            min: filter,
+            mip: None,
+            border: [0.0; 4],
+            lod_bias: 0.0,
+            min_lod: -1000.0,
+            max_lod: 1000.0,
+            compare,
+            depth_mode: DepthMode::Intensity,
+            base: BaseFormat::Rgba,
+        };
+        let modulate = env::TexEnv { mode: env::EnvMode::Modulate, base: BaseFormat::Rgba, color: [0.0; 4] };
+        let stages = vec![
+            TextureStage::new(0, sampler(rgba, Filter::Linear, None), modulate, 0),
+            TextureStage::new(1, sampler(depth, Filter::Nearest, Some(crate::gl::CompareFunc::GreaterEqual)), modulate, 4),
+        ];
+        assert!(stages.iter().all(|s| !s.derivatives));
+        let h = 6;
+        let texturing = Texturing { stages, fb_height: h };
+        let at = |x: i32, y: i32, out: &mut [f32]| {
+            let (x, y) = (x as f32 + 0.5, y as f32 + 0.5);
+            let q = 1.0 + 0.05 * x;
+            out[..8].copy_from_slice(&[0.11 * x / q, 0.07 * y / q, 0.0, 1.0 / q, 0.1 * x, 0.13 * y, 0.08 * x, 1.0]);
+        };
+        let neighbours = Cell::new(0);
+        let mut scratch = Vec::new();
+        for y in 0..h {
+            let live = 0b1101_1011u64;
+            let mut colors = vec![[0.5, 0.75, 1.0, 1.0]; 8];
+            texturing.texture_span(&mut colors, live, 3, y, &mut scratch, |dx, dy, out| {
+                neighbours.set(neighbours.get() + usize::from(dy != 0 || live & (1 << dx) == 0));
+                at(3 + dx, y + dy, out)
+            });
+            for (i, color) in colors.iter().enumerate() {
+                if live & (1 << i) == 0 {
+                    assert_eq!(*color, [0.5, 0.75, 1.0, 1.0], "a fragment outside the span's mask");
+                    continue;
+                }
+                // Each fragment as the reference samples it, from its own coordinates.
+                let mut v = [0.0; 8];
+                at(3 + i as i32, y, &mut v);
+                let mut expect = [0.5, 0.75, 1.0, 1.0];
+                for s in &texturing.stages {
+                    let texel = s.sampler.sample(projected(&v, s.slot), [0.0; 3], [0.0; 3]);
+                    let mut texels = [[0.0; 4]; MAX_UNITS];
+                    texels[s.unit] = texel;
+                    expect = s.env.apply(s.unit, expect, [0.5, 0.75, 1.0, 1.0], &texels);
+                }
+                assert_eq!(*color, expect, "pixel ({}, {y})", 3 + i);
+            }
+        }
+        assert_eq!(neighbours.get(), 0, "no coordinates but the live fragments' are evaluated");
     }
 
     #[test]
