@@ -18,7 +18,7 @@
 //! lerps all its channels with two multiplications, `(a·(256 − w) + b·w + 128) >> 8`,
 //! which is llvmpipe's `a + ((b − a)·w + 128) >> 8` (the `256·a` is a whole multiple of 256)
 //! and never carries between fields (at most 255·256 + 128 < 2¹⁶).
-use super::sampler::{depth_passes, fixed, floor_i32, mirror, repeat, DepthMode, Dim, Filter, Levels, Sampler, Wrap};
+use super::sampler::{fixed, floor_i32, mirror, repeat, DepthMode, Dim, Filter, Levels, Sampler, Wrap};
 use super::{depth_texel, DepthStencilPixels, TexImage, Texels};
 use crate::framebuffer::format::DepthEncoding;
 use crate::gl::CompareFunc;
@@ -427,6 +427,39 @@ impl<'a> DepthTexels<'a> for FloatDepth<'a> {
     }
 }
 
+/// A depth comparison function without a branch per texel: which of less, equal and
+/// greater pass, and whether the answer is the opposite (GL_NOTEQUAL is "not equal" and
+/// GL_ALWAYS "not never", which hold where an operand is NaN, as IEEE comparisons say).
+#[derive(Clone, Copy, Debug)]
+struct Compare {
+    less: bool,
+    equal: bool,
+    greater: bool,
+    invert: bool,
+}
+
+impl Compare {
+    fn new(func: CompareFunc) -> Compare {
+        let (less, equal, greater, invert) = match func {
+            CompareFunc::Never => (false, false, false, false),
+            CompareFunc::Less => (true, false, false, false),
+            CompareFunc::Equal => (false, true, false, false),
+            CompareFunc::LessEqual => (true, true, false, false),
+            CompareFunc::Greater => (false, false, true, false),
+            CompareFunc::NotEqual => (false, true, false, true),
+            CompareFunc::GreaterEqual => (false, true, true, false),
+            CompareFunc::Always => (false, false, false, true),
+        };
+        Compare { less, equal, greater, invert }
+    }
+
+    /// [`depth_passes`](super::sampler::depth_passes) of `func`.
+    #[inline(always)]
+    fn passes(self, r: f32, d: f32) -> bool {
+        (((r < d) & self.less) | ((r == d) & self.equal) | ((r > d) & self.greater)) != self.invert
+    }
+}
+
 /// One level of a borderless 2D depth image.
 #[derive(Clone, Copy)]
 struct DepthLevel2d<T> {
@@ -453,7 +486,7 @@ impl<'a, T: DepthTexels<'a>> DepthLevel2d<T> {
     #[inline(always)]
     fn filter<X: AxisWrap, Y: AxisWrap, const LINEAR: bool>(
         &self,
-        compare: Option<CompareFunc>,
+        compare: Option<Compare>,
         reference: f32,
         s: f32,
         t: f32,
@@ -461,8 +494,8 @@ impl<'a, T: DepthTexels<'a>> DepthLevel2d<T> {
         let fetch = |x: i32, y: i32| {
             let d = self.texels.texel(y as usize * self.width + x as usize);
             match compare {
-                Some(func) => {
-                    if depth_passes(func, reference, d) {
+                Some(c) => {
+                    if c.passes(reference, d) {
                         1.0
                     } else {
                         0.0
@@ -488,7 +521,7 @@ impl<'a, T: DepthTexels<'a>> DepthLevel2d<T> {
 /// `frac`, in float as the reference blends depth): the filtered values of the live lanes.
 fn depth_levels<'a, X: AxisWrap, Y: AxisWrap, const LINEAR: bool, T: DepthTexels<'a>>(
     (first, second): (DepthLevel2d<T>, Option<(DepthLevel2d<T>, f32)>),
-    compare: Option<CompareFunc>,
+    compare: Option<Compare>,
     c: &[[f32; 3]; 4],
     live: u8,
     out: &mut [f32; 4],
@@ -528,7 +561,8 @@ fn depth_quad<'a, T: DepthTexels<'a>>(
         },
     };
     let mut d = [0.0; 4];
-    dispatch!(depth_levels [, _], sampler.wrap, filter, pair, sampler.compare, c, live, &mut d);
+    let compare = sampler.compare.map(Compare::new);
+    dispatch!(depth_levels [, _], sampler.wrap, filter, pair, compare, c, live, &mut d);
     // A blend of two levels blends every channel alike: the constant channels stay
     // (1 + f·0 = 1, 0 + f·0 = 0), the others are the blended depth.
     for l in lanes(live) {
@@ -545,6 +579,7 @@ fn depth_quad<'a, T: DepthTexels<'a>>(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::texture::sampler::depth_passes;
     use crate::texture::sampler::DepthMode;
     use crate::texture::BaseFormat;
     use std::sync::Arc;
@@ -753,6 +788,28 @@ mod tests {
             }
         }
         assert!(checked > 20_000, "{checked}");
+    }
+
+    #[test]
+    fn branchless_comparisons_are_the_compare_functions() {
+        let funcs = [
+            CompareFunc::Never,
+            CompareFunc::Less,
+            CompareFunc::Equal,
+            CompareFunc::LessEqual,
+            CompareFunc::Greater,
+            CompareFunc::NotEqual,
+            CompareFunc::GreaterEqual,
+            CompareFunc::Always,
+        ];
+        let values = [0.0, -0.0, 0.25, 0.5, 1.0, f32::NAN, f32::INFINITY];
+        for func in funcs {
+            for r in values {
+                for d in values {
+                    assert_eq!(Compare::new(func).passes(r, d), depth_passes(func, r, d), "{func:?} {r} {d}");
+                }
+            }
+        }
     }
 
     #[test]

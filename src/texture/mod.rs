@@ -374,6 +374,12 @@ pub const MAX_UNITS: usize = crate::gl::limits::MAX_TEXTURE_UNITS;
 /// Fragments in a block given to [`Texturing::texture_quads`]: four 2×2 quads.
 pub const LANES: usize = 16;
 
+/// The lanes of a 4-bit mask, in order.
+#[inline(always)]
+fn lanes4(mask: u8) -> impl Iterator<Item = usize> {
+    (0..4).filter(move |&l| mask & (1 << l) != 0)
+}
+
 /// The projected coordinates (s/q, t/q, r/q) of a stage from a fragment's varyings.
 #[inline]
 fn projected(v: &[f32], slot: usize) -> [f32; 3] {
@@ -478,16 +484,44 @@ impl Texturing {
         let mut lane_varyings = scratch.chunks_exact_mut(n);
         let mut lane = || lane_varyings.next().unwrap_or_default();
         let v = [lane(), lane(), lane(), lane()];
+        let live = live & if colors.len() >= 64 { u64::MAX } else { (1 << colors.len()) - 1 };
+        if !self.stages.iter().any(|s| s.derivatives) {
+            // No lookup depends on derivatives: a fragment's texture color depends on its
+            // own coordinates only (evaluated at its pixel, dy = 0, as below), so any four
+            // fragments of the span can go through the quad kernels together, and no
+            // neighbour is evaluated.
+            let mut first = 0;
+            while live >> first != 0 {
+                let group = ((live >> first) & 0xf) as u8;
+                if group != 0 {
+                    let mut coords = [[[0.0; 3]; 4]; MAX_UNITS];
+                    let mut quad = [[0.0; 4]; 4];
+                    for l in lanes4(group) {
+                        let i = first + l;
+                        varyings_at(i as i32, 0, v[l]);
+                        for (k, s) in self.stages.iter().enumerate() {
+                            coords[k][l] = projected(v[l], s.slot);
+                        }
+                        quad[l] = colors[i];
+                    }
+                    self.texture_quad(&coords, group, &mut quad);
+                    for l in lanes4(group) {
+                        colors[first + l] = quad[l];
+                    }
+                }
+                first += 4;
+                if first >= 64 {
+                    break;
+                }
+            }
+            return;
+        }
         // Quad rows in llvmpipe's y-down numbering: the quad's upper row, and the one below;
         // the span is one of them (`row`), its fragments the lanes 2·row and 2·row + 1.
         let y_down = self.fb_height - 1 - y;
         let upper = self.fb_height - 1 - (y_down & !1) - y;
         let row = usize::from(upper != 0);
-        let live = live & if colors.len() >= 64 { u64::MAX } else { (1 << colors.len()) - 1 };
         let in_span = |i: i32| (0..64).contains(&i) && live & (1 << i) != 0;
-        // Without derivatives a quad needs only its live fragments' coordinates: each is
-        // evaluated at its own pixel as below, and nothing else is.
-        let derivatives = self.stages.iter().any(|s| s.derivatives);
         let mut rest = live;
         while rest != 0 {
             let i = rest.trailing_zeros() as i32;
@@ -503,19 +537,16 @@ impl Texturing {
             // The upper row and the left column give the derivatives; the lower right
             // pixel is evaluated only as a fragment of the span. A fragment's own lane is
             // evaluated at the very arguments of its pixel (dy = 0), so it is the same.
-            let needed = if derivatives { 0b0111 | (quad_live & 8) } else { quad_live };
-            for (l, (dx, dy)) in [(left, upper), (left + 1, upper), (left, upper - 1), (left + 1, upper - 1)]
-                .into_iter()
-                .enumerate()
-            {
-                if needed & (1 << l) != 0 {
-                    varyings_at(dx, dy, v[l]);
-                }
+            varyings_at(left, upper, v[0]);
+            varyings_at(left + 1, upper, v[1]);
+            varyings_at(left, upper - 1, v[2]);
+            if quad_live & 8 != 0 {
+                varyings_at(left + 1, upper - 1, v[3]);
             }
             let mut coords = [[[0.0; 3]; 4]; MAX_UNITS];
             for (k, s) in self.stages.iter().enumerate() {
                 for (l, c) in coords[k].iter_mut().enumerate() {
-                    if needed & (1 << l) != 0 {
+                    if l < 3 || quad_live & 8 != 0 {
                         *c = projected(v[l], s.slot);
                     }
                 }
