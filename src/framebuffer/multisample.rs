@@ -125,7 +125,13 @@ fn average_unorm(values: impl Iterator<Item = [u32; 4]>, count: usize) -> [u32; 
         }
     }
     let half = count as u32 / 2;
-    sum.map(|a| (a + half) / count as u32)
+    if count.is_power_of_two() {
+        // The usual sample counts (2, 4, 8): a shift, not four divisions per pixel.
+        let shift = count.trailing_zeros();
+        sum.map(|a| (a + half) >> shift)
+    } else {
+        sum.map(|a| (a + half) / count as u32)
+    }
 }
 
 /// Copies sample 0's depth and stencil of pixel rows `[y0, y1)` into `resolved` (GL leaves
@@ -343,6 +349,21 @@ mod tests {
         assert_eq!(px[3 + 1], [128; 4]);
         assert_eq!(px[3 + 2], [64, 0, 0, 64]);
         assert_eq!(px[0], [0; 4]);
+    }
+
+    #[test]
+    fn averages_round_to_nearest_for_every_count() {
+        for count in 1..=8usize {
+            for base in [0u32, 1, 2, 127, 128, 254, 255, 65535] {
+                let values: Vec<[u32; 4]> =
+                    (0..count as u32).map(|s| [base, base / (s + 1), 255 - base % 256, s]).collect();
+                let expect: [u32; 4] = std::array::from_fn(|k| {
+                    let sum: u32 = values.iter().map(|v| v[k]).sum();
+                    (sum + count as u32 / 2) / count as u32
+                });
+                assert_eq!(average_unorm(values.iter().copied(), count), expect, "{count} {base}");
+            }
+        }
     }
 
     #[test]

@@ -687,7 +687,12 @@ mod tests {
 
     /// A chain of depth levels of `format` from `w` × `h` down to 1 × 1, random depths
     /// (a few exactly 0, 1 and repeated values, where comparisons tie).
-    fn depth_chain(rng: &mut Rng, w: usize, h: usize, format: crate::texture::DepthStencilFormat) -> Vec<Arc<TexImage>> {
+    fn depth_chain(
+        rng: &mut Rng,
+        w: usize,
+        h: usize,
+        format: crate::texture::DepthStencilFormat,
+    ) -> Vec<Arc<TexImage>> {
         let mut levels = Vec::new();
         let (mut w, mut h) = (w, h);
         loop {
@@ -769,7 +774,11 @@ mod tests {
                                 let (x, y) = ((l % 2) as f32, (l / 2) as f32);
                                 let jitter = (rng.unit() - 0.5) * scale * 0.1;
                                 let r = if rng.next() % 2 == 0 { r0 } else { r0 + (rng.unit() - 0.5) * 0.01 };
-                                [origin[0] + step[0] * x + down[0] * y + jitter, origin[1] + step[1] * x + down[1] * y, r]
+                                [
+                                    origin[0] + step[0] * x + down[0] * y + jitter,
+                                    origin[1] + step[1] * x + down[1] * y,
+                                    r,
+                                ]
                             });
                             let live = [0b1111, 0b0110, 0b1000][(rng.next() % 3) as usize];
                             let mut out = [[9.0; 4]; 4];

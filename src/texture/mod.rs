@@ -738,7 +738,12 @@ mod tests {
         let modulate = env::TexEnv { mode: env::EnvMode::Modulate, base: BaseFormat::Rgba, color: [0.0; 4] };
         let stages = vec![
             TextureStage::new(0, sampler(rgba, Filter::Linear, None), modulate, 0),
-            TextureStage::new(1, sampler(depth, Filter::Nearest, Some(crate::gl::CompareFunc::GreaterEqual)), modulate, 4),
+            TextureStage::new(
+                1,
+                sampler(depth, Filter::Nearest, Some(crate::gl::CompareFunc::GreaterEqual)),
+                modulate,
+                4,
+            ),
         ];
         assert!(stages.iter().all(|s| !s.derivatives));
         let h = 6;
