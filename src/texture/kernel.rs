@@ -773,7 +773,7 @@ mod tests {
                             let c: [[f32; 3]; 4] = std::array::from_fn(|l| {
                                 let (x, y) = ((l % 2) as f32, (l / 2) as f32);
                                 let jitter = (rng.unit() - 0.5) * scale * 0.1;
-                                let r = if rng.next() % 2 == 0 { r0 } else { r0 + (rng.unit() - 0.5) * 0.01 };
+                                let r = if rng.next() & 1 == 0 { r0 } else { r0 + (rng.unit() - 0.5) * 0.01 };
                                 [
                                     origin[0] + step[0] * x + down[0] * y + jitter,
                                     origin[1] + step[1] * x + down[1] * y,
