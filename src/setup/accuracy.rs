@@ -9,7 +9,10 @@
 //! - [`Accuracy::Conformant`] (default): colors and varyings perspective-correct from f32
 //!   planes of a/w and 1/w, window z linear; what the capi tests compare with Mesa.
 //! - [`Accuracy::Fast`]: colors and varyings interpolated linearly in window space (affine,
-//!   no divide per fragment) from the row's start value plus `i` steps; no dithering.
+//!   no divide per fragment): the same planes the conformant mode uses for orthographic
+//!   triangles, now for every triangle; no dithering. It earns its place on perspective
+//!   scenes, where it saves the 1/w plane, a divide and a multiply per attribute per
+//!   fragment; on orthographic scenes it is the conformant mode (same bytes, same time).
 //! - [`Accuracy::Exact`]: z, colors and varyings from barycentric coordinates computed in
 //!   f64 at each pixel centre, perspective-correct, rounded once to f32 for the fragment
 //!   stages; the reference the benchmark measures the other modes against.

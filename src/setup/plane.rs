@@ -24,11 +24,6 @@ pub const MAX_VARYINGS: usize = 3 + 1 + 4 * MAX_TEXTURE_UNITS;
 pub trait Interpolant {
     /// The value at (x, y) in the plane's own coordinates.
     fn at(&self, x: f32, y: f32) -> f32;
-
-    /// How much the value grows from one pixel to the next along x.
-    fn step_x(&self) -> f32 {
-        self.at(1.0, 0.0) - self.at(0.0, 0.0)
-    }
 }
 
 /// How a primitive's color varies over it.
@@ -40,10 +35,6 @@ pub enum Shading<P> {
     Affine([P; 4]),
     /// Planes of color/w and of 1/w.
     Perspective { color_over_w: [P; 4], inv_w: P },
-    /// Linear in window space, evaluated as the row's start value plus `i` steps (the fast
-    /// accuracy mode: cheaper than evaluating each plane at each pixel, and affine even when
-    /// w varies).
-    Stepped([P; 4]),
 }
 
 impl<P: Interpolant> Shading<P> {
@@ -83,27 +74,21 @@ impl<P: Interpolant> Shading<P> {
                     *o = color_over_w.each_ref().map(|p| p.at(x, y) * w);
                 }
             }
-            Shading::Stepped(planes) => {
-                let start = planes.each_ref().map(|p| p.at(x0, y));
-                let step = planes.each_ref().map(|p| p.step_x());
-                for (i, o) in out.iter_mut().enumerate() {
-                    let i = i as f32;
-                    *o = std::array::from_fn(|c| start[c] + step[c] * i);
-                }
-            }
         }
     }
 }
 
 /// The attributes beyond color that a draw's later stages read (secondary color, fog
 /// coordinate, texture coordinates), interpolated perspective-correctly: planes of a/w and
-/// the plane of 1/w, held inline (see the module docs). Empty when the draw needs none.
+/// the plane of 1/w, held inline (see the module docs); or, for the fast accuracy mode,
+/// affinely: planes of the attributes themselves and no 1/w. Empty when the draw needs none.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Varyings<P> {
-    /// The first `len` are the planes; the rest stay default.
+    /// The first `len` are the planes (of a/w, or of a when `inv_w` is `None`); the rest
+    /// stay default.
     over_w: [P; MAX_VARYINGS],
     len: u8,
-    inv_w: P,
+    inv_w: Option<P>,
 }
 
 impl<P: Interpolant + Copy + Default> Varyings<P> {
@@ -111,9 +96,21 @@ impl<P: Interpolant + Copy + Default> Varyings<P> {
     /// are dropped) with the plane of 1/w.
     #[inline]
     pub fn new(over_w: impl IntoIterator<Item = P>, inv_w: P) -> Self {
+        Self::with_inv_w(over_w, Some(inv_w))
+    }
+
+    /// The planes `linear` of the attributes themselves, interpolated affinely in window
+    /// space (the fast accuracy mode: no divide per fragment).
+    #[inline]
+    pub fn affine(linear: impl IntoIterator<Item = P>) -> Self {
+        Self::with_inv_w(linear, None)
+    }
+
+    #[inline]
+    fn with_inv_w(planes_in: impl IntoIterator<Item = P>, inv_w: Option<P>) -> Self {
         let mut planes = [P::default(); MAX_VARYINGS];
         let mut len = 0;
-        for (slot, p) in planes.iter_mut().zip(over_w) {
+        for (slot, p) in planes.iter_mut().zip(planes_in) {
             *slot = p;
             len += 1;
         }
@@ -140,9 +137,18 @@ impl<P: Interpolant> Varyings<P> {
     /// The attributes at (x, y), into `out`.
     #[inline]
     pub fn at(&self, x: f32, y: f32, out: &mut [f32]) {
-        let w = 1.0 / self.inv_w.at(x, y);
-        for (o, p) in out.iter_mut().zip(self.planes()) {
-            *o = p.at(x, y) * w;
+        match &self.inv_w {
+            Some(inv_w) => {
+                let w = 1.0 / inv_w.at(x, y);
+                for (o, p) in out.iter_mut().zip(self.planes()) {
+                    *o = p.at(x, y) * w;
+                }
+            }
+            None => {
+                for (o, p) in out.iter_mut().zip(self.planes()) {
+                    *o = p.at(x, y);
+                }
+            }
         }
     }
 }
@@ -192,11 +198,6 @@ impl Interpolant for Plane {
     #[inline]
     fn at(&self, dx: f32, dy: f32) -> f32 {
         Plane::at(self, dx, dy)
-    }
-
-    #[inline]
-    fn step_x(&self) -> f32 {
-        self.dadx
     }
 }
 

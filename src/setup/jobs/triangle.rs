@@ -16,7 +16,7 @@
 //! depth, colours and varyings evaluated per lane from the same planes and the same
 //! arithmetic as the span path ([`TriangleJob::render_blocks`]). Multisampled targets
 //! and the exact mode keep the span path.
-use crate::fragment::block::{lanes, shade_block, BlockColors, BlockInputs, BlockPipeline, F32s, LANES};
+use crate::fragment::block::{lanes, shade_block, BlockColors, BlockInputs, BlockPipeline, F32s};
 use crate::fragment::pipeline::{shade_span, shade_span_samples, DrawState, Scratch, Span};
 use crate::fragment::{multisample::SampleMasks, span_mask};
 use crate::framebuffer::band::Band;
@@ -134,10 +134,9 @@ impl TriangleJob {
         let shading = match flat {
             Some(color) => Shading::Flat(color),
             None if v[0].color == v[1].color && v[1].color == v[2].color => Shading::Flat(v[0].color),
-            None if fast => {
-                Shading::Stepped(std::array::from_fn(|c| plane([v[0].color[c], v[1].color[c], v[2].color[c]])))
-            }
-            None if v[0].inv_w == v[1].inv_w && v[1].inv_w == v[2].inv_w => {
+            // The fast mode interpolates affinely even where w varies (no divide per
+            // fragment); the conformant mode only where it is exact (all w equal).
+            None if fast || (v[0].inv_w == v[1].inv_w && v[1].inv_w == v[2].inv_w) => {
                 Shading::Affine(std::array::from_fn(|c| plane([v[0].color[c], v[1].color[c], v[2].color[c]])))
             }
             None => Shading::Perspective {
@@ -165,8 +164,7 @@ impl TriangleJob {
         let varyings = if varyings.is_empty() {
             Varyings::default()
         } else if fast {
-            let linear = varyings.iter().map(|a| plane(order.map(|i| a[i])));
-            Varyings::new(linear, Plane { a0: 1.0, dadx: 0.0, dady: 0.0 })
+            Varyings::affine(varyings.iter().map(|a| plane(order.map(|i| a[i]))))
         } else {
             let over_w = varyings.iter().map(|a| {
                 let a = order.map(|i| a[i]);
@@ -340,18 +338,6 @@ impl BlockInputs for TriangleJob {
                 let [r, g, b, a] = color_over_w;
                 BlockColors::Lanes([channel(r), channel(g), channel(b), channel(a)])
             }
-            Shading::Stepped(planes) => BlockColors::Lanes(planes.each_ref().map(|p| {
-                // The fast mode's stepping from each row's first pixel (the block's column 0).
-                let step = p.dadx;
-                let mut out = [0f32; LANES];
-                for r in 0..4 {
-                    let start = p.at(dx[0], dy[4 * r]);
-                    for c in 0..4 {
-                        out[4 * r + c] = start + step * c as f32;
-                    }
-                }
-                out
-            })),
         };
     }
 
