@@ -11,7 +11,7 @@
 //!   }
 //!   output 0 = r1
 //! ```
-use super::ir::{Axis, Const, Inst, Program, Stage, Stmt, Type};
+use super::ir::{Axis, Const, Inst, Lod, Program, Reg, Stage, Stmt, Type};
 use std::fmt::{self, Write};
 
 fn types(list: &[Type]) -> String {
@@ -29,6 +29,11 @@ fn constant(c: Const) -> String {
     }
 }
 
+/// Registers as `r1 r2 r3`.
+fn regs(list: &[Reg]) -> String {
+    list.iter().map(|r| format!("r{}", r.0)).collect::<Vec<_>>().join(" ")
+}
+
 fn lower<T: fmt::Debug>(op: T) -> String {
     format!("{op:?}").to_lowercase()
 }
@@ -43,7 +48,6 @@ fn inst(out: &mut String, inst: &Inst) -> fmt::Result {
         Inst::Binary { op, dst, a, b } => write!(out, "r{} = {} r{}, r{}", dst.0, lower(op), a.0, b.0),
         Inst::Mad { dst, a, b, c } => write!(out, "r{} = mad r{}, r{}, r{}", dst.0, a.0, b.0, c.0),
         Inst::Dot { dst, n, a, b } => {
-            let regs = |r: &[_]| r.iter().map(|r: &super::ir::Reg| format!("r{}", r.0)).collect::<Vec<_>>().join(" ");
             write!(out, "r{} = dot{n} ({}), ({})", dst.0, regs(&a[..*n as usize]), regs(&b[..*n as usize]))
         }
         Inst::Select { dst, cond, a, b } => write!(out, "r{} = select r{}, r{}, r{}", dst.0, cond.0, a.0, b.0),
@@ -55,6 +59,29 @@ fn inst(out: &mut String, inst: &Inst) -> fmt::Result {
             write!(out, "r{} = {name} r{}", dst.0, a.0)
         }
         Inst::Output { slot, src } => write!(out, "output {slot} = r{}", src.0),
+        Inst::Sample { dst, unit, n, coords, projective, lod, compare } => {
+            let used = *n as usize + *projective as usize;
+            write!(
+                out,
+                "{} = sample{} unit {unit} ({})",
+                regs(dst),
+                if *projective { "proj" } else { "" },
+                regs(&coords[..used])
+            )?;
+            match lod {
+                Lod::Implicit => {}
+                Lod::Bias(r) => write!(out, " bias r{}", r.0)?,
+                Lod::Explicit(r) => write!(out, " lod r{}", r.0)?,
+            }
+            match compare {
+                Some(r) => write!(out, " compare r{}", r.0),
+                None => Ok(()),
+            }
+        }
+        Inst::Fetch { dst, unit, n, coords, lod } => {
+            write!(out, "{} = fetch unit {unit} ({}) lod r{}", regs(dst), regs(&coords[..*n as usize]), lod.0)
+        }
+        Inst::Size { dst, unit, lod } => write!(out, "{} = size unit {unit} lod r{}", regs(dst), lod.0),
     }
 }
 
@@ -66,7 +93,7 @@ fn block(out: &mut String, program: &Program, stmts: &[Stmt], depth: usize) -> f
             Stmt::Inst(i) => {
                 let start = out.len();
                 inst(out, i)?;
-                if let Some(dst) = i.dst() {
+                if let Some(&dst) = i.writes().first() {
                     let width = out.len() - start;
                     let ty = program.registers.get(dst.0 as usize).map_or("?", |t| t.name());
                     write!(out, "{:1$}; {ty}", "", 24usize.saturating_sub(width).max(1))?;

@@ -9,6 +9,11 @@
 //! take the running lanes out until the end of their loop iteration, their loop, or the
 //! program.
 //!
+//! Texture lookups go to the [`Textures`] of the run (the texture room's samplers, bound per
+//! draw) once per block with the coordinates of every lane and the mask of the lanes that
+//! want a result, so that a sampler works on whole 2×2 quads (their level of detail) and
+//! may specialise per format.
+//!
 //! A loop runs at most [`MAX_LOOP_ITERATIONS`] iterations per entry; lanes still looping
 //! then leave it as if by `break`. GLSL has no bound, but a shader must not hang the
 //! process: this is tessera's documented limit (a real GPU's watchdog resets instead).
@@ -16,7 +21,7 @@
 //! The arithmetic is IEEE single precision rounded once per operation, never contracted
 //! into fused multiply-adds, with [`super::math`] for the transcendental functions: the
 //! same bits on every CPU and at every SIMD level.
-use super::ir::{Axis, BinaryOp, Inst, Program, Reg, Stmt, UnaryOp};
+use super::ir::{Axis, BinaryOp, Inst, Lod, Program, Reg, Stmt, UnaryOp};
 use super::math;
 use crate::gl::float::floor_f32;
 
@@ -206,11 +211,60 @@ fn true_lanes(w: &Word) -> u16 {
     mask
 }
 
-/// The words of a run: per-lane inputs, uniforms and outputs, indexed by slot.
+/// The level of detail of one filtered lookup, per lane where it is given.
+#[derive(Clone, Copy, Debug)]
+pub enum LodLanes<'a> {
+    Implicit,
+    Bias(&'a Word),
+    Explicit(&'a Word),
+}
+
+/// One filtered lookup of a block: the unit, the coordinates of every lane (helper lanes
+/// included: the implicit level of detail is a per-quad difference), and the lanes that
+/// want a result.
+pub struct SampleRequest<'a> {
+    pub unit: u8,
+    pub n: u8,
+    pub coords: &'a [Word; 4],
+    pub projective: bool,
+    pub lod: LodLanes<'a>,
+    pub compare: Option<&'a Word>,
+    pub lanes: u16,
+}
+
+/// The textures a program's lookups read: the texture room's samplers, bound per draw.
+/// Each call fills the lanes of `lanes` (f32 bits; sizes as i32) and may leave the others.
+pub trait Textures {
+    fn sample(&self, request: &SampleRequest<'_>, out: &mut [Word; 4]);
+    fn fetch(&self, unit: u8, n: u8, coords: &[Word; 3], lod: &Word, lanes: u16, out: &mut [Word; 4]);
+    fn size(&self, unit: u8, lod: &Word, lanes: u16, out: &mut [Word; 3]);
+}
+
+/// For programs without texture lookups (the validator's program has none to ask for):
+/// every lookup reads zero.
+pub struct NoTextures;
+
+impl Textures for NoTextures {
+    fn sample(&self, _: &SampleRequest<'_>, out: &mut [Word; 4]) {
+        *out = [[0; LANES]; 4];
+    }
+
+    fn fetch(&self, _: u8, _: u8, _: &[Word; 3], _: &Word, _: u16, out: &mut [Word; 4]) {
+        *out = [[0; LANES]; 4];
+    }
+
+    fn size(&self, _: u8, _: &Word, _: u16, out: &mut [Word; 3]) {
+        *out = [[0; LANES]; 3];
+    }
+}
+
+/// The words of a run: per-lane inputs, uniforms and outputs, indexed by slot, and the
+/// textures its lookups read.
 pub struct Io<'a> {
     pub inputs: &'a [Word],
     pub uniforms: &'a [u32],
     pub outputs: &'a mut [Word],
+    pub textures: &'a dyn Textures,
 }
 
 impl Executor {
@@ -275,6 +329,39 @@ impl Executor {
                 std::array::from_fn(|i| if c[i] != 0 { a[i] } else { b[i] })
             }
             Inst::Derivative { axis, a, .. } => derivative(axis, self.read(a)),
+            Inst::Sample { dst, unit, n, coords, projective, lod, compare } => {
+                let words = coords.map(|r| *self.read(r));
+                let lod = match lod {
+                    Lod::Implicit => LodLanes::Implicit,
+                    Lod::Bias(r) => LodLanes::Bias(self.read(r)),
+                    Lod::Explicit(r) => LodLanes::Explicit(self.read(r)),
+                };
+                let compare = compare.map(|r| self.read(r));
+                let request = SampleRequest { unit, n, coords: &words, projective, lod, compare, lanes: exec };
+                let mut out = [[0; LANES]; 4];
+                io.textures.sample(&request, &mut out);
+                for (r, value) in dst.into_iter().zip(out) {
+                    self.write(r, value, exec);
+                }
+                return;
+            }
+            Inst::Fetch { dst, unit, n, coords, lod } => {
+                let words = coords.map(|r| *self.read(r));
+                let mut out = [[0; LANES]; 4];
+                io.textures.fetch(unit, n, &words, self.read(lod), exec, &mut out);
+                for (r, value) in dst.into_iter().zip(out) {
+                    self.write(r, value, exec);
+                }
+                return;
+            }
+            Inst::Size { dst, unit, lod } => {
+                let mut out = [[0; LANES]; 3];
+                io.textures.size(unit, self.read(lod), exec, &mut out);
+                for (r, value) in dst.into_iter().zip(out) {
+                    self.write(r, value, exec);
+                }
+                return;
+            }
             Inst::Output { slot, src } => {
                 let value = *self.read(src);
                 let out = &mut io.outputs[slot as usize];

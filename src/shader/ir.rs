@@ -175,6 +175,21 @@ pub enum Axis {
     Y,
 }
 
+/// The most texture image units a program may name (the GL limit a context reports is at
+/// most this).
+pub const MAX_SAMPLERS: usize = 32;
+
+/// How a filtered lookup chooses its level of detail.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Lod {
+    /// From the coordinates' derivatives over each 2×2 quad (fragment programs).
+    Implicit,
+    /// The implicit level plus an f32 bias (fragment programs).
+    Bias(Reg),
+    /// The f32 level of detail λ itself.
+    Explicit(Reg),
+}
+
 /// One operation. `dst` is always written (in the running lanes only).
 #[derive(Clone, Debug, PartialEq)]
 pub enum Inst {
@@ -241,6 +256,36 @@ pub enum Inst {
         slot: u16,
         src: Reg,
     },
+    /// A filtered lookup of texture unit `unit` at the f32 coordinates `coords[..n]` (1 to 3,
+    /// as the unit's target needs: s; s, t; s, t, r or a cube direction): RGBA into `dst`.
+    /// `projective`: `coords[n]` is q, and the sampler divides the others by it, with its
+    /// own rounding (the fixed-function and `texture*Proj` rules). `compare`: the depth
+    /// reference of a shadow lookup. The sampler applies the unit's own filters, wraps,
+    /// border, depth mode and comparison: the program only asks.
+    Sample {
+        dst: [Reg; 4],
+        unit: u8,
+        n: u8,
+        coords: [Reg; 4],
+        projective: bool,
+        lod: Lod,
+        compare: Option<Reg>,
+    },
+    /// One texel of level `lod` (i32) at the i32 coordinates `coords[..n]`, unfiltered;
+    /// outside the level: zero.
+    Fetch {
+        dst: [Reg; 4],
+        unit: u8,
+        n: u8,
+        coords: [Reg; 3],
+        lod: Reg,
+    },
+    /// The i32 width, height and depth of level `lod` (i32) of the unit's texture.
+    Size {
+        dst: [Reg; 3],
+        unit: u8,
+        lod: Reg,
+    },
 }
 
 impl Inst {
@@ -257,7 +302,17 @@ impl Inst {
             | Inst::Dot { dst, .. }
             | Inst::Select { dst, .. }
             | Inst::Derivative { dst, .. } => Some(dst),
-            Inst::Output { .. } => None,
+            Inst::Output { .. } | Inst::Sample { .. } | Inst::Fetch { .. } | Inst::Size { .. } => None,
+        }
+    }
+
+    /// The registers the instruction writes: its `dst`, or the components of a texture
+    /// lookup.
+    pub fn writes(&self) -> Vec<Reg> {
+        match self {
+            Inst::Sample { dst, .. } | Inst::Fetch { dst, .. } => dst.to_vec(),
+            Inst::Size { dst, .. } => dst.to_vec(),
+            _ => self.dst().into_iter().collect(),
         }
     }
 }

@@ -5,8 +5,10 @@
 //! operands the f64 result rounded to f32 is the correctly rounded f32 result (53 ≥ 2·24 + 2
 //! bits), so the two must agree bit for bit (NaNs only as NaNs: their payloads are the
 //! CPU's).
-use super::exec::{Executor, Io, Word, ALL_LANES, LANES, MAX_LOOP_ITERATIONS};
-use super::ir::{Axis, BinaryOp, Const, Inst, Program, Reg, Stage, Stmt, Type, UnaryOp};
+use super::exec::{
+    Executor, Io, LodLanes, NoTextures, SampleRequest, Textures, Word, ALL_LANES, LANES, MAX_LOOP_ITERATIONS,
+};
+use super::ir::{Axis, BinaryOp, Const, Inst, Lod, Program, Reg, Stage, Stmt, Type, UnaryOp};
 use super::validate::validate;
 
 struct Rng(u64);
@@ -196,7 +198,9 @@ impl Lane<'_> {
                     r(self, b)
                 }
             }
-            Inst::Derivative { .. } => unreachable!("not generated"),
+            Inst::Derivative { .. } | Inst::Sample { .. } | Inst::Fetch { .. } | Inst::Size { .. } => {
+                unreachable!("not generated")
+            }
             Inst::Output { slot, src } => {
                 self.outputs[slot as usize] = r(self, src);
                 return;
@@ -513,8 +517,11 @@ fn random_programs_match_the_scalar_f64_reference_lane_by_lane() {
         let uniforms = [rng.float().to_bits(), rng.int()];
         let mut outputs = vec![[0u32; LANES]; program.outputs.len()];
         let lanes = if rng.chance(70) { ALL_LANES } else { rng.next() as u16 };
-        let alive =
-            executor.run(&program, &mut Io { inputs: &inputs, uniforms: &uniforms, outputs: &mut outputs }, lanes);
+        let alive = executor.run(
+            &program,
+            &mut Io { inputs: &inputs, uniforms: &uniforms, outputs: &mut outputs, textures: &NoTextures },
+            lanes,
+        );
         for lane in 0..LANES {
             if lanes >> lane & 1 == 0 {
                 assert!(outputs.iter().all(|o| o[lane] == 0), "case {case}: lane {lane} was not running");
@@ -562,7 +569,11 @@ fn a_loop_that_never_ends_stops_at_the_iteration_bound() {
     ];
     validate(&p).unwrap();
     let mut out = vec![[0u32; LANES]];
-    let alive = Executor::new().run(&p, &mut Io { inputs: &[], uniforms: &[], outputs: &mut out }, ALL_LANES);
+    let alive = Executor::new().run(
+        &p,
+        &mut Io { inputs: &[], uniforms: &[], outputs: &mut out, textures: &NoTextures },
+        ALL_LANES,
+    );
     assert_eq!(alive, ALL_LANES);
     assert_eq!(out[0], [MAX_LOOP_ITERATIONS; LANES]);
 }
@@ -589,11 +600,108 @@ fn derivatives_are_the_differences_across_each_quad() {
     let value = |c: usize, r: usize| (c * c + 10 * r * r) as f32;
     let input: Word = std::array::from_fn(|i| value(i & 3, i >> 2).to_bits());
     let mut out = vec![[0u32; LANES]; 2];
-    Executor::new().run(&p, &mut Io { inputs: &[input], uniforms: &[], outputs: &mut out }, ALL_LANES);
+    Executor::new().run(
+        &p,
+        &mut Io { inputs: &[input], uniforms: &[], outputs: &mut out, textures: &NoTextures },
+        ALL_LANES,
+    );
     for (i, (dx, dy)) in out[0].iter().zip(&out[1]).enumerate() {
         let (c, r) = (i & 3, i >> 2);
         let (c0, r0) = (c & !1, r & !1);
         assert_eq!(f32::from_bits(*dx), value(c0 + 1, r) - value(c0, r), "ddx at lane {i}");
         assert_eq!(f32::from_bits(*dy), value(c, r0 + 1) - value(c, r0), "ddy at lane {i}");
     }
+}
+
+/// A texture whose texel at (s, t) is (s + t, s·t, unit, λ or −1) and which records what it
+/// was asked.
+struct Probe(std::cell::RefCell<Vec<(u8, u16, bool)>>);
+
+impl Textures for Probe {
+    fn sample(&self, r: &SampleRequest<'_>, out: &mut [Word; 4]) {
+        self.0.borrow_mut().push((r.unit, r.lanes, r.projective));
+        let lod = match r.lod {
+            LodLanes::Explicit(w) => Some(w),
+            _ => None,
+        };
+        for i in 0..LANES {
+            let (s, t) = (f32::from_bits(r.coords[0][i]), f32::from_bits(r.coords[1][i]));
+            out[0][i] = (s + t).to_bits();
+            out[1][i] = (s * t).to_bits();
+            out[2][i] = (r.unit as f32).to_bits();
+            out[3][i] = lod.map_or((-1.0f32).to_bits(), |w| w[i]);
+        }
+    }
+
+    fn fetch(&self, unit: u8, _: u8, coords: &[Word; 3], _: &Word, lanes: u16, out: &mut [Word; 4]) {
+        self.0.borrow_mut().push((unit, lanes, false));
+        out[0] = coords[0].map(|c| (c as i32 as f32).to_bits());
+    }
+
+    fn size(&self, unit: u8, lod: &Word, lanes: u16, out: &mut [Word; 3]) {
+        self.0.borrow_mut().push((unit, lanes, false));
+        out[0] = lod.map(|l| 64 >> l);
+    }
+}
+
+#[test]
+fn texture_lookups_ask_the_sampler_with_the_running_lanes_and_write_only_those() {
+    let mut p = Program::new(Stage::Fragment);
+    let s = p.register(Type::F32);
+    let t = p.register(Type::F32);
+    let lod = p.register(Type::F32);
+    let texel: [Reg; 4] = std::array::from_fn(|_| p.register(Type::F32));
+    let take = p.register(Type::Bool);
+    let ilod = p.register(Type::I32);
+    let size: [Reg; 3] = std::array::from_fn(|_| p.register(Type::I32));
+    for _ in 0..2 {
+        p.input(Type::F32);
+    }
+    for _ in 0..5 {
+        p.output(Type::F32);
+    }
+    p.output(Type::I32);
+    let sample = |unit, lod| Inst::Sample {
+        dst: texel,
+        unit,
+        n: 2,
+        coords: [s, t, s, s],
+        projective: false,
+        lod,
+        compare: None,
+    };
+    p.body = vec![
+        Stmt::Inst(Inst::Input { dst: s, slot: 0 }),
+        Stmt::Inst(Inst::Input { dst: t, slot: 1 }),
+        Stmt::Inst(Inst::Const { dst: lod, value: Const::F32(2.5) }),
+        Stmt::Inst(sample(3, Lod::Implicit)),
+        // Lanes whose s is below 2 look up again with an explicit level on unit 1.
+        Stmt::Inst(Inst::Const { dst: texel[3], value: Const::F32(2.0) }),
+        Stmt::Inst(Inst::Binary { op: BinaryOp::FLt, dst: take, a: s, b: texel[3] }),
+        Stmt::Inst(sample(3, Lod::Implicit)),
+        Stmt::If { cond: take, then: vec![Stmt::Inst(sample(1, Lod::Explicit(lod)))], otherwise: vec![] },
+        Stmt::Inst(Inst::Const { dst: ilod, value: Const::I32(2) }),
+        Stmt::Inst(Inst::Size { dst: size, unit: 0, lod: ilod }),
+        Stmt::Inst(Inst::Output { slot: 0, src: texel[0] }),
+        Stmt::Inst(Inst::Output { slot: 1, src: texel[1] }),
+        Stmt::Inst(Inst::Output { slot: 2, src: texel[2] }),
+        Stmt::Inst(Inst::Output { slot: 3, src: texel[3] }),
+        Stmt::Inst(Inst::Output { slot: 5, src: size[0] }),
+    ];
+    validate(&p).unwrap();
+    let inputs: [Word; 2] = [std::array::from_fn(|i| (i as f32 * 0.25).to_bits()), [1.5f32.to_bits(); LANES]];
+    let mut out = vec![[0u32; LANES]; 6];
+    let probe = Probe(Default::default());
+    let lanes = 0x7fff;
+    Executor::new().run(&p, &mut Io { inputs: &inputs, uniforms: &[], outputs: &mut out, textures: &probe }, lanes);
+    // s = i/4 < 2 for lanes 0..8.
+    assert_eq!(*probe.0.borrow(), vec![(3, lanes, false), (3, lanes, false), (1, 0xff, false), (0, lanes, false)]);
+    for i in 0..15 {
+        let s = i as f32 * 0.25;
+        let texel = [out[0][i], out[1][i], out[2][i], out[3][i]].map(f32::from_bits);
+        let (unit, lod) = if i < 8 { (1.0, 2.5) } else { (3.0, -1.0) };
+        assert_eq!(texel, [s + 1.5, s * 1.5, unit, lod], "lane {i}");
+        assert_eq!(out[5][i], 16, "size of level 2 at lane {i}");
+    }
+    assert_eq!(out.iter().map(|o| o[15]).collect::<Vec<_>>(), vec![0; 6], "lane 15 was not running");
 }

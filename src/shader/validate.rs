@@ -3,7 +3,7 @@
 //! `continue` only inside a loop, `discard` and derivatives only in fragment programs,
 //! nesting no deeper than [`MAX_NESTING`]). Generators and the GLSL front end call it
 //! after building a program; an error names the statement by its path.
-use super::ir::{BinaryOp, Inst, Program, Reg, Stage, Stmt, Type, UnaryOp};
+use super::ir::{BinaryOp, Inst, Lod, Program, Reg, Stage, Stmt, Type, UnaryOp, MAX_SAMPLERS};
 use std::fmt;
 
 /// The deepest nesting of ifs and loops a program may have: the executor recurses once per
@@ -105,6 +105,20 @@ impl Checker<'_> {
         }
     }
 
+    fn unit(&self, unit: u8) -> Result<(), Invalid> {
+        if unit as usize >= MAX_SAMPLERS {
+            return self.fail(format!("texture unit {unit} (at most {MAX_SAMPLERS})"));
+        }
+        Ok(())
+    }
+
+    fn components(&self, n: u8, most: u8) -> Result<(), Invalid> {
+        if !(1..=most).contains(&n) {
+            return self.fail(format!("{n} coordinates (1 to {most})"));
+        }
+        Ok(())
+    }
+
     fn inst(&self, inst: &Inst) -> Result<(), Invalid> {
         match *inst {
             Inst::Const { dst, value } => self.expect(dst, value.ty()),
@@ -158,6 +172,39 @@ impl Checker<'_> {
                 let ty = self.reg(a)?;
                 self.expect(b, ty)?;
                 self.expect(dst, ty)
+            }
+            Inst::Sample { dst, unit, n, coords, projective, lod, compare } => {
+                self.unit(unit)?;
+                self.components(n, 3)?;
+                let used = n as usize + projective as usize;
+                for r in dst.into_iter().chain(coords[..used].iter().copied()).chain(compare) {
+                    self.expect(r, Type::F32)?;
+                }
+                match lod {
+                    Lod::Implicit | Lod::Bias(_) if self.program.stage != Stage::Fragment => {
+                        self.fail("an implicit level of detail outside a fragment program".into())
+                    }
+                    Lod::Implicit => Ok(()),
+                    Lod::Bias(r) | Lod::Explicit(r) => self.expect(r, Type::F32),
+                }
+            }
+            Inst::Fetch { dst, unit, n, coords, lod } => {
+                self.unit(unit)?;
+                self.components(n, 3)?;
+                for r in dst {
+                    self.expect(r, Type::F32)?;
+                }
+                for &r in coords[..n as usize].iter().chain([&lod]) {
+                    self.expect(r, Type::I32)?;
+                }
+                Ok(())
+            }
+            Inst::Size { dst, unit, lod } => {
+                self.unit(unit)?;
+                for r in dst.into_iter().chain([lod]) {
+                    self.expect(r, Type::I32)?;
+                }
+                Ok(())
             }
             Inst::Derivative { dst, a, .. } => {
                 if self.program.stage != Stage::Fragment {
@@ -256,6 +303,31 @@ mod tests {
             (vec![Stmt::Inst(Inst::Const { dst: f, value: Const::I32(1) })], "expected i32"),
             (vec![Stmt::If { cond: f, then: vec![], otherwise: vec![] }], "expected bool"),
             (vec![Stmt::Inst(Inst::Unary { op: UnaryOp::INot, dst: f, a: f })], "expected an integer"),
+            (
+                vec![Stmt::Inst(Inst::Sample {
+                    dst: [f; 4],
+                    unit: 0,
+                    n: 2,
+                    coords: [f; 4],
+                    projective: false,
+                    lod: Lod::Implicit,
+                    compare: None,
+                })],
+                "implicit level of detail outside",
+            ),
+            (
+                vec![Stmt::Inst(Inst::Sample {
+                    dst: [f; 4],
+                    unit: 40,
+                    n: 2,
+                    coords: [f; 4],
+                    projective: false,
+                    lod: Lod::Explicit(f),
+                    compare: None,
+                })],
+                "texture unit 40",
+            ),
+            (vec![Stmt::Inst(Inst::Fetch { dst: [f; 4], unit: 0, n: 2, coords: [f; 3], lod: f })], "expected i32"),
         ];
         for (body, reason) in cases {
             p.body = body;
