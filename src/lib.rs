@@ -22,6 +22,8 @@
 //! fragment     a covered span → the framebuffer, GL's stage order written once (pipeline.rs):
 //!              scissor, alpha (alpha.rs), stencil (stencil.rs), depth (mod.rs), fog (fog.rs),
 //!              blending (blend.rs), logic op, dither, write masks (output.rs), multisample
+//! shader       programs: the shading IR (ir.rs), its validator, text dump and the
+//!              16-lane executor (exec.rs) with tessera's own exp2/log2/sin/cos (math.rs)
 //! texture      texture storage, sampling (sampler.rs) and the texture environments (env.rs)
 //! pixel        GL pixel transfer: client formats and types, pack and unpack
 //! framebuffer  buffers and pixel formats, the only code that touches raw pixel memory
@@ -31,8 +33,7 @@
 //! ```
 //!
 //! See `../shared/DESIGN.md` and the README for the rules that make it fast and exact.
-//! `shader` (programs: the shading IR, the fixed-function generators, GLSL) is the room to
-//! come between `fragment` and `texture`.
+//! `shader` gains the fixed-function generators and the GLSL front end next.
 
 pub mod api;
 pub mod context;
@@ -42,6 +43,7 @@ pub mod gl;
 pub mod pixel;
 pub mod raster;
 pub mod setup;
+pub mod shader;
 pub mod simd;
 pub mod texture;
 pub mod vertex;

@@ -1,0 +1,26 @@
+//! Programs: the shading IR that vertex processing and fragment shading are written in, its
+//! validator and text dump, and the executor that runs a program over the 16 lanes of a
+//! block. The fixed-function generators and the GLSL front end compile into it; `vertex`
+//! and `fragment` run what they produce.
+//!
+//! - [`ir`]: the program form. Scalar registers of four types (f32, i32, u32, bool; GLSL's
+//!   vectors and matrices are lowered to scalars by whoever builds the program), typed
+//!   operations, and structured control flow (if/else, loops with break and continue,
+//!   return, discard), which is what GLSL has and what masked execution over lanes wants.
+//! - [`validate`]: checks a program before it runs (types, slots, where break, continue,
+//!   discard and derivatives may appear, nesting depth), so the executor trusts it.
+//! - [`dump`]: the text form of a program (`TESSERA_DEBUG=programs`).
+//! - [`exec`]: runs a validated program over 16 lanes with execution masks; the arithmetic
+//!   is IEEE add, sub, mul, div and sqrt rounded once each (no contraction), and
+//!   [`math`]'s own polynomials for exp2, log2, sin and cos, so every SIMD level and every
+//!   CPU gives the same bytes.
+#![deny(unsafe_code)]
+
+pub mod dump;
+pub mod exec;
+pub mod ir;
+pub mod math;
+pub mod validate;
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,707 @@
+//! Property tests of the executor: random programs (every exactly rounded operation, nested
+//! ifs, loops with break and continue, return, discard, partial lane masks) run over 16
+//! lanes and, lane by lane, by a scalar reference that branches for real and computes in
+//! f64, rounding to f32 after each operation. For add, sub, mul, div and sqrt of f32
+//! operands the f64 result rounded to f32 is the correctly rounded f32 result (53 ≥ 2·24 + 2
+//! bits), so the two must agree bit for bit (NaNs only as NaNs: their payloads are the
+//! CPU's).
+use super::exec::{
+    Executor, Io, LodLanes, NoTextures, SampleRequest, Textures, Word, ALL_LANES, LANES, MAX_LOOP_ITERATIONS,
+};
+use super::ir::{Axis, BinaryOp, Const, Inst, Lod, Program, Reg, Stage, Stmt, Type, UnaryOp};
+use super::validate::validate;
+
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> u64 {
+        // xorshift64*
+        self.0 ^= self.0 >> 12;
+        self.0 ^= self.0 << 25;
+        self.0 ^= self.0 >> 27;
+        self.0.wrapping_mul(0x2545_f491_4f6c_dd1d)
+    }
+
+    fn below(&mut self, n: usize) -> usize {
+        (self.next() % n as u64) as usize
+    }
+
+    fn chance(&mut self, percent: u64) -> bool {
+        self.next() % 100 < percent
+    }
+
+    fn pick<T: Copy>(&mut self, items: &[T]) -> T {
+        items[self.below(items.len())]
+    }
+
+    fn float(&mut self) -> f32 {
+        match self.below(8) {
+            0 => self.pick(&[0.0, -0.0, 1.0, -1.0, 0.5, f32::INFINITY, f32::NEG_INFINITY, f32::NAN, 1e-40, -3e38]),
+            1 => self.below(9) as f32 - 4.0,
+            2 => f32::from_bits(self.next() as u32),
+            _ => (self.next() % 20_000) as f32 / 1000.0 - 10.0,
+        }
+    }
+
+    fn int(&mut self) -> u32 {
+        match self.below(4) {
+            0 => self.pick(&[0, 1, u32::MAX, 0x8000_0000, 31, 32]),
+            1 => self.next() as u32,
+            _ => (self.below(11) as i32 - 5) as u32,
+        }
+    }
+}
+
+// ---- The scalar f64 reference -------------------------------------------------------
+
+fn to_f64(bits: u32) -> f64 {
+    f32::from_bits(bits) as f64
+}
+
+fn from_f64(v: f64) -> u32 {
+    (v as f32).to_bits()
+}
+
+/// The reference's value of a unary operation (only the exactly rounded ones).
+fn ref_unary(op: UnaryOp, x: u32) -> u32 {
+    use UnaryOp::*;
+    let v = to_f64(x);
+    match op {
+        FNeg => x ^ 0x8000_0000,
+        FAbs => x & 0x7fff_ffff,
+        FSign => {
+            if v > 0.0 {
+                from_f64(1.0)
+            } else if v < 0.0 {
+                from_f64(-1.0)
+            } else {
+                x
+            }
+        }
+        Floor => from_f64(v.floor()),
+        Ceil => from_f64(v.ceil()),
+        Trunc => from_f64(v.trunc()),
+        Fract => from_f64(v - v.floor()),
+        RoundEven => from_f64(v.round_ties_even()),
+        Sqrt => from_f64(v.sqrt()),
+        Rcp => from_f64(1.0 / v),
+        Rsq => from_f64(1.0 / (v.sqrt() as f32 as f64)),
+        F32ToI32 => v as i32 as u32,
+        F32ToU32 => v as u32,
+        I32ToF32 => from_f64(x as i32 as f64),
+        U32ToF32 => from_f64(x as f64),
+        BoolToF32 => from_f64(x as f64),
+        F32ToBool => (v != 0.0) as u32,
+        INeg => (x as i32).wrapping_neg() as u32,
+        IAbs => (x as i32).wrapping_abs() as u32,
+        INot => !x,
+        BNot => (x == 0) as u32,
+        Bitcast => x,
+        Exp2 | Log2 | Sin | Cos => unreachable!("not generated"),
+    }
+}
+
+fn ref_binary(op: BinaryOp, x: u32, y: u32) -> u32 {
+    use BinaryOp::*;
+    let (a, b) = (to_f64(x), to_f64(y));
+    let (i, j) = (x as i32, y as i32);
+    match op {
+        FAdd => from_f64(a + b),
+        FSub => from_f64(a - b),
+        FMul => from_f64(a * b),
+        FDiv => from_f64(a / b),
+        FMin => {
+            if b < a {
+                y
+            } else {
+                x
+            }
+        }
+        FMax => {
+            if a < b {
+                y
+            } else {
+                x
+            }
+        }
+        FLt => (a < b) as u32,
+        FLe => (a <= b) as u32,
+        FEq => (a == b) as u32,
+        FNe => (a != b) as u32,
+        IAdd => i.wrapping_add(j) as u32,
+        ISub => i.wrapping_sub(j) as u32,
+        IMul => i.wrapping_mul(j) as u32,
+        IDiv => i.checked_div(j).unwrap_or(if j == 0 { 0 } else { i32::MIN }) as u32,
+        IRem => i.checked_rem(j).unwrap_or(0) as u32,
+        IMin => i.min(j) as u32,
+        IMax => i.max(j) as u32,
+        UDiv => x.checked_div(y).unwrap_or(0),
+        URem => x.checked_rem(y).unwrap_or(0),
+        UMin => x.min(y),
+        UMax => x.max(y),
+        ILt => (i < j) as u32,
+        ILe => (i <= j) as u32,
+        ULt => (x < y) as u32,
+        ULe => (x <= y) as u32,
+        IEq | BEq => (x == y) as u32,
+        INe => (x != y) as u32,
+        And | BAnd => x & y,
+        Or | BOr => x | y,
+        Xor | BXor => x ^ y,
+        Shl => x.wrapping_shl(y),
+        AShr => i.wrapping_shr(y) as u32,
+        LShr => x.wrapping_shr(y),
+    }
+}
+
+enum Flow {
+    Next,
+    Break,
+    Continue,
+    Return,
+    Discard,
+}
+
+struct Lane<'a> {
+    regs: Vec<u32>,
+    outputs: Vec<u32>,
+    inputs: Vec<u32>,
+    uniforms: &'a [u32],
+}
+
+impl Lane<'_> {
+    fn inst(&mut self, inst: &Inst) {
+        let r = |l: &Lane, r: Reg| l.regs[r.0 as usize];
+        let value = match *inst {
+            Inst::Const { value, .. } => value.bits(),
+            Inst::Input { slot, .. } => self.inputs[slot as usize],
+            Inst::Uniform { slot, .. } => self.uniforms[slot as usize],
+            Inst::Mov { src, .. } => r(self, src),
+            Inst::Unary { op, a, .. } => ref_unary(op, r(self, a)),
+            Inst::Binary { op, a, b, .. } => ref_binary(op, r(self, a), r(self, b)),
+            Inst::Mad { a, b, c, .. } => {
+                let product = to_f64(from_f64(to_f64(r(self, a)) * to_f64(r(self, b))));
+                from_f64(product + to_f64(r(self, c)))
+            }
+            Inst::Dot { n, a, b, .. } => {
+                let mut sum = from_f64(to_f64(r(self, a[0])) * to_f64(r(self, b[0])));
+                for k in 1..n as usize {
+                    let p = to_f64(from_f64(to_f64(r(self, a[k])) * to_f64(r(self, b[k]))));
+                    sum = from_f64(to_f64(sum) + p);
+                }
+                sum
+            }
+            Inst::Select { cond, a, b, .. } => {
+                if r(self, cond) != 0 {
+                    r(self, a)
+                } else {
+                    r(self, b)
+                }
+            }
+            Inst::Derivative { .. } | Inst::Sample { .. } | Inst::Fetch { .. } | Inst::Size { .. } => {
+                unreachable!("not generated")
+            }
+            Inst::Output { slot, src } => {
+                self.outputs[slot as usize] = r(self, src);
+                return;
+            }
+        };
+        self.regs[inst.dst().unwrap().0 as usize] = value;
+    }
+
+    fn block(&mut self, stmts: &[Stmt]) -> Flow {
+        for stmt in stmts {
+            let flow = match stmt {
+                Stmt::Inst(i) => {
+                    self.inst(i);
+                    Flow::Next
+                }
+                Stmt::If { cond, then, otherwise } => {
+                    if self.regs[cond.0 as usize] != 0 {
+                        self.block(then)
+                    } else {
+                        self.block(otherwise)
+                    }
+                }
+                Stmt::Loop { body } => {
+                    let mut flow = Flow::Next;
+                    for _ in 0..MAX_LOOP_ITERATIONS {
+                        match self.block(body) {
+                            Flow::Next | Flow::Continue => continue,
+                            Flow::Break => break,
+                            f @ (Flow::Return | Flow::Discard) => {
+                                flow = f;
+                                break;
+                            }
+                        }
+                    }
+                    flow
+                }
+                Stmt::Break => Flow::Break,
+                Stmt::Continue => Flow::Continue,
+                Stmt::Return => Flow::Return,
+                Stmt::Discard => Flow::Discard,
+            };
+            if !matches!(flow, Flow::Next) {
+                return flow;
+            }
+        }
+        Flow::Next
+    }
+}
+
+// ---- Random programs ---------------------------------------------------------------
+
+struct Generator {
+    rng: Rng,
+    program: Program,
+    /// Registers the random statements may write, by type.
+    pool: [Vec<Reg>; 4],
+    loops: usize,
+    depth: usize,
+    budget: usize,
+}
+
+fn type_index(t: Type) -> usize {
+    match t {
+        Type::F32 => 0,
+        Type::I32 => 1,
+        Type::U32 => 2,
+        Type::Bool => 3,
+    }
+}
+
+impl Generator {
+    fn new(seed: u64, stage: Stage) -> Generator {
+        let mut program = Program::new(stage);
+        let mut pool: [Vec<Reg>; 4] = Default::default();
+        for (t, n) in [(Type::F32, 6), (Type::I32, 3), (Type::U32, 2), (Type::Bool, 3)] {
+            for _ in 0..n {
+                pool[type_index(t)].push(program.register(t));
+            }
+        }
+        for t in [Type::F32, Type::F32, Type::F32, Type::I32, Type::U32] {
+            program.input(t);
+        }
+        program.uniform(Type::F32);
+        program.uniform(Type::I32);
+        for t in [Type::F32, Type::F32, Type::F32, Type::I32, Type::Bool] {
+            program.output(t);
+        }
+        Generator { rng: Rng(seed | 1), program, pool, loops: 0, depth: 0, budget: 60 }
+    }
+
+    fn reg(&mut self, t: Type) -> Reg {
+        let pool = &self.pool[type_index(t)];
+        pool[self.rng.below(pool.len())]
+    }
+
+    fn inst(&mut self) -> Inst {
+        use BinaryOp::*;
+        use UnaryOp::*;
+        let f = Type::F32;
+        match self.rng.below(10) {
+            0 => {
+                let t = self.rng.pick(&[Type::F32, Type::I32, Type::U32, Type::Bool]);
+                let value = match t {
+                    Type::F32 => Const::F32(self.rng.float()),
+                    Type::I32 => Const::I32(self.rng.int() as i32),
+                    Type::U32 => Const::U32(self.rng.int()),
+                    Type::Bool => Const::Bool(self.rng.chance(50)),
+                };
+                Inst::Const { dst: self.reg(t), value }
+            }
+            1 => {
+                let slot = self.rng.below(self.program.inputs.len()) as u16;
+                Inst::Input { dst: self.reg(self.program.inputs[slot as usize]), slot }
+            }
+            2 => {
+                let slot = self.rng.below(2) as u16;
+                Inst::Uniform { dst: self.reg(self.program.uniforms[slot as usize]), slot }
+            }
+            3 => {
+                let (op, from, to) = self.rng.pick(&[
+                    (FNeg, f, f),
+                    (FAbs, f, f),
+                    (FSign, f, f),
+                    (Floor, f, f),
+                    (Ceil, f, f),
+                    (Trunc, f, f),
+                    (Fract, f, f),
+                    (RoundEven, f, f),
+                    (Sqrt, f, f),
+                    (Rcp, f, f),
+                    (Rsq, f, f),
+                    (F32ToI32, f, Type::I32),
+                    (F32ToU32, f, Type::U32),
+                    (I32ToF32, Type::I32, f),
+                    (U32ToF32, Type::U32, f),
+                    (BoolToF32, Type::Bool, f),
+                    (F32ToBool, f, Type::Bool),
+                    (INeg, Type::I32, Type::I32),
+                    (IAbs, Type::I32, Type::I32),
+                    (INot, Type::U32, Type::U32),
+                    (BNot, Type::Bool, Type::Bool),
+                    (Bitcast, Type::I32, Type::U32),
+                ]);
+                Inst::Unary { op, dst: self.reg(to), a: self.reg(from) }
+            }
+            4..=6 => {
+                let (i, u, b) = (Type::I32, Type::U32, Type::Bool);
+                let (op, operand, result) = self.rng.pick(&[
+                    (FAdd, f, f),
+                    (FSub, f, f),
+                    (FMul, f, f),
+                    (FDiv, f, f),
+                    (FMin, f, f),
+                    (FMax, f, f),
+                    (FLt, f, b),
+                    (FLe, f, b),
+                    (FEq, f, b),
+                    (FNe, f, b),
+                    (IAdd, i, i),
+                    (ISub, i, i),
+                    (IMul, i, i),
+                    (IDiv, i, i),
+                    (IRem, i, i),
+                    (IMin, i, i),
+                    (IMax, i, i),
+                    (UDiv, u, u),
+                    (URem, u, u),
+                    (UMin, u, u),
+                    (UMax, u, u),
+                    (ILt, i, b),
+                    (ILe, i, b),
+                    (ULt, u, b),
+                    (ULe, u, b),
+                    (IEq, i, b),
+                    (INe, u, b),
+                    (And, i, i),
+                    (Or, u, u),
+                    (Xor, i, i),
+                    (Shl, u, u),
+                    (AShr, i, i),
+                    (LShr, u, u),
+                    (BAnd, b, b),
+                    (BOr, b, b),
+                    (BXor, b, b),
+                    (BEq, b, b),
+                ]);
+                Inst::Binary { op, dst: self.reg(result), a: self.reg(operand), b: self.reg(operand) }
+            }
+            7 => Inst::Mad { dst: self.reg(f), a: self.reg(f), b: self.reg(f), c: self.reg(f) },
+            8 => {
+                let n = 2 + self.rng.below(3) as u8;
+                Inst::Dot { dst: self.reg(f), n, a: [0; 4].map(|_| self.reg(f)), b: [0; 4].map(|_| self.reg(f)) }
+            }
+            _ => {
+                let t = self.rng.pick(&[Type::F32, Type::I32, Type::Bool]);
+                if self.rng.chance(50) {
+                    Inst::Select { dst: self.reg(t), cond: self.reg(Type::Bool), a: self.reg(t), b: self.reg(t) }
+                } else {
+                    let slot = self.rng.below(self.program.outputs.len()) as u16;
+                    Inst::Output { slot, src: self.reg(self.program.outputs[slot as usize]) }
+                }
+            }
+        }
+    }
+
+    fn block(&mut self) -> Vec<Stmt> {
+        let mut out = Vec::new();
+        let n = 1 + self.rng.below(6);
+        for _ in 0..n {
+            if self.budget == 0 {
+                break;
+            }
+            self.budget -= 1;
+            let roll = self.rng.below(100);
+            if roll < 12 && self.depth < 4 {
+                self.depth += 1;
+                let cond = self.reg(Type::Bool);
+                let then = self.block();
+                let otherwise = if self.rng.chance(50) { self.block() } else { Vec::new() };
+                out.push(Stmt::If { cond, then, otherwise });
+                self.depth -= 1;
+            } else if roll < 18 && self.depth < 4 {
+                out.extend(self.counted_loop());
+            } else if roll < 21 && self.loops > 0 {
+                let stmt = if self.rng.chance(50) { Stmt::Break } else { Stmt::Continue };
+                out.push(Stmt::If { cond: self.reg(Type::Bool), then: vec![stmt], otherwise: vec![] });
+            } else if roll < 23 {
+                let stmt = if self.program.stage == Stage::Fragment && self.rng.chance(60) {
+                    Stmt::Discard
+                } else {
+                    Stmt::Return
+                };
+                out.push(Stmt::If { cond: self.reg(Type::Bool), then: vec![stmt], otherwise: vec![] });
+            } else {
+                out.push(Stmt::Inst(self.inst()));
+            }
+        }
+        out
+    }
+
+    /// `counter = 0; loop { counter += 1; if limit < counter { break } … }`: a loop that
+    /// ends after at most `limit` iterations whatever its random body does (the counter is
+    /// outside the random statements' pool).
+    fn counted_loop(&mut self) -> Vec<Stmt> {
+        let counter = self.program.register(Type::I32);
+        let one = self.program.register(Type::I32);
+        let limit = self.program.register(Type::I32);
+        let done = self.program.register(Type::Bool);
+        let n = self.rng.below(5) as i32;
+        self.depth += 1;
+        self.loops += 1;
+        let mut body = vec![
+            Stmt::Inst(Inst::Binary { op: BinaryOp::IAdd, dst: counter, a: counter, b: one }),
+            Stmt::Inst(Inst::Binary { op: BinaryOp::ILt, dst: done, a: limit, b: counter }),
+            Stmt::If { cond: done, then: vec![Stmt::Break], otherwise: vec![] },
+        ];
+        body.extend(self.block());
+        self.loops -= 1;
+        self.depth -= 1;
+        vec![
+            Stmt::Inst(Inst::Const { dst: counter, value: Const::I32(0) }),
+            Stmt::Inst(Inst::Const { dst: one, value: Const::I32(1) }),
+            Stmt::Inst(Inst::Const { dst: limit, value: Const::I32(n) }),
+            Stmt::Loop { body },
+        ]
+    }
+
+    fn program(mut self) -> Program {
+        let mut body = Vec::new();
+        for (slot, reg) in [(0, 0), (1, 1), (2, 2)] {
+            body.push(Stmt::Inst(Inst::Input { dst: self.pool[0][reg], slot }));
+        }
+        body.push(Stmt::Inst(Inst::Input { dst: self.pool[1][0], slot: 3 }));
+        body.push(Stmt::Inst(Inst::Input { dst: self.pool[2][0], slot: 4 }));
+        body.push(Stmt::Inst(Inst::Binary {
+            op: BinaryOp::FLt,
+            dst: self.pool[3][0],
+            a: self.pool[0][0],
+            b: self.pool[0][1],
+        }));
+        while self.budget > 0 {
+            let block = self.block();
+            body.extend(block);
+        }
+        for slot in 0..self.program.outputs.len() as u16 {
+            let src = self.reg(self.program.outputs[slot as usize]);
+            body.push(Stmt::Inst(Inst::Output { slot, src }));
+        }
+        self.program.body = body;
+        self.program
+    }
+}
+
+fn same_word(a: u32, b: u32, ty: Type) -> bool {
+    a == b || (ty == Type::F32 && f32::from_bits(a).is_nan() && f32::from_bits(b).is_nan())
+}
+
+#[test]
+fn random_programs_match_the_scalar_f64_reference_lane_by_lane() {
+    let mut rng = Rng(0x5eed_1234_abcd_9876);
+    let mut executor = Executor::new();
+    let mut discards = 0;
+    let mut loops_run = 0;
+    for case in 0..3000u64 {
+        let stage = if case % 2 == 0 { Stage::Fragment } else { Stage::Vertex };
+        let program = Generator::new(rng.next(), stage).program();
+        validate(&program).unwrap_or_else(|e| panic!("case {case}: {e}\n{}", super::dump::dump(&program)));
+        loops_run += program.body.iter().filter(|s| matches!(s, Stmt::Loop { .. })).count();
+        let inputs: Vec<Word> = program
+            .inputs
+            .iter()
+            .map(|t| std::array::from_fn(|_| if *t == Type::F32 { rng.float().to_bits() } else { rng.int() }))
+            .collect();
+        let uniforms = [rng.float().to_bits(), rng.int()];
+        let mut outputs = vec![[0u32; LANES]; program.outputs.len()];
+        let lanes = if rng.chance(70) { ALL_LANES } else { rng.next() as u16 };
+        let alive = executor.run(
+            &program,
+            &mut Io { inputs: &inputs, uniforms: &uniforms, outputs: &mut outputs, textures: &NoTextures },
+            lanes,
+        );
+        for lane in 0..LANES {
+            if lanes >> lane & 1 == 0 {
+                assert!(outputs.iter().all(|o| o[lane] == 0), "case {case}: lane {lane} was not running");
+                assert_eq!(alive >> lane & 1, 0);
+                continue;
+            }
+            let mut reference = Lane {
+                regs: vec![0; program.registers.len()],
+                outputs: vec![0; program.outputs.len()],
+                inputs: inputs.iter().map(|w| w[lane]).collect(),
+                uniforms: &uniforms,
+            };
+            let discarded = matches!(reference.block(&program.body), Flow::Discard);
+            discards += discarded as usize;
+            assert_eq!(
+                alive >> lane & 1 == 0,
+                discarded,
+                "case {case}, lane {lane}: discard differs\n{}",
+                super::dump::dump(&program)
+            );
+            for (slot, ty) in program.outputs.iter().enumerate() {
+                let (got, want) = (outputs[slot][lane], reference.outputs[slot]);
+                assert!(
+                    same_word(got, want, *ty),
+                    "case {case}, lane {lane}, output {slot}: {got:#x} vs reference {want:#x}\n{}",
+                    super::dump::dump(&program)
+                );
+            }
+        }
+    }
+    // The generator exercised what it is for.
+    assert!(discards > 1000 && loops_run > 1000, "discards {discards}, loops {loops_run}");
+}
+
+#[test]
+fn a_loop_that_never_ends_stops_at_the_iteration_bound() {
+    let mut p = Program::new(Stage::Fragment);
+    let count = p.register(Type::I32);
+    let one = p.register(Type::I32);
+    p.output(Type::I32);
+    p.body = vec![
+        Stmt::Inst(Inst::Const { dst: one, value: Const::I32(1) }),
+        Stmt::Loop { body: vec![Stmt::Inst(Inst::Binary { op: BinaryOp::IAdd, dst: count, a: count, b: one })] },
+        Stmt::Inst(Inst::Output { slot: 0, src: count }),
+    ];
+    validate(&p).unwrap();
+    let mut out = vec![[0u32; LANES]];
+    let alive = Executor::new().run(
+        &p,
+        &mut Io { inputs: &[], uniforms: &[], outputs: &mut out, textures: &NoTextures },
+        ALL_LANES,
+    );
+    assert_eq!(alive, ALL_LANES);
+    assert_eq!(out[0], [MAX_LOOP_ITERATIONS; LANES]);
+}
+
+#[test]
+fn derivatives_are_the_differences_across_each_quad() {
+    let mut p = Program::new(Stage::Fragment);
+    let x = p.register(Type::F32);
+    let dx = p.register(Type::F32);
+    let dy = p.register(Type::F32);
+    p.input(Type::F32);
+    p.output(Type::F32);
+    p.output(Type::F32);
+    p.body = vec![
+        Stmt::Inst(Inst::Input { dst: x, slot: 0 }),
+        Stmt::Inst(Inst::Derivative { dst: dx, axis: Axis::X, a: x }),
+        Stmt::Inst(Inst::Derivative { dst: dy, axis: Axis::Y, a: x }),
+        Stmt::Inst(Inst::Output { slot: 0, src: dx }),
+        Stmt::Inst(Inst::Output { slot: 1, src: dy }),
+    ];
+    validate(&p).unwrap();
+    // x² + 10·y² over the block: per quad, the right pixel minus the left on the lane's own
+    // row, the lower pixel minus the upper in the lane's own column.
+    let value = |c: usize, r: usize| (c * c + 10 * r * r) as f32;
+    let input: Word = std::array::from_fn(|i| value(i & 3, i >> 2).to_bits());
+    let mut out = vec![[0u32; LANES]; 2];
+    Executor::new().run(
+        &p,
+        &mut Io { inputs: &[input], uniforms: &[], outputs: &mut out, textures: &NoTextures },
+        ALL_LANES,
+    );
+    for (i, (dx, dy)) in out[0].iter().zip(&out[1]).enumerate() {
+        let (c, r) = (i & 3, i >> 2);
+        let (c0, r0) = (c & !1, r & !1);
+        assert_eq!(f32::from_bits(*dx), value(c0 + 1, r) - value(c0, r), "ddx at lane {i}");
+        assert_eq!(f32::from_bits(*dy), value(c, r0 + 1) - value(c, r0), "ddy at lane {i}");
+    }
+}
+
+/// A texture whose texel at (s, t) is (s + t, s·t, unit, λ or −1) and which records what it
+/// was asked.
+struct Probe(std::cell::RefCell<Vec<(u8, u16, bool)>>);
+
+impl Textures for Probe {
+    fn sample(&self, r: &SampleRequest<'_>, out: &mut [Word; 4]) {
+        self.0.borrow_mut().push((r.unit, r.lanes, r.projective));
+        let lod = match r.lod {
+            LodLanes::Explicit(w) => Some(w),
+            _ => None,
+        };
+        for i in 0..LANES {
+            let (s, t) = (f32::from_bits(r.coords[0][i]), f32::from_bits(r.coords[1][i]));
+            out[0][i] = (s + t).to_bits();
+            out[1][i] = (s * t).to_bits();
+            out[2][i] = (r.unit as f32).to_bits();
+            out[3][i] = lod.map_or((-1.0f32).to_bits(), |w| w[i]);
+        }
+    }
+
+    fn fetch(&self, unit: u8, _: u8, coords: &[Word; 3], _: &Word, lanes: u16, out: &mut [Word; 4]) {
+        self.0.borrow_mut().push((unit, lanes, false));
+        out[0] = coords[0].map(|c| (c as i32 as f32).to_bits());
+    }
+
+    fn size(&self, unit: u8, lod: &Word, lanes: u16, out: &mut [Word; 3]) {
+        self.0.borrow_mut().push((unit, lanes, false));
+        out[0] = lod.map(|l| 64 >> l);
+    }
+}
+
+#[test]
+fn texture_lookups_ask_the_sampler_with_the_running_lanes_and_write_only_those() {
+    let mut p = Program::new(Stage::Fragment);
+    let s = p.register(Type::F32);
+    let t = p.register(Type::F32);
+    let lod = p.register(Type::F32);
+    let texel: [Reg; 4] = std::array::from_fn(|_| p.register(Type::F32));
+    let take = p.register(Type::Bool);
+    let ilod = p.register(Type::I32);
+    let size: [Reg; 3] = std::array::from_fn(|_| p.register(Type::I32));
+    for _ in 0..2 {
+        p.input(Type::F32);
+    }
+    for _ in 0..5 {
+        p.output(Type::F32);
+    }
+    p.output(Type::I32);
+    let sample = |unit, lod| Inst::Sample {
+        dst: texel,
+        unit,
+        n: 2,
+        coords: [s, t, s, s],
+        projective: false,
+        lod,
+        compare: None,
+    };
+    p.body = vec![
+        Stmt::Inst(Inst::Input { dst: s, slot: 0 }),
+        Stmt::Inst(Inst::Input { dst: t, slot: 1 }),
+        Stmt::Inst(Inst::Const { dst: lod, value: Const::F32(2.5) }),
+        Stmt::Inst(sample(3, Lod::Implicit)),
+        // Lanes whose s is below 2 look up again with an explicit level on unit 1.
+        Stmt::Inst(Inst::Const { dst: texel[3], value: Const::F32(2.0) }),
+        Stmt::Inst(Inst::Binary { op: BinaryOp::FLt, dst: take, a: s, b: texel[3] }),
+        Stmt::Inst(sample(3, Lod::Implicit)),
+        Stmt::If { cond: take, then: vec![Stmt::Inst(sample(1, Lod::Explicit(lod)))], otherwise: vec![] },
+        Stmt::Inst(Inst::Const { dst: ilod, value: Const::I32(2) }),
+        Stmt::Inst(Inst::Size { dst: size, unit: 0, lod: ilod }),
+        Stmt::Inst(Inst::Output { slot: 0, src: texel[0] }),
+        Stmt::Inst(Inst::Output { slot: 1, src: texel[1] }),
+        Stmt::Inst(Inst::Output { slot: 2, src: texel[2] }),
+        Stmt::Inst(Inst::Output { slot: 3, src: texel[3] }),
+        Stmt::Inst(Inst::Output { slot: 5, src: size[0] }),
+    ];
+    validate(&p).unwrap();
+    let inputs: [Word; 2] = [std::array::from_fn(|i| (i as f32 * 0.25).to_bits()), [1.5f32.to_bits(); LANES]];
+    let mut out = vec![[0u32; LANES]; 6];
+    let probe = Probe(Default::default());
+    let lanes = 0x7fff;
+    Executor::new().run(&p, &mut Io { inputs: &inputs, uniforms: &[], outputs: &mut out, textures: &probe }, lanes);
+    // s = i/4 < 2 for lanes 0..8.
+    assert_eq!(*probe.0.borrow(), vec![(3, lanes, false), (3, lanes, false), (1, 0xff, false), (0, lanes, false)]);
+    for (i, size) in out[5].iter().enumerate().take(15) {
+        let s = i as f32 * 0.25;
+        let texel = [out[0][i], out[1][i], out[2][i], out[3][i]].map(f32::from_bits);
+        let (unit, lod) = if i < 8 { (1.0, 2.5) } else { (3.0, -1.0) };
+        assert_eq!(texel, [s + 1.5, s * 1.5, unit, lod], "lane {i}");
+        assert_eq!(*size, 16, "size of level 2 at lane {i}");
+    }
+    assert_eq!(out.iter().map(|o| o[15]).collect::<Vec<_>>(), vec![0; 6], "lane 15 was not running");
+}
