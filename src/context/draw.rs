@@ -145,7 +145,10 @@ impl Context {
                 if let Some(old) = other {
                     self.run_scene(old);
                 }
-                Scene::new(width, height)
+                match self.spare_scene.take() {
+                    Some(spare) if spare.size() == (width, height) => spare,
+                    _ => Scene::new(width, height),
+                }
             }
         }
     }
@@ -157,11 +160,15 @@ impl Context {
         }
     }
 
-    fn run_scene(&mut self, scene: Scene) {
+    /// Rasterizes `scene` into the bound framebuffer, then keeps it, emptied, for the next
+    /// draws to record into ([`Scene::clear`] says what it keeps).
+    fn run_scene(&mut self, mut scene: Scene) {
         let _ = self.with_framebuffer(|fb| {
             if scene.size() == (fb.width(), fb.height()) {
                 scene.execute(fb);
             }
         });
+        scene.clear();
+        self.spare_scene = Some(scene);
     }
 }

@@ -18,6 +18,7 @@ use super::jobs::pixels::PixelRectJob;
 use super::jobs::point::PointJob;
 use super::jobs::smooth::SmoothJob;
 use super::jobs::triangle::TriangleJob;
+use super::triangle::TriangleSetup;
 use crate::fragment::block::BlockPipeline;
 use crate::fragment::pipeline::DrawState;
 use crate::framebuffer::{ColorFormat, ColorSlot, Framebuffer, Rect};
@@ -51,6 +52,8 @@ pub struct Scene {
     /// place) the index of each one's draw state.
     primitives: Vec<Primitive>,
     primitive_states: Vec<u32>,
+    /// Per draw state, [`Scene::overwrites`].
+    overwriting: Vec<bool>,
     /// Per tile (row-major), indices into `primitives` in submission order.
     bins: Vec<Vec<u32>>,
     /// How many indices the bins hold in all.
@@ -70,6 +73,7 @@ impl Scene {
             states: Vec::new(),
             primitives: Vec::new(),
             primitive_states: Vec::new(),
+            overwriting: Vec::new(),
             bins: vec![Vec::new(); tiles_x * tiles_y],
             binned: 0,
         }
@@ -120,6 +124,7 @@ impl Scene {
         if let Some(i) = self.states[recent..].iter().rposition(|s| **s == state) {
             return ((recent + i) as u32, true);
         }
+        self.overwriting.push(Self::overwrites(&state));
         self.states.push(Arc::new(state));
         ((self.states.len() - 1) as u32, false)
     }
@@ -134,10 +139,14 @@ impl Scene {
     #[inline]
     pub fn add(&mut self, state: u32, bounds: Rect, primitive: Primitive) {
         let drawn = &self.states[state as usize];
-        let clip = if matches!(primitive, Primitive::Triangle(_)) { drawn.fill_clip } else { drawn.clip };
+        let triangle = match &primitive {
+            Primitive::Triangle(job) => Some(job),
+            _ => None,
+        };
+        let clip = if triangle.is_some() { drawn.fill_clip } else { drawn.clip };
         // Rasterized per sample, a triangle may cover samples of pixels whose centre it misses.
-        let bounds = match &primitive {
-            Primitive::Triangle(job) if drawn.multisample.is_some_and(|m| m.per_sample()) => job.sample_bounds(),
+        let bounds = match triangle {
+            Some(job) if drawn.multisample.is_some_and(|m| m.per_sample()) => job.sample_bounds(),
             _ => bounds,
         };
         let r = bounds.intersect(clip);
@@ -147,41 +156,53 @@ impl Scene {
         let index = self.primitives.len() as u32;
         let t = TILE_SIZE as i32;
         let (rows, columns) = ((r.y0 / t)..=((r.y1 - 1) / t), (r.x0 / t)..=((r.x1 - 1) / t));
-        let opaque = match &primitive {
-            Primitive::Triangle(job) if self.overwrites(drawn) => Some(job.setup.clone()),
-            _ => None,
-        };
-        self.primitives.push(primitive);
-        self.primitive_states.push(state);
         self.binned += rows.clone().count() * columns.clone().count();
-        let bounds = Rect::from_xywh(0, 0, self.width as i32, self.height as i32);
+        // The tiles are binned before the job moves into the scene, so the opaque test reads
+        // its edges in place (no copy of the setup per triangle).
+        let opaque = triangle.filter(|_| self.overwriting[state as usize] && self.writes_every_target(state));
         for ty in rows {
             for tx in columns.clone() {
                 let bin = ty as usize * self.tiles_x + tx as usize;
-                if let Some(setup) = &opaque {
-                    let tile = Rect::from_xywh(tx * t, ty * t, t, t).intersect(bounds);
-                    let inside = tile.intersect(r) == tile;
-                    let corners = [
-                        (tile.x0, tile.y0),
-                        (tile.x1 - 1, tile.y0),
-                        (tile.x0, tile.y1 - 1),
-                        (tile.x1 - 1, tile.y1 - 1),
-                    ];
-                    if inside && corners.iter().all(|&(x, y)| setup.covers(x, y)) && self.droppable(bin, drawn) {
-                        self.binned -= self.bins[bin].len();
-                        self.bins[bin].clear();
-                    }
+                if let Some(job) = opaque {
+                    self.drop_covered_tile(bin, tx * t, ty * t, r, &job.setup, state);
                 }
                 self.bins[bin].push(index);
             }
         }
+        self.primitives.push(primitive);
+        self.primitive_states.push(state);
+    }
+
+    /// Empties tile `bin` (origin `(x, y)`) when the opaque triangle `setup`, whose binned
+    /// box is `r`, covers all of it and nothing binned there before must survive it.
+    #[inline]
+    fn drop_covered_tile(&mut self, bin: usize, x: i32, y: i32, r: Rect, setup: &TriangleSetup, state: u32) {
+        let t = TILE_SIZE as i32;
+        let tile = Rect::from_xywh(x, y, t, t).intersect(Rect::from_xywh(0, 0, self.width as i32, self.height as i32));
+        if tile.intersect(r) != tile {
+            return;
+        }
+        let corners = [(tile.x0, tile.y0), (tile.x1 - 1, tile.y0), (tile.x0, tile.y1 - 1), (tile.x1 - 1, tile.y1 - 1)];
+        if corners.iter().all(|&(x, y)| setup.covers(x, y)) && self.droppable(bin, &self.states[state as usize]) {
+            self.binned -= self.bins[bin].len();
+            self.bins[bin].clear();
+        }
+    }
+
+    /// Whether state `state`'s color masks cover every target of the scene so far (the part
+    /// of [`Scene::overwrites`] that changes as later draws add targets).
+    #[inline]
+    fn writes_every_target(&self, state: u32) -> bool {
+        self.states[state as usize].fragment.color_masks.len() == self.targets.len()
     }
 
     /// Whether a filled triangle drawn with `state` writes every pixel it covers
     /// unconditionally, replacing whatever the scene drew there before: single-sampled, no
     /// alpha or stencil test, no depth test or one that always passes, no blending, logic
-    /// op or stipple, every colour channel of every target of the scene written.
-    fn overwrites(&self, state: &DrawState) -> bool {
+    /// op or stipple, every colour channel of its color masks written. (Whether those masks
+    /// cover every target of the scene is checked per primitive: a later draw may add one.)
+    /// Computed once per state, when it is added ([`Scene::add_state`]).
+    fn overwrites(state: &DrawState) -> bool {
         let f = &state.fragment;
         state.multisample.is_none()
             && state.polygon_stipple.is_none()
@@ -190,7 +211,6 @@ impl Scene {
             && f.logic_op.is_none()
             && f.depth.is_none_or(|d| d.func == crate::gl::CompareFunc::Always)
             && f.blend.iter().all(|b| b.is_none())
-            && f.color_masks.len() == self.targets.len()
             && f.color_masks.iter().all(|m| *m == Some([true; 4]))
     }
 
@@ -250,13 +270,13 @@ impl Scene {
 
     /// Renders the scene into `framebuffer` (which must have the scene's size) on
     /// `thread_count()` threads.
-    pub fn execute(self, framebuffer: &mut Framebuffer) {
+    pub fn execute(&self, framebuffer: &mut Framebuffer) {
         self.execute_on(framebuffer, thread_count());
     }
 
     /// Renders the scene on up to `threads` threads (the caller's included): the tile
     /// workers render each tile's bin in submission order, each entry by its job.
-    pub fn execute_on(self, framebuffer: &mut Framebuffer, threads: usize) {
+    pub fn execute_on(&self, framebuffer: &mut Framebuffer, threads: usize) {
         if self.primitives.is_empty() {
             return;
         }
@@ -299,6 +319,29 @@ impl Scene {
         if framebuffer.samples() > 1 {
             framebuffer.resolve(&self.targets, self.drawn_area());
         }
+    }
+
+    /// Empties the scene for the next flush interval, keeping the storage of its primitives
+    /// and bins up to about [`Scene::BUDGET_BYTES`]: the next scene then records into
+    /// memory already mapped instead of a fresh allocation the kernel faults in page by page
+    /// (on small_triangles at 1024² that is 14 000 page faults a frame), and what stays
+    /// allocated between scenes is bounded by the budget a scene may reach anyway.
+    pub fn clear(&mut self) {
+        let kept_primitives = Self::BUDGET_BYTES / (std::mem::size_of::<Primitive>() + std::mem::size_of::<u32>());
+        self.targets.clear();
+        self.states.clear();
+        self.overwriting.clear();
+        self.primitives.clear();
+        self.primitives.shrink_to(kept_primitives);
+        self.primitive_states.clear();
+        self.primitive_states.shrink_to(kept_primitives);
+        // The bins' entries count against the budget too: a tile keeps at most its share.
+        let kept_entries = Self::BUDGET_BYTES / std::mem::size_of::<u32>() / self.bins.len().max(1);
+        for bin in &mut self.bins {
+            bin.clear();
+            bin.shrink_to(kept_entries);
+        }
+        self.binned = 0;
     }
 
     /// The smallest rectangle holding every tile with something binned into it.
