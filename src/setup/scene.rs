@@ -58,6 +58,9 @@ pub struct Scene {
     bins: Vec<Vec<u32>>,
     /// How many indices the bins hold in all.
     binned: usize,
+    /// A deferred part ([`Scene::deferred_part`]): what [`Scene::add`] is given, kept in
+    /// order to be binned by [`Scene::append`].
+    deferred: Option<Vec<(u32, Rect, Primitive)>>,
 }
 
 impl Scene {
@@ -76,6 +79,36 @@ impl Scene {
             overwriting: Vec::new(),
             bins: vec![Vec::new(); tiles_x * tiles_y],
             binned: 0,
+            deferred: None,
+        }
+    }
+
+    /// An empty part of this scene that another thread may record filled triangles into
+    /// (through [`Scene::add`]) while this scene records the draw's earlier primitives:
+    /// it keeps what it is given, unbinned, and [`Scene::append`] bins it afterwards, in
+    /// order, exactly as if it had been added here (the bins, the tiles an opaque triangle
+    /// drops and so the bytes are the same). Only [`Scene::add`] may be used on it.
+    pub fn deferred_part(&self, capacity: usize) -> Scene {
+        Scene {
+            width: self.width,
+            height: self.height,
+            tiles_x: self.tiles_x,
+            targets: Vec::new(),
+            states: Vec::new(),
+            primitives: Vec::new(),
+            primitive_states: Vec::new(),
+            overwriting: Vec::new(),
+            bins: Vec::new(),
+            binned: 0,
+            deferred: Some(Vec::with_capacity(capacity)),
+        }
+    }
+
+    /// Bins the primitives recorded into `part` (from [`Scene::deferred_part`]) after
+    /// everything recorded here so far.
+    pub fn append(&mut self, part: Scene) {
+        for (state, bounds, primitive) in part.deferred.into_iter().flatten() {
+            self.add(state, bounds, primitive);
         }
     }
 
@@ -138,6 +171,9 @@ impl Scene {
     /// exclusive max), under draw state `state`.
     #[inline]
     pub fn add(&mut self, state: u32, bounds: Rect, primitive: Primitive) {
+        if let Some(deferred) = &mut self.deferred {
+            return deferred.push((state, bounds, primitive));
+        }
         let drawn = &self.states[state as usize];
         let triangle = match &primitive {
             Primitive::Triangle(job) => Some(job),
@@ -240,6 +276,7 @@ impl Scene {
         primitive: Primitive,
         columns: impl Fn(i32, i32) -> Option<(i32, i32)>,
     ) {
+        debug_assert!(self.deferred.is_none(), "a deferred part records filled triangles only");
         let clip = self.states[state as usize].clip;
         let r = bounds.intersect(clip);
         if r.is_empty() {
@@ -371,6 +408,105 @@ mod tests {
         fragment.alpha = alpha.then_some(AlphaTest { func: CompareFunc::Always, reference: 0.0, unorm8: true });
         let clip = Rect::from_xywh(0, 0, 4, 1);
         DrawState { fragment, clip, fill_clip: clip, polygon_stipple: None, samples_passed: None, multisample: None }
+    }
+
+    /// A triangle job through three window points, one color.
+    fn triangle(points: [[f32; 2]; 3]) -> Primitive {
+        use crate::gl::limits::MAX_TEXTURE_UNITS;
+        use crate::setup::jobs::triangle::WindowVertex;
+        let v = points.map(|[x, y]| WindowVertex {
+            x,
+            y,
+            z: 0.5,
+            inv_w: 1.0,
+            color: [1.0, 0.5, 0.25, 1.0],
+            secondary_color: [0.0; 4],
+            tex_coords: [[0.0; 4]; MAX_TEXTURE_UNITS],
+            fog_coord: 0.0,
+        });
+        Primitive::Triangle(TriangleJob::new(v, None, 0.0, &[]).expect("not degenerate"))
+    }
+
+    /// What a scene has binned: per tile, the setups of its entries in order.
+    fn binned(scene: &Scene) -> Vec<Vec<TriangleSetup>> {
+        let setup = |i: &u32| match &scene.primitives[*i as usize] {
+            Primitive::Triangle(job) => job.setup.clone(),
+            _ => unreachable!("triangles only"),
+        };
+        scene.bins.iter().map(|bin| bin.iter().map(setup).collect()).collect()
+    }
+
+    #[test]
+    fn a_deferred_part_appended_bins_as_if_added_in_place() {
+        // Opaque state (no depth test): a triangle covering a whole tile drops what the tile
+        // held, also when the covering triangle comes from the deferred part.
+        let opaque = || {
+            let mut s = state(false);
+            s.fragment.depth = None;
+            s.clip = Rect::from_xywh(0, 0, 200, 130);
+            s.fill_clip = s.clip;
+            s
+        };
+        let triangles: Vec<[[f32; 2]; 3]> = vec![
+            [[1.0, 1.0], [150.0, 2.5], [20.0, 120.0]],
+            [[70.0, 3.0], [90.0, 60.0], [60.0, 50.0]],
+            [[-10.0, -10.0], [300.0, -10.0], [-10.0, 300.0]],
+            [[5.0, 70.0], [190.0, 66.0], [100.0, 129.0]],
+            [[130.0, 10.0], [199.0, 10.0], [160.0, 40.0]],
+        ];
+        for split in 0..=triangles.len() {
+            let mut whole = Scene::new(200, 130);
+            let mut parted = Scene::new(200, 130);
+            for scene in [&mut whole, &mut parted] {
+                scene.target_index(ColorSlot::FrontLeft);
+                assert_eq!(scene.add_state(opaque()), (0, false));
+            }
+            for &t in &triangles {
+                let p = triangle(t);
+                let bounds = match &p {
+                    Primitive::Triangle(job) => job.bounds(),
+                    _ => unreachable!(),
+                };
+                whole.add(0, bounds, p);
+            }
+            let mut later = parted.deferred_part(4);
+            for (i, &t) in triangles.iter().enumerate() {
+                let p = triangle(t);
+                let bounds = match &p {
+                    Primitive::Triangle(job) => job.bounds(),
+                    _ => unreachable!(),
+                };
+                if i < split {
+                    parted.add(0, bounds, p);
+                } else {
+                    later.add(0, bounds, p);
+                }
+            }
+            assert!(later.bins.is_empty() && later.primitives.is_empty(), "a deferred part bins nothing");
+            parted.append(later);
+            assert_eq!(binned(&parted), binned(&whole), "split after {split} triangles");
+            assert_eq!((parted.binned, parted.primitives.len()), (whole.binned, whole.primitives.len()));
+        }
+        // The big triangle (x + y < 290) drops what the first two left in every tile it
+        // covers whole; tile (2, 1), pixels x 128..192, y 64..128, it does not (its far
+        // corner's centre sums to 319) and keeps the first triangle before it.
+        let whole = {
+            let mut s = Scene::new(200, 130);
+            s.target_index(ColorSlot::FrontLeft);
+            s.add_state(opaque());
+            for &t in &triangles[..3] {
+                let p = triangle(t);
+                let bounds = match &p {
+                    Primitive::Triangle(job) => job.bounds(),
+                    _ => unreachable!(),
+                };
+                s.add(0, bounds, p);
+            }
+            s
+        };
+        let mut expected = vec![vec![2]; 12];
+        expected[6] = vec![0, 2];
+        assert_eq!(whole.bins, expected);
     }
 
     #[test]
