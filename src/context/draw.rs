@@ -121,7 +121,6 @@ impl Context {
                 pipeline::draw(&mut scene, state_index, &geometry, mode, &clip_vertices, part, stipple)
             }
         };
-        drop(input);
         self.end_part(scene, stipple, part);
     }
 
