@@ -78,6 +78,8 @@ pub struct Context {
     read_drawable: Option<Arc<Mutex<Drawable>>>,
     /// Primitives recorded since the last flush point.
     scene: Option<crate::setup::Scene>,
+    /// The last rendered scene, emptied: the next scene records into its storage.
+    spare_scene: Option<crate::setup::Scene>,
     /// Viewport and scissor are initialised to the drawable's size at the first bind only.
     bound_once: bool,
     /// Immediate mode and client vertex arrays (`vertex_input`).
@@ -116,6 +118,7 @@ impl Context {
             drawable: None,
             read_drawable: None,
             scene: None,
+            spare_scene: None,
             bound_once: false,
             vertex_input: vertex_input::VertexInput::default(),
             buffers: Default::default(),

@@ -18,6 +18,7 @@ use super::jobs::pixels::PixelRectJob;
 use super::jobs::point::PointJob;
 use super::jobs::smooth::SmoothJob;
 use super::jobs::triangle::TriangleJob;
+use super::triangle::TriangleSetup;
 use crate::fragment::block::BlockPipeline;
 use crate::fragment::pipeline::DrawState;
 use crate::framebuffer::{ColorFormat, ColorSlot, Framebuffer, Rect};
@@ -51,10 +52,15 @@ pub struct Scene {
     /// place) the index of each one's draw state.
     primitives: Vec<Primitive>,
     primitive_states: Vec<u32>,
+    /// Per draw state, [`Scene::overwrites`].
+    overwriting: Vec<bool>,
     /// Per tile (row-major), indices into `primitives` in submission order.
     bins: Vec<Vec<u32>>,
     /// How many indices the bins hold in all.
     binned: usize,
+    /// A deferred part ([`Scene::deferred_part`]): what [`Scene::add`] is given, kept in
+    /// order to be binned by [`Scene::append`].
+    deferred: Option<Vec<(u32, Rect, Primitive)>>,
 }
 
 impl Scene {
@@ -70,8 +76,39 @@ impl Scene {
             states: Vec::new(),
             primitives: Vec::new(),
             primitive_states: Vec::new(),
+            overwriting: Vec::new(),
             bins: vec![Vec::new(); tiles_x * tiles_y],
             binned: 0,
+            deferred: None,
+        }
+    }
+
+    /// An empty part of this scene that another thread may record filled triangles into
+    /// (through [`Scene::add`]) while this scene records the draw's earlier primitives:
+    /// it keeps what it is given, unbinned, and [`Scene::append`] bins it afterwards, in
+    /// order, exactly as if it had been added here (the bins, the tiles an opaque triangle
+    /// drops and so the bytes are the same). Only [`Scene::add`] may be used on it.
+    pub fn deferred_part(&self, capacity: usize) -> Scene {
+        Scene {
+            width: self.width,
+            height: self.height,
+            tiles_x: self.tiles_x,
+            targets: Vec::new(),
+            states: Vec::new(),
+            primitives: Vec::new(),
+            primitive_states: Vec::new(),
+            overwriting: Vec::new(),
+            bins: Vec::new(),
+            binned: 0,
+            deferred: Some(Vec::with_capacity(capacity)),
+        }
+    }
+
+    /// Bins the primitives recorded into `part` (from [`Scene::deferred_part`]) after
+    /// everything recorded here so far.
+    pub fn append(&mut self, part: Scene) {
+        for (state, bounds, primitive) in part.deferred.into_iter().flatten() {
+            self.add(state, bounds, primitive);
         }
     }
 
@@ -120,6 +157,7 @@ impl Scene {
         if let Some(i) = self.states[recent..].iter().rposition(|s| **s == state) {
             return ((recent + i) as u32, true);
         }
+        self.overwriting.push(Self::overwrites(&state));
         self.states.push(Arc::new(state));
         ((self.states.len() - 1) as u32, false)
     }
@@ -133,11 +171,18 @@ impl Scene {
     /// exclusive max), under draw state `state`.
     #[inline]
     pub fn add(&mut self, state: u32, bounds: Rect, primitive: Primitive) {
+        if let Some(deferred) = &mut self.deferred {
+            return deferred.push((state, bounds, primitive));
+        }
         let drawn = &self.states[state as usize];
-        let clip = if matches!(primitive, Primitive::Triangle(_)) { drawn.fill_clip } else { drawn.clip };
+        let triangle = match &primitive {
+            Primitive::Triangle(job) => Some(job),
+            _ => None,
+        };
+        let clip = if triangle.is_some() { drawn.fill_clip } else { drawn.clip };
         // Rasterized per sample, a triangle may cover samples of pixels whose centre it misses.
-        let bounds = match &primitive {
-            Primitive::Triangle(job) if drawn.multisample.is_some_and(|m| m.per_sample()) => job.sample_bounds(),
+        let bounds = match triangle {
+            Some(job) if drawn.multisample.is_some_and(|m| m.per_sample()) => job.sample_bounds(),
             _ => bounds,
         };
         let r = bounds.intersect(clip);
@@ -147,41 +192,53 @@ impl Scene {
         let index = self.primitives.len() as u32;
         let t = TILE_SIZE as i32;
         let (rows, columns) = ((r.y0 / t)..=((r.y1 - 1) / t), (r.x0 / t)..=((r.x1 - 1) / t));
-        let opaque = match &primitive {
-            Primitive::Triangle(job) if self.overwrites(drawn) => Some(job.setup.clone()),
-            _ => None,
-        };
-        self.primitives.push(primitive);
-        self.primitive_states.push(state);
         self.binned += rows.clone().count() * columns.clone().count();
-        let bounds = Rect::from_xywh(0, 0, self.width as i32, self.height as i32);
+        // The tiles are binned before the job moves into the scene, so the opaque test reads
+        // its edges in place (no copy of the setup per triangle).
+        let opaque = triangle.filter(|_| self.overwriting[state as usize] && self.writes_every_target(state));
         for ty in rows {
             for tx in columns.clone() {
                 let bin = ty as usize * self.tiles_x + tx as usize;
-                if let Some(setup) = &opaque {
-                    let tile = Rect::from_xywh(tx * t, ty * t, t, t).intersect(bounds);
-                    let inside = tile.intersect(r) == tile;
-                    let corners = [
-                        (tile.x0, tile.y0),
-                        (tile.x1 - 1, tile.y0),
-                        (tile.x0, tile.y1 - 1),
-                        (tile.x1 - 1, tile.y1 - 1),
-                    ];
-                    if inside && corners.iter().all(|&(x, y)| setup.covers(x, y)) && self.droppable(bin, drawn) {
-                        self.binned -= self.bins[bin].len();
-                        self.bins[bin].clear();
-                    }
+                if let Some(job) = opaque {
+                    self.drop_covered_tile(bin, tx * t, ty * t, r, &job.setup, state);
                 }
                 self.bins[bin].push(index);
             }
         }
+        self.primitives.push(primitive);
+        self.primitive_states.push(state);
+    }
+
+    /// Empties tile `bin` (origin `(x, y)`) when the opaque triangle `setup`, whose binned
+    /// box is `r`, covers all of it and nothing binned there before must survive it.
+    #[inline]
+    fn drop_covered_tile(&mut self, bin: usize, x: i32, y: i32, r: Rect, setup: &TriangleSetup, state: u32) {
+        let t = TILE_SIZE as i32;
+        let tile = Rect::from_xywh(x, y, t, t).intersect(Rect::from_xywh(0, 0, self.width as i32, self.height as i32));
+        if tile.intersect(r) != tile {
+            return;
+        }
+        let corners = [(tile.x0, tile.y0), (tile.x1 - 1, tile.y0), (tile.x0, tile.y1 - 1), (tile.x1 - 1, tile.y1 - 1)];
+        if corners.iter().all(|&(x, y)| setup.covers(x, y)) && self.droppable(bin, &self.states[state as usize]) {
+            self.binned -= self.bins[bin].len();
+            self.bins[bin].clear();
+        }
+    }
+
+    /// Whether state `state`'s color masks cover every target of the scene so far (the part
+    /// of [`Scene::overwrites`] that changes as later draws add targets).
+    #[inline]
+    fn writes_every_target(&self, state: u32) -> bool {
+        self.states[state as usize].fragment.color_masks.len() == self.targets.len()
     }
 
     /// Whether a filled triangle drawn with `state` writes every pixel it covers
     /// unconditionally, replacing whatever the scene drew there before: single-sampled, no
     /// alpha or stencil test, no depth test or one that always passes, no blending, logic
-    /// op or stipple, every colour channel of every target of the scene written.
-    fn overwrites(&self, state: &DrawState) -> bool {
+    /// op or stipple, every colour channel of its color masks written. (Whether those masks
+    /// cover every target of the scene is checked per primitive: a later draw may add one.)
+    /// Computed once per state, when it is added ([`Scene::add_state`]).
+    fn overwrites(state: &DrawState) -> bool {
         let f = &state.fragment;
         state.multisample.is_none()
             && state.polygon_stipple.is_none()
@@ -190,7 +247,6 @@ impl Scene {
             && f.logic_op.is_none()
             && f.depth.is_none_or(|d| d.func == crate::gl::CompareFunc::Always)
             && f.blend.iter().all(|b| b.is_none())
-            && f.color_masks.len() == self.targets.len()
             && f.color_masks.iter().all(|m| *m == Some([true; 4]))
     }
 
@@ -220,6 +276,7 @@ impl Scene {
         primitive: Primitive,
         columns: impl Fn(i32, i32) -> Option<(i32, i32)>,
     ) {
+        debug_assert!(self.deferred.is_none(), "a deferred part records filled triangles only");
         let clip = self.states[state as usize].clip;
         let r = bounds.intersect(clip);
         if r.is_empty() {
@@ -250,13 +307,13 @@ impl Scene {
 
     /// Renders the scene into `framebuffer` (which must have the scene's size) on
     /// `thread_count()` threads.
-    pub fn execute(self, framebuffer: &mut Framebuffer) {
+    pub fn execute(&self, framebuffer: &mut Framebuffer) {
         self.execute_on(framebuffer, thread_count());
     }
 
     /// Renders the scene on up to `threads` threads (the caller's included): the tile
     /// workers render each tile's bin in submission order, each entry by its job.
-    pub fn execute_on(self, framebuffer: &mut Framebuffer, threads: usize) {
+    pub fn execute_on(&self, framebuffer: &mut Framebuffer, threads: usize) {
         if self.primitives.is_empty() {
             return;
         }
@@ -301,6 +358,29 @@ impl Scene {
         }
     }
 
+    /// Empties the scene for the next flush interval, keeping the storage of its primitives
+    /// and bins up to about [`Scene::BUDGET_BYTES`]: the next scene then records into
+    /// memory already mapped instead of a fresh allocation the kernel faults in page by page
+    /// (on small_triangles at 1024² that is 14 000 page faults a frame), and what stays
+    /// allocated between scenes is bounded by the budget a scene may reach anyway.
+    pub fn clear(&mut self) {
+        let kept_primitives = Self::BUDGET_BYTES / (std::mem::size_of::<Primitive>() + std::mem::size_of::<u32>());
+        self.targets.clear();
+        self.states.clear();
+        self.overwriting.clear();
+        self.primitives.clear();
+        self.primitives.shrink_to(kept_primitives);
+        self.primitive_states.clear();
+        self.primitive_states.shrink_to(kept_primitives);
+        // The bins' entries count against the budget too: a tile keeps at most its share.
+        let kept_entries = Self::BUDGET_BYTES / std::mem::size_of::<u32>() / self.bins.len().max(1);
+        for bin in &mut self.bins {
+            bin.clear();
+            bin.shrink_to(kept_entries);
+        }
+        self.binned = 0;
+    }
+
     /// The smallest rectangle holding every tile with something binned into it.
     fn drawn_area(&self) -> Rect {
         let mut area = Rect { x0: i32::MAX, y0: i32::MAX, x1: i32::MIN, y1: i32::MIN };
@@ -328,6 +408,105 @@ mod tests {
         fragment.alpha = alpha.then_some(AlphaTest { func: CompareFunc::Always, reference: 0.0, unorm8: true });
         let clip = Rect::from_xywh(0, 0, 4, 1);
         DrawState { fragment, clip, fill_clip: clip, polygon_stipple: None, samples_passed: None, multisample: None }
+    }
+
+    /// A triangle job through three window points, one color.
+    fn triangle(points: [[f32; 2]; 3]) -> Primitive {
+        use crate::gl::limits::MAX_TEXTURE_UNITS;
+        use crate::setup::jobs::triangle::WindowVertex;
+        let v = points.map(|[x, y]| WindowVertex {
+            x,
+            y,
+            z: 0.5,
+            inv_w: 1.0,
+            color: [1.0, 0.5, 0.25, 1.0],
+            secondary_color: [0.0; 4],
+            tex_coords: [[0.0; 4]; MAX_TEXTURE_UNITS],
+            fog_coord: 0.0,
+        });
+        Primitive::Triangle(TriangleJob::new(v, None, 0.0, &[]).expect("not degenerate"))
+    }
+
+    /// What a scene has binned: per tile, the setups of its entries in order.
+    fn binned(scene: &Scene) -> Vec<Vec<TriangleSetup>> {
+        let setup = |i: &u32| match &scene.primitives[*i as usize] {
+            Primitive::Triangle(job) => job.setup.clone(),
+            _ => unreachable!("triangles only"),
+        };
+        scene.bins.iter().map(|bin| bin.iter().map(setup).collect()).collect()
+    }
+
+    #[test]
+    fn a_deferred_part_appended_bins_as_if_added_in_place() {
+        // Opaque state (no depth test): a triangle covering a whole tile drops what the tile
+        // held, also when the covering triangle comes from the deferred part.
+        let opaque = || {
+            let mut s = state(false);
+            s.fragment.depth = None;
+            s.clip = Rect::from_xywh(0, 0, 200, 130);
+            s.fill_clip = s.clip;
+            s
+        };
+        let triangles: Vec<[[f32; 2]; 3]> = vec![
+            [[1.0, 1.0], [150.0, 2.5], [20.0, 120.0]],
+            [[70.0, 3.0], [90.0, 60.0], [60.0, 50.0]],
+            [[-10.0, -10.0], [300.0, -10.0], [-10.0, 300.0]],
+            [[5.0, 70.0], [190.0, 66.0], [100.0, 129.0]],
+            [[130.0, 10.0], [199.0, 10.0], [160.0, 40.0]],
+        ];
+        for split in 0..=triangles.len() {
+            let mut whole = Scene::new(200, 130);
+            let mut parted = Scene::new(200, 130);
+            for scene in [&mut whole, &mut parted] {
+                scene.target_index(ColorSlot::FrontLeft);
+                assert_eq!(scene.add_state(opaque()), (0, false));
+            }
+            for &t in &triangles {
+                let p = triangle(t);
+                let bounds = match &p {
+                    Primitive::Triangle(job) => job.bounds(),
+                    _ => unreachable!(),
+                };
+                whole.add(0, bounds, p);
+            }
+            let mut later = parted.deferred_part(4);
+            for (i, &t) in triangles.iter().enumerate() {
+                let p = triangle(t);
+                let bounds = match &p {
+                    Primitive::Triangle(job) => job.bounds(),
+                    _ => unreachable!(),
+                };
+                if i < split {
+                    parted.add(0, bounds, p);
+                } else {
+                    later.add(0, bounds, p);
+                }
+            }
+            assert!(later.bins.is_empty() && later.primitives.is_empty(), "a deferred part bins nothing");
+            parted.append(later);
+            assert_eq!(binned(&parted), binned(&whole), "split after {split} triangles");
+            assert_eq!((parted.binned, parted.primitives.len()), (whole.binned, whole.primitives.len()));
+        }
+        // The big triangle (x + y < 290) drops what the first two left in every tile it
+        // covers whole; tile (2, 1), pixels x 128..192, y 64..128, it does not (its far
+        // corner's centre sums to 319) and keeps the first triangle before it.
+        let whole = {
+            let mut s = Scene::new(200, 130);
+            s.target_index(ColorSlot::FrontLeft);
+            s.add_state(opaque());
+            for &t in &triangles[..3] {
+                let p = triangle(t);
+                let bounds = match &p {
+                    Primitive::Triangle(job) => job.bounds(),
+                    _ => unreachable!(),
+                };
+                s.add(0, bounds, p);
+            }
+            s
+        };
+        let mut expected = vec![vec![2]; 12];
+        expected[6] = vec![0, 2];
+        assert_eq!(whole.bins, expected);
     }
 
     #[test]

@@ -100,9 +100,12 @@ impl TriangleSetup {
         let edges = [Edge::new(v[0], v[1]), Edge::new(v[1], v[2]), Edge::new(v[2], v[0])];
         let xs = v.map(|p| p[0]);
         let ys = v.map(|p| p[1]);
-        // Pixel x is covered only if its centre x·256+128 lies within [min, max].
-        let pixel_lo = |m: i64| div_ceil(m - HALF, ONE) as i32;
-        let pixel_hi = |m: i64| div_floor(m - HALF, ONE) as i32;
+        // Pixel x is covered only if its centre x·256+128 lies within [min, max]. Divisions
+        // by ONE (a power of two) rounding down are arithmetic shifts, and up, shifts of the
+        // negation: `div_floor`/`div_ceil` by ONE, without their division.
+        const _: () = assert!(ONE == 1 << SUBPIXEL_BITS);
+        let pixel_lo = |m: i64| -((HALF - m) >> SUBPIXEL_BITS) as i32;
+        let pixel_hi = |m: i64| ((m - HALF) >> SUBPIXEL_BITS) as i32;
         Some(TriangleSetup {
             edges,
             vertices: v,

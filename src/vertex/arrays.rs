@@ -361,6 +361,8 @@ pub struct BoundArray<'a> {
     element_size: usize,
     size: usize,
     decode: Decoder,
+    /// GL_FLOAT components (read in place by [`BoundArray::fill_floats`]).
+    float: bool,
 }
 
 impl<'a> BoundArray<'a> {
@@ -373,6 +375,48 @@ impl<'a> BoundArray<'a> {
             element_size: array.element_size(),
             size: array.size as usize,
             decode: decoder(array.component, id.normalized()),
+            float: array.component == ComponentType::Float,
+        }
+    }
+
+    /// Stores elements `first`, `first + 1`, … of a GL_FLOAT array into `out` (one each,
+    /// missing components (0, 0, 0, 1)) when all of them lie wholly within the bytes, and
+    /// says whether it did. Then the values are exactly [`BoundArray::fetch`]'s, read in
+    /// place: no decoder call and no bounds arithmetic per element (the common case of a
+    /// float array draw, where the decoder call was most of the fetch).
+    pub fn fill_floats<T>(&self, first: u32, out: &mut [T], store: impl Fn(&mut T, [f32; 4])) -> bool {
+        if !self.float || out.is_empty() || self.element_size != 4 * self.size {
+            return false;
+        }
+        let start = (first.wrapping_sub(self.first) as usize).checked_mul(self.stride);
+        let end = start
+            .and_then(|s| (out.len() - 1).checked_mul(self.stride).and_then(|d| s.checked_add(d)))
+            .and_then(|last| last.checked_add(self.element_size));
+        let (Some(start), Some(end)) = (start, end) else { return false };
+        if end > self.bytes.len() {
+            return false;
+        }
+        match self.size {
+            1 => self.store_floats::<1, T>(start, out, store),
+            2 => self.store_floats::<2, T>(start, out, store),
+            3 => self.store_floats::<3, T>(start, out, store),
+            _ => self.store_floats::<4, T>(start, out, store),
+        }
+        true
+    }
+
+    /// [`BoundArray::fill_floats`]' loop for `N` components, `out[k]` from the bytes at
+    /// `start + k · stride` (checked to lie within the bytes).
+    #[inline(always)]
+    fn store_floats<const N: usize, T>(&self, start: usize, out: &mut [T], store: impl Fn(&mut T, [f32; 4])) {
+        for (k, o) in out.iter_mut().enumerate() {
+            let at = start + k * self.stride;
+            let Some(element) = self.bytes.get(at..at + 4 * N) else { return };
+            let mut value = [0.0, 0.0, 0.0, 1.0];
+            for (v, c) in value.iter_mut().zip(element.chunks_exact(4)) {
+                *v = f32::from_ne_bytes([c[0], c[1], c[2], c[3]]);
+            }
+            store(o, value);
         }
     }
 

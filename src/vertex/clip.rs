@@ -117,9 +117,11 @@ impl ClipPlanes {
     /// [`ClipPlanes::distance`], so the same bits) and tested without branches: this runs for
     /// every vertex of every draw.
     #[inline]
+    #[allow(clippy::neg_cmp_op_on_partial_ord)] // `!(d >= 0)` is the point: NaN is outside
     pub fn outcode(&self, v: &ClipVertex) -> u32 {
         let [x, y, z, w] = v.clip;
-        let outside = |d: f32| (d.is_nan() || d < 0.0) as u32;
+        // Not `d ≥ 0`: true for NaN too, in one comparison per plane.
+        let outside = |d: f32| (!(d >= 0.0)) as u32;
         let (near, far) = match (self.clip_z, self.zero_to_one) {
             (false, _) => (0.0, 0.0),
             (true, true) => (z, w - z),

@@ -179,6 +179,45 @@ fn results_are_identical_for_any_thread_count() {
     }
 }
 
+#[test]
+fn a_draw_split_between_threads_draws_the_bytes_of_small_draws() {
+    // 2400 overlapping triangles in one draw (split between two threads when there are two)
+    // and in draws of one triangle each (never split): the same bytes, with the depth test
+    // and without it (where large triangles drop the tiles they cover).
+    let mut seed = 777u32;
+    let mut rnd = || {
+        seed = seed.wrapping_mul(1664525).wrapping_add(1013904223);
+        (seed >> 8) as f32 / (1 << 24) as f32
+    };
+    let mut vertices = Vec::new();
+    for i in 0..2400 {
+        let size = if i % 97 == 0 { 400.0 } else { 12.0 };
+        let (x, y) = (rnd() * 220.0 - 10.0, rnd() * 170.0 - 10.0);
+        for _ in 0..3 {
+            let c = [rnd(), rnd(), rnd(), 1.0];
+            vertices.push(vertex(x + (rnd() - 0.5) * size, y + (rnd() - 0.5) * size, rnd() * 2.0 - 1.0, c));
+        }
+    }
+    let geometry = |ctx: &mut Context| ctx.geometry(24, 150);
+    for depth in [false, true] {
+        let render = |whole: bool| {
+            let (mut ctx, d) = context(200, 150);
+            ctx.state.depth.test = depth;
+            ctx.clear(GL_DEPTH_BUFFER_BIT);
+            if whole {
+                assert_eq!(super::split_point(GL_TRIANGLES, &geometry(&mut ctx), vertices.len(), 2), Some(2700));
+                ctx.draw_vertices(GL_TRIANGLES, &vertices);
+            } else {
+                vertices.chunks(3).for_each(|t| ctx.draw_vertices(GL_TRIANGLES, t));
+            }
+            pixels(&mut ctx, &d)
+        };
+        let split = render(true);
+        assert!(split.iter().any(|p| p[0] != 0));
+        assert!(split == render(false), "depth test {depth}: the split draw differs");
+    }
+}
+
 /// Horizontal, vertical, diagonal, shallow and steep lines; pixel-centre, integer and
 /// fractional endpoints; both directions of one steep segment (its centre tie goes
 /// differently each way).

@@ -135,6 +135,10 @@ fn fill(batch: &mut [Vertex], elements: Elements, array: &BoundArray, store: imp
     // valgrind does not see the optimizer's reads of the unused variant as uninitialised.
     match elements {
         Elements::Sequence { first, count } => {
+            let n = batch.len().min(count as usize);
+            if array.fill_floats(first, &mut batch[..n], &store) {
+                return;
+            }
             for (vertex, index) in batch.iter_mut().zip(first..first + count) {
                 store(vertex, array.fetch(index));
             }
