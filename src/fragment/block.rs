@@ -23,13 +23,15 @@
 //! multisampled targets and `TESSERA_ACCURACY=exact` keep the span pipeline
 //! ([`super::pipeline`]) until they move to blocks.
 
+pub mod depth_stencil;
 pub mod kernels;
 
 use super::pipeline::{DrawState, Scratch};
 use super::{AlphaTest, FragmentState};
 use crate::framebuffer::band::Band;
 use crate::framebuffer::{ColorFormat, DepthStencilFormat};
-use kernels::{compare_bits, compare_lanes_small, DepthStencilKernel, TargetKernel};
+use depth_stencil::{compare_bits, compare_lanes_small, DepthStencilKernel};
+use kernels::TargetKernel;
 use std::sync::atomic::Ordering;
 
 /// Lanes per block.
