@@ -5,9 +5,17 @@
 //! - Comparisons (alpha, depth, stencil) are GL's three-bit encoding: bit 0 passes when the
 //!   fragment is less, bit 1 when equal, bit 2 when greater (`GL_NEVER` 0 … `GL_ALWAYS` 7).
 //! - Depth: every [`DepthBand`] format, stored values as u32 lanes, the fragment depth
-//!   encoded as the span path's `DepthEncoding::encode_fragment`; the stencil test, its
-//!   operations (two-sided, one monomorphised function per `StencilOp`) and the depth write
-//!   in GL's order (`super::super::stencil`).
+//!   encoded as the span path's `DepthEncoding::encode_fragment` (bit for bit: a unit test
+//!   runs both over the steps, edges and NaN); the stencil test, its operations (two-sided)
+//!   and the depth write in GL's order (`super::super::stencil`).
+//! - Inside the kernel the live lanes are lane masks (all-ones or zero words), converted
+//!   from and to 16-bit masks once per block, so that every stage is a plain loop LLVM
+//!   vectorises; the stencil operations are matched once per block and inlined, so that
+//!   they run in the kernel's copy for the SIMD level (an out-of-line call would be SSE2
+//!   code). The stored block is loaded once and stored back whole (4 row stores) with the
+//!   loaded values in the lanes nothing changed, only when the draw can write depth or
+//!   stencil. Packed 24/8 words keep the stencil as `w >> 24` on u32 lanes: one shift out
+//!   and one shift back in, where u8 lanes would need pack and unpack shuffles.
 
 use super::{lanes, load, map_lanes, store, BlockAt, F32s, U32s, LANES};
 use crate::fragment::stencil::{StencilFace, StencilOp};
@@ -31,44 +39,25 @@ pub fn compare_bits(func: CompareFunc) -> u8 {
     }
 }
 
-/// The lanes where `fragment func stored` holds, branch-free: each relation as an
-/// all-ones lane mask, the function's three bits as all-ones or zero words, then the lane
-/// masks packed into bits.
+/// A condition as a lane mask word: all ones where it holds.
 #[inline(always)]
-pub fn compare_lanes(func: u8, fragment: &U32s, stored: &U32s) -> u16 {
-    let bit = |b: u8| if func & b != 0 { !0u32 } else { 0 };
-    let (lt, eq, gt) = (bit(1), bit(2), bit(4));
-    let ok = lanes(|i| {
-        let (f, s) = (fragment[i], stored[i]);
-        let all = |c: bool| if c { !0u32 } else { 0 };
-        (all(f < s) & lt) | (all(f == s) & eq) | (all(f > s) & gt)
-    });
-    pack_mask(&ok)
-}
-
-/// [`compare_lanes`] for values below 2³¹ (unorm depth up to 24 bits, float depth bits,
-/// stencil and alpha): signed comparisons, which SSE2 has, one plain comparison loop per
-/// function (the function is the draw's: the branch goes the same way every block).
-#[inline(always)]
-pub fn compare_lanes_small(func: u8, fragment: &U32s, stored: &U32s) -> u16 {
-    let f = map_lanes(fragment, |v| v as i32);
-    let s = map_lanes(stored, |v| v as i32);
-    let mask = |c: &dyn Fn(i32, i32) -> bool| pack_mask(&lanes(|i| if c(f[i], s[i]) { !0u32 } else { 0 }));
-    match func {
-        0 => 0,
-        1 => mask(&|a, b| a < b),
-        2 => mask(&|a, b| a == b),
-        3 => mask(&|a, b| a <= b),
-        4 => mask(&|a, b| a > b),
-        5 => mask(&|a, b| a != b),
-        6 => mask(&|a, b| a >= b),
-        _ => 0xffff,
+fn all(c: bool) -> u32 {
+    if c {
+        !0
+    } else {
+        0
     }
 }
 
-/// Lane masks (all-ones or zero words) packed into one bit per lane.
+/// The bits of a 16-bit lane mask as lane mask words.
 #[inline(always)]
-fn pack_mask(m: &U32s) -> u16 {
+pub fn expand_mask(bits: u16) -> U32s {
+    lanes(|i| all(u32::from(bits) & (1 << i) != 0))
+}
+
+/// Lane mask words (all-ones or zero) packed into one bit per lane.
+#[inline(always)]
+pub fn pack_mask(m: &U32s) -> u16 {
     let mut bits = 0u16;
     for (i, &v) in m.iter().enumerate() {
         bits |= ((v >> 31) as u16) << i;
@@ -76,21 +65,69 @@ fn pack_mask(m: &U32s) -> u16 {
     bits
 }
 
-/// The lanes of `mask` as all-ones / zero words, for selects.
+/// The lanes where `a func b` holds, as lane mask words: one plain comparison loop per
+/// function (the function is the draw's: the branch goes the same way every block). `T`
+/// is `i32` for values below 2³¹ (unorm depth up to 24 bits, float depth bits, stencil),
+/// whose signed comparisons SSE2 has, `u32` for 32-bit unorm depth.
 #[inline(always)]
-fn select_u32(mask: u16, new: &U32s, old: &U32s) -> U32s {
-    lanes(|i| if mask & (1 << i) != 0 { new[i] } else { old[i] })
+pub fn compare_mask<T: Copy + PartialOrd>(func: u8, a: &[T; LANES], b: &[T; LANES]) -> U32s {
+    match func {
+        0 => [0; LANES],
+        1 => lanes(|i| all(a[i] < b[i])),
+        2 => lanes(|i| all(a[i] == b[i])),
+        3 => lanes(|i| all(a[i] <= b[i])),
+        4 => lanes(|i| all(a[i] > b[i])),
+        5 => lanes(|i| all(a[i] != b[i])),
+        6 => lanes(|i| all(a[i] >= b[i])),
+        _ => [!0; LANES],
+    }
+}
+
+/// The lanes where `fragment func stored` holds, as a 16-bit mask.
+#[inline(always)]
+pub fn compare_lanes(func: u8, fragment: &U32s, stored: &U32s) -> u16 {
+    pack_mask(&compare_mask(func, fragment, stored))
+}
+
+/// `a & b` on lane masks.
+#[inline(always)]
+fn and(a: &U32s, b: &U32s) -> U32s {
+    lanes(|i| a[i] & b[i])
+}
+
+/// `a & !b` on lane masks.
+#[inline(always)]
+fn and_not(a: &U32s, b: &U32s) -> U32s {
+    lanes(|i| a[i] & !b[i])
+}
+
+/// `new` where `mask`, else `old`.
+#[inline(always)]
+fn select(mask: &U32s, new: &U32s, old: &U32s) -> U32s {
+    lanes(|i| (new[i] & mask[i]) | (old[i] & !mask[i]))
 }
 
 // ---------------------------------------------------------------------------------------
 // Stencil and depth.
 
-/// One stencil operation on the lanes of `which`, through the write mask.
-type StencilOpFn = fn(values: &mut U32s, reference: u32, which: u16, write_mask: u32);
+/// The stencil operations' codes (0: KEEP, which changes nothing).
+fn stencil_op_code(op: StencilOp) -> u8 {
+    match op {
+        StencilOp::Keep => 0,
+        StencilOp::Zero => 1,
+        StencilOp::Replace => 2,
+        StencilOp::Incr => 3,
+        StencilOp::Decr => 4,
+        StencilOp::IncrWrap => 5,
+        StencilOp::DecrWrap => 6,
+        StencilOp::Invert => 7,
+    }
+}
 
+/// Stencil operation `OP` on the lanes of `which` (lane masks), through the write mask.
 #[inline(always)]
-fn stencil_op<const OP: u8>(values: &mut U32s, reference: u32, which: u16, write_mask: u32) {
-    for (i, v) in values.iter_mut().enumerate() {
+fn stencil_op_lanes<const OP: u8>(values: &mut U32s, reference: u32, which: &U32s, write_mask: u32) {
+    for (v, &m) in values.iter_mut().zip(which) {
         let new = match OP {
             1 => 0,
             2 => reference,
@@ -102,41 +139,42 @@ fn stencil_op<const OP: u8>(values: &mut U32s, reference: u32, which: u16, write
             _ => *v,
         };
         let new = (*v & !write_mask) | (new & write_mask);
-        if which & (1 << i) != 0 {
-            *v = new;
-        }
+        *v = (new & m) | (*v & !m);
     }
 }
 
-fn stencil_op_fn(op: StencilOp) -> Option<StencilOpFn> {
-    Some(match op {
-        StencilOp::Keep => return None,
-        StencilOp::Zero => stencil_op::<1>,
-        StencilOp::Replace => stencil_op::<2>,
-        StencilOp::Incr => stencil_op::<3>,
-        StencilOp::Decr => stencil_op::<4>,
-        StencilOp::IncrWrap => stencil_op::<5>,
-        StencilOp::DecrWrap => stencil_op::<6>,
-        StencilOp::Invert => stencil_op::<7>,
-    })
+/// Stencil operation `op` (a [`stencil_op_code`]) on the lanes of `which`: matched once
+/// per block, each arm a vectorised loop compiled into the kernel's copy per SIMD level.
+#[inline(always)]
+fn stencil_op(op: u8, values: &mut U32s, reference: u32, which: &U32s, write_mask: u32) {
+    match op {
+        1 => stencil_op_lanes::<1>(values, reference, which, write_mask),
+        2 => stencil_op_lanes::<2>(values, reference, which, write_mask),
+        3 => stencil_op_lanes::<3>(values, reference, which, write_mask),
+        4 => stencil_op_lanes::<4>(values, reference, which, write_mask),
+        5 => stencil_op_lanes::<5>(values, reference, which, write_mask),
+        6 => stencil_op_lanes::<6>(values, reference, which, write_mask),
+        7 => stencil_op_lanes::<7>(values, reference, which, write_mask),
+        _ => {}
+    }
 }
 
 /// One face of the stencil state on lanes; an operation that changes nothing (KEEP, or an
-/// empty write mask) is absent.
+/// empty write mask) is code 0.
 #[derive(Clone, Copy)]
 struct FaceKernel {
     func: u8,
     reference: u32,
     value_mask: u32,
     write_mask: u32,
-    sfail: Option<StencilOpFn>,
-    zfail: Option<StencilOpFn>,
-    zpass: Option<StencilOpFn>,
+    sfail: u8,
+    zfail: u8,
+    zpass: u8,
 }
 
 impl FaceKernel {
     fn new(face: &StencilFace) -> Self {
-        let op = |op| if face.write_mask == 0 { None } else { stencil_op_fn(op) };
+        let op = |op| if face.write_mask == 0 { 0 } else { stencil_op_code(op) };
         FaceKernel {
             func: compare_bits(face.func),
             reference: face.reference as u32,
@@ -150,16 +188,12 @@ impl FaceKernel {
 
     /// Whether any operation can change stored values.
     fn writes(&self) -> bool {
-        self.sfail.is_some() || self.zfail.is_some() || self.zpass.is_some()
+        self.sfail != 0 || self.zfail != 0 || self.zpass != 0
     }
 
     #[inline(always)]
-    fn apply(op: Option<StencilOpFn>, values: &mut U32s, reference: u32, which: u16, write_mask: u32) {
-        if let Some(f) = op {
-            if which != 0 {
-                f(values, reference, which, write_mask);
-            }
-        }
+    fn apply(&self, op: u8, values: &mut U32s, which: &U32s) {
+        stencil_op(op, values, self.reference, which, self.write_mask)
     }
 }
 
@@ -277,8 +311,55 @@ fn encode_depth(encoding: DepthEncoding, z: &F32s) -> U32s {
     }
 }
 
-/// The stencil test, the depth test and the stencil operations on one format (see
-/// [`crate::fragment::stencil_depth_test`], whose order this is).
+/// The stencil test, the depth test and the stencil operations in GL's order (see
+/// [`crate::fragment::stencil_depth_test`]) on lane masks: `stencil` is updated in place,
+/// the result is the passing lanes and the depth values to store (the stored ones where
+/// nothing is written). `SIGNED`: the stored depth values are below 2³¹.
+#[inline(always)]
+fn tests<const SIGNED: bool>(
+    p: &DepthStencilParams,
+    face: Option<&FaceKernel>,
+    encoding: DepthEncoding,
+    z: &F32s,
+    stored: &U32s,
+    stencil: &mut U32s,
+    live: &U32s,
+) -> (U32s, U32s) {
+    let mut passing = *live;
+    if let Some(face) = face {
+        let reference = [(face.reference & face.value_mask) as i32; LANES];
+        let masked = map_lanes(stencil, |v| (v & face.value_mask) as i32);
+        passing = and(&compare_mask(face.func, &reference, &masked), live);
+        face.apply(face.sfail, stencil, &and_not(live, &passing));
+    }
+    let mut depth = *stored;
+    if let Some((func, write)) = p.depth {
+        let fragment = encode_depth(encoding, z);
+        let pass = if SIGNED {
+            let f = map_lanes(&fragment, |v| v as i32);
+            let s = map_lanes(stored, |v| v as i32);
+            compare_mask(func, &f, &s)
+        } else {
+            compare_mask(func, &fragment, stored)
+        };
+        let pass = and(&pass, &passing);
+        if write {
+            depth = select(&pass, &fragment, stored);
+        }
+        if let Some(face) = face {
+            face.apply(face.zfail, stencil, &and_not(&passing, &pass));
+        }
+        passing = pass;
+    }
+    if let Some(face) = face {
+        face.apply(face.zpass, stencil, &passing);
+    }
+    (passing, depth)
+}
+
+/// The stencil and depth tests on one format: the block's stored values loaded as lanes
+/// once, [`tests`], and the block stored back whole (lanes that neither test changed
+/// keep the values just loaded) only when the draw can change them.
 fn depth_stencil<const FMT: u8>(
     p: &DepthStencilParams,
     band: &mut DepthBand<'_>,
@@ -288,78 +369,55 @@ fn depth_stencil<const FMT: u8>(
     front_facing: bool,
 ) -> u16 {
     crate::simd::per_level!({
-        let encoding = match FMT {
-            D16 => DepthEncoding::Unorm(16),
-            PACKED24 => DepthEncoding::Unorm(24),
-            D32 => DepthEncoding::Unorm(32),
-            _ => DepthEncoding::Float,
-        };
-        // Stored depth and stencil as lanes.
-        let (stored, mut stencil): (U32s, U32s) = match band {
-            DepthBand::Depth16(px) if FMT == D16 => (map_lanes(&load(px, at), |v| v as u32), [0; LANES]),
+        let live_lanes = expand_mask(live);
+        let face = p.stencil.as_ref().map(|f| &f[usize::from(!front_facing)]);
+        let depth_writes = p.depth.is_some_and(|(_, write)| write);
+        match band {
+            DepthBand::Depth16(px) if FMT == D16 => {
+                let stored = map_lanes(&load(px, at), u32::from);
+                let mut stencil = [0; LANES];
+                let (pass, depth) =
+                    tests::<true>(p, None, DepthEncoding::Unorm(16), z, &stored, &mut stencil, &live_lanes);
+                let bits = pack_mask(&pass);
+                if depth_writes && bits != 0 {
+                    store(px, at, &map_lanes(&depth, |v| v as u16), 0xffff);
+                }
+                bits
+            }
             DepthBand::Packed24(px) if FMT == PACKED24 => {
                 let words = load(px, at);
-                (map_lanes(&words, |w| w & 0x00ff_ffff), map_lanes(&words, |w| w >> 24))
+                let stored = map_lanes(&words, |w| w & 0x00ff_ffff);
+                let mut stencil = map_lanes(&words, |w| w >> 24);
+                let (pass, depth) =
+                    tests::<true>(p, face, DepthEncoding::Unorm(24), z, &stored, &mut stencil, &live_lanes);
+                let bits = pack_mask(&pass);
+                if (depth_writes && bits != 0) || p.stencil_writes {
+                    store(px, at, &lanes(|i| depth[i] | stencil[i] << 24), 0xffff);
+                }
+                bits
             }
             DepthBand::Depth32(px, s) | DepthBand::Float32(px, s) if FMT == D32 || FMT == F32 => {
-                let stencil = match (s, p.stencil.is_some()) {
-                    (Some(s), true) => map_lanes(&load(s, at), |v| v as u32),
+                let stored = load(px, at);
+                let mut stencil = match (&s, face.is_some()) {
+                    (Some(s), true) => map_lanes(&load(s, at), u32::from),
                     _ => [0; LANES],
                 };
-                (load(px, at), stencil)
-            }
-            _ => return live,
-        };
-        let face = p.stencil.map(|f| f[usize::from(!front_facing)]);
-        let mut passing = live;
-        if let Some(face) = &face {
-            let reference = [face.reference & face.value_mask; LANES];
-            let masked = map_lanes(&stencil, |v| v & face.value_mask);
-            passing = compare_lanes_small(face.func, &reference, &masked) & live;
-            FaceKernel::apply(face.sfail, &mut stencil, face.reference, live & !passing, face.write_mask);
-        }
-        let mut depth_out = None;
-        if let Some((func, write)) = p.depth {
-            let fragment = encode_depth(encoding, z);
-            let depth_pass = if FMT == D32 {
-                compare_lanes(func, &fragment, &stored)
-            } else {
-                compare_lanes_small(func, &fragment, &stored)
-            } & passing;
-            if write && depth_pass != 0 {
-                depth_out = Some(select_u32(depth_pass, &fragment, &stored));
-            }
-            if let Some(face) = &face {
-                FaceKernel::apply(face.zfail, &mut stencil, face.reference, passing & !depth_pass, face.write_mask);
-            }
-            passing = depth_pass;
-        }
-        if let Some(face) = &face {
-            FaceKernel::apply(face.zpass, &mut stencil, face.reference, passing, face.write_mask);
-        }
-        let stencil_out = p.stencil_writes;
-        if depth_out.is_none() && !stencil_out {
-            return passing;
-        }
-        let depth = depth_out.unwrap_or(stored);
-        match band {
-            DepthBand::Depth16(px) => store(px, at, &map_lanes(&depth, |v| v as u16), live),
-            DepthBand::Packed24(px) => {
-                // `stencil` holds the stored high bytes even without a stencil test.
-                let words: U32s = lanes(|i| depth[i] | stencil[i] << 24);
-                store(px, at, &words, live);
-            }
-            DepthBand::Depth32(px, s) | DepthBand::Float32(px, s) => {
-                if depth_out.is_some() {
-                    store(px, at, &depth, live);
+                let (pass, depth) = if FMT == D32 {
+                    tests::<false>(p, face, DepthEncoding::Unorm(32), z, &stored, &mut stencil, &live_lanes)
+                } else {
+                    tests::<true>(p, face, DepthEncoding::Float, z, &stored, &mut stencil, &live_lanes)
+                };
+                let bits = pack_mask(&pass);
+                if depth_writes && bits != 0 {
+                    store(px, at, &depth, 0xffff);
                 }
-                if let (Some(s), true) = (s, stencil_out) {
-                    store(s, at, &map_lanes(&stencil, |v| v as u8), live);
+                if let (Some(s), true) = (s, p.stencil_writes) {
+                    store(s, at, &map_lanes(&stencil, |v| v as u8), 0xffff);
                 }
+                bits
             }
-            DepthBand::None => {}
+            _ => live,
         }
-        passing
     })
 }
 
@@ -387,17 +445,56 @@ mod tests {
     }
 
     #[test]
+    fn lane_depth_encoding_is_encode_fragment_bit_for_bit() {
+        // Every encoding on values around each representable step of 16 and 24 bits near
+        // the ends and at spread points, the edges (0, −0, 1, just below 1, above 1, tiny,
+        // denormal, ±∞) and NaN.
+        let mut z = vec![0.0, -0.0, 1.0, f32::from_bits(1f32.to_bits() - 1), 1.5, -1.0, 1e-30, 1e-45, 1e-38];
+        z.extend([f32::INFINITY, f32::NEG_INFINITY, f32::NAN, 0.5, 0.25, 1.0 / 3.0, 0.1, 0.7]);
+        for bits in [16u32, 24] {
+            let max = ((1u64 << bits) - 1) as f64;
+            for k in (0..64).chain((1u64 << bits) - 64..1 << bits).chain((0..4096).map(|i| i * 4099 % (1 << bits))) {
+                // The half-way points between steps, a few ulps either side.
+                let x = ((k as f64 + 0.5) / max) as f32;
+                for d in -4..=4i32 {
+                    z.push(f32::from_bits((x.to_bits() as i32 + d) as u32));
+                }
+                z.push((k as f64 / max) as f32);
+            }
+        }
+        for step in 0..20_000u32 {
+            z.push(f32::from_bits(0x3f80_0000 - step * 97));
+        }
+        for encoding in
+            [DepthEncoding::Unorm(16), DepthEncoding::Unorm(24), DepthEncoding::Unorm(32), DepthEncoding::Float]
+        {
+            for chunk in z.chunks(LANES) {
+                let mut lanes = [0f32; LANES];
+                lanes[..chunk.len()].copy_from_slice(chunk);
+                let got = encode_depth(encoding, &lanes);
+                for i in 0..LANES {
+                    assert_eq!(got[i], encoding.encode_fragment(lanes[i]), "{encoding:?} {:e}", lanes[i]);
+                }
+            }
+        }
+    }
+
+    #[test]
     fn stencil_ops_wrap_and_saturate_through_the_write_mask() {
+        let op = |op: StencilOp, v: &mut U32s, reference: u32, which: u16, write_mask: u32| {
+            stencil_op(stencil_op_code(op), v, reference, &expand_mask(which), write_mask)
+        };
         let mut v: U32s = [0; LANES];
         v[1] = 255;
-        stencil_op_fn(StencilOp::DecrWrap).unwrap()(&mut v, 0, 0b01, 0xff);
-        stencil_op_fn(StencilOp::Incr).unwrap()(&mut v, 0, 0b10, 0xff);
+        op(StencilOp::DecrWrap, &mut v, 0, 0b01, 0xff);
+        op(StencilOp::Incr, &mut v, 0, 0b10, 0xff);
         assert_eq!(v[..2], [255, 255]);
-        stencil_op_fn(StencilOp::IncrWrap).unwrap()(&mut v, 0, 0b11, 0x0f);
+        op(StencilOp::IncrWrap, &mut v, 0, 0b11, 0x0f);
         assert_eq!(v[..2], [0xf0, 0xf0]);
-        stencil_op_fn(StencilOp::Replace).unwrap()(&mut v, 0x3c, 0b01, 0xff);
-        stencil_op_fn(StencilOp::Invert).unwrap()(&mut v, 0, 0b10, 0xff);
+        op(StencilOp::Replace, &mut v, 0x3c, 0b01, 0xff);
+        op(StencilOp::Invert, &mut v, 0, 0b10, 0xff);
         assert_eq!(v[..3], [0x3c, 0x0f, 0]);
-        assert!(stencil_op_fn(StencilOp::Keep).is_none());
+        op(StencilOp::Keep, &mut v, 0x77, 0xffff, 0xff);
+        assert_eq!(v[..3], [0x3c, 0x0f, 0]);
     }
 }
