@@ -5,9 +5,10 @@
 //! Lane `i` of a block at `(x, y)` is pixel `(x + (i & 3), y + (i >> 2))`; a 16-bit mask
 //! says which lanes are live. Depth and colours travel as `[f32; 16]` lanes, stored depth
 //! and stencil as `[u32; 16]`, unorm8 colour as `[u16; 16]` per channel ([`kernels`]).
-//! The stages: colours (and texturing) first only when the alpha test needs alpha; the
-//! alpha test; the stencil and depth tests (early, before any colour work, whenever
-//! nothing before them can discard; depth clamp included); the occlusion count; colours,
+//! The stages: colours (and texturing) first only when the alpha test needs alpha (after
+//! a read-only stencil/depth test that drops blocks none of whose lanes can pass, when a
+//! failing fragment changes nothing); the alpha test; the stencil and depth tests (early,
+//! before any colour work, whenever nothing before them can discard; depth clamp included); the occlusion count; colours,
 //! texturing, the colour sum and fog only for blocks with a surviving lane; then per colour
 //! target its write kernel (blend or logic op, dither, channel masks, the format's store).
 //! unorm8 and RGB565 targets blend in exact integers on u16 lanes (`a·b/255` rounded to
@@ -297,6 +298,13 @@ pub fn shade_block(
     let mut live = mask;
     let mut colors = BlockColors::Uniform([0.0; 4]);
     if let Some(alpha) = &pipeline.alpha {
+        // Early stencil/depth while the alpha test is on: a block none of whose lanes can
+        // pass changes nothing whatever its alpha, so it needs no colours.
+        if let Some(kernel) = pipeline.depth_stencil.as_ref().filter(|k| k.culls_before_alpha()) {
+            if kernel.test(&mut band.depth, &at, live, front_facing, || inputs.z(x, y)) == 0 {
+                return;
+            }
+        }
         shade_colors(fragment, scratch, &at, live, inputs, &mut colors);
         live = match &colors {
             BlockColors::Uniform(c) => alpha.test(&[c[3]; LANES], live),

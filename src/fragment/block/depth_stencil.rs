@@ -213,7 +213,12 @@ type DepthStencilFn = fn(&DepthStencilParams, &mut DepthBand<'_>, &BlockAt, &F32
 /// The stencil and depth tests of a draw on one depth/stencil format.
 pub struct DepthStencilKernel {
     run: DepthStencilFn,
+    /// The same tests without storing anything (see [`DepthStencilKernel::test`]).
+    test: DepthStencilFn,
     params: DepthStencilParams,
+    /// Whether a fragment failing the stencil or depth test changes nothing stored
+    /// (no stencil test, or KEEP on stencil and depth failure on both faces).
+    failures_keep: bool,
 }
 
 const D16: u8 = 0;
@@ -228,12 +233,12 @@ impl DepthStencilKernel {
         if fragment.depth.is_none() && stencil.is_none() {
             return None;
         }
-        let run: DepthStencilFn = match format {
+        let (run, test): (DepthStencilFn, DepthStencilFn) = match format {
             DepthStencilFormat::None => return None,
-            DepthStencilFormat::Depth16 => depth_stencil::<D16>,
-            DepthStencilFormat::Packed24 { .. } => depth_stencil::<PACKED24>,
-            DepthStencilFormat::Depth32 { .. } => depth_stencil::<D32>,
-            DepthStencilFormat::Float32 { .. } => depth_stencil::<F32>,
+            DepthStencilFormat::Depth16 => (depth_stencil::<D16, true>, depth_stencil::<D16, false>),
+            DepthStencilFormat::Packed24 { .. } => (depth_stencil::<PACKED24, true>, depth_stencil::<PACKED24, false>),
+            DepthStencilFormat::Depth32 { .. } => (depth_stencil::<D32, true>, depth_stencil::<D32, false>),
+            DepthStencilFormat::Float32 { .. } => (depth_stencil::<F32, true>, depth_stencil::<F32, false>),
         };
         let faces = stencil.map(|s| [FaceKernel::new(&s.front), FaceKernel::new(&s.back)]);
         let params = DepthStencilParams {
@@ -242,7 +247,30 @@ impl DepthStencilKernel {
             stencil_writes: faces.is_some_and(|f| f[0].writes() || f[1].writes()),
             stencil: faces,
         };
-        Some(DepthStencilKernel { run, params })
+        let failures_keep = faces.is_none_or(|f| f.iter().all(|f| f.sfail == 0 && f.zfail == 0));
+        Some(DepthStencilKernel { run, test, params, failures_keep })
+    }
+
+    /// Whether a block whose lanes all fail [`Self::test`] can be dropped before the alpha
+    /// test (before its colours are computed): its fragments then change nothing whatever
+    /// their alpha, since failing the stencil or depth test leaves everything as it was.
+    pub fn culls_before_alpha(&self) -> bool {
+        self.failures_keep
+    }
+
+    /// The lanes of `live` that pass the stencil and depth tests, without storing anything
+    /// (the early test of a draw with the alpha test, see [`Self::culls_before_alpha`]).
+    #[inline]
+    pub fn test(
+        &self,
+        band: &mut DepthBand<'_>,
+        at: &BlockAt,
+        live: u16,
+        front_facing: bool,
+        z: impl FnOnce() -> F32s,
+    ) -> u16 {
+        let lanes = self.depth_lanes(z);
+        (self.test)(&self.params, band, at, &lanes, live, front_facing)
     }
 
     /// Runs the tests on the lanes of `live`; `z()` gives the fragments' window depth (read
@@ -256,6 +284,13 @@ impl DepthStencilKernel {
         front_facing: bool,
         z: impl FnOnce() -> F32s,
     ) -> u16 {
+        let lanes = self.depth_lanes(z);
+        (self.run)(&self.params, band, at, &lanes, live, front_facing)
+    }
+
+    /// The fragments' window depth, depth-clamped (zeros without the depth test).
+    #[inline(always)]
+    fn depth_lanes(&self, z: impl FnOnce() -> F32s) -> F32s {
         let mut lanes = [0f32; LANES];
         if self.params.depth.is_some() {
             lanes = z();
@@ -265,7 +300,7 @@ impl DepthStencilKernel {
                 }
             }
         }
-        (self.run)(&self.params, band, at, &lanes, live, front_facing)
+        lanes
     }
 }
 
@@ -359,8 +394,8 @@ fn tests<const SIGNED: bool>(
 
 /// The stencil and depth tests on one format: the block's stored values loaded as lanes
 /// once, [`tests`], and the block stored back whole (lanes that neither test changed
-/// keep the values just loaded) only when the draw can change them.
-fn depth_stencil<const FMT: u8>(
+/// keep the values just loaded) only when the draw can change them and `STORE`.
+fn depth_stencil<const FMT: u8, const STORE: bool>(
     p: &DepthStencilParams,
     band: &mut DepthBand<'_>,
     at: &BlockAt,
@@ -371,7 +406,8 @@ fn depth_stencil<const FMT: u8>(
     crate::simd::per_level!({
         let live_lanes = expand_mask(live);
         let face = p.stencil.as_ref().map(|f| &f[usize::from(!front_facing)]);
-        let depth_writes = p.depth.is_some_and(|(_, write)| write);
+        let depth_writes = STORE && p.depth.is_some_and(|(_, write)| write);
+        let stencil_writes = STORE && p.stencil_writes;
         match band {
             DepthBand::Depth16(px) if FMT == D16 => {
                 let stored = map_lanes(&load(px, at), u32::from);
@@ -391,7 +427,7 @@ fn depth_stencil<const FMT: u8>(
                 let (pass, depth) =
                     tests::<true>(p, face, DepthEncoding::Unorm(24), z, &stored, &mut stencil, &live_lanes);
                 let bits = pack_mask(&pass);
-                if (depth_writes && bits != 0) || p.stencil_writes {
+                if (depth_writes && bits != 0) || stencil_writes {
                     store(px, at, &lanes(|i| depth[i] | stencil[i] << 24), 0xffff);
                 }
                 bits
@@ -411,7 +447,7 @@ fn depth_stencil<const FMT: u8>(
                 if depth_writes && bits != 0 {
                     store(px, at, &depth, 0xffff);
                 }
-                if let (Some(s), true) = (s, p.stencil_writes) {
+                if let (Some(s), true) = (s, stencil_writes) {
                     store(s, at, &map_lanes(&stencil, |v| v as u8), 0xffff);
                 }
                 bits
@@ -476,6 +512,154 @@ mod tests {
                     assert_eq!(got[i], encoding.encode_fragment(lanes[i]), "{encoding:?} {:e}", lanes[i]);
                 }
             }
+        }
+    }
+
+    /// A small deterministic generator for the kernel tests.
+    struct Lcg(u64);
+    impl Lcg {
+        fn next(&mut self) -> u32 {
+            self.0 = self.0.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            (self.0 >> 33) as u32
+        }
+    }
+
+    #[test]
+    fn the_block_kernel_is_the_span_path_on_every_format_and_state() {
+        use crate::fragment::{stencil_depth_test, DepthTest, StencilTest};
+        use StencilOp::*;
+        let ops = [Keep, Zero, Replace, Incr, Decr, IncrWrap, DecrWrap, Invert];
+        let funcs = [
+            CompareFunc::Never,
+            CompareFunc::Less,
+            CompareFunc::Equal,
+            CompareFunc::LessEqual,
+            CompareFunc::Greater,
+            CompareFunc::NotEqual,
+            CompareFunc::GreaterEqual,
+            CompareFunc::Always,
+        ];
+        let formats = [
+            DepthStencilFormat::Depth16,
+            DepthStencilFormat::Packed24 { depth: true, stencil: true },
+            DepthStencilFormat::Depth32 { stencil: true },
+            DepthStencilFormat::Float32 { stencil: true },
+        ];
+        let at = BlockAt { x: 0, y: 0, base: 0, width: 4, valid: 0xffff };
+        let mut rng = Lcg(7);
+        for round in 0..3000 {
+            let format = formats[round % 4];
+            let encoding = format.depth_encoding();
+            let face = |rng: &mut Lcg| StencilFace {
+                func: funcs[rng.next() as usize % 8],
+                reference: [0, 1, 7, 128, 255][rng.next() as usize % 5],
+                value_mask: [0xff, 0x0f, 0][rng.next() as usize % 3],
+                write_mask: [0xff, 0xf0, 0][rng.next() as usize % 3],
+                sfail: ops[rng.next() as usize % 8],
+                zfail: ops[rng.next() as usize % 8],
+                zpass: ops[rng.next() as usize % 8],
+            };
+            let stencil = (rng.next() % 3 != 0).then(|| StencilTest { front: face(&mut rng), back: face(&mut rng) });
+            let depth = (rng.next() % 4 != 0)
+                .then(|| DepthTest { func: funcs[rng.next() as usize % 8], write: rng.next() % 3 != 0 });
+            if depth.is_none() && stencil.is_none() {
+                continue;
+            }
+            let mut fragment = FragmentState::plain(depth, vec![], false);
+            fragment.stencil = stencil;
+            fragment.depth_clamp = (rng.next() % 5 == 0).then_some([0.25, 0.75]);
+            let Some(kernel) = DepthStencilKernel::new(&fragment, format) else {
+                // Depth16 has no stencil: a stencil-only state compiles no kernel.
+                assert!(fragment.depth.is_none() && format.stencil_bits() == 0);
+                continue;
+            };
+            // Fragment depths near the stored ones (equal encodings included), the edges.
+            let stored_z: Vec<f32> = (0..16).map(|_| [0.0, 1.0, 0.5, 0.25][rng.next() as usize % 4]).collect();
+            let z: F32s = std::array::from_fn(|i| match rng.next() % 6 {
+                0 => stored_z[i],
+                1 => f32::from_bits(stored_z[i].to_bits().wrapping_add(rng.next() % 3)),
+                2 => -0.5,
+                3 => f32::NAN,
+                _ => (rng.next() % 1000) as f32 / 999.0,
+            });
+            let depth_values: Vec<u32> = stored_z.iter().map(|&v| encoding.encode_fragment(v)).collect();
+            let stencil_values: Vec<u8> = (0..16).map(|_| [0, 1, 255, 128, 7][rng.next() as usize % 5]).collect();
+            let live = rng.next() as u16 | (rng.next() % 2) as u16 * 0xffff;
+            let front_facing = rng.next() % 2 == 0;
+            // Three copies: the block kernel, its read-only test, and the span path.
+            let mut d16: [Vec<u16>; 3] = std::array::from_fn(|_| depth_values.iter().map(|&v| v as u16).collect());
+            let mut d32: [Vec<u32>; 3] = std::array::from_fn(|_| depth_values.clone());
+            let mut packed: [Vec<u32>; 3] = std::array::from_fn(|_| {
+                depth_values.iter().zip(&stencil_values).map(|(&d, &s)| d | (s as u32) << 24).collect()
+            });
+            let mut s8: [Vec<u8>; 3] = std::array::from_fn(|_| stencil_values.clone());
+            let mut results = [0u16; 3];
+            let [d16a, d16b, d16c] = &mut d16;
+            let [d32a, d32b, d32c] = &mut d32;
+            let [pa, pb, pc] = &mut packed;
+            let [sa, sb, sc] = &mut s8;
+            let mut bands: Vec<DepthBand<'_>> = match format {
+                DepthStencilFormat::Depth16 => {
+                    vec![DepthBand::Depth16(d16a), DepthBand::Depth16(d16b), DepthBand::Depth16(d16c)]
+                }
+                DepthStencilFormat::Packed24 { .. } => {
+                    vec![DepthBand::Packed24(pa), DepthBand::Packed24(pb), DepthBand::Packed24(pc)]
+                }
+                DepthStencilFormat::Depth32 { .. } => vec![
+                    DepthBand::Depth32(d32a, Some(sa)),
+                    DepthBand::Depth32(d32b, Some(sb)),
+                    DepthBand::Depth32(d32c, Some(sc)),
+                ],
+                _ => vec![
+                    DepthBand::Float32(d32a, Some(sa)),
+                    DepthBand::Float32(d32b, Some(sb)),
+                    DepthBand::Float32(d32c, Some(sc)),
+                ],
+            };
+            results[0] = kernel.run(&mut bands[0], &at, live, front_facing, || z);
+            results[1] = kernel.test(&mut bands[1], &at, live, front_facing, || z);
+            // The span path, row by row, with the depth clamp applied by its caller.
+            let face =
+                fragment
+                    .stencil
+                    .filter(|_| format.stencil_bits() > 0)
+                    .map(|s| if front_facing { s.front } else { s.back });
+            for r in 0..4 {
+                let zr: Vec<f32> = z[4 * r..4 * r + 4]
+                    .iter()
+                    .map(|&v| fragment.depth_clamp.map_or(v, |[lo, hi]| v.clamp(lo, hi)))
+                    .collect();
+                let row_live = (live >> (4 * r)) as u64 & 0xf;
+                let pass =
+                    stencil_depth_test(face.as_ref(), fragment.depth.as_ref(), &mut bands[2], 4 * r, 4, &zr, row_live);
+                results[2] |= (pass as u16) << (4 * r);
+            }
+            drop(bands);
+            let what = format!("{format:?} {fragment:?} live {live:#x} front {front_facing} z {z:?}");
+            assert_eq!(results[0], results[2], "passing lanes: {what}");
+            assert_eq!(results[1], results[2], "read-only test: {what}");
+            assert_eq!(
+                (&d16[0], &d32[0], &packed[0], &s8[0]),
+                (&d16[2], &d32[2], &packed[2], &s8[2]),
+                "stored: {what}"
+            );
+            let untouched = (depth_values.clone(), stencil_values.clone());
+            assert_eq!(d32[1].len(), 16);
+            if !matches!(format, DepthStencilFormat::Depth16 | DepthStencilFormat::Packed24 { .. }) {
+                assert_eq!((&d32[1], &s8[1]), (&untouched.0, &untouched.1), "the test stores nothing: {what}");
+            }
+            assert_eq!(
+                packed[1],
+                depth_values.iter().zip(&stencil_values).map(|(&d, &s)| d | (s as u32) << 24).collect::<Vec<_>>()
+            );
+            assert_eq!(d16[1], depth_values.iter().map(|&v| v as u16).collect::<Vec<_>>());
+            // Culling before the alpha test is offered exactly when failing changes nothing.
+            let keeps = |f: &StencilFace| f.write_mask == 0 || (f.sfail == Keep && f.zfail == Keep);
+            let want = fragment
+                .stencil
+                .filter(|_| format.stencil_bits() > 0)
+                .is_none_or(|s| keeps(&s.front) && keeps(&s.back));
+            assert_eq!(kernel.culls_before_alpha(), want, "{what}");
         }
     }
 
