@@ -256,7 +256,7 @@ impl AlphaKernel {
             let inside = if (c >= self.lo) & (c < self.hi) { !0u32 } else { 0 };
             inside ^ flip
         });
-        depth_stencil::pack_mask(&pass) & live
+        depth_stencil::pack_mask_or(&pass) & live
     }
 }
 
@@ -322,6 +322,11 @@ pub fn shade_block(
     }
     if let Some(counter) = &state.samples_passed {
         counter.fetch_add(live.count_ones() as u64, Ordering::Relaxed);
+    }
+    if pipeline.targets.is_empty() {
+        // No colour is written (every channel masked, as in stencil shadow volumes): the
+        // colours, colour sum and fog would feed nothing.
+        return;
     }
     if pipeline.alpha.is_none() {
         shade_colors(fragment, scratch, &at, live, inputs, &mut colors);
