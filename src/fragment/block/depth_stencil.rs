@@ -593,15 +593,16 @@ mod tests {
                 zfail: ops[rng.next() as usize % 8],
                 zpass: ops[rng.next() as usize % 8],
             };
-            let stencil = (rng.next() % 3 != 0).then(|| StencilTest { front: face(&mut rng), back: face(&mut rng) });
-            let depth = (rng.next() % 4 != 0)
-                .then(|| DepthTest { func: funcs[rng.next() as usize % 8], write: rng.next() % 3 != 0 });
+            let stencil =
+                (!rng.next().is_multiple_of(3)).then(|| StencilTest { front: face(&mut rng), back: face(&mut rng) });
+            let depth = (!rng.next().is_multiple_of(4))
+                .then(|| DepthTest { func: funcs[rng.next() as usize % 8], write: !rng.next().is_multiple_of(3) });
             if depth.is_none() && stencil.is_none() {
                 continue;
             }
             let mut fragment = FragmentState::plain(depth, vec![], false);
             fragment.stencil = stencil;
-            fragment.depth_clamp = (rng.next() % 5 == 0).then_some([0.25, 0.75]);
+            fragment.depth_clamp = rng.next().is_multiple_of(5).then_some([0.25, 0.75]);
             let Some(kernel) = DepthStencilKernel::new(&fragment, format) else {
                 // Depth16 has no stencil: a stencil-only state compiles no kernel.
                 assert!(fragment.depth.is_none() && format.stencil_bits() == 0);
@@ -618,8 +619,8 @@ mod tests {
             });
             let depth_values: Vec<u32> = stored_z.iter().map(|&v| encoding.encode_fragment(v)).collect();
             let stencil_values: Vec<u8> = (0..16).map(|_| [0, 1, 255, 128, 7][rng.next() as usize % 5]).collect();
-            let live = rng.next() as u16 | (rng.next() % 2) as u16 * 0xffff;
-            let front_facing = rng.next() % 2 == 0;
+            let live = rng.next() as u16 | ((rng.next() % 2) as u16 * 0xffff);
+            let front_facing = rng.next().is_multiple_of(2);
             // Three copies: the block kernel, its read-only test, and the span path.
             let mut d16: [Vec<u16>; 3] = std::array::from_fn(|_| depth_values.iter().map(|&v| v as u16).collect());
             let mut d32: [Vec<u32>; 3] = std::array::from_fn(|_| depth_values.clone());
