@@ -256,7 +256,7 @@ impl AlphaKernel {
             let inside = if (c >= self.lo) & (c < self.hi) { !0u32 } else { 0 };
             inside ^ flip
         });
-        depth_stencil::pack_mask_or(&pass) & live
+        depth_stencil::pack_mask(&pass) & live
     }
 }
 
