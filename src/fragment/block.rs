@@ -5,9 +5,10 @@
 //! Lane `i` of a block at `(x, y)` is pixel `(x + (i & 3), y + (i >> 2))`; a 16-bit mask
 //! says which lanes are live. Depth and colours travel as `[f32; 16]` lanes, stored depth
 //! and stencil as `[u32; 16]`, unorm8 colour as `[u16; 16]` per channel ([`kernels`]).
-//! The stages: colours (and texturing) first only when the alpha test needs alpha; the
-//! alpha test; the stencil and depth tests (early, before any colour work, whenever
-//! nothing before them can discard; depth clamp included); the occlusion count; colours,
+//! The stages: colours (and texturing) first only when the alpha test needs alpha (after
+//! a read-only stencil/depth test that drops blocks none of whose lanes can pass, when a
+//! failing fragment changes nothing); the alpha test; the stencil and depth tests (early,
+//! before any colour work, whenever nothing before them can discard; depth clamp included); the occlusion count; colours,
 //! texturing, the colour sum and fog only for blocks with a surviving lane; then per colour
 //! target its write kernel (blend or logic op, dither, channel masks, the format's store).
 //! unorm8 and RGB565 targets blend in exact integers on u16 lanes (`a·b/255` rounded to
@@ -23,13 +24,16 @@
 //! multisampled targets and `TESSERA_ACCURACY=exact` keep the span pipeline
 //! ([`super::pipeline`]) until they move to blocks.
 
+pub mod depth_stencil;
 pub mod kernels;
 
 use super::pipeline::{DrawState, Scratch};
 use super::{AlphaTest, FragmentState};
 use crate::framebuffer::band::Band;
+use crate::framebuffer::format::float_to_unorm;
 use crate::framebuffer::{ColorFormat, DepthStencilFormat};
-use kernels::{compare_bits, compare_lanes_small, DepthStencilKernel, TargetKernel};
+use depth_stencil::DepthStencilKernel;
+use kernels::TargetKernel;
 use std::sync::atomic::Ordering;
 
 /// Lanes per block.
@@ -182,37 +186,77 @@ pub struct BlockPipeline {
     targets: Vec<TargetKernel>,
 }
 
-/// The alpha test on lanes (see [`super::alpha`] for the two precisions).
+/// The alpha test on lanes (see [`super::alpha`] for the two precisions) as an interval of
+/// clamped alpha: a fragment passes when `lo <= c < hi` (or, with `invert`, when not), `c`
+/// its alpha clamped to [0, 1] with NaN as 0. Both precisions compare a value that never
+/// decreases as `c` grows (the unorm8 conversion, or `c` itself) with the reference, so
+/// every function is such an interval, found once per draw state ([`AlphaKernel::new`]);
+/// per block that is two float comparisons per lane, with no conversion to unorm8.
 #[derive(Clone, Copy, Debug)]
 struct AlphaKernel {
-    func: u8,
-    unorm8: bool,
-    reference8: u32,
-    reference: f32,
+    lo: f32,
+    hi: f32,
+    invert: bool,
 }
 
 impl AlphaKernel {
     fn new(test: &AlphaTest) -> Self {
+        use crate::gl::CompareFunc as C;
         let clamp = |x: f32| if x > 0.0 { x.min(1.0) } else { 0.0 };
-        AlphaKernel {
-            func: compare_bits(test.func),
-            unorm8: test.unorm8,
-            reference8: super::alpha::reference_unorm8(test.reference) as u32,
-            reference: clamp(test.reference),
-        }
+        // The compared value of a clamped alpha, and the reference's.
+        let value = |c: f32| if test.unorm8 { float_to_unorm(c, 8) } else { c.to_bits() };
+        let reference = if test.unorm8 {
+            super::alpha::reference_unorm8(test.reference) as u32
+        } else {
+            clamp(test.reference).to_bits()
+        };
+        // The least clamped alpha whose value reaches `v` (+∞ when none does): a binary
+        // search over the bit patterns of [0, 1], which order as their values.
+        let first = |v: u32| -> f32 {
+            if value(1.0) < v {
+                return f32::INFINITY;
+            }
+            let (mut below, mut at) = (0u32, 1f32.to_bits());
+            if value(0.0) >= v {
+                return 0.0;
+            }
+            // value(bits below) < v <= value(bits at)
+            while at - below > 1 {
+                let mid = below + (at - below) / 2;
+                if value(f32::from_bits(mid)) >= v {
+                    at = mid;
+                } else {
+                    below = mid;
+                }
+            }
+            f32::from_bits(at)
+        };
+        let (r, r1) = (first(reference), first(reference + 1));
+        let inf = f32::INFINITY;
+        let (lo, hi, invert) = match test.func {
+            C::Never => (inf, inf, false),
+            C::Less => (0.0, r, false),
+            C::LessEqual => (0.0, r1, false),
+            C::Equal => (r, r1, false),
+            C::NotEqual => (r, r1, true),
+            C::Greater => (r1, inf, false),
+            C::GreaterEqual => (r, inf, false),
+            C::Always => (0.0, inf, false),
+        };
+        AlphaKernel { lo, hi, invert }
     }
 
     #[inline]
     fn test(&self, alpha: &F32s, live: u16) -> u16 {
-        if self.unorm8 {
-            let a: U32s = map_lanes(&kernels::unorm8_lanes(alpha), u32::from);
-            compare_lanes_small(self.func, &a, &[self.reference8; LANES]) & live
-        } else {
-            // Clamped to [0, 1] (NaN as 0): the bit patterns of non-negative floats order
-            // as their values.
-            let a: U32s = lanes(|i| if alpha[i] > 0.0 { alpha[i].min(1.0).to_bits() } else { 0 });
-            compare_lanes_small(self.func, &a, &[self.reference.to_bits(); LANES]) & live
-        }
+        let flip = if self.invert { !0u32 } else { 0 };
+        let pass: U32s = lanes(|i| {
+            let a = alpha[i];
+            let a = if a > 0.0 { a } else { 0.0 };
+            let c = if a < 1.0 { a } else { 1.0 };
+            let inside = if (c >= self.lo) & (c < self.hi) { !0u32 } else { 0 };
+            inside ^ flip
+        });
+        depth_stencil::pack_mask(&pass) & live
     }
 }
 
@@ -254,6 +298,13 @@ pub fn shade_block(
     let mut live = mask;
     let mut colors = BlockColors::Uniform([0.0; 4]);
     if let Some(alpha) = &pipeline.alpha {
+        // Early stencil/depth while the alpha test is on: a block none of whose lanes can
+        // pass changes nothing whatever its alpha, so it needs no colours.
+        if let Some(kernel) = pipeline.depth_stencil.as_ref().filter(|k| k.culls_before_alpha()) {
+            if kernel.test(&mut band.depth, &at, live, front_facing, || inputs.z(x, y)) == 0 {
+                return;
+            }
+        }
         shade_colors(fragment, scratch, &at, live, inputs, &mut colors);
         live = match &colors {
             BlockColors::Uniform(c) => alpha.test(&[c[3]; LANES], live),
@@ -271,6 +322,11 @@ pub fn shade_block(
     }
     if let Some(counter) = &state.samples_passed {
         counter.fetch_add(live.count_ones() as u64, Ordering::Relaxed);
+    }
+    if pipeline.targets.is_empty() {
+        // No colour is written (every channel masked, as in stencil shadow volumes): the
+        // colours, colour sum and fog would feed nothing.
+        return;
     }
     if pipeline.alpha.is_none() {
         shade_colors(fragment, scratch, &at, live, inputs, &mut colors);
@@ -371,5 +427,37 @@ mod tests {
         assert_eq!(px[10..12], [4, 5]);
         assert_eq!(px[16..18], [8, 9]);
         assert_eq!(px[0..4], [7; 4]);
+    }
+
+    #[test]
+    fn the_lane_alpha_test_is_the_span_alpha_test() {
+        use crate::gl::CompareFunc as C;
+        // Alphas at and around every unorm8 step and the references, the edges and NaN.
+        let mut alphas = vec![0.0, -0.0, 1.0, 2.0, -1.0, f32::NAN, f32::INFINITY, f32::NEG_INFINITY, 1e-30, 1e-45];
+        for k in 0..=256u32 {
+            let x = (k as f32 - 0.5) / 255.0;
+            for d in -3..=3i32 {
+                alphas.push(f32::from_bits((x.abs().to_bits() as i32 + d) as u32).copysign(x));
+            }
+            alphas.push(k as f32 / 255.0);
+        }
+        alphas.push(f32::from_bits(1f32.to_bits() - 1));
+        let references = [0.0, 1.0, 0.5, 0.1, 0.75, 125.5 / 255.0, 126.5 / 255.0, -0.5, 1.5, f32::NAN, 1e-40];
+        for func in [C::Never, C::Less, C::Equal, C::LessEqual, C::Greater, C::NotEqual, C::GreaterEqual, C::Always] {
+            for &reference in &references {
+                for unorm8 in [false, true] {
+                    let test = AlphaTest { func, reference, unorm8 };
+                    let kernel = AlphaKernel::new(&test);
+                    for chunk in alphas.chunks(LANES) {
+                        let mut lanes = [0.5f32; LANES];
+                        lanes[..chunk.len()].copy_from_slice(chunk);
+                        let pixels: Vec<[f32; 4]> = lanes.iter().map(|&a| [0.0, 0.0, 0.0, a]).collect();
+                        let want = test.test(&pixels, 0xffff) as u16;
+                        assert_eq!(kernel.test(&lanes, 0xffff), want, "{test:?} {chunk:?}");
+                        assert_eq!(kernel.test(&lanes, 0x5a5a), want & 0x5a5a);
+                    }
+                }
+            }
+        }
     }
 }
