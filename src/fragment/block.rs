@@ -25,6 +25,7 @@
 
 pub mod kernels;
 
+use super::fog::{clamp01_lane, fog_lanes};
 use super::pipeline::{DrawState, Scratch};
 use super::{AlphaTest, FragmentState};
 use crate::framebuffer::band::Band;
@@ -172,6 +173,10 @@ pub trait BlockInputs {
     /// The varyings of the pixel `dx` columns right of and `dy` rows above `(x, y)`, evaluated
     /// as the span path does from a span starting at `(x, y)`.
     fn varyings(&self, x: i32, y: i32, dx: i32, dy: i32, out: &mut [f32]);
+    /// Varyings `first .. first + out.len()` of the 16 lanes of the block at `(x, y)`, lane
+    /// `i` with the bits `varyings(x, y + (i >> 2), i & 3, 0, ..)` gives (0 for a varying
+    /// the primitive lacks).
+    fn varying_lanes(&self, x: i32, y: i32, first: usize, out: &mut [F32s]);
 }
 
 /// A draw state compiled for blocks on one framebuffer: the alpha test, the depth/stencil
@@ -276,29 +281,37 @@ pub fn shade_block(
         shade_colors(fragment, scratch, &at, live, inputs, &mut colors);
     }
     if fragment.needs_varyings() {
-        // The colour sum and fog of the span path, once over the block's 16 fragments
-        // (fragment i is lane i; its varyings are those of its row's span).
-        let mut pixels = [[0f32; 4]; LANES];
-        let l = colors.lanes();
-        for (i, p) in pixels.iter_mut().enumerate() {
-            *p = [l[0][i], l[1][i], l[2][i], l[3][i]];
-        }
-        let fog_slot = usize::from(fragment.color_sum) * 3;
-        scratch.varyings.resize(fog_slot + 1, 0.0);
-        fragment.sum_and_fog(&mut pixels, live as u64, &mut scratch.varyings, |i, out| {
-            inputs.varyings(x, y + (i >> 2) as i32, (i & 3) as i32, 0, out)
-        });
-        let mut lanes = [[0f32; LANES]; 4];
-        for (i, p) in pixels.iter().enumerate() {
-            for k in 0..4 {
-                lanes[k][i] = p[k];
-            }
-        }
-        colors = BlockColors::Lanes(lanes);
+        sum_and_fog(fragment, &at, inputs, &mut colors);
     }
     for target in &pipeline.targets {
         target.run(&mut band.colors[target.index].pixels, &at, &colors, live);
     }
+}
+
+/// The colour sum and fog of a block's fragments over its lanes, every lane (only the live
+/// ones are written): per fragment the arithmetic of [`FragmentState::sum_and_fog`] with its
+/// varyings, so the span path's bits.
+#[inline]
+fn sum_and_fog(fragment: &FragmentState, at: &BlockAt, inputs: &impl BlockInputs, colors: &mut BlockColors) {
+    crate::simd::per_level!({
+        let mut channels = colors.lanes();
+        // Varyings 0..3: the secondary colour with the colour sum; then the fog coordinate.
+        let mut varyings = [[0f32; LANES]; 4];
+        let sum = if fragment.color_sum { 3 } else { 0 };
+        let count = sum + usize::from(fragment.fog.is_some());
+        inputs.varying_lanes(at.x, at.y, 0, &mut varyings[..count]);
+        for (channel, secondary) in channels.iter_mut().zip(&varyings[..sum]) {
+            *channel = if fragment.clamp_float {
+                lanes(|i| clamp01_lane(channel[i] + secondary[i]))
+            } else {
+                lanes(|i| channel[i] + secondary[i])
+            };
+        }
+        if let Some(fog) = &fragment.fog {
+            fog_lanes(fog, &varyings[sum], &mut channels);
+        }
+        *colors = BlockColors::Lanes(channels);
+    })
 }
 
 /// The colours of a block's fragments before the tests: interpolated (or flat), textured
@@ -312,7 +325,8 @@ fn shade_colors(
     inputs: &impl BlockInputs,
     colors: &mut BlockColors,
 ) {
-    inputs.colors(at.x, at.y, colors);
+    // The interpolation compiled per SIMD level (the walker calling this is baseline code).
+    crate::simd::per_level!(inputs.colors(at.x, at.y, colors));
     let Some(texturing) = &fragment.texturing else {
         return;
     };
