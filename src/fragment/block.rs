@@ -173,6 +173,11 @@ pub trait BlockInputs {
     /// The varyings of the pixel `dx` columns right of and `dy` rows above `(x, y)`, evaluated
     /// as the span path does from a span starting at `(x, y)`.
     fn varyings(&self, x: i32, y: i32, dx: i32, dy: i32, out: &mut [f32]);
+    /// The one colour of every fragment of the primitive when it has one (flat shading):
+    /// then [`Self::colors`] is that colour for every block, with no lanes to interpolate.
+    fn uniform_color(&self) -> Option<[f32; 4]> {
+        None
+    }
     /// Varyings `first .. first + out.len()` of the 16 lanes of the block at `(x, y)`, lane
     /// `i` with the bits `varyings(x, y + (i >> 2), i & 3, 0, ..)` gives (0 for a varying
     /// the primitive lacks).
@@ -325,8 +330,12 @@ fn shade_colors(
     inputs: &impl BlockInputs,
     colors: &mut BlockColors,
 ) {
-    // The interpolation compiled per SIMD level (the walker calling this is baseline code).
-    crate::simd::per_level!(inputs.colors(at.x, at.y, colors));
+    // The interpolation compiled per SIMD level (the walker calling this is baseline code);
+    // a flat colour needs no interpolation and no dispatch.
+    match inputs.uniform_color() {
+        Some(c) => *colors = BlockColors::Uniform(c),
+        None => crate::simd::per_level!(inputs.colors(at.x, at.y, colors)),
+    }
     let Some(texturing) = &fragment.texturing else {
         return;
     };

@@ -363,6 +363,14 @@ impl BlockInputs for TriangleJob {
     }
 
     #[inline(always)]
+    fn uniform_color(&self) -> Option<[f32; 4]> {
+        match &self.shading {
+            Shading::Flat(c) => Some(*c),
+            _ => None,
+        }
+    }
+
+    #[inline(always)]
     fn varying_lanes(&self, x: i32, y: i32, first: usize, out: &mut [F32s]) {
         // The points `varyings(x, y + row, column, 0, ..)` evaluates, in its operations.
         let dx0 = x as f32 + 0.5 - self.anchor[0];
