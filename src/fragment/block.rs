@@ -14,9 +14,15 @@
 //! nearest, the arithmetic of [`super::blend::blend_unorm8`], so the bytes are those of the
 //! span path); 16-bit and float targets go through the span path's f32 stages row by row.
 //!
-//! Texturing and fog keep the span path's code and results: they are called on the
-//! block's rows in array-of-structures form (`crate::texture::Texturing::texture_span`,
-//! [`super::FragmentState::sum_and_fog`]).
+//! Texturing keeps the span path's code and results: it is called on the block's rows in
+//! array-of-structures form (`crate::texture::Texturing::texture_span`). The colour sum and
+//! fog run over the lanes ([`super::fog::fog_lanes`], varyings from
+//! [`BlockInputs::varying_lanes`]) with the operations of the span path's
+//! [`super::FragmentState::sum_and_fog`], so its bits.
+//!
+//! The walker calling [`shade_block`] is baseline code, so the colour work after the tests
+//! (colours, colour sum, fog and every target's write kernel) is one body compiled per SIMD
+//! level (`write_block`): one dispatch per block rather than one per stage.
 //!
 //! Only single-sampled filled triangles outside the exact accuracy mode take this path
 //! (`setup::jobs::triangle`); lines, points, smooth primitives, pixel rectangles,
@@ -282,23 +288,46 @@ pub fn shade_block(
     if let Some(counter) = &state.samples_passed {
         counter.fetch_add(live.count_ones() as u64, Ordering::Relaxed);
     }
-    if pipeline.alpha.is_none() {
-        shade_colors(fragment, scratch, &at, live, inputs, &mut colors);
-    }
-    if fragment.needs_varyings() {
-        sum_and_fog(fragment, &at, inputs, &mut colors);
-    }
-    for target in &pipeline.targets {
-        target.run(&mut band.colors[target.index].pixels, &at, &colors, live);
-    }
+    let shade = pipeline.alpha.is_none();
+    write_block(pipeline, fragment, band, scratch, &at, live, inputs, &mut colors, shade);
+}
+
+/// The colour stages of a block's surviving lanes, compiled per SIMD level as one body (one
+/// dispatch per block; the walker calling `shade_block` is baseline code): the colours
+/// when `shade` (unless the alpha test already computed them), the colour sum and fog, and
+/// every colour target's write kernel.
+#[allow(clippy::too_many_arguments)]
+#[inline]
+fn write_block(
+    pipeline: &BlockPipeline,
+    fragment: &FragmentState,
+    band: &mut Band<'_>,
+    scratch: &mut Scratch,
+    at: &BlockAt,
+    live: u16,
+    inputs: &impl BlockInputs,
+    colors: &mut BlockColors,
+    shade: bool,
+) {
+    crate::simd::per_level!({
+        if shade {
+            colors_body(fragment, scratch, at, live, inputs, colors);
+        }
+        if fragment.needs_varyings() {
+            sum_and_fog(fragment, at, inputs, colors);
+        }
+        for target in &pipeline.targets {
+            target.run(&mut band.colors[target.index].pixels, at, colors, live);
+        }
+    })
 }
 
 /// The colour sum and fog of a block's fragments over its lanes, every lane (only the live
 /// ones are written): per fragment the arithmetic of [`FragmentState::sum_and_fog`] with its
 /// varyings, so the span path's bits.
-#[inline]
+#[inline(always)]
 fn sum_and_fog(fragment: &FragmentState, at: &BlockAt, inputs: &impl BlockInputs, colors: &mut BlockColors) {
-    crate::simd::per_level!({
+    {
         let mut channels = colors.lanes();
         // Varyings 0..3: the secondary colour with the colour sum; then the fog coordinate.
         let mut varyings = [[0f32; LANES]; 4];
@@ -316,11 +345,11 @@ fn sum_and_fog(fragment: &FragmentState, at: &BlockAt, inputs: &impl BlockInputs
             fog_lanes(fog, &varyings[sum], &mut channels);
         }
         *colors = BlockColors::Lanes(channels);
-    })
+    }
 }
 
-/// The colours of a block's fragments before the tests: interpolated (or flat), textured
-/// when the draw textures (row by row through the span path's texturing).
+/// The colours of a block's fragments before the tests (for the alpha test), compiled per
+/// SIMD level: [`colors_body`] in a dispatch of its own.
 #[inline]
 fn shade_colors(
     fragment: &FragmentState,
@@ -330,11 +359,23 @@ fn shade_colors(
     inputs: &impl BlockInputs,
     colors: &mut BlockColors,
 ) {
-    // The interpolation compiled per SIMD level (the walker calling this is baseline code);
-    // a flat colour needs no interpolation and no dispatch.
+    crate::simd::per_level!(colors_body(fragment, scratch, at, live, inputs, colors))
+}
+
+/// The colours of a block's fragments: interpolated (or flat), textured when the draw
+/// textures (row by row through the span path's texturing).
+#[inline(always)]
+fn colors_body(
+    fragment: &FragmentState,
+    scratch: &mut Scratch,
+    at: &BlockAt,
+    live: u16,
+    inputs: &impl BlockInputs,
+    colors: &mut BlockColors,
+) {
     match inputs.uniform_color() {
         Some(c) => *colors = BlockColors::Uniform(c),
-        None => crate::simd::per_level!(inputs.colors(at.x, at.y, colors)),
+        None => inputs.colors(at.x, at.y, colors),
     }
     let Some(texturing) = &fragment.texturing else {
         return;

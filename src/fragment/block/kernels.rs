@@ -8,10 +8,15 @@
 //! - Depth: every [`DepthBand`] format, stored values as u32 lanes, the fragment depth
 //!   encoded as the span path's `DepthEncoding::encode_fragment`; the stencil test, its
 //!   operations (two-sided) and the depth write in GL's order (`super::super::stencil`).
-//! - unorm8 targets: exact integer blending on u16 lanes (`mul_unorm8`), every factor and
-//!   equation, separate RGB and alpha, the blend colour; the logic op on the packed words;
-//!   channel masks as byte masks. The common factor pairs have their own monomorphised
-//!   kernels, the rest call one function pointer per factor and channel.
+//! - Colour targets: a kernel kind chosen once per draw state and matched once per block
+//!   and target, inside the block's per-level body (`TargetKernel::run` is inlined there
+//!   with every kernel body), so a target costs a jump, not a dispatch of its own.
+//! - unorm8 targets: colours converted straight to packed RGBA words; exact integer
+//!   blending on u16 lanes (`mul8`), every factor and equation, separate RGB and alpha, the
+//!   blend colour; the logic op on the packed words; channel masks as byte masks. The
+//!   common factor pairs have their own kernels (GL_SRC_ALPHA/GL_ONE_MINUS_SRC_ALPHA and
+//!   GL_ONE/GL_ONE on the packed words, two channels per u32 or as a saturating byte add),
+//!   the rest call one function pointer per factor and channel.
 //! - RGB565 targets: the unorm8 blend on the widened destination, dither or truncation to
 //!   5/6 bits, the logic op on the packed words, channel masks as bit masks.
 //! - 16-bit unorm and float targets: the span path's f32 stages (`super::super::output`),
@@ -299,86 +304,95 @@ fn depth_stencil<const FMT: u8>(
     live: u16,
     front_facing: bool,
 ) -> u16 {
-    crate::simd::per_level!({
-        let encoding = match FMT {
-            D16 => DepthEncoding::Unorm(16),
-            PACKED24 => DepthEncoding::Unorm(24),
-            D32 => DepthEncoding::Unorm(32),
-            _ => DepthEncoding::Float,
-        };
-        // Stored depth and stencil as lanes.
-        let (stored, mut stencil): (U32s, U32s) = match band {
-            DepthBand::Depth16(px) if FMT == D16 => (map_lanes(&load(px, at), |v| v as u32), [0; LANES]),
-            DepthBand::Packed24(px) if FMT == PACKED24 => {
-                let words = load(px, at);
-                (map_lanes(&words, |w| w & 0x00ff_ffff), map_lanes(&words, |w| w >> 24))
-            }
-            DepthBand::Depth32(px, s) | DepthBand::Float32(px, s) if FMT == D32 || FMT == F32 => {
-                let stencil = match (s, p.stencil.is_some()) {
-                    (Some(s), true) => map_lanes(&load(s, at), |v| v as u32),
-                    _ => [0; LANES],
-                };
-                (load(px, at), stencil)
-            }
-            _ => return live,
-        };
-        let face = p.stencil.map(|f| f[usize::from(!front_facing)]);
-        let mut passing = live;
-        if let Some(face) = &face {
-            let reference = [face.reference & face.value_mask; LANES];
-            let masked = map_lanes(&stencil, |v| v & face.value_mask);
-            passing = compare_lanes_small(face.func, &reference, &masked) & live;
-            FaceKernel::apply(face.sfail, &mut stencil, face.reference, live & !passing, face.write_mask);
+    let encoding = match FMT {
+        D16 => DepthEncoding::Unorm(16),
+        PACKED24 => DepthEncoding::Unorm(24),
+        D32 => DepthEncoding::Unorm(32),
+        _ => DepthEncoding::Float,
+    };
+    // Stored depth and stencil as lanes.
+    let (stored, mut stencil): (U32s, U32s) = match band {
+        DepthBand::Depth16(px) if FMT == D16 => (map_lanes(&load(px, at), |v| v as u32), [0; LANES]),
+        DepthBand::Packed24(px) if FMT == PACKED24 => {
+            let words = load(px, at);
+            (map_lanes(&words, |w| w & 0x00ff_ffff), map_lanes(&words, |w| w >> 24))
         }
-        let mut depth_out = None;
-        if let Some((func, write)) = p.depth {
-            let fragment = encode_depth(encoding, z);
-            let depth_pass = if FMT == D32 {
-                compare_lanes(func, &fragment, &stored)
-            } else {
-                compare_lanes_small(func, &fragment, &stored)
-            } & passing;
-            if write && depth_pass != 0 {
-                depth_out = Some(select_u32(depth_pass, &fragment, &stored));
-            }
-            if let Some(face) = &face {
-                FaceKernel::apply(face.zfail, &mut stencil, face.reference, passing & !depth_pass, face.write_mask);
-            }
-            passing = depth_pass;
+        DepthBand::Depth32(px, s) | DepthBand::Float32(px, s) if FMT == D32 || FMT == F32 => {
+            let stencil = match (s, p.stencil.is_some()) {
+                (Some(s), true) => map_lanes(&load(s, at), |v| v as u32),
+                _ => [0; LANES],
+            };
+            (load(px, at), stencil)
+        }
+        _ => return live,
+    };
+    let face = p.stencil.map(|f| f[usize::from(!front_facing)]);
+    let mut passing = live;
+    if let Some(face) = &face {
+        let reference = [face.reference & face.value_mask; LANES];
+        let masked = map_lanes(&stencil, |v| v & face.value_mask);
+        passing = compare_lanes_small(face.func, &reference, &masked) & live;
+        FaceKernel::apply(face.sfail, &mut stencil, face.reference, live & !passing, face.write_mask);
+    }
+    let mut depth_out = None;
+    if let Some((func, write)) = p.depth {
+        let fragment = encode_depth(encoding, z);
+        let depth_pass = if FMT == D32 {
+            compare_lanes(func, &fragment, &stored)
+        } else {
+            compare_lanes_small(func, &fragment, &stored)
+        } & passing;
+        if write && depth_pass != 0 {
+            depth_out = Some(select_u32(depth_pass, &fragment, &stored));
         }
         if let Some(face) = &face {
-            FaceKernel::apply(face.zpass, &mut stencil, face.reference, passing, face.write_mask);
+            FaceKernel::apply(face.zfail, &mut stencil, face.reference, passing & !depth_pass, face.write_mask);
         }
-        let stencil_out = p.stencil_writes;
-        if depth_out.is_none() && !stencil_out {
-            return passing;
+        passing = depth_pass;
+    }
+    if let Some(face) = &face {
+        FaceKernel::apply(face.zpass, &mut stencil, face.reference, passing, face.write_mask);
+    }
+    let stencil_out = p.stencil_writes;
+    if depth_out.is_none() && !stencil_out {
+        return passing;
+    }
+    let depth = depth_out.unwrap_or(stored);
+    match band {
+        DepthBand::Depth16(px) => store(px, at, &map_lanes(&depth, |v| v as u16), live),
+        DepthBand::Packed24(px) => {
+            // `stencil` holds the stored high bytes even without a stencil test.
+            let words: U32s = lanes(|i| depth[i] | stencil[i] << 24);
+            store(px, at, &words, live);
         }
-        let depth = depth_out.unwrap_or(stored);
-        match band {
-            DepthBand::Depth16(px) => store(px, at, &map_lanes(&depth, |v| v as u16), live),
-            DepthBand::Packed24(px) => {
-                // `stencil` holds the stored high bytes even without a stencil test.
-                let words: U32s = lanes(|i| depth[i] | stencil[i] << 24);
-                store(px, at, &words, live);
+        DepthBand::Depth32(px, s) | DepthBand::Float32(px, s) => {
+            if depth_out.is_some() {
+                store(px, at, &depth, live);
             }
-            DepthBand::Depth32(px, s) | DepthBand::Float32(px, s) => {
-                if depth_out.is_some() {
-                    store(px, at, &depth, live);
-                }
-                if let (Some(s), true) = (s, stencil_out) {
-                    store(s, at, &map_lanes(&stencil, |v| v as u8), live);
-                }
+            if let (Some(s), true) = (s, stencil_out) {
+                store(s, at, &map_lanes(&stencil, |v| v as u8), live);
             }
-            DepthBand::None => {}
         }
-        passing
-    })
+        DepthBand::None => {}
+    }
+    passing
 }
 
 // ---------------------------------------------------------------------------------------
 // Colour targets.
 
-type WriteFn = fn(&TargetParams, &mut ColorBand<'_>, &BlockAt, &BlockColors, u16);
+/// Which write kernel a colour target runs (see [`TargetKernel::run`]).
+#[derive(Clone, Copy, Debug)]
+enum Kind {
+    Unorm8Store,
+    Unorm8LogicOp,
+    Unorm8BlendSrcAlpha,
+    Unorm8BlendAdd,
+    Unorm8BlendOneInvSrcAlpha,
+    Unorm8Blend,
+    Rgb565,
+    RowsF32,
+}
 
 /// What a colour target's write kernel reads.
 pub struct TargetParams {
@@ -399,7 +413,7 @@ pub struct TargetParams {
 /// One colour target's write kernel and the index of its band target.
 pub struct TargetKernel {
     pub index: usize,
-    run: WriteFn,
+    kind: Kind,
     params: TargetParams,
 }
 
@@ -425,27 +439,41 @@ impl TargetKernel {
         };
         use BlendEquation::Add;
         use BlendFactor::{One, OneMinusSrcAlpha, SrcAlpha};
-        let run: WriteFn = match format {
+        let kind = match format {
             ColorFormat::Unorm8 { .. } => match (fragment.logic_op, blend) {
-                (Some(_), _) => unorm8_logic_op,
-                (None, None) => unorm8_store,
+                (Some(_), _) => Kind::Unorm8LogicOp,
+                (None, None) => Kind::Unorm8Store,
                 (None, Some(b)) if b.rgb == b.alpha && b.rgb.equation == Add => match (b.rgb.src, b.rgb.dst) {
-                    (SrcAlpha, OneMinusSrcAlpha) => unorm8_blend_src_alpha,
-                    (One, One) => unorm8_blend_add,
-                    (One, OneMinusSrcAlpha) => unorm8_blend_fixed::<1, 7>,
-                    _ => unorm8_blend,
+                    (SrcAlpha, OneMinusSrcAlpha) => Kind::Unorm8BlendSrcAlpha,
+                    (One, One) => Kind::Unorm8BlendAdd,
+                    (One, OneMinusSrcAlpha) => Kind::Unorm8BlendOneInvSrcAlpha,
+                    _ => Kind::Unorm8Blend,
                 },
-                (None, Some(_)) => unorm8_blend,
+                (None, Some(_)) => Kind::Unorm8Blend,
             },
-            ColorFormat::Rgb565 => rgb565,
-            ColorFormat::Unorm16 { .. } | ColorFormat::Float32 { .. } => rows_f32,
+            ColorFormat::Rgb565 => Kind::Rgb565,
+            ColorFormat::Unorm16 { .. } | ColorFormat::Float32 { .. } => Kind::RowsF32,
         };
-        TargetKernel { index, run, params }
+        TargetKernel { index, kind, params }
     }
 
+    /// Writes the lanes of `live` of a block's colours into the target. Inlined, with every
+    /// kernel body, into its caller, which compiles it per SIMD level
+    /// (`super::write_block`): one dispatch per block for the colours and every target, and
+    /// one jump on the kind per target.
     #[inline(always)]
     pub fn run(&self, band: &mut ColorBand<'_>, at: &BlockAt, colors: &BlockColors, live: u16) {
-        (self.run)(&self.params, band, at, colors, live)
+        let p = &self.params;
+        match self.kind {
+            Kind::Unorm8Store => unorm8_store(p, band, at, colors, live),
+            Kind::Unorm8LogicOp => unorm8_logic_op(p, band, at, colors, live),
+            Kind::Unorm8BlendSrcAlpha => unorm8_blend_src_alpha(p, band, at, colors, live),
+            Kind::Unorm8BlendAdd => unorm8_blend_add(p, band, at, colors, live),
+            Kind::Unorm8BlendOneInvSrcAlpha => unorm8_blend_fixed::<1, 7>(p, band, at, colors, live),
+            Kind::Unorm8Blend => unorm8_blend(p, band, at, colors, live),
+            Kind::Rgb565 => rgb565(p, band, at, colors, live),
+            Kind::RowsF32 => rows_f32(p, band, at, colors, live),
+        }
     }
 }
 
@@ -530,23 +558,21 @@ fn store8(p: &TargetParams, px: &mut [[u8; 4]], at: &BlockAt, words: &U32s, old:
 }
 
 /// unorm8, no blend or logic op: convert and store.
+#[inline(always)]
 fn unorm8_store(p: &TargetParams, band: &mut ColorBand<'_>, at: &BlockAt, colors: &BlockColors, live: u16) {
-    crate::simd::per_level!({
-        let ColorBand::Unorm8(px) = band else { return };
-        store8(p, px, at, &src_words(colors), None, live);
-    })
+    let ColorBand::Unorm8(px) = band else { return };
+    store8(p, px, at, &src_words(colors), None, live);
 }
 
 /// unorm8 with the logic op on the packed words.
+#[inline(always)]
 fn unorm8_logic_op(p: &TargetParams, band: &mut ColorBand<'_>, at: &BlockAt, colors: &BlockColors, live: u16) {
-    crate::simd::per_level!({
-        let ColorBand::Unorm8(px) = band else { return };
-        let Some(op) = p.logic_op else { return };
-        let src = src_words(colors);
-        let dst = load8(px, at);
-        let words = logic_lanes(op, &src, &dst);
-        store8(p, px, at, &words, Some(&dst), live);
-    })
+    let ColorBand::Unorm8(px) = band else { return };
+    let Some(op) = p.logic_op else { return };
+    let src = src_words(colors);
+    let dst = load8(px, at);
+    let words = logic_lanes(op, &src, &dst);
+    store8(p, px, at, &words, Some(&dst), live);
 }
 
 /// `op(s, d)` on every lane, from the truth table (see `logic_op`).
@@ -677,14 +703,13 @@ impl BlendFns {
 }
 
 /// unorm8 blending with any factors and equations.
+#[inline(always)]
 fn unorm8_blend(p: &TargetParams, band: &mut ColorBand<'_>, at: &BlockAt, colors: &BlockColors, live: u16) {
-    crate::simd::per_level!({
-        let ColorBand::Unorm8(px) = band else { return };
-        let Some(fns) = &p.blend_fns else { return };
-        let dst_words = load8(px, at);
-        let out = fns.blend(&to_unorm8(colors), &unpack8(&dst_words), &p.constant8);
-        store8(p, px, at, &pack8(&out), Some(&dst_words), live);
-    })
+    let ColorBand::Unorm8(px) = band else { return };
+    let Some(fns) = &p.blend_fns else { return };
+    let dst_words = load8(px, at);
+    let out = fns.blend(&to_unorm8(colors), &unpack8(&dst_words), &p.constant8);
+    store8(p, px, at, &pack8(&out), Some(&dst_words), live);
 }
 
 /// unorm8 blending with GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA and GL_FUNC_ADD on RGB and
@@ -692,21 +717,20 @@ fn unorm8_blend(p: &TargetParams, band: &mut ColorBand<'_>, at: &BlockAt, colors
 /// alpha, each in a 16-bit half of a u32 lane): `mul8` on both halves at once is exact
 /// because every intermediate of `t = a·b + 128; (t + (t >> 8)) >> 8` stays below 2¹⁶, and
 /// `mul8(s, a) + mul8(d, 255 − a) ≤ mul8(255, a) + mul8(255, 255 − a) = 255` needs no clamp.
+#[inline(always)]
 fn unorm8_blend_src_alpha(p: &TargetParams, band: &mut ColorBand<'_>, at: &BlockAt, colors: &BlockColors, live: u16) {
     let ColorBand::Unorm8(px) = band else { return };
-    crate::simd::per_level!({
-        let dst = load8(px, at);
-        let src = src_words(colors);
-        let words = lanes(|i| {
-            let (s, d) = (src[i], dst[i]);
-            let a = s >> 24;
-            let ia = 255 - a;
-            let rb = mul8_pair((s & 0x00ff_00ff) * a) + mul8_pair((d & 0x00ff_00ff) * ia);
-            let ga = mul8_pair(((s >> 8) & 0x00ff_00ff) * a) + mul8_pair(((d >> 8) & 0x00ff_00ff) * ia);
-            rb | ga << 8
-        });
-        store8(p, px, at, &words, Some(&dst), live);
-    })
+    let dst = load8(px, at);
+    let src = src_words(colors);
+    let words = lanes(|i| {
+        let (s, d) = (src[i], dst[i]);
+        let a = s >> 24;
+        let ia = 255 - a;
+        let rb = mul8_pair((s & 0x00ff_00ff) * a) + mul8_pair((d & 0x00ff_00ff) * ia);
+        let ga = mul8_pair(((s >> 8) & 0x00ff_00ff) * a) + mul8_pair(((d >> 8) & 0x00ff_00ff) * ia);
+        rb | ga << 8
+    });
+    store8(p, px, at, &words, Some(&dst), live);
 }
 
 /// `mul8`'s rounding `t = x + 128; (t + (t >> 8)) >> 8` on both 16-bit halves of `x` (each a
@@ -719,24 +743,24 @@ fn mul8_pair(x: u32) -> u32 {
 
 /// unorm8 blending with GL_ONE, GL_ONE and GL_FUNC_ADD on RGB and alpha alike: `mul8(x, 255)`
 /// is `x`, so the blend is `min(s + d, 255)` per byte, a saturating add of the packed words.
+#[inline(always)]
 fn unorm8_blend_add(p: &TargetParams, band: &mut ColorBand<'_>, at: &BlockAt, colors: &BlockColors, live: u16) {
     let ColorBand::Unorm8(px) = band else { return };
-    crate::simd::per_level!({
-        let dst = load8(px, at);
-        let src = src_words(colors);
-        let s: [u8; 4 * LANES] = std::array::from_fn(|j| (src[j >> 2] >> (8 * (j & 3))) as u8);
-        let d: [u8; 4 * LANES] = std::array::from_fn(|j| (dst[j >> 2] >> (8 * (j & 3))) as u8);
-        let mut sum = [0u8; 4 * LANES];
-        for (o, (a, b)) in sum.iter_mut().zip(s.iter().zip(&d)) {
-            *o = a.saturating_add(*b);
-        }
-        let words = lanes(|i| u32::from_le_bytes([sum[4 * i], sum[4 * i + 1], sum[4 * i + 2], sum[4 * i + 3]]));
-        store8(p, px, at, &words, Some(&dst), live);
-    })
+    let dst = load8(px, at);
+    let src = src_words(colors);
+    let s: [u8; 4 * LANES] = std::array::from_fn(|j| (src[j >> 2] >> (8 * (j & 3))) as u8);
+    let d: [u8; 4 * LANES] = std::array::from_fn(|j| (dst[j >> 2] >> (8 * (j & 3))) as u8);
+    let mut sum = [0u8; 4 * LANES];
+    for (o, (a, b)) in sum.iter_mut().zip(s.iter().zip(&d)) {
+        *o = a.saturating_add(*b);
+    }
+    let words = lanes(|i| u32::from_le_bytes([sum[4 * i], sum[4 * i + 1], sum[4 * i + 2], sum[4 * i + 3]]));
+    store8(p, px, at, &words, Some(&dst), live);
 }
 
 /// unorm8 blending with one factor pair (codes as [`factor8`]) and GL_FUNC_ADD on RGB and
 /// alpha alike: everything inlined.
+#[inline(always)]
 fn unorm8_blend_fixed<const SRC: u8, const DST: u8>(
     p: &TargetParams,
     band: &mut ColorBand<'_>,
@@ -745,19 +769,16 @@ fn unorm8_blend_fixed<const SRC: u8, const DST: u8>(
     live: u16,
 ) {
     let ColorBand::Unorm8(px) = band else { return };
-    // The whole block's arithmetic is compiled once per SIMD level: one dispatch per block.
-    crate::simd::per_level!({
-        let dst_words = load8(px, at);
-        let (s, d) = (to_unorm8(colors), unpack8(&dst_words));
-        let c = &p.constant8;
-        let out = [
-            fixed_channel::<SRC, DST>(0, &s, &d, c),
-            fixed_channel::<SRC, DST>(1, &s, &d, c),
-            fixed_channel::<SRC, DST>(2, &s, &d, c),
-            fixed_channel::<SRC, DST>(3, &s, &d, c),
-        ];
-        store8(p, px, at, &pack8(&out), Some(&dst_words), live);
-    })
+    let dst_words = load8(px, at);
+    let (s, d) = (to_unorm8(colors), unpack8(&dst_words));
+    let c = &p.constant8;
+    let out = [
+        fixed_channel::<SRC, DST>(0, &s, &d, c),
+        fixed_channel::<SRC, DST>(1, &s, &d, c),
+        fixed_channel::<SRC, DST>(2, &s, &d, c),
+        fixed_channel::<SRC, DST>(3, &s, &d, c),
+    ];
+    store8(p, px, at, &pack8(&out), Some(&dst_words), live);
 }
 
 #[inline(always)]
@@ -769,6 +790,7 @@ fn fixed_channel<const SRC: u8, const DST: u8>(k: usize, s: &[U16s; 4], d: &[U16
 
 /// RGB565: blend on the destination widened to 8 bits (bit replication), dither or
 /// truncate to 5/6 bits, logic op on the words, channel masks on the bits.
+#[inline(always)]
 fn rgb565(p: &TargetParams, band: &mut ColorBand<'_>, at: &BlockAt, colors: &BlockColors, live: u16) {
     let ColorBand::Rgb565(px) = band else { return };
     let dst = load(px, at);
@@ -813,6 +835,7 @@ fn rgb565(p: &TargetParams, band: &mut ColorBand<'_>, at: &BlockAt, colors: &Blo
 }
 
 /// 16-bit unorm and float targets: the span path's f32 stages on each row of the block.
+#[inline(always)]
 fn rows_f32(p: &TargetParams, band: &mut ColorBand<'_>, at: &BlockAt, colors: &BlockColors, live: u16) {
     let ops = TargetOps {
         blend: p.blend.as_ref(),
