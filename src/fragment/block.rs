@@ -327,24 +327,25 @@ fn write_block(
 /// varyings, so the span path's bits.
 #[inline(always)]
 fn sum_and_fog(fragment: &FragmentState, at: &BlockAt, inputs: &impl BlockInputs, colors: &mut BlockColors) {
-    {
-        let mut channels = colors.lanes();
-        // Varyings 0..3: the secondary colour with the colour sum; then the fog coordinate.
-        let mut varyings = [[0f32; LANES]; 4];
-        let sum = if fragment.color_sum { 3 } else { 0 };
-        let count = sum + usize::from(fragment.fog.is_some());
-        inputs.varying_lanes(at.x, at.y, 0, &mut varyings[..count]);
-        for (channel, secondary) in channels.iter_mut().zip(&varyings[..sum]) {
-            *channel = if fragment.clamp_float {
-                lanes(|i| clamp01_lane(channel[i] + secondary[i]))
-            } else {
-                lanes(|i| channel[i] + secondary[i])
-            };
-        }
-        if let Some(fog) = &fragment.fog {
-            fog_lanes(fog, &varyings[sum], &mut channels);
-        }
-        *colors = BlockColors::Lanes(channels);
+    // In place on the lanes (a flat colour becomes lanes first).
+    if let BlockColors::Uniform(_) = colors {
+        *colors = BlockColors::Lanes(colors.lanes());
+    }
+    let BlockColors::Lanes(channels) = colors else { return };
+    // Varyings 0..3: the secondary colour with the colour sum; then the fog coordinate.
+    let mut varyings = [[0f32; LANES]; 4];
+    let sum = if fragment.color_sum { 3 } else { 0 };
+    let count = sum + usize::from(fragment.fog.is_some());
+    inputs.varying_lanes(at.x, at.y, 0, &mut varyings[..count]);
+    for (channel, secondary) in channels.iter_mut().zip(&varyings[..sum]) {
+        *channel = if fragment.clamp_float {
+            lanes(|i| clamp01_lane(channel[i] + secondary[i]))
+        } else {
+            lanes(|i| channel[i] + secondary[i])
+        };
+    }
+    if let Some(fog) = &fragment.fog {
+        fog_lanes(fog, &varyings[sum], channels);
     }
 }
 
