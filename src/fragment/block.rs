@@ -288,8 +288,12 @@ pub fn shade_block(
     if let Some(counter) = &state.samples_passed {
         counter.fetch_add(live.count_ones() as u64, Ordering::Relaxed);
     }
-    let shade = pipeline.alpha.is_none();
-    write_block(pipeline, fragment, band, scratch, &at, live, inputs, &mut colors, shade);
+    // Without a colour target to write (depth-only passes, all channels masked) the
+    // colours are never needed.
+    if !pipeline.targets.is_empty() {
+        let shade = pipeline.alpha.is_none();
+        write_block(pipeline, fragment, band, scratch, &at, live, inputs, &mut colors, shade);
+    }
 }
 
 /// The colour stages of a block's surviving lanes, compiled per SIMD level as one body (one

@@ -304,78 +304,80 @@ fn depth_stencil<const FMT: u8>(
     live: u16,
     front_facing: bool,
 ) -> u16 {
-    let encoding = match FMT {
-        D16 => DepthEncoding::Unorm(16),
-        PACKED24 => DepthEncoding::Unorm(24),
-        D32 => DepthEncoding::Unorm(32),
-        _ => DepthEncoding::Float,
-    };
-    // Stored depth and stencil as lanes.
-    let (stored, mut stencil): (U32s, U32s) = match band {
-        DepthBand::Depth16(px) if FMT == D16 => (map_lanes(&load(px, at), |v| v as u32), [0; LANES]),
-        DepthBand::Packed24(px) if FMT == PACKED24 => {
-            let words = load(px, at);
-            (map_lanes(&words, |w| w & 0x00ff_ffff), map_lanes(&words, |w| w >> 24))
+    crate::simd::per_level!({
+        let encoding = match FMT {
+            D16 => DepthEncoding::Unorm(16),
+            PACKED24 => DepthEncoding::Unorm(24),
+            D32 => DepthEncoding::Unorm(32),
+            _ => DepthEncoding::Float,
+        };
+        // Stored depth and stencil as lanes.
+        let (stored, mut stencil): (U32s, U32s) = match band {
+            DepthBand::Depth16(px) if FMT == D16 => (map_lanes(&load(px, at), |v| v as u32), [0; LANES]),
+            DepthBand::Packed24(px) if FMT == PACKED24 => {
+                let words = load(px, at);
+                (map_lanes(&words, |w| w & 0x00ff_ffff), map_lanes(&words, |w| w >> 24))
+            }
+            DepthBand::Depth32(px, s) | DepthBand::Float32(px, s) if FMT == D32 || FMT == F32 => {
+                let stencil = match (s, p.stencil.is_some()) {
+                    (Some(s), true) => map_lanes(&load(s, at), |v| v as u32),
+                    _ => [0; LANES],
+                };
+                (load(px, at), stencil)
+            }
+            _ => return live,
+        };
+        let face = p.stencil.map(|f| f[usize::from(!front_facing)]);
+        let mut passing = live;
+        if let Some(face) = &face {
+            let reference = [face.reference & face.value_mask; LANES];
+            let masked = map_lanes(&stencil, |v| v & face.value_mask);
+            passing = compare_lanes_small(face.func, &reference, &masked) & live;
+            FaceKernel::apply(face.sfail, &mut stencil, face.reference, live & !passing, face.write_mask);
         }
-        DepthBand::Depth32(px, s) | DepthBand::Float32(px, s) if FMT == D32 || FMT == F32 => {
-            let stencil = match (s, p.stencil.is_some()) {
-                (Some(s), true) => map_lanes(&load(s, at), |v| v as u32),
-                _ => [0; LANES],
-            };
-            (load(px, at), stencil)
-        }
-        _ => return live,
-    };
-    let face = p.stencil.map(|f| f[usize::from(!front_facing)]);
-    let mut passing = live;
-    if let Some(face) = &face {
-        let reference = [face.reference & face.value_mask; LANES];
-        let masked = map_lanes(&stencil, |v| v & face.value_mask);
-        passing = compare_lanes_small(face.func, &reference, &masked) & live;
-        FaceKernel::apply(face.sfail, &mut stencil, face.reference, live & !passing, face.write_mask);
-    }
-    let mut depth_out = None;
-    if let Some((func, write)) = p.depth {
-        let fragment = encode_depth(encoding, z);
-        let depth_pass = if FMT == D32 {
-            compare_lanes(func, &fragment, &stored)
-        } else {
-            compare_lanes_small(func, &fragment, &stored)
-        } & passing;
-        if write && depth_pass != 0 {
-            depth_out = Some(select_u32(depth_pass, &fragment, &stored));
+        let mut depth_out = None;
+        if let Some((func, write)) = p.depth {
+            let fragment = encode_depth(encoding, z);
+            let depth_pass = if FMT == D32 {
+                compare_lanes(func, &fragment, &stored)
+            } else {
+                compare_lanes_small(func, &fragment, &stored)
+            } & passing;
+            if write && depth_pass != 0 {
+                depth_out = Some(select_u32(depth_pass, &fragment, &stored));
+            }
+            if let Some(face) = &face {
+                FaceKernel::apply(face.zfail, &mut stencil, face.reference, passing & !depth_pass, face.write_mask);
+            }
+            passing = depth_pass;
         }
         if let Some(face) = &face {
-            FaceKernel::apply(face.zfail, &mut stencil, face.reference, passing & !depth_pass, face.write_mask);
+            FaceKernel::apply(face.zpass, &mut stencil, face.reference, passing, face.write_mask);
         }
-        passing = depth_pass;
-    }
-    if let Some(face) = &face {
-        FaceKernel::apply(face.zpass, &mut stencil, face.reference, passing, face.write_mask);
-    }
-    let stencil_out = p.stencil_writes;
-    if depth_out.is_none() && !stencil_out {
-        return passing;
-    }
-    let depth = depth_out.unwrap_or(stored);
-    match band {
-        DepthBand::Depth16(px) => store(px, at, &map_lanes(&depth, |v| v as u16), live),
-        DepthBand::Packed24(px) => {
-            // `stencil` holds the stored high bytes even without a stencil test.
-            let words: U32s = lanes(|i| depth[i] | stencil[i] << 24);
-            store(px, at, &words, live);
+        let stencil_out = p.stencil_writes;
+        if depth_out.is_none() && !stencil_out {
+            return passing;
         }
-        DepthBand::Depth32(px, s) | DepthBand::Float32(px, s) => {
-            if depth_out.is_some() {
-                store(px, at, &depth, live);
+        let depth = depth_out.unwrap_or(stored);
+        match band {
+            DepthBand::Depth16(px) => store(px, at, &map_lanes(&depth, |v| v as u16), live),
+            DepthBand::Packed24(px) => {
+                // `stencil` holds the stored high bytes even without a stencil test.
+                let words: U32s = lanes(|i| depth[i] | stencil[i] << 24);
+                store(px, at, &words, live);
             }
-            if let (Some(s), true) = (s, stencil_out) {
-                store(s, at, &map_lanes(&stencil, |v| v as u8), live);
+            DepthBand::Depth32(px, s) | DepthBand::Float32(px, s) => {
+                if depth_out.is_some() {
+                    store(px, at, &depth, live);
+                }
+                if let (Some(s), true) = (s, stencil_out) {
+                    store(s, at, &map_lanes(&stencil, |v| v as u8), live);
+                }
             }
+            DepthBand::None => {}
         }
-        DepthBand::None => {}
-    }
-    passing
+        passing
+    })
 }
 
 // ---------------------------------------------------------------------------------------
