@@ -15,9 +15,15 @@
 //! nearest, the arithmetic of [`super::blend::blend_unorm8`], so the bytes are those of the
 //! span path); 16-bit and float targets go through the span path's f32 stages row by row.
 //!
-//! Texturing and fog keep the span path's code and results: they are called on the
-//! block's rows in array-of-structures form (`crate::texture::Texturing::texture_span`,
-//! [`super::FragmentState::sum_and_fog`]).
+//! Texturing keeps the span path's code and results: it is called on the block's rows in
+//! array-of-structures form (`crate::texture::Texturing::texture_span`). The colour sum and
+//! fog run over the lanes ([`super::fog::fog_lanes`], varyings from
+//! [`BlockInputs::varying_lanes`]) with the operations of the span path's
+//! [`super::FragmentState::sum_and_fog`], so its bits.
+//!
+//! The walker calling [`shade_block`] is baseline code, so the colour work after the tests
+//! (colours, colour sum, fog and every target's write kernel) is one body compiled per SIMD
+//! level (`write_block`): one dispatch per block rather than one per stage.
 //!
 //! Only single-sampled filled triangles outside the exact accuracy mode take this path
 //! (`setup::jobs::triangle`); lines, points, smooth primitives, pixel rectangles,
@@ -27,6 +33,7 @@
 pub mod depth_stencil;
 pub mod kernels;
 
+use super::fog::{clamp01_lane, fog_lanes};
 use super::pipeline::{DrawState, Scratch};
 use super::{AlphaTest, FragmentState};
 use crate::framebuffer::band::Band;
@@ -176,6 +183,15 @@ pub trait BlockInputs {
     /// The varyings of the pixel `dx` columns right of and `dy` rows above `(x, y)`, evaluated
     /// as the span path does from a span starting at `(x, y)`.
     fn varyings(&self, x: i32, y: i32, dx: i32, dy: i32, out: &mut [f32]);
+    /// The one colour of every fragment of the primitive when it has one (flat shading):
+    /// then [`Self::colors`] is that colour for every block, with no lanes to interpolate.
+    fn uniform_color(&self) -> Option<[f32; 4]> {
+        None
+    }
+    /// Varyings `first .. first + out.len()` of the 16 lanes of the block at `(x, y)`, lane
+    /// `i` with the bits `varyings(x, y + (i >> 2), i & 3, 0, ..)` gives (0 for a varying
+    /// the primitive lacks).
+    fn varying_lanes(&self, x: i32, y: i32, first: usize, out: &mut [F32s]);
 }
 
 /// A draw state compiled for blocks on one framebuffer: the alpha test, the depth/stencil
@@ -323,42 +339,73 @@ pub fn shade_block(
     if let Some(counter) = &state.samples_passed {
         counter.fetch_add(live.count_ones() as u64, Ordering::Relaxed);
     }
-    if pipeline.targets.is_empty() {
-        // No colour is written (every channel masked, as in stencil shadow volumes): the
-        // colours, colour sum and fog would feed nothing.
-        return;
-    }
-    if pipeline.alpha.is_none() {
-        shade_colors(fragment, scratch, &at, live, inputs, &mut colors);
-    }
-    if fragment.needs_varyings() {
-        // The colour sum and fog of the span path, once over the block's 16 fragments
-        // (fragment i is lane i; its varyings are those of its row's span).
-        let mut pixels = [[0f32; 4]; LANES];
-        let l = colors.lanes();
-        for (i, p) in pixels.iter_mut().enumerate() {
-            *p = [l[0][i], l[1][i], l[2][i], l[3][i]];
-        }
-        let fog_slot = usize::from(fragment.color_sum) * 3;
-        scratch.varyings.resize(fog_slot + 1, 0.0);
-        fragment.sum_and_fog(&mut pixels, live as u64, &mut scratch.varyings, |i, out| {
-            inputs.varyings(x, y + (i >> 2) as i32, (i & 3) as i32, 0, out)
-        });
-        let mut lanes = [[0f32; LANES]; 4];
-        for (i, p) in pixels.iter().enumerate() {
-            for k in 0..4 {
-                lanes[k][i] = p[k];
-            }
-        }
-        colors = BlockColors::Lanes(lanes);
-    }
-    for target in &pipeline.targets {
-        target.run(&mut band.colors[target.index].pixels, &at, &colors, live);
+    // Without a colour target to write (depth-only passes, all channels masked) the
+    // colours are never needed.
+    if !pipeline.targets.is_empty() {
+        let shade = pipeline.alpha.is_none();
+        write_block(pipeline, fragment, band, scratch, &at, live, inputs, &mut colors, shade);
     }
 }
 
-/// The colours of a block's fragments before the tests: interpolated (or flat), textured
-/// when the draw textures (row by row through the span path's texturing).
+/// The colour stages of a block's surviving lanes, compiled per SIMD level as one body (one
+/// dispatch per block; the walker calling `shade_block` is baseline code): the colours
+/// when `shade` (unless the alpha test already computed them), the colour sum and fog, and
+/// every colour target's write kernel.
+#[allow(clippy::too_many_arguments)]
+#[inline]
+fn write_block(
+    pipeline: &BlockPipeline,
+    fragment: &FragmentState,
+    band: &mut Band<'_>,
+    scratch: &mut Scratch,
+    at: &BlockAt,
+    live: u16,
+    inputs: &impl BlockInputs,
+    colors: &mut BlockColors,
+    shade: bool,
+) {
+    crate::simd::per_level!({
+        if shade {
+            colors_body(fragment, scratch, at, live, inputs, colors);
+        }
+        if fragment.needs_varyings() {
+            sum_and_fog(fragment, at, inputs, colors);
+        }
+        for target in &pipeline.targets {
+            target.run(&mut band.colors[target.index].pixels, at, colors, live);
+        }
+    })
+}
+
+/// The colour sum and fog of a block's fragments over its lanes, every lane (only the live
+/// ones are written): per fragment the arithmetic of [`FragmentState::sum_and_fog`] with its
+/// varyings, so the span path's bits.
+#[inline(always)]
+fn sum_and_fog(fragment: &FragmentState, at: &BlockAt, inputs: &impl BlockInputs, colors: &mut BlockColors) {
+    // In place on the lanes (a flat colour becomes lanes first).
+    if let BlockColors::Uniform(_) = colors {
+        *colors = BlockColors::Lanes(colors.lanes());
+    }
+    let BlockColors::Lanes(channels) = colors else { return };
+    // Varyings 0..3: the secondary colour with the colour sum; then the fog coordinate.
+    let mut varyings = [[0f32; LANES]; 4];
+    let sum = if fragment.color_sum { 3 } else { 0 };
+    let count = sum + usize::from(fragment.fog.is_some());
+    inputs.varying_lanes(at.x, at.y, 0, &mut varyings[..count]);
+    for (channel, secondary) in channels.iter_mut().zip(&varyings[..sum]) {
+        *channel = if fragment.clamp_float {
+            lanes(|i| clamp01_lane(channel[i] + secondary[i]))
+        } else {
+            lanes(|i| channel[i] + secondary[i])
+        };
+    }
+    if let Some(fog) = &fragment.fog {
+        fog_lanes(fog, &varyings[sum], channels);
+    }
+}
+
+/// The colours of a block's fragments before the tests (for the alpha test), compiled per
+/// SIMD level: [`colors_body`] in a dispatch of its own.
 #[inline]
 fn shade_colors(
     fragment: &FragmentState,
@@ -368,7 +415,24 @@ fn shade_colors(
     inputs: &impl BlockInputs,
     colors: &mut BlockColors,
 ) {
-    inputs.colors(at.x, at.y, colors);
+    crate::simd::per_level!(colors_body(fragment, scratch, at, live, inputs, colors))
+}
+
+/// The colours of a block's fragments: interpolated (or flat), textured when the draw
+/// textures (row by row through the span path's texturing).
+#[inline(always)]
+fn colors_body(
+    fragment: &FragmentState,
+    scratch: &mut Scratch,
+    at: &BlockAt,
+    live: u16,
+    inputs: &impl BlockInputs,
+    colors: &mut BlockColors,
+) {
+    match inputs.uniform_color() {
+        Some(c) => *colors = BlockColors::Uniform(c),
+        None => inputs.colors(at.x, at.y, colors),
+    }
     let Some(texturing) = &fragment.texturing else {
         return;
     };

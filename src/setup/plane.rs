@@ -14,6 +14,7 @@
 //! code that renders it (the tile workers, each job's `render`) reads its planes next to its
 //! edges with no scene at hand. The price is room: every triangle or line job carries
 //! `MAX_VARYINGS` planes (240 bytes), used or not, which the scene's byte budget counts.
+use crate::fragment::block::{lanes, F32s, LANES};
 use crate::gl::limits::MAX_TEXTURE_UNITS;
 
 /// The most scalar varyings a draw interpolates: the secondary color's RGB (GL_COLOR_SUM),
@@ -149,6 +150,31 @@ impl<P: Interpolant> Varyings<P> {
                     *o = p.at(x, y);
                 }
             }
+        }
+    }
+
+    /// Attributes `first .. first + out.len()` at the 16 points `(x[i], y[i])` of a block,
+    /// into `out` (one lane array per attribute; attributes the primitive lacks are 0):
+    /// lane for lane the arithmetic of [`Self::at`], so the same bits.
+    #[inline(always)]
+    pub fn lanes_at(&self, x: &F32s, y: &F32s, first: usize, out: &mut [F32s]) {
+        let Some(inv_w) = &self.inv_w else {
+            // Affine (the fast accuracy mode): the planes themselves.
+            for (k, o) in out.iter_mut().enumerate() {
+                *o = match self.planes().get(first + k) {
+                    Some(p) => lanes(|i| p.at(x[i], y[i])),
+                    None => [0.0; LANES],
+                };
+            }
+            return;
+        };
+        let q: F32s = lanes(|i| inv_w.at(x[i], y[i]));
+        let w: F32s = lanes(|i| 1.0 / q[i]);
+        for (k, o) in out.iter_mut().enumerate() {
+            *o = match self.planes().get(first + k) {
+                Some(p) => lanes(|i| p.at(x[i], y[i]) * w[i]),
+                None => [0.0; LANES],
+            };
         }
     }
 }

@@ -4,10 +4,15 @@
 //! equation, stencil per operation), so that nothing is matched per block or pixel.
 //!
 //! - Depth and stencil: [`super::depth_stencil`].
-//! - unorm8 targets: exact integer blending on u16 lanes (`mul_unorm8`), every factor and
-//!   equation, separate RGB and alpha, the blend colour; the logic op on the packed words;
-//!   channel masks as byte masks. The common factor pairs have their own monomorphised
-//!   kernels, the rest call one function pointer per factor and channel.
+//! - Colour targets: a kernel kind chosen once per draw state and matched once per block
+//!   and target, inside the block's per-level body (`TargetKernel::run` is inlined there
+//!   with every kernel body), so a target costs a jump, not a dispatch of its own.
+//! - unorm8 targets: colours converted straight to packed RGBA words; exact integer
+//!   blending on u16 lanes (`mul8`), every factor and equation, separate RGB and alpha, the
+//!   blend colour; the logic op on the packed words; channel masks as byte masks. The
+//!   common factor pairs have their own kernels (GL_SRC_ALPHA/GL_ONE_MINUS_SRC_ALPHA and
+//!   GL_ONE/GL_ONE on the packed words, two channels per u32 or as a saturating byte add),
+//!   the rest call one function pointer per factor and channel.
 //! - RGB565 targets: the unorm8 blend on the widened destination, dither or truncation to
 //!   5/6 bits, the logic op on the packed words, channel masks as bit masks.
 //! - 16-bit unorm and float targets: the span path's f32 stages (`super::super::output`),
@@ -26,7 +31,18 @@ use crate::framebuffer::ColorFormat;
 // ---------------------------------------------------------------------------------------
 // Colour targets.
 
-type WriteFn = fn(&TargetParams, &mut ColorBand<'_>, &BlockAt, &BlockColors, u16);
+/// Which write kernel a colour target runs (see [`TargetKernel::run`]).
+#[derive(Clone, Copy, Debug)]
+enum Kind {
+    Unorm8Store,
+    Unorm8LogicOp,
+    Unorm8BlendSrcAlpha,
+    Unorm8BlendAdd,
+    Unorm8BlendOneInvSrcAlpha,
+    Unorm8Blend,
+    Rgb565,
+    RowsF32,
+}
 
 /// What a colour target's write kernel reads.
 pub struct TargetParams {
@@ -47,7 +63,7 @@ pub struct TargetParams {
 /// One colour target's write kernel and the index of its band target.
 pub struct TargetKernel {
     pub index: usize,
-    run: WriteFn,
+    kind: Kind,
     params: TargetParams,
 }
 
@@ -73,26 +89,41 @@ impl TargetKernel {
         };
         use BlendEquation::Add;
         use BlendFactor::{One, OneMinusSrcAlpha, SrcAlpha};
-        let run: WriteFn = match format {
+        let kind = match format {
             ColorFormat::Unorm8 { .. } => match (fragment.logic_op, blend) {
-                (Some(_), _) => unorm8_logic_op,
-                (None, None) => unorm8_store,
+                (Some(_), _) => Kind::Unorm8LogicOp,
+                (None, None) => Kind::Unorm8Store,
                 (None, Some(b)) if b.rgb == b.alpha && b.rgb.equation == Add => match (b.rgb.src, b.rgb.dst) {
-                    (SrcAlpha, OneMinusSrcAlpha) => unorm8_blend_fixed::<6, 7>,
-                    (One, One) => unorm8_blend_fixed::<1, 1>,
-                    _ => unorm8_blend,
+                    (SrcAlpha, OneMinusSrcAlpha) => Kind::Unorm8BlendSrcAlpha,
+                    (One, One) => Kind::Unorm8BlendAdd,
+                    (One, OneMinusSrcAlpha) => Kind::Unorm8BlendOneInvSrcAlpha,
+                    _ => Kind::Unorm8Blend,
                 },
-                (None, Some(_)) => unorm8_blend,
+                (None, Some(_)) => Kind::Unorm8Blend,
             },
-            ColorFormat::Rgb565 => rgb565,
-            ColorFormat::Unorm16 { .. } | ColorFormat::Float32 { .. } => rows_f32,
+            ColorFormat::Rgb565 => Kind::Rgb565,
+            ColorFormat::Unorm16 { .. } | ColorFormat::Float32 { .. } => Kind::RowsF32,
         };
-        TargetKernel { index, run, params }
+        TargetKernel { index, kind, params }
     }
 
+    /// Writes the lanes of `live` of a block's colours into the target. Inlined, with every
+    /// kernel body, into its caller, which compiles it per SIMD level
+    /// (`super::write_block`): one dispatch per block for the colours and every target, and
+    /// one jump on the kind per target.
     #[inline(always)]
     pub fn run(&self, band: &mut ColorBand<'_>, at: &BlockAt, colors: &BlockColors, live: u16) {
-        (self.run)(&self.params, band, at, colors, live)
+        let p = &self.params;
+        match self.kind {
+            Kind::Unorm8Store => unorm8_store(p, band, at, colors, live),
+            Kind::Unorm8LogicOp => unorm8_logic_op(p, band, at, colors, live),
+            Kind::Unorm8BlendSrcAlpha => unorm8_blend_src_alpha(p, band, at, colors, live),
+            Kind::Unorm8BlendAdd => unorm8_blend_add(p, band, at, colors, live),
+            Kind::Unorm8BlendOneInvSrcAlpha => unorm8_blend_fixed::<1, 7>(p, band, at, colors, live),
+            Kind::Unorm8Blend => unorm8_blend(p, band, at, colors, live),
+            Kind::Rgb565 => rgb565(p, band, at, colors, live),
+            Kind::RowsF32 => rows_f32(p, band, at, colors, live),
+        }
     }
 }
 
@@ -108,6 +139,27 @@ pub fn unorm8_lanes(x: &F32s) -> U16s {
         let v = if v < 1.0 { v } else { 1.0 };
         ((v * 255.0 + MAGIC).to_bits() - MAGIC.to_bits()) as u16
     })
+}
+
+/// `float_to_unorm(x, 8)` of one lane as [`unorm8_lanes`] computes it, as a u32 (0..=255).
+#[inline(always)]
+fn unorm8_u32(x: f32) -> u32 {
+    const MAGIC: f32 = (1u32 << 23) as f32;
+    let v = if x > 0.0 { x } else { 0.0 };
+    let v = if v < 1.0 { v } else { 1.0 };
+    (v * 255.0 + MAGIC).to_bits() - MAGIC.to_bits()
+}
+
+/// A block's colours converted to unorm8 (the span path's `float_to_unorm`) and packed into
+/// RGBA words (byte k: channel k), straight from the f32 lanes.
+#[inline(always)]
+fn src_words(colors: &BlockColors) -> U32s {
+    match colors {
+        BlockColors::Uniform(c) => [u32::from_le_bytes(c.map(|v| float_to_unorm(v, 8) as u8)); LANES],
+        BlockColors::Lanes([r, g, b, a]) => {
+            lanes(|i| unorm8_u32(r[i]) | unorm8_u32(g[i]) << 8 | unorm8_u32(b[i]) << 16 | unorm8_u32(a[i]) << 24)
+        }
+    }
 }
 
 /// A block's colours as unorm8 channel lanes (the span path's `float_to_unorm`).
@@ -156,27 +208,21 @@ fn store8(p: &TargetParams, px: &mut [[u8; 4]], at: &BlockAt, words: &U32s, old:
 }
 
 /// unorm8, no blend or logic op: convert and store.
+#[inline(always)]
 fn unorm8_store(p: &TargetParams, band: &mut ColorBand<'_>, at: &BlockAt, colors: &BlockColors, live: u16) {
-    crate::simd::per_level!({
-        let ColorBand::Unorm8(px) = band else { return };
-        let words = match colors {
-            BlockColors::Uniform(c) => [u32::from_le_bytes(c.map(|v| float_to_unorm(v, 8) as u8)); LANES],
-            _ => pack8(&to_unorm8(colors)),
-        };
-        store8(p, px, at, &words, None, live);
-    })
+    let ColorBand::Unorm8(px) = band else { return };
+    store8(p, px, at, &src_words(colors), None, live);
 }
 
 /// unorm8 with the logic op on the packed words.
+#[inline(always)]
 fn unorm8_logic_op(p: &TargetParams, band: &mut ColorBand<'_>, at: &BlockAt, colors: &BlockColors, live: u16) {
-    crate::simd::per_level!({
-        let ColorBand::Unorm8(px) = band else { return };
-        let Some(op) = p.logic_op else { return };
-        let src = pack8(&to_unorm8(colors));
-        let dst = load8(px, at);
-        let words = logic_lanes(op, &src, &dst);
-        store8(p, px, at, &words, Some(&dst), live);
-    })
+    let ColorBand::Unorm8(px) = band else { return };
+    let Some(op) = p.logic_op else { return };
+    let src = src_words(colors);
+    let dst = load8(px, at);
+    let words = logic_lanes(op, &src, &dst);
+    store8(p, px, at, &words, Some(&dst), live);
 }
 
 /// `op(s, d)` on every lane, from the truth table (see `logic_op`).
@@ -307,18 +353,64 @@ impl BlendFns {
 }
 
 /// unorm8 blending with any factors and equations.
+#[inline(always)]
 fn unorm8_blend(p: &TargetParams, band: &mut ColorBand<'_>, at: &BlockAt, colors: &BlockColors, live: u16) {
-    crate::simd::per_level!({
-        let ColorBand::Unorm8(px) = band else { return };
-        let Some(fns) = &p.blend_fns else { return };
-        let dst_words = load8(px, at);
-        let out = fns.blend(&to_unorm8(colors), &unpack8(&dst_words), &p.constant8);
-        store8(p, px, at, &pack8(&out), Some(&dst_words), live);
-    })
+    let ColorBand::Unorm8(px) = band else { return };
+    let Some(fns) = &p.blend_fns else { return };
+    let dst_words = load8(px, at);
+    let out = fns.blend(&to_unorm8(colors), &unpack8(&dst_words), &p.constant8);
+    store8(p, px, at, &pack8(&out), Some(&dst_words), live);
+}
+
+/// unorm8 blending with GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA and GL_FUNC_ADD on RGB and
+/// alpha alike, on the packed words two channels at a time (red and blue, green and
+/// alpha, each in a 16-bit half of a u32 lane): `mul8` on both halves at once is exact
+/// because every intermediate of `t = a·b + 128; (t + (t >> 8)) >> 8` stays below 2¹⁶, and
+/// `mul8(s, a) + mul8(d, 255 − a) ≤ mul8(255, a) + mul8(255, 255 − a) = 255` needs no clamp.
+#[inline(always)]
+fn unorm8_blend_src_alpha(p: &TargetParams, band: &mut ColorBand<'_>, at: &BlockAt, colors: &BlockColors, live: u16) {
+    let ColorBand::Unorm8(px) = band else { return };
+    let dst = load8(px, at);
+    let src = src_words(colors);
+    let words = lanes(|i| {
+        let (s, d) = (src[i], dst[i]);
+        let a = s >> 24;
+        let ia = 255 - a;
+        let rb = mul8_pair((s & 0x00ff_00ff) * a) + mul8_pair((d & 0x00ff_00ff) * ia);
+        let ga = mul8_pair(((s >> 8) & 0x00ff_00ff) * a) + mul8_pair(((d >> 8) & 0x00ff_00ff) * ia);
+        rb | ga << 8
+    });
+    store8(p, px, at, &words, Some(&dst), live);
+}
+
+/// `mul8`'s rounding `t = x + 128; (t + (t >> 8)) >> 8` on both 16-bit halves of `x` (each a
+/// product of two unorm8 values), giving a byte in bits 0–7 and one in bits 16–23.
+#[inline(always)]
+fn mul8_pair(x: u32) -> u32 {
+    let t = x + 0x0080_0080;
+    ((t + ((t >> 8) & 0x00ff_00ff)) >> 8) & 0x00ff_00ff
+}
+
+/// unorm8 blending with GL_ONE, GL_ONE and GL_FUNC_ADD on RGB and alpha alike: `mul8(x, 255)`
+/// is `x`, so the blend is `min(s + d, 255)` per byte, a saturating add of the packed words.
+#[inline(always)]
+fn unorm8_blend_add(p: &TargetParams, band: &mut ColorBand<'_>, at: &BlockAt, colors: &BlockColors, live: u16) {
+    let ColorBand::Unorm8(px) = band else { return };
+    let dst = load8(px, at);
+    let src = src_words(colors);
+    let s: [u8; 4 * LANES] = std::array::from_fn(|j| (src[j >> 2] >> (8 * (j & 3))) as u8);
+    let d: [u8; 4 * LANES] = std::array::from_fn(|j| (dst[j >> 2] >> (8 * (j & 3))) as u8);
+    let mut sum = [0u8; 4 * LANES];
+    for (o, (a, b)) in sum.iter_mut().zip(s.iter().zip(&d)) {
+        *o = a.saturating_add(*b);
+    }
+    let words = lanes(|i| u32::from_le_bytes([sum[4 * i], sum[4 * i + 1], sum[4 * i + 2], sum[4 * i + 3]]));
+    store8(p, px, at, &words, Some(&dst), live);
 }
 
 /// unorm8 blending with one factor pair (codes as [`factor8`]) and GL_FUNC_ADD on RGB and
 /// alpha alike: everything inlined.
+#[inline(always)]
 fn unorm8_blend_fixed<const SRC: u8, const DST: u8>(
     p: &TargetParams,
     band: &mut ColorBand<'_>,
@@ -327,19 +419,16 @@ fn unorm8_blend_fixed<const SRC: u8, const DST: u8>(
     live: u16,
 ) {
     let ColorBand::Unorm8(px) = band else { return };
-    // The whole block's arithmetic is compiled once per SIMD level: one dispatch per block.
-    crate::simd::per_level!({
-        let dst_words = load8(px, at);
-        let (s, d) = (to_unorm8(colors), unpack8(&dst_words));
-        let c = &p.constant8;
-        let out = [
-            fixed_channel::<SRC, DST>(0, &s, &d, c),
-            fixed_channel::<SRC, DST>(1, &s, &d, c),
-            fixed_channel::<SRC, DST>(2, &s, &d, c),
-            fixed_channel::<SRC, DST>(3, &s, &d, c),
-        ];
-        store8(p, px, at, &pack8(&out), Some(&dst_words), live);
-    })
+    let dst_words = load8(px, at);
+    let (s, d) = (to_unorm8(colors), unpack8(&dst_words));
+    let c = &p.constant8;
+    let out = [
+        fixed_channel::<SRC, DST>(0, &s, &d, c),
+        fixed_channel::<SRC, DST>(1, &s, &d, c),
+        fixed_channel::<SRC, DST>(2, &s, &d, c),
+        fixed_channel::<SRC, DST>(3, &s, &d, c),
+    ];
+    store8(p, px, at, &pack8(&out), Some(&dst_words), live);
 }
 
 #[inline(always)]
@@ -351,6 +440,7 @@ fn fixed_channel<const SRC: u8, const DST: u8>(k: usize, s: &[U16s; 4], d: &[U16
 
 /// RGB565: blend on the destination widened to 8 bits (bit replication), dither or
 /// truncate to 5/6 bits, logic op on the words, channel masks on the bits.
+#[inline(always)]
 fn rgb565(p: &TargetParams, band: &mut ColorBand<'_>, at: &BlockAt, colors: &BlockColors, live: u16) {
     let ColorBand::Rgb565(px) = band else { return };
     let dst = load(px, at);
@@ -395,6 +485,7 @@ fn rgb565(p: &TargetParams, band: &mut ColorBand<'_>, at: &BlockAt, colors: &Blo
 }
 
 /// 16-bit unorm and float targets: the span path's f32 stages on each row of the block.
+#[inline(always)]
 fn rows_f32(p: &TargetParams, band: &mut ColorBand<'_>, at: &BlockAt, colors: &BlockColors, live: u16) {
     let ops = TargetOps {
         blend: p.blend.as_ref(),
@@ -453,6 +544,59 @@ mod tests {
                     let got = BlendFns::new(blend).blend(&lanes(&src), &lanes(&dst), &constant.map(u16::from));
                     for i in 0..LANES {
                         assert_eq!([0, 1, 2, 3].map(|k| got[k][i] as u8), want[i], "{blend:?} lane {i}");
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn word_blends_equal_the_span_blend_for_every_source_alpha_and_destination() {
+        // The packed-word kernels (GL_SRC_ALPHA/GL_ONE_MINUS_SRC_ALPHA, GL_ONE/GL_ONE) and the
+        // generic one (GL_ONE/GL_ONE_MINUS_SRC_ALPHA) against the span path's integer blend,
+        // every source value and alpha with destinations in steps of 3, through a channel
+        // mask and a partial live mask.
+        let pairs = [(BlendFactor::SrcAlpha, BlendFactor::OneMinusSrcAlpha), (BlendFactor::One, BlendFactor::One)];
+        let pairs = pairs.into_iter().chain([(BlendFactor::One, BlendFactor::OneMinusSrcAlpha)]);
+        for (src_f, dst_f) in pairs {
+            for mask in [[true; 4], [true, false, true, true]] {
+                let func = BlendFunc { src: src_f, dst: dst_f, equation: BlendEquation::Add };
+                let blend = Blend { rgb: func, alpha: func };
+                let mut state = FragmentState::plain(None, vec![Some(mask)], false);
+                state.blend = vec![Some(blend)];
+                let kernel = TargetKernel::new(&state, 0, ColorFormat::Unorm8 { alpha: true }, mask);
+                let at = BlockAt { x: 0, y: 0, base: 0, width: 4, valid: 0xffff };
+                let live = 0xfeff;
+                for a in 0..=255u32 {
+                    for d in (0..=255u32).step_by(3) {
+                        for s0 in (0..256u32).step_by(16) {
+                            let src: [[u8; 4]; LANES] = std::array::from_fn(|i| {
+                                let s = s0 + i as u32;
+                                [s as u8, (255 - s) as u8, (s ^ d) as u8, a as u8]
+                            });
+                            let dst: [[u8; 4]; LANES] = std::array::from_fn(|i| {
+                                [d as u8, (d + 7 * i as u32) as u8, (255 - d) as u8, (d ^ a) as u8]
+                            });
+                            let colors = BlockColors::Lanes(std::array::from_fn(|k| src.map(|c| c[k] as f32 / 255.0)));
+                            assert!(src
+                                .iter()
+                                .all(|c| c.iter().all(|&v| float_to_unorm(v as f32 / 255.0, 8) == v as u32)));
+                            let mut want = dst;
+                            let mut blended = dst;
+                            blend_unorm8(&blend, [0; 4], &src, &mut blended, 0xffff);
+                            for i in 0..LANES {
+                                if live & (1 << i) != 0 {
+                                    for k in 0..4 {
+                                        if mask[k] {
+                                            want[i][k] = blended[i][k];
+                                        }
+                                    }
+                                }
+                            }
+                            let mut got = dst;
+                            kernel.run(&mut ColorBand::Unorm8(&mut got), &at, &colors, live);
+                            assert_eq!(got, want, "{src_f:?} {dst_f:?} a {a} d {d} s0 {s0}");
+                        }
                     }
                 }
             }

@@ -347,6 +347,23 @@ impl BlockInputs for TriangleJob {
         let dy0 = y as f32 + 0.5 - self.anchor[1];
         self.varyings.at(dx0 + dx as f32, dy0 + dy as f32, out);
     }
+
+    #[inline(always)]
+    fn uniform_color(&self) -> Option<[f32; 4]> {
+        match &self.shading {
+            Shading::Flat(c) => Some(*c),
+            _ => None,
+        }
+    }
+
+    #[inline(always)]
+    fn varying_lanes(&self, x: i32, y: i32, first: usize, out: &mut [F32s]) {
+        // The points `varyings(x, y + row, column, 0, ..)` evaluates, in its operations.
+        let dx0 = x as f32 + 0.5 - self.anchor[0];
+        let px: F32s = lanes(|i| dx0 + (i & 3) as f32);
+        let py: F32s = lanes(|i| (y + (i >> 2) as i32) as f32 + 0.5 - self.anchor[1] + 0.0);
+        self.varyings.lanes_at(&px, &py, first, out);
+    }
 }
 
 impl TriangleJob {
