@@ -8,6 +8,7 @@ use crate::framebuffer::{ColorSlot, FramebufferConfig, Rect};
 use crate::gl::enums::*;
 use crate::gl::limits::{MAX_DRAW_BUFFERS, MAX_VIEWPORT_DIM};
 use crate::gl::types::GLenum;
+use crate::setup::jobs::clear::{ClearJob, ColorClear};
 
 /// Aux buffer enums accepted as names (GL_AUX0..GL_AUX3); existence is checked separately.
 const MAX_AUX_ENUMS: u32 = 4;
@@ -172,7 +173,12 @@ impl Context {
         if !self.check_framebuffer_complete(true) {
             return;
         }
-        // Clears run immediately, so the draws recorded before them run first.
+        // A single-sampled clear without the accumulation buffer is recorded in the scene and
+        // applied by each tile's worker (`setup::jobs::clear`); the others run at once, after
+        // the draws recorded before them.
+        if mask & GL_ACCUM_BUFFER_BIT == 0 && self.samples_of(self.fbo.draw) == 1 {
+            return self.record_clear_job(mask);
+        }
         self.flush_rendering();
         let targets = self.draw_targets();
         let color = &self.state.color;
@@ -220,6 +226,39 @@ impl Context {
                 }
             }
         });
+    }
+
+    /// Records glClear(`mask`) (color, depth and stencil bits only) in the scene as a color
+    /// job and a depth/stencil job, with the values and masks of the current state.
+    fn record_clear_job(&mut self, mask: u32) {
+        let Some((width, height, _)) = self.framebuffer_shape(true) else {
+            return;
+        };
+        let bounds = Rect::from_xywh(0, 0, width as i32, height as i32);
+        let rect = self.state.scissor.clip(bounds);
+        if rect.is_empty() {
+            return;
+        }
+        let whole = rect == bounds;
+        let mut colors = Vec::new();
+        if mask & GL_COLOR_BUFFER_BIT != 0 {
+            let clear_color = self.state.color.clear_color;
+            for (slot, index) in self.draw_targets() {
+                let mask = self.state.color.color_mask[index];
+                if mask.iter().any(|&m| m) {
+                    colors.push(ColorClear { slot, color: clear_color, mask });
+                }
+            }
+        }
+        let depth = (mask & GL_DEPTH_BUFFER_BIT != 0 && self.state.depth.write_mask).then_some(self.state.depth.clear);
+        let stencil = (mask & GL_STENCIL_BUFFER_BIT != 0)
+            .then_some((self.state.stencil.clear as u8, self.state.stencil.front.write_mask as u8));
+        if !colors.is_empty() {
+            self.record_clear(ClearJob { rect, whole, colors, depth: None, stencil: None });
+        }
+        if depth.is_some() || stencil.is_some() {
+            self.record_clear(ClearJob { rect, whole, colors: Vec::new(), depth, stencil });
+        }
     }
 
     /// glColorMask (all draw buffers) or glColorMaski (`index`).
