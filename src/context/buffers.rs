@@ -157,7 +157,7 @@ impl Context {
 
     /// Every (slot, draw buffer index) a fragment or clear writes to.
     pub fn draw_targets(&self) -> Vec<(ColorSlot, usize)> {
-        let mut targets = Vec::new();
+        let mut targets = Vec::with_capacity(4);
         for (index, &buffer) in self.state.color.draw_buffers.iter().enumerate() {
             if buffer == GL_NONE {
                 continue;
