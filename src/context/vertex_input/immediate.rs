@@ -57,6 +57,49 @@ impl Context {
         self.push_open_vertex(vertex);
     }
 
+    /// The fast paths of the per-vertex entry points (`api::fast_or_run`): each does its whole
+    /// command, or declines (returns `false`) when anything more than a store is needed. None
+    /// can panic: fields are stored, limits compared before a push into reserved room.
+    ///
+    /// glVertex inside glBegin/glEnd when the vertex neither ends a batch nor needs more room.
+    #[inline(always)]
+    pub fn try_vertex(&mut self, x: f32, y: f32, z: f32, w: f32) -> bool {
+        let vertices = &mut self.vertex_input.vertices;
+        let len = vertices.len();
+        if !self.inside_begin_end || len + 1 >= BATCH_VERTICES || len >= vertices.capacity() {
+            return false;
+        }
+        vertices.push(self.state.current.vertex_at([x, y, z, w]));
+        true
+    }
+
+    /// glColor, unless the color material has to follow it (outside glBegin/glEnd).
+    #[inline(always)]
+    pub fn try_set_color(&mut self, color: [f32; 4]) -> bool {
+        if self.state.lighting.color_material && !self.inside_begin_end {
+            return false;
+        }
+        self.state.current.color = color;
+        true
+    }
+
+    /// glNormal3.
+    #[inline(always)]
+    pub fn try_set_normal(&mut self, normal: [f32; 3]) -> bool {
+        self.state.current.normal = normal;
+        true
+    }
+
+    /// glTexCoord (unit 0).
+    #[inline(always)]
+    pub fn try_set_tex_coords0(&mut self, coords: [f32; 4]) -> bool {
+        match self.state.current.tex_coords.first_mut() {
+            Some(current) => *current = coords,
+            None => return false,
+        }
+        true
+    }
+
     /// glVertex as the entry points call it: the coordinates come as four scalars, in
     /// registers. Passed as an array, they were stored as four floats and read back as one
     /// 16-byte value (or two 8-byte ones), a store-forwarding stall that cost more than the
