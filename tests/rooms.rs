@@ -33,8 +33,9 @@ const ROOMS: [&str; 13] = [
 const FFI_ROOMS: [&str; 2] = ["api", "winsys"];
 
 /// Files of an engine room that may hold `unsafe` (each block with a `// SAFETY:` line): the
-/// caller's pixel memory, and the calls of `target_feature` functions.
-const UNSAFE_WRAPPERS: [&str; 2] = ["src/framebuffer/external.rs", "src/simd/dispatch.rs"];
+/// caller's pixel memory, the calls of `target_feature` functions, and the huge-page advice
+/// for large pixel buffers.
+const UNSAFE_WRAPPERS: [&str; 3] = ["src/framebuffer/external.rs", "src/simd/dispatch.rs", "src/framebuffer/pages.rs"];
 
 fn src() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("src")

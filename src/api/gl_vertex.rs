@@ -8,7 +8,7 @@
 //! Extension aliases (`EXT`, `ARB`) call the core function. The variants differ only in types
 //! and counts; they are written out one by one because cbindgen and build.rs read them.
 use super::caller_memory::read;
-use super::record_or_run;
+use super::{fast_or_run, record_or_run};
 use crate::gl::types::*;
 use crate::vertex::components::Component;
 
@@ -54,7 +54,7 @@ pub unsafe extern "C" fn glVertex2iv(v: *const GLint) {
 
 #[no_mangle]
 pub extern "C" fn glVertex2f(x: GLfloat, y: GLfloat) {
-    record_or_run(move |ctx| ctx.vertex_xyzw(x, y, 0.0, 1.0))
+    fast_or_run(|ctx| ctx.try_vertex(x, y, 0.0, 1.0), move |ctx| ctx.vertex_xyzw(x, y, 0.0, 1.0))
 }
 
 /// # Safety
@@ -114,7 +114,7 @@ pub unsafe extern "C" fn glVertex3iv(v: *const GLint) {
 
 #[no_mangle]
 pub extern "C" fn glVertex3f(x: GLfloat, y: GLfloat, z: GLfloat) {
-    record_or_run(move |ctx| ctx.vertex_xyzw(x, y, z, 1.0))
+    fast_or_run(|ctx| ctx.try_vertex(x, y, z, 1.0), move |ctx| ctx.vertex_xyzw(x, y, z, 1.0))
 }
 
 /// # Safety
@@ -249,7 +249,8 @@ pub unsafe extern "C" fn glColor3iv(v: *const GLint) {
 
 #[no_mangle]
 pub extern "C" fn glColor3f(red: GLfloat, green: GLfloat, blue: GLfloat) {
-    record_or_run(move |ctx| ctx.set_color([red.normalized(), green.normalized(), blue.normalized(), 1.0]))
+    let color = [red.normalized(), green.normalized(), blue.normalized(), 1.0];
+    fast_or_run(|ctx| ctx.try_set_color(color), move |ctx| ctx.set_color(color))
 }
 
 /// # Safety
@@ -279,7 +280,8 @@ pub unsafe extern "C" fn glColor3dv(v: *const GLdouble) {
 
 #[no_mangle]
 pub extern "C" fn glColor3ub(red: GLubyte, green: GLubyte, blue: GLubyte) {
-    record_or_run(move |ctx| ctx.set_color([red.normalized(), green.normalized(), blue.normalized(), 1.0]))
+    let color = [red.normalized(), green.normalized(), blue.normalized(), 1.0];
+    fast_or_run(|ctx| ctx.try_set_color(color), move |ctx| ctx.set_color(color))
 }
 
 /// # Safety
@@ -375,9 +377,8 @@ pub unsafe extern "C" fn glColor4iv(v: *const GLint) {
 
 #[no_mangle]
 pub extern "C" fn glColor4f(red: GLfloat, green: GLfloat, blue: GLfloat, alpha: GLfloat) {
-    record_or_run(move |ctx| {
-        ctx.set_color([red.normalized(), green.normalized(), blue.normalized(), alpha.normalized()])
-    })
+    let color = [red.normalized(), green.normalized(), blue.normalized(), alpha.normalized()];
+    fast_or_run(|ctx| ctx.try_set_color(color), move |ctx| ctx.set_color(color))
 }
 
 /// # Safety
@@ -409,9 +410,8 @@ pub unsafe extern "C" fn glColor4dv(v: *const GLdouble) {
 
 #[no_mangle]
 pub extern "C" fn glColor4ub(red: GLubyte, green: GLubyte, blue: GLubyte, alpha: GLubyte) {
-    record_or_run(move |ctx| {
-        ctx.set_color([red.normalized(), green.normalized(), blue.normalized(), alpha.normalized()])
-    })
+    let color = [red.normalized(), green.normalized(), blue.normalized(), alpha.normalized()];
+    fast_or_run(|ctx| ctx.try_set_color(color), move |ctx| ctx.set_color(color))
 }
 
 /// # Safety
@@ -729,7 +729,8 @@ pub unsafe extern "C" fn glNormal3iv(v: *const GLint) {
 
 #[no_mangle]
 pub extern "C" fn glNormal3f(nx: GLfloat, ny: GLfloat, nz: GLfloat) {
-    record_or_run(move |ctx| ctx.set_normal([nx.normalized(), ny.normalized(), nz.normalized()]))
+    let normal = [nx.normalized(), ny.normalized(), nz.normalized()];
+    fast_or_run(|ctx| ctx.try_set_normal(normal), move |ctx| ctx.set_normal(normal))
 }
 
 /// # Safety
@@ -849,7 +850,7 @@ pub unsafe extern "C" fn glTexCoord2iv(v: *const GLint) {
 
 #[no_mangle]
 pub extern "C" fn glTexCoord2f(s: GLfloat, t: GLfloat) {
-    record_or_run(move |ctx| ctx.set_tex_coords(0, [s, t, 0.0, 1.0]))
+    fast_or_run(|ctx| ctx.try_set_tex_coords0([s, t, 0.0, 1.0]), move |ctx| ctx.set_tex_coords(0, [s, t, 0.0, 1.0]))
 }
 
 /// # Safety
@@ -909,7 +910,7 @@ pub unsafe extern "C" fn glTexCoord3iv(v: *const GLint) {
 
 #[no_mangle]
 pub extern "C" fn glTexCoord3f(s: GLfloat, t: GLfloat, r: GLfloat) {
-    record_or_run(move |ctx| ctx.set_tex_coords(0, [s, t, r, 1.0]))
+    fast_or_run(|ctx| ctx.try_set_tex_coords0([s, t, r, 1.0]), move |ctx| ctx.set_tex_coords(0, [s, t, r, 1.0]))
 }
 
 /// # Safety

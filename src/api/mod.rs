@@ -74,6 +74,40 @@ pub(crate) fn record_or_run<F: Fn(&mut Context) + Clone + Send + Sync + 'static>
     with_context((), |ctx| if ctx.lists.compiling() { ctx.record_or_run(command.clone()) } else { command(ctx) })
 }
 
+/// The path of the per-vertex commands (glVertex, glColor, glNormal, glTexCoord): `fast` runs
+/// on the current context without the panic guard when no display list is being compiled,
+/// and returns whether it did the whole call; when it declines, or nothing is current, the
+/// command runs as [`record_or_run`] runs it, guarded.
+///
+/// The guard's landing pad makes every guarded entry point save and restore six registers
+/// around its work, a third of a glColor3f; `fast` may go without it only because it cannot
+/// panic: plain stores into the current state, limits checked by comparisons before a
+/// `push` into reserved room, no indexing, no allocation. So no panic can cross the C ABI.
+#[inline(always)]
+pub(crate) fn fast_or_run<F: Fn(&mut Context) + Clone + Send + Sync + 'static>(
+    fast: impl FnOnce(&mut Context) -> bool,
+    command: F,
+) {
+    // Test builds: an armed panic injection takes the guarded path, where it fires.
+    #[cfg(test)]
+    let fast_allowed = !panic_injection::armed();
+    #[cfg(not(test))]
+    let fast_allowed = true;
+    if fast_allowed && current::with_current(|ctx| !ctx.lists.compiling() && fast(ctx)) == Some(true) {
+        return;
+    }
+    cold(move || {
+        with_context((), |ctx| if ctx.lists.compiling() { ctx.record_or_run(command.clone()) } else { command(ctx) })
+    })
+}
+
+/// Runs `f` out of line (the slow path of [`fast_or_run`]).
+#[cold]
+#[inline(never)]
+fn cold(f: impl FnOnce()) {
+    f()
+}
+
 /// Runs `f` with panics caught; returns `default` if it panicked.
 pub(crate) fn guard<R>(default: R, f: impl FnOnce() -> R) -> R {
     let f = || {

@@ -28,6 +28,12 @@ pub fn arm(place: Option<Where>) {
     crate::context::current::PANIC_WHILE_LOCKED.with(|p| p.set(place == Some(Where::HoldingTheContext)));
 }
 
+/// Whether an injection is armed on this thread (the unguarded fast path of
+/// `api::fast_or_run` then steps aside for the guarded one).
+pub fn armed() -> bool {
+    ARMED.with(|a| a.get()).is_some()
+}
+
 /// The injection point at the edge (the one inside the lock is in `context::current`).
 pub fn maybe_panic(here: Where) {
     if ARMED.with(|a| a.get()) == Some(here) {

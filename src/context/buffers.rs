@@ -8,33 +8,49 @@ use crate::framebuffer::{ColorSlot, FramebufferConfig, Rect};
 use crate::gl::enums::*;
 use crate::gl::limits::{MAX_DRAW_BUFFERS, MAX_VIEWPORT_DIM};
 use crate::gl::types::GLenum;
+use crate::setup::jobs::clear::{ClearJob, ColorClear};
 
 /// Aux buffer enums accepted as names (GL_AUX0..GL_AUX3); existence is checked separately.
 const MAX_AUX_ENUMS: u32 = 4;
 
 /// The slots an enum names, before filtering by what exists; `None` if not a buffer enum.
-fn named_slots(buffer: GLenum) -> Option<Vec<ColorSlot>> {
+fn named_slots(buffer: GLenum) -> Option<&'static [ColorSlot]> {
     use ColorSlot::*;
     Some(match buffer {
-        GL_NONE => vec![],
-        GL_FRONT_LEFT => vec![FrontLeft],
-        GL_FRONT_RIGHT => vec![FrontRight],
-        GL_BACK_LEFT => vec![BackLeft],
-        GL_BACK_RIGHT => vec![BackRight],
-        GL_FRONT => vec![FrontLeft, FrontRight],
-        GL_BACK => vec![BackLeft, BackRight],
-        GL_LEFT => vec![FrontLeft, BackLeft],
-        GL_RIGHT => vec![FrontRight, BackRight],
-        GL_FRONT_AND_BACK => vec![FrontLeft, FrontRight, BackLeft, BackRight],
-        b if (GL_AUX0..GL_AUX0 + MAX_AUX_ENUMS).contains(&b) => vec![Aux((b - GL_AUX0) as u8)],
+        GL_NONE => &[],
+        GL_FRONT_LEFT => &[FrontLeft],
+        GL_FRONT_RIGHT => &[FrontRight],
+        GL_BACK_LEFT => &[BackLeft],
+        GL_BACK_RIGHT => &[BackRight],
+        GL_FRONT => &[FrontLeft, FrontRight],
+        GL_BACK => &[BackLeft, BackRight],
+        GL_LEFT => &[FrontLeft, BackLeft],
+        GL_RIGHT => &[FrontRight, BackRight],
+        GL_FRONT_AND_BACK => &[FrontLeft, FrontRight, BackLeft, BackRight],
+        b if b == GL_AUX0 => &[Aux(0)],
+        b if b == GL_AUX0 + 1 => &[Aux(1)],
+        b if b == GL_AUX0 + 2 => &[Aux(2)],
+        b if b == GL_AUX0 + 3 => &[Aux(3)],
         _ => return None,
     })
 }
 
+/// Whether a framebuffer of `config` has `slot` (one of [`FramebufferConfig::color_slots`],
+/// without building that list: every draw asks).
+fn has_slot(config: &FramebufferConfig, slot: ColorSlot) -> bool {
+    match slot {
+        ColorSlot::FrontLeft => true,
+        ColorSlot::BackLeft => config.double_buffered,
+        ColorSlot::FrontRight => config.stereo,
+        ColorSlot::BackRight => config.stereo && config.double_buffered,
+        ColorSlot::Aux(i) => i < config.aux_buffers,
+        ColorSlot::Attachment(_) => false,
+    }
+}
+
 /// The existing slots `buffer` names in a framebuffer of `config`; `None` if not a buffer enum.
 pub fn slots_of(config: &FramebufferConfig, buffer: GLenum) -> Option<Vec<ColorSlot>> {
-    let existing = config.color_slots();
-    named_slots(buffer).map(|slots| slots.into_iter().filter(|s| existing.contains(s)).collect())
+    named_slots(buffer).map(|slots| slots.iter().copied().filter(|&s| has_slot(config, s)).collect())
 }
 
 /// The single slot a read buffer enum selects (GL_FRONT reads front-left, ...).
@@ -141,10 +157,18 @@ impl Context {
 
     /// Every (slot, draw buffer index) a fragment or clear writes to.
     pub fn draw_targets(&self) -> Vec<(ColorSlot, usize)> {
-        let mut targets = Vec::new();
+        let mut targets = Vec::with_capacity(4);
         for (index, &buffer) in self.state.color.draw_buffers.iter().enumerate() {
-            for slot in self.draw_slots(buffer).unwrap_or_default() {
-                targets.push((slot, index));
+            if buffer == GL_NONE {
+                continue;
+            }
+            if self.fbo.draw == 0 {
+                // The window's buffers, listed without building a vector per draw buffer.
+                let config = &self.config.visual;
+                let slots = named_slots(buffer).unwrap_or_default().iter();
+                targets.extend(slots.filter(|&&s| has_slot(config, s)).map(|&s| (s, index)));
+            } else {
+                targets.extend(self.draw_slots(buffer).unwrap_or_default().into_iter().map(|s| (s, index)));
             }
         }
         targets
@@ -172,7 +196,12 @@ impl Context {
         if !self.check_framebuffer_complete(true) {
             return;
         }
-        // Clears run immediately, so the draws recorded before them run first.
+        // A single-sampled clear without the accumulation buffer is recorded in the scene and
+        // applied by each tile's worker (`setup::jobs::clear`); the others run at once, after
+        // the draws recorded before them.
+        if mask & GL_ACCUM_BUFFER_BIT == 0 && self.samples_of(self.fbo.draw) == 1 {
+            return self.record_clear_job(mask);
+        }
         self.flush_rendering();
         let targets = self.draw_targets();
         let color = &self.state.color;
@@ -220,6 +249,39 @@ impl Context {
                 }
             }
         });
+    }
+
+    /// Records glClear(`mask`) (color, depth and stencil bits only) in the scene as a color
+    /// job and a depth/stencil job, with the values and masks of the current state.
+    fn record_clear_job(&mut self, mask: u32) {
+        let Some((width, height, _)) = self.framebuffer_shape(true) else {
+            return;
+        };
+        let bounds = Rect::from_xywh(0, 0, width as i32, height as i32);
+        let rect = self.state.scissor.clip(bounds);
+        if rect.is_empty() {
+            return;
+        }
+        let whole = rect == bounds;
+        let mut colors = Vec::new();
+        if mask & GL_COLOR_BUFFER_BIT != 0 {
+            let clear_color = self.state.color.clear_color;
+            for (slot, index) in self.draw_targets() {
+                let mask = self.state.color.color_mask[index];
+                if mask.iter().any(|&m| m) {
+                    colors.push(ColorClear { slot, color: clear_color, mask });
+                }
+            }
+        }
+        let depth = (mask & GL_DEPTH_BUFFER_BIT != 0 && self.state.depth.write_mask).then_some(self.state.depth.clear);
+        let stencil = (mask & GL_STENCIL_BUFFER_BIT != 0)
+            .then_some((self.state.stencil.clear as u8, self.state.stencil.front.write_mask as u8));
+        if !colors.is_empty() {
+            self.record_clear(ClearJob { rect, whole, colors, depth: None, stencil: None });
+        }
+        if depth.is_some() || stencil.is_some() {
+            self.record_clear(ClearJob { rect, whole, colors: Vec::new(), depth, stencil });
+        }
     }
 
     /// glColorMask (all draw buffers) or glColorMaski (`index`).
@@ -396,6 +458,7 @@ mod tests {
         ctx.clear_color([1.0, 0.0, 0.0, 1.0]);
         ctx.clear(GL_COLOR_BUFFER_BIT);
         assert_eq!(ctx.take_error(), GL_NO_ERROR);
+        ctx.flush_rendering();
         assert_eq!(pixel(&d, ColorSlot::FrontRight, 0, 0), [1.0, 0.0, 0.0, 1.0]);
         assert_eq!(pixel(&d, ColorSlot::BackRight, 3, 3), [1.0, 0.0, 0.0, 1.0]);
         assert_eq!(pixel(&d, ColorSlot::FrontLeft, 0, 0), [0.0; 4]);
@@ -410,6 +473,7 @@ mod tests {
         ctx.color_mask(Some(1), [false, true, false, true]);
         ctx.clear_color([1.0, 1.0, 1.0, 1.0]);
         ctx.clear(GL_COLOR_BUFFER_BIT);
+        ctx.flush_rendering();
         assert_eq!(pixel(&d, ColorSlot::Aux(0), 1, 1), [1.0; 4]);
         assert_eq!(pixel(&d, ColorSlot::BackLeft, 1, 1), [0.0, 1.0, 0.0, 1.0]);
         assert_eq!(pixel(&d, ColorSlot::FrontLeft, 1, 1), [0.0; 4]);
@@ -441,10 +505,52 @@ mod tests {
         ctx.scissor(1, 1, 2, 2);
         ctx.clear_color([0.0, 0.0, 1.0, 1.0]);
         ctx.clear(GL_COLOR_BUFFER_BIT);
+        ctx.flush_rendering();
         assert_eq!(pixel(&d, ColorSlot::BackLeft, 1, 2), [0.0, 0.0, 1.0, 1.0]);
         assert_eq!(pixel(&d, ColorSlot::BackLeft, 0, 0), [0.0; 4]);
         assert_eq!(pixel(&d, ColorSlot::BackLeft, 3, 1), [0.0; 4]);
         ctx.clear(0x8000_0000);
         assert_eq!(ctx.take_error(), GL_INVALID_VALUE);
+    }
+
+    #[test]
+    fn clears_wait_in_the_scene_until_a_flush_point() {
+        let (mut ctx, d) = stereo_context();
+        ctx.clear_color([0.0, 1.0, 0.0, 1.0]);
+        ctx.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+        assert_eq!(pixel(&d, ColorSlot::BackLeft, 2, 2), [0.0; 4], "recorded, not yet applied");
+        ctx.set_capability(GL_SCISSOR_TEST, true);
+        ctx.scissor(0, 0, 1, 1);
+        ctx.clear_color([1.0, 0.0, 0.0, 1.0]);
+        ctx.clear(GL_COLOR_BUFFER_BIT);
+        ctx.flush_rendering();
+        // Applied in order: the scissored clear after the whole one.
+        assert_eq!(pixel(&d, ColorSlot::BackLeft, 0, 0), [1.0, 0.0, 0.0, 1.0]);
+        assert_eq!(pixel(&d, ColorSlot::BackLeft, 2, 2), [0.0, 1.0, 0.0, 1.0]);
+        let fb = &d.lock().unwrap().framebuffer;
+        assert_eq!(fb.depth_stencil().depth_value(5), 0x00ff_ffff, "depth cleared to 1.0");
+        assert_eq!(fb.depth_stencil().stencil_value(5), 0);
+    }
+
+    #[test]
+    fn a_covering_draw_drops_the_color_clear_and_keeps_depth_and_stencil() {
+        let (mut ctx, d) = stereo_context();
+        ctx.clear_color([0.0, 1.0, 0.0, 1.0]);
+        ctx.clear_stencil(5);
+        ctx.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+        ctx.set_color([1.0, 0.0, 0.0, 1.0]);
+        // One triangle covering the whole tile (a quad's halves cover only part of it each).
+        ctx.begin(GL_TRIANGLES);
+        for [x, y] in [[-1.0, -1.0], [3.0, -1.0], [-1.0, 3.0]] {
+            ctx.vertex([x, y, 0.0, 1.0]);
+        }
+        ctx.end();
+        ctx.flush_rendering();
+        assert_eq!(pixel(&d, ColorSlot::BackLeft, 0, 3), [1.0, 0.0, 0.0, 1.0]);
+        let fb = &d.lock().unwrap().framebuffer;
+        for i in [0, 5, 15] {
+            assert_eq!(fb.depth_stencil().depth_value(i), 0x00ff_ffff);
+            assert_eq!(fb.depth_stencil().stencil_value(i), 5);
+        }
     }
 }

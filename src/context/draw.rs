@@ -164,6 +164,17 @@ impl Context {
         self.keep_scene(scene);
     }
 
+    /// Records a clear in the scene (see `setup::jobs::clear`): each tile's worker applies it
+    /// in order with the draws around it.
+    pub(super) fn record_clear(&mut self, job: crate::setup::jobs::clear::ClearJob) {
+        let Some((width, height, ..)) = self.target_format() else {
+            return;
+        };
+        let mut scene = self.take_scene(width, height);
+        scene.add_clear(job);
+        self.keep_scene(scene);
+    }
+
     /// The bound framebuffer's size, color format and depth/stencil bits; `None` (with
     /// GL_INVALID_FRAMEBUFFER_OPERATION for an incomplete framebuffer object) when there is
     /// nothing to draw into.

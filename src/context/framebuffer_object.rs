@@ -1663,6 +1663,7 @@ mod tests {
         // A clear reaches the renderbuffer and nothing else.
         ctx.state.color.clear_color = [1.0, 0.5, 0.0, 1.0];
         ctx.clear(GL_COLOR_BUFFER_BIT);
+        ctx.flush_rendering();
         let read = ctx.with_read_framebuffer(|fb| {
             let mut row = Vec::new();
             fb.color(ColorSlot::Attachment(2)).unwrap().read_row_f32(3, 0, 1, &mut row);

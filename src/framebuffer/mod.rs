@@ -13,6 +13,7 @@ pub mod external;
 pub mod format;
 pub mod layers;
 pub mod multisample;
+pub mod pages;
 pub mod surface;
 
 pub use format::{ColorFormat, DepthStencilFormat};

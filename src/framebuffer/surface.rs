@@ -6,10 +6,12 @@
 //! are the pixels of a [`ColorPixels::Unorm8`] buffer and a depth texture is a
 //! [`DepthStencilBuffer`], so that a framebuffer object renders into them where they live
 //! ([`ColorBuffer::from_pixels`] and [`ColorBuffer::into_pixels`] move the vector).
+use super::band::{ColorBand, DepthBand};
 use super::format::{
     float_to_unorm, float_to_unorm16_half_up, unorm_to_float, unorm_widen_to_u32, ColorFormat, DepthEncoding,
     DepthStencilFormat,
 };
+use super::pages;
 use super::{OutOfMemory, Rect};
 
 /// A vector of `len` copies of `value`, or [`OutOfMemory`].
@@ -24,12 +26,23 @@ use super::{OutOfMemory, Rect};
 /// the freed block was smaller than 32 MiB (its mmap threshold adapts), and must then zero
 /// it with memset; a smaller buffer failing to allocate means the process is out of memory
 /// anyway.
-fn alloc_filled<T: Clone>(len: usize, value: T) -> Result<Vec<T>, OutOfMemory> {
+///
+/// A zero-filled buffer of at least two huge pages is allocated with [`pages::slack`] and
+/// advised to use huge pages ([`pages`]): its first touch then costs a few faults instead of
+/// one per 4 KiB.
+fn alloc_filled<T: Clone + PartialEq + Default>(len: usize, value: T) -> Result<Vec<T>, OutOfMemory> {
     let bytes = len.checked_mul(std::mem::size_of::<T>()).ok_or(OutOfMemory)?;
+    let slack = if value == T::default() { pages::slack::<T>(bytes) } else { 0 };
+    let total = len.checked_add(slack).ok_or(OutOfMemory)?;
     if bytes > PROBE_ABOVE {
-        Vec::<T>::new().try_reserve_exact(len).map_err(|_| OutOfMemory)?;
+        Vec::<T>::new().try_reserve_exact(total).map_err(|_| OutOfMemory)?;
     }
-    Ok(vec![value; len])
+    let mut buffer = vec![value; total];
+    if slack > 0 {
+        buffer.truncate(len);
+        pages::advise_huge_pages(&mut buffer);
+    }
+    Ok(buffer)
 }
 
 /// The size above which [`alloc_filled`] probes the allocation before making it.
@@ -133,50 +146,15 @@ impl ColorBuffer {
     /// Clears `rect` (already inside the buffer) to `color`, writing only the channels whose
     /// `mask` entry is true. Fixed-point formats clamp; float formats store `color` as given.
     pub fn clear(&mut self, rect: Rect, color: [f32; 4], mask: [bool; 4]) {
-        if rect.is_empty() || !mask.iter().any(|&m| m) {
-            return;
-        }
-        let has_alpha = self.format.has_alpha();
         let whole_buffer =
             rect == Rect::from_xywh(0, 0, self.width as i32, self.height() as i32) && mask.iter().all(|&m| m);
-        let mask = [mask[0], mask[1], mask[2], mask[3] && has_alpha];
-        let width = self.width;
-        match &mut self.pixels {
-            ColorPixels::Unorm8(px) => {
-                let value = color.map(|c| float_to_unorm(c, 8) as u8);
-                fill_masked(px, width, rect, value, mask);
-            }
-            ColorPixels::Unorm16(px) => {
-                // llvmpipe packs a whole-buffer clear with half-up rounding and draws a partial
-                // (scissored or masked) clear as a quad whose stores round ties to even; both
-                // are "nearest", and matching the reference bit for bit decides which tie wins.
-                let value = if whole_buffer {
-                    color.map(float_to_unorm16_half_up)
-                } else {
-                    color.map(|c| float_to_unorm(c, 16) as u16)
-                };
-                fill_masked(px, width, rect, value, mask);
-            }
-            ColorPixels::Float32(px) => fill_masked(px, width, rect, color, mask),
-            ColorPixels::Rgb565(px) => {
-                // A partial clear is drawn by llvmpipe, whose 5/6-bit stores take the top bits
-                // of the 8-bit conversion (0.992 green: 253 >> 2 = 63, not round(62.496)).
-                let value = if whole_buffer {
-                    pack565(float_to_unorm(color[0], 5), float_to_unorm(color[1], 6), float_to_unorm(color[2], 5))
-                } else {
-                    let c8 = color.map(|c| float_to_unorm(c, 8));
-                    pack565(c8[0] >> 3, c8[1] >> 2, c8[2] >> 3)
-                };
-                let keep: u16 = (if mask[0] { 0 } else { 0xf800 })
-                    | (if mask[1] { 0 } else { 0x07e0 })
-                    | (if mask[2] { 0 } else { 0x001f });
-                for y in rect.y0..rect.y1 {
-                    for p in &mut px[span(width, y, rect.x0, rect.x1)] {
-                        *p = (*p & keep) | (value & !keep);
-                    }
-                }
-            }
-        }
+        let mut pixels = match &mut self.pixels {
+            ColorPixels::Unorm8(px) => ColorBand::Unorm8(px),
+            ColorPixels::Rgb565(px) => ColorBand::Rgb565(px),
+            ColorPixels::Unorm16(px) => ColorBand::Unorm16(px),
+            ColorPixels::Float32(px) => ColorBand::Float32(px),
+        };
+        clear_color_band(&mut pixels, self.format, self.width, 0, rect, color, mask, whole_buffer);
     }
 
     /// Reads pixels `[x0, x1)` of row `y` as floats (alpha 1.0 for formats without alpha).
@@ -307,6 +285,143 @@ impl ColorBuffer {
 }
 
 /// Fills `rect` of a 4-channel buffer with `value`, channel-masked.
+/// Clears `rect` of a color band (rows from `y0` on, `width` pixels each) to `color`,
+/// writing only the channels whose `mask` entry is true: the one encoding of a color clear,
+/// whether [`ColorBuffer::clear`] runs it at once or a tile worker runs a clear recorded in
+/// the scene. `whole_buffer` (a clear of every pixel and channel) picks llvmpipe's packing
+/// of a whole-buffer clear over that of a drawn (scissored or masked) one.
+#[allow(clippy::too_many_arguments)]
+pub fn clear_color_band(
+    pixels: &mut ColorBand<'_>,
+    format: ColorFormat,
+    width: usize,
+    y0: i32,
+    rect: Rect,
+    color: [f32; 4],
+    mask: [bool; 4],
+    whole_buffer: bool,
+) {
+    if rect.is_empty() || !mask.iter().any(|&m| m) {
+        return;
+    }
+    let mask = [mask[0], mask[1], mask[2], mask[3] && format.has_alpha()];
+    let rect = Rect { y0: rect.y0 - y0, y1: rect.y1 - y0, ..rect };
+    match pixels {
+        ColorBand::Unorm8(px) => {
+            let value = color.map(|c| float_to_unorm(c, 8) as u8);
+            fill_masked(px, width, rect, value, mask);
+        }
+        ColorBand::Unorm16(px) => {
+            // llvmpipe packs a whole-buffer clear with half-up rounding and draws a partial
+            // (scissored or masked) clear as a quad whose stores round ties to even; both
+            // are "nearest", and matching the reference bit for bit decides which tie wins.
+            let value = if whole_buffer {
+                color.map(float_to_unorm16_half_up)
+            } else {
+                color.map(|c| float_to_unorm(c, 16) as u16)
+            };
+            fill_masked(px, width, rect, value, mask);
+        }
+        ColorBand::Float32(px) => fill_masked(px, width, rect, color, mask),
+        ColorBand::Rgb565(px) => {
+            // A partial clear is drawn by llvmpipe, whose 5/6-bit stores take the top bits
+            // of the 8-bit conversion (0.992 green: 253 >> 2 = 63, not round(62.496)).
+            let value = if whole_buffer {
+                pack565(float_to_unorm(color[0], 5), float_to_unorm(color[1], 6), float_to_unorm(color[2], 5))
+            } else {
+                let c8 = color.map(|c| float_to_unorm(c, 8));
+                pack565(c8[0] >> 3, c8[1] >> 2, c8[2] >> 3)
+            };
+            let keep: u16 = (if mask[0] { 0 } else { 0xf800 })
+                | (if mask[1] { 0 } else { 0x07e0 })
+                | (if mask[2] { 0 } else { 0x001f });
+            for y in rect.y0..rect.y1 {
+                for p in &mut px[span(width, y, rect.x0, rect.x1)] {
+                    *p = (*p & keep) | (value & !keep);
+                }
+            }
+        }
+    }
+}
+
+/// The stored value a depth clear to `depth` writes in `format`, for a clear of the whole
+/// buffer or of a part of it.
+pub fn depth_clear_value(format: DepthStencilFormat, whole_buffer: bool, depth: f64) -> u32 {
+    // llvmpipe packs a whole-buffer clear from the double-precision depth, and draws a
+    // partial (scissored) clear as a quad at NDC depth 2d − 1, which the viewport maps
+    // back in single precision before the fragment depth store: 0.1 clears a 16-bit
+    // buffer to 0x199a, a scissored part of it to 0x1999 (matches Mesa on 4082 samples).
+    let encoding = format.depth_encoding();
+    if whole_buffer {
+        encoding.encode_f64(depth)
+    } else {
+        let ndc = depth as f32 * 2.0 - 1.0;
+        encoding.encode_fragment(ndc * 0.5 + 0.5)
+    }
+}
+
+/// Clears `rect` of a depth/stencil band (rows from `y0` on, `width` pixels each): depth to
+/// `depth` when given, stencil to `stencil.0` under write mask `stencil.1` when given; the
+/// same stores as [`DepthStencilBuffer::clear_depth_and_stencil`] (a tile worker runs this
+/// for a clear recorded in the scene).
+#[allow(clippy::too_many_arguments)]
+pub fn clear_depth_band(
+    pixels: &mut DepthBand<'_>,
+    format: DepthStencilFormat,
+    width: usize,
+    y0: i32,
+    rect: Rect,
+    depth: Option<f64>,
+    stencil: Option<(u8, u8)>,
+    whole_buffer: bool,
+) {
+    if rect.is_empty() {
+        return;
+    }
+    let depth = depth.filter(|_| format.depth_bits() > 0).map(|d| depth_clear_value(format, whole_buffer, d));
+    let stencil = stencil.filter(|&(_, mask)| format.stencil_bits() > 0 && mask != 0);
+    let rect = Rect { y0: rect.y0 - y0, y1: rect.y1 - y0, ..rect };
+    let rows = rect.y0..rect.y1;
+    match pixels {
+        DepthBand::None => {}
+        DepthBand::Depth16(px) => {
+            if let Some(value) = depth {
+                rows.for_each(|y| px[span(width, y, rect.x0, rect.x1)].fill(value as u16));
+            }
+        }
+        DepthBand::Packed24(px) => {
+            for y in rows {
+                let row = &mut px[span(width, y, rect.x0, rect.x1)];
+                match (depth, stencil) {
+                    (Some(d), Some((s, 0xff))) => row.fill(d | (s as u32) << 24),
+                    (d, s) => {
+                        let (keep_depth, set_depth) = d.map_or((0x00ff_ffff, 0), |d| (0, d));
+                        let (keep_stencil, set_stencil) = s.map_or((0xff00_0000, 0), |(v, m)| {
+                            (!((m as u32) << 24) & 0xff00_0000, ((v & m) as u32) << 24)
+                        });
+                        for p in row {
+                            *p = (*p & (keep_depth | keep_stencil)) | set_depth | set_stencil;
+                        }
+                    }
+                }
+            }
+        }
+        DepthBand::Depth32(px, st) | DepthBand::Float32(px, st) => {
+            for y in rows {
+                let r = span(width, y, rect.x0, rect.x1);
+                if let Some(value) = depth {
+                    px[r.clone()].fill(value);
+                }
+                if let (Some((value, mask)), Some(st)) = (stencil, st.as_deref_mut()) {
+                    for s in &mut st[r] {
+                        *s = (*s & !mask) | (value & mask);
+                    }
+                }
+            }
+        }
+    }
+}
+
 fn fill_masked<T: Copy>(px: &mut [[T; 4]], width: usize, rect: Rect, value: [T; 4], mask: [bool; 4]) {
     let all = mask.iter().all(|&m| m);
     for y in rect.y0..rect.y1 {
@@ -422,17 +537,7 @@ impl DepthStencilBuffer {
     fn depth_clear_value(&self, rect: Rect, depth: f64) -> u32 {
         let rows = self.len().checked_div(self.width).unwrap_or(0);
         let whole_buffer = rect == Rect::from_xywh(0, 0, self.width as i32, rows as i32);
-        // llvmpipe packs a whole-buffer clear from the double-precision depth, and draws a
-        // partial (scissored) clear as a quad at NDC depth 2d − 1, which the viewport maps
-        // back in single precision before the fragment depth store: 0.1 clears a 16-bit
-        // buffer to 0x199a, a scissored part of it to 0x1999 (matches Mesa on 4082 samples).
-        let encoding = self.format.depth_encoding();
-        if whole_buffer {
-            encoding.encode_f64(depth)
-        } else {
-            let ndc = depth as f32 * 2.0 - 1.0;
-            encoding.encode_fragment(ndc * 0.5 + 0.5)
-        }
+        depth_clear_value(self.format, whole_buffer, depth)
     }
 
     /// Clears depth and stencil in `rect` together: the same as [`Self::clear_depth`] then

@@ -13,6 +13,7 @@
 //! kernels of `fragment::block` for the framebuffer's formats, and single-sampled filled
 //! triangles render through them in 4×4 blocks.
 
+use super::jobs::clear::ClearJob;
 use super::jobs::line::LineJob;
 use super::jobs::pixels::PixelRectJob;
 use super::jobs::point::PointJob;
@@ -38,7 +39,12 @@ pub enum Primitive {
     Smooth(SmoothJob),
     /// A pixel rectangle (glBitmap, glDrawPixels).
     Pixels(PixelRectJob),
+    /// A clear (glClear): no draw state ([`CLEAR_STATE`] stands in for its index).
+    Clear(ClearJob),
 }
+
+/// The draw-state index recorded beside a clear, which has none.
+const CLEAR_STATE: u32 = u32::MAX;
 
 /// Recorded rendering waiting for a flush point.
 pub struct Scene {
@@ -220,8 +226,11 @@ impl Scene {
         }
         let corners = [(tile.x0, tile.y0), (tile.x1 - 1, tile.y0), (tile.x0, tile.y1 - 1), (tile.x1 - 1, tile.y1 - 1)];
         if corners.iter().all(|&(x, y)| setup.covers(x, y)) && self.droppable(bin, &self.states[state as usize]) {
-            self.binned -= self.bins[bin].len();
-            self.bins[bin].clear();
+            // A depth/stencil clear stays: the triangle writes neither.
+            let (primitives, entries) = (&self.primitives, &mut self.bins[bin]);
+            let before = entries.len();
+            entries.retain(|&i| matches!(&primitives[i as usize], Primitive::Clear(c) if c.depth_stencil_only()));
+            self.binned -= before - entries.len();
         }
     }
 
@@ -258,12 +267,38 @@ impl Scene {
         let writes_depth = state.fragment.depth.is_some_and(|d| d.write);
         self.bins[bin].iter().all(|&i| {
             let primitive = &self.primitives[i as usize];
+            // A color clear is overwritten; a depth/stencil clear is kept (see `add`).
+            if matches!(primitive, Primitive::Clear(_)) {
+                return true;
+            }
             let s = &self.states[self.primitive_states[i as usize] as usize];
             !matches!(primitive, Primitive::Pixels(_))
                 && s.samples_passed.is_none()
                 && s.fragment.stencil.is_none()
                 && (writes_depth || s.fragment.depth.is_none_or(|d| !d.write))
         })
+    }
+
+    /// Bins a clear into every tile its rectangle touches; its color buffers become targets
+    /// of the scene.
+    pub fn add_clear(&mut self, job: ClearJob) {
+        let r = job.rect.intersect(Rect::from_xywh(0, 0, self.width as i32, self.height as i32));
+        if r.is_empty() || (job.colors.is_empty() && job.depth.is_none() && job.stencil.is_none()) {
+            return;
+        }
+        for c in &job.colors {
+            self.target_index(c.slot);
+        }
+        let index = self.primitives.len() as u32;
+        let t = TILE_SIZE as i32;
+        for ty in (r.y0 / t)..=((r.y1 - 1) / t) {
+            for tx in (r.x0 / t)..=((r.x1 - 1) / t) {
+                self.bins[ty as usize * self.tiles_x + tx as usize].push(index);
+                self.binned += 1;
+            }
+        }
+        self.primitives.push(Primitive::Clear(job));
+        self.primitive_states.push(CLEAR_STATE);
     }
 
     /// Bins a primitive covering at most `bounds`, but only into the tiles of each tile row
@@ -333,6 +368,9 @@ impl Scene {
             .collect();
         render_tiles(framebuffer, &self.targets, self.tiles_x, &self.bins, threads, |index, tile, band, scratch| {
             let primitive = &self.primitives[index as usize];
+            if let Primitive::Clear(job) = primitive {
+                return job.render(tile, band);
+            }
             let state_index = self.primitive_states[index as usize] as usize;
             let state = &self.states[state_index];
             let area = tile.intersect(state.clip);
@@ -351,6 +389,7 @@ impl Scene {
                 Primitive::Point(job) => job.render(state, area, band, scratch),
                 Primitive::Smooth(job) => job.render(state, area, band, scratch),
                 Primitive::Pixels(job) => job.render(state, area, band, scratch),
+                Primitive::Clear(_) => unreachable!("rendered above"),
             }
         });
         if framebuffer.samples() > 1 {

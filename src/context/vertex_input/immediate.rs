@@ -57,13 +57,73 @@ impl Context {
         self.push_open_vertex(vertex);
     }
 
+    /// The fast paths of the per-vertex entry points (`api::fast_or_run`): each does its whole
+    /// command, or declines (returns `false`) when anything more than a store is needed. None
+    /// can panic: fields are stored, limits compared before a push into reserved room.
+    ///
+    /// glVertex inside glBegin/glEnd when the vertex neither ends a batch nor needs more room.
+    #[inline(always)]
+    pub fn try_vertex(&mut self, x: f32, y: f32, z: f32, w: f32) -> bool {
+        let vertices = &mut self.vertex_input.vertices;
+        let len = vertices.len();
+        if !self.inside_begin_end || len + 1 >= BATCH_VERTICES || len >= vertices.capacity() {
+            return false;
+        }
+        vertices.push(self.state.current.vertex_at([x, y, z, w]));
+        true
+    }
+
+    /// glColor, unless the color material has to follow it (outside glBegin/glEnd).
+    #[inline(always)]
+    pub fn try_set_color(&mut self, color: [f32; 4]) -> bool {
+        if self.state.lighting.color_material && !self.inside_begin_end {
+            return false;
+        }
+        self.state.current.color = color;
+        true
+    }
+
+    /// glNormal3.
+    #[inline(always)]
+    pub fn try_set_normal(&mut self, normal: [f32; 3]) -> bool {
+        self.state.current.normal = normal;
+        true
+    }
+
+    /// glTexCoord (unit 0).
+    #[inline(always)]
+    pub fn try_set_tex_coords0(&mut self, coords: [f32; 4]) -> bool {
+        match self.state.current.tex_coords.first_mut() {
+            Some(current) => *current = coords,
+            None => return false,
+        }
+        true
+    }
+
     /// glVertex as the entry points call it: the coordinates come as four scalars, in
     /// registers. Passed as an array, they were stored as four floats and read back as one
     /// 16-byte value (or two 8-byte ones), a store-forwarding stall that cost more than the
-    /// rest of the call; out of line so that the entry points' closures stay small enough to
-    /// be inlined into them.
-    #[inline(never)]
+    /// rest of the call.
+    ///
+    /// The common case, a vertex between glBegin and glEnd that neither fills the batch nor
+    /// the vector's capacity, is written into the entry point (no call, no register saves:
+    /// a bounds check and the record's stores); the rest is out of line, which keeps the
+    /// entry points' closures small enough to be inlined into them.
+    #[inline(always)]
     pub fn vertex_xyzw(&mut self, x: f32, y: f32, z: f32, w: f32) {
+        let vertices = &mut self.vertex_input.vertices;
+        let len = vertices.len();
+        if self.inside_begin_end && len + 1 < BATCH_VERTICES && len < vertices.capacity() {
+            vertices.push(self.state.current.vertex_at([x, y, z, w]));
+        } else {
+            self.vertex_out_of_line(x, y, z, w);
+        }
+    }
+
+    /// [`Context::vertex_xyzw`] when the vertex ends a batch, needs more room or comes
+    /// outside glBegin/glEnd.
+    #[inline(never)]
+    fn vertex_out_of_line(&mut self, x: f32, y: f32, z: f32, w: f32) {
         self.vertex([x, y, z, w])
     }
 

@@ -4,6 +4,7 @@
 //! depth, colors and varyings to `fragment`'s pipeline. The scene bins them; the tile
 //! workers call their `render`.
 
+pub mod clear;
 pub mod line;
 pub mod pixels;
 pub mod point;
