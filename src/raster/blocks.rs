@@ -9,15 +9,16 @@
 //! edge's largest value over its pixels is negative, and known inside when every edge's
 //! smallest value is non-negative, so the inside of a large triangle costs no edge work
 //! below the level where it became inside. A 4×4 block that is neither evaluates its 16
-//! pixels as lanes. A triangle whose pixels lie within one aligned 16×16 block starts
-//! there (small triangles pay for neither the 64-pixel level nor a tile's loops).
+//! pixels as lanes. A triangle whose pixels lie within the 16×16 pixels from its first
+//! aligned 4×4 block starts there, one within a 4×4 block at its pixels (small triangles
+//! pay for neither the 64-pixel level nor a tile's loops).
 //!
 //! **Exact in 32-bit lanes.** The values are exact integers. An edge's `a` and `b` are
 //! multiples of 256 (the setup's pixel-unit coefficients of 1/256-pixel coordinates);
 //! with `2^s` the largest power of two dividing both, `E ≥ 0 ⇔ ⌊E/2^s⌋ ≥ 0` and
 //! `⌊E/2^s⌋ = ⌊c/2^s⌋ + (a/2^s)·x + (b/2^s)·y` exactly ([`Reduced`]), which takes 8 bits
 //! off. Then every value the walk of a tile computes is `B + o`: `B` the reduced edge at
-//! the tile's (or the starting 16-block's) corner, evaluated once in i64, and `o` a sum
+//! the tile's (or a small area's first block's) corner, evaluated once in i64, and `o` a sum
 //! of steps with `|o| ≤ 63·M`, `M = |a'| + |b'|` (a pixel is at most 63 columns and 63
 //! rows from its tile's corner; the largest-value corner of a sub-block too). The walk
 //! clamps `B` to `[−K, K]` with `K = 64·M + 1` before adding the steps: when `|B| ≤ K`
@@ -203,13 +204,16 @@ fn lanes<T: Lane>(f: impl Fn(usize) -> T) -> Lanes<T> {
     out
 }
 
-/// Edge `e`'s steps from a 4×4 block's corner to its pixels, lane `i` at column `i & 3`,
-/// row `i >> 2`; shifted left by 2 (or 4) they are the steps from a 16×16 (64×64) block's
-/// corner to its 16 sub-blocks' corners.
+/// The column and row of each lane of a 4×4 block.
+const COLUMN: [i32; 16] = [0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3];
+const ROW: [i32; 16] = [0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2, 2, 3, 3, 3, 3];
+
+/// An edge's steps `a·column + b·row` over the 16 lanes (from a 4×4 block's corner to its
+/// pixels; with `a` and `b` scaled by a sub-block's side, from a block's corner to its
+/// sub-blocks' corners).
 #[inline(always)]
-fn pixel_steps<T: Lane>(e: &Reduced) -> Lanes<T> {
-    let (a, b) = (T::exact(e.a), T::exact(e.b));
-    lanes(|i| T::times(a, (i & 3) as i32) + T::times(b, (i >> 2) as i32))
+fn steps<T: Lane>(a: T, b: T) -> Lanes<T> {
+    lanes(|i| a.times(COLUMN[i]) + b.times(ROW[i]))
 }
 
 /// An edge's value at the pixel of a block of side `size` where it is largest (`hi`) and
@@ -222,14 +226,11 @@ fn extremes(e: &Reduced, size: i64) -> (i64, i64) {
 
 /// The sub-blocks (lanes) of a block that may hold covered pixels and those entirely
 /// inside: `hi`/`lo` are the three edges' values at the block's corner plus their
-/// largest/smallest over a sub-block, `pixels` their pixel steps, `shift` the sub-blocks'
-/// side as a power of two.
+/// largest/smallest over a sub-block, `ab` their steps from one sub-block to the next.
 #[inline(always)]
-fn sub_blocks<T: Lane>(hi: [T; 3], lo: [T; 3], pixels: &[Lanes<T>; 3], shift: u32) -> (u16, u16) {
-    let [p0, p1, p2] = pixels;
-    let at = |base: [T; 3]| {
-        lanes(|i| (base[0] + p0[i].shl(shift)) | (base[1] + p1[i].shl(shift)) | (base[2] + p2[i].shl(shift)))
-    };
+fn sub_blocks<T: Lane>(hi: [T; 3], lo: [T; 3], ab: [(T, T); 3]) -> (u16, u16) {
+    let [s0, s1, s2] = ab.map(|(a, b)| steps(a, b));
+    let at = |base: [T; 3]| lanes(|i| (base[0] + s0[i]) | (base[1] + s1[i]) | (base[2] + s2[i]));
     (!negative(&at(hi)), !negative(&at(lo)))
 }
 
@@ -257,39 +258,32 @@ struct Walker<'a, T, F> {
     /// The clamp of each edge's corner values (see the module).
     clamp: [i64; 3],
     stipple: Option<&'a [u32; 32]>,
-    /// Where the walk starts: 2 when the area lies within one aligned 4×4 block, 1 within
-    /// one aligned 16×16 block, 0 at the tiles.
+    /// Where the walk starts: 2 when the area lies within one aligned 4×4 block, 1 when
+    /// it lies within the 16×16 pixels from its first aligned 4×4 block, 0 at the tiles.
     start: u8,
-    /// Each edge's steps from a 4×4 block's corner to its pixels (and, shifted, from a
-    /// larger block's corner to its sub-blocks').
-    pixels: [Lanes<T>; 3],
-    /// Each edge's largest and smallest value over a 4×4 and a 16×16 block, from its corner.
-    extremes4: [(i64, i64); 3],
-    extremes16: [(i64, i64); 3],
+    /// Each edge's `a` and `b` as lanes.
+    ab: [(T, T); 3],
     emit: F,
 }
 
 impl<'a, T: Lane, F: FnMut(i32, i32, u16)> Walker<'a, T, F> {
     #[inline(always)]
     fn new(area: Rect, edges: [Reduced; 3], stipple: Option<&'a [u32; 32]>, emit: F) -> Self {
-        let within = |m: i32| (area.x0 & m) == ((area.x1 - 1) & m) && (area.y0 & m) == ((area.y1 - 1) & m);
-        let start = if within(!3) {
+        let (x4, y4) = (area.x0 & !3, area.y0 & !3);
+        let start = if area.x1 - x4 <= 4 && area.y1 - y4 <= 4 {
             2
-        } else if within(!15) {
+        } else if area.x1 - x4 <= 16 && area.y1 - y4 <= 16 {
             1
         } else {
             0
         };
-        let [e0, e1, e2] = &edges;
         Walker {
             area,
             edges,
             clamp: edges.map(|e| 64 * e.steepness() + 1),
             stipple,
             start,
-            pixels: [pixel_steps(e0), pixel_steps(e1), pixel_steps(e2)],
-            extremes4: edges.map(|e| extremes(&e, 4)),
-            extremes16: edges.map(|e| extremes(&e, 16)),
+            ab: edges.map(|e| (T::exact(e.a), T::exact(e.b))),
             emit,
         }
     }
@@ -303,8 +297,27 @@ impl<'a, T: Lane, F: FnMut(i32, i32, u16)> Walker<'a, T, F> {
         [T::clamped(e0.at(x, y), k0), T::clamped(e1.at(x, y), k1), T::clamped(e2.at(x, y), k2)]
     }
 
+    /// The edges' steps scaled by `2^shift`.
+    #[inline(always)]
+    fn ab_shl(&self, shift: u32) -> [(T, T); 3] {
+        self.ab.map(|(a, b)| (a.shl(shift), b.shl(shift)))
+    }
+
+    /// `corner` plus each edge's largest (and smallest) value over a block of side `size`.
+    #[inline(always)]
+    fn extremes(&self, corner: &[T; 3], size: i64) -> ([T; 3], [T; 3]) {
+        let ext = self.edges.map(|e| extremes(&e, size));
+        (
+            std::array::from_fn(|k| corner[k] + T::exact(ext[k].0)),
+            std::array::from_fn(|k| corner[k] + T::exact(ext[k].1)),
+        )
+    }
+
     #[inline(always)]
     fn run(&mut self) {
+        if self.start > 0 {
+            return self.tile(0, 0);
+        }
         let area = self.area;
         let mut ty = area.y0 & !63;
         while ty < area.y1 {
@@ -317,14 +330,14 @@ impl<'a, T: Lane, F: FnMut(i32, i32, u16)> Walker<'a, T, F> {
         }
     }
 
-    /// The 64×64 tile at `(x, y)`: its 16×16 blocks that may hold covered pixels.
+    /// The 64×64 tile at `(x, y)`: its 16×16 blocks that may hold covered pixels (for a
+    /// small area, the 16×16 pixels from its first 4×4 block, wherever the tile).
     #[inline(always)]
     fn tile(&mut self, x: i32, y: i32) {
         let area = self.area;
+        let small = (area.x0 & !3, area.y0 & !3);
         let (visit, inside, corner) = if self.start > 0 {
-            // The one 16×16 block holding the area.
-            let (bx, by) = (area.x0 & !15, area.y0 & !15);
-            (1u16 << ((by - y) / 16 * 4 + (bx - x) / 16), 0, self.corner(bx, by))
+            (1u16, 0, self.corner(small.0, small.1))
         } else {
             // The tile as a whole first (most tiles of a thin triangle's box miss it).
             let mut all_inside = true;
@@ -341,43 +354,41 @@ impl<'a, T: Lane, F: FnMut(i32, i32, u16)> Walker<'a, T, F> {
             if all_inside {
                 (mask, mask, corner)
             } else {
-                let ext = &self.extremes16;
-                let hi = std::array::from_fn(|k| corner[k] + T::exact(ext[k].0));
-                let lo = std::array::from_fn(|k| corner[k] + T::exact(ext[k].1));
-                let (visit, inside) = sub_blocks(hi, lo, &self.pixels, 4);
+                let (hi, lo) = self.extremes(&corner, 16);
+                let (visit, inside) = sub_blocks(hi, lo, self.ab_shl(4));
                 (visit & mask, inside & mask, corner)
             }
         };
+        let ab16 = self.ab_shl(4);
         let mut bits = visit;
         while bits != 0 {
             let i = bits.trailing_zeros() as usize;
             bits &= bits - 1;
             let (bx, by, corner) = if self.start > 0 {
-                (area.x0 & !15, area.y0 & !15, corner)
+                (small.0, small.1, corner)
             } else {
-                let p = &self.pixels;
-                let corner = std::array::from_fn(|k| corner[k] + p[k][i].shl(4));
-                (x + 16 * (i & 3) as i32, y + 16 * (i >> 2) as i32, corner)
+                let (c, r) = (COLUMN[i], ROW[i]);
+                let corner = std::array::from_fn(|k| corner[k] + ab16[k].0.times(c) + ab16[k].1.times(r));
+                (x + 16 * c, y + 16 * r, corner)
             };
             self.block16(bx, by, &corner, inside & (1 << i) != 0);
         }
     }
 
-    /// The 16×16 block at `(x, y)` (`corner`: the edges there): its 4×4 blocks.
+    /// The 16×16 pixels at `(x, y)` (`corner`: the edges there): their 4×4 blocks.
     #[inline(always)]
     fn block16(&mut self, x: i32, y: i32, corner: &[T; 3], inside: bool) {
         let area = self.area;
         let mask = area_mask(area, x, y, 4);
+        let ab4 = self.ab_shl(2);
         let (visit, inside) = if inside {
             (mask, mask)
         } else if self.start == 2 {
             // The area's one 4×4 block: its pixels are tested below.
             (mask, 0)
         } else {
-            let ext = &self.extremes4;
-            let hi = std::array::from_fn(|k| corner[k] + T::exact(ext[k].0));
-            let lo = std::array::from_fn(|k| corner[k] + T::exact(ext[k].1));
-            let (visit, inside) = sub_blocks(hi, lo, &self.pixels, 2);
+            let (hi, lo) = self.extremes(corner, 4);
+            let (visit, inside) = sub_blocks(hi, lo, ab4);
             (visit & mask, inside & mask)
         };
         let within = x >= area.x0 && y >= area.y0 && x + 16 <= area.x1 && y + 16 <= area.y1;
@@ -385,13 +396,14 @@ impl<'a, T: Lane, F: FnMut(i32, i32, u16)> Walker<'a, T, F> {
         while bits != 0 {
             let i = bits.trailing_zeros() as usize;
             bits &= bits - 1;
-            let (bx, by) = (x + 4 * (i & 3) as i32, y + 4 * (i >> 2) as i32);
+            let (c, r) = (COLUMN[i], ROW[i]);
+            let (bx, by) = (x + 4 * c, y + 4 * r);
             let mut mask = if inside & (1 << i) != 0 {
                 0xffff
             } else {
-                let [p0, p1, p2] = &self.pixels;
-                let c: [T; 3] = std::array::from_fn(|k| corner[k] + self.pixels[k][i].shl(2));
-                !negative(&lanes(|j| (c[0] + p0[j]) | (c[1] + p1[j]) | (c[2] + p2[j])))
+                let base: [T; 3] = std::array::from_fn(|k| corner[k] + ab4[k].0.times(c) + ab4[k].1.times(r));
+                let [s0, s1, s2] = self.ab.map(|(a, b)| steps(a, b));
+                !negative(&lanes(|j| (base[0] + s0[j]) | (base[1] + s1[j]) | (base[2] + s2[j])))
             };
             if !within && (bx < area.x0 || by < area.y0 || bx + 4 > area.x1 || by + 4 > area.y1) {
                 mask &= rect_mask(area, bx, by);
