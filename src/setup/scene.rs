@@ -170,7 +170,13 @@ impl Scene {
                         (region.x0, region.y1 - 1),
                         (region.x1 - 1, region.y1 - 1),
                     ];
-                    if corners.iter().all(|&(x, y)| setup.covers(x, y)) && self.droppable(bin, drawn, tile, region) {
+                    // A region reaching outside the triangle's box (a small triangle's always
+                    // does) cannot be covered: no corner tests.
+                    let inside = region.intersect(r) == region;
+                    if inside
+                        && corners.iter().all(|&(x, y)| setup.covers(x, y))
+                        && self.droppable(bin, drawn, tile, region)
+                    {
                         self.binned -= self.bins[bin].len();
                         self.bins[bin].clear();
                     }
