@@ -82,14 +82,17 @@ impl BlockAt {
     /// The block at window `(x, y)` (inside `band`'s rows).
     #[inline]
     pub fn new(band: &Band<'_>, x: i32, y: i32) -> Self {
-        let cols = (band.width as i32 - x).clamp(0, 4) as u32;
-        let rows = (band.y0 + band.rows as i32 - y).clamp(0, 4) as u32;
-        let col_bits = (1u16 << cols) - 1;
+        let base = (y - band.y0) as usize * band.width + x as usize;
+        let (cols, rows) = (band.width as i32 - x, band.y0 + band.rows as i32 - y);
+        if cols >= 4 && rows >= 4 {
+            // All but the blocks at the framebuffer's right and top edges.
+            return BlockAt { x, y, base, width: band.width, valid: 0xffff };
+        }
+        let col_bits = (1u16 << cols.clamp(0, 4)) - 1;
         let mut valid = 0u16;
-        for r in 0..rows {
+        for r in 0..rows.clamp(0, 4) {
             valid |= col_bits << (4 * r);
         }
-        let base = (y - band.y0) as usize * band.width + x as usize;
         BlockAt { x, y, base, width: band.width, valid }
     }
 
@@ -297,7 +300,7 @@ impl BlockPipeline {
 /// Runs the fragment pipeline (see the module) on the lanes of `mask` of the block at
 /// `(x, y)` of a primitive facing front or back (`front_facing`, for two-sided stencil).
 #[allow(clippy::too_many_arguments)]
-#[inline]
+#[inline(always)]
 pub fn shade_block(
     pipeline: &BlockPipeline,
     state: &DrawState,

@@ -4,21 +4,44 @@
 //!
 //! Each edge is `E(x, y) = c + a·x + b·y` over window pixel coordinates, covered where
 //! `E ≥ 0` (the setup folds the pixel centre and the fill rule's bias into `c`, so the
-//! coverage is bit for bit `TriangleSetup::covers`). At each level a block is rejected when
-//! an edge's largest value over its pixels is negative; an edge whose smallest value is
-//! non-negative accepts the block and is not tested again below it, so the inside of a
-//! large triangle costs no edge work at all. Only 4×4 blocks with a partial edge evaluate
-//! that edge per lane. The values are exact in i64: within the guard band an edge function
-//! at any pixel of a framebuffer is below 2⁶³ (`setup::triangle::GUARD_BAND`).
+//! coverage is bit for bit `TriangleSetup::covers`). Each level tests the 16 sub-blocks
+//! of a block at once, as 16 lanes, on all three edges: a sub-block is skipped when an
+//! edge's largest value over its pixels is negative, and known inside when every edge's
+//! smallest value is non-negative, so the inside of a large triangle costs no edge work
+//! below the level where it became inside. A 4×4 block that is neither evaluates its 16
+//! pixels as lanes. A triangle whose pixels lie within the 16×16 pixels from its first
+//! aligned 4×4 block starts there, one within a 4×4 block at its pixels (small triangles
+//! pay for neither the 64-pixel level nor a tile's loops).
+//!
+//! **Exact in 32-bit lanes.** The values are exact integers. An edge's `a` and `b` are
+//! multiples of 256 (the setup's pixel-unit coefficients of 1/256-pixel coordinates);
+//! with `2^s` the largest power of two dividing both, `E ≥ 0 ⇔ ⌊E/2^s⌋ ≥ 0` and
+//! `⌊E/2^s⌋ = ⌊c/2^s⌋ + (a/2^s)·x + (b/2^s)·y` exactly ([`Reduced`]), which takes 8 bits
+//! off. Then every value the walk of a tile computes is `B + o`: `B` the reduced edge at
+//! the tile's (or a small area's first block's) corner, evaluated once in i64, and `o` a sum
+//! of steps with `|o| ≤ 63·M`, `M = |a'| + |b'|` (a pixel is at most 63 columns and 63
+//! rows from its tile's corner; the largest-value corner of a sub-block too). The walk
+//! clamps `B` to `[−K, K]` with `K = 64·M + 1` before adding the steps: when `|B| ≤ K`
+//! nothing changes; when `B > K` both the exact value and the computed one are at least
+//! `K − 63·M ≥ 1`, and symmetrically below `−K`, so every sign, which is all the walk
+//! reads, is the exact one. When every edge has `M ≤ 2²⁴` (edges shorter than about 65 000
+//! pixels: `M` is 256 times the edge's extent in pixels), `K + 63·M < 2³¹` and the lanes
+//! are i32; otherwise (triangles reaching towards the guard band) they are i64, with no
+//! clamp needed: within the guard band every value at a framebuffer pixel is below 2⁶³
+//! (`setup::triangle::GUARD_BAND`). The choice is made per triangle; both give the same
+//! coverage.
 //!
 //! Blocks are clipped to the walked area (the tile ∩ scissor ∩ viewport, inside the
 //! framebuffer), so a block at the framebuffer's right or top edge carries only its pixels
-//! inside; polygon stipple is applied here as a mask. The span walkers ([`super::walk`])
-//! remain for lines, points, smooth primitives, pixel rectangles, multisampled targets and
-//! the exact accuracy mode.
+//! inside; polygon stipple is applied here as a mask. Everything here is `#[inline(always)]`
+//! so that the caller's per-level copy (`crate::simd`) compiles the walk and the block
+//! handler together, once per SIMD level. The span walkers ([`super::walk`]) remain for
+//! lines, points, smooth primitives, pixel rectangles, multisampled targets and the exact
+//! accuracy mode.
 
 use super::walk::stipple_mask;
 use crate::framebuffer::Rect;
+use std::ops::{Add, BitOr};
 
 /// One edge function over window pixels: `c + a·x + b·y`, covered where ≥ 0.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -33,15 +56,10 @@ impl PixelEdge {
     pub fn from_array(e: [i64; 3]) -> Self {
         PixelEdge { c: e[0], a: e[1], b: e[2] }
     }
-
-    #[inline(always)]
-    fn at(&self, x: i32, y: i32) -> i64 {
-        self.c + self.a * x as i64 + self.b * y as i64
-    }
 }
 
 /// The coverage mask of the 4×4 block at `(x, y)` cut to the rectangle `area`.
-#[inline]
+#[inline(always)]
 pub fn rect_mask(area: Rect, x: i32, y: i32) -> u16 {
     let mut cols = 0u16;
     for c in 0..4 {
@@ -61,132 +79,347 @@ pub fn rect_mask(area: Rect, x: i32, y: i32) -> u16 {
 /// Walks the pixels of `area` covered by all three `edges`, calling `emit(x, y, mask)` for
 /// every 4×4 block (at multiples of 4) with a covered pixel. `stipple` is the polygon
 /// stipple pattern when enabled.
-#[inline]
+#[inline(always)]
 pub fn walk_blocks(area: Rect, edges: &[PixelEdge; 3], stipple: Option<&[u32; 32]>, emit: impl FnMut(i32, i32, u16)) {
     if area.is_empty() {
         return;
     }
-    let mut walker = Walker { area, edges, stipple, emit };
-    // A small area (a small triangle's box) starts at the smallest aligned block holding it.
-    let within = |size: i32| {
-        let m = !(size - 1);
-        (area.x0 & m) == ((area.x1 - 1) & m) && (area.y0 & m) == ((area.y1 - 1) & m)
-    };
-    for size in [4, 16] {
-        if within(size) {
-            let m = !(size - 1);
-            return walker.level(size, area.x0 & m, area.y0 & m, 0b111);
-        }
-    }
-    let mut ty = area.y0 & !63;
-    while ty < area.y1 {
-        let mut tx = area.x0 & !63;
-        while tx < area.x1 {
-            walker.level(64, tx, ty, 0b111);
-            tx += 64;
-        }
-        ty += 64;
+    let reduced = edges.map(|e| Reduced::new(&e));
+    if reduced.iter().all(|e| e.a.unsigned_abs() + e.b.unsigned_abs() <= 1 << 24) {
+        Walker::<i32, _>::new(area, reduced, stipple, emit).run();
+    } else {
+        Walker::<i64, _>::new(area, reduced, stipple, emit).run();
     }
 }
 
-struct Walker<'a, F> {
+/// An edge divided by the largest power of two dividing both `a` and `b` (see the module):
+/// `⌊E/2^s⌋`, whose sign is `E`'s at every pixel.
+#[derive(Clone, Copy, Debug)]
+struct Reduced {
+    c: i64,
+    a: i64,
+    b: i64,
+}
+
+impl Reduced {
+    #[inline(always)]
+    fn new(e: &PixelEdge) -> Self {
+        // Both zero (a constant edge): any shift below 63 keeps the sign of c.
+        let s = (e.a | e.b).trailing_zeros().min(62);
+        Reduced { c: e.c >> s, a: e.a >> s, b: e.b >> s }
+    }
+
+    #[inline(always)]
+    fn at(&self, x: i32, y: i32) -> i64 {
+        self.c + self.a * x as i64 + self.b * y as i64
+    }
+
+    /// `M = |a| + |b|`: how much the edge changes from one pixel to the next, at most.
+    #[inline(always)]
+    fn steepness(&self) -> i64 {
+        self.a.abs() + self.b.abs()
+    }
+}
+
+/// The integer type of the walk's lanes: i32 when every value fits (see the module), i64
+/// otherwise.
+trait Lane: Copy + Default + Add<Output = Self> + BitOr<Output = Self> {
+    /// `v` clamped to `[−k, k]` (i32), or `v` (i64, where nothing needs clamping).
+    fn clamped(v: i64, k: i64) -> Self;
+    /// `v`, which fits.
+    fn exact(v: i64) -> Self;
+    /// 1 when negative, else 0.
+    fn sign(self) -> u16;
+    /// `self · k` for a small `k` (which fits).
+    fn times(self, k: i32) -> Self;
+    /// `self · 2^n` (which fits).
+    fn shl(self, n: u32) -> Self;
+}
+
+impl Lane for i32 {
+    #[inline(always)]
+    fn clamped(v: i64, k: i64) -> Self {
+        v.clamp(-k, k) as i32
+    }
+    #[inline(always)]
+    fn exact(v: i64) -> Self {
+        v as i32
+    }
+    #[inline(always)]
+    fn sign(self) -> u16 {
+        (self as u32 >> 31) as u16
+    }
+    #[inline(always)]
+    fn times(self, k: i32) -> Self {
+        self * k
+    }
+    #[inline(always)]
+    fn shl(self, n: u32) -> Self {
+        self << n
+    }
+}
+
+impl Lane for i64 {
+    #[inline(always)]
+    fn clamped(v: i64, _: i64) -> Self {
+        v
+    }
+    #[inline(always)]
+    fn exact(v: i64) -> Self {
+        v
+    }
+    #[inline(always)]
+    fn sign(self) -> u16 {
+        (self as u64 >> 63) as u16
+    }
+    #[inline(always)]
+    fn times(self, k: i32) -> Self {
+        self * k as i64
+    }
+    #[inline(always)]
+    fn shl(self, n: u32) -> Self {
+        self << n
+    }
+}
+
+type Lanes<T> = [T; 16];
+
+/// The negative lanes of `v` as a mask.
+#[inline(always)]
+fn negative<T: Lane>(v: &Lanes<T>) -> u16 {
+    let mut bits = 0u16;
+    for (i, x) in v.iter().enumerate() {
+        bits |= x.sign() << i;
+    }
+    bits
+}
+
+/// The lanes `f(0) … f(15)` (a plain loop, which LLVM vectorises).
+#[inline(always)]
+fn lanes<T: Lane>(f: impl Fn(usize) -> T) -> Lanes<T> {
+    let mut out = [T::default(); 16];
+    for (i, o) in out.iter_mut().enumerate() {
+        *o = f(i);
+    }
+    out
+}
+
+/// The column and row of each lane of a 4×4 block.
+const COLUMN: [i32; 16] = [0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3];
+const ROW: [i32; 16] = [0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2, 2, 3, 3, 3, 3];
+
+/// An edge's steps `a·column + b·row` over the 16 lanes (from a 4×4 block's corner to its
+/// pixels; with `a` and `b` scaled by a sub-block's side, from a block's corner to its
+/// sub-blocks' corners).
+#[inline(always)]
+fn steps<T: Lane>(a: T, b: T) -> Lanes<T> {
+    lanes(|i| a.times(COLUMN[i]) + b.times(ROW[i]))
+}
+
+/// An edge's value at the pixel of a block of side `size` where it is largest (`hi`) and
+/// smallest (`lo`), relative to the block's corner.
+#[inline(always)]
+fn extremes(e: &Reduced, size: i64) -> (i64, i64) {
+    let s = size - 1;
+    (s * (e.a.max(0) + e.b.max(0)), s * (e.a.min(0) + e.b.min(0)))
+}
+
+/// The sub-blocks (lanes) of a block that may hold covered pixels and those entirely
+/// inside: `hi`/`lo` are the three edges' values at the block's corner plus their
+/// largest/smallest over a sub-block, `ab` their steps from one sub-block to the next.
+#[inline(always)]
+fn sub_blocks<T: Lane>(hi: [T; 3], lo: [T; 3], ab: [(T, T); 3]) -> (u16, u16) {
+    let [s0, s1, s2] = ab.map(|(a, b)| steps(a, b));
+    let at = |base: [T; 3]| lanes(|i| (base[0] + s0[i]) | (base[1] + s1[i]) | (base[2] + s2[i]));
+    (!negative(&at(hi)), !negative(&at(lo)))
+}
+
+/// The 16 sub-blocks of side `size` of the block at `(x, y)` that meet `area`.
+#[inline(always)]
+fn area_mask(area: Rect, x: i32, y: i32, size: i32) -> u16 {
+    let mut cols = 0u16;
+    for c in 0..4 {
+        let x0 = x + c * size;
+        cols |= ((x0 < area.x1 && x0 + size > area.x0) as u16) << c;
+    }
+    let mut mask = 0u16;
+    for r in 0..4 {
+        let y0 = y + r * size;
+        if y0 < area.y1 && y0 + size > area.y0 {
+            mask |= cols << (4 * r);
+        }
+    }
+    mask
+}
+
+struct Walker<'a, T, F> {
     area: Rect,
-    edges: &'a [PixelEdge; 3],
+    edges: [Reduced; 3],
+    /// The clamp of each edge's corner values (see the module).
+    clamp: [i64; 3],
     stipple: Option<&'a [u32; 32]>,
+    /// Where the walk starts: 2 when the area lies within one aligned 4×4 block, 1 when
+    /// it lies within the 16×16 pixels from its first aligned 4×4 block, 0 at the tiles.
+    start: u8,
+    /// Each edge's `a` and `b` as lanes.
+    ab: [(T, T); 3],
     emit: F,
 }
 
-impl<F: FnMut(i32, i32, u16)> Walker<'_, F> {
-    /// The block of side `size` at `(x, y)`, with the edges of `partial` (bit k: edge k) not
-    /// yet known to accept it.
-    #[inline]
-    fn level(&mut self, size: i32, x: i32, y: i32, mut partial: u8) {
-        let s = (size - 1) as i64;
-        for (k, e) in self.edges.iter().enumerate() {
-            if partial & (1 << k) == 0 {
-                continue;
-            }
-            let v = e.at(x, y);
-            let hi = v + (e.a.max(0) + e.b.max(0)) * s;
-            if hi < 0 {
-                return;
-            }
-            let lo = v + (e.a.min(0) + e.b.min(0)) * s;
-            if lo >= 0 {
-                partial &= !(1 << k);
-            }
-        }
-        if size == 4 {
-            return self.block(x, y, partial);
-        }
-        let sub = size / 4;
-        let area = self.area;
-        for j in 0..4 {
-            let sy = y + j * sub;
-            if sy >= area.y1 || sy + sub <= area.y0 {
-                continue;
-            }
-            for i in 0..4 {
-                let sx = x + i * sub;
-                if sx >= area.x1 || sx + sub <= area.x0 {
-                    continue;
-                }
-                if sub == 4 {
-                    self.level4(sx, sy, partial);
-                } else {
-                    self.level(sub, sx, sy, partial);
-                }
-            }
-        }
-    }
-
-    #[inline(never)]
-    fn level4(&mut self, x: i32, y: i32, partial: u8) {
-        self.level(4, x, y, partial)
-    }
-
-    /// A 4×4 block: its lanes tested on the partial edges, cut to the area and the stipple.
+impl<'a, T: Lane, F: FnMut(i32, i32, u16)> Walker<'a, T, F> {
     #[inline(always)]
-    fn block(&mut self, x: i32, y: i32, partial: u8) {
-        let mut mask = 0xffffu16;
-        for (k, e) in self.edges.iter().enumerate() {
-            if partial & (1 << k) != 0 {
-                mask &= lane_mask(e, x, y);
-            }
+    fn new(area: Rect, edges: [Reduced; 3], stipple: Option<&'a [u32; 32]>, emit: F) -> Self {
+        let (x4, y4) = (area.x0 & !3, area.y0 & !3);
+        let start = if area.x1 - x4 <= 4 && area.y1 - y4 <= 4 {
+            2
+        } else if area.x1 - x4 <= 16 && area.y1 - y4 <= 16 {
+            1
+        } else {
+            0
+        };
+        Walker {
+            area,
+            edges,
+            clamp: edges.map(|e| 64 * e.steepness() + 1),
+            stipple,
+            start,
+            ab: edges.map(|e| (T::exact(e.a), T::exact(e.b))),
+            emit,
+        }
+    }
+
+    /// The edges' values at `(x, y)`, clamped: the base a tile's (or a small area's
+    /// block's) steps are added to.
+    #[inline(always)]
+    fn corner(&self, x: i32, y: i32) -> [T; 3] {
+        let [e0, e1, e2] = &self.edges;
+        let [k0, k1, k2] = self.clamp;
+        [T::clamped(e0.at(x, y), k0), T::clamped(e1.at(x, y), k1), T::clamped(e2.at(x, y), k2)]
+    }
+
+    /// The edges' steps scaled by `2^shift`.
+    #[inline(always)]
+    fn ab_shl(&self, shift: u32) -> [(T, T); 3] {
+        self.ab.map(|(a, b)| (a.shl(shift), b.shl(shift)))
+    }
+
+    /// `corner` plus each edge's largest (and smallest) value over a block of side `size`.
+    #[inline(always)]
+    fn extremes(&self, corner: &[T; 3], size: i64) -> ([T; 3], [T; 3]) {
+        let ext = self.edges.map(|e| extremes(&e, size));
+        (
+            std::array::from_fn(|k| corner[k] + T::exact(ext[k].0)),
+            std::array::from_fn(|k| corner[k] + T::exact(ext[k].1)),
+        )
+    }
+
+    #[inline(always)]
+    fn run(&mut self) {
+        if self.start > 0 {
+            return self.tile(0, 0);
         }
         let area = self.area;
-        if x < area.x0 || y < area.y0 || x + 4 > area.x1 || y + 4 > area.y1 {
-            mask &= rect_mask(area, x, y);
-        }
-        if let Some(pattern) = self.stipple {
-            let mut bits = 0u16;
-            for r in 0..4 {
-                bits |= ((stipple_mask(pattern, x, y + r) & 0xf) as u16) << (4 * r);
+        let mut ty = area.y0 & !63;
+        while ty < area.y1 {
+            let mut tx = area.x0 & !63;
+            while tx < area.x1 {
+                self.tile(tx, ty);
+                tx += 64;
             }
-            mask &= bits;
-        }
-        if mask != 0 {
-            (self.emit)(x, y, mask);
+            ty += 64;
         }
     }
-}
 
-/// The lanes of the 4×4 block at `(x, y)` inside edge `e`: each lane's value as the
-/// block corner's plus a column and a row step (adds only), its sign bit packed.
-#[inline(always)]
-fn lane_mask(e: &PixelEdge, x: i32, y: i32) -> u16 {
-    let v = e.at(x, y);
-    let cols = [v, v + e.a, v + 2 * e.a, v + 3 * e.a];
-    let rows = [0, e.b, 2 * e.b, 3 * e.b];
-    let mut outside = 0u16;
-    for (r, &row) in rows.iter().enumerate() {
-        let mut bits = 0u16;
-        for (c, &col) in cols.iter().enumerate() {
-            bits |= (((col + row) as u64 >> 63) as u16) << c;
+    /// The 64×64 tile at `(x, y)`: its 16×16 blocks that may hold covered pixels (for a
+    /// small area, the 16×16 pixels from its first 4×4 block, wherever the tile).
+    #[inline(always)]
+    fn tile(&mut self, x: i32, y: i32) {
+        let area = self.area;
+        let small = (area.x0 & !3, area.y0 & !3);
+        let (visit, inside, corner) = if self.start > 0 {
+            (1u16, 0, self.corner(small.0, small.1))
+        } else {
+            // The tile as a whole first (most tiles of a thin triangle's box miss it).
+            let mut all_inside = true;
+            for e in &self.edges {
+                let v = e.at(x, y);
+                let (hi, lo) = extremes(e, 64);
+                if v + hi < 0 {
+                    return;
+                }
+                all_inside &= v + lo >= 0;
+            }
+            let mask = area_mask(area, x, y, 16);
+            let corner = self.corner(x, y);
+            if all_inside {
+                (mask, mask, corner)
+            } else {
+                let (hi, lo) = self.extremes(&corner, 16);
+                let (visit, inside) = sub_blocks(hi, lo, self.ab_shl(4));
+                (visit & mask, inside & mask, corner)
+            }
+        };
+        let ab16 = self.ab_shl(4);
+        let mut bits = visit;
+        while bits != 0 {
+            let i = bits.trailing_zeros() as usize;
+            bits &= bits - 1;
+            let (bx, by, corner) = if self.start > 0 {
+                (small.0, small.1, corner)
+            } else {
+                let (c, r) = (COLUMN[i], ROW[i]);
+                let corner = std::array::from_fn(|k| corner[k] + ab16[k].0.times(c) + ab16[k].1.times(r));
+                (x + 16 * c, y + 16 * r, corner)
+            };
+            self.block16(bx, by, &corner, inside & (1 << i) != 0);
         }
-        outside |= bits << (4 * r);
     }
-    !outside
+
+    /// The 16×16 pixels at `(x, y)` (`corner`: the edges there): their 4×4 blocks.
+    #[inline(always)]
+    fn block16(&mut self, x: i32, y: i32, corner: &[T; 3], inside: bool) {
+        let area = self.area;
+        let mask = area_mask(area, x, y, 4);
+        let ab4 = self.ab_shl(2);
+        let (visit, inside) = if inside {
+            (mask, mask)
+        } else if self.start == 2 {
+            // The area's one 4×4 block: its pixels are tested below.
+            (mask, 0)
+        } else {
+            let (hi, lo) = self.extremes(corner, 4);
+            let (visit, inside) = sub_blocks(hi, lo, ab4);
+            (visit & mask, inside & mask)
+        };
+        let within = x >= area.x0 && y >= area.y0 && x + 16 <= area.x1 && y + 16 <= area.y1;
+        let mut bits = visit;
+        while bits != 0 {
+            let i = bits.trailing_zeros() as usize;
+            bits &= bits - 1;
+            let (c, r) = (COLUMN[i], ROW[i]);
+            let (bx, by) = (x + 4 * c, y + 4 * r);
+            let mut mask = if inside & (1 << i) != 0 {
+                0xffff
+            } else {
+                let base: [T; 3] = std::array::from_fn(|k| corner[k] + ab4[k].0.times(c) + ab4[k].1.times(r));
+                let [s0, s1, s2] = self.ab.map(|(a, b)| steps(a, b));
+                !negative(&lanes(|j| (base[0] + s0[j]) | (base[1] + s1[j]) | (base[2] + s2[j])))
+            };
+            if !within && (bx < area.x0 || by < area.y0 || bx + 4 > area.x1 || by + 4 > area.y1) {
+                mask &= rect_mask(area, bx, by);
+            }
+            if let Some(pattern) = self.stipple {
+                let mut bits = 0u16;
+                for r in 0..4 {
+                    bits |= ((stipple_mask(pattern, bx, by + r) & 0xf) as u16) << (4 * r);
+                }
+                mask &= bits;
+            }
+            if mask != 0 {
+                (self.emit)(bx, by, mask);
+            }
+        }
+    }
 }
 
 #[cfg(test)]
@@ -199,6 +432,44 @@ mod tests {
         // Block at (4, 0): columns 5 and 6 (lanes 1, 2) of row 2 (lanes 8..12).
         assert_eq!(rect_mask(area, 4, 0), 0b0110 << 8);
         assert_eq!(rect_mask(area, 8, 0), 0);
+    }
+
+    /// The blocks `Walker<T>` emits for `area`.
+    fn walked<T: Lane>(area: Rect, edges: &[PixelEdge; 3]) -> Vec<(i32, i32, u16)> {
+        let mut seen = Vec::new();
+        Walker::<T, _>::new(area, edges.map(|e| Reduced::new(&e)), None, |x, y, m| seen.push((x, y, m))).run();
+        seen
+    }
+
+    #[test]
+    fn clamped_i32_lanes_give_the_coverage_of_exact_i64_lanes() {
+        // Edges at the i32 limit (M = 2²⁴: an edge 65 536 pixels long) far from and
+        // through the walked areas, where the clamp decides; both lane types must agree,
+        // and not trivially (some blocks partly covered).
+        let mut seed = 0x9e37_79b9_7f4a_7c15u64;
+        let mut next = |range: i64| {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed % (2 * range as u64)) as i64 - range
+        };
+        let mut partial = 0;
+        for round in 0..400 {
+            let edges: [PixelEdge; 3] = std::array::from_fn(|_| {
+                let a = next(1 << 15) * 256;
+                let b = ((1 << 24) - a.abs() / 256) * 256 * if next(1) < 0 { -1 } else { 1 };
+                // Through a point near the areas, or up to 2²⁰ pixels away.
+                let reach = if round % 2 == 0 { 100 } else { 1 << 20 };
+                let (px, py) = (next(reach) + 64, next(reach) + 64);
+                PixelEdge { c: -(a * px + b * py) + next(1 << 20), a, b }
+            });
+            let x0 = 64 + next(60) as i32;
+            let area = Rect::from_xywh(x0, 40 + next(30) as i32, 1 + next(50).unsigned_abs() as i32, 70);
+            let narrow = walked::<i32>(area, &edges);
+            assert_eq!(narrow, walked::<i64>(area, &edges), "round {round}");
+            partial += narrow.iter().filter(|b| b.2 != 0xffff).count();
+        }
+        assert!(partial > 100);
     }
 
     #[test]

@@ -216,17 +216,25 @@ impl Scene {
     }
 
     /// Empties tile `bin` (origin `(x, y)`) when the opaque triangle `setup`, whose binned
-    /// box is `r`, covers all of it and nothing binned there before must survive it.
+    /// box is `r`, writes all of the tile's part inside its clip rectangle (scissor box and
+    /// viewport) and nothing binned there before must survive it (depth/stencil clears
+    /// always stay: the triangle writes neither).
     #[inline]
     fn drop_covered_tile(&mut self, bin: usize, x: i32, y: i32, r: Rect, setup: &TriangleSetup, state: u32) {
         let t = TILE_SIZE as i32;
         let tile = Rect::from_xywh(x, y, t, t).intersect(Rect::from_xywh(0, 0, self.width as i32, self.height as i32));
-        if tile.intersect(r) != tile {
+        // The part of the tile the triangle may write; covering its corners, the (convex)
+        // triangle writes all of it. A region reaching outside the triangle's box (a small
+        // triangle's always does) cannot be covered: no corner tests.
+        let region = tile.intersect(self.states[state as usize].fill_clip);
+        if region.is_empty() || region.intersect(r) != region {
             return;
         }
-        let corners = [(tile.x0, tile.y0), (tile.x1 - 1, tile.y0), (tile.x0, tile.y1 - 1), (tile.x1 - 1, tile.y1 - 1)];
-        if corners.iter().all(|&(x, y)| setup.covers(x, y)) && self.droppable(bin, &self.states[state as usize]) {
-            // A depth/stencil clear stays: the triangle writes neither.
+        let corners =
+            [(region.x0, region.y0), (region.x1 - 1, region.y0), (region.x0, region.y1 - 1), (region.x1 - 1, region.y1 - 1)];
+        if corners.iter().all(|&(x, y)| setup.covers(x, y))
+            && self.droppable(bin, &self.states[state as usize], tile, region)
+        {
             let (primitives, entries) = (&self.primitives, &mut self.bins[bin]);
             let before = entries.len();
             entries.retain(|&i| matches!(&primitives[i as usize], Primitive::Clear(c) if c.depth_stencil_only()));
@@ -259,20 +267,27 @@ impl Scene {
             && f.color_masks.iter().all(|m| *m == Some([true; 4]))
     }
 
-    /// Whether the entries of tile `bin` leave nothing that a triangle overwriting the
-    /// whole tile with `state` would not replace: no stencil changes, no occlusion query
-    /// counting them, no pixel rectangle (which may write depth or stencil directly), and
-    /// depth written only if `state` writes depth too.
-    fn droppable(&self, bin: usize, state: &DrawState) -> bool {
+    /// Whether the entries of tile `bin` (the pixels `tile`) leave nothing that a triangle
+    /// overwriting the part `region` of the tile with `state` would not replace: each wrote
+    /// only inside `region` (its clip rectangle's part of the tile; a scissored draw
+    /// overwrites what earlier draws under the same scissor box wrote), no stencil changes,
+    /// no occlusion query counting them, no pixel rectangle (which may write depth or stencil
+    /// directly), and depth written only if `state` writes depth too.
+    fn droppable(&self, bin: usize, state: &DrawState, tile: Rect, region: Rect) -> bool {
         let writes_depth = state.fragment.depth.is_some_and(|d| d.write);
+        // Whether what an entry wrote inside `clip` lies within the region overwritten.
+        let within = |clip: Rect| region == tile || tile.intersect(clip).intersect(region) == tile.intersect(clip);
         self.bins[bin].iter().all(|&i| {
             let primitive = &self.primitives[i as usize];
-            // A color clear is overwritten; a depth/stencil clear is kept (see `add`).
-            if matches!(primitive, Primitive::Clear(_)) {
-                return true;
+            if let Primitive::Clear(c) = primitive {
+                // A depth/stencil clear is kept (see `drop_covered_tile`); a colour clear is
+                // overwritten where the triangle writes.
+                return c.depth_stencil_only() || (c.depth.is_none() && c.stencil.is_none() && within(c.rect));
             }
             let s = &self.states[self.primitive_states[i as usize] as usize];
+            let clip = if matches!(primitive, Primitive::Triangle(_)) { s.fill_clip } else { s.clip };
             !matches!(primitive, Primitive::Pixels(_))
+                && within(clip)
                 && s.samples_passed.is_none()
                 && s.fragment.stencil.is_none()
                 && (writes_depth || s.fragment.depth.is_none_or(|d| !d.write))
@@ -546,6 +561,52 @@ mod tests {
         let mut expected = vec![vec![2]; 12];
         expected[6] = vec![0, 2];
         assert_eq!(whole.bins, expected);
+    }
+
+    /// A state with no test, blend or mask (it overwrites), clipped to `clip`.
+    fn opaque(clip: Rect) -> DrawState {
+        let fragment = FragmentState::plain(None, vec![Some([true; 4])], false);
+        DrawState { fragment, clip, fill_clip: clip, polygon_stipple: None, samples_passed: None, multisample: None }
+    }
+
+    /// A triangle covering the whole window of side `size` (bounds: the window).
+    fn cover(size: f32) -> TriangleJob {
+        use crate::gl::limits::MAX_TEXTURE_UNITS;
+        use crate::setup::jobs::triangle::WindowVertex;
+        let v = |x: f32, y: f32| WindowVertex {
+            x,
+            y,
+            z: 0.5,
+            inv_w: 1.0,
+            color: [1.0; 4],
+            secondary_color: [0.0; 4],
+            tex_coords: [[0.0; 4]; MAX_TEXTURE_UNITS],
+            fog_coord: 0.0,
+        };
+        TriangleJob::new([v(-1.0, -1.0), v(3.0 * size, -1.0), v(-1.0, 3.0 * size)], None, 0.0, &[]).unwrap()
+    }
+
+    #[test]
+    fn a_scissored_opaque_triangle_drops_what_the_same_scissor_box_drew_before() {
+        // 128×128: four tiles; a scissor box one pixel inside the window touches all four
+        // but covers none of them whole.
+        let window = Rect::from_xywh(0, 0, 128, 128);
+        let scissor = Rect::from_xywh(1, 1, 126, 126);
+        let mut scene = Scene::new(128, 128);
+        scene.target_index(ColorSlot::FrontLeft);
+        let (inner, _) = scene.add_state(opaque(scissor));
+        let (whole, _) = scene.add_state(opaque(window));
+        let bins = |scene: &Scene| scene.bins.clone();
+        scene.add(inner, window, Primitive::Triangle(cover(128.0)));
+        scene.add(inner, window, Primitive::Triangle(cover(128.0)));
+        // The second replaces the first in every tile, though it covers none of them whole.
+        assert_eq!(bins(&scene), vec![vec![1]; 4]);
+        scene.add(whole, window, Primitive::Triangle(cover(128.0)));
+        assert_eq!(bins(&scene), vec![vec![2]; 4]);
+        // The unscissored triangle wrote outside the box: it stays, in every tile.
+        scene.add(inner, window, Primitive::Triangle(cover(128.0)));
+        scene.add(inner, window, Primitive::Triangle(cover(128.0)));
+        assert_eq!(bins(&scene), vec![vec![2, 3, 4]; 4]);
     }
 
     #[test]

@@ -221,21 +221,27 @@ impl TriangleJob {
             return;
         }
         let edges = self.setup.pixel_edges().map(PixelEdge::from_array);
-        walk_blocks(area, &edges, state.polygon_stipple.as_ref(), |x, y, mask| {
-            shade_block(pipeline, state, band, scratch, x, y, mask, self.front_facing, self)
+        // The walk, the block driver and the planes compiled once per SIMD level (one
+        // dispatch per triangle and tile); the kernels are the pipeline's own calls.
+        crate::simd::per_level!({
+            walk_blocks(
+                area,
+                &edges,
+                state.polygon_stipple.as_ref(),
+                #[inline(always)]
+                |x, y, mask| shade_block(pipeline, state, band, scratch, x, y, mask, self.front_facing, self),
+            )
         });
     }
 
-    /// The planes' x offsets of the block's lanes (pixel centres relative to the anchor,
-    /// computed as the span path computes a span's first pixel).
+    /// The planes' offsets of a block's columns and rows (pixel centres relative to the
+    /// anchor, computed as the span path computes a span's first pixel).
     #[inline(always)]
-    fn lane_dx(&self, x: i32) -> F32s {
-        lanes(|i| (x + (i & 3) as i32) as f32 + 0.5 - self.anchor[0])
-    }
-
-    #[inline(always)]
-    fn lane_dy(&self, y: i32) -> F32s {
-        lanes(|i| (y + (i >> 2) as i32) as f32 + 0.5 - self.anchor[1])
+    fn block_offsets(&self, x: i32, y: i32) -> Offsets {
+        Offsets {
+            dx: std::array::from_fn(|c| (x + c as i32) as f32 + 0.5 - self.anchor[0]),
+            dy: std::array::from_fn(|r| (y + r as i32) as f32 + 0.5 - self.anchor[1]),
+        }
     }
 
     fn shade_span(&self, state: &DrawState, band: &mut Band<'_>, y: i32, x0: i32, x1: i32, scratch: &mut Scratch) {
@@ -301,16 +307,29 @@ impl TriangleJob {
     }
 }
 
-/// A plane over a block's lanes: `a0 + dadx·dx + dady·dy` per lane, as [`Plane::at`].
+/// The planes' offsets of a block's four columns (`dx`) and four rows (`dy`).
+#[derive(Clone, Copy)]
+struct Offsets {
+    dx: [f32; 4],
+    dy: [f32; 4],
+}
+
+/// A plane over a block's lanes: `a0 + dadx·dx + dady·dy` per lane, as [`Plane::at`]
+/// evaluates it (`(a0 + dadx·dx) + dady·dy`, two roundings of each product and sum), with
+/// the terms shared by a column or a row computed once: `a0 + dadx·dx` per column,
+/// `dady·dy` per row, one add per lane. The same operations on the same operands, so the
+/// same bits as the span path's.
 #[inline(always)]
-fn plane_lanes(p: &Plane, dx: &F32s, dy: &F32s) -> F32s {
-    lanes(|i| p.a0 + p.dadx * dx[i] + p.dady * dy[i])
+fn plane_lanes(p: &Plane, o: &Offsets) -> F32s {
+    let cols = o.dx.map(|dx| p.a0 + p.dadx * dx);
+    let rows = o.dy.map(|dy| p.dady * dy);
+    lanes(|i| cols[i & 3] + rows[i >> 2])
 }
 
 impl BlockInputs for TriangleJob {
     #[inline(always)]
     fn z(&self, x: i32, y: i32) -> F32s {
-        plane_lanes(&self.z, &self.lane_dx(x), &self.lane_dy(y))
+        plane_lanes(&self.z, &self.block_offsets(x, y))
     }
 
     #[inline(always)]
@@ -319,20 +338,17 @@ impl BlockInputs for TriangleJob {
             *out = BlockColors::Uniform(*c);
             return;
         }
-        let (dx, dy) = (self.lane_dx(x), self.lane_dy(y));
+        let o = self.block_offsets(x, y);
         *out = match &self.shading {
             Shading::Flat(c) => BlockColors::Uniform(*c),
-            Shading::Affine([r, g, b, a]) => BlockColors::Lanes([
-                plane_lanes(r, &dx, &dy),
-                plane_lanes(g, &dx, &dy),
-                plane_lanes(b, &dx, &dy),
-                plane_lanes(a, &dx, &dy),
-            ]),
+            Shading::Affine([r, g, b, a]) => {
+                BlockColors::Lanes([plane_lanes(r, &o), plane_lanes(g, &o), plane_lanes(b, &o), plane_lanes(a, &o)])
+            }
             Shading::Perspective { color_over_w, inv_w } => {
-                let q = plane_lanes(inv_w, &dx, &dy);
+                let q = plane_lanes(inv_w, &o);
                 let w: F32s = lanes(|i| 1.0 / q[i]);
                 let channel = |p: &Plane| {
-                    let v = plane_lanes(p, &dx, &dy);
+                    let v = plane_lanes(p, &o);
                     lanes(|i| v[i] * w[i])
                 };
                 let [r, g, b, a] = color_over_w;
