@@ -230,8 +230,12 @@ impl Scene {
         if region.is_empty() || region.intersect(r) != region {
             return;
         }
-        let corners =
-            [(region.x0, region.y0), (region.x1 - 1, region.y0), (region.x0, region.y1 - 1), (region.x1 - 1, region.y1 - 1)];
+        let corners = [
+            (region.x0, region.y0),
+            (region.x1 - 1, region.y0),
+            (region.x0, region.y1 - 1),
+            (region.x1 - 1, region.y1 - 1),
+        ];
         if corners.iter().all(|&(x, y)| setup.covers(x, y))
             && self.droppable(bin, &self.states[state as usize], tile, region)
         {
@@ -584,6 +588,41 @@ mod tests {
             fog_coord: 0.0,
         };
         TriangleJob::new([v(-1.0, -1.0), v(3.0 * size, -1.0), v(-1.0, 3.0 * size)], None, 0.0, &[]).unwrap()
+    }
+
+    #[test]
+    fn a_scissored_opaque_triangle_drops_a_colour_clear_only_inside_its_box() {
+        use crate::setup::jobs::clear::{ClearJob, ColorClear};
+        let window = Rect::from_xywh(0, 0, 128, 128);
+        let clear = |rect: Rect, colour: bool, depth: bool| ClearJob {
+            rect,
+            whole: rect == window,
+            colors: if colour {
+                vec![ColorClear { slot: ColorSlot::FrontLeft, color: [0.0; 4], mask: [true; 4] }]
+            } else {
+                vec![]
+            },
+            depth: depth.then_some(1.0),
+            stencil: None,
+        };
+        let scissor = Rect::from_xywh(1, 1, 126, 126);
+        let mut scene = Scene::new(128, 128);
+        scene.target_index(ColorSlot::FrontLeft);
+        let (inner, _) = scene.add_state(opaque(scissor));
+        // A whole-window colour clear wrote outside the box: a scissored triangle keeps it
+        // (the one-pixel frame must stay cleared); the depth clear always stays.
+        scene.add_clear(clear(window, true, false));
+        scene.add_clear(clear(window, false, true));
+        scene.add(inner, window, Primitive::Triangle(cover(128.0)));
+        assert_eq!(scene.bins, vec![vec![0, 1, 2]; 4]);
+        // A colour clear inside the box is overwritten where the triangle writes.
+        let mut scene = Scene::new(128, 128);
+        scene.target_index(ColorSlot::FrontLeft);
+        let (inner, _) = scene.add_state(opaque(scissor));
+        scene.add_clear(clear(scissor, true, false));
+        scene.add_clear(clear(window, false, true));
+        scene.add(inner, window, Primitive::Triangle(cover(128.0)));
+        assert_eq!(scene.bins, vec![vec![1, 2]; 4]);
     }
 
     #[test]
