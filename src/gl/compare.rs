@@ -17,6 +17,18 @@ pub enum CompareFunc {
 }
 
 impl CompareFunc {
+    /// Every function, in GL's enum order (`GL_NEVER` … `GL_ALWAYS`).
+    pub const ALL: [CompareFunc; 8] = [
+        Self::Never,
+        Self::Less,
+        Self::Equal,
+        Self::LessEqual,
+        Self::Greater,
+        Self::NotEqual,
+        Self::GreaterEqual,
+        Self::Always,
+    ];
+
     pub fn from_gl(e: GLenum) -> Option<Self> {
         Some(match e {
             GL_NEVER => Self::Never,

@@ -801,16 +801,7 @@ mod tests {
 
     #[test]
     fn branchless_comparisons_are_the_compare_functions() {
-        let funcs = [
-            CompareFunc::Never,
-            CompareFunc::Less,
-            CompareFunc::Equal,
-            CompareFunc::LessEqual,
-            CompareFunc::Greater,
-            CompareFunc::NotEqual,
-            CompareFunc::GreaterEqual,
-            CompareFunc::Always,
-        ];
+        let funcs = CompareFunc::ALL;
         let values = [0.0, -0.0, 0.25, 0.5, 1.0, f32::NAN, f32::INFINITY];
         for func in funcs {
             for r in values {

@@ -485,16 +485,7 @@ mod tests {
     fn compare_bits_follow_every_function() {
         let f: U32s = std::array::from_fn(|i| (i % 3) as u32);
         let s = [1u32; LANES];
-        for func in [
-            CompareFunc::Never,
-            CompareFunc::Less,
-            CompareFunc::Equal,
-            CompareFunc::LessEqual,
-            CompareFunc::Greater,
-            CompareFunc::NotEqual,
-            CompareFunc::GreaterEqual,
-            CompareFunc::Always,
-        ] {
+        for func in CompareFunc::ALL {
             let want = (0..LANES).filter(|&i| crate::fragment::passes(func, f[i], s[i])).fold(0u16, |m, i| m | 1 << i);
             assert_eq!(compare_lanes(compare_bits(func), &f, &s), want, "{func:?}");
         }
@@ -549,16 +540,7 @@ mod tests {
         use crate::fragment::{stencil_depth_test, DepthTest, StencilTest};
         use StencilOp::*;
         let ops = [Keep, Zero, Replace, Incr, Decr, IncrWrap, DecrWrap, Invert];
-        let funcs = [
-            CompareFunc::Never,
-            CompareFunc::Less,
-            CompareFunc::Equal,
-            CompareFunc::LessEqual,
-            CompareFunc::Greater,
-            CompareFunc::NotEqual,
-            CompareFunc::GreaterEqual,
-            CompareFunc::Always,
-        ];
+        let funcs = CompareFunc::ALL;
         let formats = [
             DepthStencilFormat::Depth16,
             DepthStencilFormat::Packed24 { depth: true, stencil: true },
