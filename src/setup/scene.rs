@@ -215,10 +215,10 @@ impl Scene {
         self.primitive_states.push(state);
     }
 
-    /// Empties tile `bin` (origin `(x, y)`) when the opaque triangle `setup`, whose binned
-    /// box is `r`, writes all of the tile's part inside its clip rectangle (scissor box and
-    /// viewport) and nothing binned there before must survive it (depth/stencil clears
-    /// always stay: the triangle writes neither).
+    /// Empties tile `bin` (origin `(x, y)`), but for the clears it does not overwrite, when
+    /// the opaque triangle `setup`, whose binned box is `r`, writes all of the tile's part
+    /// inside its clip rectangle (scissor box and viewport) and nothing binned there before
+    /// must survive it.
     #[inline]
     fn drop_covered_tile(&mut self, bin: usize, x: i32, y: i32, r: Rect, setup: &TriangleSetup, state: u32) {
         let t = TILE_SIZE as i32;
@@ -239,9 +239,17 @@ impl Scene {
         if corners.iter().all(|&(x, y)| setup.covers(x, y))
             && self.droppable(bin, &self.states[state as usize], tile, region)
         {
+            // Clears stay where the triangle does not overwrite them: a depth/stencil clear
+            // (the triangle writes neither), and a colour clear reaching outside the region
+            // (its pixels there must stay cleared; inside, the triangle paints over it).
             let (primitives, entries) = (&self.primitives, &mut self.bins[bin]);
             let before = entries.len();
-            entries.retain(|&i| matches!(&primitives[i as usize], Primitive::Clear(c) if c.depth_stencil_only()));
+            entries.retain(|&i| match &primitives[i as usize] {
+                Primitive::Clear(c) => {
+                    c.depth_stencil_only() || tile.intersect(c.rect).intersect(region) != tile.intersect(c.rect)
+                }
+                _ => false,
+            });
             self.binned -= before - entries.len();
         }
     }
@@ -284,9 +292,9 @@ impl Scene {
         self.bins[bin].iter().all(|&i| {
             let primitive = &self.primitives[i as usize];
             if let Primitive::Clear(c) = primitive {
-                // A depth/stencil clear is kept (see `drop_covered_tile`); a colour clear is
-                // overwritten where the triangle writes.
-                return c.depth_stencil_only() || (c.depth.is_none() && c.stencil.is_none() && within(c.rect));
+                // A depth/stencil clear is kept, and so is a colour clear where the triangle
+                // does not overwrite it (see `drop_covered_tile`).
+                return c.depth_stencil_only() || (c.depth.is_none() && c.stencil.is_none());
             }
             let s = &self.states[self.primitive_states[i as usize] as usize];
             let clip = if matches!(primitive, Primitive::Triangle(_)) { s.fill_clip } else { s.clip };
@@ -609,12 +617,16 @@ mod tests {
         let mut scene = Scene::new(128, 128);
         scene.target_index(ColorSlot::FrontLeft);
         let (inner, _) = scene.add_state(opaque(scissor));
-        // A whole-window colour clear wrote outside the box: a scissored triangle keeps it
-        // (the one-pixel frame must stay cleared); the depth clear always stays.
+        // A whole-window colour clear wrote outside the box: scissored triangles keep it
+        // (the one-pixel frame must stay cleared) while dropping what the box held before
+        // them; the depth clear always stays.
         scene.add_clear(clear(window, true, false));
         scene.add_clear(clear(window, false, true));
         scene.add(inner, window, Primitive::Triangle(cover(128.0)));
         assert_eq!(scene.bins, vec![vec![0, 1, 2]; 4]);
+        // A second scissored triangle replaces the first and keeps both clears.
+        scene.add(inner, window, Primitive::Triangle(cover(128.0)));
+        assert_eq!(scene.bins, vec![vec![0, 1, 3]; 4]);
         // A colour clear inside the box is overwritten where the triangle writes.
         let mut scene = Scene::new(128, 128);
         scene.target_index(ColorSlot::FrontLeft);
