@@ -69,6 +69,14 @@ pub struct Scene {
     deferred: Option<Vec<(u32, Rect, Primitive)>>,
 }
 
+/// Whether what an entry wrote in `tile` inside its rectangle `clip` lies within `region`
+/// (the part of the tile a later triangle overwrites).
+#[inline]
+fn writes_within(tile: Rect, clip: Rect, region: Rect) -> bool {
+    let written = tile.intersect(clip);
+    region == tile || written.intersect(region) == written
+}
+
 impl Scene {
     /// An empty scene for a `width` × `height` framebuffer.
     pub fn new(width: usize, height: usize) -> Scene {
@@ -245,9 +253,7 @@ impl Scene {
             let (primitives, entries) = (&self.primitives, &mut self.bins[bin]);
             let before = entries.len();
             entries.retain(|&i| match &primitives[i as usize] {
-                Primitive::Clear(c) => {
-                    c.depth_stencil_only() || tile.intersect(c.rect).intersect(region) != tile.intersect(c.rect)
-                }
+                Primitive::Clear(c) => c.depth_stencil_only() || !writes_within(tile, c.rect, region),
                 _ => false,
             });
             self.binned -= before - entries.len();
@@ -288,7 +294,7 @@ impl Scene {
     fn droppable(&self, bin: usize, state: &DrawState, tile: Rect, region: Rect) -> bool {
         let writes_depth = state.fragment.depth.is_some_and(|d| d.write);
         // Whether what an entry wrote inside `clip` lies within the region overwritten.
-        let within = |clip: Rect| region == tile || tile.intersect(clip).intersect(region) == tile.intersect(clip);
+        let within = |clip: Rect| writes_within(tile, clip, region);
         self.bins[bin].iter().all(|&i| {
             let primitive = &self.primitives[i as usize];
             if let Primitive::Clear(c) = primitive {
