@@ -26,6 +26,7 @@ pub mod logic_op;
 pub mod multisample;
 pub mod output;
 pub mod pipeline;
+pub mod program;
 pub mod stencil;
 
 use crate::framebuffer::band::{ColorBand, DepthBand};

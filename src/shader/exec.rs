@@ -129,6 +129,7 @@ fn unary(op: UnaryOp, a: &Word) -> Word {
         Rcp => map1(a, |x| fu(1.0 / f(x))),
         Rsq => map1(a, |x| fu(1.0 / f(x).sqrt())),
         Exp2 => map1(a, |x| fu(math::exp2(f(x)))),
+        Exp => map1(a, |x| fu(math::exp(f(x)))),
         Log2 => map1(a, |x| fu(math::log2(f(x)))),
         Sin => map1(a, |x| fu(math::sin(f(x)))),
         Cos => map1(a, |x| fu(math::cos(f(x)))),

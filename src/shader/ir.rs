@@ -91,6 +91,8 @@ pub enum UnaryOp {
     /// f32 → f32: 2^a and log2(a) by [`super::math`]'s polynomials (error documented there).
     Exp2,
     Log2,
+    /// f32 → f32: eˣ by [`super::math::exp`] (fog's exponential, 0.5 ulp).
+    Exp,
     /// f32 → f32: sin and cos of radians by [`super::math`]'s polynomials.
     Sin,
     Cos,

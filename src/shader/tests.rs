@@ -97,7 +97,7 @@ fn ref_unary(op: UnaryOp, x: u32) -> u32 {
         INot => !x,
         BNot => (x == 0) as u32,
         Bitcast => x,
-        Exp2 | Log2 | Sin | Cos => unreachable!("not generated"),
+        Exp2 | Exp | Log2 | Sin | Cos => unreachable!("not generated"),
     }
 }
 

@@ -31,9 +31,8 @@ fn unary_signature(op: UnaryOp) -> Option<(Type, Type)> {
     use Type::*;
     use UnaryOp::*;
     Some(match op {
-        FNeg | FAbs | FSign | Floor | Ceil | Trunc | Fract | RoundEven | Sqrt | Rcp | Rsq | Exp2 | Log2 | Sin | Cos => {
-            (F32, F32)
-        }
+        FNeg | FAbs | FSign | Floor | Ceil | Trunc | Fract | RoundEven | Sqrt | Rcp | Rsq | Exp2 | Exp | Log2 | Sin
+        | Cos => (F32, F32),
         F32ToI32 => (F32, I32),
         F32ToU32 => (F32, U32),
         I32ToF32 => (I32, F32),

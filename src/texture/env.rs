@@ -18,7 +18,7 @@ pub enum EnvMode {
 }
 
 /// A GL_COMBINE_RGB or GL_COMBINE_ALPHA function.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum CombineFn {
     Replace,
     Modulate,
@@ -31,7 +31,7 @@ pub enum CombineFn {
 }
 
 /// Where an argument of GL_COMBINE comes from (GL_SOURCEn_RGB/ALPHA).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Source {
     /// This unit's texture.
     Texture,
@@ -43,7 +43,7 @@ pub enum Source {
 }
 
 /// GL_OPERANDn_RGB/ALPHA: which part of the source, and whether inverted.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Operand {
     /// Read alpha (SRC_ALPHA, ONE_MINUS_SRC_ALPHA) rather than the color.
     pub alpha: bool,
