@@ -14,7 +14,8 @@
 //! colors, light products) use its C expressions; per-vertex values follow the program's
 //! order with NIR's lowering (DP3 summed from the last component, multiply-adds not fused,
 //! 1/√x and divisions exact, the attenuation's 1/(1/√x) simplified to √x), and POW uses
-//! llvmpipe's own exp2/log2 polynomials. The capi test lighting_float compares the results
+//! llvmpipe's own exp2/log2 polynomials
+//! ([`crate::shader::math::exp2`], the shading IR's). The capi test lighting_float compares the results
 //! bit for bit as floats.
 //!
 //! One deliberate difference: Mesa's program, for a material shininess of zero and a light
@@ -26,9 +27,9 @@
 //! stored by `context` as it is: a draw's lighting pass borrows it, so nothing is copied or
 //! converted on the way to the per-draw constants.
 use crate::gl::enums::*;
-use crate::gl::float::{floor_f32, fused_multiply_add};
 use crate::gl::limits::MAX_LIGHTS;
 use crate::gl::types::GLenum;
+use crate::shader::math::{exp2, log2};
 
 /// One light source (glLight): colors, and position and spot direction in eye coordinates
 /// (transformed by the modelview matrix when they were specified).
@@ -162,36 +163,36 @@ pub struct LitColors {
 
 /// A spotlight's constants.
 #[derive(Clone, Copy, Debug)]
-struct Spot {
+pub(super) struct Spot {
     /// The normalized spot direction.
-    direction: [f32; 3],
-    cos_cutoff: f32,
-    exponent: f32,
+    pub(super) direction: [f32; 3],
+    pub(super) cos_cutoff: f32,
+    pub(super) exponent: f32,
 }
 
 /// The constants of one enabled light.
 #[derive(Clone, Copy, Debug)]
-struct LightSetup {
+pub(super) struct LightSetup {
     /// Local lights: the eye-space position; infinite lights: the normalized direction.
-    position: [f32; 3],
-    local: bool,
+    pub(super) position: [f32; 3],
+    pub(super) local: bool,
     /// The half vector of an infinite light under an infinite viewer.
-    half: [f32; 3],
-    spot: Option<Spot>,
+    pub(super) half: [f32; 3],
+    pub(super) spot: Option<Spot>,
     /// Constant, linear, quadratic attenuation of a local light that has any.
-    attenuation: Option<[f32; 3]>,
+    pub(super) attenuation: Option<[f32; 3]>,
     /// Ambient, diffuse, specular colors of the light (for tracked material products).
-    colors: [[f32; 4]; 3],
+    pub(super) colors: [[f32; 4]; 3],
 }
 
 /// The constants of one face for a material.
 #[derive(Clone, Copy, Debug, PartialEq)]
-struct FaceSetup {
+pub(super) struct FaceSetup {
     /// Emission + ambient × scene ambient (rgb), and the diffuse alpha.
-    scene: [f32; 4],
-    shininess: f32,
+    pub(super) scene: [f32; 4],
+    pub(super) shininess: f32,
     /// Ambient, diffuse, specular products of material and light, per enabled light.
-    products: [[[f32; 3]; 3]; MAX_LIGHTS],
+    pub(super) products: [[[f32; 3]; 3]; MAX_LIGHTS],
 }
 
 /// Which material parameters the vertex color replaces (GL_COLOR_MATERIAL).
@@ -205,17 +206,17 @@ pub struct Tracking {
 /// A draw's compiled lighting.
 #[derive(Clone, Debug)]
 pub struct Lighting {
-    lights: Vec<LightSetup>,
-    model_ambient: [f32; 4],
-    local_viewer: bool,
-    two_side: bool,
-    separate_specular: bool,
+    pub(super) lights: Vec<LightSetup>,
+    pub(super) model_ambient: [f32; 4],
+    pub(super) local_viewer: bool,
+    pub(super) two_side: bool,
+    pub(super) separate_specular: bool,
     /// The inverse modelview (column-major): normals go through its transpose.
-    inverse_modelview: [f32; 16],
-    normals: NormalScaling,
-    materials: [Material; 2],
-    faces: [FaceSetup; 2],
-    tracking: Option<Tracking>,
+    pub(super) inverse_modelview: [f32; 16],
+    pub(super) normals: NormalScaling,
+    pub(super) materials: [Material; 2],
+    pub(super) faces: [FaceSetup; 2],
+    pub(super) tracking: Option<Tracking>,
     /// The vertex color `tracked_faces` were made from (GL_COLOR_MATERIAL), if any yet.
     /// (NaN until a color is tracked: NaN equals nothing, so the first color recomputes; a
     /// plain array rather than an `Option`, whose comparison valgrind reports as a read of
@@ -315,80 +316,35 @@ pub fn set_material_parameter(m: &mut Material, pname: u32, p: &[f32]) {
     }
 }
 
-/// Coefficients of llvmpipe's polynomial for 2^x on [0, 1) (degree 5).
-const EXP2_POLYNOMIAL: [f64; 6] =
-    [1.0, 0.693153073200169, 0.24015361704437538, 0.055826318053295666, 0.008989340090494664, 0.001877576675191479];
-
-/// Coefficients of llvmpipe's polynomial P(z) with log2(m) = y · P(y²), y = (m − 1)/(m + 1)
-/// (degree 4).
-const LOG2_POLYNOMIAL: [f64; 5] =
-    [2.8853900934330916, 0.9617915504041842, 0.5774403394387364, 0.4033438582513299, 0.40671805249884624];
-
-/// llvmpipe's polynomial evaluation: odd and even terms in x² separately, with fused
-/// multiply-adds (its `fmuladd`, fused on the FMA hardware the reference ran on).
-fn polynomial(x: f32, coefficients: &[f64]) -> f32 {
-    let x2 = x * x;
-    let (mut even, mut odd): (Option<f32>, Option<f32>) = (None, None);
-    for (i, &c) in coefficients.iter().enumerate().rev() {
-        let c = c as f32;
-        let slot = if i % 2 == 0 { &mut even } else { &mut odd };
-        *slot = Some(slot.map_or(c, |acc| fused_multiply_add(x2, acc, c)));
-    }
-    match (odd, even) {
-        (Some(odd), Some(even)) => fused_multiply_add(odd, x, even),
-        (None, Some(even)) => even,
-        _ => 0.0,
-    }
-}
-
-/// llvmpipe's log2 with edge cases: NaN below 0, −∞ at 0, +∞ at +∞.
-fn log2_approx(x: f32) -> f32 {
-    if x.is_nan() || x < 0.0 {
-        return f32::NAN;
-    }
-    if x == 0.0 {
-        return f32::NEG_INFINITY;
-    }
-    if x == f32::INFINITY {
-        return f32::INFINITY;
-    }
-    let bits = x.to_bits();
-    let exponent = (((bits & 0x7f80_0000) >> 23) as i32 - 127) as f32;
-    let mantissa = f32::from_bits((bits & 0x007f_ffff) | 1.0f32.to_bits());
-    let y = (mantissa - 1.0) / (mantissa + 1.0);
-    fused_multiply_add(y, polynomial(y * y, &LOG2_POLYNOMIAL), exponent)
-}
-
-/// llvmpipe's 2^x: 2^floor(x) from the exponent bits times a polynomial of the fraction.
-fn exp2_approx(x: f32) -> f32 {
-    if x.is_nan() {
-        return x;
-    }
-    let x = x.clamp(-126.99999, 128.0);
-    let floor = floor_f32(x);
-    let whole = f32::from_bits(((floor as i32 + 127) as u32) << 23);
-    whole * polynomial(x - floor, &EXP2_POLYNOMIAL)
-}
-
 /// The program's POW as llvmpipe evaluates it: 2^(log2(x) · y), and 0 for x = 0. Matching
 /// its approximations keeps specular highlights and spotlights bit-exact.
 fn pow(x: f32, y: f32) -> f32 {
     if x == 0.0 {
         0.0
     } else {
-        exp2_approx(log2_approx(x) * y)
+        exp2(log2(x) * y)
+    }
+}
+
+/// max(x, 0) as one comparison and select: x when x > 0, else +0 (NaN and −0 included), the
+/// same operation as the lighting program's ([`super::program`]).
+fn positive_part(x: f32) -> f32 {
+    if x > 0.0 {
+        x
+    } else {
+        0.0
     }
 }
 
 /// The diffuse and specular factors of one light for one face (GL's LIT): max(N·L, 0),
 /// and (N·H)^shininess where N·L > 0.
 fn lit(n_dot_l: f32, n_dot_h: f32, shininess: f32) -> (f32, f32) {
-    let diffuse = n_dot_l.max(0.0);
+    let diffuse = positive_part(n_dot_l);
     let specular = if n_dot_l > 0.0 {
         if shininess == 0.0 {
             1.0
         } else {
-            pow(n_dot_h.max(0.0), shininess.clamp(-128.0, 128.0))
+            pow(positive_part(n_dot_h), shininess.clamp(-128.0, 128.0))
         }
     } else {
         0.0

@@ -53,6 +53,7 @@ pub mod offset;
 pub mod outline;
 pub mod pipeline;
 pub mod point;
+pub mod program;
 pub mod texgen;
 pub mod transform;
 pub mod triangle;
