@@ -13,7 +13,7 @@ use glam::{Mat4, Vec4};
 
 /// Where the fog coordinate of a vertex comes from (GL_FOG_COORD_SRC and
 /// GL_FOG_DISTANCE_MODE_NV).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum FogSource {
     /// glFogCoord's value (GL_FOG_COORD).
     Attribute,

@@ -6,6 +6,7 @@ use crate::gl::enums::{GL_BACK, GL_FRONT, GL_FRONT_AND_BACK, GL_SEPARATE_SPECULA
 use crate::shader::exec::{Executor, Io, NoTextures, Word, LANES};
 use crate::shader::validate::validate;
 use crate::vertex::lighting::{Light, LightingState, Material};
+use crate::vertex::texgen::TexCoordUnit;
 
 /// A small xorshift generator: the same cases on every run.
 struct Rng(u64);
@@ -70,6 +71,20 @@ fn random_material(rng: &mut Rng) -> Material {
 }
 
 fn random_lighting(rng: &mut Rng) -> Lighting {
+    let state = random_lighting_state(rng);
+    let mut inverse_modelview = [0.0f32; 16];
+    for (i, m) in inverse_modelview.iter_mut().enumerate() {
+        *m = if i % 5 == 0 { rng.range(0.5, 2.0) } else { rng.range(-0.5, 0.5) };
+    }
+    let normals = match rng.below(3) {
+        0 => NormalScaling::None,
+        1 => NormalScaling::Normalize,
+        _ => NormalScaling::Rescale(rng.range(0.5, 2.0)),
+    };
+    Lighting::new(&state, inverse_modelview, normals)
+}
+
+fn random_lighting_state(rng: &mut Rng) -> LightingState {
     let mut state = LightingState { enabled: true, ..LightingState::default() };
     for i in 0..state.lights.len() {
         state.lights[i] = rng.below(3) == 0;
@@ -83,16 +98,7 @@ fn random_lighting(rng: &mut Rng) -> Lighting {
     state.two_side = rng.below(2) == 0;
     state.color_control = rng.pick(&[GL_SINGLE_COLOR, GL_SEPARATE_SPECULAR_COLOR]);
     state.materials = [random_material(rng), random_material(rng)];
-    let mut inverse_modelview = [0.0f32; 16];
-    for (i, m) in inverse_modelview.iter_mut().enumerate() {
-        *m = if i % 5 == 0 { rng.range(0.5, 2.0) } else { rng.range(-0.5, 0.5) };
-    }
-    let normals = match rng.below(3) {
-        0 => NormalScaling::None,
-        1 => NormalScaling::Normalize,
-        _ => NormalScaling::Rescale(rng.range(0.5, 2.0)),
-    };
-    Lighting::new(&state, inverse_modelview, normals)
+    state
 }
 
 #[test]
@@ -118,9 +124,10 @@ fn generated_programs_give_the_bits_of_shade() {
                 std::array::from_fn(|lane| {
                     let (eye, normal, color) = &vertices[lane];
                     match *source {
-                        LightingInput::Eye(k) => eye[k as usize],
-                        LightingInput::Normal(k) => normal[k as usize],
-                        LightingInput::Color(k) => color[k as usize],
+                        VertexInput::Eye(k) => eye[k as usize],
+                        VertexInput::Normal(k) => normal[k as usize],
+                        VertexInput::Color(k) => color[k as usize],
+                        other => unreachable!("the lighting program reads no {other:?}"),
                     }
                     .to_bits()
                 })
@@ -166,8 +173,140 @@ fn the_key_holds_the_shape_and_the_uniforms_the_values() {
     assert_ne!(LightingKey::of(&Lighting::new(&state, [1.0; 16], NormalScaling::None)), key, "shininess 0 or not");
     let generated = LightingProgram::generate(&key);
     assert_eq!(generated.program.outputs.len(), 8, "front primary and secondary only");
-    assert!(!generated.inputs.contains(&LightingInput::Color(0)), "no colour material, no colour input");
+    assert!(!generated.inputs.contains(&VertexInput::Color(0)), "no colour material, no colour input");
     let values = generated.uniform_values(&b);
-    let position = generated.uniforms.iter().position(|u| *u == LightingUniform::Position { light: 1, k: 2 });
+    let position = generated.uniforms.iter().position(|u| *u == VertexUniform::Position { light: 1, k: 2 });
     assert_eq!(values[position.expect("a local light's position")], 3.0f32.to_bits());
+}
+
+fn random_matrix(rng: &mut Rng) -> glam::Mat4 {
+    glam::Mat4::from_cols_array(&std::array::from_fn(|i| {
+        if i % 5 == 0 {
+            rng.range(0.5, 2.0)
+        } else {
+            rng.range(-1.0, 1.0)
+        }
+    }))
+}
+
+fn random_units(rng: &mut Rng) -> Vec<TexCoordUnit> {
+    use crate::vertex::texgen::Gen as G;
+    let mut units = Vec::new();
+    for unit in 0..crate::gl::limits::MAX_TEXTURE_UNITS {
+        if rng.below(2) == 0 {
+            continue;
+        }
+        let gen: [Option<G>; 4] = std::array::from_fn(|c| match rng.below(7) {
+            0 | 1 => None,
+            2 => Some(G::Object(std::array::from_fn(|_| rng.range(-1.0, 1.0)))),
+            3 => Some(G::Eye(std::array::from_fn(|_| rng.range(-1.0, 1.0)))),
+            4 if c < 2 => Some(G::Sphere),
+            5 if c < 3 => Some(G::Reflection),
+            6 if c < 3 => Some(G::Normal),
+            _ => None,
+        });
+        let needs_normal = gen.iter().any(|g| matches!(g, Some(G::Sphere | G::Reflection | G::Normal)));
+        let matrix = (rng.below(2) == 0).then(|| random_matrix(rng));
+        units.push(TexCoordUnit { unit, gen, needs_normal, matrix });
+    }
+    units
+}
+
+#[test]
+fn generated_vertex_programs_give_the_bits_of_transform() {
+    use crate::vertex::transform::{transform, LightingInput as Lit};
+    use crate::vertex::Vertex;
+    let mut rng = Rng(0x005e_ed0f_7a4e_0001);
+    let mut executor = Executor::new();
+    for case in 0..1500 {
+        let lighting_state = LightingState { enabled: true, ..random_lighting_state(&mut rng) };
+        let inverse = random_matrix(&mut rng);
+        let normals = match rng.below(3) {
+            0 => NormalScaling::None,
+            1 => NormalScaling::Normalize,
+            _ => NormalScaling::Rescale(rng.range(0.5, 2.0)),
+        };
+        let units = random_units(&mut rng);
+        let lit = rng.below(2) == 0;
+        let t = Transform {
+            modelview: random_matrix(&mut rng),
+            model_project: random_matrix(&mut rng),
+            clamp_color: rng.below(2) == 0,
+            fog: [
+                None,
+                Some(FogSource::Attribute),
+                Some(FogSource::Radial),
+                Some(FogSource::Plane),
+                Some(FogSource::PlaneAbsolute),
+            ][rng.below(5)],
+            texgen: crate::vertex::texgen::TexGen {
+                units: &units,
+                modelview_inverse: inverse,
+                normalize: rng.below(2) == 0,
+                rescale_normal: rng.below(2) == 0,
+            },
+            lighting: lit.then(|| Lit {
+                state: &lighting_state,
+                modelview_inverse: inverse.to_cols_array(),
+                normals,
+                material_marks: &[],
+            }),
+        };
+        let lighting = lit.then(|| Lighting::new(&lighting_state, inverse.to_cols_array(), normals));
+        let key = VertexKey::of(&t, lighting.as_ref());
+        let generated = VertexProgram::generate(&key);
+        validate(&generated.program).unwrap_or_else(|e| panic!("case {case}: {e:?}"));
+        let uniforms = generated.uniform_values(&t, lighting.as_ref());
+        let vertices: Vec<Vertex> = (0..LANES)
+            .map(|_| {
+                let [x, y, z] = rng.vec3(5.0);
+                Vertex {
+                    position: [x, y, z, rng.pick(&[1.0, 0.5, 2.0])],
+                    color: std::array::from_fn(|_| rng.range(-0.5, 1.5)),
+                    secondary_color: std::array::from_fn(|_| rng.range(-0.5, 1.5)),
+                    tex_coords: std::array::from_fn(|_| std::array::from_fn(|_| rng.range(-2.0, 2.0))),
+                    normal: if rng.below(16) == 0 { [0.0; 3] } else { rng.vec3(1.0) },
+                    fog_coord: rng.range(-1.0, 4.0),
+                    edge_flag: true,
+                }
+            })
+            .collect();
+        let want = transform(&t, &vertices);
+        let inputs: Vec<Word> = generated
+            .inputs
+            .iter()
+            .map(|source| {
+                std::array::from_fn(|lane| {
+                    let v = &vertices[lane];
+                    match *source {
+                        VertexInput::Position(k) => v.position[k as usize],
+                        VertexInput::Normal(k) => v.normal[k as usize],
+                        VertexInput::Color(k) => v.color[k as usize],
+                        VertexInput::SecondaryColor(k) => v.secondary_color[k as usize],
+                        VertexInput::TexCoord { unit, k } => v.tex_coords[unit as usize][k as usize],
+                        VertexInput::FogCoord => v.fog_coord,
+                        VertexInput::Eye(_) => unreachable!("the eye position is computed"),
+                    }
+                    .to_bits()
+                })
+            })
+            .collect();
+        let mut outputs = vec![[0u32; LANES]; generated.program.outputs.len()];
+        let mut io = Io { inputs: &inputs, uniforms: &uniforms, outputs: &mut outputs, textures: &NoTextures };
+        executor.run(&generated.program, &mut io, 0xffff);
+        for (lane, w) in want.iter().enumerate() {
+            for (slot, what) in generated.outputs.iter().enumerate() {
+                let expected = match *what {
+                    VertexOutput::Clip(k) => w.clip[k as usize],
+                    VertexOutput::Eye(k) => w.eye[k as usize],
+                    VertexOutput::Color(k) => w.color[k as usize],
+                    VertexOutput::SecondaryColor(k) => w.secondary_color[k as usize],
+                    VertexOutput::BackColor { which, k } => w.back_colors[which as usize][k as usize],
+                    VertexOutput::TexCoord { unit, k } => w.tex_coords[unit as usize][k as usize],
+                    VertexOutput::FogCoord => w.fog_coord,
+                };
+                assert_eq!(outputs[slot][lane], expected.to_bits(), "case {case} lane {lane} {what:?}: {key:?}");
+            }
+        }
+    }
 }
