@@ -18,7 +18,7 @@
 //!              (line.rs), points (point.rs)
 //! setup        window-space primitives → jobs: fixed-point edges (triangle.rs, line.rs),
 //!              attribute planes (plane.rs), the scene and its per-tile bins (scene.rs)
-//! raster       tile workers and the thread pool (mod.rs), coverage walking into spans (walk.rs)
+//! raster       tile workers on the shared pool (mod.rs), coverage walking into spans (walk.rs)
 //! fragment     a covered span → the framebuffer, GL's stage order written once (pipeline.rs):
 //!              scissor, alpha (alpha.rs), stencil (stencil.rs), depth (mod.rs), fog (fog.rs),
 //!              blending (blend.rs), logic op, dither, write masks (output.rs), multisample

@@ -201,14 +201,12 @@ impl Pool {
     /// removes it; the first panic of a helper, if any.
     fn close(&self, id: u64) -> Option<Box<dyn Any + Send>> {
         let mut state = relock(&self.state);
-        let Some(i) = state.jobs.iter().position(|j| j.id == id) else {
-            return None;
-        };
+        // Only `close` removes a job, so it is there until then.
+        let position = |state: &State| state.jobs.iter().position(|j| j.id == id);
+        let i = position(&state)?;
         state.jobs[i].slots = 0;
         loop {
-            let Some(i) = state.jobs.iter().position(|j| j.id == id) else {
-                return None;
-            };
+            let i = position(&state)?;
             if state.jobs[i].active == 0 {
                 return state.jobs.swap_remove(i).panic;
             }
@@ -314,7 +312,7 @@ mod tests {
 
     #[test]
     fn join_returns_both_results() {
-        let mut left = vec![0; 4];
+        let mut left = [0; 4];
         let (a, b) = join(
             || 6 * 7,
             || {
