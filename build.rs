@@ -7,6 +7,8 @@
 //!    from theirs; prototypes that differ fail as conflicting declarations.
 //! 2. Generates the name → function table behind OSMesaGetProcAddress/glXGetProcAddress from
 //!    the same sources, so every exported entry point is reachable by name.
+//! 3. Links libtessera.so with `-z nodelete`: the shared worker threads (`src/pool`) park in
+//!    the library's code, so dlclose must not unmap it.
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
@@ -49,6 +51,7 @@ fn main() {
     println!("cargo:rerun-if-changed=src/gl");
     println!("cargo:rerun-if-changed=cbindgen.toml");
     println!("cargo:rerun-if-changed=build.rs");
+    println!("cargo:rustc-cdylib-link-arg=-Wl,-z,nodelete");
 
     let sources = api_sources(&api);
     generate_proc_table(&sources);

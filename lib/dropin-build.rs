@@ -7,6 +7,9 @@
 //! `pkgconfig/gl.pc` and `pkgconfig/osmesa.pc`. The links may dangle for the moment between
 //! this script and the link step; after `cargo build` they resolve, and
 //! `LD_LIBRARY_PATH=target/release` is the install (`tests/loader_names.rs` checks each name).
+//! The library is linked with `-z nodelete`: tessera's worker threads (`src/pool`) stay
+//! parked in its code between scenes, so a dlclose must leave that code mapped (it keeps the
+//! library loaded, as glibc already did while thread-local destructors of it were pending).
 use std::path::PathBuf;
 
 fn main() {
@@ -18,6 +21,7 @@ fn main() {
     };
     let soname = format!("lib{stem}.so.{version}");
     println!("cargo:rustc-cdylib-link-arg=-Wl,-soname,{soname}");
+    println!("cargo:rustc-cdylib-link-arg=-Wl,-z,nodelete");
     println!("cargo:rerun-if-changed=../dropin-build.rs");
 
     // OUT_DIR is <profile dir>/build/<package>-<hash>/out.

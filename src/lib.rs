@@ -18,7 +18,7 @@
 //!              (line.rs), points (point.rs)
 //! setup        window-space primitives → jobs: fixed-point edges (triangle.rs, line.rs),
 //!              attribute planes (plane.rs), the scene and its per-tile bins (scene.rs)
-//! raster       tile workers and the thread pool (mod.rs), coverage walking into spans (walk.rs)
+//! raster       tile workers on the shared pool (mod.rs), coverage walking into spans (walk.rs)
 //! fragment     a covered span → the framebuffer, GL's stage order written once (pipeline.rs):
 //!              scissor, alpha (alpha.rs), stencil (stencil.rs), depth (mod.rs), fog (fog.rs),
 //!              blending (blend.rs), logic op, dither, write masks (output.rs), multisample
@@ -29,6 +29,7 @@
 //! framebuffer  buffers and pixel formats, the only code that touches raw pixel memory
 //! simd         the instruction-set level (SSE2, SSE4.1, AVX2; TESSERA_SIMD) and per_level!,
 //!              which compiles a hot block once per level and runs the CPU's copy (dispatch.rs)
+//! pool         the worker threads every scene shares, spawned once and parked between scenes
 //! gl           the GL vocabulary: enums, C types, limits, OSMesa/GLX constants, small value types
 //! ```
 //!
@@ -41,6 +42,7 @@ pub mod fragment;
 pub mod framebuffer;
 pub mod gl;
 pub mod pixel;
+pub mod pool;
 pub mod raster;
 pub mod setup;
 pub mod shader;

@@ -3,7 +3,7 @@
 //!
 //! The rooms of `src/`, from the top (the C edge) to the bottom (the GL vocabulary):
 //! `api → winsys → context → vertex → setup → raster → fragment → shader → texture → pixel →
-//! framebuffer → simd → gl`. A room may name (`crate::<room>`, in a `use` or a path) only itself and
+//! framebuffer → simd → pool → gl`. A room may name (`crate::<room>`, in a `use` or a path) only itself and
 //! rooms below it; in particular the engine rooms never name `api`, `context` or `winsys`.
 //! Every room but the FFI edge (`api`, `winsys`: Xlib and the C ABI) denies unsafe code at its
 //! root, and within the engine only the wrapper around caller-owned pixel memory
@@ -13,7 +13,7 @@
 use std::path::{Path, PathBuf};
 
 /// The rooms in pipeline order, top first.
-const ROOMS: [&str; 13] = [
+const ROOMS: [&str; 14] = [
     "api",
     "winsys",
     "context",
@@ -26,6 +26,7 @@ const ROOMS: [&str; 13] = [
     "pixel",
     "framebuffer",
     "simd",
+    "pool",
     "gl",
 ];
 
@@ -34,8 +35,9 @@ const FFI_ROOMS: [&str; 2] = ["api", "winsys"];
 
 /// Files of an engine room that may hold `unsafe` (each block with a `// SAFETY:` line): the
 /// caller's pixel memory, the calls of `target_feature` functions, and the huge-page advice
-/// for large pixel buffers.
-const UNSAFE_WRAPPERS: [&str; 3] = ["src/framebuffer/external.rs", "src/simd/dispatch.rs", "src/framebuffer/pages.rs"];
+/// for large pixel buffers, and the pool's lifetime erasure of the work it hands its threads.
+const UNSAFE_WRAPPERS: [&str; 4] =
+    ["src/framebuffer/external.rs", "src/simd/dispatch.rs", "src/framebuffer/pages.rs", "src/pool/lifetime.rs"];
 
 fn src() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("src")

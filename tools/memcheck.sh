@@ -18,7 +18,7 @@ tests=("$@")
 if ((${#tests[@]} == 0)); then
     tests=(reliability_leaks reliability_threads draw_primitives draw_clipping vertex_arrays vertex_buffers display_lists
         texture_sampling texture_formats pixel_rects readpixels_pack fragment_ops_blend lighting_render
-        feedback_mode select_mode accum osmesa_makecurrent osmesa_threads osmesa_formats osmesa_free_then_destroy errors_nocontext)
+        feedback_mode select_mode accum osmesa_makecurrent osmesa_threads osmesa_workers osmesa_formats osmesa_free_then_destroy errors_nocontext)
 fi
 command -v valgrind >/dev/null || { echo "memcheck: valgrind not installed (tools/setup-debian.sh --test)" >&2; exit 1; }
 [[ -e target/release/libOSMesa.so.8 ]] || { echo "memcheck: no release build (cargo build --release)" >&2; exit 1; }

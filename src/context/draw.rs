@@ -105,14 +105,16 @@ impl Context {
             Some(split) => {
                 let (first, second) = vertices.split_at(split);
                 let mut later = scene.deferred_part(second.len() / 3);
-                let stipple = std::thread::scope(|s| {
-                    s.spawn(|| {
+                let ((), stipple) = crate::pool::join(
+                    || {
                         let clip_vertices = transform(&input, second);
                         pipeline::draw(&mut later, state_index, &geometry, mode, &clip_vertices, part, None);
-                    });
-                    let clip_vertices = transform(&input, first);
-                    pipeline::draw(&mut scene, state_index, &geometry, mode, &clip_vertices, part, stipple)
-                });
+                    },
+                    || {
+                        let clip_vertices = transform(&input, first);
+                        pipeline::draw(&mut scene, state_index, &geometry, mode, &clip_vertices, part, stipple)
+                    },
+                );
                 scene.append(later);
                 stipple
             }

@@ -41,6 +41,17 @@ impl CallerBuffer {
         self.len == 0
     }
 
+    /// Asks the kernel to back the huge-page-aligned interior of the buffer with huge pages
+    /// (`super::pages`): the first write of a fresh 1024×1024 RGBA buffer then costs about
+    /// 500 page faults instead of 1024. Only for a buffer written whole (rows without gaps
+    /// between them), so that no page is backed that tessera would not have touched; the
+    /// advice changes how the kernel backs the caller's pages, never their contents.
+    pub fn advise_huge_pages(&self) {
+        if !self.ptr.is_null() {
+            super::pages::advise_within(self.ptr as usize, self.len);
+        }
+    }
+
     /// The bytes `[offset, offset + count)` as a mutable slice; `None` when outside.
     pub fn bytes_mut(&mut self, offset: usize, count: usize) -> Option<&mut [u8]> {
         let end = offset.checked_add(count)?;

@@ -39,10 +39,25 @@ pub fn advise_huge_pages<T>(buffer: &mut Vec<T>) {
     }
 }
 
+/// Asks the kernel to back with huge pages each 2 MiB-aligned range that lies wholly
+/// inside `[start, start + len)`, memory the caller vouches is mapped and will be written
+/// whole (the OSMesa caller's buffer, [`super::external::CallerBuffer`]); nothing below two
+/// huge pages.
+pub fn advise_within(start: usize, len: usize) {
+    if len < 2 * HUGE_PAGE {
+        return;
+    }
+    let (first, last) = (start.next_multiple_of(HUGE_PAGE), start.saturating_add(len) / HUGE_PAGE * HUGE_PAGE);
+    if last > first {
+        advise(first, last - first);
+    }
+}
+
 #[cfg(target_os = "linux")]
 fn advise(address: usize, len: usize) {
     // SAFETY: [address, address + len) lies inside an allocation this module's caller owns
-    // (a Vec's buffer, kept alive by the borrow); MADV_HUGEPAGE only changes how the kernel
+    // (a Vec's buffer, kept alive by the borrow) or the mapped buffer an OSMesa caller lent
+    // (`advise_within`); MADV_HUGEPAGE only changes how the kernel
     // backs those pages, not their contents or validity. A failure (no THP support) is
     // harmless and ignored.
     unsafe {

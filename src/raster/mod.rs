@@ -82,10 +82,6 @@ fn run_parallel<T: Send>(items: Vec<T>, threads: usize, work: impl Fn(T) + Sync)
             work(item);
         }
     };
-    std::thread::scope(|s| {
-        for _ in 1..threads {
-            s.spawn(worker);
-        }
-        worker();
-    });
+    // The shared pool's threads help (`crate::pool`): no thread spawned per scene.
+    crate::pool::run(threads - 1, &worker);
 }

@@ -44,6 +44,7 @@ use crate::gl::enums::*;
 use crate::gl::limits::MAX_VIEWPORT_DIM;
 use crate::gl::osmesa::{OSMESA_ARGB, OSMESA_BGR, OSMESA_BGRA, OSMESA_RGB_565};
 use crate::gl::types::GLenum;
+use crate::raster::thread_count;
 use crate::winsys::notice;
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex, MutexGuard, OnceLock};
@@ -212,42 +213,81 @@ impl Present for CallerPresenter {
         let (width, height) = (framebuffer.width(), framebuffer.height());
         let bpp = self.layout.bytes_per_pixel(self.ty);
         let stride = self.row_length.max(width) * bpp;
-        let order = self.layout.order();
-        for y in 0..height {
-            let dst_row = if self.y_up { y } else { height - 1 - y };
-            let Some(dst) = self.buffer.bytes_mut(dst_row * stride, width * bpp) else {
-                return;
+        let (layout, y_up) = (self.layout, self.y_up);
+        // The rows the caller's buffer holds (the last one may end after its pixels).
+        let Some(rows_bytes) = (height - 1).checked_mul(stride).and_then(|b| b.checked_add(width * bpp)) else {
+            return;
+        };
+        let Some(bytes) = self.buffer.bytes_mut(0, rows_bytes) else {
+            return;
+        };
+        let mut rows: Vec<(usize, &mut [u8])> = bytes
+            .chunks_mut(stride)
+            .enumerate()
+            .map(|(dst_row, row)| (if y_up { dst_row } else { height - 1 - dst_row }, &mut row[..width * bpp]))
+            .collect();
+        // A large image is written by the shared worker threads too, in bands of rows: the
+        // first write of a fresh caller buffer is mostly page faults (one per 4 KiB), which
+        // then happen on every core at once.
+        let threads = if width * height >= PARALLEL_PRESENT_PIXELS { thread_count() } else { 1 };
+        if threads <= 1 {
+            rows.into_iter().for_each(|(y, dst)| present_row(layout, color.pixels(), width, y, dst));
+            return;
+        }
+        let band = rows.len().div_ceil(threads * 4).max(1);
+        let mut bands = Vec::new();
+        while !rows.is_empty() {
+            let rest = rows.split_off(rows.len().saturating_sub(band));
+            bands.push(rest);
+        }
+        let queue = Mutex::new(bands.into_iter());
+        crate::pool::run(threads - 1, &|| loop {
+            let Some(band) = queue.lock().unwrap_or_else(|p| p.into_inner()).next() else {
+                break;
             };
-            let src = y * width..(y + 1) * width;
-            match color.pixels() {
-                // RGBA bytes are stored in the caller's order: one copy per row.
-                ColorPixels::Unorm8(px) if order == [0, 1, 2, 3] => dst.copy_from_slice(px[src].as_flattened()),
-                ColorPixels::Unorm8(px) => {
-                    for (out, p) in dst.chunks_exact_mut(order.len()).zip(&px[src]) {
-                        for (o, &c) in out.iter_mut().zip(order) {
-                            *o = p[c];
-                        }
-                    }
+            for (y, dst) in band {
+                present_row(layout, color.pixels(), width, y, dst);
+            }
+        });
+    }
+}
+
+/// Images from this many pixels on are written into the caller's buffer by all the worker
+/// threads (below it, waking them costs more than the copy).
+const PARALLEL_PRESENT_PIXELS: usize = 256 * 1024;
+
+/// Writes row `y` of the image (`width` pixels of `pixels`) into `dst`, in the caller's
+/// layout.
+fn present_row(layout: PixelLayout, pixels: &ColorPixels, width: usize, y: usize, dst: &mut [u8]) {
+    let order = layout.order();
+    let src = y * width..(y + 1) * width;
+    match pixels {
+        // RGBA bytes are stored in the caller's order: one copy per row.
+        ColorPixels::Unorm8(px) if order == [0, 1, 2, 3] => dst.copy_from_slice(px[src].as_flattened()),
+        ColorPixels::Unorm8(px) => {
+            for (out, p) in dst.chunks_exact_mut(order.len()).zip(&px[src]) {
+                for (o, &c) in out.iter_mut().zip(order) {
+                    *o = p[c];
                 }
-                ColorPixels::Unorm16(px) => {
-                    for (out, p) in dst.chunks_exact_mut(order.len() * 2).zip(&px[src]) {
-                        for (o, &c) in out.chunks_exact_mut(2).zip(order) {
-                            o.copy_from_slice(&p[c].to_ne_bytes());
-                        }
-                    }
+            }
+        }
+        ColorPixels::Unorm16(px) => {
+            for (out, p) in dst.chunks_exact_mut(order.len() * 2).zip(&px[src]) {
+                for (o, &c) in out.chunks_exact_mut(2).zip(order) {
+                    o.copy_from_slice(&p[c].to_ne_bytes());
                 }
-                ColorPixels::Float32(px) => {
-                    for (out, p) in dst.chunks_exact_mut(order.len() * 4).zip(&px[src]) {
-                        for (o, &c) in out.chunks_exact_mut(4).zip(order) {
-                            o.copy_from_slice(&p[c].to_ne_bytes());
-                        }
-                    }
+            }
+        }
+        ColorPixels::Float32(px) => {
+            for (out, p) in dst.chunks_exact_mut(order.len() * 4).zip(&px[src]) {
+                for (o, &c) in out.chunks_exact_mut(4).zip(order) {
+                    o.copy_from_slice(&p[c].to_ne_bytes());
                 }
-                ColorPixels::Rgb565(px) => {
-                    for (out, p) in dst.chunks_exact_mut(2).zip(&px[src]) {
-                        out.copy_from_slice(&p.to_ne_bytes());
-                    }
-                }
+            }
+        }
+        ColorPixels::Rgb565(px) => {
+            for (out, p) in dst.chunks_exact_mut(2).zip(&px[src]) {
+                out.copy_from_slice(&p.to_ne_bytes());
             }
         }
     }
@@ -314,6 +354,9 @@ impl OsMesaContext {
         let (width, height) = (width as usize, height as usize);
         let (row_length, y_up) = self.store();
         let presenter_address = buffer.as_ptr() as usize;
+        if row_length <= width {
+            buffer.advise_huge_pages();
+        }
         let presenter = Box::new(CallerPresenter { buffer, layout: self.request.layout, ty, row_length, y_up });
         let mut binding = self.lock_binding();
         let reuse = binding.as_ref().filter(|b| b.ty == ty && b.width == width && b.height == height);
