@@ -18,7 +18,9 @@
 
 pub mod dump;
 pub mod exec;
+pub mod fast;
 pub mod ir;
+pub mod lower;
 pub mod math;
 pub mod validate;
 
