@@ -69,7 +69,11 @@ fn map3(a: &Word, b: &Word, c: &Word, op: impl Fn(u32, u32, u32) -> u32) -> Word
 /// The lanes of `exec` as a word of all-ones and zeros.
 #[inline(always)]
 fn lane_mask(exec: u16) -> Word {
-    std::array::from_fn(|i| 0u32.wrapping_sub((exec >> i & 1) as u32))
+    let mut mask = [0u32; LANES];
+    for (i, m) in mask.iter_mut().enumerate() {
+        *m = 0u32.wrapping_sub((exec >> i & 1) as u32);
+    }
+    mask
 }
 
 /// The register file of runs, kept between runs so that a run allocates nothing.
@@ -172,29 +176,44 @@ impl Registers {
             let r = rows[row];
             let value = match n {
                 2 => dot2(self.get(r[0]), self.get(r[1]), self.get(v[0]), self.get(v[1])),
-                3 => dot3([r[0], r[1], r[2]].map(|x| self.get(x)), [v[0], v[1], v[2]].map(|x| self.get(x))),
-                _ => dot4(r.map(|x| self.get(x)), v.map(|x| self.get(x))),
+                3 => dot3(self.get(r[0]), self.get(r[1]), self.get(r[2]), self.get(v[0]), self.get(v[1]), self.get(v[2])),
+                _ => dot4(
+                    [self.get(r[0]), self.get(r[1]), self.get(r[2]), self.get(r[3])],
+                    [self.get(v[0]), self.get(v[1]), self.get(v[2]), self.get(v[3])],
+                ),
             };
             self.put(d[row], value);
         }
     }
 }
 
+// Plain loops, not `array::from_fn` or `map`: those stay calls per lane without LTO.
 #[inline(always)]
 fn dot2(a0: &Word, a1: &Word, b0: &Word, b1: &Word) -> Word {
-    std::array::from_fn(|i| fu(f(a0[i]) * f(b0[i]) + f(a1[i]) * f(b1[i])))
+    let mut out = [0u32; LANES];
+    for i in 0..LANES {
+        out[i] = fu(f(a0[i]) * f(b0[i]) + f(a1[i]) * f(b1[i]));
+    }
+    out
 }
 
 #[inline(always)]
-fn dot3(a: [&Word; 3], b: [&Word; 3]) -> Word {
-    std::array::from_fn(|i| fu(f(a[0][i]) * f(b[0][i]) + f(a[1][i]) * f(b[1][i]) + f(a[2][i]) * f(b[2][i])))
+fn dot3(a0: &Word, a1: &Word, a2: &Word, b0: &Word, b1: &Word, b2: &Word) -> Word {
+    let mut out = [0u32; LANES];
+    for i in 0..LANES {
+        out[i] = fu(f(a0[i]) * f(b0[i]) + f(a1[i]) * f(b1[i]) + f(a2[i]) * f(b2[i]));
+    }
+    out
 }
 
 #[inline(always)]
 fn dot4(a: [&Word; 4], b: [&Word; 4]) -> Word {
-    std::array::from_fn(|i| {
-        fu(f(a[0][i]) * f(b[0][i]) + f(a[1][i]) * f(b[1][i]) + f(a[2][i]) * f(b[2][i]) + f(a[3][i]) * f(b[3][i]))
-    })
+    let mut out = [0u32; LANES];
+    for i in 0..LANES {
+        out[i] =
+            fu(f(a[0][i]) * f(b[0][i]) + f(a[1][i]) * f(b[1][i]) + f(a[2][i]) * f(b[2][i]) + f(a[3][i]) * f(b[3][i]));
+    }
+    out
 }
 
 /// One function per operation, written once: `step` (the interpreter's `match`) and
@@ -229,7 +248,14 @@ operations!(|st, io, wide| {
     Op::SUnary { op, d, a } => st.bcast(d, unary_lane(op, st.s(a))),
     Op::SBinary { op, d, a, b } => st.bcast(d, binary_lane(op, st.s(a), st.s(b))),
     Op::SMad { d, a, b, c } => st.bcast(d, mad_lane(st.s(a), st.s(b), st.s(c))),
-    Op::SDot { n, d, a, b } => st.bcast(d, dot_lane(n as usize, &a.map(|r| st.s(r)), &b.map(|r| st.s(r)))),
+    Op::SDot { n, d, a, b } => {
+        let (mut x, mut y) = ([0; 4], [0; 4]);
+        for k in 0..n as usize {
+            x[k] = st.s(a[k]);
+            y[k] = st.s(b[k]);
+        }
+        st.bcast(d, dot_lane(n as usize, &x, &y))
+    },
     Op::SSelect { d, c, a, b } => st.bcast(d, if st.s(c) != 0 { st.s(a) } else { st.s(b) }),
     Op::Const { d, bits } => st.put(d, [bits; LANES]),
     Op::Uniform { d, slot } => st.put(d, [io.uniforms[slot as usize]; LANES]),
@@ -249,8 +275,13 @@ operations!(|st, io, wide| {
     Op::Binary { op, d, a, b } => st.put(d, exec::binary(op, st.get(a), st.get(b))),
     Op::Mad { d, a, b, c } => st.put(d, map3(st.get(a), st.get(b), st.get(c), |x, y, z| fu(f(x) * f(y) + f(z)))),
     Op::Dot2 { d, a, b } => st.put(d, dot2(st.get(a[0]), st.get(a[1]), st.get(b[0]), st.get(b[1]))),
-    Op::Dot3 { d, a, b } => st.put(d, dot3(a.map(|r| st.get(r)), b.map(|r| st.get(r)))),
-    Op::Dot4 { d, a, b } => st.put(d, dot4(a.map(|r| st.get(r)), b.map(|r| st.get(r)))),
+    Op::Dot3 { d, a, b } => {
+        st.put(d, dot3(st.get(a[0]), st.get(a[1]), st.get(a[2]), st.get(b[0]), st.get(b[1]), st.get(b[2])))
+    },
+    Op::Dot4 { d, a, b } => st.put(
+        d,
+        dot4([st.get(a[0]), st.get(a[1]), st.get(a[2]), st.get(a[3])], [st.get(b[0]), st.get(b[1]), st.get(b[2]), st.get(b[3])]),
+    ),
     Op::Select { d, c, a, b } => st.put(d, map3(st.get(c), st.get(a), st.get(b), |c, x, y| if c != 0 { x } else { y })),
     Op::Clamp { d, a, lo, hi } => st.put(
         d,
@@ -264,8 +295,8 @@ operations!(|st, io, wide| {
         }),
     ),
     Op::Normalize3 { d, a } => {
-        let v = a.map(|r| *st.get(r));
-        let s = map1(&dot3([&v[0], &v[1], &v[2]], [&v[0], &v[1], &v[2]]), |x| fu(1.0 / f(x).sqrt()));
+        let v = [*st.get(a[0]), *st.get(a[1]), *st.get(a[2])];
+        let s = map1(&dot3(&v[0], &v[1], &v[2], &v[0], &v[1], &v[2]), |x| fu(1.0 / f(x).sqrt()));
         for k in 0..3 {
             st.put(d[k], map2(&v[k], &s, |x, y| fu(f(x) * f(y))));
         }

@@ -285,31 +285,68 @@ pub fn dot_lane(n: usize, a: &[u32; 4], b: &[u32; 4]) -> u32 {
 
 // ---- Analysis over the IR ----------------------------------------------------------
 
+/// A short list of registers, without allocating (an instruction reads at most eight).
+#[derive(Clone, Copy)]
+struct List {
+    regs: [Reg; 8],
+    n: usize,
+}
+
+impl List {
+    fn of(regs: &[Reg]) -> List {
+        let mut list = List { regs: [Reg(0); 8], n: regs.len() };
+        list.regs[..regs.len()].copy_from_slice(regs);
+        list
+    }
+
+    fn push(&mut self, r: Reg) {
+        self.regs[self.n] = r;
+        self.n += 1;
+    }
+
+    fn iter(&self) -> impl Iterator<Item = Reg> + '_ {
+        self.regs[..self.n].iter().copied()
+    }
+}
+
 /// The registers an instruction reads.
-fn reads(inst: &Inst) -> Vec<Reg> {
+fn reads(inst: &Inst) -> List {
     match *inst {
-        Inst::Const { .. } | Inst::Input { .. } | Inst::Uniform { .. } => vec![],
-        Inst::Mov { src, .. } => vec![src],
-        Inst::Unary { a, .. } | Inst::Derivative { a, .. } => vec![a],
-        Inst::Binary { a, b, .. } => vec![a, b],
-        Inst::Mad { a, b, c, .. } => vec![a, b, c],
-        Inst::Dot { n, a, b, .. } => a[..n as usize].iter().chain(&b[..n as usize]).copied().collect(),
-        Inst::Select { cond, a, b, .. } => vec![cond, a, b],
-        Inst::Output { src, .. } => vec![src],
+        Inst::Const { .. } | Inst::Input { .. } | Inst::Uniform { .. } => List::of(&[]),
+        Inst::Mov { src, .. } => List::of(&[src]),
+        Inst::Unary { a, .. } | Inst::Derivative { a, .. } => List::of(&[a]),
+        Inst::Binary { a, b, .. } => List::of(&[a, b]),
+        Inst::Mad { a, b, c, .. } => List::of(&[a, b, c]),
+        Inst::Dot { n, a, b, .. } => {
+            let mut list = List::of(&a[..n as usize]);
+            b[..n as usize].iter().for_each(|&r| list.push(r));
+            list
+        }
+        Inst::Select { cond, a, b, .. } => List::of(&[cond, a, b]),
+        Inst::Output { src, .. } => List::of(&[src]),
         Inst::Sample { coords, lod, compare, .. } => {
-            let mut v = coords.to_vec();
+            let mut list = List::of(&coords);
             if let Lod::Bias(r) | Lod::Explicit(r) = lod {
-                v.push(r);
+                list.push(r);
             }
-            v.extend(compare);
-            v
+            compare.into_iter().for_each(|r| list.push(r));
+            list
         }
         Inst::Fetch { coords, lod, .. } => {
-            let mut v = coords.to_vec();
-            v.push(lod);
-            v
+            let mut list = List::of(&coords);
+            list.push(lod);
+            list
         }
-        Inst::Size { lod, .. } => vec![lod],
+        Inst::Size { lod, .. } => List::of(&[lod]),
+    }
+}
+
+/// The registers an instruction writes ([`Inst::writes`] without allocating).
+fn writes(inst: &Inst) -> List {
+    match *inst {
+        Inst::Sample { dst, .. } | Inst::Fetch { dst, .. } => List::of(&dst),
+        Inst::Size { dst, .. } => List::of(&dst),
+        _ => List::of(inst.dst().as_slice()),
     }
 }
 
@@ -341,7 +378,7 @@ fn for_each_inst(stmts: &[Stmt], visit: &mut impl FnMut(&Inst)) {
 fn fold_constants(program: &Program, body: Vec<Stmt>) -> Vec<Stmt> {
     let mut defs = vec![0u32; program.registers.len()];
     for_each_inst(&body, &mut |i| {
-        for r in i.writes() {
+        for r in writes(i).iter() {
             defs[r.0 as usize] += 1;
         }
     });
@@ -389,42 +426,39 @@ fn fold_constants(program: &Program, body: Vec<Stmt>) -> Vec<Stmt> {
 /// Drops instructions whose results nothing needs (see the module docs).
 fn remove_dead(registers: usize, body: Vec<Stmt>) -> Vec<Stmt> {
     let mut useful = vec![false; registers];
-    loop {
-        let mut changed = false;
-        let mut mark = |r: Reg, useful: &mut Vec<bool>| {
+    // Backwards, so that straight-line code settles in one pass (loops may need more).
+    fn walk(stmts: &[Stmt], useful: &mut [bool], changed: &mut bool) {
+        fn mark(r: Reg, useful: &mut [bool], changed: &mut bool) {
             if !useful[r.0 as usize] {
                 useful[r.0 as usize] = true;
-                changed = true;
-            }
-        };
-        fn walk(stmts: &[Stmt], f: &mut dyn FnMut(&Stmt)) {
-            for s in stmts {
-                f(s);
-                match s {
-                    Stmt::If { then, otherwise, .. } => {
-                        walk(then, f);
-                        walk(otherwise, f);
-                    }
-                    Stmt::Loop { body } => walk(body, f),
-                    _ => {}
-                }
+                *changed = true;
             }
         }
-        let snapshot = useful.clone();
-        walk(&body, &mut |s| match s {
-            Stmt::If { cond, .. } => mark(*cond, &mut useful),
-            Stmt::Inst(i) => {
-                let needed = matches!(i, Inst::Output { .. })
-                    || is_texture(i)
-                    || i.writes().iter().any(|r| snapshot[r.0 as usize]);
-                if needed {
-                    for r in reads(i) {
-                        mark(r, &mut useful);
+        for s in stmts.iter().rev() {
+            match s {
+                Stmt::If { cond, then, otherwise } => {
+                    mark(*cond, useful, changed);
+                    walk(then, useful, changed);
+                    walk(otherwise, useful, changed);
+                }
+                Stmt::Loop { body } => walk(body, useful, changed),
+                Stmt::Inst(i) => {
+                    let needed = matches!(i, Inst::Output { .. })
+                        || is_texture(i)
+                        || writes(i).iter().any(|r| useful[r.0 as usize]);
+                    if needed {
+                        for r in reads(i).iter() {
+                            mark(r, useful, changed);
+                        }
                     }
                 }
+                _ => {}
             }
-            _ => {}
-        });
+        }
+    }
+    loop {
+        let mut changed = false;
+        walk(&body, &mut useful, &mut changed);
         if !changed {
             break;
         }
@@ -436,7 +470,7 @@ fn remove_dead(registers: usize, body: Vec<Stmt>) -> Vec<Stmt> {
                 Stmt::Inst(i) => {
                     let keep = matches!(i, Inst::Output { .. })
                         || is_texture(&i)
-                        || i.writes().iter().any(|r| useful[r.0 as usize]);
+                        || writes(&i).iter().any(|r| useful[r.0 as usize]);
                     keep.then_some(Stmt::Inst(i))
                 }
                 Stmt::If { cond, then, otherwise } => {
@@ -482,7 +516,7 @@ fn uniform_registers(registers: usize, pinned: &[bool], body: &[Stmt]) -> Vec<bo
                         _ => false,
                     };
                     if divergent || !value_uniform {
-                        for r in i.writes() {
+                        for r in writes(i).iter() {
                             if uniform[r.0 as usize] {
                                 uniform[r.0 as usize] = false;
                                 *changed = true;
@@ -676,7 +710,7 @@ impl Lowering {
                         stmts[start..i].iter().map(|s| if let Stmt::Inst(x) = s { x } else { unreachable!() }).collect();
                     let mut k = 0;
                     while k < insts.len() {
-                        let pinned = |x: &Inst| x.writes().iter().any(|r| self.pinned[r.0 as usize]);
+                        let pinned = |x: &Inst| writes(x).iter().any(|r| self.pinned[r.0 as usize]);
                         let masked = divergent || pinned(insts[k]);
                         let first = k;
                         while k < insts.len() && (divergent || pinned(insts[k]) == masked) {
@@ -810,7 +844,7 @@ fn zeroed(body: &[Stmt], registers: usize, pinned: &[bool]) -> Vec<bool> {
         for s in stmts {
             match s {
                 Stmt::Inst(i) => {
-                    for r in reads(i) {
+                    for r in reads(i).iter() {
                         zero[r.0 as usize] |= !written[r.0 as usize];
                     }
                 }
@@ -828,7 +862,7 @@ fn zeroed(body: &[Stmt], registers: usize, pinned: &[bool]) -> Vec<bool> {
         reads_in(std::slice::from_ref(s), &written, &mut zero);
         if let Stmt::Inst(i) = s {
             if !is_texture(i) {
-                for r in i.writes() {
+                for r in writes(i).iter() {
                     written[r.0 as usize] = true;
                 }
             }
@@ -845,7 +879,7 @@ pub fn lower(program: &Program) -> Code {
     let mut pinned = vec![false; n];
     let mut uses = vec![0u32; n];
     for_each_inst(&body, &mut |i| {
-        for r in reads(i) {
+        for r in reads(i).iter() {
             uses[r.0 as usize] += 1;
             if is_cross_lane(i) {
                 pinned[r.0 as usize] = true;

@@ -25,4 +25,6 @@ pub mod math;
 pub mod validate;
 
 #[cfg(test)]
+mod bench;
+#[cfg(test)]
 mod tests;
