@@ -279,6 +279,8 @@ impl Nearest {
 }
 
 impl Textures for Nearest {
+    // Lane i of several words at once.
+    #[allow(clippy::needless_range_loop)]
     fn sample(&self, r: &SampleRequest<'_>, out: &mut [Word; 4]) {
         assert!(matches!(r.lod, LodLanes::Implicit));
         for i in 0..LANES {
@@ -405,8 +407,12 @@ fn time(rounds: usize, blocks: usize, mut run: impl FnMut(usize)) -> f64 {
 fn bench_the_executor_designs() {
     let textures = Nearest::new();
     eprintln!("level {}", crate::simd::describe());
-    eprintln!("program   stmts  ops | naive ns  interp ns  closures ns | compile µs (interp, closures)");
+    eprintln!("program   stmts  ops regs | naive ns  interp ns  closures ns | compile µs (interp, closures)");
+    let only = std::env::var("BENCH_PROGRAM").ok();
     for (name, program) in [("phong", phong()), ("texture", texture()), ("control", control())] {
+        if only.as_deref().is_some_and(|o| o != name) {
+            continue;
+        }
         fn stmts(s: &[Stmt]) -> usize {
             s.iter()
                 .map(|s| match s {
@@ -445,9 +451,11 @@ fn bench_the_executor_designs() {
             std::hint::black_box(threaded.run(&mut registers, &mut io, ALL_LANES));
         });
         eprintln!(
-            "{name:<9} {:>5} {:>4} | {t_naive:>8.0} {t_interp:>10.0} {t_closures:>12.0} | {compile_interp:.1}, {compile_closures:.1}",
+            "{name:<9} {:>5} {:>4} {:>2}→{:<2}| {t_naive:>8.0} {t_interp:>10.0} {t_closures:>12.0} | {compile_interp:.1}, {compile_closures:.1}",
             stmts(&program.body),
-            compiled.code().ops.len()
+            compiled.code().ops.len(),
+            program.registers.len(),
+            compiled.code().registers,
         );
     }
 }

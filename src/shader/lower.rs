@@ -26,7 +26,10 @@
 //!   operation performs exactly the operations, in the order and with the roundings, of the
 //!   instructions it replaces.
 //! - **Compact registers.** Only registers something reads or writes get a word, numbered
-//!   densely, and only those a read may reach before any write are zeroed per run.
+//!   densely, and only those a read may reach before any write are zeroed per run. Words are
+//!   not shared between registers with disjoint lifetimes: under divergent control flow a
+//!   write keeps the other lanes' old value, so a write is not the end of a lifetime, and
+//!   the files are small (phong: 73 registers, 64 words, 4 KiB, in L1) — not worth the risk.
 use super::ir::{BinaryOp, Const, Inst, Lod, Program, Reg, Stmt, UnaryOp};
 use crate::gl::float::floor_f32;
 
@@ -37,44 +40,173 @@ pub type R = u16;
 /// a uniform value once (reading lane 0 of their operands) and store it in every lane.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Op {
-    SConst { d: R, bits: u32 },
-    SUniform { d: R, slot: u16 },
-    SMov { d: R, a: R },
-    SUnary { op: UnaryOp, d: R, a: R },
-    SBinary { op: BinaryOp, d: R, a: R, b: R },
-    SMad { d: R, a: R, b: R, c: R },
-    SDot { n: u8, d: R, a: [R; 4], b: [R; 4] },
-    SSelect { d: R, c: R, a: R, b: R },
+    SConst {
+        d: R,
+        bits: u32,
+    },
+    SUniform {
+        d: R,
+        slot: u16,
+    },
+    SMov {
+        d: R,
+        a: R,
+    },
+    SUnary {
+        op: UnaryOp,
+        d: R,
+        a: R,
+    },
+    SBinary {
+        op: BinaryOp,
+        d: R,
+        a: R,
+        b: R,
+    },
+    SMad {
+        d: R,
+        a: R,
+        b: R,
+        c: R,
+    },
+    SDot {
+        n: u8,
+        d: R,
+        a: [R; 4],
+        b: [R; 4],
+    },
+    SSelect {
+        d: R,
+        c: R,
+        a: R,
+        b: R,
+    },
 
-    Const { d: R, bits: u32 },
-    Uniform { d: R, slot: u16 },
-    Input { d: R, slot: u16 },
-    Mov { d: R, a: R },
-    Add { d: R, a: R, b: R },
-    Sub { d: R, a: R, b: R },
-    Mul { d: R, a: R, b: R },
-    Div { d: R, a: R, b: R },
-    Min { d: R, a: R, b: R },
-    Max { d: R, a: R, b: R },
-    Lt { d: R, a: R, b: R },
-    Le { d: R, a: R, b: R },
-    Sqrt { d: R, a: R },
-    Rsq { d: R, a: R },
-    Unary { op: UnaryOp, d: R, a: R },
-    Binary { op: BinaryOp, d: R, a: R, b: R },
-    Mad { d: R, a: R, b: R, c: R },
-    Dot2 { d: R, a: [R; 2], b: [R; 2] },
-    Dot3 { d: R, a: [R; 3], b: [R; 3] },
-    Dot4 { d: R, a: [R; 4], b: [R; 4] },
-    Select { d: R, c: R, a: R, b: R },
+    Const {
+        d: R,
+        bits: u32,
+    },
+    Uniform {
+        d: R,
+        slot: u16,
+    },
+    Input {
+        d: R,
+        slot: u16,
+    },
+    Mov {
+        d: R,
+        a: R,
+    },
+    Add {
+        d: R,
+        a: R,
+        b: R,
+    },
+    Sub {
+        d: R,
+        a: R,
+        b: R,
+    },
+    Mul {
+        d: R,
+        a: R,
+        b: R,
+    },
+    Div {
+        d: R,
+        a: R,
+        b: R,
+    },
+    Min {
+        d: R,
+        a: R,
+        b: R,
+    },
+    Max {
+        d: R,
+        a: R,
+        b: R,
+    },
+    Lt {
+        d: R,
+        a: R,
+        b: R,
+    },
+    Le {
+        d: R,
+        a: R,
+        b: R,
+    },
+    Sqrt {
+        d: R,
+        a: R,
+    },
+    Rsq {
+        d: R,
+        a: R,
+    },
+    Unary {
+        op: UnaryOp,
+        d: R,
+        a: R,
+    },
+    Binary {
+        op: BinaryOp,
+        d: R,
+        a: R,
+        b: R,
+    },
+    Mad {
+        d: R,
+        a: R,
+        b: R,
+        c: R,
+    },
+    Dot2 {
+        d: R,
+        a: [R; 2],
+        b: [R; 2],
+    },
+    Dot3 {
+        d: R,
+        a: [R; 3],
+        b: [R; 3],
+    },
+    Dot4 {
+        d: R,
+        a: [R; 4],
+        b: [R; 4],
+    },
+    Select {
+        d: R,
+        c: R,
+        a: R,
+        b: R,
+    },
     /// `min(max(a, lo), hi)` as the two instructions compute it.
-    Clamp { d: R, a: R, lo: R, hi: R },
+    Clamp {
+        d: R,
+        a: R,
+        lo: R,
+        hi: R,
+    },
     /// `s = rsq(dot3(a, a)); d[k] = a[k]·s`.
-    Normalize3 { d: [R; 3], a: [R; 3] },
+    Normalize3 {
+        d: [R; 3],
+        a: [R; 3],
+    },
     /// Rows of dot products sharing the vector: [`Wide::MatVec`].
     MatVec(u16),
-    Derivative { x: bool, d: R, a: R },
-    Output { slot: u16, a: R },
+    Derivative {
+        x: bool,
+        d: R,
+        a: R,
+    },
+    Output {
+        slot: u16,
+        a: R,
+    },
     /// Texture lookups: [`Wide`].
     Texture(u16),
 }
@@ -83,10 +215,34 @@ pub enum Op {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Wide {
     /// `d[i] = dot_n(rows[i], v)` for i < `rows_n`, in order.
-    MatVec { n: u8, rows_n: u8, d: [R; 4], rows: [[R; 4]; 4], v: [R; 4] },
-    Sample { dst: [R; 4], unit: u8, n: u8, coords: [R; 4], projective: bool, lod: WideLod, compare: Option<R> },
-    Fetch { dst: [R; 4], unit: u8, n: u8, coords: [R; 3], lod: R },
-    Size { dst: [R; 3], unit: u8, lod: R },
+    MatVec {
+        n: u8,
+        rows_n: u8,
+        d: [R; 4],
+        rows: [[R; 4]; 4],
+        v: [R; 4],
+    },
+    Sample {
+        dst: [R; 4],
+        unit: u8,
+        n: u8,
+        coords: [R; 4],
+        projective: bool,
+        lod: WideLod,
+        compare: Option<R>,
+    },
+    Fetch {
+        dst: [R; 4],
+        unit: u8,
+        n: u8,
+        coords: [R; 3],
+        lod: R,
+    },
+    Size {
+        dst: [R; 3],
+        unit: u8,
+        lod: R,
+    },
 }
 
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -109,9 +265,19 @@ pub enum Cond {
 #[derive(Clone, Debug, PartialEq)]
 pub enum Node {
     /// `ops[start..end]`, writing under the execution mask when `masked`.
-    Run { start: u32, end: u32, masked: bool },
-    If { cond: Cond, then: Vec<Node>, otherwise: Vec<Node> },
-    Loop { body: Vec<Node> },
+    Run {
+        start: u32,
+        end: u32,
+        masked: bool,
+    },
+    If {
+        cond: Cond,
+        then: Vec<Node>,
+        otherwise: Vec<Node>,
+    },
+    Loop {
+        body: Vec<Node>,
+    },
     Break,
     Continue,
     Return,
@@ -677,8 +843,13 @@ impl Lowering {
                 self.wide(wide)
             }
             Inst::Fetch { dst, unit, n, coords, lod } => {
-                let wide =
-                    Wide::Fetch { dst: dst.map(|r| self.r(r)), unit, n, coords: coords.map(|r| self.r(r)), lod: self.r(lod) };
+                let wide = Wide::Fetch {
+                    dst: dst.map(|r| self.r(r)),
+                    unit,
+                    n,
+                    coords: coords.map(|r| self.r(r)),
+                    lod: self.r(lod),
+                };
                 self.wide(wide)
             }
             Inst::Size { dst, unit, lod } => {
@@ -706,8 +877,10 @@ impl Lowering {
                     while i < stmts.len() && matches!(stmts[i], Stmt::Inst(_)) {
                         i += 1;
                     }
-                    let insts: Vec<&Inst> =
-                        stmts[start..i].iter().map(|s| if let Stmt::Inst(x) = s { x } else { unreachable!() }).collect();
+                    let insts: Vec<&Inst> = stmts[start..i]
+                        .iter()
+                        .map(|s| if let Stmt::Inst(x) = s { x } else { unreachable!() })
+                        .collect();
                     let mut k = 0;
                     while k < insts.len() {
                         let pinned = |x: &Inst| writes(x).iter().any(|r| self.pinned[r.0 as usize]);
@@ -801,8 +974,7 @@ impl Lowering {
                     let Inst::Dot { n: n2, b: b2, a: a2, dst: d2 } = rest[rows] else { break };
                     let prev = rest[rows - 1].dst().expect("a dot writes");
                     written.push(prev);
-                    let reads_written =
-                        a2[..*n as usize].iter().chain(&b2[..*n as usize]).any(|r| written.contains(r));
+                    let reads_written = a2[..*n as usize].iter().chain(&b2[..*n as usize]).any(|r| written.contains(r));
                     if n2 != n || b2[..*n as usize] != b[..*n as usize] || reads_written || self.uniform(*d2) {
                         break;
                     }

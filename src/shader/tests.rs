@@ -8,8 +8,8 @@
 use super::exec::{
     Executor, Io, LodLanes, NoTextures, SampleRequest, Textures, Word, ALL_LANES, LANES, MAX_LOOP_ITERATIONS,
 };
-use super::ir::{Axis, BinaryOp, Const, Inst, Lod, Program, Reg, Stage, Stmt, Type, UnaryOp};
 use super::fast::{Compiled, Registers, Threaded};
+use super::ir::{Axis, BinaryOp, Const, Inst, Lod, Program, Reg, Stage, Stmt, Type, UnaryOp};
 use super::validate::validate;
 
 struct Rng(u64);
@@ -795,6 +795,8 @@ fn texture_lookups_ask_the_sampler_with_the_running_lanes_and_write_only_those()
 struct Recorder(std::cell::RefCell<Vec<Vec<u32>>>);
 
 impl Textures for Recorder {
+    // Lane i of several words at once.
+    #[allow(clippy::needless_range_loop)]
     fn sample(&self, r: &SampleRequest<'_>, out: &mut [Word; 4]) {
         let mut log = vec![0, r.unit as u32, r.n as u32, r.projective as u32, r.lanes as u32];
         r.coords.iter().for_each(|w| log.extend(w));
