@@ -659,6 +659,19 @@ fn a_loop_that_never_ends_stops_at_the_iteration_bound() {
     );
     assert_eq!(alive, ALL_LANES);
     assert_eq!(out[0], [MAX_LOOP_ITERATIONS; LANES]);
+    // The compiled executors stop there too (the counter is uniform there: scalar).
+    for which in 0..2 {
+        let mut fast = vec![[0u32; LANES]];
+        let mut io = Io { inputs: &[], uniforms: &[], outputs: &mut fast, textures: &NoTextures };
+        let alive = if which == 0 {
+            Compiled::new(&p).run(&mut Registers::new(), &mut io, 0x0ff0)
+        } else {
+            Threaded::new(&p).run(&mut Registers::new(), &mut io, 0x0ff0)
+        };
+        assert_eq!(alive, 0x0ff0);
+        let expected: Word = std::array::from_fn(|i| if 0x0ff0 >> i & 1 != 0 { MAX_LOOP_ITERATIONS } else { 0 });
+        assert_eq!(fast[0], expected);
+    }
 }
 
 #[test]
@@ -682,17 +695,21 @@ fn derivatives_are_the_differences_across_each_quad() {
     // row, the lower pixel minus the upper in the lane's own column.
     let value = |c: usize, r: usize| (c * c + 10 * r * r) as f32;
     let input: Word = std::array::from_fn(|i| value(i & 3, i >> 2).to_bits());
-    let mut out = vec![[0u32; LANES]; 2];
-    Executor::new().run(
-        &p,
-        &mut Io { inputs: &[input], uniforms: &[], outputs: &mut out, textures: &NoTextures },
-        ALL_LANES,
-    );
-    for (i, (dx, dy)) in out[0].iter().zip(&out[1]).enumerate() {
-        let (c, r) = (i & 3, i >> 2);
-        let (c0, r0) = (c & !1, r & !1);
-        assert_eq!(f32::from_bits(*dx), value(c0 + 1, r) - value(c0, r), "ddx at lane {i}");
-        assert_eq!(f32::from_bits(*dy), value(c, r0 + 1) - value(c, r0), "ddy at lane {i}");
+    // The reference, the interpreter and the closures.
+    for which in 0..3 {
+        let mut out = vec![[0u32; LANES]; 2];
+        let mut io = Io { inputs: &[input], uniforms: &[], outputs: &mut out, textures: &NoTextures };
+        match which {
+            0 => Executor::new().run(&p, &mut io, ALL_LANES),
+            1 => Compiled::new(&p).run(&mut Registers::new(), &mut io, ALL_LANES),
+            _ => Threaded::new(&p).run(&mut Registers::new(), &mut io, ALL_LANES),
+        };
+        for (i, (dx, dy)) in out[0].iter().zip(&out[1]).enumerate() {
+            let (c, r) = (i & 3, i >> 2);
+            let (c0, r0) = (c & !1, r & !1);
+            assert_eq!(f32::from_bits(*dx), value(c0 + 1, r) - value(c0, r), "ddx at lane {i} ({which})");
+            assert_eq!(f32::from_bits(*dy), value(c, r0 + 1) - value(c, r0), "ddy at lane {i} ({which})");
+        }
     }
 }
 
@@ -773,20 +790,28 @@ fn texture_lookups_ask_the_sampler_with_the_running_lanes_and_write_only_those()
     ];
     validate(&p).unwrap();
     let inputs: [Word; 2] = [std::array::from_fn(|i| (i as f32 * 0.25).to_bits()), [1.5f32.to_bits(); LANES]];
-    let mut out = vec![[0u32; LANES]; 6];
-    let probe = Probe(Default::default());
     let lanes = 0x7fff;
-    Executor::new().run(&p, &mut Io { inputs: &inputs, uniforms: &[], outputs: &mut out, textures: &probe }, lanes);
-    // s = i/4 < 2 for lanes 0..8.
-    assert_eq!(*probe.0.borrow(), vec![(3, lanes, false), (3, lanes, false), (1, 0xff, false), (0, lanes, false)]);
-    for (i, size) in out[5].iter().enumerate().take(15) {
-        let s = i as f32 * 0.25;
-        let texel = [out[0][i], out[1][i], out[2][i], out[3][i]].map(f32::from_bits);
-        let (unit, lod) = if i < 8 { (1.0, 2.5) } else { (3.0, -1.0) };
-        assert_eq!(texel, [s + 1.5, s * 1.5, unit, lod], "lane {i}");
-        assert_eq!(*size, 16, "size of level 2 at lane {i}");
+    // The reference, the interpreter and the closures.
+    for which in 0..3 {
+        let mut out = vec![[0u32; LANES]; 6];
+        let probe = Probe(Default::default());
+        let mut io = Io { inputs: &inputs, uniforms: &[], outputs: &mut out, textures: &probe };
+        match which {
+            0 => Executor::new().run(&p, &mut io, lanes),
+            1 => Compiled::new(&p).run(&mut Registers::new(), &mut io, lanes),
+            _ => Threaded::new(&p).run(&mut Registers::new(), &mut io, lanes),
+        };
+        // s = i/4 < 2 for lanes 0..8.
+        assert_eq!(*probe.0.borrow(), vec![(3, lanes, false), (3, lanes, false), (1, 0xff, false), (0, lanes, false)]);
+        for (i, size) in out[5].iter().enumerate().take(15) {
+            let s = i as f32 * 0.25;
+            let texel = [out[0][i], out[1][i], out[2][i], out[3][i]].map(f32::from_bits);
+            let (unit, lod) = if i < 8 { (1.0, 2.5) } else { (3.0, -1.0) };
+            assert_eq!(texel, [s + 1.5, s * 1.5, unit, lod], "lane {i}");
+            assert_eq!(*size, 16, "size of level 2 at lane {i}");
+        }
+        assert_eq!(out.iter().map(|o| o[15]).collect::<Vec<_>>(), vec![0; 6], "lane 15 was not running");
     }
-    assert_eq!(out.iter().map(|o| o[15]).collect::<Vec<_>>(), vec![0; 6], "lane 15 was not running");
 }
 
 /// A texture that records every request whole (all 16 lanes of every operand word) and
