@@ -438,18 +438,29 @@ fn bench_the_executor_designs() {
             let mut io = Io { inputs: &inputs[k], uniforms: &uniforms, outputs: &mut outputs, textures: &textures };
             std::hint::black_box(executor.run(&program, &mut io, ALL_LANES));
         };
-        let t_naive = time(5, blocks, &mut naive);
+        // BENCH_DESIGN=naive|interp|closures: time only that one (for `perf stat`).
+        let design = std::env::var("BENCH_DESIGN").ok();
+        let wanted = |d: &str| design.as_deref().is_none_or(|w| w == d);
+        let t_naive = if wanted("naive") { time(5, blocks, &mut naive) } else { 0.0 };
         let mut outputs = vec![[0u32; LANES]; program.outputs.len()];
-        let t_interp = time(5, blocks, |i| {
-            let k = i % inputs.len();
-            let mut io = Io { inputs: &inputs[k], uniforms: &uniforms, outputs: &mut outputs, textures: &textures };
-            std::hint::black_box(compiled.run(&mut registers, &mut io, ALL_LANES));
-        });
-        let t_closures = time(5, blocks, |i| {
-            let k = i % inputs.len();
-            let mut io = Io { inputs: &inputs[k], uniforms: &uniforms, outputs: &mut outputs, textures: &textures };
-            std::hint::black_box(threaded.run(&mut registers, &mut io, ALL_LANES));
-        });
+        let t_interp = if !wanted("interp") {
+            0.0
+        } else {
+            time(5, blocks, |i| {
+                let k = i % inputs.len();
+                let mut io = Io { inputs: &inputs[k], uniforms: &uniforms, outputs: &mut outputs, textures: &textures };
+                std::hint::black_box(compiled.run(&mut registers, &mut io, ALL_LANES));
+            })
+        };
+        let t_closures = if !wanted("closures") {
+            0.0
+        } else {
+            time(5, blocks, |i| {
+                let k = i % inputs.len();
+                let mut io = Io { inputs: &inputs[k], uniforms: &uniforms, outputs: &mut outputs, textures: &textures };
+                std::hint::black_box(threaded.run(&mut registers, &mut io, ALL_LANES));
+            })
+        };
         eprintln!(
             "{name:<9} {:>5} {:>4} {:>2}→{:<2}| {t_naive:>8.0} {t_interp:>10.0} {t_closures:>12.0} | {compile_interp:.1}, {compile_closures:.1}",
             stmts(&program.body),

@@ -17,15 +17,20 @@
 //! | texture (62 → 57, with a lookup) | 11 432 | 3 673 | 4 333 | 4 578 |
 //! | control (66 → 55, a loop of 4, divergent ifs, a discard) | 21 380 | 9 822 | 10 865 | 11 079 |
 //!
-//! (wall clock on a machine loaded 5× over, phong: 2 063 ns reference, 740 ns (a), 728 ns
-//! (b); texture 2 019 / 625 / 742; control 3 613 / 1 346 / 1 611.) Most of the gain over the
-//! reference is the front end's (uniform values computed once, fused operations, no masks
-//! where no lane can be skipped, lane loops without per-lane calls); between (a) and (b)
-//! the interpreter is ahead by 10–25 %, because its loop is compiled once per SIMD level with
-//! [`crate::simd::per_level!`] (a boxed closure is compiled once, for the SSE2 baseline:
-//! at SSE2 the two are within 2–7 %) and a `match` on a 16-byte record costs no more than an
-//! indirect call through a closure. Its code is one `Vec<Op>`, cheap to build (the front end
-//! costs 130–160 thousand instructions per program, ≈ 30 µs: a cold first frame pays that
+//! Wall clock, ns per block (each design in its own process, best of 3×5 rounds of 100 000
+//! blocks, AMD EPYC virtual machine, 2 cores loaded ~5× over, so ±15 %), AVX2 / SSE2:
+//! phong 2 172 / 2 086 reference, 704 / 639 (a), 720 / 625 (b); texture 1 612 / 1 482,
+//! 581 / 532, 762 / 600; control 4 023 / 3 177, 1 317 / 983, 1 730 / 1 162. Most of the gain
+//! over the reference is the front end's (uniform values computed once, fused operations,
+//! no masks where no lane can be skipped, lane loops without per-lane calls); between (a)
+//! and (b) the interpreter runs 10–25 % fewer instructions (a `match` on a 16-byte record
+//! costs no more than an indirect call through a closure, and its loop is compiled once per SIMD
+//! level with [`crate::simd::per_level!`], where a boxed closure is compiled once, for the
+//! SSE2 baseline) and is as fast or up to 25 % faster on the clock. The per-level copies
+//! save 10–19 % of the instructions at AVX2 but no measurable time on this machine (its
+//! AVX2 may split 256-bit operations); they cost nothing per block, so they stay. The
+//! interpreter's code is one `Vec<Op>`, cheap to build (the front end costs 130–160
+//! thousand instructions per program, ≈ 30 µs: a cold first frame pays that
 //! per program, far under its 1 ms) and to cache. A code generator would remove the
 //! remaining dispatch and the stores between operations, but brings an assembler, executable
 //! memory and its unsafe code, per-level encodings and a second implementation of every
