@@ -6,7 +6,7 @@
 //! [`super::exec`], the semantics' definition, on every program (the tests run both).
 //!
 //! **Why an interpreter.** Three designs were open: (a) this interpreter, (b) a
-//! closure-threaded program ([`Threaded`]: the same front end, a `Vec` of boxed closures,
+//! closure-threaded program (`Threaded`, in test builds: the same front end, a `Vec` of boxed closures,
 //! one per fused operation; kept for the comparison and its tests), (c) an x86-64 code
 //! generator. Measured on the three programs of `bench.rs` (callgrind instructions per
 //! 16-lane block; release build without LTO; AVX2 unless said):
@@ -246,8 +246,10 @@ macro_rules! operations {
         }
 
         /// An operation of the closure-threaded design.
+        #[cfg(test)]
         type Thunk = Box<dyn Fn(&mut Registers, &mut Io<'_>, &[Wide]) + Send + Sync>;
 
+        #[cfg(test)]
         fn thunk(op: Op) -> Thunk {
             match op {
                 $( $pat => Box::new(move |$st: &mut Registers, $io: &mut Io<'_>, $wide: &[Wide]| {
@@ -472,13 +474,15 @@ impl Compiled {
     }
 }
 
-/// The closure-threaded design, kept for the comparison of the module docs: the same
-/// front end, one boxed closure per operation.
+/// The closure-threaded design, kept for the comparison of the module docs (and built for
+/// the tests only): the same front end, one boxed closure per operation.
+#[cfg(test)]
 pub struct Threaded {
     code: Code,
     thunks: Vec<Thunk>,
 }
 
+#[cfg(test)]
 impl Straight for Vec<Thunk> {
     #[inline(always)]
     fn run(&self, code: &Code, st: &mut Registers, io: &mut Io<'_>, start: u32, end: u32) {
@@ -488,6 +492,7 @@ impl Straight for Vec<Thunk> {
     }
 }
 
+#[cfg(test)]
 impl Threaded {
     pub fn new(program: &Program) -> Threaded {
         let code = lower(program);
