@@ -88,7 +88,7 @@ fn to_i32(v: f32) -> u32 {
 }
 
 /// The unary operation `op` on every lane of `a`.
-fn unary(op: UnaryOp, a: &Word) -> Word {
+pub(super) fn unary(op: UnaryOp, a: &Word) -> Word {
     use UnaryOp::*;
     match op {
         FNeg => map1(a, |x| x ^ 0x8000_0000),
@@ -148,7 +148,7 @@ fn unary(op: UnaryOp, a: &Word) -> Word {
 }
 
 /// The binary operation `op` on every lane of `a` and `b`.
-fn binary(op: BinaryOp, a: &Word, b: &Word) -> Word {
+pub(super) fn binary(op: BinaryOp, a: &Word, b: &Word) -> Word {
     use BinaryOp::*;
     let int = |x: u32| x as i32;
     match op {
@@ -190,7 +190,7 @@ fn binary(op: BinaryOp, a: &Word, b: &Word) -> Word {
 
 /// A lane's pixel in its 2×2 quad: the left column's and the upper row's lane.
 #[inline(always)]
-fn derivative(axis: Axis, a: &Word) -> Word {
+pub(super) fn derivative(axis: Axis, a: &Word) -> Word {
     let mut out = [0u32; LANES];
     for (i, o) in out.iter_mut().enumerate() {
         let (first, second) = match axis {
@@ -204,7 +204,7 @@ fn derivative(axis: Axis, a: &Word) -> Word {
 
 /// The lanes of a bool word that are true.
 #[inline(always)]
-fn true_lanes(w: &Word) -> u16 {
+pub(super) fn true_lanes(w: &Word) -> u16 {
     let mut mask = 0u16;
     for (i, &v) in w.iter().enumerate() {
         mask |= ((v != 0) as u16) << i;

@@ -10,7 +10,11 @@
 //! - [`validate`]: checks a program before it runs (types, slots, where break, continue,
 //!   discard and derivatives may appear, nesting depth), so the executor trusts it.
 //! - [`dump`]: the text form of a program (`TESSERA_DEBUG=programs`).
-//! - [`exec`]: runs a validated program over 16 lanes with execution masks; the arithmetic
+//! - [`lower`] and [`fast`]: the executor the pipeline runs: a program pre-decoded once
+//!   (constants folded, dead code dropped, uniform values scalar, fused operations) and
+//!   interpreted over a file of 16-lane words, bit-identical to [`exec`] (tested on random
+//!   programs); `fast`'s docs say why an interpreter, with measurements.
+//! - [`exec`]: the reference: runs a validated program over 16 lanes with execution masks, statement by statement; the arithmetic
 //!   is IEEE add, sub, mul, div and sqrt rounded once each (no contraction), and
 //!   [`math`]'s own polynomials for exp2, log2, sin and cos, so every SIMD level and every
 //!   CPU gives the same bytes.
@@ -18,9 +22,13 @@
 
 pub mod dump;
 pub mod exec;
+pub mod fast;
 pub mod ir;
+pub mod lower;
 pub mod math;
 pub mod validate;
 
+#[cfg(test)]
+mod bench;
 #[cfg(test)]
 mod tests;

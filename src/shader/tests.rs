@@ -8,6 +8,7 @@
 use super::exec::{
     Executor, Io, LodLanes, NoTextures, SampleRequest, Textures, Word, ALL_LANES, LANES, MAX_LOOP_ITERATIONS,
 };
+use super::fast::{Compiled, Registers, Threaded};
 use super::ir::{Axis, BinaryOp, Const, Inst, Lod, Program, Reg, Stage, Stmt, Type, UnaryOp};
 use super::validate::validate;
 
@@ -260,6 +261,9 @@ struct Generator {
     loops: usize,
     depth: usize,
     budget: usize,
+    /// Also derivatives and texture lookups (which the f64 reference does not model: the
+    /// programs with them compare the executors with each other).
+    cross_lane: bool,
 }
 
 fn type_index(t: Type) -> usize {
@@ -288,7 +292,7 @@ impl Generator {
         for t in [Type::F32, Type::F32, Type::F32, Type::I32, Type::Bool] {
             program.output(t);
         }
-        Generator { rng: Rng(seed | 1), program, pool, loops: 0, depth: 0, budget: 60 }
+        Generator { rng: Rng(seed | 1), program, pool, loops: 0, depth: 0, budget: 60, cross_lane: false }
     }
 
     fn reg(&mut self, t: Type) -> Reg {
@@ -300,6 +304,9 @@ impl Generator {
         use BinaryOp::*;
         use UnaryOp::*;
         let f = Type::F32;
+        if self.cross_lane && self.rng.chance(12) {
+            return self.cross_lane_inst();
+        }
         match self.rng.below(10) {
             0 => {
                 let t = self.rng.pick(&[Type::F32, Type::I32, Type::U32, Type::Bool]);
@@ -406,6 +413,42 @@ impl Generator {
         }
     }
 
+    /// A derivative (fragment programs) or a texture lookup of random registers.
+    fn cross_lane_inst(&mut self) -> Inst {
+        let f = Type::F32;
+        let roll = self.rng.below(4);
+        if roll == 0 && self.program.stage == Stage::Fragment {
+            let axis = if self.rng.chance(50) { Axis::X } else { Axis::Y };
+            return Inst::Derivative { dst: self.reg(f), axis, a: self.reg(f) };
+        }
+        let unit = self.rng.below(4) as u8;
+        if roll == 1 {
+            let lod = self.reg(Type::I32);
+            return Inst::Size { dst: [0; 3].map(|_| self.reg(Type::I32)), unit, lod };
+        }
+        if roll == 2 {
+            let dst = [0; 4].map(|_| self.reg(f));
+            let coords = [0; 3].map(|_| self.reg(Type::I32));
+            return Inst::Fetch { dst, unit, n: 2, coords, lod: self.reg(Type::I32) };
+        }
+        let n = 1 + self.rng.below(3) as u8;
+        let lod = match self.rng.below(3) {
+            0 if self.program.stage == Stage::Fragment => Lod::Implicit,
+            1 if self.program.stage == Stage::Fragment => Lod::Bias(self.reg(f)),
+            _ => Lod::Explicit(self.reg(f)),
+        };
+        let compare = if self.rng.chance(30) { Some(self.reg(f)) } else { None };
+        Inst::Sample {
+            dst: [0; 4].map(|_| self.reg(f)),
+            unit,
+            n,
+            coords: [0; 4].map(|_| self.reg(f)),
+            projective: self.rng.chance(30),
+            lod,
+            compare,
+        }
+    }
+
     fn block(&mut self) -> Vec<Stmt> {
         let mut out = Vec::new();
         let n = 1 + self.rng.below(6);
@@ -494,6 +537,26 @@ impl Generator {
     }
 }
 
+/// A NaN's sign and payload are the CPU's (x86 passes on the first operand's NaN, and the
+/// compiler may swap the operands of a commutative operation): every NaN as one.
+fn canonical_nan(bits: u32) -> u32 {
+    if f32::from_bits(bits).is_nan() {
+        f32::NAN.to_bits()
+    } else {
+        bits
+    }
+}
+
+/// Outputs with their f32 words' NaNs made one.
+fn canonical_outputs(program: &Program, mut outputs: Vec<Word>) -> Vec<Word> {
+    for (word, ty) in outputs.iter_mut().zip(&program.outputs) {
+        if *ty == Type::F32 {
+            *word = word.map(canonical_nan);
+        }
+    }
+    outputs
+}
+
 fn same_word(a: u32, b: u32, ty: Type) -> bool {
     a == b || (ty == Type::F32 && f32::from_bits(a).is_nan() && f32::from_bits(b).is_nan())
 }
@@ -502,6 +565,7 @@ fn same_word(a: u32, b: u32, ty: Type) -> bool {
 fn random_programs_match_the_scalar_f64_reference_lane_by_lane() {
     let mut rng = Rng(0x5eed_1234_abcd_9876);
     let mut executor = Executor::new();
+    let mut registers = Registers::new();
     let mut discards = 0;
     let mut loops_run = 0;
     for case in 0..3000u64 {
@@ -522,6 +586,25 @@ fn random_programs_match_the_scalar_f64_reference_lane_by_lane() {
             &mut Io { inputs: &inputs, uniforms: &uniforms, outputs: &mut outputs, textures: &NoTextures },
             lanes,
         );
+        // The compiled executors give the reference executor's bits in every lane.
+        let (compiled, threaded) = (Compiled::new(&program), Threaded::new(&program));
+        for which in 0..2 {
+            let mut fast_outputs = vec![[0u32; LANES]; program.outputs.len()];
+            let mut io = Io { inputs: &inputs, uniforms: &uniforms, outputs: &mut fast_outputs, textures: &NoTextures };
+            let fast_alive = if which == 0 {
+                compiled.run(&mut registers, &mut io, lanes)
+            } else {
+                threaded.run(&mut registers, &mut io, lanes)
+            };
+            assert_eq!(fast_alive, alive, "case {case} ({which}): discards differ\n{}", super::dump::dump(&program));
+            assert_eq!(
+                canonical_outputs(&program, fast_outputs),
+                canonical_outputs(&program, outputs.clone()),
+                "case {case} ({which}): outputs differ\n{}\n{:#?}",
+                super::dump::dump(&program),
+                compiled.code()
+            );
+        }
         for lane in 0..LANES {
             if lanes >> lane & 1 == 0 {
                 assert!(outputs.iter().all(|o| o[lane] == 0), "case {case}: lane {lane} was not running");
@@ -576,6 +659,19 @@ fn a_loop_that_never_ends_stops_at_the_iteration_bound() {
     );
     assert_eq!(alive, ALL_LANES);
     assert_eq!(out[0], [MAX_LOOP_ITERATIONS; LANES]);
+    // The compiled executors stop there too (the counter is uniform there: scalar).
+    for which in 0..2 {
+        let mut fast = vec![[0u32; LANES]];
+        let mut io = Io { inputs: &[], uniforms: &[], outputs: &mut fast, textures: &NoTextures };
+        let alive = if which == 0 {
+            Compiled::new(&p).run(&mut Registers::new(), &mut io, 0x0ff0)
+        } else {
+            Threaded::new(&p).run(&mut Registers::new(), &mut io, 0x0ff0)
+        };
+        assert_eq!(alive, 0x0ff0);
+        let expected: Word = std::array::from_fn(|i| if 0x0ff0 >> i & 1 != 0 { MAX_LOOP_ITERATIONS } else { 0 });
+        assert_eq!(fast[0], expected);
+    }
 }
 
 #[test]
@@ -599,17 +695,21 @@ fn derivatives_are_the_differences_across_each_quad() {
     // row, the lower pixel minus the upper in the lane's own column.
     let value = |c: usize, r: usize| (c * c + 10 * r * r) as f32;
     let input: Word = std::array::from_fn(|i| value(i & 3, i >> 2).to_bits());
-    let mut out = vec![[0u32; LANES]; 2];
-    Executor::new().run(
-        &p,
-        &mut Io { inputs: &[input], uniforms: &[], outputs: &mut out, textures: &NoTextures },
-        ALL_LANES,
-    );
-    for (i, (dx, dy)) in out[0].iter().zip(&out[1]).enumerate() {
-        let (c, r) = (i & 3, i >> 2);
-        let (c0, r0) = (c & !1, r & !1);
-        assert_eq!(f32::from_bits(*dx), value(c0 + 1, r) - value(c0, r), "ddx at lane {i}");
-        assert_eq!(f32::from_bits(*dy), value(c, r0 + 1) - value(c, r0), "ddy at lane {i}");
+    // The reference, the interpreter and the closures.
+    for which in 0..3 {
+        let mut out = vec![[0u32; LANES]; 2];
+        let mut io = Io { inputs: &[input], uniforms: &[], outputs: &mut out, textures: &NoTextures };
+        match which {
+            0 => Executor::new().run(&p, &mut io, ALL_LANES),
+            1 => Compiled::new(&p).run(&mut Registers::new(), &mut io, ALL_LANES),
+            _ => Threaded::new(&p).run(&mut Registers::new(), &mut io, ALL_LANES),
+        };
+        for (i, (dx, dy)) in out[0].iter().zip(&out[1]).enumerate() {
+            let (c, r) = (i & 3, i >> 2);
+            let (c0, r0) = (c & !1, r & !1);
+            assert_eq!(f32::from_bits(*dx), value(c0 + 1, r) - value(c0, r), "ddx at lane {i} ({which})");
+            assert_eq!(f32::from_bits(*dy), value(c, r0 + 1) - value(c, r0), "ddy at lane {i} ({which})");
+        }
     }
 }
 
@@ -690,18 +790,118 @@ fn texture_lookups_ask_the_sampler_with_the_running_lanes_and_write_only_those()
     ];
     validate(&p).unwrap();
     let inputs: [Word; 2] = [std::array::from_fn(|i| (i as f32 * 0.25).to_bits()), [1.5f32.to_bits(); LANES]];
-    let mut out = vec![[0u32; LANES]; 6];
-    let probe = Probe(Default::default());
     let lanes = 0x7fff;
-    Executor::new().run(&p, &mut Io { inputs: &inputs, uniforms: &[], outputs: &mut out, textures: &probe }, lanes);
-    // s = i/4 < 2 for lanes 0..8.
-    assert_eq!(*probe.0.borrow(), vec![(3, lanes, false), (3, lanes, false), (1, 0xff, false), (0, lanes, false)]);
-    for (i, size) in out[5].iter().enumerate().take(15) {
-        let s = i as f32 * 0.25;
-        let texel = [out[0][i], out[1][i], out[2][i], out[3][i]].map(f32::from_bits);
-        let (unit, lod) = if i < 8 { (1.0, 2.5) } else { (3.0, -1.0) };
-        assert_eq!(texel, [s + 1.5, s * 1.5, unit, lod], "lane {i}");
-        assert_eq!(*size, 16, "size of level 2 at lane {i}");
+    // The reference, the interpreter and the closures.
+    for which in 0..3 {
+        let mut out = vec![[0u32; LANES]; 6];
+        let probe = Probe(Default::default());
+        let mut io = Io { inputs: &inputs, uniforms: &[], outputs: &mut out, textures: &probe };
+        match which {
+            0 => Executor::new().run(&p, &mut io, lanes),
+            1 => Compiled::new(&p).run(&mut Registers::new(), &mut io, lanes),
+            _ => Threaded::new(&p).run(&mut Registers::new(), &mut io, lanes),
+        };
+        // s = i/4 < 2 for lanes 0..8.
+        assert_eq!(*probe.0.borrow(), vec![(3, lanes, false), (3, lanes, false), (1, 0xff, false), (0, lanes, false)]);
+        for (i, size) in out[5].iter().enumerate().take(15) {
+            let s = i as f32 * 0.25;
+            let texel = [out[0][i], out[1][i], out[2][i], out[3][i]].map(f32::from_bits);
+            let (unit, lod) = if i < 8 { (1.0, 2.5) } else { (3.0, -1.0) };
+            assert_eq!(texel, [s + 1.5, s * 1.5, unit, lod], "lane {i}");
+            assert_eq!(*size, 16, "size of level 2 at lane {i}");
+        }
+        assert_eq!(out.iter().map(|o| o[15]).collect::<Vec<_>>(), vec![0; 6], "lane 15 was not running");
     }
-    assert_eq!(out.iter().map(|o| o[15]).collect::<Vec<_>>(), vec![0; 6], "lane 15 was not running");
+}
+
+/// A texture that records every request whole (all 16 lanes of every operand word) and
+/// answers with a function of each lane's coordinates, in every lane.
+#[derive(Default)]
+struct Recorder(std::cell::RefCell<Vec<Vec<u32>>>);
+
+impl Textures for Recorder {
+    // Lane i of several words at once.
+    #[allow(clippy::needless_range_loop)]
+    fn sample(&self, r: &SampleRequest<'_>, out: &mut [Word; 4]) {
+        let mut log = vec![0, r.unit as u32, r.n as u32, r.projective as u32, r.lanes as u32];
+        r.coords.iter().for_each(|w| log.extend(w));
+        match r.lod {
+            LodLanes::Implicit => log.push(7),
+            LodLanes::Bias(w) | LodLanes::Explicit(w) => log.extend(w),
+        }
+        r.compare.into_iter().for_each(|w| log.extend(w));
+        self.0.borrow_mut().push(log);
+        for i in 0..LANES {
+            let (s, t) = (f32::from_bits(r.coords[0][i]), f32::from_bits(r.coords[1][i]));
+            out[0][i] = (s + t).to_bits();
+            out[1][i] = (s * t).to_bits();
+            out[2][i] = (s - r.unit as f32).to_bits();
+            out[3][i] = ((f32::from_bits(r.coords[2][i]) < f32::from_bits(r.coords[3][i])) as u32 as f32).to_bits();
+        }
+    }
+
+    fn fetch(&self, unit: u8, n: u8, coords: &[Word; 3], lod: &Word, lanes: u16, out: &mut [Word; 4]) {
+        let mut log = vec![1, unit as u32, n as u32, lanes as u32];
+        coords.iter().chain([lod]).for_each(|w| log.extend(w));
+        self.0.borrow_mut().push(log);
+        for i in 0..LANES {
+            out[0][i] = (coords[0][i] as i32 as f32).to_bits();
+            out[1][i] = ((coords[1][i] as i32).wrapping_mul(3) as f32).to_bits();
+            out[2][i] = (lod[i] as i32 as f32).to_bits();
+        }
+    }
+
+    fn size(&self, unit: u8, lod: &Word, lanes: u16, out: &mut [Word; 3]) {
+        let mut log = vec![2, unit as u32, lanes as u32];
+        log.extend(lod);
+        self.0.borrow_mut().push(log);
+        for i in 0..LANES {
+            out[0][i] = 64u32.wrapping_shr(lod[i]);
+            out[1][i] = lod[i].wrapping_add(unit as u32);
+            out[2][i] = 5;
+        }
+    }
+}
+
+#[test]
+fn compiled_executors_match_the_reference_with_derivatives_and_texture_lookups() {
+    let mut rng = Rng(0xc0ff_ee12_3456_789a);
+    let mut executor = Executor::new();
+    let mut registers = Registers::new();
+    let mut requests = 0;
+    for case in 0..3000u64 {
+        let stage = if case % 3 == 0 { Stage::Vertex } else { Stage::Fragment };
+        let mut generator = Generator::new(rng.next(), stage);
+        generator.cross_lane = true;
+        let program = generator.program();
+        validate(&program).unwrap_or_else(|e| panic!("case {case}: {e}\n{}", super::dump::dump(&program)));
+        let inputs: Vec<Word> = program
+            .inputs
+            .iter()
+            .map(|t| std::array::from_fn(|_| if *t == Type::F32 { rng.float().to_bits() } else { rng.int() }))
+            .collect();
+        let uniforms = [rng.float().to_bits(), rng.int()];
+        let lanes = if rng.chance(60) { ALL_LANES } else { rng.next() as u16 };
+        let run = |which: usize, registers: &mut Registers, executor: &mut Executor| {
+            let textures = Recorder::default();
+            let mut outputs = vec![[0u32; LANES]; program.outputs.len()];
+            let mut io = Io { inputs: &inputs, uniforms: &uniforms, outputs: &mut outputs, textures: &textures };
+            let alive = match which {
+                0 => executor.run(&program, &mut io, lanes),
+                1 => Compiled::new(&program).run(registers, &mut io, lanes),
+                _ => Threaded::new(&program).run(registers, &mut io, lanes),
+            };
+            // Requests compared with every NaN as one (see `canonical_nan`).
+            let log: Vec<Vec<u32>> =
+                textures.0.into_inner().into_iter().map(|r| r.into_iter().map(canonical_nan).collect()).collect();
+            (alive, canonical_outputs(&program, outputs), log)
+        };
+        let reference = run(0, &mut registers, &mut executor);
+        requests += reference.2.len();
+        for which in 1..3 {
+            let got = run(which, &mut registers, &mut executor);
+            assert!(got == reference, "case {case} ({which}) differs\n{}", super::dump::dump(&program));
+        }
+    }
+    assert!(requests > 3000, "only {requests} texture requests");
 }
