@@ -351,6 +351,7 @@ pub fn unary_lane(op: UnaryOp, x: u32) -> u32 {
         Rsq => fu(1.0 / f(x).sqrt()),
         Exp2 => fu(math::exp2(f(x))),
         Log2 => fu(math::log2(f(x))),
+        Exp => fu(math::exp(f(x))),
         Sin => fu(math::sin(f(x))),
         Cos => fu(math::cos(f(x))),
         F32ToI32 => f(x) as i32 as u32,
