@@ -4,6 +4,7 @@
 use super::*;
 use crate::gl::enums::{GL_BACK, GL_FRONT, GL_FRONT_AND_BACK, GL_SEPARATE_SPECULAR_COLOR, GL_SINGLE_COLOR};
 use crate::shader::exec::{Executor, Io, NoTextures, Word, LANES};
+use crate::shader::fast::{Compiled, Registers};
 use crate::shader::validate::validate;
 use crate::vertex::lighting::{Light, LightingState, Material};
 use crate::vertex::texgen::TexCoordUnit;
@@ -294,6 +295,11 @@ fn generated_vertex_programs_give_the_bits_of_transform() {
         let mut outputs = vec![[0u32; LANES]; generated.program.outputs.len()];
         let mut io = Io { inputs: &inputs, uniforms: &uniforms, outputs: &mut outputs, textures: &NoTextures };
         executor.run(&generated.program, &mut io, 0xffff);
+        // The pipeline's executor gives the reference's bits.
+        let mut fast_outputs = vec![[0u32; LANES]; generated.program.outputs.len()];
+        let mut io = Io { inputs: &inputs, uniforms: &uniforms, outputs: &mut fast_outputs, textures: &NoTextures };
+        Compiled::new(&generated.program).run(&mut Registers::new(), &mut io, 0xffff);
+        assert_eq!(fast_outputs, outputs, "case {case}: the interpreter");
         for (lane, w) in want.iter().enumerate() {
             for (slot, what) in generated.outputs.iter().enumerate() {
                 let expected = match *what {
