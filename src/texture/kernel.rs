@@ -576,6 +576,136 @@ fn depth_quad<'a, T: DepthTexels<'a>>(
     true
 }
 
+use super::F32s;
+
+/// The lanes of the 2×2 quads of a block whose row pairs (0, 1) and (2, 3) are llvmpipe's
+/// quads, in the order [`Kernel::sample_quad`] takes them: upper left, upper right, lower
+/// left, lower right of llvmpipe's y-down rows (its upper row is the block's higher row).
+pub(super) const QUAD_LANES: [[usize; 4]; 4] = [[4, 5, 0, 1], [6, 7, 2, 3], [12, 13, 8, 9], [14, 15, 10, 11]];
+
+/// The live lanes of quad `q` of a block mask, as a 4-bit quad mask in [`QUAD_LANES`] order.
+#[inline(always)]
+pub(super) fn quad_mask(live: u16, q: usize) -> u8 {
+    let l = QUAD_LANES[q];
+    (0..4).fold(0u8, |m, k| m | ((((live >> l[k]) & 1) as u8) << k))
+}
+
+impl Kernel {
+    /// The texture colors of the lanes `live` of a block whose quads are [`QUAD_LANES`]:
+    /// `c` the coordinates (s, t, r divided by q) of every lane (those of a quad with a live
+    /// lane give its derivatives, live or not); `out[channel][lane]` receives the colors of
+    /// the live lanes (the others are left alone or zero). Per quad the very bits of
+    /// [`Kernel::sample_quad`].
+    pub(super) fn sample_block(self, sampler: &Sampler, c: &[F32s; 3], live: u16, out: &mut [F32s; 4]) {
+        match self {
+            Kernel::Rgba2d => {
+                let wrap = sampler.wrap;
+                let mut words = [0u64; 16];
+                let mut two = 0u16;
+                dispatch_wrap!(rgba_block, wrap, sampler, c, live, &mut words, &mut two);
+                // u8 → f32 as the reference converts it: `/ 255` from one level, `· (1/255)`
+                // from a blend of two (see DIV_255).
+                for (k, channel) in out.iter_mut().enumerate() {
+                    for (i, o) in channel.iter_mut().enumerate() {
+                        let x = ((words[i] >> (16 * k)) & 0xff) as f32;
+                        *o = if two & (1 << i) != 0 { x * (1.0 / 255.0) } else { x / 255.0 };
+                    }
+                }
+            }
+            _ => {
+                // Other kernels: a quad at a time.
+                for (q, lanes) in QUAD_LANES.iter().enumerate() {
+                    let m = quad_mask(live, q);
+                    if m == 0 {
+                        continue;
+                    }
+                    let quad: [[f32; 3]; 4] = std::array::from_fn(|l| std::array::from_fn(|j| c[j][lanes[l]]));
+                    let mut colors = [[0.0; 4]; 4];
+                    self.sample_quad(sampler, &quad, m, &mut colors);
+                    for l in super::lanes4(m) {
+                        for (k, channel) in out.iter_mut().enumerate() {
+                            channel[lanes[l]] = colors[l][k];
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// Calls `$f::<X, Y>($args…)` with the types of the wrap modes `$wrap`.
+macro_rules! dispatch_wrap {
+    ($f:ident, $wrap:expr, $($args:expr),*) => {{
+        macro_rules! with_y {
+            ($x:ty) => {
+                match $wrap[1] {
+                    Wrap::Repeat => $f::<$x, Repeat>($($args),*),
+                    Wrap::MirroredRepeat => $f::<$x, Mirror>($($args),*),
+                    _ => $f::<$x, Edge>($($args),*),
+                }
+            };
+        }
+        match $wrap[0] {
+            Wrap::Repeat => with_y!(Repeat),
+            Wrap::MirroredRepeat => with_y!(Mirror),
+            _ => with_y!(Edge),
+        }
+    }};
+}
+use dispatch_wrap;
+
+/// The RGBA8 lookups of a block's live lanes as filtered words ([`spread`] form), per quad
+/// in the levels its derivatives choose; `two` receives the lanes blended from two levels.
+#[inline(always)]
+fn rgba_block<X: AxisWrap, Y: AxisWrap>(
+    sampler: &Sampler,
+    c: &[F32s; 3],
+    live: u16,
+    words: &mut [u64; 16],
+    two: &mut u16,
+) {
+    let levels = &sampler.faces[0];
+    let s: F32s = std::array::from_fn(|i| X::fold(c[0][i]));
+    let t: F32s = std::array::from_fn(|i| Y::fold(c[1][i]));
+    for (q, lanes) in QUAD_LANES.iter().enumerate() {
+        let m = quad_mask(live, q);
+        if m == 0 {
+            continue;
+        }
+        let ddx: [f32; 3] = std::array::from_fn(|j| c[j][lanes[1]] - c[j][lanes[0]]);
+        let ddy: [f32; 3] = std::array::from_fn(|j| c[j][lanes[2]] - c[j][lanes[0]]);
+        let c0 = [c[0][lanes[0]], c[1][lanes[0]], c[2][lanes[0]]];
+        match quad_levels(sampler, ddx, ddy, &[c0; 4]) {
+            Levels::One(d, mode) => {
+                let level = Level2d::of(&levels[d]);
+                for l in super::lanes4(m) {
+                    let i = lanes[l];
+                    words[i] = match mode {
+                        Filter::Linear => filter::<X, Y, true>(&level, s[i], t[i]),
+                        Filter::Nearest => filter::<X, Y, false>(&level, s[i], t[i]),
+                    };
+                }
+            }
+            Levels::Two(d1, d2, frac) => {
+                let w = (frac * 256.0) as i32 as u64;
+                let (a, b) = (Level2d::of(&levels[d1]), Level2d::of(&levels[d2]));
+                for l in super::lanes4(m) {
+                    let i = lanes[l];
+                    words[i] = match sampler.min {
+                        Filter::Linear => {
+                            lerp(filter::<X, Y, true>(&a, s[i], t[i]), filter::<X, Y, true>(&b, s[i], t[i]), w)
+                        }
+                        Filter::Nearest => {
+                            lerp(filter::<X, Y, false>(&a, s[i], t[i]), filter::<X, Y, false>(&b, s[i], t[i]), w)
+                        }
+                    };
+                    *two |= 1 << i;
+                }
+            }
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
