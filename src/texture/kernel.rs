@@ -158,6 +158,15 @@ trait AxisWrap {
     }
     /// The index of an integer texel position.
     fn index(i: i32, size: i32, mask: i32) -> i32;
+    /// [`AxisWrap::index`] of 16 lanes.
+    #[inline(always)]
+    fn index_lanes(i: &[i32; 16], size: i32, mask: i32) -> [i32; 16] {
+        let mut out = [0; 16];
+        for (o, &i) in out.iter_mut().zip(i) {
+            *o = Self::index(i, size, mask);
+        }
+        out
+    }
 }
 
 struct Repeat;
@@ -172,6 +181,21 @@ impl AxisWrap for Repeat {
         } else {
             repeat(i, size)
         }
+    }
+    #[inline(always)]
+    fn index_lanes(i: &[i32; 16], size: i32, mask: i32) -> [i32; 16] {
+        // The branch on the size once, not per lane: a mask vectorises.
+        let mut out = [0; 16];
+        if mask >= 0 {
+            for (o, &i) in out.iter_mut().zip(i) {
+                *o = i & mask;
+            }
+        } else {
+            for (o, &i) in out.iter_mut().zip(i) {
+                *o = repeat(i, size);
+            }
+        }
+        out
     }
 }
 
@@ -600,14 +624,14 @@ impl Kernel {
         match self {
             Kernel::Rgba2d => {
                 let wrap = sampler.wrap;
-                let mut words = [0u64; 16];
+                let mut values = [[0i32; 16]; 4];
                 let mut two = 0u16;
-                dispatch_wrap!(rgba_block, wrap, sampler, c, live, &mut words, &mut two);
+                dispatch_wrap!(rgba_block, wrap, sampler, c, live, &mut values, &mut two);
                 // u8 → f32 as the reference converts it: `/ 255` from one level, `· (1/255)`
                 // from a blend of two (see DIV_255).
-                for (k, channel) in out.iter_mut().enumerate() {
+                for (channel, v) in out.iter_mut().zip(&values) {
                     for (i, o) in channel.iter_mut().enumerate() {
-                        let x = ((words[i] >> (16 * k)) & 0xff) as f32;
+                        let x = v[i] as f32;
                         *o = if two & (1 << i) != 0 { x * (1.0 / 255.0) } else { x / 255.0 };
                     }
                 }
@@ -654,28 +678,60 @@ macro_rules! dispatch_wrap {
 }
 use dispatch_wrap;
 
-/// The RGBA8 lookups of a block's live lanes as filtered words ([`spread`] form), per quad
-/// in the levels its derivatives choose; `two` receives the lanes blended from two levels.
+/// The RGBA8 lookups of a block's live lanes as 8-bit channel values (`values[channel][lane]`),
+/// per quad in the levels its derivatives choose; `two` receives the lanes blended from two
+/// levels. When every live quad reads the same levels with linear filtering (a surface
+/// that is not too steep), all 16 lanes are filtered together in lane loops
+/// ([`linear_lanes`]); otherwise quad by quad, lane by lane.
 #[inline(always)]
 fn rgba_block<X: AxisWrap, Y: AxisWrap>(
     sampler: &Sampler,
     c: &[F32s; 3],
     live: u16,
-    words: &mut [u64; 16],
+    values: &mut [[i32; 16]; 4],
     two: &mut u16,
 ) {
     let levels = &sampler.faces[0];
     let s: F32s = std::array::from_fn(|i| X::fold(c[0][i]));
     let t: F32s = std::array::from_fn(|i| Y::fold(c[1][i]));
+    let mut which = [None; 4];
+    for (q, lanes) in QUAD_LANES.iter().enumerate() {
+        if quad_mask(live, q) != 0 {
+            let ddx: [f32; 3] = std::array::from_fn(|j| c[j][lanes[1]] - c[j][lanes[0]]);
+            let ddy: [f32; 3] = std::array::from_fn(|j| c[j][lanes[2]] - c[j][lanes[0]]);
+            let c0 = [c[0][lanes[0]], c[1][lanes[0]], c[2][lanes[0]]];
+            which[q] = Some(quad_levels(sampler, ddx, ddy, &[c0; 4]));
+        }
+    }
+    let mut live_levels = which.iter().flatten();
+    let first = live_levels.next().copied();
+    if let Some(first) = first.filter(|f| live_levels.all(|l| l == f)) {
+        match first {
+            Levels::One(d, Filter::Linear) => {
+                linear_lanes::<X, Y>(&Level2d::of(&levels[d]), &s, &t, values);
+                return;
+            }
+            Levels::Two(d1, d2, frac) if sampler.min == Filter::Linear => {
+                let w = (frac * 256.0) as i32;
+                let mut b = [[0i32; 16]; 4];
+                linear_lanes::<X, Y>(&Level2d::of(&levels[d1]), &s, &t, values);
+                linear_lanes::<X, Y>(&Level2d::of(&levels[d2]), &s, &t, &mut b);
+                for (a, b) in values.iter_mut().zip(&b) {
+                    for i in 0..16 {
+                        a[i] = lerp8(a[i], b[i], w);
+                    }
+                }
+                *two = 0xffff;
+                return;
+            }
+            _ => {}
+        }
+    }
+    let mut words = [0u64; 16];
     for (q, lanes) in QUAD_LANES.iter().enumerate() {
         let m = quad_mask(live, q);
-        if m == 0 {
-            continue;
-        }
-        let ddx: [f32; 3] = std::array::from_fn(|j| c[j][lanes[1]] - c[j][lanes[0]]);
-        let ddy: [f32; 3] = std::array::from_fn(|j| c[j][lanes[2]] - c[j][lanes[0]]);
-        let c0 = [c[0][lanes[0]], c[1][lanes[0]], c[2][lanes[0]]];
-        match quad_levels(sampler, ddx, ddy, &[c0; 4]) {
+        let Some(levels_q) = which[q] else { continue };
+        match levels_q {
             Levels::One(d, mode) => {
                 let level = Level2d::of(&levels[d]);
                 for l in super::lanes4(m) {
@@ -702,6 +758,75 @@ fn rgba_block<X: AxisWrap, Y: AxisWrap>(
                     *two |= 1 << i;
                 }
             }
+        }
+    }
+    for (k, v) in values.iter_mut().enumerate() {
+        for i in 0..16 {
+            v[i] = ((words[i] >> (16 * k)) & 0xff) as i32;
+        }
+    }
+}
+
+/// llvmpipe's 8-bit lerp, weight `w` in 1/256 (what [`lerp`] does on every field).
+#[inline(always)]
+fn lerp8(a: i32, b: i32, w: i32) -> i32 {
+    a + (((b - a) * w + 128) >> 8)
+}
+
+/// [`linear`] over 16 lanes, in lane loops: the two texels' indices along axis `k` of the
+/// folded coordinates `s` and the weight of the second in 1/256. [`fixed`]'s rounding by
+/// the magic number in every lane, and its exact path for the lanes beyond 2²².
+#[inline(always)]
+fn linear_axis_lanes<W: AxisWrap>(grid: &Grid, k: usize, s: &F32s) -> ([i32; 16], [i32; 16], [i32; 16]) {
+    const MAGIC: f32 = 12_582_912.0;
+    let sizef = grid.sizef[k];
+    let mut f = [0i32; 16];
+    let mut big = 0u32;
+    for i in 0..16 {
+        let u = if s[i].is_finite() { s[i] * sizef - 0.5 } else { 0.0 };
+        let v = u * 256.0;
+        f[i] = ((v + MAGIC).to_bits() as i32).wrapping_sub(MAGIC.to_bits() as i32);
+        big |= u32::from(!(v.abs() < 4_194_304.0)) << i;
+    }
+    while big != 0 {
+        let i = big.trailing_zeros() as usize;
+        f[i] = fixed(if s[i].is_finite() { s[i] * sizef - 0.5 } else { 0.0 });
+        big &= big - 1;
+    }
+    let (size, mask) = (grid.size[k], grid.mask[k]);
+    let mut i0 = [0i32; 16];
+    let mut i1 = [0i32; 16];
+    let mut w = [0i32; 16];
+    for i in 0..16 {
+        i0[i] = f[i] >> 8;
+        i1[i] = i0[i] + 1;
+        w[i] = f[i] & 0xff;
+    }
+    (W::index_lanes(&i0, size, mask), W::index_lanes(&i1, size, mask), w)
+}
+
+/// The bilinear lookups of 16 lanes in one level at the folded coordinates (s, t): the
+/// channel values of [`filter`] (linear), lerped channel by channel in lane loops.
+#[inline(always)]
+fn linear_lanes<X: AxisWrap, Y: AxisWrap>(level: &Level2d, s: &F32s, t: &F32s, out: &mut [[i32; 16]; 4]) {
+    let (x0, x1, wx) = linear_axis_lanes::<X>(&level.grid, 0, s);
+    let (y0, y1, wy) = linear_axis_lanes::<Y>(&level.grid, 1, t);
+    let width = level.width as usize;
+    let mut texels = [[0u32; 16]; 4];
+    for i in 0..16 {
+        let (r0, r1) = (y0[i] as usize * width, y1[i] as usize * width);
+        texels[0][i] = u32::from_le_bytes(level.texels[r0 + x0[i] as usize]);
+        texels[1][i] = u32::from_le_bytes(level.texels[r0 + x1[i] as usize]);
+        texels[2][i] = u32::from_le_bytes(level.texels[r1 + x0[i] as usize]);
+        texels[3][i] = u32::from_le_bytes(level.texels[r1 + x1[i] as usize]);
+    }
+    for (k, o) in out.iter_mut().enumerate() {
+        let shift = 8 * k as u32;
+        for i in 0..16 {
+            let ch = |p: u32| ((p >> shift) & 0xff) as i32;
+            let upper = lerp8(ch(texels[0][i]), ch(texels[1][i]), wx[i]);
+            let lower = lerp8(ch(texels[2][i]), ch(texels[3][i]), wx[i]);
+            o[i] = lerp8(upper, lower, wy[i]);
         }
     }
 }
@@ -813,6 +938,88 @@ mod tests {
             }
         }
         assert!(checked > 10_000);
+    }
+
+    #[test]
+    fn block_lookups_are_the_quad_lookups() {
+        // Blocks whose quads choose the same levels (the lane loops) and different ones
+        // (steep coordinates: quad by quad), every mask shape: each live lane gets the bits
+        // of its quad's `sample_quad`, the lanes in `QUAD_LANES` order.
+        let mut rng = Rng(0x1234_5678_9abc_def1);
+        let wraps = [Wrap::Repeat, Wrap::ClampToEdge, Wrap::MirroredRepeat];
+        let filters = [Filter::Nearest, Filter::Linear];
+        let mut checked = 0;
+        let mut uniform = 0;
+        for (w, h) in [(8, 8), (5, 3), (16, 16), (12, 20), (64, 32)] {
+            let levels = chain(&mut rng, w, h);
+            for mip in [None, Some(Filter::Nearest), Some(Filter::Linear)] {
+                for case in 0..24 {
+                    let sampler = Sampler {
+                        dim: Dim::D2,
+                        faces: vec![levels.clone()],
+                        wrap: [wraps[case % 3], wraps[(case / 3) % 3], Wrap::Repeat],
+                        mag: filters[(case / 9) % 2],
+                        min: filters[(case / 18 + case) % 2],
+                        mip,
+                        border: [0.0; 4],
+                        lod_bias: [0.0, 0.5, -1.25][case % 3],
+                        min_lod: -1000.0,
+                        max_lod: [1000.0, 2.5][case % 2],
+                        compare: None,
+                        depth_mode: DepthMode::Luminance,
+                        base: BaseFormat::Rgba,
+                    };
+                    let kernel = Kernel::choose(&sampler);
+                    for _ in 0..20 {
+                        let scale = [0.001, 0.02, 0.3, 2.0][(rng.next() % 4) as usize];
+                        let origin = [rng.unit() * 3.0 - 1.0, rng.unit() * 3.0 - 1.0];
+                        let step = [(rng.unit() - 0.5) * scale, (rng.unit() - 0.5) * scale];
+                        let up = [(rng.unit() - 0.5) * scale, (rng.unit() - 0.5) * scale];
+                        let curve = (rng.unit() - 0.5) * scale * 0.3;
+                        let mut c = [[0.0; 16]; 3];
+                        for i in 0..16 {
+                            let (x, y) = ((i & 3) as f32, (i >> 2) as f32);
+                            c[0][i] = origin[0] + step[0] * x + up[0] * y + curve * x * y;
+                            c[1][i] = origin[1] + step[1] * x + up[1] * y - curve * y * y;
+                        }
+                        if rng.next() % 16 == 0 {
+                            c[0][(rng.next() % 16) as usize] =
+                                [f32::NAN, f32::INFINITY, 3.0e9][(rng.next() % 3) as usize];
+                        }
+                        let live = [0xffff, rng.next() as u16, 0x0001, 0x8000, 0x0660][(rng.next() % 5) as usize];
+                        let mut out = [[7.0; 16]; 4];
+                        kernel.sample_block(&sampler, &c, live, &mut out);
+                        let mut all_same = true;
+                        let mut first = None;
+                        for (q, lanes) in QUAD_LANES.iter().enumerate() {
+                            let m = quad_mask(live, q);
+                            if m == 0 {
+                                continue;
+                            }
+                            let quad: [[f32; 3]; 4] = std::array::from_fn(|l| [c[0][lanes[l]], c[1][lanes[l]], 0.0]);
+                            let mut reference = [[9.0; 4]; 4];
+                            Kernel::Reference.sample_quad(&sampler, &quad, m, &mut reference);
+                            let ddx = [quad[1][0] - quad[0][0], quad[1][1] - quad[0][1], 0.0];
+                            let ddy = [quad[2][0] - quad[0][0], quad[2][1] - quad[0][1], 0.0];
+                            let which = quad_levels(&sampler, ddx, ddy, &quad);
+                            all_same &= *first.get_or_insert(which) == which;
+                            for l in super::lanes(m) {
+                                let lane: [f32; 4] = std::array::from_fn(|k| out[k][lanes[l]]);
+                                assert_eq!(
+                                    lane.map(f32::to_bits),
+                                    reference[l].map(f32::to_bits),
+                                    "{sampler:?} {c:?} {live:#x} lane {}",
+                                    lanes[l]
+                                );
+                                checked += 1;
+                            }
+                        }
+                        uniform += usize::from(all_same);
+                    }
+                }
+            }
+        }
+        assert!(checked > 20_000 && uniform > 1000, "{checked} {uniform}");
     }
 
     /// A chain of depth levels of `format` from `w` × `h` down to 1 × 1, random depths

@@ -281,7 +281,7 @@ pub fn downsample(src: &TexImage, dims: usize) -> Result<TexImage, OutOfMemory> 
     let half = |p: [f32; 4], q: [f32; 4], eight_bit: bool| -> [f32; 4] {
         if eight_bit {
             std::array::from_fn(|k| {
-                let (a, b) = ((p[k] * 255.0).round() as i32, (q[k] * 255.0).round() as i32);
+                let (a, b) = (byte(p[k]) as i32, byte(q[k]) as i32);
                 (a + (((b - a) * 128 + 128) >> 8)) as f32 / 255.0
             })
         } else {
@@ -289,6 +289,12 @@ pub fn downsample(src: &TexImage, dims: usize) -> Result<TexImage, OutOfMemory> 
         }
     };
     let eight_bit = matches!(src.texels, Texels::Rgba8(_));
+    // An 8-bit value v as a float (v / 255, v · (1/255)) back to v: c · 255 is within a few
+    // ulps of v, so adding ½ and truncating rounds it as `round` would, without the libm
+    // call per channel (`roundf`, out of line: most of a mipmap chain's cost).
+    fn byte(c: f32) -> u8 {
+        (c * 255.0 + 0.5) as u8
+    }
     for z in 0..nd {
         for y in 0..nh {
             for x in 0..nw {
@@ -304,7 +310,7 @@ pub fn downsample(src: &TexImage, dims: usize) -> Result<TexImage, OutOfMemory> 
                 let v = half(plane(0), plane(1), eight_bit);
                 let o = out.index(x, y, z);
                 match &mut out.texels {
-                    Texels::Rgba8(t) => t[o] = v.map(|c| (c * 255.0).round() as u8),
+                    Texels::Rgba8(t) => t[o] = v.map(byte),
                     Texels::Depth(_) => out.set_depth_f32(o, v[0]),
                 }
                 if out.has_stencil() {
