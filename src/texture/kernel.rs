@@ -158,12 +158,12 @@ trait AxisWrap {
     }
     /// The index of an integer texel position.
     fn index(i: i32, size: i32, mask: i32) -> i32;
-    /// [`AxisWrap::index`] of 16 lanes.
+    /// [`AxisWrap::index`] of 16 lanes, each with its level's size and mask.
     #[inline(always)]
-    fn index_lanes(i: &[i32; 16], size: i32, mask: i32) -> [i32; 16] {
+    fn index_lanes(i: &[i32; 16], size: &[i32; 16], mask: &[i32; 16]) -> [i32; 16] {
         let mut out = [0; 16];
-        for (o, &i) in out.iter_mut().zip(i) {
-            *o = Self::index(i, size, mask);
+        for k in 0..16 {
+            out[k] = Self::index(i[k], size[k], mask[k]);
         }
         out
     }
@@ -183,16 +183,16 @@ impl AxisWrap for Repeat {
         }
     }
     #[inline(always)]
-    fn index_lanes(i: &[i32; 16], size: i32, mask: i32) -> [i32; 16] {
-        // The branch on the size once, not per lane: a mask vectorises.
+    fn index_lanes(i: &[i32; 16], size: &[i32; 16], mask: &[i32; 16]) -> [i32; 16] {
+        // The branch on the sizes once, not per lane: masks vectorise.
         let mut out = [0; 16];
-        if mask >= 0 {
-            for (o, &i) in out.iter_mut().zip(i) {
-                *o = i & mask;
+        if mask.iter().all(|&m| m >= 0) {
+            for k in 0..16 {
+                out[k] = i[k] & mask[k];
             }
         } else {
-            for (o, &i) in out.iter_mut().zip(i) {
-                *o = repeat(i, size);
+            for k in 0..16 {
+                out[k] = repeat(i[k], size[k]);
             }
         }
         out
@@ -692,40 +692,62 @@ fn rgba_block<X: AxisWrap, Y: AxisWrap>(
     two: &mut u16,
 ) {
     let levels = &sampler.faces[0];
-    let s: F32s = std::array::from_fn(|i| X::fold(c[0][i]));
-    let t: F32s = std::array::from_fn(|i| Y::fold(c[1][i]));
+    // Plain loops here: LLVM leaves `array::from_fn` and `map` as calls of a closure.
+    let (mut s, mut t) = ([0.0; 16], [0.0; 16]);
+    for i in 0..16 {
+        s[i] = X::fold(c[0][i]);
+        t[i] = Y::fold(c[1][i]);
+    }
     let mut which = [None; 4];
     for (q, lanes) in QUAD_LANES.iter().enumerate() {
         if quad_mask(live, q) != 0 {
-            let ddx: [f32; 3] = std::array::from_fn(|j| c[j][lanes[1]] - c[j][lanes[0]]);
-            let ddy: [f32; 3] = std::array::from_fn(|j| c[j][lanes[2]] - c[j][lanes[0]]);
+            let (l0, l1, l2) = (lanes[0], lanes[1], lanes[2]);
+            let ddx = [c[0][l1] - c[0][l0], c[1][l1] - c[1][l0], c[2][l1] - c[2][l0]];
+            let ddy = [c[0][l2] - c[0][l0], c[1][l2] - c[1][l0], c[2][l2] - c[2][l0]];
             let c0 = [c[0][lanes[0]], c[1][lanes[0]], c[2][lanes[0]]];
             which[q] = Some(quad_levels(sampler, ddx, ddy, &[c0; 4]));
         }
     }
-    let mut live_levels = which.iter().flatten();
-    let first = live_levels.next().copied();
-    if let Some(first) = first.filter(|f| live_levels.all(|l| l == f)) {
-        match first {
-            Levels::One(d, Filter::Linear) => {
-                linear_lanes::<X, Y>(&Level2d::of(&levels[d]), &s, &t, values);
-                return;
-            }
-            Levels::Two(d1, d2, frac) if sampler.min == Filter::Linear => {
-                let w = (frac * 256.0) as i32;
-                let mut b = [[0i32; 16]; 4];
-                linear_lanes::<X, Y>(&Level2d::of(&levels[d1]), &s, &t, values);
-                linear_lanes::<X, Y>(&Level2d::of(&levels[d2]), &s, &t, &mut b);
-                for (a, b) in values.iter_mut().zip(&b) {
-                    for i in 0..16 {
-                        a[i] = lerp8(a[i], b[i], w);
-                    }
+    // Linear filtering in every live quad: the lane loops, each lane in its quad's levels
+    // (one level as a blend of that level with itself at weight 0, which is its value).
+    let linear = |l: &Option<Levels>| match l {
+        None => true,
+        Some(Levels::One(_, mode)) => *mode == Filter::Linear,
+        Some(Levels::Two(..)) => sampler.min == Filter::Linear,
+    };
+    if let (Some(any), true) = (which.iter().flatten().next().copied(), which.iter().all(linear)) {
+        let mut first = [0usize; 4];
+        let mut second = [0usize; 4];
+        let mut weight = [0i32; 4];
+        for q in 0..4 {
+            // Quads without a live lane read a live quad's levels (any index is inside them).
+            match which[q].unwrap_or(any) {
+                Levels::One(d, _) => (first[q], second[q]) = (d, d),
+                Levels::Two(d1, d2, frac) => {
+                    (first[q], second[q], weight[q]) = (d1, d2, (frac * 256.0) as i32);
+                    *two |= QUAD_LANES[q].iter().fold(0u16, |m, &i| m | (1 << i));
                 }
-                *two = 0xffff;
-                return;
             }
-            _ => {}
         }
+        let mut b = [[0i32; 16]; 4];
+        let of = |d: [usize; 4]| {
+            let l = |q: usize| Level2d::of(&levels[d[q]]);
+            [l(0), l(1), l(2), l(3)]
+        };
+        linear_lanes::<X, Y>(&of(first), &s, &t, values);
+        if *two != 0 {
+            linear_lanes::<X, Y>(&of(second), &s, &t, &mut b);
+            let mut w = [0i32; 16];
+            for i in 0..16 {
+                w[i] = weight[QUAD_OF_LANE[i]];
+            }
+            for (a, b) in values.iter_mut().zip(&b) {
+                for i in 0..16 {
+                    a[i] = lerp8(a[i], b[i], w[i]);
+                }
+            }
+        }
+        return;
     }
     let mut words = [0u64; 16];
     for (q, lanes) in QUAD_LANES.iter().enumerate() {
@@ -773,27 +795,34 @@ fn lerp8(a: i32, b: i32, w: i32) -> i32 {
     a + (((b - a) * w + 128) >> 8)
 }
 
-/// [`linear`] over 16 lanes, in lane loops: the two texels' indices along axis `k` of the
-/// folded coordinates `s` and the weight of the second in 1/256. [`fixed`]'s rounding by
-/// the magic number in every lane, and its exact path for the lanes beyond 2²².
+/// The quad of each lane of a block ([`QUAD_LANES`]).
+const QUAD_OF_LANE: [usize; 16] = [0, 0, 1, 1, 0, 0, 1, 1, 2, 2, 3, 3, 2, 2, 3, 3];
+
+/// [`linear`] over 16 lanes, in lane loops, each lane in the level of its quad (`grids`):
+/// the two texels' indices along axis `k` of the folded coordinates `s` and the weight of
+/// the second in 1/256. [`fixed`]'s rounding by the magic number in every lane, and its
+/// exact path for the lanes beyond 2²².
 #[inline(always)]
-fn linear_axis_lanes<W: AxisWrap>(grid: &Grid, k: usize, s: &F32s) -> ([i32; 16], [i32; 16], [i32; 16]) {
+fn linear_axis_lanes<W: AxisWrap>(grids: &[Grid; 4], k: usize, s: &F32s) -> ([i32; 16], [i32; 16], [i32; 16]) {
     const MAGIC: f32 = 12_582_912.0;
-    let sizef = grid.sizef[k];
+    let (mut sizef, mut size, mut mask) = ([0.0; 16], [0i32; 16], [0i32; 16]);
+    for i in 0..16 {
+        let g = &grids[QUAD_OF_LANE[i]];
+        (sizef[i], size[i], mask[i]) = (g.sizef[k], g.size[k], g.mask[k]);
+    }
     let mut f = [0i32; 16];
     let mut big = 0u32;
     for i in 0..16 {
-        let u = if s[i].is_finite() { s[i] * sizef - 0.5 } else { 0.0 };
+        let u = if s[i].is_finite() { s[i] * sizef[i] - 0.5 } else { 0.0 };
         let v = u * 256.0;
         f[i] = ((v + MAGIC).to_bits() as i32).wrapping_sub(MAGIC.to_bits() as i32);
         big |= u32::from(!(v.abs() < 4_194_304.0)) << i;
     }
     while big != 0 {
         let i = big.trailing_zeros() as usize;
-        f[i] = fixed(if s[i].is_finite() { s[i] * sizef - 0.5 } else { 0.0 });
+        f[i] = fixed(if s[i].is_finite() { s[i] * sizef[i] - 0.5 } else { 0.0 });
         big &= big - 1;
     }
-    let (size, mask) = (grid.size[k], grid.mask[k]);
     let mut i0 = [0i32; 16];
     let mut i1 = [0i32; 16];
     let mut w = [0i32; 16];
@@ -802,23 +831,27 @@ fn linear_axis_lanes<W: AxisWrap>(grid: &Grid, k: usize, s: &F32s) -> ([i32; 16]
         i1[i] = i0[i] + 1;
         w[i] = f[i] & 0xff;
     }
-    (W::index_lanes(&i0, size, mask), W::index_lanes(&i1, size, mask), w)
+    (W::index_lanes(&i0, &size, &mask), W::index_lanes(&i1, &size, &mask), w)
 }
 
-/// The bilinear lookups of 16 lanes in one level at the folded coordinates (s, t): the
-/// channel values of [`filter`] (linear), lerped channel by channel in lane loops.
+/// The bilinear lookups of 16 lanes at the folded coordinates (s, t), each lane in the
+/// level of its quad: the channel values of [`filter`] (linear), lerped channel by channel
+/// in lane loops.
 #[inline(always)]
-fn linear_lanes<X: AxisWrap, Y: AxisWrap>(level: &Level2d, s: &F32s, t: &F32s, out: &mut [[i32; 16]; 4]) {
-    let (x0, x1, wx) = linear_axis_lanes::<X>(&level.grid, 0, s);
-    let (y0, y1, wy) = linear_axis_lanes::<Y>(&level.grid, 1, t);
-    let width = level.width as usize;
+fn linear_lanes<X: AxisWrap, Y: AxisWrap>(levels: &[Level2d; 4], s: &F32s, t: &F32s, out: &mut [[i32; 16]; 4]) {
+    let grids = [levels[0].grid, levels[1].grid, levels[2].grid, levels[3].grid];
+    let (x0, x1, wx) = linear_axis_lanes::<X>(&grids, 0, s);
+    let (y0, y1, wy) = linear_axis_lanes::<Y>(&grids, 1, t);
     let mut texels = [[0u32; 16]; 4];
-    for i in 0..16 {
-        let (r0, r1) = (y0[i] as usize * width, y1[i] as usize * width);
-        texels[0][i] = u32::from_le_bytes(level.texels[r0 + x0[i] as usize]);
-        texels[1][i] = u32::from_le_bytes(level.texels[r0 + x1[i] as usize]);
-        texels[2][i] = u32::from_le_bytes(level.texels[r1 + x0[i] as usize]);
-        texels[3][i] = u32::from_le_bytes(level.texels[r1 + x1[i] as usize]);
+    for (level, lanes) in levels.iter().zip(&QUAD_LANES) {
+        let width = level.width as usize;
+        for &i in lanes {
+            let (r0, r1) = (y0[i] as usize * width, y1[i] as usize * width);
+            texels[0][i] = u32::from_le_bytes(level.texels[r0 + x0[i] as usize]);
+            texels[1][i] = u32::from_le_bytes(level.texels[r0 + x1[i] as usize]);
+            texels[2][i] = u32::from_le_bytes(level.texels[r1 + x0[i] as usize]);
+            texels[3][i] = u32::from_le_bytes(level.texels[r1 + x1[i] as usize]);
+        }
     }
     for (k, o) in out.iter_mut().enumerate() {
         let shift = 8 * k as u32;
