@@ -340,6 +340,19 @@ pub struct TextureStage {
 }
 
 impl TextureStage {
+    /// The texture colors (`out[channel][lane]`, before the environment) of the lanes
+    /// `live` of a 4×4 block, lanes row-major (lane `i` at column `i & 3`, row `i >> 2`,
+    /// rows upward) and the coordinates `c` already divided by q: the level of detail per
+    /// 2×2 quad of rows (0, 1) and (2, 3), the upper row of each (llvmpipe's) giving the x
+    /// derivative and its left column the y one. Every lane of a quad with a live lane must
+    /// hold its pixel's coordinates. This is the implicit-LOD lookup a program's sample
+    /// instruction needs (`shader::exec::Textures::sample` over a draw's stages: divide by
+    /// q when projective, then call this); lanes of other quads are left alone.
+    #[inline]
+    pub fn sample_block(&self, c: &[F32s; 3], live: u16, out: &mut [F32s; 4]) {
+        self.kernel.sample_block(&self.sampler, c, live, out);
+    }
+
     pub fn new(unit: usize, sampler: sampler::Sampler, env: env::TexEnv, slot: usize) -> TextureStage {
         let kernel = kernel::Kernel::choose(&sampler);
         let derivatives = sampler.mip.is_some() || sampler.mag != sampler.min;
@@ -553,7 +566,7 @@ impl Texturing {
                     c[j][i] = v[j][i] * inv;
                 }
             }
-            s.kernel.sample_block(&s.sampler, &c, live, t);
+            s.sample_block(&c, live, t);
         }
         if self.stages.iter().all(|s| s.env.has_lanes()) {
             for (s, t) in self.stages.iter().zip(&texels) {
@@ -1021,6 +1034,78 @@ mod tests {
             }
         }
         assert!(compared > 1000 && differ > compared / 2, "{compared} {differ}");
+    }
+
+    #[test]
+    fn stage_block_lookups_are_the_quads_lookups() {
+        // The lookup a program's sample instruction calls (row-major lanes) against
+        // `texture_quads` (quad-major lanes) with GL_REPLACE on RGBA, which passes the
+        // texture color through: the same colors lane for lane.
+        use sampler::{DepthMode, Dim, Filter, Sampler, Wrap};
+        use std::sync::Arc;
+        let mut rng = Rng(0x0dd_f00d);
+        let mut levels = Vec::new();
+        for n in [16usize, 8, 4, 2, 1] {
+            let mut img = TexImage::new(n, n, 1, 0, BaseFormat::Rgba).unwrap();
+            img.texels = Texels::Rgba8((0..n * n).map(|_| (rng.next() as u32).to_le_bytes()).collect());
+            levels.push(Arc::new(img));
+        }
+        let sampler = Sampler {
+            dim: Dim::D2,
+            faces: vec![levels],
+            wrap: [Wrap::Repeat, Wrap::MirroredRepeat, Wrap::Repeat],
+            mag: Filter::Linear,
+            min: Filter::Linear,
+            mip: Some(Filter::Linear),
+            border: [0.0; 4],
+            lod_bias: 0.0,
+            min_lod: -1000.0,
+            max_lod: 1000.0,
+            compare: None,
+            depth_mode: DepthMode::Luminance,
+            base: BaseFormat::Rgba,
+        };
+        let env = env::TexEnv { mode: env::EnvMode::Replace, base: BaseFormat::Rgba, color: [0.0; 4] };
+        let texturing = Texturing { stages: vec![TextureStage::new(0, sampler, env, 0)], fb_height: 64 };
+        let mut differ = 0;
+        for _ in 0..200 {
+            let (a, b, d) = (rng.unit() * 4.0, rng.unit() - 0.5, rng.unit() * 0.3);
+            let live = rng.next() as u16 | 1;
+            // Row-major coordinates, with perspective-like curvature per row.
+            let mut c = [[0.0; LANES]; 3];
+            for i in 0..LANES {
+                let (x, y) = ((i & 3) as f32, (i >> 2) as f32);
+                let w = 1.0 + d * y;
+                c[0][i] = (a + b * x) / w;
+                c[1][i] = (b + 0.4 * y + d * x) / w;
+            }
+            let mut out = [[0.0; LANES]; 4];
+            texturing.stages[0].sample_block(&c, live, &mut out);
+            // The same lanes quad-major: lane 4q + 2r + c, r = 0 the quad's higher row.
+            let quad_major = |i: usize| {
+                let (col, row) = (i & 3, i >> 2);
+                4 * ((row >> 1) * 2 + (col >> 1)) + 2 * (1 - (row & 1)) + (col & 1)
+            };
+            let mut varyings = vec![[0.0; LANES]; 4];
+            let mut colors = [[0.5; LANES]; 4];
+            let mut quad_live = 0u16;
+            for i in 0..LANES {
+                let j = quad_major(i);
+                varyings[0][j] = c[0][i];
+                varyings[1][j] = c[1][i];
+                varyings[3][j] = 1.0;
+                quad_live |= ((live >> i) & 1) << j;
+            }
+            texturing.texture_quads(&varyings, quad_live, &mut colors);
+            for i in (0..LANES).filter(|i| live & (1 << i) != 0) {
+                let j = quad_major(i);
+                for k in 0..4 {
+                    assert_eq!(out[k][i].to_bits(), colors[k][j].to_bits(), "lane {i} channel {k}");
+                }
+                differ += usize::from(out[0][i] != out[0][0]);
+            }
+        }
+        assert!(differ > 500, "{differ}");
     }
 
     #[test]
