@@ -816,7 +816,7 @@ fn linear_axis_lanes<W: AxisWrap>(grids: &[Grid; 4], k: usize, s: &F32s) -> ([i3
         let u = if s[i].is_finite() { s[i] * sizef[i] - 0.5 } else { 0.0 };
         let v = u * 256.0;
         f[i] = ((v + MAGIC).to_bits() as i32).wrapping_sub(MAGIC.to_bits() as i32);
-        big |= u32::from(!(v.abs() < 4_194_304.0)) << i;
+        big |= u32::from((v.abs() >= 4_194_304.0) | v.is_nan()) << i;
     }
     while big != 0 {
         let i = big.trailing_zeros() as usize;
@@ -973,6 +973,8 @@ mod tests {
         assert!(checked > 10_000);
     }
 
+    // A lane indexes coordinates, colors and masks alike.
+    #[allow(clippy::needless_range_loop)]
     #[test]
     fn block_lookups_are_the_quad_lookups() {
         // Blocks whose quads choose the same levels (the lane loops) and different ones
@@ -1015,7 +1017,7 @@ mod tests {
                             c[0][i] = origin[0] + step[0] * x + up[0] * y + curve * x * y;
                             c[1][i] = origin[1] + step[1] * x + up[1] * y - curve * y * y;
                         }
-                        if rng.next() % 16 == 0 {
+                        if rng.next().is_multiple_of(16) {
                             c[0][(rng.next() % 16) as usize] =
                                 [f32::NAN, f32::INFINITY, 3.0e9][(rng.next() % 3) as usize];
                         }

@@ -855,6 +855,8 @@ mod tests {
     /// mask. A wrong lane order, a quad of the wrong rows or derivatives taken the wrong
     /// way round change levels of detail (the coordinates vary anisotropically, with
     /// perspective) and so colors.
+    // A lane indexes coordinates, colors and masks alike.
+    #[allow(clippy::needless_range_loop)]
     #[test]
     fn blocks_texture_as_spans_do() {
         use sampler::{DepthMode, Dim, Filter, Sampler, Wrap};
@@ -1036,6 +1038,8 @@ mod tests {
         assert!(compared > 1000 && differ > compared / 2, "{compared} {differ}");
     }
 
+    // A lane indexes coordinates, colors and masks alike.
+    #[allow(clippy::needless_range_loop)]
     #[test]
     fn stage_block_lookups_are_the_quads_lookups() {
         // The lookup a program's sample instruction calls (row-major lanes) against
