@@ -15,8 +15,8 @@
 //! nearest, the arithmetic of [`super::blend::blend_unorm8`], so the bytes are those of the
 //! span path); 16-bit and float targets go through the span path's f32 stages row by row.
 //!
-//! Texturing keeps the span path's code and results: it is called on the block's rows in
-//! array-of-structures form (`crate::texture::Texturing::texture_span`). The colour sum and
+//! Texturing runs over the block's lanes (`crate::texture::Texturing::texture_block`, the
+//! span path's results with the varyings of every lane evaluated once). The colour sum and
 //! fog run over the lanes ([`super::fog::fog_lanes`], varyings from
 //! [`BlockInputs::varying_lanes`]) with the operations of the span path's
 //! [`super::FragmentState::sum_and_fog`], so its bits.
@@ -163,15 +163,6 @@ impl BlockColors {
         match self {
             BlockColors::Uniform(c) => [[c[0]; LANES], [c[1]; LANES], [c[2]; LANES], [c[3]; LANES]],
             BlockColors::Lanes(l) => *l,
-        }
-    }
-
-    /// The colours of row `r` (lanes 4r..4r+4) as pixels.
-    #[inline(always)]
-    fn row(&self, r: usize) -> [[f32; 4]; 4] {
-        match self {
-            BlockColors::Uniform(c) => [*c; 4],
-            BlockColors::Lanes(l) => std::array::from_fn(|c| std::array::from_fn(|k| l[k][4 * r + c])),
         }
     }
 }
@@ -422,11 +413,11 @@ fn shade_colors(
 }
 
 /// The colours of a block's fragments: interpolated (or flat), textured when the draw
-/// textures (row by row through the span path's texturing).
+/// textures (over the block's lanes: `crate::texture::Texturing::texture_block`).
 #[inline(always)]
 fn colors_body(
     fragment: &FragmentState,
-    scratch: &mut Scratch,
+    _scratch: &mut Scratch,
     at: &BlockAt,
     live: u16,
     inputs: &impl BlockInputs,
@@ -440,22 +431,7 @@ fn colors_body(
         return;
     };
     let mut lanes = colors.lanes();
-    for r in 0..4 {
-        let row_live = (live >> (4 * r)) as u64 & 0xf;
-        if row_live == 0 {
-            continue;
-        }
-        let mut row = colors.row(r);
-        let y = at.y + r as i32;
-        texturing.texture_span(&mut row, row_live, at.x, y, &mut scratch.texture, |dx, dy, out| {
-            inputs.varyings(at.x, y, dx, dy, out)
-        });
-        for (c, pixel) in row.iter().enumerate() {
-            for k in 0..4 {
-                lanes[k][4 * r + c] = pixel[k];
-            }
-        }
-    }
+    texturing.texture_block(at.y, live, &mut lanes, |y, first, out| inputs.varying_lanes(at.x, y, first, out));
     *colors = BlockColors::Lanes(lanes);
 }
 

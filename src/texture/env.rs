@@ -132,6 +132,105 @@ impl TexEnv {
     }
 }
 
+/// Lanes of a 4×4 block (see [`super::Texturing::texture_block`]).
+type F32s = [f32; 16];
+
+impl TexEnv {
+    /// Whether [`TexEnv::apply_lanes`] computes this environment (all but GL_COMBINE).
+    #[inline]
+    pub fn has_lanes(&self) -> bool {
+        !matches!(self.mode, EnvMode::Combine(_))
+    }
+
+    /// [`TexEnv::apply`] over the lanes of a block for the classic modes (not GL_COMBINE,
+    /// which reads other units and the primary colour): `colors` holds the previous unit's
+    /// colours and receives this unit's in the lanes `live` (the others keep theirs), `t`
+    /// this unit's texture colours. The same operations per lane as `apply`, so its bits.
+    #[inline(always)]
+    pub fn apply_lanes(&self, colors: &mut [F32s; 4], t: &[F32s; 4], live: u16) {
+        let has_color = !matches!(self.base, BaseFormat::Alpha);
+        let has_alpha = matches!(
+            self.base,
+            BaseFormat::Alpha | BaseFormat::LuminanceAlpha | BaseFormat::Intensity | BaseFormat::Rgba
+        );
+        let cc = self.color;
+        match self.mode {
+            EnvMode::Replace => lanes_env(
+                colors,
+                t,
+                live,
+                |cf, t, _, _| if has_color { t } else { cf },
+                |cf, ta, _| if has_alpha { ta } else { cf },
+            ),
+            EnvMode::Modulate => lanes_env(
+                colors,
+                t,
+                live,
+                |cf, t, _, _| if has_color { cf * t } else { cf },
+                |cf, ta, _| if has_alpha { cf * ta } else { cf },
+            ),
+            EnvMode::Decal => match self.base {
+                BaseFormat::Rgb => lanes_env(colors, t, live, |_, t, _, _| t, |cf, _, _| cf),
+                BaseFormat::Rgba => lanes_env(colors, t, live, |cf, t, ta, _| cf * (1.0 - ta) + t * ta, |cf, _, _| cf),
+                _ => lanes_env(colors, t, live, |cf, _, _, _| cf, |cf, _, _| cf),
+            },
+            EnvMode::Blend => lanes_env(
+                colors,
+                t,
+                live,
+                |cf, t, _, k| if has_color { cf * (1.0 - t) + cc[k] * t } else { cf },
+                |cf, ta, _| match self.base {
+                    BaseFormat::Intensity => cf * (1.0 - ta) + cc[3] * ta,
+                    _ if has_alpha => cf * ta,
+                    _ => cf,
+                },
+            ),
+            EnvMode::Add => lanes_env(
+                colors,
+                t,
+                live,
+                |cf, t, _, _| if has_color { cf + t } else { cf },
+                |cf, ta, _| match self.base {
+                    BaseFormat::Intensity => cf + ta,
+                    _ if has_alpha => cf * ta,
+                    _ => cf,
+                },
+            ),
+            EnvMode::Combine(_) => {}
+        }
+    }
+}
+
+/// `f(previous, texel, texel alpha, k)` per colour channel k < 3 and `g(previous alpha,
+/// texel alpha, 0)` for alpha over a block's lanes, clamped to [0, 1] and stored in the
+/// lanes `live`.
+#[inline(always)]
+fn lanes_env(
+    colors: &mut [F32s; 4],
+    t: &[F32s; 4],
+    live: u16,
+    f: impl Fn(f32, f32, f32, usize) -> f32,
+    g: impl Fn(f32, f32, f32) -> f32,
+) {
+    let ta = t[3];
+    for k in 0..3 {
+        let (cf, tk) = (colors[k], &t[k]);
+        let mut out = cf;
+        for i in 0..16 {
+            let v = clamp01(f(cf[i], tk[i], ta[i], k));
+            out[i] = if live & (1 << i) != 0 { v } else { cf[i] };
+        }
+        colors[k] = out;
+    }
+    let cf = colors[3];
+    let mut out = cf;
+    for i in 0..16 {
+        let v = clamp01(g(cf[i], ta[i], 0.0));
+        out[i] = if live & (1 << i) != 0 { v } else { cf[i] };
+    }
+    colors[3] = out;
+}
+
 /// The color of a combine source.
 #[inline]
 fn source(

@@ -158,6 +158,15 @@ trait AxisWrap {
     }
     /// The index of an integer texel position.
     fn index(i: i32, size: i32, mask: i32) -> i32;
+    /// [`AxisWrap::index`] of 16 lanes, each with its level's size and mask.
+    #[inline(always)]
+    fn index_lanes(i: &[i32; 16], size: &[i32; 16], mask: &[i32; 16]) -> [i32; 16] {
+        let mut out = [0; 16];
+        for k in 0..16 {
+            out[k] = Self::index(i[k], size[k], mask[k]);
+        }
+        out
+    }
 }
 
 struct Repeat;
@@ -172,6 +181,21 @@ impl AxisWrap for Repeat {
         } else {
             repeat(i, size)
         }
+    }
+    #[inline(always)]
+    fn index_lanes(i: &[i32; 16], size: &[i32; 16], mask: &[i32; 16]) -> [i32; 16] {
+        // The branch on the sizes once, not per lane: masks vectorise.
+        let mut out = [0; 16];
+        if mask.iter().all(|&m| m >= 0) {
+            for k in 0..16 {
+                out[k] = i[k] & mask[k];
+            }
+        } else {
+            for k in 0..16 {
+                out[k] = repeat(i[k], size[k]);
+            }
+        }
+        out
     }
 }
 
@@ -576,6 +600,270 @@ fn depth_quad<'a, T: DepthTexels<'a>>(
     true
 }
 
+use super::F32s;
+
+/// The lanes of the 2×2 quads of a block whose row pairs (0, 1) and (2, 3) are llvmpipe's
+/// quads, in the order [`Kernel::sample_quad`] takes them: upper left, upper right, lower
+/// left, lower right of llvmpipe's y-down rows (its upper row is the block's higher row).
+pub(super) const QUAD_LANES: [[usize; 4]; 4] = [[4, 5, 0, 1], [6, 7, 2, 3], [12, 13, 8, 9], [14, 15, 10, 11]];
+
+/// The live lanes of quad `q` of a block mask, as a 4-bit quad mask in [`QUAD_LANES`] order.
+#[inline(always)]
+pub(super) fn quad_mask(live: u16, q: usize) -> u8 {
+    let l = QUAD_LANES[q];
+    (0..4).fold(0u8, |m, k| m | ((((live >> l[k]) & 1) as u8) << k))
+}
+
+impl Kernel {
+    /// The texture colors of the lanes `live` of a block whose quads are [`QUAD_LANES`]:
+    /// `c` the coordinates (s, t, r divided by q) of every lane (those of a quad with a live
+    /// lane give its derivatives, live or not); `out[channel][lane]` receives the colors of
+    /// the live lanes (the others are left alone or zero). Per quad the very bits of
+    /// [`Kernel::sample_quad`].
+    pub(super) fn sample_block(self, sampler: &Sampler, c: &[F32s; 3], live: u16, out: &mut [F32s; 4]) {
+        match self {
+            Kernel::Rgba2d => {
+                let wrap = sampler.wrap;
+                let mut values = [[0i32; 16]; 4];
+                let mut two = 0u16;
+                dispatch_wrap!(rgba_block, wrap, sampler, c, live, &mut values, &mut two);
+                // u8 → f32 as the reference converts it: `/ 255` from one level, `· (1/255)`
+                // from a blend of two (see DIV_255).
+                for (channel, v) in out.iter_mut().zip(&values) {
+                    for (i, o) in channel.iter_mut().enumerate() {
+                        let x = v[i] as f32;
+                        *o = if two & (1 << i) != 0 { x * (1.0 / 255.0) } else { x / 255.0 };
+                    }
+                }
+            }
+            _ => {
+                // Other kernels: a quad at a time.
+                for (q, lanes) in QUAD_LANES.iter().enumerate() {
+                    let m = quad_mask(live, q);
+                    if m == 0 {
+                        continue;
+                    }
+                    let quad: [[f32; 3]; 4] = std::array::from_fn(|l| std::array::from_fn(|j| c[j][lanes[l]]));
+                    let mut colors = [[0.0; 4]; 4];
+                    self.sample_quad(sampler, &quad, m, &mut colors);
+                    for l in super::lanes4(m) {
+                        for (k, channel) in out.iter_mut().enumerate() {
+                            channel[lanes[l]] = colors[l][k];
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// Calls `$f::<X, Y>($args…)` with the types of the wrap modes `$wrap`.
+macro_rules! dispatch_wrap {
+    ($f:ident, $wrap:expr, $($args:expr),*) => {{
+        macro_rules! with_y {
+            ($x:ty) => {
+                match $wrap[1] {
+                    Wrap::Repeat => $f::<$x, Repeat>($($args),*),
+                    Wrap::MirroredRepeat => $f::<$x, Mirror>($($args),*),
+                    _ => $f::<$x, Edge>($($args),*),
+                }
+            };
+        }
+        match $wrap[0] {
+            Wrap::Repeat => with_y!(Repeat),
+            Wrap::MirroredRepeat => with_y!(Mirror),
+            _ => with_y!(Edge),
+        }
+    }};
+}
+use dispatch_wrap;
+
+/// The RGBA8 lookups of a block's live lanes as 8-bit channel values (`values[channel][lane]`),
+/// per quad in the levels its derivatives choose; `two` receives the lanes blended from two
+/// levels. When every live quad reads the same levels with linear filtering (a surface
+/// that is not too steep), all 16 lanes are filtered together in lane loops
+/// ([`linear_lanes`]); otherwise quad by quad, lane by lane.
+#[inline(always)]
+fn rgba_block<X: AxisWrap, Y: AxisWrap>(
+    sampler: &Sampler,
+    c: &[F32s; 3],
+    live: u16,
+    values: &mut [[i32; 16]; 4],
+    two: &mut u16,
+) {
+    let levels = &sampler.faces[0];
+    // Plain loops here: LLVM leaves `array::from_fn` and `map` as calls of a closure.
+    let (mut s, mut t) = ([0.0; 16], [0.0; 16]);
+    for i in 0..16 {
+        s[i] = X::fold(c[0][i]);
+        t[i] = Y::fold(c[1][i]);
+    }
+    let mut which = [None; 4];
+    for (q, lanes) in QUAD_LANES.iter().enumerate() {
+        if quad_mask(live, q) != 0 {
+            let (l0, l1, l2) = (lanes[0], lanes[1], lanes[2]);
+            let ddx = [c[0][l1] - c[0][l0], c[1][l1] - c[1][l0], c[2][l1] - c[2][l0]];
+            let ddy = [c[0][l2] - c[0][l0], c[1][l2] - c[1][l0], c[2][l2] - c[2][l0]];
+            let c0 = [c[0][lanes[0]], c[1][lanes[0]], c[2][lanes[0]]];
+            which[q] = Some(quad_levels(sampler, ddx, ddy, &[c0; 4]));
+        }
+    }
+    // Linear filtering in every live quad: the lane loops, each lane in its quad's levels
+    // (one level as a blend of that level with itself at weight 0, which is its value).
+    let linear = |l: &Option<Levels>| match l {
+        None => true,
+        Some(Levels::One(_, mode)) => *mode == Filter::Linear,
+        Some(Levels::Two(..)) => sampler.min == Filter::Linear,
+    };
+    if let (Some(any), true) = (which.iter().flatten().next().copied(), which.iter().all(linear)) {
+        let mut first = [0usize; 4];
+        let mut second = [0usize; 4];
+        let mut weight = [0i32; 4];
+        for q in 0..4 {
+            // Quads without a live lane read a live quad's levels (any index is inside them).
+            match which[q].unwrap_or(any) {
+                Levels::One(d, _) => (first[q], second[q]) = (d, d),
+                Levels::Two(d1, d2, frac) => {
+                    (first[q], second[q], weight[q]) = (d1, d2, (frac * 256.0) as i32);
+                    *two |= QUAD_LANES[q].iter().fold(0u16, |m, &i| m | (1 << i));
+                }
+            }
+        }
+        let mut b = [[0i32; 16]; 4];
+        let of = |d: [usize; 4]| {
+            let l = |q: usize| Level2d::of(&levels[d[q]]);
+            [l(0), l(1), l(2), l(3)]
+        };
+        linear_lanes::<X, Y>(&of(first), &s, &t, values);
+        if *two != 0 {
+            linear_lanes::<X, Y>(&of(second), &s, &t, &mut b);
+            let mut w = [0i32; 16];
+            for i in 0..16 {
+                w[i] = weight[QUAD_OF_LANE[i]];
+            }
+            for (a, b) in values.iter_mut().zip(&b) {
+                for i in 0..16 {
+                    a[i] = lerp8(a[i], b[i], w[i]);
+                }
+            }
+        }
+        return;
+    }
+    let mut words = [0u64; 16];
+    for (q, lanes) in QUAD_LANES.iter().enumerate() {
+        let m = quad_mask(live, q);
+        let Some(levels_q) = which[q] else { continue };
+        match levels_q {
+            Levels::One(d, mode) => {
+                let level = Level2d::of(&levels[d]);
+                for l in super::lanes4(m) {
+                    let i = lanes[l];
+                    words[i] = match mode {
+                        Filter::Linear => filter::<X, Y, true>(&level, s[i], t[i]),
+                        Filter::Nearest => filter::<X, Y, false>(&level, s[i], t[i]),
+                    };
+                }
+            }
+            Levels::Two(d1, d2, frac) => {
+                let w = (frac * 256.0) as i32 as u64;
+                let (a, b) = (Level2d::of(&levels[d1]), Level2d::of(&levels[d2]));
+                for l in super::lanes4(m) {
+                    let i = lanes[l];
+                    words[i] = match sampler.min {
+                        Filter::Linear => {
+                            lerp(filter::<X, Y, true>(&a, s[i], t[i]), filter::<X, Y, true>(&b, s[i], t[i]), w)
+                        }
+                        Filter::Nearest => {
+                            lerp(filter::<X, Y, false>(&a, s[i], t[i]), filter::<X, Y, false>(&b, s[i], t[i]), w)
+                        }
+                    };
+                    *two |= 1 << i;
+                }
+            }
+        }
+    }
+    for (k, v) in values.iter_mut().enumerate() {
+        for i in 0..16 {
+            v[i] = ((words[i] >> (16 * k)) & 0xff) as i32;
+        }
+    }
+}
+
+/// llvmpipe's 8-bit lerp, weight `w` in 1/256 (what [`lerp`] does on every field).
+#[inline(always)]
+fn lerp8(a: i32, b: i32, w: i32) -> i32 {
+    a + (((b - a) * w + 128) >> 8)
+}
+
+/// The quad of each lane of a block ([`QUAD_LANES`]).
+const QUAD_OF_LANE: [usize; 16] = [0, 0, 1, 1, 0, 0, 1, 1, 2, 2, 3, 3, 2, 2, 3, 3];
+
+/// [`linear`] over 16 lanes, in lane loops, each lane in the level of its quad (`grids`):
+/// the two texels' indices along axis `k` of the folded coordinates `s` and the weight of
+/// the second in 1/256. [`fixed`]'s rounding by the magic number in every lane, and its
+/// exact path for the lanes beyond 2²².
+#[inline(always)]
+fn linear_axis_lanes<W: AxisWrap>(grids: &[Grid; 4], k: usize, s: &F32s) -> ([i32; 16], [i32; 16], [i32; 16]) {
+    const MAGIC: f32 = 12_582_912.0;
+    let (mut sizef, mut size, mut mask) = ([0.0; 16], [0i32; 16], [0i32; 16]);
+    for i in 0..16 {
+        let g = &grids[QUAD_OF_LANE[i]];
+        (sizef[i], size[i], mask[i]) = (g.sizef[k], g.size[k], g.mask[k]);
+    }
+    let mut f = [0i32; 16];
+    let mut big = 0u32;
+    for i in 0..16 {
+        let u = if s[i].is_finite() { s[i] * sizef[i] - 0.5 } else { 0.0 };
+        let v = u * 256.0;
+        f[i] = ((v + MAGIC).to_bits() as i32).wrapping_sub(MAGIC.to_bits() as i32);
+        big |= u32::from((v.abs() >= 4_194_304.0) | v.is_nan()) << i;
+    }
+    while big != 0 {
+        let i = big.trailing_zeros() as usize;
+        f[i] = fixed(if s[i].is_finite() { s[i] * sizef[i] - 0.5 } else { 0.0 });
+        big &= big - 1;
+    }
+    let mut i0 = [0i32; 16];
+    let mut i1 = [0i32; 16];
+    let mut w = [0i32; 16];
+    for i in 0..16 {
+        i0[i] = f[i] >> 8;
+        i1[i] = i0[i] + 1;
+        w[i] = f[i] & 0xff;
+    }
+    (W::index_lanes(&i0, &size, &mask), W::index_lanes(&i1, &size, &mask), w)
+}
+
+/// The bilinear lookups of 16 lanes at the folded coordinates (s, t), each lane in the
+/// level of its quad: the channel values of [`filter`] (linear), lerped channel by channel
+/// in lane loops.
+#[inline(always)]
+fn linear_lanes<X: AxisWrap, Y: AxisWrap>(levels: &[Level2d; 4], s: &F32s, t: &F32s, out: &mut [[i32; 16]; 4]) {
+    let grids = [levels[0].grid, levels[1].grid, levels[2].grid, levels[3].grid];
+    let (x0, x1, wx) = linear_axis_lanes::<X>(&grids, 0, s);
+    let (y0, y1, wy) = linear_axis_lanes::<Y>(&grids, 1, t);
+    let mut texels = [[0u32; 16]; 4];
+    for (level, lanes) in levels.iter().zip(&QUAD_LANES) {
+        let width = level.width as usize;
+        for &i in lanes {
+            let (r0, r1) = (y0[i] as usize * width, y1[i] as usize * width);
+            texels[0][i] = u32::from_le_bytes(level.texels[r0 + x0[i] as usize]);
+            texels[1][i] = u32::from_le_bytes(level.texels[r0 + x1[i] as usize]);
+            texels[2][i] = u32::from_le_bytes(level.texels[r1 + x0[i] as usize]);
+            texels[3][i] = u32::from_le_bytes(level.texels[r1 + x1[i] as usize]);
+        }
+    }
+    for (k, o) in out.iter_mut().enumerate() {
+        let shift = 8 * k as u32;
+        for i in 0..16 {
+            let ch = |p: u32| ((p >> shift) & 0xff) as i32;
+            let upper = lerp8(ch(texels[0][i]), ch(texels[1][i]), wx[i]);
+            let lower = lerp8(ch(texels[2][i]), ch(texels[3][i]), wx[i]);
+            o[i] = lerp8(upper, lower, wy[i]);
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -683,6 +971,90 @@ mod tests {
             }
         }
         assert!(checked > 10_000);
+    }
+
+    // A lane indexes coordinates, colors and masks alike.
+    #[allow(clippy::needless_range_loop)]
+    #[test]
+    fn block_lookups_are_the_quad_lookups() {
+        // Blocks whose quads choose the same levels (the lane loops) and different ones
+        // (steep coordinates: quad by quad), every mask shape: each live lane gets the bits
+        // of its quad's `sample_quad`, the lanes in `QUAD_LANES` order.
+        let mut rng = Rng(0x1234_5678_9abc_def1);
+        let wraps = [Wrap::Repeat, Wrap::ClampToEdge, Wrap::MirroredRepeat];
+        let filters = [Filter::Nearest, Filter::Linear];
+        let mut checked = 0;
+        let mut uniform = 0;
+        for (w, h) in [(8, 8), (5, 3), (16, 16), (12, 20), (64, 32)] {
+            let levels = chain(&mut rng, w, h);
+            for mip in [None, Some(Filter::Nearest), Some(Filter::Linear)] {
+                for case in 0..24 {
+                    let sampler = Sampler {
+                        dim: Dim::D2,
+                        faces: vec![levels.clone()],
+                        wrap: [wraps[case % 3], wraps[(case / 3) % 3], Wrap::Repeat],
+                        mag: filters[(case / 9) % 2],
+                        min: filters[(case / 18 + case) % 2],
+                        mip,
+                        border: [0.0; 4],
+                        lod_bias: [0.0, 0.5, -1.25][case % 3],
+                        min_lod: -1000.0,
+                        max_lod: [1000.0, 2.5][case % 2],
+                        compare: None,
+                        depth_mode: DepthMode::Luminance,
+                        base: BaseFormat::Rgba,
+                    };
+                    let kernel = Kernel::choose(&sampler);
+                    for _ in 0..20 {
+                        let scale = [0.001, 0.02, 0.3, 2.0][(rng.next() % 4) as usize];
+                        let origin = [rng.unit() * 3.0 - 1.0, rng.unit() * 3.0 - 1.0];
+                        let step = [(rng.unit() - 0.5) * scale, (rng.unit() - 0.5) * scale];
+                        let up = [(rng.unit() - 0.5) * scale, (rng.unit() - 0.5) * scale];
+                        let curve = (rng.unit() - 0.5) * scale * 0.3;
+                        let mut c = [[0.0; 16]; 3];
+                        for i in 0..16 {
+                            let (x, y) = ((i & 3) as f32, (i >> 2) as f32);
+                            c[0][i] = origin[0] + step[0] * x + up[0] * y + curve * x * y;
+                            c[1][i] = origin[1] + step[1] * x + up[1] * y - curve * y * y;
+                        }
+                        if rng.next().is_multiple_of(16) {
+                            c[0][(rng.next() % 16) as usize] =
+                                [f32::NAN, f32::INFINITY, 3.0e9][(rng.next() % 3) as usize];
+                        }
+                        let live = [0xffff, rng.next() as u16, 0x0001, 0x8000, 0x0660][(rng.next() % 5) as usize];
+                        let mut out = [[7.0; 16]; 4];
+                        kernel.sample_block(&sampler, &c, live, &mut out);
+                        let mut all_same = true;
+                        let mut first = None;
+                        for (q, lanes) in QUAD_LANES.iter().enumerate() {
+                            let m = quad_mask(live, q);
+                            if m == 0 {
+                                continue;
+                            }
+                            let quad: [[f32; 3]; 4] = std::array::from_fn(|l| [c[0][lanes[l]], c[1][lanes[l]], 0.0]);
+                            let mut reference = [[9.0; 4]; 4];
+                            Kernel::Reference.sample_quad(&sampler, &quad, m, &mut reference);
+                            let ddx = [quad[1][0] - quad[0][0], quad[1][1] - quad[0][1], 0.0];
+                            let ddy = [quad[2][0] - quad[0][0], quad[2][1] - quad[0][1], 0.0];
+                            let which = quad_levels(&sampler, ddx, ddy, &quad);
+                            all_same &= *first.get_or_insert(which) == which;
+                            for l in super::lanes(m) {
+                                let lane: [f32; 4] = std::array::from_fn(|k| out[k][lanes[l]]);
+                                assert_eq!(
+                                    lane.map(f32::to_bits),
+                                    reference[l].map(f32::to_bits),
+                                    "{sampler:?} {c:?} {live:#x} lane {}",
+                                    lanes[l]
+                                );
+                                checked += 1;
+                            }
+                        }
+                        uniform += usize::from(all_same);
+                    }
+                }
+            }
+        }
+        assert!(checked > 20_000 && uniform > 1000, "{checked} {uniform}");
     }
 
     /// A chain of depth levels of `format` from `w` × `h` down to 1 × 1, random depths

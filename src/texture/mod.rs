@@ -281,7 +281,7 @@ pub fn downsample(src: &TexImage, dims: usize) -> Result<TexImage, OutOfMemory> 
     let half = |p: [f32; 4], q: [f32; 4], eight_bit: bool| -> [f32; 4] {
         if eight_bit {
             std::array::from_fn(|k| {
-                let (a, b) = ((p[k] * 255.0).round() as i32, (q[k] * 255.0).round() as i32);
+                let (a, b) = (byte(p[k]) as i32, byte(q[k]) as i32);
                 (a + (((b - a) * 128 + 128) >> 8)) as f32 / 255.0
             })
         } else {
@@ -289,6 +289,12 @@ pub fn downsample(src: &TexImage, dims: usize) -> Result<TexImage, OutOfMemory> 
         }
     };
     let eight_bit = matches!(src.texels, Texels::Rgba8(_));
+    // An 8-bit value v as a float (v / 255, v · (1/255)) back to v: c · 255 is within a few
+    // ulps of v, so adding ½ and truncating rounds it as `round` would, without the libm
+    // call per channel (`roundf`, out of line: most of a mipmap chain's cost).
+    fn byte(c: f32) -> u8 {
+        (c * 255.0 + 0.5) as u8
+    }
     for z in 0..nd {
         for y in 0..nh {
             for x in 0..nw {
@@ -304,7 +310,7 @@ pub fn downsample(src: &TexImage, dims: usize) -> Result<TexImage, OutOfMemory> 
                 let v = half(plane(0), plane(1), eight_bit);
                 let o = out.index(x, y, z);
                 match &mut out.texels {
-                    Texels::Rgba8(t) => t[o] = v.map(|c| (c * 255.0).round() as u8),
+                    Texels::Rgba8(t) => t[o] = v.map(byte),
                     Texels::Depth(_) => out.set_depth_f32(o, v[0]),
                 }
                 if out.has_stencil() {
@@ -334,6 +340,19 @@ pub struct TextureStage {
 }
 
 impl TextureStage {
+    /// The texture colors (`out[channel][lane]`, before the environment) of the lanes
+    /// `live` of a 4×4 block, lanes row-major (lane `i` at column `i & 3`, row `i >> 2`,
+    /// rows upward) and the coordinates `c` already divided by q: the level of detail per
+    /// 2×2 quad of rows (0, 1) and (2, 3), the upper row of each (llvmpipe's) giving the x
+    /// derivative and its left column the y one. Every lane of a quad with a live lane must
+    /// hold its pixel's coordinates. This is the implicit-LOD lookup a program's sample
+    /// instruction needs (`shader::exec::Textures::sample` over a draw's stages: divide by
+    /// q when projective, then call this); lanes of other quads are left alone.
+    #[inline]
+    pub fn sample_block(&self, c: &[F32s; 3], live: u16, out: &mut [F32s; 4]) {
+        self.kernel.sample_block(&self.sampler, c, live, out);
+    }
+
     pub fn new(unit: usize, sampler: sampler::Sampler, env: env::TexEnv, slot: usize) -> TextureStage {
         let kernel = kernel::Kernel::choose(&sampler);
         let derivatives = sampler.mip.is_some() || sampler.mag != sampler.min;
@@ -373,6 +392,9 @@ pub const MAX_UNITS: usize = crate::gl::limits::MAX_TEXTURE_UNITS;
 
 /// Fragments in a block given to [`Texturing::texture_quads`]: four 2×2 quads.
 pub const LANES: usize = 16;
+
+/// One value per lane of a block.
+pub type F32s = [f32; LANES];
 
 /// The lanes of a 4-bit mask, in order.
 #[inline(always)]
@@ -460,6 +482,111 @@ impl Texturing {
                         colors[ch][4 * q + lane] = c[ch];
                     }
                 }
+            }
+        }
+    }
+
+    /// Textures the fragments `live` of a 4×4 block at window row `y` (and some column x), its lanes
+    /// row-major (lane `i` is pixel `(x + (i & 3), y + (i >> 2))`, rows upward):
+    /// `colors[channel][lane]` holds the primary colors and receives the last unit's output
+    /// in the live lanes. `varying_lanes(y0, first, out)` gives varyings `first ..
+    /// first + out.len()` of the 16 lanes of the block at `(x, y0)` (`y0` is `y`, or `y − 1`
+    /// and `y + 3`, see below), each lane the value its pixel's own evaluation gives.
+    ///
+    /// The same bits as [`Texturing::texture_span`] on the block's rows: the level of
+    /// detail is per 2×2 quad of llvmpipe's y-down rows, whose row pairs are the block's
+    /// (0, 1) and (2, 3) when `fb_height − y` is even; otherwise they straddle the block's
+    /// edges, and the lookups that need derivatives run on the blocks one row below and
+    /// three rows above, whose row pairs are those quads (a lookup that needs none takes
+    /// the block as it is). Every lane of a quad with a live lane is evaluated: no
+    /// neighbour is evaluated twice, as the span path does per row.
+    pub fn texture_block(
+        &self,
+        y: i32,
+        live: u16,
+        colors: &mut [F32s; 4],
+        varying_lanes: impl Fn(i32, usize, &mut [F32s]),
+    ) {
+        if self.stages.is_empty() || live == 0 {
+            return;
+        }
+        crate::simd::per_level!({
+            let aligned = (self.fb_height - y) & 1 == 0 || !self.stages.iter().any(|s| s.derivatives);
+            if aligned {
+                self.texture_aligned(y, live, colors, &varying_lanes);
+                return;
+            }
+            // Rows 0..3 of the block are rows 1..4 of the block below, row 3 is row 0 of
+            // the block above.
+            let below = live << 4;
+            if below != 0 {
+                let mut shifted = [[0.0; LANES]; 4];
+                for (s, c) in shifted.iter_mut().zip(colors.iter()) {
+                    s[4..].copy_from_slice(&c[..12]);
+                }
+                self.texture_aligned(y - 1, below, &mut shifted, &varying_lanes);
+                for (s, c) in shifted.iter().zip(colors.iter_mut()) {
+                    c[..12].copy_from_slice(&s[4..]);
+                }
+            }
+            let above = live >> 12;
+            if above != 0 {
+                let mut shifted = [[0.0; LANES]; 4];
+                for (s, c) in shifted.iter_mut().zip(colors.iter()) {
+                    s[..4].copy_from_slice(&c[12..]);
+                }
+                self.texture_aligned(y + 3, above, &mut shifted, &varying_lanes);
+                for (s, c) in shifted.iter().zip(colors.iter_mut()) {
+                    c[12..].copy_from_slice(&s[..4]);
+                }
+            }
+        })
+    }
+
+    /// [`Texturing::texture_block`] on a block whose row pairs are llvmpipe's quads (or
+    /// whose lookups need no derivatives), at window row `y`.
+    #[inline(always)]
+    fn texture_aligned(
+        &self,
+        y: i32,
+        live: u16,
+        colors: &mut [F32s; 4],
+        varying_lanes: &impl Fn(i32, usize, &mut [F32s]),
+    ) {
+        // Each stage's projected coordinates over the lanes, and its texture colors.
+        let mut texels = [[[0.0f32; LANES]; 4]; MAX_UNITS];
+        for (s, t) in self.stages.iter().zip(texels.iter_mut()) {
+            let mut v = [[0.0; LANES]; 4];
+            varying_lanes(y, s.slot, &mut v);
+            let mut c = [[0.0; LANES]; 3];
+            for i in 0..LANES {
+                let q = v[3][i];
+                let inv = if q != 0.0 { 1.0 / q } else { 0.0 };
+                for j in 0..3 {
+                    c[j][i] = v[j][i] * inv;
+                }
+            }
+            s.sample_block(&c, live, t);
+        }
+        if self.stages.iter().all(|s| s.env.has_lanes()) {
+            for (s, t) in self.stages.iter().zip(&texels) {
+                s.env.apply_lanes(colors, t, live);
+            }
+            return;
+        }
+        // GL_COMBINE reads every unit's texture and the primary color: per fragment.
+        for i in (0..LANES).filter(|i| live & (1 << i) != 0) {
+            let mut unit_texels = [[0.0, 0.0, 0.0, 1.0]; MAX_UNITS];
+            for (s, t) in self.stages.iter().zip(&texels) {
+                unit_texels[s.unit] = std::array::from_fn(|k| t[k][i]);
+            }
+            let primary: [f32; 4] = std::array::from_fn(|k| colors[k][i]);
+            let mut previous = primary;
+            for s in &self.stages {
+                previous = s.env.apply(s.unit, previous, primary, &unit_texels);
+            }
+            for (k, c) in colors.iter_mut().enumerate() {
+                c[i] = previous[k];
             }
         }
     }
@@ -705,6 +832,284 @@ mod tests {
         let mut colors = vec![[0.25; 4]; 3];
         none.texture_span(&mut colors, 0b111, 0, 0, &mut scratch, |_, _, _| unreachable!());
         assert_eq!(colors, vec![[0.25; 4]; 3]);
+    }
+
+    /// A small deterministic generator (xorshift).
+    struct Rng(u64);
+    impl Rng {
+        fn next(&mut self) -> u64 {
+            self.0 ^= self.0 << 13;
+            self.0 ^= self.0 >> 7;
+            self.0 ^= self.0 << 17;
+            self.0
+        }
+        fn unit(&mut self) -> f32 {
+            (self.next() >> 40) as f32 / (1u64 << 24) as f32
+        }
+    }
+
+    /// Random draws of one to three units (every kernel: RGBA8 2D, depth with comparison,
+    /// a bordered or clamped 2D image and a cube map through the reference; every classic
+    /// environment and GL_COMBINE), on framebuffers of odd and even heights: each block
+    /// textured over its lanes gives the bits of the span path on its rows, whatever the
+    /// mask. A wrong lane order, a quad of the wrong rows or derivatives taken the wrong
+    /// way round change levels of detail (the coordinates vary anisotropically, with
+    /// perspective) and so colors.
+    // A lane indexes coordinates, colors and masks alike.
+    #[allow(clippy::needless_range_loop)]
+    #[test]
+    fn blocks_texture_as_spans_do() {
+        use sampler::{DepthMode, Dim, Filter, Sampler, Wrap};
+        use std::sync::Arc;
+        let mut rng = Rng(0x5851_f42d_4c95_7f2d);
+        let rgba_chain = |rng: &mut Rng, w: usize, h: usize, border: usize| -> Vec<Arc<TexImage>> {
+            let (mut w, mut h) = (w, h);
+            let mut levels = Vec::new();
+            loop {
+                let (bw, bh) = (w + 2 * border, h + 2 * border);
+                let mut img = TexImage::new(bw, bh, 1, border, BaseFormat::Rgba).unwrap();
+                img.texels = Texels::Rgba8((0..bw * bh).map(|_| (rng.next() as u32).to_le_bytes()).collect());
+                levels.push(Arc::new(img));
+                if w == 1 && h == 1 {
+                    return levels;
+                }
+                (w, h) = ((w / 2).max(1), (h / 2).max(1));
+            }
+        };
+        let mut depth = TexImage::new_depth(16, 16, 1, 0, depth_storage(24, true, false)).unwrap();
+        for i in 0..256 {
+            depth.set_depth_f32(i, rng.unit());
+        }
+        let depth = Arc::new(depth);
+        let wraps = [Wrap::Repeat, Wrap::ClampToEdge, Wrap::MirroredRepeat, Wrap::ClampToBorder, Wrap::Clamp];
+        let filters = [Filter::Nearest, Filter::Linear];
+        let mips = [None, Some(Filter::Nearest), Some(Filter::Linear)];
+        let modes = [
+            env::EnvMode::Modulate,
+            env::EnvMode::Replace,
+            env::EnvMode::Decal,
+            env::EnvMode::Blend,
+            env::EnvMode::Add,
+            env::EnvMode::Combine(env::Combine {
+                rgb: env::CombineFn::Interpolate,
+                alpha: env::CombineFn::Modulate,
+                src_rgb: [env::Source::Texture, env::Source::Previous, env::Source::PrimaryColor],
+                op_rgb: [env::Operand { alpha: false, invert: false }; 3],
+                src_alpha: [env::Source::Texture, env::Source::TextureUnit(0), env::Source::Constant],
+                op_alpha: [env::Operand { alpha: true, invert: true }; 3],
+                scale_rgb: 2.0,
+                scale_alpha: 1.0,
+            }),
+        ];
+        let bases =
+            [BaseFormat::Rgba, BaseFormat::Rgb, BaseFormat::Intensity, BaseFormat::Alpha, BaseFormat::LuminanceAlpha];
+        let mut compared = 0;
+        let mut differ = 0;
+        for draw in 0..60 {
+            let units = 1 + (rng.next() % 3) as usize;
+            let mut stages = Vec::new();
+            for unit in 0..units {
+                let kind = rng.next() % 5;
+                let mip = mips[(rng.next() % 3) as usize];
+                let (dim, faces, compare, wrap) = match kind {
+                    // RGBA8 2D: the specialised kernel.
+                    0 | 1 => (
+                        Dim::D2,
+                        {
+                            let (w, h) = (8 << (rng.next() % 3), 4 << (rng.next() % 3));
+                            vec![rgba_chain(&mut rng, w, h, 0)]
+                        },
+                        None,
+                        [wraps[(rng.next() % 3) as usize], wraps[(rng.next() % 3) as usize], Wrap::Repeat],
+                    ),
+                    // Depth with comparison (the shadow-map kernel).
+                    2 => (
+                        Dim::D2,
+                        vec![vec![depth.clone()]],
+                        Some(crate::gl::CompareFunc::LessEqual),
+                        [wraps[(rng.next() % 3) as usize], Wrap::ClampToEdge, Wrap::Repeat],
+                    ),
+                    // A bordered image, clamped to its border: the reference.
+                    3 => (
+                        Dim::D2,
+                        vec![rgba_chain(&mut rng, 8, 8, 1)],
+                        None,
+                        [wraps[3 + (rng.next() % 2) as usize], Wrap::ClampToBorder, Wrap::Repeat],
+                    ),
+                    // A cube map: the reference.
+                    _ => (
+                        Dim::Cube,
+                        (0..6).map(|_| rgba_chain(&mut rng, 4, 4, 0)).collect(),
+                        None,
+                        [Wrap::ClampToEdge; 3],
+                    ),
+                };
+                let mip = if kind == 2 { None } else { mip };
+                let sampler = Sampler {
+                    dim,
+                    faces,
+                    wrap,
+                    mag: filters[(rng.next() % 2) as usize],
+                    min: filters[(rng.next() % 2) as usize],
+                    mip,
+                    border: [0.25, 0.5, 0.75, 1.0],
+                    lod_bias: [0.0, 0.5, -1.0][(rng.next() % 3) as usize],
+                    min_lod: -1000.0,
+                    max_lod: 1000.0,
+                    compare,
+                    depth_mode: DepthMode::Intensity,
+                    base: BaseFormat::Rgba,
+                };
+                let mode = modes[(rng.next() % modes.len() as u64) as usize];
+                let base = bases[(rng.next() % bases.len() as u64) as usize];
+                let env = env::TexEnv { mode, base, color: [0.2, 0.4, 0.6, 0.8] };
+                stages.push(TextureStage::new(unit, sampler, env, 5 + 4 * unit));
+            }
+            let fb_height = [7, 8, 9, 10, 13][draw % 5];
+            let texturing = Texturing { stages, fb_height };
+            // Varyings: five others, then s, t, r, q per unit, planes with perspective.
+            let n = 5 + 4 * units;
+            let planes: Vec<[f32; 3]> = (0..n)
+                .map(|_| {
+                    let scale = [0.02, 0.2, 1.0][(rng.next() % 3) as usize];
+                    [rng.unit() * 2.0 - 0.5, (rng.unit() - 0.5) * scale, (rng.unit() - 0.5) * scale]
+                })
+                .collect();
+            // w changing fast from row to row: the derivatives of a quad's two rows differ.
+            let (qx, qy) = ((rng.unit() - 0.5) * 0.1, 0.05 + 0.4 * rng.unit());
+            let at = |x: i32, y: i32, out: &mut [f32]| {
+                let (x, y) = (x as f32 + 0.5, y as f32 + 0.5);
+                let w = 1.0 + qx * x + qy * y;
+                // s/q = plane/w: not affine in the window.
+                for (o, p) in out.iter_mut().zip(&planes) {
+                    *o = p[0] + p[1] * x + p[2] * y;
+                }
+                for u in 0..units {
+                    if let Some(q) = out.get_mut(5 + 4 * u + 3) {
+                        *q = w;
+                    }
+                }
+            };
+            for (bx, by) in [(0, 0), (4, 4), (8, 0), (4, 8)] {
+                let live = [0xffff, rng.next() as u16, 1 << (rng.next() % 16), 0x8421][(rng.next() % 4) as usize];
+                let primary = |x: i32, y: i32| [x as f32 / 12.0, y as f32 / 12.0, 0.5, 0.75];
+                let mut colors = [[0.0; LANES]; 4];
+                for i in 0..LANES {
+                    let p = primary(bx + (i & 3) as i32, by + (i >> 2) as i32);
+                    for k in 0..4 {
+                        colors[k][i] = p[k];
+                    }
+                }
+                let before = colors;
+                texturing.texture_block(by, live, &mut colors, |y0, first, out| {
+                    for i in 0..LANES {
+                        let mut v = vec![0.0; n];
+                        at(bx + (i & 3) as i32, y0 + (i >> 2) as i32, &mut v);
+                        for (k, o) in out.iter_mut().enumerate() {
+                            o[i] = v.get(first + k).copied().unwrap_or(0.0);
+                        }
+                    }
+                });
+                let mut scratch = Vec::new();
+                for r in 0..4 {
+                    let y = by + r as i32;
+                    let mut row: Vec<[f32; 4]> = (0..4).map(|c| primary(bx + c, y)).collect();
+                    let row_live = (live >> (4 * r)) as u64 & 0xf;
+                    texturing
+                        .texture_span(&mut row, row_live, bx, y, &mut scratch, |dx, dy, out| at(bx + dx, y + dy, out));
+                    for (c, pixel) in row.iter().enumerate() {
+                        let i = 4 * r + c;
+                        let lane: [f32; 4] = std::array::from_fn(|k| colors[k][i]);
+                        if live & (1 << i) != 0 {
+                            assert_eq!(
+                                lane.map(f32::to_bits),
+                                pixel.map(f32::to_bits),
+                                "draw {draw} block ({bx}, {by}) lane {i} height {fb_height}"
+                            );
+                            compared += 1;
+                            differ += usize::from(lane != std::array::from_fn(|k| before[k][i]));
+                        } else {
+                            assert_eq!(lane, std::array::from_fn(|k| before[k][i]), "a lane outside the mask");
+                        }
+                    }
+                }
+            }
+        }
+        assert!(compared > 1000 && differ > compared / 2, "{compared} {differ}");
+    }
+
+    // A lane indexes coordinates, colors and masks alike.
+    #[allow(clippy::needless_range_loop)]
+    #[test]
+    fn stage_block_lookups_are_the_quads_lookups() {
+        // The lookup a program's sample instruction calls (row-major lanes) against
+        // `texture_quads` (quad-major lanes) with GL_REPLACE on RGBA, which passes the
+        // texture color through: the same colors lane for lane.
+        use sampler::{DepthMode, Dim, Filter, Sampler, Wrap};
+        use std::sync::Arc;
+        let mut rng = Rng(0x0dd_f00d);
+        let mut levels = Vec::new();
+        for n in [16usize, 8, 4, 2, 1] {
+            let mut img = TexImage::new(n, n, 1, 0, BaseFormat::Rgba).unwrap();
+            img.texels = Texels::Rgba8((0..n * n).map(|_| (rng.next() as u32).to_le_bytes()).collect());
+            levels.push(Arc::new(img));
+        }
+        let sampler = Sampler {
+            dim: Dim::D2,
+            faces: vec![levels],
+            wrap: [Wrap::Repeat, Wrap::MirroredRepeat, Wrap::Repeat],
+            mag: Filter::Linear,
+            min: Filter::Linear,
+            mip: Some(Filter::Linear),
+            border: [0.0; 4],
+            lod_bias: 0.0,
+            min_lod: -1000.0,
+            max_lod: 1000.0,
+            compare: None,
+            depth_mode: DepthMode::Luminance,
+            base: BaseFormat::Rgba,
+        };
+        let env = env::TexEnv { mode: env::EnvMode::Replace, base: BaseFormat::Rgba, color: [0.0; 4] };
+        let texturing = Texturing { stages: vec![TextureStage::new(0, sampler, env, 0)], fb_height: 64 };
+        let mut differ = 0;
+        for _ in 0..200 {
+            let (a, b, d) = (rng.unit() * 4.0, rng.unit() - 0.5, rng.unit() * 0.3);
+            let live = rng.next() as u16 | 1;
+            // Row-major coordinates, with perspective-like curvature per row.
+            let mut c = [[0.0; LANES]; 3];
+            for i in 0..LANES {
+                let (x, y) = ((i & 3) as f32, (i >> 2) as f32);
+                let w = 1.0 + d * y;
+                c[0][i] = (a + b * x) / w;
+                c[1][i] = (b + 0.4 * y + d * x) / w;
+            }
+            let mut out = [[0.0; LANES]; 4];
+            texturing.stages[0].sample_block(&c, live, &mut out);
+            // The same lanes quad-major: lane 4q + 2r + c, r = 0 the quad's higher row.
+            let quad_major = |i: usize| {
+                let (col, row) = (i & 3, i >> 2);
+                4 * ((row >> 1) * 2 + (col >> 1)) + 2 * (1 - (row & 1)) + (col & 1)
+            };
+            let mut varyings = vec![[0.0; LANES]; 4];
+            let mut colors = [[0.5; LANES]; 4];
+            let mut quad_live = 0u16;
+            for i in 0..LANES {
+                let j = quad_major(i);
+                varyings[0][j] = c[0][i];
+                varyings[1][j] = c[1][i];
+                varyings[3][j] = 1.0;
+                quad_live |= ((live >> i) & 1) << j;
+            }
+            texturing.texture_quads(&varyings, quad_live, &mut colors);
+            for i in (0..LANES).filter(|i| live & (1 << i) != 0) {
+                let j = quad_major(i);
+                for k in 0..4 {
+                    assert_eq!(out[k][i].to_bits(), colors[k][j].to_bits(), "lane {i} channel {k}");
+                }
+                differ += usize::from(out[0][i] != out[0][0]);
+            }
+        }
+        assert!(differ > 500, "{differ}");
     }
 
     #[test]
