@@ -34,7 +34,7 @@ pub fn draw(
     // Filled polygons are clipped to the guard band; points, lines and outlines to the
     // view volume.
     let planes = if polygons && !outlines { &geometry.planes } else { &geometry.line_planes };
-    let outcodes: Vec<u32> = clip_vertices.iter().map(|v| planes.outcode(v)).collect();
+    let outcodes = planes.outcodes(clip_vertices);
     if outlines {
         let mut outline = Outline { scene, state: state_index, g: geometry, stipple };
         decompose_outlines(mode, clip_vertices.len() as u32, first_vertex, part, |t| {
