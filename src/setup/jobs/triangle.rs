@@ -107,13 +107,13 @@ impl TriangleJob {
         depth_offset: f32,
         varyings: &[[f32; 3]],
     ) -> Option<TriangleJob> {
-        Self::with_accuracy(Accuracy::Conformant, v, flat, depth_offset, varyings)
+        Self::with_accuracy(Accuracy::Conformant, &v, flat, depth_offset, varyings)
     }
 
     /// As [`TriangleJob::new`], interpolating as `accuracy` says.
     pub fn with_accuracy(
         accuracy: Accuracy,
-        v: [WindowVertex; 3],
+        v: &[WindowVertex; 3],
         flat: Option<[f32; 4]>,
         depth_offset: f32,
         varyings: &[[f32; 3]],
@@ -121,7 +121,7 @@ impl TriangleJob {
         let setup = TriangleSetup::new(v.map(|p| [p.x, p.y]))?;
         // Attribute values in the setup's (counter-clockwise) vertex order.
         let order = if setup.was_clockwise { [0, 2, 1] } else { [0, 1, 2] };
-        let v = order.map(|i| v[i]);
+        let v = order.map(|i| &v[i]);
         let fixed = setup.vertices;
         let px = |i: usize| [fixed[i][0] as f64 / ONE as f64, fixed[i][1] as f64 / ONE as f64];
         let (p0, p1, p2) = (px(0), px(1), px(2));
