@@ -88,18 +88,36 @@ type PixelEdges = [[i64; 3]; 3];
 /// The bounds a filled triangle is binned by under `drawn` (its sample bounds when it is
 /// rasterized per sample, else `bounds`) and its pixel edges when binning reads them: to
 /// test the tiles of a box reaching over more than one, or for the tile drop of an
-/// `overwriting` state (a per-sample triangle needs neither: it never overwrites, and its
+/// `overwriting` state (in a `framebuffer` of that rectangle) (a per-sample triangle needs neither: it never overwrites, and its
 /// tiles are not tested).
 #[inline]
-fn triangle_bins(drawn: &DrawState, overwriting: bool, bounds: Rect, job: &TriangleJob) -> (Rect, Option<PixelEdges>) {
+fn triangle_bins(
+    drawn: &DrawState,
+    overwriting: bool,
+    framebuffer: Rect,
+    bounds: Rect,
+    job: &TriangleJob,
+) -> (Rect, Option<PixelEdges>) {
     if drawn.multisample.is_some_and(|m| m.per_sample()) {
         // Rasterized per sample, a triangle may cover samples of pixels whose centre it misses.
         return (job.sample_bounds(), None);
     }
     let r = bounds.intersect(drawn.fill_clip);
     let t = TILE_SIZE as i32;
-    let one_tile = r.is_empty() || (r.x0 / t == (r.x1 - 1) / t && r.y0 / t == (r.y1 - 1) / t);
-    (bounds, (!one_tile || overwriting).then(|| job.setup.pixel_edges()))
+    if r.is_empty() {
+        return (bounds, None);
+    }
+    let (tx, ty) = (r.x0 / t, r.y0 / t);
+    let needed = if tx == (r.x1 - 1) / t && ty == (r.y1 - 1) / t {
+        // Within one tile only a tile drop reads them, and only when the box holds all of
+        // the tile's part the triangle may write (see `Scene::drop_covered_tile`): never
+        // for a small triangle.
+        let region = Rect::from_xywh(tx * t, ty * t, t, t).intersect(framebuffer).intersect(drawn.fill_clip);
+        overwriting && region.intersect(r) == region
+    } else {
+        true
+    };
+    (bounds, needed.then(|| job.setup.pixel_edges()))
 }
 
 /// Whether pixel (x, y)'s centre is covered (`TriangleSetup::covers`, on the pixel edges).
@@ -239,7 +257,8 @@ impl Scene {
         let (drawn, overwriting) = self.draw_state(state);
         let (bounds, clip, edges) = match &primitive {
             Primitive::Triangle(job) => {
-                let (bounds, edges) = triangle_bins(drawn, overwriting, bounds, job);
+                let framebuffer = Rect::from_xywh(0, 0, self.width as i32, self.height as i32);
+                let (bounds, edges) = triangle_bins(drawn, overwriting, framebuffer, bounds, job);
                 (bounds, drawn.fill_clip, edges)
             }
             _ => (bounds, drawn.clip, None),
@@ -279,24 +298,35 @@ impl Scene {
     #[inline]
     fn bin(&mut self, index: u32, state: u32, r: Rect, edges: Option<&PixelEdges>) {
         let t = TILE_SIZE as i32;
-        let (rows, columns) = ((r.y0 / t)..=((r.y1 - 1) / t), (r.x0 / t)..=((r.x1 - 1) / t));
-        let single = rows.start() == rows.end() && columns.start() == columns.end();
+        let (tx0, ty0, tx1, ty1) = (r.x0 / t, r.y0 / t, (r.x1 - 1) / t, (r.y1 - 1) / t);
         let opaque = edges.filter(|_| self.overwriting[state as usize] && self.writes_every_target(state));
-        for ty in rows {
-            for tx in columns.clone() {
-                if let (false, Some(edges)) = (single, edges) {
+        if tx0 == tx1 && ty0 == ty1 {
+            // One tile (small triangles): no tile test.
+            return self.bin_tile(index, state, r, tx0, ty0, opaque);
+        }
+        for ty in ty0..=ty1 {
+            for tx in tx0..=tx1 {
+                if let Some(edges) = edges {
                     if !reaches(edges, Rect::from_xywh(tx * t, ty * t, t, t).intersect(r)) {
                         continue;
                     }
                 }
-                let bin = ty as usize * self.tiles_x + tx as usize;
-                if let Some(edges) = opaque {
-                    self.drop_covered_tile(bin, tx * t, ty * t, r, edges, state);
-                }
-                self.bins[bin].push(index);
-                self.binned += 1;
+                self.bin_tile(index, state, r, tx, ty, opaque);
             }
         }
+    }
+
+    /// Bins primitive `index` into tile `(tx, ty)`, after the tile drop of an opaque
+    /// triangle (`opaque`: its edges) whose binned box is `r`.
+    #[inline(always)]
+    fn bin_tile(&mut self, index: u32, state: u32, r: Rect, tx: i32, ty: i32, opaque: Option<&PixelEdges>) {
+        let t = TILE_SIZE as i32;
+        let bin = ty as usize * self.tiles_x + tx as usize;
+        if let Some(edges) = opaque {
+            self.drop_covered_tile(bin, tx * t, ty * t, r, edges, state);
+        }
+        self.bins[bin].push(index);
+        self.binned += 1;
     }
 
     /// Empties tile `bin` (origin `(x, y)`), but for the clears it does not overwrite, when
