@@ -85,39 +85,33 @@ fn writes_within(tile: Rect, clip: Rect, region: Rect) -> bool {
 /// (x, y) is covered exactly when every `c + a·x + b·y ≥ 0`.
 type PixelEdges = [[i64; 3]; 3];
 
-/// The bounds a filled triangle is binned by under `drawn` (its sample bounds when it is
-/// rasterized per sample, else `bounds`) and its pixel edges when binning reads them: to
-/// test the tiles of a box reaching over more than one, or for the tile drop of an
-/// `overwriting` state (in a `framebuffer` of that rectangle) (a per-sample triangle needs neither: it never overwrites, and its
-/// tiles are not tested).
-#[inline]
-fn triangle_bins(
-    drawn: &DrawState,
-    overwriting: bool,
-    framebuffer: Rect,
-    bounds: Rect,
-    job: &TriangleJob,
-) -> (Rect, Option<PixelEdges>) {
-    if drawn.multisample.is_some_and(|m| m.per_sample()) {
-        // Rasterized per sample, a triangle may cover samples of pixels whose centre it misses.
-        return (job.sample_bounds(), None);
+/// Whether binning a filled triangle rasterized at pixel centres whose clipped box `r`
+/// spans the tiles `span` reads its pixel edges: to test the tiles of a box reaching
+/// over more than one, or for the tile drop of an `overwriting` state under the clip
+/// rectangle `fill_clip` (in a `framebuffer` of that rectangle), which within one tile
+/// needs a box holding all of the tile's part the triangle may write (see
+/// `Scene::drop_covered_tile`): never a small triangle's.
+#[inline(always)]
+fn edges_needed(span: [i32; 4], r: Rect, overwriting: bool, fill_clip: Rect, framebuffer: Rect) -> bool {
+    let [tx0, ty0, tx1, ty1] = span;
+    if tx0 != tx1 || ty0 != ty1 {
+        return true;
     }
-    let r = bounds.intersect(drawn.fill_clip);
     let t = TILE_SIZE as i32;
-    if r.is_empty() {
-        return (bounds, None);
+    overwriting && {
+        let region = Rect::from_xywh(tx0 * t, ty0 * t, t, t).intersect(framebuffer).intersect(fill_clip);
+        region.intersect(r) == region
     }
-    let (tx, ty) = (r.x0 / t, r.y0 / t);
-    let needed = if tx == (r.x1 - 1) / t && ty == (r.y1 - 1) / t {
-        // Within one tile only a tile drop reads them, and only when the box holds all of
-        // the tile's part the triangle may write (see `Scene::drop_covered_tile`): never
-        // for a small triangle.
-        let region = Rect::from_xywh(tx * t, ty * t, t, t).intersect(framebuffer).intersect(drawn.fill_clip);
-        overwriting && region.intersect(r) == region
-    } else {
-        true
-    };
-    (bounds, needed.then(|| job.setup.pixel_edges()))
+}
+
+/// The first and last tile columns and rows of the non-empty rectangle `r` inside the
+/// framebuffer: `[x0, y0, x1, y1]`, inclusive (shifts: the coordinates are not negative).
+#[inline(always)]
+fn tile_span(r: Rect) -> [i32; 4] {
+    const SHIFT: u32 = TILE_SIZE.trailing_zeros();
+    const _: () = assert!(TILE_SIZE == 1 << SHIFT);
+    debug_assert!(r.x0 >= 0 && r.y0 >= 0 && !r.is_empty());
+    [r.x0 >> SHIFT, r.y0 >> SHIFT, (r.x1 - 1) >> SHIFT, (r.y1 - 1) >> SHIFT]
 }
 
 /// Whether pixel (x, y)'s centre is covered (`TriangleSetup::covers`, on the pixel edges).
@@ -191,7 +185,7 @@ impl Scene {
         self.primitives.append(&mut part.primitives);
         for (k, (state, r, edges)) in deferred.into_iter().enumerate() {
             self.primitive_states.push(state);
-            self.bin((first + k) as u32, state, r, edges.as_ref());
+            self.bin((first + k) as u32, state, r, tile_span(r), edges.as_ref());
         }
     }
 
@@ -255,18 +249,26 @@ impl Scene {
     #[inline]
     pub fn add(&mut self, state: u32, bounds: Rect, primitive: Primitive) {
         let (drawn, overwriting) = self.draw_state(state);
-        let (bounds, clip, edges) = match &primitive {
-            Primitive::Triangle(job) => {
-                let framebuffer = Rect::from_xywh(0, 0, self.width as i32, self.height as i32);
-                let (bounds, edges) = triangle_bins(drawn, overwriting, framebuffer, bounds, job);
-                (bounds, drawn.fill_clip, edges)
-            }
-            _ => (bounds, drawn.clip, None),
+        let triangle = match &primitive {
+            Primitive::Triangle(job) => Some(job),
+            _ => None,
+        };
+        // Rasterized per sample, a triangle may cover samples of pixels whose centre it misses.
+        let per_sample = triangle.is_some() && drawn.multisample.is_some_and(|m| m.per_sample());
+        let (bounds, clip) = match triangle {
+            Some(job) if per_sample => (job.sample_bounds(), drawn.fill_clip),
+            Some(_) => (bounds, drawn.fill_clip),
+            None => (bounds, drawn.clip),
         };
         let r = bounds.intersect(clip);
         if r.is_empty() {
             return;
         }
+        let span = tile_span(r);
+        let framebuffer = Rect::from_xywh(0, 0, self.width as i32, self.height as i32);
+        let edges = triangle
+            .filter(|_| !per_sample && edges_needed(span, r, overwriting, drawn.fill_clip, framebuffer))
+            .map(|job| job.setup.pixel_edges());
         if let Some(deferred) = &mut self.deferred {
             // The primitive kept apart from what binning it needs, so that
             // [`Scene::append`] moves all of them in one copy.
@@ -274,7 +276,7 @@ impl Scene {
             return deferred.push((state, r, edges));
         }
         let index = self.primitives.len() as u32;
-        self.bin(index, state, r, edges.as_ref());
+        self.bin(index, state, r, span, edges.as_ref());
         self.primitives.push(primitive);
         self.primitive_states.push(state);
     }
@@ -288,17 +290,18 @@ impl Scene {
     }
 
     /// Bins primitive `index` into the tiles of `r` (its bounds within its clip rectangle,
-    /// not empty); `edges` are the pixel edges of a filled triangle when it is tested
-    /// against tiles or may drop them (see [`triangle_bins`]).
+    /// not empty), which spans the tiles `span` ([`tile_span`]); `edges` are the pixel
+    /// edges of a filled triangle when it is tested against tiles or may drop them (see
+    /// [`edges_needed`]).
     ///
     /// A triangle is binned only into the tiles its edges reach: a tile of its box where
     /// one edge is negative at every pixel the box holds there has none of its pixels (a
     /// long thin triangle's box has many such tiles), so the tile workers never visit it
     /// for this triangle. Which tiles those are does not depend on the thread count.
-    #[inline]
-    fn bin(&mut self, index: u32, state: u32, r: Rect, edges: Option<&PixelEdges>) {
+    #[inline(always)]
+    fn bin(&mut self, index: u32, state: u32, r: Rect, span: [i32; 4], edges: Option<&PixelEdges>) {
         let t = TILE_SIZE as i32;
-        let (tx0, ty0, tx1, ty1) = (r.x0 / t, r.y0 / t, (r.x1 - 1) / t, (r.y1 - 1) / t);
+        let [tx0, ty0, tx1, ty1] = span;
         let opaque = edges.filter(|_| self.overwriting[state as usize] && self.writes_every_target(state));
         if tx0 == tx1 && ty0 == ty1 {
             // One tile (small triangles): no tile test.
