@@ -315,6 +315,9 @@ impl<'a, T: Lane, F: FnMut(i32, i32, u16)> Walker<'a, T, F> {
 
     #[inline(always)]
     fn run(&mut self) {
+        if self.start == 2 {
+            return self.one_block();
+        }
         if self.start > 0 {
             return self.tile(0, 0);
         }
@@ -327,6 +330,34 @@ impl<'a, T: Lane, F: FnMut(i32, i32, u16)> Walker<'a, T, F> {
                 tx += 64;
             }
             ty += 64;
+        }
+    }
+
+    /// An area within one aligned 4×4 block (a small triangle's): that block's pixels
+    /// tested at once, what [`Walker::block16`] does for it without the levels above.
+    #[inline(always)]
+    fn one_block(&mut self) {
+        let area = self.area;
+        let (x, y) = (area.x0 & !3, area.y0 & !3);
+        let base = self.corner(x, y);
+        let [s0, s1, s2] = self.ab.map(|(a, b)| steps(a, b));
+        let mut mask = !negative(&lanes(|j| (base[0] + s0[j]) | (base[1] + s1[j]) | (base[2] + s2[j])));
+        mask &= rect_mask(area, x, y);
+        self.emit_masked(x, y, mask);
+    }
+
+    /// Emits the block at `(x, y)` with the covered pixels `mask`, cut by the stipple.
+    #[inline(always)]
+    fn emit_masked(&mut self, x: i32, y: i32, mut mask: u16) {
+        if let Some(pattern) = self.stipple {
+            let mut bits = 0u16;
+            for r in 0..4 {
+                bits |= ((stipple_mask(pattern, x, y + r) & 0xf) as u16) << (4 * r);
+            }
+            mask &= bits;
+        }
+        if mask != 0 {
+            (self.emit)(x, y, mask);
         }
     }
 
@@ -383,9 +414,6 @@ impl<'a, T: Lane, F: FnMut(i32, i32, u16)> Walker<'a, T, F> {
         let ab4 = self.ab_shl(2);
         let (visit, inside) = if inside {
             (mask, mask)
-        } else if self.start == 2 {
-            // The area's one 4×4 block: its pixels are tested below.
-            (mask, 0)
         } else {
             let (hi, lo) = self.extremes(corner, 4);
             let (visit, inside) = sub_blocks(hi, lo, ab4);
@@ -408,16 +436,7 @@ impl<'a, T: Lane, F: FnMut(i32, i32, u16)> Walker<'a, T, F> {
             if !within && (bx < area.x0 || by < area.y0 || bx + 4 > area.x1 || by + 4 > area.y1) {
                 mask &= rect_mask(area, bx, by);
             }
-            if let Some(pattern) = self.stipple {
-                let mut bits = 0u16;
-                for r in 0..4 {
-                    bits |= ((stipple_mask(pattern, bx, by + r) & 0xf) as u16) << (4 * r);
-                }
-                mask &= bits;
-            }
-            if mask != 0 {
-                (self.emit)(bx, by, mask);
-            }
+            self.emit_masked(bx, by, mask);
         }
     }
 }
@@ -470,6 +489,53 @@ mod tests {
             partial += narrow.iter().filter(|b| b.2 != 0xffff).count();
         }
         assert!(partial > 100);
+    }
+
+    #[test]
+    fn areas_within_one_block_are_walked_exactly() {
+        // Areas inside one aligned 4×4 block (the small-triangle path): every pixel of the
+        // area emitted exactly when all three edges are non-negative there, with i32 and
+        // i64 lanes, and the stipple cutting the mask.
+        let mut seed = 0x9e37_79b9_7f4a_7c15u64;
+        let mut next = |range: i64| {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed % (2 * range as u64)) as i64 - range
+        };
+        let mut pattern = [0u32; 32];
+        pattern.iter_mut().enumerate().for_each(|(i, p)| *p = 0x5555_5555u32.rotate_left(i as u32));
+        let mut covered = 0;
+        for round in 0..2000 {
+            let edges: [PixelEdge; 3] = std::array::from_fn(|_| {
+                let (a, b) = (next(1 << 12) * 256, next(1 << 12) * 256);
+                let (px, py) = (next(8) + 102, next(8) + 42);
+                PixelEdge { c: -(a * px + b * py) + next(1 << 16), a, b }
+            });
+            let (x0, y0) = (100 + next(2).unsigned_abs() as i32, 40 + next(2).unsigned_abs() as i32);
+            let area = Rect { x0, y0, x1: x0 + 1 + next(2).unsigned_abs().min(103 - x0 as u64) as i32, y1: y0 + 2 };
+            let stipple = (round % 3 == 0).then_some(&pattern);
+            let mut seen = Vec::new();
+            walk_blocks(area, &edges, stipple, |x, y, m| seen.push((x, y, m)));
+            let mut expected = 0u16;
+            for y in area.y0..area.y1 {
+                for x in area.x0..area.x1 {
+                    let inside = edges.iter().all(|e| e.c + e.a * x as i64 + e.b * y as i64 >= 0);
+                    let stippled = stipple.is_none_or(|p| stipple_mask(p, x, y) & 1 != 0);
+                    if inside && stippled {
+                        expected |= 1 << ((x - 100) + 4 * (y - 40));
+                    }
+                }
+            }
+            covered += expected.count_ones();
+            let expected = if expected == 0 { vec![] } else { vec![(100, 40, expected)] };
+            assert_eq!(seen, expected, "round {round}");
+            let reduced = edges.map(|e| Reduced::new(&e));
+            let mut wide = Vec::new();
+            Walker::<i64, _>::new(area, reduced, stipple, |x, y, m| wide.push((x, y, m))).run();
+            assert_eq!(wide, expected, "round {round}, i64 lanes");
+        }
+        assert!(covered > 200, "{covered}");
     }
 
     #[test]

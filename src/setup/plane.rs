@@ -214,6 +214,19 @@ impl Plane {
         }
     }
 
+    /// [`Plane::through`] for `N` sets of values at once: the same operations on the same
+    /// operands (so the same bits), written as loops over the planes that the compiler
+    /// vectorises, the divisions included (a triangle's setup divides twice per plane).
+    #[inline(always)]
+    pub fn through_all<const N: usize>(d1: [f64; 2], d2: [f64; 2], values: [[f32; 3]; N]) -> [Plane; N] {
+        let det = d1[0] * d2[1] - d2[0] * d1[1];
+        let dv1: [f64; N] = values.map(|v| v[1] as f64 - v[0] as f64);
+        let dv2: [f64; N] = values.map(|v| v[2] as f64 - v[0] as f64);
+        let dadx: [f64; N] = std::array::from_fn(|k| (dv1[k] * d2[1] - dv2[k] * d1[1]) / det);
+        let dady: [f64; N] = std::array::from_fn(|k| (d1[0] * dv2[k] - d2[0] * dv1[k]) / det);
+        std::array::from_fn(|k| Plane { a0: values[k][0], dadx: dadx[k] as f32, dady: dady[k] as f32 })
+    }
+
     #[inline]
     pub fn at(&self, dx: f32, dy: f32) -> f32 {
         self.a0 + self.dadx * dx + self.dady * dy

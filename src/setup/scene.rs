@@ -3,8 +3,8 @@
 //!
 //! A draw call adds its state snapshot ([`Scene::add_state`]) and its primitives
 //! ([`Scene::add`], [`Scene::add_narrow`]); each primitive is binned into the tiles its
-//! bounding box (or, for lines, its rows' columns) touches, clipped to the draw's scissor
-//! box. [`Scene::execute`] hands the bins to the tile workers (`raster`), which call back
+//! bounding box (for lines, its rows' columns; for triangles, the tiles of the box its
+//! edges reach) touches, clipped to the draw's scissor box. [`Scene::execute`] hands the bins to the tile workers (`raster`), which call back
 //! here to render each bin entry.
 //!
 //! Only the scene's work is done: a filled triangle that covers a whole tile and writes
@@ -19,7 +19,6 @@ use super::jobs::pixels::PixelRectJob;
 use super::jobs::point::PointJob;
 use super::jobs::smooth::SmoothJob;
 use super::jobs::triangle::TriangleJob;
-use super::triangle::TriangleSetup;
 use crate::fragment::block::BlockPipeline;
 use crate::fragment::pipeline::DrawState;
 use crate::framebuffer::{ColorFormat, ColorSlot, Framebuffer, Rect};
@@ -64,9 +63,14 @@ pub struct Scene {
     bins: Vec<Vec<u32>>,
     /// How many indices the bins hold in all.
     binned: usize,
-    /// A deferred part ([`Scene::deferred_part`]): what [`Scene::add`] is given, kept in
-    /// order to be binned by [`Scene::append`].
-    deferred: Option<Vec<(u32, Rect, Primitive)>>,
+    /// A deferred part ([`Scene::deferred_part`]): in order, what binning each primitive
+    /// [`Scene::add`] is given needs (its state, its clipped bounds and, for a triangle,
+    /// the edges binning tests), computed on the recording thread; the primitives go to
+    /// `primitives`, and [`Scene::append`] bins them.
+    deferred: Option<Vec<(u32, Rect, Option<PixelEdges>)>>,
+    /// The index of `states[0]`: 0, but in a deferred part, which holds only the scene's
+    /// last [`STATE_CACHE`] states (the ones a draw's state may be).
+    state_base: usize,
 }
 
 /// Whether what an entry wrote in `tile` inside its rectangle `clip` lies within `region`
@@ -75,6 +79,54 @@ pub struct Scene {
 fn writes_within(tile: Rect, clip: Rect, region: Rect) -> bool {
     let written = tile.intersect(clip);
     region == tile || written.intersect(region) == written
+}
+
+/// A triangle's edge functions over pixel centres (`TriangleSetup::pixel_edges`): pixel
+/// (x, y) is covered exactly when every `c + a·x + b·y ≥ 0`.
+type PixelEdges = [[i64; 3]; 3];
+
+/// Whether binning a filled triangle rasterized at pixel centres whose clipped box `r`
+/// spans the tiles `span` reads its pixel edges: to test the tiles of a box reaching
+/// over more than one, or for the tile drop of an `overwriting` state under the clip
+/// rectangle `fill_clip` (in a `framebuffer` of that rectangle), which within one tile
+/// needs a box holding all of the tile's part the triangle may write (see
+/// `Scene::drop_covered_tile`): never a small triangle's.
+#[inline(always)]
+fn edges_needed(span: [i32; 4], r: Rect, overwriting: bool, fill_clip: Rect, framebuffer: Rect) -> bool {
+    let [tx0, ty0, tx1, ty1] = span;
+    if tx0 != tx1 || ty0 != ty1 {
+        return true;
+    }
+    let t = TILE_SIZE as i32;
+    overwriting && {
+        let region = Rect::from_xywh(tx0 * t, ty0 * t, t, t).intersect(framebuffer).intersect(fill_clip);
+        region.intersect(r) == region
+    }
+}
+
+/// The first and last tile columns and rows of the non-empty rectangle `r` inside the
+/// framebuffer: `[x0, y0, x1, y1]`, inclusive (shifts: the coordinates are not negative).
+#[inline(always)]
+fn tile_span(r: Rect) -> [i32; 4] {
+    const SHIFT: u32 = TILE_SIZE.trailing_zeros();
+    const _: () = assert!(TILE_SIZE == 1 << SHIFT);
+    debug_assert!(r.x0 >= 0 && r.y0 >= 0 && !r.is_empty());
+    [r.x0 >> SHIFT, r.y0 >> SHIFT, (r.x1 - 1) >> SHIFT, (r.y1 - 1) >> SHIFT]
+}
+
+/// Whether pixel (x, y)'s centre is covered (`TriangleSetup::covers`, on the pixel edges).
+#[inline]
+fn covers(edges: &PixelEdges, x: i32, y: i32) -> bool {
+    edges.iter().all(|&[c, a, b]| c + a * x as i64 + b * y as i64 >= 0)
+}
+
+/// Whether the triangle of `edges` may cover a pixel of the non-empty rectangle `part`:
+/// no edge is negative at all of its pixels (each edge's largest value over them is at a
+/// corner). Within the guard band no value overflows (see `TriangleSetup::pixel_edges`).
+#[inline]
+fn reaches(edges: &PixelEdges, part: Rect) -> bool {
+    let (x0, x1, y0, y1) = (part.x0 as i64, part.x1 as i64 - 1, part.y0 as i64, part.y1 as i64 - 1);
+    edges.iter().all(|&[c, a, b]| c + (a * x0).max(a * x1) + (b * y0).max(b * y1) >= 0)
 }
 
 impl Scene {
@@ -94,6 +146,7 @@ impl Scene {
             bins: vec![Vec::new(); tiles_x * tiles_y],
             binned: 0,
             deferred: None,
+            state_base: 0,
         }
     }
 
@@ -103,26 +156,36 @@ impl Scene {
     /// order, exactly as if it had been added here (the bins, the tiles an opaque triangle
     /// drops and so the bytes are the same). Only [`Scene::add`] may be used on it.
     pub fn deferred_part(&self, capacity: usize) -> Scene {
+        debug_assert!(self.deferred.is_none());
+        let recent = self.states.len().saturating_sub(STATE_CACHE);
         Scene {
             width: self.width,
             height: self.height,
             tiles_x: self.tiles_x,
             targets: Vec::new(),
-            states: Vec::new(),
-            primitives: Vec::new(),
+            states: self.states[recent..].to_vec(),
+            primitives: Vec::with_capacity(capacity),
             primitive_states: Vec::new(),
-            overwriting: Vec::new(),
+            overwriting: self.overwriting[recent..].to_vec(),
             bins: Vec::new(),
             binned: 0,
             deferred: Some(Vec::with_capacity(capacity)),
+            state_base: recent,
         }
     }
 
     /// Bins the primitives recorded into `part` (from [`Scene::deferred_part`]) after
     /// everything recorded here so far.
-    pub fn append(&mut self, part: Scene) {
-        for (state, bounds, primitive) in part.deferred.into_iter().flatten() {
-            self.add(state, bounds, primitive);
+    pub fn append(&mut self, mut part: Scene) {
+        let Some(deferred) = part.deferred else { return };
+        debug_assert!(self.deferred.is_none() && deferred.len() == part.primitives.len());
+        // The part's primitives moved in one copy, then each binned in order, as
+        // [`Scene::add`] bins it.
+        let first = self.primitives.len();
+        self.primitives.append(&mut part.primitives);
+        for (k, (state, r, edges)) in deferred.into_iter().enumerate() {
+            self.primitive_states.push(state);
+            self.bin((first + k) as u32, state, r, tile_span(r), edges.as_ref());
         }
     }
 
@@ -185,50 +248,96 @@ impl Scene {
     /// exclusive max), under draw state `state`.
     #[inline]
     pub fn add(&mut self, state: u32, bounds: Rect, primitive: Primitive) {
-        if let Some(deferred) = &mut self.deferred {
-            return deferred.push((state, bounds, primitive));
-        }
-        let drawn = &self.states[state as usize];
+        let (drawn, overwriting) = self.draw_state(state);
         let triangle = match &primitive {
             Primitive::Triangle(job) => Some(job),
             _ => None,
         };
-        let clip = if triangle.is_some() { drawn.fill_clip } else { drawn.clip };
         // Rasterized per sample, a triangle may cover samples of pixels whose centre it misses.
-        let bounds = match triangle {
-            Some(job) if drawn.multisample.is_some_and(|m| m.per_sample()) => job.sample_bounds(),
-            _ => bounds,
+        let per_sample = triangle.is_some() && drawn.multisample.is_some_and(|m| m.per_sample());
+        let (bounds, clip) = match triangle {
+            Some(job) if per_sample => (job.sample_bounds(), drawn.fill_clip),
+            Some(_) => (bounds, drawn.fill_clip),
+            None => (bounds, drawn.clip),
         };
         let r = bounds.intersect(clip);
         if r.is_empty() {
             return;
         }
-        let index = self.primitives.len() as u32;
-        let t = TILE_SIZE as i32;
-        let (rows, columns) = ((r.y0 / t)..=((r.y1 - 1) / t), (r.x0 / t)..=((r.x1 - 1) / t));
-        self.binned += rows.clone().count() * columns.clone().count();
-        // The tiles are binned before the job moves into the scene, so the opaque test reads
-        // its edges in place (no copy of the setup per triangle).
-        let opaque = triangle.filter(|_| self.overwriting[state as usize] && self.writes_every_target(state));
-        for ty in rows {
-            for tx in columns.clone() {
-                let bin = ty as usize * self.tiles_x + tx as usize;
-                if let Some(job) = opaque {
-                    self.drop_covered_tile(bin, tx * t, ty * t, r, &job.setup, state);
-                }
-                self.bins[bin].push(index);
-            }
+        let span = tile_span(r);
+        let framebuffer = Rect::from_xywh(0, 0, self.width as i32, self.height as i32);
+        let edges = triangle
+            .filter(|_| !per_sample && edges_needed(span, r, overwriting, drawn.fill_clip, framebuffer))
+            .map(|job| job.setup.pixel_edges());
+        if let Some(deferred) = &mut self.deferred {
+            // The primitive kept apart from what binning it needs, so that
+            // [`Scene::append`] moves all of them in one copy.
+            self.primitives.push(primitive);
+            return deferred.push((state, r, edges));
         }
+        let index = self.primitives.len() as u32;
+        self.bin(index, state, r, span, edges.as_ref());
         self.primitives.push(primitive);
         self.primitive_states.push(state);
     }
 
+    /// Draw state `state` and whether it overwrites (a deferred part holds only the
+    /// scene's last few states, from `state_base` on).
+    #[inline]
+    fn draw_state(&self, state: u32) -> (&DrawState, bool) {
+        let i = state as usize - self.state_base;
+        (&self.states[i], self.overwriting[i])
+    }
+
+    /// Bins primitive `index` into the tiles of `r` (its bounds within its clip rectangle,
+    /// not empty), which spans the tiles `span` ([`tile_span`]); `edges` are the pixel
+    /// edges of a filled triangle when it is tested against tiles or may drop them (see
+    /// [`edges_needed`]).
+    ///
+    /// A triangle is binned only into the tiles its edges reach: a tile of its box where
+    /// one edge is negative at every pixel the box holds there has none of its pixels (a
+    /// long thin triangle's box has many such tiles), so the tile workers never visit it
+    /// for this triangle. Which tiles those are does not depend on the thread count.
+    #[inline(always)]
+    fn bin(&mut self, index: u32, state: u32, r: Rect, span: [i32; 4], edges: Option<&PixelEdges>) {
+        let t = TILE_SIZE as i32;
+        let [tx0, ty0, tx1, ty1] = span;
+        let opaque = edges.filter(|_| self.overwriting[state as usize] && self.writes_every_target(state));
+        if tx0 == tx1 && ty0 == ty1 {
+            // One tile (small triangles): no tile test.
+            return self.bin_tile(index, state, r, tx0, ty0, opaque);
+        }
+        for ty in ty0..=ty1 {
+            for tx in tx0..=tx1 {
+                if let Some(edges) = edges {
+                    if !reaches(edges, Rect::from_xywh(tx * t, ty * t, t, t).intersect(r)) {
+                        continue;
+                    }
+                }
+                self.bin_tile(index, state, r, tx, ty, opaque);
+            }
+        }
+    }
+
+    /// Bins primitive `index` into tile `(tx, ty)`, after the tile drop of an opaque
+    /// triangle (`opaque`: its edges) whose binned box is `r`.
+    #[inline(always)]
+    fn bin_tile(&mut self, index: u32, state: u32, r: Rect, tx: i32, ty: i32, opaque: Option<&PixelEdges>) {
+        let t = TILE_SIZE as i32;
+        let bin = ty as usize * self.tiles_x + tx as usize;
+        if let Some(edges) = opaque {
+            self.drop_covered_tile(bin, tx * t, ty * t, r, edges, state);
+        }
+        self.bins[bin].push(index);
+        self.binned += 1;
+    }
+
     /// Empties tile `bin` (origin `(x, y)`), but for the clears it does not overwrite, when
-    /// the opaque triangle `setup`, whose binned box is `r`, writes all of the tile's part
+    /// the opaque triangle of pixel edges `edges`, whose binned box is `r`, writes all of the tile's part
     /// inside its clip rectangle (scissor box and viewport) and nothing binned there before
     /// must survive it.
     #[inline]
-    fn drop_covered_tile(&mut self, bin: usize, x: i32, y: i32, r: Rect, setup: &TriangleSetup, state: u32) {
+    fn drop_covered_tile(&mut self, bin: usize, x: i32, y: i32, r: Rect, edges: &PixelEdges, state: u32) {
         let t = TILE_SIZE as i32;
         let tile = Rect::from_xywh(x, y, t, t).intersect(Rect::from_xywh(0, 0, self.width as i32, self.height as i32));
         // The part of the tile the triangle may write; covering its corners, the (convex)
@@ -244,7 +353,7 @@ impl Scene {
             (region.x0, region.y1 - 1),
             (region.x1 - 1, region.y1 - 1),
         ];
-        if corners.iter().all(|&(x, y)| setup.covers(x, y))
+        if corners.iter().all(|&(x, y)| covers(edges, x, y))
             && self.droppable(bin, &self.states[state as usize], tile, region)
         {
             // Clears stay where the triangle does not overwrite them: a depth/stencil clear
@@ -473,6 +582,7 @@ mod tests {
     use super::*;
     use crate::fragment::{AlphaTest, DepthTest, FragmentState};
     use crate::gl::CompareFunc;
+    use crate::setup::triangle::TriangleSetup;
 
     fn state(alpha: bool) -> DrawState {
         let depth = Some(DepthTest { func: CompareFunc::Less, write: true });
@@ -520,7 +630,7 @@ mod tests {
             s
         };
         let triangles: Vec<[[f32; 2]; 3]> = vec![
-            [[1.0, 1.0], [150.0, 2.5], [20.0, 120.0]],
+            [[1.0, 1.0], [150.0, 2.5], [140.0, 120.0]],
             [[70.0, 3.0], [90.0, 60.0], [60.0, 50.0]],
             [[-10.0, -10.0], [300.0, -10.0], [-10.0, 300.0]],
             [[5.0, 70.0], [190.0, 66.0], [100.0, 129.0]],
@@ -554,14 +664,15 @@ mod tests {
                     later.add(0, bounds, p);
                 }
             }
-            assert!(later.bins.is_empty() && later.primitives.is_empty(), "a deferred part bins nothing");
+            assert!(later.bins.is_empty() && later.binned == 0, "a deferred part bins nothing");
             parted.append(later);
             assert_eq!(binned(&parted), binned(&whole), "split after {split} triangles");
             assert_eq!((parted.binned, parted.primitives.len()), (whole.binned, whole.primitives.len()));
         }
         // The big triangle (x + y < 290) drops what the first two left in every tile it
         // covers whole; tile (2, 1), pixels x 128..192, y 64..128, it does not (its far
-        // corner's centre sums to 319) and keeps the first triangle before it.
+        // corner's centre sums to 319) and keeps the first triangle before it. Tile (3, 2),
+        // pixels x 192..200, y 128..130, is in its box but beyond its edge: not binned.
         let whole = {
             let mut s = Scene::new(200, 130);
             s.target_index(ColorSlot::FrontLeft);
@@ -578,6 +689,7 @@ mod tests {
         };
         let mut expected = vec![vec![2]; 12];
         expected[6] = vec![0, 2];
+        expected[11] = vec![];
         assert_eq!(whole.bins, expected);
     }
 
@@ -664,6 +776,54 @@ mod tests {
         scene.add(inner, window, Primitive::Triangle(cover(128.0)));
         scene.add(inner, window, Primitive::Triangle(cover(128.0)));
         assert_eq!(bins(&scene), vec![vec![2, 3, 4]; 4]);
+    }
+
+    #[test]
+    fn triangles_are_binned_into_exactly_the_tiles_their_edges_reach() {
+        // Random triangles over a 300 × 260 scene (5 × 5 tiles), thin slivers among them:
+        // every tile holding a covered pixel has the triangle binned (none is lost), and a
+        // sliver crossing the window is binned into far fewer tiles than its box holds.
+        let window = Rect::from_xywh(0, 0, 300, 260);
+        let mut seed = 0x2545_f491_4f6c_dd1du64;
+        let mut unit = || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> 11) as f32 / (1u64 << 53) as f32
+        };
+        for round in 0..60 {
+            let mut scene = Scene::new(300, 260);
+            scene.target_index(ColorSlot::FrontLeft);
+            let (s, _) = scene.add_state(state_clipped(window));
+            let points: [[f32; 2]; 3] = if round % 2 == 0 {
+                let (y0, y1) = (unit() * 260.0, unit() * 260.0);
+                [[-5.0, y0], [305.0, y1], [305.0, y1 + 0.7]]
+            } else {
+                [0, 1, 2].map(|_| [unit() * 340.0 - 20.0, unit() * 300.0 - 20.0])
+            };
+            let p = triangle(points);
+            let Primitive::Triangle(job) = &p else { unreachable!() };
+            let (setup, bounds) = (job.setup.clone(), job.bounds());
+            scene.add(s, bounds, p);
+            let r = bounds.intersect(window);
+            let mut in_box = 0;
+            for (bin, entries) in scene.bins.iter().enumerate() {
+                let (tx, ty) = ((bin % 5) as i32 * 64, (bin / 5) as i32 * 64);
+                let tile = Rect::from_xywh(tx, ty, 64, 64).intersect(r);
+                in_box += !tile.is_empty() as usize;
+                let covered = (tile.y0..tile.y1).any(|y| (tile.x0..tile.x1).any(|x| setup.covers(x, y)));
+                assert!(!covered || entries == &[0], "round {round}: tile {bin} lost");
+                assert!(entries.is_empty() || !tile.is_empty(), "round {round}: tile {bin} outside the box");
+            }
+            if round % 2 == 0 && in_box >= 15 {
+                assert!(scene.binned * 2 < in_box, "round {round}: {} of {in_box} tiles", scene.binned);
+            }
+        }
+    }
+
+    /// A plain state (depth-tested, so nothing is dropped) clipped to `clip`.
+    fn state_clipped(clip: Rect) -> DrawState {
+        DrawState { clip, fill_clip: clip, ..state(false) }
     }
 
     #[test]

@@ -30,6 +30,18 @@ pub fn to_fixed(v: f32) -> i64 {
     round_half_away_f64(v as f64 * ONE as f64)
 }
 
+/// [`to_fixed`] of a coordinate within the guard band (|v| ≤ [`GUARD_BAND`]), in single
+/// precision: `v·256` is exact (a power of two, below 2³¹), so are its truncation and the
+/// fraction left, which then decides the rounding as [`to_fixed`]'s does, with the same
+/// result; without the conversions to and from double precision.
+#[inline(always)]
+fn snap(v: f32) -> i64 {
+    let x = v * ONE as f32;
+    let t = x as i32;
+    let fraction = x - t as f32;
+    (t + (fraction >= 0.5) as i32 - (fraction <= -0.5) as i32) as i64
+}
+
 /// One edge: `E(x, y) = a·x + b·y + c` over fixed-point coordinates, inside when
 /// `E > 0`, or `E == 0` on a top-left edge.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -87,7 +99,7 @@ impl TriangleSetup {
         if !window.iter().flatten().all(|c| c.abs() <= GUARD_BAND) {
             return None;
         }
-        let fixed = |p: [f32; 2]| [to_fixed(p[0]), to_fixed(p[1])];
+        let fixed = |p: [f32; 2]| [snap(p[0]), snap(p[1])];
         let mut v = [fixed(window[0]), fixed(window[1]), fixed(window[2])];
         let area2 = (v[1][0] - v[0][0]) * (v[2][1] - v[0][1]) - (v[2][0] - v[0][0]) * (v[1][1] - v[0][1]);
         if area2 == 0 {
@@ -302,6 +314,23 @@ mod tests {
                 assert_eq!(t.covers(x, y), rotated.covers(x, y));
                 assert_eq!(t.covers(x, y), moved.covers(x + 7, y - 3));
             }
+        }
+    }
+
+    #[test]
+    fn snapping_in_single_precision_equals_to_fixed() {
+        // Halves of 1/256 (the rounding ties), their neighbours, random values of every
+        // magnitude, and the guard band's ends.
+        let mut seed = 0x1234_5678_9abc_def1;
+        let mut values = vec![0.0, -0.0, GUARD_BAND, -GUARD_BAND, 0.5 / 256.0, -0.5 / 256.0, 1.5 / 256.0];
+        for k in 0..2000 {
+            let magnitude = (1u32 << (k % 23)) as f32;
+            let v = (coords(&mut seed, 2.0) - 1.0) * magnitude;
+            let tie = ((v * 256.0) as i32) as f32 / 256.0 + 0.5 / 256.0;
+            values.extend([v, tie, -tie, f32::from_bits(tie.to_bits() + 1), f32::from_bits(tie.to_bits() - 1)]);
+        }
+        for v in values.into_iter().filter(|v| v.abs() <= GUARD_BAND) {
+            assert_eq!(snap(v), to_fixed(v), "{v}");
         }
     }
 

@@ -114,30 +114,51 @@ impl ClipPlanes {
     /// Bit set of the planes `v` is outside of (NaN counts as outside).
     ///
     /// The fixed planes' distances are written out (the same expressions as
-    /// [`ClipPlanes::distance`], so the same bits) and tested without branches: this runs for
-    /// every vertex of every draw.
+    /// [`ClipPlanes::distance`], so the same bits) and tested without branches.
     #[inline]
-    #[allow(clippy::neg_cmp_op_on_partial_ord)] // `!(d >= 0)` is the point: NaN is outside
     pub fn outcode(&self, v: &ClipVertex) -> u32 {
-        let [x, y, z, w] = v.clip;
-        // Not `d ≥ 0`: true for NaN too, in one comparison per plane.
-        let outside = |d: f32| (!(d >= 0.0)) as u32;
-        let (near, far) = match (self.clip_z, self.zero_to_one) {
-            (false, _) => (0.0, 0.0),
-            (true, true) => (z, w - z),
-            (true, false) => (w + z, w - z),
+        let mut code = match (self.clip_z, self.zero_to_one) {
+            (false, _) => self.fixed_code(v, |_, _| (0.0, 0.0)),
+            (true, true) => self.fixed_code(v, |z, w| (z, w - z)),
+            (true, false) => self.fixed_code(v, |z, w| (w + z, w - z)),
         };
-        let mut code = outside(self.guard_x * w - x)
+        for i in FIXED_PLANES..self.count() {
+            code |= outside(self.distance(i, v)) << i;
+        }
+        code
+    }
+
+    /// [`ClipPlanes::outcode`] of every vertex of `vertices`, in order: this runs for every
+    /// vertex of every draw, so the near and far planes' form is chosen once, outside a
+    /// loop of plain comparisons, and the user planes have a pass of their own when enabled.
+    pub fn outcodes(&self, vertices: &[ClipVertex]) -> Vec<u32> {
+        let mut codes: Vec<u32> = match (self.clip_z, self.zero_to_one) {
+            (false, _) => vertices.iter().map(|v| self.fixed_code(v, |_, _| (0.0, 0.0))).collect(),
+            (true, true) => vertices.iter().map(|v| self.fixed_code(v, |z, w| (z, w - z))).collect(),
+            (true, false) => vertices.iter().map(|v| self.fixed_code(v, |z, w| (w + z, w - z))).collect(),
+        };
+        if !self.user.is_empty() {
+            for (code, v) in codes.iter_mut().zip(vertices) {
+                for i in FIXED_PLANES..self.count() {
+                    *code |= outside(self.distance(i, v)) << i;
+                }
+            }
+        }
+        codes
+    }
+
+    /// The bits of the fixed planes, the near and far distances given by `near_far(z, w)`.
+    #[inline(always)]
+    fn fixed_code(&self, v: &ClipVertex, near_far: impl Fn(f32, f32) -> (f32, f32)) -> u32 {
+        let [x, y, z, w] = v.clip;
+        let (near, far) = near_far(z, w);
+        outside(self.guard_x * w - x)
             | outside(self.guard_x * w + x) << 1
             | outside(self.guard_y * w - y) << 2
             | outside(self.guard_y * w + y) << 3
             | outside(near) << 4
             | outside(far) << 5
-            | outside(w - W_EPSILON) << 6;
-        for i in FIXED_PLANES..self.count() {
-            code |= outside(self.distance(i, v)) << i;
-        }
-        code
+            | outside(w - W_EPSILON) << 6
     }
 
     /// Clips the convex polygon `poly` against every plane in `mask`, in place.
@@ -194,6 +215,14 @@ impl ClipPlanes {
         }
         Some((a, b))
     }
+}
+
+/// 1 when a vertex at signed distance `d` is outside its plane: not `d ≥ 0`, so NaN is
+/// outside too, in one comparison.
+#[inline(always)]
+#[allow(clippy::neg_cmp_op_on_partial_ord)] // `!(d >= 0)` is the point: NaN is outside
+fn outside(d: f32) -> u32 {
+    (!(d >= 0.0)) as u32
 }
 
 /// Smallest w a clipped vertex may have.

@@ -190,7 +190,7 @@ impl Outline<'_> {
                 if let Some(s) = self.stipple.as_mut() {
                     s.counter = 0;
                 }
-                emit_shaded_triangle(self.scene, self.state, g, w.map(|c| c.1), w.map(|c| c.2), flat);
+                emit_shaded_triangle(self.scene, self.state, g, &w.map(|c| c.1), w.map(|c| c.2), flat);
                 return;
             }
         };

@@ -34,7 +34,7 @@ pub fn draw(
     // Filled polygons are clipped to the guard band; points, lines and outlines to the
     // view volume.
     let planes = if polygons && !outlines { &geometry.planes } else { &geometry.line_planes };
-    let outcodes: Vec<u32> = clip_vertices.iter().map(|v| planes.outcode(v)).collect();
+    let outcodes = planes.outcodes(clip_vertices);
     if outlines {
         let mut outline = Outline { scene, state: state_index, g: geometry, stipple };
         decompose_outlines(mode, clip_vertices.len() as u32, first_vertex, part, |t| {
@@ -90,7 +90,7 @@ pub fn draw(
                 let viewport = &geometry.viewport;
                 let w = [viewport.window(va), viewport.window(vb), viewport.window(vc)];
                 let back = [va.back_colors, vb.back_colors, vc.back_colors];
-                emit_shaded_triangle(scene, state_index, geometry, w, back, flat);
+                emit_shaded_triangle(scene, state_index, geometry, &w, back, flat);
             } else {
                 poly.clear();
                 poly.extend([clip_vertices[a], clip_vertices[b], clip_vertices[c]]);
@@ -104,7 +104,7 @@ pub fn draw(
                 for i in 1..poly.len() - 1 {
                     let next = window(&poly[i + 1]);
                     let back = [poly[0].back_colors, poly[i].back_colors, poly[i + 1].back_colors];
-                    emit_shaded_triangle(scene, state_index, geometry, [w0, previous, next], back, flat);
+                    emit_shaded_triangle(scene, state_index, geometry, &[w0, previous, next], back, flat);
                     previous = next;
                 }
             }

@@ -30,28 +30,33 @@ pub fn emit_shaded_triangle(
     scene: &mut Scene,
     state: u32,
     g: &Geometry,
-    mut w: [WindowVertex; 3],
+    w: &[WindowVertex; 3],
     back: [[[f32; 4]; 2]; 3],
     flat: Option<FlatColors>,
 ) {
-    let use_back = g.two_side && !faces_front(g.front_ccw, area2(&w));
+    let use_back = g.two_side && !faces_front(g.front_ccw, area2(w));
+    let flat = flat.map(|f| if use_back { f.back } else { f.front });
+    if !use_back && flat.is_none() {
+        // The corners as they are (no copy).
+        return emit_triangle(scene, state, g, w, None);
+    }
+    let mut w = *w;
     if use_back {
         for (c, b) in w.iter_mut().zip(back) {
             (c.color, c.secondary_color) = (b[0], b[1]);
         }
     }
-    let flat = flat.map(|f| if use_back { f.back } else { f.front });
     if let Some([_, secondary]) = flat {
         for c in &mut w {
             c.secondary_color = secondary;
         }
     }
-    emit_triangle(scene, state, g, w, flat.map(|f| f[0]));
+    emit_triangle(scene, state, g, &w, flat.map(|f| f[0]));
 }
 
 /// Culls, offsets, sets up and bins one window-space triangle.
-pub fn emit_triangle(scene: &mut Scene, state: u32, g: &Geometry, w: [WindowVertex; 3], flat: Option<[f32; 4]>) {
-    let area2 = area2(&w);
+pub fn emit_triangle(scene: &mut Scene, state: u32, g: &Geometry, w: &[WindowVertex; 3], flat: Option<[f32; 4]>) {
+    let area2 = area2(w);
     if !area2.is_finite() {
         return;
     }
@@ -59,18 +64,17 @@ pub fn emit_triangle(scene: &mut Scene, state: u32, g: &Geometry, w: [WindowVert
     if culls(g.cull, front) {
         return;
     }
-    let offset = g
-        .offset
-        .map_or(0.0, |(factor, units)| clamp_offset(polygon_offset(&w, factor, units, g.depth), g.offset_clamp));
+    let offset =
+        g.offset.map_or(0.0, |(factor, units)| clamp_offset(polygon_offset(w, factor, units, g.depth), g.offset_clamp));
     // On the stack: setting up a triangle allocates nothing.
     let mut values = [[0.0f32; 3]; MAX_VARYINGS];
     let n = g.varyings.len().min(MAX_VARYINGS);
     for (value, a) in values.iter_mut().zip(&g.varyings) {
-        *value = w.map(|v| a.of(&v));
+        *value = [0, 1, 2].map(|i| a.of(&w[i]));
     }
     let varyings = &values[..n];
     if g.smooth_polygons {
-        if let Some(job) = SmoothTriangle::new(w, flat, offset, varyings, front) {
+        if let Some(job) = SmoothTriangle::new(*w, flat, offset, varyings, front) {
             let job = SmoothJob::Triangle(Box::new(job));
             scene.add(state, job.bounds(), RasterPrimitive::Smooth(job));
         }

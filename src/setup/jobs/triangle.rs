@@ -107,13 +107,13 @@ impl TriangleJob {
         depth_offset: f32,
         varyings: &[[f32; 3]],
     ) -> Option<TriangleJob> {
-        Self::with_accuracy(Accuracy::Conformant, v, flat, depth_offset, varyings)
+        Self::with_accuracy(Accuracy::Conformant, &v, flat, depth_offset, varyings)
     }
 
     /// As [`TriangleJob::new`], interpolating as `accuracy` says.
     pub fn with_accuracy(
         accuracy: Accuracy,
-        v: [WindowVertex; 3],
+        v: &[WindowVertex; 3],
         flat: Option<[f32; 4]>,
         depth_offset: f32,
         varyings: &[[f32; 3]],
@@ -121,31 +121,38 @@ impl TriangleJob {
         let setup = TriangleSetup::new(v.map(|p| [p.x, p.y]))?;
         // Attribute values in the setup's (counter-clockwise) vertex order.
         let order = if setup.was_clockwise { [0, 2, 1] } else { [0, 1, 2] };
-        let v = order.map(|i| v[i]);
+        let v = order.map(|i| &v[i]);
         let fixed = setup.vertices;
         let px = |i: usize| [fixed[i][0] as f64 / ONE as f64, fixed[i][1] as f64 / ONE as f64];
         let (p0, p1, p2) = (px(0), px(1), px(2));
         let d1 = [p1[0] - p0[0], p1[1] - p0[1]];
         let d2 = [p2[0] - p0[0], p2[1] - p0[1]];
         let plane = |values: [f32; 3]| Plane::through(d1, d2, values);
-        let mut z = plane([v[0].z, v[1].z, v[2].z]);
-        z.a0 += depth_offset;
+        let z_values = [v[0].z, v[1].z, v[2].z];
         let fast = accuracy == Accuracy::Fast;
-        let shading = match flat {
-            Some(color) => Shading::Flat(color),
-            None if v[0].color == v[1].color && v[1].color == v[2].color => Shading::Flat(v[0].color),
+        // Depth's plane and the colour's made together (see `Plane::through_all`).
+        let (mut z, shading) = match flat {
+            Some(color) => (plane(z_values), Shading::Flat(color)),
+            None if v[0].color == v[1].color && v[1].color == v[2].color => {
+                (plane(z_values), Shading::Flat(v[0].color))
+            }
             // The fast mode interpolates affinely even where w varies (no divide per
             // fragment); the conformant mode only where it is exact (all w equal).
             None if fast || (v[0].inv_w == v[1].inv_w && v[1].inv_w == v[2].inv_w) => {
-                Shading::Affine(std::array::from_fn(|c| plane([v[0].color[c], v[1].color[c], v[2].color[c]])))
+                let channel = |c: usize| [v[0].color[c], v[1].color[c], v[2].color[c]];
+                let [z, r, g, b, a] =
+                    Plane::through_all(d1, d2, [z_values, channel(0), channel(1), channel(2), channel(3)]);
+                (z, Shading::Affine([r, g, b, a]))
             }
-            None => Shading::Perspective {
-                color_over_w: std::array::from_fn(|c| {
-                    plane([v[0].color[c] * v[0].inv_w, v[1].color[c] * v[1].inv_w, v[2].color[c] * v[2].inv_w])
-                }),
-                inv_w: plane([v[0].inv_w, v[1].inv_w, v[2].inv_w]),
-            },
+            None => {
+                let over_w = |c: usize| [0, 1, 2].map(|i| v[i].color[c] * v[i].inv_w);
+                let inv_w = [v[0].inv_w, v[1].inv_w, v[2].inv_w];
+                let [z, r, g, b, a, q] =
+                    Plane::through_all(d1, d2, [z_values, over_w(0), over_w(1), over_w(2), over_w(3), inv_w]);
+                (z, Shading::Perspective { color_over_w: [r, g, b, a], inv_w: q })
+            }
         };
+        z.a0 += depth_offset;
         let inv_w = [v[0].inv_w, v[1].inv_w, v[2].inv_w];
         let exact = (accuracy == Accuracy::Exact).then(|| {
             let f = |a: [f32; 3]| a.map(|x| x as f64);
