@@ -26,7 +26,8 @@
 //!   the reference), so the program asks for no comparison.
 
 use super::fog::{Fog, FogMode};
-use crate::shader::ir::{BinaryOp, Const, Inst, Lod, Program, Reg, Stage, Stmt, Type, UnaryOp};
+use crate::shader::build::Builder;
+use crate::shader::ir::{BinaryOp, Inst, Lod, Program, Reg, Stage, Type, UnaryOp};
 use crate::texture::env::{CombineFn, EnvMode, Operand, Source, TexEnv};
 use crate::texture::BaseFormat;
 use std::collections::HashMap;
@@ -189,7 +190,7 @@ pub struct FixedFragment {
 impl FixedFragment {
     /// The program of `key`.
     pub fn generate(key: &FragmentKey) -> FixedFragment {
-        let mut g = Gen::new();
+        let mut g = Gen::new(Stage::Fragment);
         let primary: [Reg; 4] = std::array::from_fn(|k| g.input(FragmentInput::Primary(k as u8)));
         // Every unit's texel first: a crossbar source may read a later unit's.
         let mut texels: HashMap<u8, [Reg; 4]> = HashMap::new();
@@ -242,8 +243,7 @@ impl FixedFragment {
             let slot = g.program.output(Type::F32);
             g.emit(Inst::Output { slot, src: c });
         }
-        let Gen { mut program, body, inputs, uniforms, .. } = g;
-        program.body = body;
+        let (program, inputs, uniforms) = g.finish();
         FixedFragment { program, inputs, uniforms }
     }
 
@@ -275,110 +275,15 @@ fn arguments(f: CombineFn) -> usize {
     }
 }
 
-/// The program being written, with its inputs, uniforms and constants each read once.
-struct Gen {
-    program: Program,
-    body: Vec<Stmt>,
-    inputs: Vec<FragmentInput>,
-    uniforms: Vec<FragmentUniform>,
-    input_regs: HashMap<FragmentInput, Reg>,
-    uniform_regs: HashMap<FragmentUniform, Reg>,
-    constants: HashMap<u32, Reg>,
-}
+/// The program being written (the generator's own operations are below).
+type Gen = Builder<FragmentInput, FragmentUniform>;
 
 impl Gen {
-    fn new() -> Gen {
-        Gen {
-            program: Program::new(Stage::Fragment),
-            body: Vec::new(),
-            inputs: Vec::new(),
-            uniforms: Vec::new(),
-            input_regs: HashMap::new(),
-            uniform_regs: HashMap::new(),
-            constants: HashMap::new(),
-        }
-    }
-
-    fn emit(&mut self, inst: Inst) {
-        self.body.push(Stmt::Inst(inst));
-    }
-
-    fn register(&mut self, ty: Type) -> Reg {
-        self.program.register(ty)
-    }
-
-    fn input(&mut self, source: FragmentInput) -> Reg {
-        if let Some(&r) = self.input_regs.get(&source) {
-            return r;
-        }
-        let slot = self.program.input(Type::F32);
-        self.inputs.push(source);
-        let dst = self.register(Type::F32);
-        self.emit(Inst::Input { dst, slot });
-        self.input_regs.insert(source, dst);
-        dst
-    }
-
-    fn uniform(&mut self, value: FragmentUniform) -> Reg {
-        if let Some(&r) = self.uniform_regs.get(&value) {
-            return r;
-        }
-        let slot = self.program.uniform(Type::F32);
-        self.uniforms.push(value);
-        let dst = self.register(Type::F32);
-        self.emit(Inst::Uniform { dst, slot });
-        self.uniform_regs.insert(value, dst);
-        dst
-    }
-
-    fn constant(&mut self, value: f32) -> Reg {
-        if let Some(&r) = self.constants.get(&value.to_bits()) {
-            return r;
-        }
-        let dst = self.register(Type::F32);
-        self.emit(Inst::Const { dst, value: Const::F32(value) });
-        self.constants.insert(value.to_bits(), dst);
-        dst
-    }
-
-    fn binary(&mut self, op: BinaryOp, a: Reg, b: Reg) -> Reg {
-        let ty = match op {
-            BinaryOp::FLt | BinaryOp::FLe | BinaryOp::FEq | BinaryOp::FNe => Type::Bool,
-            _ => Type::F32,
-        };
-        let dst = self.register(ty);
-        self.emit(Inst::Binary { op, dst, a, b });
-        dst
-    }
-
-    fn unary(&mut self, op: UnaryOp, a: Reg) -> Reg {
-        let dst = self.register(Type::F32);
-        self.emit(Inst::Unary { op, dst, a });
-        dst
-    }
-
-    /// `1 − x`.
-    fn one_minus(&mut self, x: Reg) -> Reg {
-        let one = self.constant(1.0);
-        self.binary(BinaryOp::FSub, one, x)
-    }
-
     /// `a·b + c·d`, each product and the sum rounded once.
     fn products(&mut self, a: Reg, b: Reg, c: Reg, d: Reg) -> Reg {
         let ab = self.binary(BinaryOp::FMul, a, b);
         let cd = self.binary(BinaryOp::FMul, c, d);
         self.binary(BinaryOp::FAdd, ab, cd)
-    }
-
-    /// `x > 0 ? min(x, 1) : 0` (NaN gives 0): the environments' and the colour sum's clamp.
-    fn clamp01(&mut self, x: Reg) -> Reg {
-        let (zero, one) = (self.constant(0.0), self.constant(1.0));
-        let positive = self.binary(BinaryOp::FLt, zero, x);
-        // FMin(x, 1) is `1 < x ? 1 : x`: min(x, 1) for every x > 0.
-        let at_most_one = self.binary(BinaryOp::FMin, x, one);
-        let dst = self.register(Type::F32);
-        self.emit(Inst::Select { dst, cond: positive, a: at_most_one, b: zero });
-        dst
     }
 
     /// One unit's environment ([`TexEnv::apply`]): its output colour from the previous

@@ -20,6 +20,7 @@
 //!   CPU gives the same bytes.
 #![deny(unsafe_code)]
 
+pub mod build;
 pub mod dump;
 pub mod exec;
 pub mod fast;

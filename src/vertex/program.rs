@@ -30,8 +30,8 @@ use super::lighting::{Lighting, NormalScaling};
 use super::texgen::Gen as Generation;
 use super::transform::{FogSource, Transform};
 use crate::gl::enums::{GL_AMBIENT, GL_AMBIENT_AND_DIFFUSE, GL_DIFFUSE, GL_EMISSION, GL_SPECULAR};
-use crate::shader::ir::{BinaryOp, Const, Inst, Program, Reg, Stage, Stmt, Type, UnaryOp};
-use std::collections::HashMap;
+use crate::shader::build::Builder;
+use crate::shader::ir::{BinaryOp, Inst, Program, Reg, Stage, Type, UnaryOp};
 
 /// The shape of one enabled light.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -200,7 +200,7 @@ pub struct LightingProgram {
 impl LightingProgram {
     /// The program of `key`.
     pub fn generate(key: &LightingKey) -> LightingProgram {
-        let mut g = Gen::new();
+        let mut g = Gen::new(Stage::Vertex);
         let eye: [Reg; 3] = std::array::from_fn(|k| g.input(VertexInput::Eye(k as u8)));
         let normal: [Reg; 3] = std::array::from_fn(|k| g.input(VertexInput::Normal(k as u8)));
         for colors in g.lighting(key, eye, normal) {
@@ -209,8 +209,7 @@ impl LightingProgram {
                 g.emit(Inst::Output { slot, src });
             }
         }
-        let Gen { mut program, body, inputs, uniforms, .. } = g;
-        program.body = body;
+        let (program, inputs, uniforms) = g.finish();
         LightingProgram { program, inputs, uniforms }
     }
 
@@ -315,7 +314,7 @@ pub struct VertexProgram {
 impl VertexProgram {
     /// The program of `key`: what [`super::transform::transform`] does to a vertex.
     pub fn generate(key: &VertexKey) -> VertexProgram {
-        let mut g = Gen::new();
+        let mut g = Gen::new(Stage::Vertex);
         let mut outputs = Vec::new();
         let mut out = |g: &mut Gen, what: VertexOutput, src: Reg| {
             let slot = g.program.output(Type::F32);
@@ -362,15 +361,14 @@ impl VertexProgram {
         let fog = match key.fog {
             None | Some(FogSource::Attribute) => g.input(VertexInput::FogCoord),
             Some(FogSource::Radial) => {
-                let length2 = g.dot([eye[0], eye[1], eye[2]], [eye[0], eye[1], eye[2]]);
+                let length2 = g.dot3([eye[0], eye[1], eye[2]], [eye[0], eye[1], eye[2]]);
                 g.unary(UnaryOp::Sqrt, length2)
             }
             Some(FogSource::Plane) => eye[2],
             Some(FogSource::PlaneAbsolute) => g.unary(UnaryOp::FAbs, eye[2]),
         };
         out(&mut g, VertexOutput::FogCoord, fog);
-        let Gen { mut program, body, inputs, uniforms, .. } = g;
-        program.body = body;
+        let (program, inputs, uniforms) = g.finish();
         VertexProgram { program, inputs, uniforms, outputs }
     }
 
@@ -443,100 +441,12 @@ struct Face {
     products: Vec<[[Reg; 3]; 3]>,
 }
 
-/// The program being written, with its inputs, uniforms and constants each read once.
-struct Gen {
-    program: Program,
-    body: Vec<Stmt>,
-    inputs: Vec<VertexInput>,
-    uniforms: Vec<VertexUniform>,
-    input_regs: HashMap<VertexInput, Reg>,
-    uniform_regs: HashMap<VertexUniform, Reg>,
-    constants: HashMap<u32, Reg>,
-}
+/// The program being written (the generator's own operations are below).
+type Gen = Builder<VertexInput, VertexUniform>;
 
 impl Gen {
-    fn new() -> Gen {
-        Gen {
-            program: Program::new(Stage::Vertex),
-            body: Vec::new(),
-            inputs: Vec::new(),
-            uniforms: Vec::new(),
-            input_regs: HashMap::new(),
-            uniform_regs: HashMap::new(),
-            constants: HashMap::new(),
-        }
-    }
-
-    fn emit(&mut self, inst: Inst) {
-        self.body.push(Stmt::Inst(inst));
-    }
-
-    fn input(&mut self, source: VertexInput) -> Reg {
-        if let Some(&r) = self.input_regs.get(&source) {
-            return r;
-        }
-        let slot = self.program.input(Type::F32);
-        self.inputs.push(source);
-        let dst = self.program.register(Type::F32);
-        self.emit(Inst::Input { dst, slot });
-        self.input_regs.insert(source, dst);
-        dst
-    }
-
-    fn uniform(&mut self, value: VertexUniform) -> Reg {
-        if let Some(&r) = self.uniform_regs.get(&value) {
-            return r;
-        }
-        let slot = self.program.uniform(Type::F32);
-        self.uniforms.push(value);
-        let dst = self.program.register(Type::F32);
-        self.emit(Inst::Uniform { dst, slot });
-        self.uniform_regs.insert(value, dst);
-        dst
-    }
-
-    fn constant(&mut self, value: f32) -> Reg {
-        if let Some(&r) = self.constants.get(&value.to_bits()) {
-            return r;
-        }
-        let dst = self.program.register(Type::F32);
-        self.emit(Inst::Const { dst, value: Const::F32(value) });
-        self.constants.insert(value.to_bits(), dst);
-        dst
-    }
-
-    fn binary(&mut self, op: BinaryOp, a: Reg, b: Reg) -> Reg {
-        let ty = if matches!(op, BinaryOp::FLt | BinaryOp::FLe | BinaryOp::FEq | BinaryOp::FNe) {
-            Type::Bool
-        } else {
-            Type::F32
-        };
-        let dst = self.program.register(ty);
-        self.emit(Inst::Binary { op, dst, a, b });
-        dst
-    }
-
-    fn unary(&mut self, op: UnaryOp, a: Reg) -> Reg {
-        let dst = self.program.register(Type::F32);
-        self.emit(Inst::Unary { op, dst, a });
-        dst
-    }
-
-    fn select(&mut self, cond: Reg, a: Reg, b: Reg) -> Reg {
-        let dst = self.program.register(Type::F32);
-        self.emit(Inst::Select { dst, cond, a, b });
-        dst
-    }
-
-    /// `a·b + c`, two roundings.
-    fn mad(&mut self, a: Reg, b: Reg, c: Reg) -> Reg {
-        let dst = self.program.register(Type::F32);
-        self.emit(Inst::Mad { dst, a, b, c });
-        dst
-    }
-
     /// The program's DP3 as llvmpipe runs it: (z·z' + y·y') + x·x'.
-    fn dot3(&mut self, a: [Reg; 3], b: [Reg; 3]) -> Reg {
+    fn dp3(&mut self, a: [Reg; 3], b: [Reg; 3]) -> Reg {
         let dst = self.program.register(Type::F32);
         self.emit(Inst::Dot { dst, n: 3, a: [a[2], a[1], a[0], a[0]], b: [b[2], b[1], b[0], b[0]] });
         dst
@@ -544,7 +454,7 @@ impl Gen {
 
     /// v · (1/√(v·v)).
     fn normalize(&mut self, v: [Reg; 3]) -> [Reg; 3] {
-        let length2 = self.dot3(v, v);
+        let length2 = self.dp3(v, v);
         let length = self.unary(UnaryOp::Sqrt, length2);
         let inverse = self.unary(UnaryOp::Rcp, length);
         v.map(|x| self.binary(BinaryOp::FMul, x, inverse))
@@ -584,7 +494,7 @@ impl Gen {
                 std::array::from_fn(|k| self.uniform(VertexUniform::Position { light: l, k: k as u8 }));
             let (vp, local) = if light.local {
                 let d: [Reg; 3] = std::array::from_fn(|k| self.binary(BinaryOp::FSub, position[k], eye[k]));
-                let d2 = self.dot3(d, d);
+                let d2 = self.dp3(d, d);
                 let root = self.unary(UnaryOp::Sqrt, d2);
                 let inv = self.unary(UnaryOp::Rcp, root);
                 (d.map(|x| self.binary(BinaryOp::FMul, x, inv)), Some((inv, d2)))
@@ -595,7 +505,7 @@ impl Gen {
                 let direction =
                     std::array::from_fn(|k| self.uniform(VertexUniform::SpotDirection { light: l, k: k as u8 }));
                 let away = vp.map(|x| self.unary(UnaryOp::FNeg, x));
-                let cos = self.dot3(away, direction);
+                let cos = self.dp3(away, direction);
                 let cutoff = self.uniform(VertexUniform::SpotCutoff { light: l });
                 let exponent = self.uniform(VertexUniform::SpotExponent { light: l });
                 let inside = self.binary(BinaryOp::FLt, cutoff, cos);
@@ -608,7 +518,7 @@ impl Gen {
                     let d = self.unary(UnaryOp::Sqrt, d2);
                     let first = self.binary(BinaryOp::FMul, inv, d);
                     let k = std::array::from_fn(|k| self.uniform(VertexUniform::Attenuation { light: l, k: k as u8 }));
-                    let sum = self.dot3(k, [first, d, d2]);
+                    let sum = self.dp3(k, [first, d, d2]);
                     Some(self.unary(UnaryOp::Rcp, sum))
                 }
                 _ => None,
@@ -629,8 +539,8 @@ impl Gen {
                 let z = self.binary(BinaryOp::FAdd, vp[2], one);
                 Some(self.normalize([vp[0], vp[1], z]))
             };
-            let n_dot_l = self.dot3(n, vp);
-            let n_dot_h = half.map(|h| self.dot3(n, h));
+            let n_dot_l = self.dp3(n, vp);
+            let n_dot_h = half.map(|h| self.dp3(n, h));
             for (f, face) in faces.iter().enumerate() {
                 let signed = |g: &mut Gen, x: Reg| {
                     if f == 0 {
@@ -699,21 +609,6 @@ impl Gen {
         })
     }
 
-    /// glam's `Vec3::dot`: (x·x' + y·y') + z·z'.
-    fn dot(&mut self, a: [Reg; 3], b: [Reg; 3]) -> Reg {
-        let dst = self.program.register(Type::F32);
-        self.emit(Inst::Dot { dst, n: 3, a: [a[0], a[1], a[2], a[0]], b: [b[0], b[1], b[2], b[0]] });
-        dst
-    }
-
-    /// `x > 0 ? min(x, 1) : 0` (NaN gives 0): GL_CLAMP_VERTEX_COLOR.
-    fn clamp01(&mut self, x: Reg) -> Reg {
-        let (zero, one) = (self.constant(0.0), self.constant(1.0));
-        let positive = self.binary(BinaryOp::FLt, zero, x);
-        let at_most_one = self.binary(BinaryOp::FMin, x, one);
-        self.select(positive, at_most_one, zero)
-    }
-
     /// `v / length` where `length > 0`, else `v` unchanged.
     fn divided_if_positive(&mut self, v: [Reg; 3], length: Reg) -> [Reg; 3] {
         let zero = self.constant(0.0);
@@ -747,11 +642,11 @@ impl Gen {
                 unit.generation.iter().any(|g| matches!(g, Some(GenerationKey::Sphere | GenerationKey::Reflection)));
             let reflection = needs_reflection.then(|| {
                 let p = [eye[0], eye[1], eye[2]];
-                let length2 = self.dot(p, p);
+                let length2 = self.dot3(p, p);
                 let length = self.unary(UnaryOp::Sqrt, length2);
                 let unit_eye = self.divided_if_positive(p, length);
                 // unit_eye − (2·normal)·(normal · unit_eye), as glam evaluates it.
-                let d = self.dot(normal, unit_eye);
+                let d = self.dot3(normal, unit_eye);
                 let two = self.constant(2.0);
                 std::array::from_fn(|k| {
                     let twice = self.binary(BinaryOp::FMul, two, normal[k]);
@@ -822,11 +717,11 @@ impl Gen {
         let n: [Reg; 3] = std::array::from_fn(|k| self.input(VertexInput::Normal(k as u8)));
         let e = [0u8, 1, 2].map(|j| {
             let column = [0u8, 1, 2].map(|i| self.uniform(VertexUniform::TexGenInverse(4 * j + i)));
-            self.dot(n, column)
+            self.dot3(n, column)
         });
         match key.texgen_normals {
             (true, _) => {
-                let length2 = self.dot(e, e);
+                let length2 = self.dot3(e, e);
                 let length = self.unary(UnaryOp::Sqrt, length2);
                 self.divided_if_positive(e, length)
             }
@@ -843,7 +738,7 @@ impl Gen {
     fn eye_normal(&mut self, key: &LightingKey, normal: [Reg; 3]) -> [Reg; 3] {
         let n = [0u8, 1, 2].map(|j| {
             let column = [0u8, 1, 2].map(|i| self.uniform(VertexUniform::NormalMatrix(3 * j + i)));
-            self.dot3(column, normal)
+            self.dp3(column, normal)
         });
         match key.normals {
             NormalsKey::None => n,

@@ -8,25 +8,14 @@ use crate::shader::fast::{Compiled, Registers};
 use crate::shader::validate::validate;
 use crate::texture::env::Combine;
 
-/// A small xorshift generator: the same cases on every run.
-struct Rng(u64);
+use crate::shader::build::TestRng as Rng;
 
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 ^= self.0 << 13;
-        self.0 ^= self.0 >> 7;
-        self.0 ^= self.0 << 17;
-        self.0
-    }
+/// The cases' values, from the shared test generator.
+trait Draws {
+    fn value(&mut self) -> f32;
+}
 
-    fn below(&mut self, n: usize) -> usize {
-        (self.next() % n as u64) as usize
-    }
-
-    fn pick<T: Copy>(&mut self, items: &[T]) -> T {
-        items[self.below(items.len())]
-    }
-
+impl Draws for Rng {
     /// A colour-like value: mostly in [−0.25, 1.25], sometimes exactly 0, ½ or 1, rarely NaN.
     fn value(&mut self) -> f32 {
         match self.below(16) {
@@ -211,7 +200,7 @@ fn generated_programs_give_the_bits_of_the_per_pixel_code() {
             })
             .collect();
         let mut outputs = vec![[0u32; LANES]; 4];
-        let lanes = rng.next() as u16 | 1;
+        let lanes = rng.bits() as u16 | 1;
         let mut io = Io { inputs: &inputs, uniforms: &uniforms, outputs: &mut outputs, textures: &Probe };
         assert_eq!(executor.run(&fixed.program, &mut io, lanes), lanes, "nothing discards");
         // The pipeline's executor gives the reference's results (NaN as any NaN).
@@ -254,6 +243,7 @@ fn the_key_holds_the_shape_and_the_uniforms_the_values() {
     let plain = FixedFragment::generate(&FragmentKey::new([(0, 0, &modulate)], None, None));
     assert!(plain.uniforms.is_empty());
     assert_eq!(plain.inputs.len(), 4 + 4, "the primary colour and one unit's s, t, r, q");
-    let lookups = plain.program.body.iter().filter(|s| matches!(s, Stmt::Inst(Inst::Sample { .. }))).count();
+    let lookups =
+        plain.program.body.iter().filter(|s| matches!(s, crate::shader::ir::Stmt::Inst(Inst::Sample { .. }))).count();
     assert_eq!(lookups, 1);
 }

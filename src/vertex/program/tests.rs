@@ -9,34 +9,18 @@ use crate::shader::validate::validate;
 use crate::vertex::lighting::{Light, LightingState, Material};
 use crate::vertex::texgen::TexCoordUnit;
 
-/// A small xorshift generator: the same cases on every run.
-struct Rng(u64);
+use crate::shader::build::TestRng as Rng;
 
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 ^= self.0 << 13;
-        self.0 ^= self.0 >> 7;
-        self.0 ^= self.0 << 17;
-        self.0
-    }
+/// The cases' values, from the shared test generator.
+trait Draws {
+    fn color(&mut self) -> [f32; 4];
+    fn vec3(&mut self, r: f32) -> [f32; 3];
+}
 
-    fn below(&mut self, n: usize) -> usize {
-        (self.next() % n as u64) as usize
-    }
-
-    fn pick<T: Copy>(&mut self, items: &[T]) -> T {
-        items[self.below(items.len())]
-    }
-
-    /// Uniform in [lo, hi), on a grid of 2⁻²⁰ of the range.
-    fn range(&mut self, lo: f32, hi: f32) -> f32 {
-        lo + (hi - lo) * (self.below(1 << 20) as f32 / (1 << 20) as f32)
-    }
-
+impl Draws for Rng {
     fn color(&mut self) -> [f32; 4] {
         std::array::from_fn(|_| if self.below(8) == 0 { 0.0 } else { self.range(0.0, 1.0) })
     }
-
     fn vec3(&mut self, r: f32) -> [f32; 3] {
         std::array::from_fn(|_| self.range(-r, r))
     }
