@@ -53,7 +53,7 @@ struct Exits {
 }
 
 #[inline(always)]
-fn map1(a: &Word, f: impl Fn(u32) -> u32) -> Word {
+pub(super) fn map1(a: &Word, f: impl Fn(u32) -> u32) -> Word {
     let mut out = [0u32; LANES];
     for i in 0..LANES {
         out[i] = f(a[i]);
@@ -62,7 +62,7 @@ fn map1(a: &Word, f: impl Fn(u32) -> u32) -> Word {
 }
 
 #[inline(always)]
-fn map2(a: &Word, b: &Word, f: impl Fn(u32, u32) -> u32) -> Word {
+pub(super) fn map2(a: &Word, b: &Word, f: impl Fn(u32, u32) -> u32) -> Word {
     let mut out = [0u32; LANES];
     for i in 0..LANES {
         out[i] = f(a[i], b[i]);
@@ -71,12 +71,12 @@ fn map2(a: &Word, b: &Word, f: impl Fn(u32, u32) -> u32) -> Word {
 }
 
 #[inline(always)]
-fn f(bits: u32) -> f32 {
+pub(super) fn f(bits: u32) -> f32 {
     f32::from_bits(bits)
 }
 
 #[inline(always)]
-fn fu(value: f32) -> u32 {
+pub(super) fn fu(value: f32) -> u32 {
     value.to_bits()
 }
 

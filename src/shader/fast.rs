@@ -41,37 +41,9 @@
 //! The arithmetic is [`super::lower`]'s lane functions and the reference's own word
 //! functions: IEEE add, sub, mul, div and sqrt rounded once each, never contracted, and
 //! [`super::math`]'s polynomials, so every level and every CPU gives the same bytes.
-use super::exec::{self, Io, LodLanes, SampleRequest, Word, LANES, MAX_LOOP_ITERATIONS};
+use super::exec::{self, f, fu, map1, map2, Io, LodLanes, SampleRequest, Word, LANES, MAX_LOOP_ITERATIONS};
 use super::ir::{Axis, Program};
 use super::lower::{binary_lane, dot_lane, lower, mad_lane, unary_lane, Code, Cond, Node, Op, Wide, WideLod, R};
-
-#[inline(always)]
-fn f(bits: u32) -> f32 {
-    f32::from_bits(bits)
-}
-
-#[inline(always)]
-fn fu(value: f32) -> u32 {
-    value.to_bits()
-}
-
-#[inline(always)]
-fn map1(a: &Word, op: impl Fn(u32) -> u32) -> Word {
-    let mut out = [0u32; LANES];
-    for i in 0..LANES {
-        out[i] = op(a[i]);
-    }
-    out
-}
-
-#[inline(always)]
-fn map2(a: &Word, b: &Word, op: impl Fn(u32, u32) -> u32) -> Word {
-    let mut out = [0u32; LANES];
-    for i in 0..LANES {
-        out[i] = op(a[i], b[i]);
-    }
-    out
-}
 
 #[inline(always)]
 fn map3(a: &Word, b: &Word, c: &Word, op: impl Fn(u32, u32, u32) -> u32) -> Word {

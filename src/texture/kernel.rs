@@ -922,31 +922,37 @@ mod tests {
         }
     }
 
+    /// RGBA 2D sampler number `case` of the kernel tests: every wrap pair, filter pair, a
+    /// few biases and LOD clamps, over `levels` with mipmap filter `mip`.
+    fn rgba_case(levels: &[std::sync::Arc<TexImage>], mip: Option<Filter>, case: usize) -> Sampler {
+        let wraps = [Wrap::Repeat, Wrap::ClampToEdge, Wrap::MirroredRepeat];
+        let filters = [Filter::Nearest, Filter::Linear];
+        Sampler {
+            dim: Dim::D2,
+            faces: vec![levels.to_vec()],
+            wrap: [wraps[case % 3], wraps[(case / 3) % 3], Wrap::Repeat],
+            mag: filters[(case / 9) % 2],
+            min: filters[(case / 18 + case) % 2],
+            mip,
+            border: [0.0; 4],
+            lod_bias: [0.0, 0.5, -1.25][case % 3],
+            min_lod: -1000.0,
+            max_lod: [1000.0, 2.5][case % 2],
+            compare: None,
+            depth_mode: DepthMode::Luminance,
+            base: BaseFormat::Rgba,
+        }
+    }
+
     #[test]
     fn quad_kernels_give_the_reference_bits() {
         let mut rng = Rng(0x9e37_79b9_7f4a_7c15);
-        let wraps = [Wrap::Repeat, Wrap::ClampToEdge, Wrap::MirroredRepeat];
-        let filters = [Filter::Nearest, Filter::Linear];
         let mut checked = 0;
         for (w, h) in [(8, 8), (5, 3), (16, 1), (1, 6), (12, 20)] {
             let levels = chain(&mut rng, w, h);
             for mip in [None, Some(Filter::Nearest), Some(Filter::Linear)] {
                 for case in 0..24 {
-                    let sampler = Sampler {
-                        dim: Dim::D2,
-                        faces: vec![levels.clone()],
-                        wrap: [wraps[case % 3], wraps[(case / 3) % 3], Wrap::Repeat],
-                        mag: filters[(case / 9) % 2],
-                        min: filters[(case / 18 + case) % 2],
-                        mip,
-                        border: [0.0; 4],
-                        lod_bias: [0.0, 0.5, -1.25][case % 3],
-                        min_lod: -1000.0,
-                        max_lod: [1000.0, 2.5][case % 2],
-                        compare: None,
-                        depth_mode: DepthMode::Luminance,
-                        base: BaseFormat::Rgba,
-                    };
+                    let sampler = rgba_case(&levels, mip, case);
                     let kernel = Kernel::choose(&sampler);
                     assert_eq!(kernel, Kernel::Rgba2d);
                     for _ in 0..40 {
@@ -981,29 +987,13 @@ mod tests {
         // (steep coordinates: quad by quad), every mask shape: each live lane gets the bits
         // of its quad's `sample_quad`, the lanes in `QUAD_LANES` order.
         let mut rng = Rng(0x1234_5678_9abc_def1);
-        let wraps = [Wrap::Repeat, Wrap::ClampToEdge, Wrap::MirroredRepeat];
-        let filters = [Filter::Nearest, Filter::Linear];
         let mut checked = 0;
         let mut uniform = 0;
         for (w, h) in [(8, 8), (5, 3), (16, 16), (12, 20), (64, 32)] {
             let levels = chain(&mut rng, w, h);
             for mip in [None, Some(Filter::Nearest), Some(Filter::Linear)] {
                 for case in 0..24 {
-                    let sampler = Sampler {
-                        dim: Dim::D2,
-                        faces: vec![levels.clone()],
-                        wrap: [wraps[case % 3], wraps[(case / 3) % 3], Wrap::Repeat],
-                        mag: filters[(case / 9) % 2],
-                        min: filters[(case / 18 + case) % 2],
-                        mip,
-                        border: [0.0; 4],
-                        lod_bias: [0.0, 0.5, -1.25][case % 3],
-                        min_lod: -1000.0,
-                        max_lod: [1000.0, 2.5][case % 2],
-                        compare: None,
-                        depth_mode: DepthMode::Luminance,
-                        base: BaseFormat::Rgba,
-                    };
+                    let sampler = rgba_case(&levels, mip, case);
                     let kernel = Kernel::choose(&sampler);
                     for _ in 0..20 {
                         let scale = [0.001, 0.02, 0.3, 2.0][(rng.next() % 4) as usize];
@@ -1090,8 +1080,6 @@ mod tests {
     fn depth_kernels_give_the_reference_bits() {
         use crate::texture::{depth_storage, DepthStencilFormat};
         let mut rng = Rng(0x2545_f491_4f6c_dd1d);
-        let wraps = [Wrap::Repeat, Wrap::ClampToEdge, Wrap::MirroredRepeat];
-        let filters = [Filter::Nearest, Filter::Linear];
         let funcs = [
             None,
             Some(CompareFunc::LessEqual),
@@ -1118,19 +1106,11 @@ mod tests {
                 for mip in [None, Some(Filter::Nearest), Some(Filter::Linear)] {
                     for case in 0..36 {
                         let sampler = Sampler {
-                            dim: Dim::D2,
-                            faces: vec![levels.clone()],
-                            wrap: [wraps[case % 3], wraps[(case / 3) % 3], Wrap::Repeat],
-                            mag: filters[(case / 9) % 2],
-                            min: filters[(case / 18 + case) % 2],
-                            mip,
                             border: [0.25, 0.0, 0.0, 0.0],
-                            lod_bias: [0.0, 0.5, -1.25][case % 3],
-                            min_lod: -1000.0,
-                            max_lod: [1000.0, 2.5][case % 2],
                             compare: funcs[(case + f) % funcs.len()],
                             depth_mode: modes[(case / 4) % 3],
                             base: BaseFormat::Depth,
+                            ..rgba_case(&levels, mip, case)
                         };
                         let kernel = Kernel::choose(&sampler);
                         assert_eq!(kernel, Kernel::Depth2d);
