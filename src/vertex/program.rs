@@ -595,7 +595,7 @@ impl Gen {
 
     /// A 4×4 uniform matrix (elements `which(4c + r)`) times `v`, as glam's `Mat4 * Vec4`
     /// computes it: ((c0·x + c1·y) + c2·z) + c3·w per row, every product and sum rounded.
-    fn matrix_times(&mut self, which: fn(u8) -> VertexUniform, v: [Reg; 4]) -> [Reg; 4] {
+    fn matrix_times(&mut self, which: impl Fn(u8) -> VertexUniform, v: [Reg; 4]) -> [Reg; 4] {
         std::array::from_fn(|r| {
             let mut sum = None;
             for (c, &x) in v.iter().enumerate() {
@@ -690,24 +690,9 @@ impl Gen {
             }
         }
         if unit.matrix {
-            tc = self.matrix_times_unit(index, tc);
+            tc = self.matrix_times(|i| VertexUniform::TextureMatrix { unit: index, index: i }, tc);
         }
         tc
-    }
-
-    /// The texture matrix of the key's unit `index` times `v` (as [`Self::matrix_times`]).
-    fn matrix_times_unit(&mut self, index: u8, v: [Reg; 4]) -> [Reg; 4] {
-        std::array::from_fn(|r| {
-            let mut sum = None;
-            for (c, &x) in v.iter().enumerate() {
-                let m = self.uniform(VertexUniform::TextureMatrix { unit: index, index: 4 * c as u8 + r as u8 });
-                sum = Some(match sum {
-                    None => self.binary(BinaryOp::FMul, m, x),
-                    Some(s) => self.mad(m, x, s),
-                });
-            }
-            sum.expect("four columns")
-        })
     }
 
     /// Texgen's eye-space normal ([`super::texgen::eye_normal`]): the normal dotted with
