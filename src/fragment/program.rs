@@ -208,15 +208,17 @@ impl FixedFragment {
             });
             texels.insert(stage.unit, dst);
         }
-        let mut color = primary;
+        let zero = g.constant(0.0);
+        let mut sources = Sources { previous: primary, primary, constant: [zero; 4], texels };
         for (index, stage) in key.stages.iter().enumerate() {
-            let constant = if stage.mode.reads_constant() {
+            sources.constant = if stage.mode.reads_constant() {
                 std::array::from_fn(|k| g.uniform(FragmentUniform::EnvColor { stage: index as u8, channel: k as u8 }))
             } else {
-                [g.constant(0.0); 4]
+                [zero; 4]
             };
-            color = g.environment(stage, color, primary, constant, &texels);
+            sources.previous = g.environment(stage, &sources);
         }
+        let mut color = sources.previous;
         if let Some(clamp) = key.color_sum {
             for (k, c) in color[..3].iter_mut().enumerate() {
                 let secondary = g.input(FragmentInput::Varying(k as u16));
@@ -275,6 +277,15 @@ fn arguments(f: CombineFn) -> usize {
     }
 }
 
+/// What one unit's environment reads besides its own texel: the previous unit's colour,
+/// the primary colour, GL_TEXTURE_ENV_COLOR, and every unit's texel (for the crossbar).
+struct Sources {
+    previous: [Reg; 4],
+    primary: [Reg; 4],
+    constant: [Reg; 4],
+    texels: HashMap<u8, [Reg; 4]>,
+}
+
 /// The program being written (the generator's own operations are below).
 type Gen = Builder<FragmentInput, FragmentUniform>;
 
@@ -288,14 +299,9 @@ impl Gen {
 
     /// One unit's environment ([`TexEnv::apply`]): its output colour from the previous
     /// unit's `previous`.
-    fn environment(
-        &mut self,
-        stage: &StageKey,
-        previous: [Reg; 4],
-        primary: [Reg; 4],
-        constant: [Reg; 4],
-        texels: &HashMap<u8, [Reg; 4]>,
-    ) -> [Reg; 4] {
+    fn environment(&mut self, stage: &StageKey, sources: &Sources) -> [Reg; 4] {
+        let Sources { previous, constant, texels, .. } = sources;
+        let (previous, constant) = (*previous, *constant);
         let t = texels[&stage.unit];
         let cf = previous;
         let cc = constant;
@@ -362,20 +368,14 @@ impl Gen {
                     _ => cf[3],
                 };
             }
-            ModeKey::Combine { .. } => return self.combine(stage, previous, primary, constant, texels),
+            ModeKey::Combine { .. } => return self.combine(stage, sources),
         }
         [self.clamp01(rgb[0]), self.clamp01(rgb[1]), self.clamp01(rgb[2]), self.clamp01(alpha)]
     }
 
     /// GL_COMBINE (the span path's `combine`).
-    fn combine(
-        &mut self,
-        stage: &StageKey,
-        previous: [Reg; 4],
-        primary: [Reg; 4],
-        constant: [Reg; 4],
-        texels: &HashMap<u8, [Reg; 4]>,
-    ) -> [Reg; 4] {
+    fn combine(&mut self, stage: &StageKey, sources: &Sources) -> [Reg; 4] {
+        let &Sources { previous, primary, constant, ref texels } = sources;
         let ModeKey::Combine { rgb, alpha, src_rgb, op_rgb, src_alpha, op_alpha, scale_rgb, scale_alpha } = stage.mode
         else {
             unreachable!("combine of a classic mode")

@@ -739,9 +739,28 @@ mod tests {
         );
     }
 
+    /// A trilinear RGBA 2D sampler over `levels`, repeating in s and mirrored in t.
+    fn trilinear_rgba(levels: Vec<std::sync::Arc<TexImage>>) -> sampler::Sampler {
+        use sampler::{DepthMode, Dim, Filter, Wrap};
+        sampler::Sampler {
+            dim: Dim::D2,
+            faces: vec![levels],
+            wrap: [Wrap::Repeat, Wrap::MirroredRepeat, Wrap::Repeat],
+            mag: Filter::Linear,
+            min: Filter::Linear,
+            mip: Some(Filter::Linear),
+            border: [0.0; 4],
+            lod_bias: 0.0,
+            min_lod: -1000.0,
+            max_lod: 1000.0,
+            compare: None,
+            depth_mode: DepthMode::Luminance,
+            base: BaseFormat::Rgba,
+        }
+    }
+
     #[test]
     fn quads_and_spans_texture_alike() {
-        use sampler::{DepthMode, Dim, Filter, Sampler, Wrap};
         use std::sync::Arc;
         let mut seed = 0x2545_f491u32;
         let mut next = move || {
@@ -758,21 +777,7 @@ mod tests {
                 Arc::new(img)
             })
             .collect();
-        let sampler = Sampler {
-            dim: Dim::D2,
-            faces: vec![levels],
-            wrap: [Wrap::Repeat, Wrap::MirroredRepeat, Wrap::Repeat],
-            mag: Filter::Linear,
-            min: Filter::Linear,
-            mip: Some(Filter::Linear),
-            border: [0.0; 4],
-            lod_bias: 0.0,
-            min_lod: -1000.0,
-            max_lod: 1000.0,
-            compare: None,
-            depth_mode: DepthMode::Luminance,
-            base: BaseFormat::Rgba,
-        };
+        let sampler = trilinear_rgba(levels);
         let env = env::TexEnv { mode: env::EnvMode::Modulate, base: BaseFormat::Rgba, color: [0.0; 4] };
         let (w, h) = (9, 7);
         let texturing = Texturing { stages: vec![TextureStage::new(0, sampler, env, 1)], fb_height: h };
@@ -1045,7 +1050,6 @@ mod tests {
         // The lookup a program's sample instruction calls (row-major lanes) against
         // `texture_quads` (quad-major lanes) with GL_REPLACE on RGBA, which passes the
         // texture color through: the same colors lane for lane.
-        use sampler::{DepthMode, Dim, Filter, Sampler, Wrap};
         use std::sync::Arc;
         let mut rng = Rng(0x0dd_f00d);
         let mut levels = Vec::new();
@@ -1054,21 +1058,7 @@ mod tests {
             img.texels = Texels::Rgba8((0..n * n).map(|_| (rng.next() as u32).to_le_bytes()).collect());
             levels.push(Arc::new(img));
         }
-        let sampler = Sampler {
-            dim: Dim::D2,
-            faces: vec![levels],
-            wrap: [Wrap::Repeat, Wrap::MirroredRepeat, Wrap::Repeat],
-            mag: Filter::Linear,
-            min: Filter::Linear,
-            mip: Some(Filter::Linear),
-            border: [0.0; 4],
-            lod_bias: 0.0,
-            min_lod: -1000.0,
-            max_lod: 1000.0,
-            compare: None,
-            depth_mode: DepthMode::Luminance,
-            base: BaseFormat::Rgba,
-        };
+        let sampler = trilinear_rgba(levels);
         let env = env::TexEnv { mode: env::EnvMode::Replace, base: BaseFormat::Rgba, color: [0.0; 4] };
         let texturing = Texturing { stages: vec![TextureStage::new(0, sampler, env, 0)], fb_height: 64 };
         let mut differ = 0;
