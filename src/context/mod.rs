@@ -32,6 +32,7 @@ pub mod lists;
 pub mod matrix;
 pub mod multisample;
 pub mod pixel_rect;
+pub mod programs;
 pub mod queries;
 pub mod raster_pos;
 pub mod raster_state;
@@ -90,6 +91,8 @@ pub struct Context {
     pub accuracy: crate::setup::accuracy::Accuracy,
     /// The texture objects (`texture`).
     pub textures: share::Shared<texture::TextureTable>,
+    /// The compiled fixed-function programs (`programs`), shared like the textures.
+    pub programs: share::Shared<programs::ProgramCaches>,
     /// Display lists: the (shareable) name space and the list being compiled.
     pub lists: lists::ListState,
     /// Occlusion queries.
@@ -124,6 +127,7 @@ impl Context {
             buffers: Default::default(),
             accuracy: crate::setup::accuracy::Accuracy::from_env(),
             textures: share::Shared::new(texture::TextureTable::new()),
+            programs: Default::default(),
             lists: Default::default(),
             queries: Default::default(),
             selection: Default::default(),

@@ -2,7 +2,8 @@
 //!
 //! GL 2.1 appendix D: texture objects, buffer objects and display lists (names and
 //! contents) are shared by a context and every context created with it as share context
-//! (OSMesaCreateContextExt/Attribs' and glXCreateContext's share list argument). Each kind
+//! (OSMesaCreateContextExt/Attribs' and glXCreateContext's share list argument), and so,
+//! here, are the compiled fixed-function programs (`super::programs`). Each kind
 //! of object is one table behind a [`Shared`] handle (an `Arc<Mutex<_>>`): the contexts of a
 //! group hold the same handle, and a command locks the table only for as long as it reads or
 //! changes it (never while it holds another table's lock, so two contexts drawing on two
@@ -55,6 +56,7 @@ impl<T: Default> Default for Shared<T> {
 #[derive(Clone)]
 pub struct ShareGroup {
     textures: Shared<crate::context::texture::TextureTable>,
+    programs: Shared<super::programs::ProgramCaches>,
     buffers: Shared<crate::vertex::buffer_objects::BufferTable>,
     lists: super::lists::ListNames,
 }
@@ -62,13 +64,19 @@ pub struct ShareGroup {
 impl super::Context {
     /// The share group this context belongs to.
     pub fn share_group(&self) -> ShareGroup {
-        ShareGroup { textures: self.textures.clone(), buffers: self.buffers.clone(), lists: self.lists.names() }
+        ShareGroup {
+            textures: self.textures.clone(),
+            programs: self.programs.clone(),
+            buffers: self.buffers.clone(),
+            lists: self.lists.names(),
+        }
     }
 
     /// Makes this (new) context share the objects of `group`: its texture objects, buffer
     /// objects and display lists.
     pub fn join_share_group(&mut self, group: &ShareGroup) {
         self.textures = group.textures.clone();
+        self.programs = group.programs.clone();
         self.buffers = group.buffers.clone();
         self.lists.share(group.lists.clone());
     }

@@ -27,6 +27,7 @@
 
 use super::fog::{Fog, FogMode};
 use crate::shader::build::Builder;
+use crate::shader::fast::Compiled;
 use crate::shader::ir::{BinaryOp, Inst, Lod, Program, Reg, Stage, Type, UnaryOp};
 use crate::texture::env::{CombineFn, EnvMode, Operand, Source, TexEnv};
 use crate::texture::BaseFormat;
@@ -177,6 +178,24 @@ pub enum FragmentUniform {
     FogDensity,
     /// Channel 0..3 of the fog colour.
     FogColor(u8),
+}
+
+/// A fragment program ready to run: what the generator made of a key, and its compiled form
+/// (the form the pipeline runs; the generated program stays for `TESSERA_DEBUG=programs`
+/// and the slot tables).
+#[derive(Clone, Debug)]
+pub struct CompiledFragment {
+    pub fixed: FixedFragment,
+    pub compiled: Compiled,
+}
+
+impl CompiledFragment {
+    /// Generates and compiles the program of `key`.
+    pub fn generate(key: &FragmentKey) -> CompiledFragment {
+        let fixed = FixedFragment::generate(key);
+        let compiled = Compiled::new(&fixed.program);
+        CompiledFragment { fixed, compiled }
+    }
 }
 
 /// A generated program and what its input and uniform slots hold.

@@ -14,6 +14,8 @@
 //!   (constants folded, dead code dropped, uniform values scalar, fused operations) and
 //!   interpreted over a file of 16-lane words, bit-identical to [`exec`] (tested on random
 //!   programs); `fast`'s docs say why an interpreter, with measurements.
+//! - [`cache`]: compiled programs by the key of the state that shaped them, least recently
+//!   used evicted first (one cache per share group).
 //! - [`exec`]: the reference: runs a validated program over 16 lanes with execution masks, statement by statement; the arithmetic
 //!   is IEEE add, sub, mul, div and sqrt rounded once each (no contraction), and
 //!   [`math`]'s own polynomials for exp2, log2, sin and cos, so every SIMD level and every
@@ -21,6 +23,7 @@
 #![deny(unsafe_code)]
 
 pub mod build;
+pub mod cache;
 pub mod dump;
 pub mod exec;
 pub mod fast;

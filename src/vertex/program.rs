@@ -31,6 +31,7 @@ use super::texgen::Gen as Generation;
 use super::transform::{FogSource, Transform};
 use crate::gl::enums::{GL_AMBIENT, GL_AMBIENT_AND_DIFFUSE, GL_DIFFUSE, GL_EMISSION, GL_SPECULAR};
 use crate::shader::build::Builder;
+use crate::shader::fast::Compiled;
 use crate::shader::ir::{BinaryOp, Inst, Program, Reg, Stage, Type, UnaryOp};
 
 /// The shape of one enabled light.
@@ -300,6 +301,24 @@ pub enum VertexOutput {
         k: u8,
     },
     FogCoord,
+}
+
+/// A vertex program ready to run: what the generator made of a key, and its compiled form
+/// (the form the pipeline runs; the generated program stays for `TESSERA_DEBUG=programs`
+/// and the slot tables).
+#[derive(Clone, Debug)]
+pub struct CompiledVertex {
+    pub generated: VertexProgram,
+    pub compiled: Compiled,
+}
+
+impl CompiledVertex {
+    /// Generates and compiles the program of `key`.
+    pub fn generate(key: &VertexKey) -> CompiledVertex {
+        let generated = VertexProgram::generate(key);
+        let compiled = Compiled::new(&generated.program);
+        CompiledVertex { generated, compiled }
+    }
 }
 
 /// A generated vertex program and what its slots hold.
