@@ -9,7 +9,8 @@
 # Besides the scenes (tools/bench/bench.c) it measures the size of the shipped libraries, the
 # cost of immediate-mode calls (tools/bench/immediate.c) and MuJoCo's renderer per frame
 # (tools/clients/mujoco_compare.py, when the clients venv of tools/clients.sh exists), tessera
-# alternating with llvmpipe in each.
+# alternating with llvmpipe in each, and the error of tessera's transcendental functions
+# (examples/math_errors.rs).
 #
 # Knobs: BENCH_SIZE (window side), BENCH_REPS (timed frames per scene and process),
 # BENCH_ROUNDS (processes per implementation, alternating), BENCH_SOFTPIPE_REPS,
@@ -85,6 +86,8 @@ else
     echo "bench: no $venv/bin/python (tools/clients.sh builds it): MuJoCo not measured" >&2
 fi
 load_after=$(cut -d' ' -f1-3 /proc/loadavg)
+echo "bench: transcendental function errors" >&2
+cargo run --release --quiet --example math_errors >"$out/math-errors.md"
 
 python3 tools/bench/report.py --dir "$out" --size "$size" --cores "$cores" --reps "$reps" --rounds "$rounds" \
     --load "$load_before" --load-after "$load_after" --markdown "$markdown" --svg "$svg"
