@@ -1433,14 +1433,15 @@ mod tests {
                             let r0 = [stored, stored, rng.unit() * 1.4 - 0.2, 1.0][(rng.next() % 4) as usize];
                             let mut c = [[0.0f32; 16]; 3];
                             // Steep blocks: each quad its own derivatives.
-                            let per_quad = rng.next() % 4 == 0;
+                            let per_quad = rng.next().is_multiple_of(4);
                             for i in 0..16 {
                                 let (x, y) = ((i & 3) as f32, (i >> 2) as f32);
                                 let k = if per_quad { 1.0 + QUAD_OF_LANE[i] as f32 * 3.0 } else { 1.0 };
                                 let jitter = (rng.unit() - 0.5) * scale * 0.05;
                                 c[0][i] = origin[0] + (step[0] * x + down[0] * y) * k + jitter;
                                 c[1][i] = origin[1] + (step[1] * x + down[1] * y) * k;
-                                c[2][i] = if rng.next() % 3 == 0 { r0 + (rng.unit() - 0.5) * 0.01 } else { r0 };
+                                c[2][i] =
+                                    if rng.next().is_multiple_of(3) { r0 + (rng.unit() - 0.5) * 0.01 } else { r0 };
                             }
                             let live = match rng.next() % 4 {
                                 0 => 0xffff,
