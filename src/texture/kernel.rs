@@ -8,7 +8,11 @@
 //! the depth-buffer encoding they are stored in, compared against r when comparison is on,
 //! and filtered in float, with no per-fragment dispatch on format, wrap or comparison.
 //! A sampler whose level cannot depend on λ (no mipmaps, one filter for magnification and
-//! minification, the usual shadow map) computes no λ at all.
+//! minification, the usual shadow map) computes no λ at all. On a 4×4 block
+//! ([`Kernel::sample_block`]) depth lookups run over the 16 lanes (`depth_block`): texels
+//! gathered, then decoded, compared and filtered in lane loops, each lane in its quad's
+//! levels; a block whose quads filter differently (magnification in one, minification in
+//! another) goes quad by quad.
 //!
 //! Every kernel gives the very bits of [`Sampler::sample`], the reference lookup (which
 //! remains the path of every other texture): the tests here compare them on random
