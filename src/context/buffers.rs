@@ -553,4 +553,100 @@ mod tests {
             assert_eq!(fb.depth_stencil().stencil_value(i), 5);
         }
     }
+
+    /// A presenter that shows nothing and, like an OSMesa buffer, is drawn into by one
+    /// context only.
+    struct PrivateSink;
+    impl crate::framebuffer::Present for PrivateSink {
+        fn present(&mut self, _: &crate::framebuffer::Framebuffer) {}
+        fn private(&self) -> bool {
+            true
+        }
+    }
+
+    fn depth_word(d: &Arc<Mutex<Drawable>>, i: usize) -> u32 {
+        let fb = &d.lock().unwrap().framebuffer;
+        fb.depth_stencil().depth_value(i) | (fb.depth_stencil().stencil_value(i) as u32) << 24
+    }
+
+    #[test]
+    fn a_whole_depth_clear_waits_for_the_first_use_of_depth_or_a_reader() {
+        use crate::context::ContextConfig;
+        use crate::framebuffer::Framebuffer;
+        let visual = FramebufferConfig::single_buffered(
+            ColorFormat::Unorm8 { alpha: true },
+            DepthStencilFormat::Packed24 { depth: true, stencil: true },
+            0,
+        );
+        let private = |sink: bool| {
+            let fb = Framebuffer::new(visual, 4, 4).unwrap();
+            let presenter: Option<Box<dyn crate::framebuffer::Present>> =
+                if sink { Some(Box::new(PrivateSink)) } else { None };
+            let d = Arc::new(Mutex::new(Drawable::new(fb, presenter)));
+            let mut ctx = Context::new(ContextConfig { visual });
+            ctx.bind_drawable(Some(d.clone()));
+            (ctx, d)
+        };
+        let (mut ctx, d) = private(true);
+        // glFinish keeps it: the fresh buffer's pages stay untouched (zero).
+        ctx.clear_depth(0.5);
+        ctx.clear_stencil(3);
+        ctx.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+        ctx.finish();
+        assert_eq!(depth_word(&d, 5), 0, "carried across glFinish");
+        // A draw without depth or stencil test leaves it carried.
+        ctx.set_color([1.0, 0.0, 0.0, 1.0]);
+        let triangle = |ctx: &mut Context, z: f32| {
+            ctx.begin(GL_TRIANGLES);
+            for [x, y] in [[-1.0, -1.0], [3.0, -1.0], [-1.0, 3.0]] {
+                ctx.vertex([x, y, z, 1.0]);
+            }
+            ctx.end();
+        };
+        triangle(&mut ctx, 0.0);
+        ctx.finish();
+        assert_eq!(depth_word(&d, 5), 0);
+        // A reader (every reader flushes first) sees the cleared values.
+        ctx.flush_rendering();
+        let half = crate::framebuffer::surface::depth_clear_value(visual.depth_stencil, true, 0.5);
+        assert_eq!(depth_word(&d, 5), 0x0300_0000 | half, "depth 0.5, stencil 3");
+        // A depth-tested draw after a carried clear sees the clear, not what was there:
+        // depth 0.5 is in the buffer, the carried clear says 0.25, and GL_GREATER at 0.4
+        // (z = −0.2) passes only against the carried value.
+        ctx.clear_depth(0.25);
+        ctx.clear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+        ctx.finish();
+        assert_eq!(depth_word(&d, 5), 0x0300_0000 | half, "still carried");
+        ctx.set_capability(GL_DEPTH_TEST, true);
+        ctx.depth_func(GL_GREATER);
+        ctx.set_color([0.0, 0.0, 1.0, 1.0]);
+        triangle(&mut ctx, -0.2);
+        ctx.finish();
+        assert_eq!(pixel(&d, ColorSlot::FrontLeft, 2, 1), [0.0, 0.0, 1.0, 1.0]);
+        assert_eq!(depth_word(&d, 5) >> 24, 3, "the stencil clear applied with it");
+        // A partial clear comes after the carried whole one.
+        ctx.set_capability(GL_DEPTH_TEST, false);
+        ctx.clear_stencil(7);
+        ctx.clear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+        ctx.set_capability(GL_SCISSOR_TEST, true);
+        ctx.scissor(0, 0, 1, 1);
+        ctx.clear_stencil(9);
+        ctx.clear(GL_STENCIL_BUFFER_BIT);
+        ctx.flush_rendering();
+        assert_eq!(depth_word(&d, 0) >> 24, 9);
+        assert_eq!(depth_word(&d, 5) >> 24, 7);
+        // Once the caller holds the depth buffer's address (OSMesaGetDepthBuffer), glFinish
+        // leaves it complete.
+        ctx.set_capability(GL_SCISSOR_TEST, false);
+        let _ = d.lock().unwrap().lend_depth_stencil();
+        ctx.clear_depth(1.0);
+        ctx.clear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+        ctx.finish();
+        assert_eq!(depth_word(&d, 5), 0x0900_0000 | 0x00ff_ffff, "the last clear stencil value, 9");
+        // A framebuffer other contexts may draw into is cleared at glFinish as before.
+        let (mut ctx, d) = private(false);
+        ctx.clear(GL_DEPTH_BUFFER_BIT);
+        ctx.finish();
+        assert_eq!(depth_word(&d, 5), 0x00ff_ffff);
+    }
 }

@@ -20,6 +20,7 @@ use super::{debug, Context};
 use crate::framebuffer::ColorFormat;
 use crate::gl::types::GLenum;
 use crate::raster::thread_count;
+use crate::setup::jobs::clear::ClearJob;
 use crate::setup::{Primitive as RasterPrimitive, Scene};
 use crate::vertex::assembly::DrawPart;
 use crate::vertex::attribute::Attribute;
@@ -79,6 +80,9 @@ impl Context {
         // Mesa analyses changed matrices at draw time; their flags decide how products round.
         self.matrices.validate();
         let state = self.draw_state(&mut scene, width, height, color_format, depth_bits, stencil_bits);
+        if state.fragment.depth.is_some() || state.fragment.stencil.is_some() {
+            self.bring_carried_clear(&mut scene);
+        }
         let description = debug::enabled("pipeline").then(|| {
             let r = state.clip;
             let stipple = if state.polygon_stipple.is_some() { "polygon stipple → " } else { "" };
@@ -159,6 +163,8 @@ impl Context {
             return;
         };
         let mut scene = self.take_scene(width, height);
+        // A pixel rectangle may write depth or stencil (glDrawPixels of either).
+        self.bring_carried_clear(&mut scene);
         let state = self.draw_state(&mut scene, width, height, color_format, depth_bits, stencil_bits);
         let (state_index, _) = scene.add_state(state);
         let job = make(&self.varyings_needed());
@@ -173,8 +179,53 @@ impl Context {
             return;
         };
         let mut scene = self.take_scene(width, height);
-        scene.add_clear(job);
+        if !job.depth_stencil_only() {
+            scene.add_clear(job);
+        } else if let Some(job) = self.carry_clear(job) {
+            // A partial depth/stencil clear: after the carried whole one.
+            self.bring_carried_clear(&mut scene);
+            scene.add_clear(job);
+        }
         self.keep_scene(scene);
+    }
+
+    /// Keeps a depth/stencil clear out of the scenes when it sets every depth and stencil
+    /// value of a single-sampled window framebuffer that only this context draws into
+    /// ([`crate::framebuffer::Present::private`], an OSMesa buffer) and whose depth the
+    /// caller has not been given (OSMesaGetDepthBuffer): it replaces whatever
+    /// was carried before (it overwrites all of it) and waits until a draw tests depth or
+    /// stencil, a pixel rectangle or a partial clear is recorded (then it is binned first,
+    /// in submission order), or something reads the framebuffer ([`Context::flush_rendering`],
+    /// which every reader calls, bins it). glFlush and glFinish leave it carried: nothing
+    /// can see depth or stencil until one of those happens. A first frame that clears
+    /// depth and draws without the depth test then never touches the depth buffer's pages
+    /// (at 1024² that is 4 MiB of fresh pages the kernel would fault in and zero).
+    /// Returns the job when it cannot be carried.
+    fn carry_clear(&mut self, job: ClearJob) -> Option<ClearJob> {
+        let private = self.fbo.draw == 0
+            && self.drawable().is_some_and(|d| {
+                let guard = d.lock().unwrap_or_else(|p| p.into_inner());
+                guard.presenter.as_ref().is_some_and(|p| p.private())
+                    && !guard.depth_stencil_lent()
+                    && guard.framebuffer.samples() == 1
+            });
+        let format = self.config.visual.depth_stencil;
+        let covers = job.whole
+            && (format.depth_bits() == 0 || job.depth.is_some())
+            && (format.stencil_bits() == 0 || matches!(job.stencil, Some((_, 0xff))));
+        if private && covers && job.depth_stencil_only() {
+            self.carried_clear = Some(job);
+            None
+        } else {
+            Some(job)
+        }
+    }
+
+    /// Bins the carried clear (if any) into `scene`, before what is recorded next.
+    fn bring_carried_clear(&mut self, scene: &mut Scene) {
+        if let Some(job) = self.carried_clear.take() {
+            scene.add_clear(job);
+        }
     }
 
     /// The bound framebuffer's size, color format and depth/stencil bits; `None` (with
@@ -206,8 +257,26 @@ impl Context {
         }
     }
 
-    /// Rasterizes everything recorded so far into the bound framebuffer.
+    /// Rasterizes everything recorded so far into the bound framebuffer, the carried
+    /// depth/stencil clear ([`Context::carry_clear`]) included: what any reader of the
+    /// framebuffer calls first.
     pub fn flush_rendering(&mut self) {
+        if self.carried_clear.is_some() {
+            match self.target_format() {
+                Some((width, height, ..)) => {
+                    let mut scene = self.take_scene(width, height);
+                    self.bring_carried_clear(&mut scene);
+                    self.scene = Some(scene);
+                }
+                None => self.carried_clear = None,
+            }
+        }
+        self.flush_keeping_carried_clear();
+    }
+
+    /// Rasterizes what the scene recorded, leaving a carried clear carried (glFlush and
+    /// glFinish: see [`Context::carry_clear`]).
+    pub(super) fn flush_keeping_carried_clear(&mut self) {
         if let Some(scene) = self.scene.take() {
             self.run_scene(scene);
         }

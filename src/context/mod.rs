@@ -81,6 +81,10 @@ pub struct Context {
     scene: Option<crate::setup::Scene>,
     /// The last rendered scene, emptied: the next scene records into its storage.
     spare_scene: Option<crate::setup::Scene>,
+    /// A clear of every depth and stencil value of the window's framebuffer that no draw
+    /// has needed yet (`draw::Context::carry_clear`): kept out of the scenes until a draw
+    /// tests depth or stencil, or something reads the buffer.
+    carried_clear: Option<crate::setup::jobs::clear::ClearJob>,
     /// Viewport and scissor are initialised to the drawable's size at the first bind only.
     bound_once: bool,
     /// Immediate mode and client vertex arrays (`vertex_input`).
@@ -122,6 +126,7 @@ impl Context {
             read_drawable: None,
             scene: None,
             spare_scene: None,
+            carried_clear: None,
             bound_once: false,
             vertex_input: vertex_input::VertexInput::default(),
             buffers: Default::default(),
@@ -231,7 +236,7 @@ impl Context {
 
     /// glFlush: completes pending rendering and presents the drawable.
     pub fn flush(&mut self) {
-        self.flush_rendering();
+        self.flush_keeping_carried_clear();
         if let Some(drawable) = &self.drawable {
             drawable.lock().unwrap_or_else(|p| p.into_inner()).present();
         }

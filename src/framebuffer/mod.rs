@@ -222,6 +222,15 @@ pub trait Present: Send {
         false
     }
 
+    /// Whether the drawable is drawn into by one context only (an OSMesa buffer's
+    /// framebuffer belongs to the context it was bound to; an X window may be current in
+    /// several). Only then may a context keep a whole-buffer depth/stencil clear pending
+    /// across glFlush and glFinish (`context::draw`): no other context can look at the
+    /// buffer in between.
+    fn private(&self) -> bool {
+        false
+    }
+
     /// Frees what the presenter holds in another process (an X server's GC, a shared
     /// segment) while that is still possible; called when its target is destroyed.
     fn release(&mut self) {}
@@ -233,11 +242,28 @@ pub struct Drawable {
     pub presenter: Option<Box<dyn Present>>,
     /// Whether the framebuffer was drawn into since it was last presented.
     drawn: bool,
+    /// Whether the depth/stencil pixels were lent to the caller (OSMesaGetDepthBuffer),
+    /// who may read them at any flush point from then on.
+    depth_stencil_lent: bool,
 }
 
 impl Drawable {
     pub fn new(framebuffer: Framebuffer, presenter: Option<Box<dyn Present>>) -> Drawable {
-        Drawable { framebuffer, presenter, drawn: false }
+        Drawable { framebuffer, presenter, drawn: false, depth_stencil_lent: false }
+    }
+
+    /// The depth/stencil layer, for a caller who keeps its address and reads it after any
+    /// later flush point (OSMesaGetDepthBuffer): from now on its clears are never kept
+    /// pending past one (see [`Drawable::depth_stencil_lent`]).
+    pub fn lend_depth_stencil(&mut self) -> &DepthStencilBuffer {
+        self.depth_stencil_lent = true;
+        self.framebuffer.depth_stencil()
+    }
+
+    /// Whether [`Drawable::lend_depth_stencil`] was called: then glFlush and glFinish
+    /// must leave the depth/stencil pixels complete.
+    pub fn depth_stencil_lent(&self) -> bool {
+        self.depth_stencil_lent
     }
 
     /// The framebuffer, for drawing into it: the next presentation shows the result.

@@ -8,7 +8,11 @@
 //! the depth-buffer encoding they are stored in, compared against r when comparison is on,
 //! and filtered in float, with no per-fragment dispatch on format, wrap or comparison.
 //! A sampler whose level cannot depend on λ (no mipmaps, one filter for magnification and
-//! minification, the usual shadow map) computes no λ at all.
+//! minification, the usual shadow map) computes no λ at all. On a 4×4 block
+//! ([`Kernel::sample_block`]) depth lookups run over the 16 lanes (`depth_block`): texels
+//! gathered, then decoded, compared and filtered in lane loops, each lane in its quad's
+//! levels; a block whose quads filter differently (magnification in one, minification in
+//! another) goes quad by quad.
 //!
 //! Every kernel gives the very bits of [`Sampler::sample`], the reference lookup (which
 //! remains the path of every other texture): the tests here compare them on random
@@ -379,7 +383,15 @@ fn quad_levels(sampler: &Sampler, ddx: [f32; 3], ddy: [f32; 3], c: &[[f32; 3]; 4
 trait DepthTexels<'a>: Copy {
     /// The level's texels, if `img` holds this format.
     fn of(img: &'a TexImage) -> Option<Self>;
-    fn texel(self, i: usize) -> f32;
+    /// The stored word of texel `i`, as [`DepthTexels::decode`] takes it.
+    fn raw(self, i: usize) -> u32;
+    /// A stored word as the sampler reads it ([`depth_texel`]): separate from the fetch
+    /// so that the lane loops gather first and decode 16 lanes at once.
+    fn decode(raw: u32) -> f32;
+    #[inline(always)]
+    fn texel(self, i: usize) -> f32 {
+        Self::decode(self.raw(i))
+    }
 }
 
 #[derive(Clone, Copy)]
@@ -407,8 +419,12 @@ impl<'a> DepthTexels<'a> for Unorm16<'a> {
         }
     }
     #[inline(always)]
-    fn texel(self, i: usize) -> f32 {
-        depth_texel(DepthEncoding::Unorm(16), self.0[i] as u32)
+    fn raw(self, i: usize) -> u32 {
+        self.0[i] as u32
+    }
+    #[inline(always)]
+    fn decode(raw: u32) -> f32 {
+        depth_texel(DepthEncoding::Unorm(16), raw)
     }
 }
 
@@ -420,8 +436,12 @@ impl<'a> DepthTexels<'a> for Unorm24<'a> {
         }
     }
     #[inline(always)]
-    fn texel(self, i: usize) -> f32 {
-        depth_texel(DepthEncoding::Unorm(24), self.0[i] & 0x00ff_ffff)
+    fn raw(self, i: usize) -> u32 {
+        self.0[i] & 0x00ff_ffff
+    }
+    #[inline(always)]
+    fn decode(raw: u32) -> f32 {
+        depth_texel(DepthEncoding::Unorm(24), raw)
     }
 }
 
@@ -433,8 +453,12 @@ impl<'a> DepthTexels<'a> for Unorm32<'a> {
         }
     }
     #[inline(always)]
-    fn texel(self, i: usize) -> f32 {
-        depth_texel(DepthEncoding::Unorm(32), self.0[i])
+    fn raw(self, i: usize) -> u32 {
+        self.0[i]
+    }
+    #[inline(always)]
+    fn decode(raw: u32) -> f32 {
+        depth_texel(DepthEncoding::Unorm(32), raw)
     }
 }
 
@@ -446,8 +470,12 @@ impl<'a> DepthTexels<'a> for FloatDepth<'a> {
         }
     }
     #[inline(always)]
-    fn texel(self, i: usize) -> f32 {
-        depth_texel(DepthEncoding::Float, self.0[i])
+    fn raw(self, i: usize) -> u32 {
+        self.0[i]
+    }
+    #[inline(always)]
+    fn decode(raw: u32) -> f32 {
+        depth_texel(DepthEncoding::Float, raw)
     }
 }
 
@@ -636,8 +664,9 @@ impl Kernel {
                     }
                 }
             }
+            Kernel::Depth2d if depth_block(sampler, c, live, out) => {}
             _ => {
-                // Other kernels: a quad at a time.
+                // Other kernels (and depth blocks the lane loops leave): a quad at a time.
                 for (q, lanes) in QUAD_LANES.iter().enumerate() {
                     let m = quad_mask(live, q);
                     if m == 0 {
@@ -861,6 +890,202 @@ fn linear_lanes<X: AxisWrap, Y: AxisWrap>(levels: &[Level2d; 4], s: &F32s, t: &F
             let lower = lerp8(ch(texels[2][i]), ch(texels[3][i]), wx[i]);
             o[i] = lerp8(upper, lower, wy[i]);
         }
+    }
+}
+
+/// The depth lookups of a block's live lanes in lane loops (2D depth images, every
+/// format, comparison or not): the very bits of [`depth_quad`] quad by quad. Each quad's
+/// levels are chosen as [`Kernel::sample_quad`] chooses them (none per quad when the level
+/// cannot depend on λ, as for most shadow maps); when every live quad filters alike
+/// (nearest or linear), all 16 lanes are looked up together, each in its quad's levels,
+/// texels gathered, then decoded, compared and filtered over the lanes. False, with `out`
+/// untouched, when the quads filter differently or a level holds no texels of the first
+/// level's format: the quad path answers then.
+fn depth_block(sampler: &Sampler, c: &[F32s; 3], live: u16, out: &mut [F32s; 4]) -> bool {
+    match &sampler.faces[0][0].texels {
+        Texels::Depth(buffer) => match (buffer.pixels(), buffer.depth_encoding()) {
+            (DepthStencilPixels::Depth16(_), _) => depth_block_in::<Unorm16>(sampler, c, live, out),
+            (DepthStencilPixels::Packed24(_), _) => depth_block_in::<Unorm24>(sampler, c, live, out),
+            (DepthStencilPixels::Depth32(..), DepthEncoding::Float) => {
+                depth_block_in::<FloatDepth>(sampler, c, live, out)
+            }
+            (DepthStencilPixels::Depth32(..), _) => depth_block_in::<Unorm32>(sampler, c, live, out),
+            (DepthStencilPixels::None, _) => false,
+        },
+        Texels::Rgba8(_) => false,
+    }
+}
+
+/// [`depth_block`] for texels of format `T`.
+#[inline(always)]
+fn depth_block_in<'a, T: DepthTexels<'a>>(sampler: &'a Sampler, c: &[F32s; 3], live: u16, out: &mut [F32s; 4]) -> bool {
+    let levels = &sampler.faces[0];
+    // The levels of each quad with a live lane.
+    let mut which = [None; 4];
+    let fixed_level = sampler.mip.is_none() && sampler.mag == sampler.min;
+    for (q, lanes) in QUAD_LANES.iter().enumerate() {
+        if quad_mask(live, q) == 0 {
+            continue;
+        }
+        which[q] = Some(if fixed_level {
+            Levels::One(0, sampler.mag)
+        } else {
+            let (l0, l1, l2) = (lanes[0], lanes[1], lanes[2]);
+            let ddx = [c[0][l1] - c[0][l0], c[1][l1] - c[1][l0], c[2][l1] - c[2][l0]];
+            let ddy = [c[0][l2] - c[0][l0], c[1][l2] - c[1][l0], c[2][l2] - c[2][l0]];
+            let c0 = [c[0][l0], c[1][l0], c[2][l0]];
+            quad_levels(sampler, ddx, ddy, &[c0; 4])
+        });
+    }
+    let filter_of = |l: Levels| match l {
+        Levels::One(_, mode) => mode,
+        Levels::Two(..) => sampler.min,
+    };
+    let Some(any) = which.iter().flatten().next().copied() else { return true };
+    let filter = filter_of(any);
+    if which.iter().flatten().any(|&l| filter_of(l) != filter) {
+        return false;
+    }
+    // Per quad: the first level, the second (the first again when there is one) and the
+    // weight of the second. Quads without a live lane read a live quad's levels.
+    let (mut first, mut second, mut frac) = ([0usize; 4], [0usize; 4], [0.0f32; 4]);
+    let mut two = 0u16;
+    for q in 0..4 {
+        match which[q].unwrap_or(any) {
+            Levels::One(d, _) => (first[q], second[q]) = (d, d),
+            Levels::Two(d1, d2, f) => {
+                (first[q], second[q], frac[q]) = (d1, d2, f);
+                two |= QUAD_LANES[q].iter().fold(0u16, |m, &i| m | (1 << i));
+            }
+        }
+    }
+    // Each quad's level, looked up once when every quad reads the same (the usual case).
+    let of = |d: [usize; 4]| -> Option<[DepthLevel2d<T>; 4]> {
+        let level = DepthLevel2d::<T>::of(&levels[d[0]])?;
+        if d[1..].iter().all(|&x| x == d[0]) {
+            return Some([level; 4]);
+        }
+        Some([
+            level,
+            DepthLevel2d::<T>::of(&levels[d[1]])?,
+            DepthLevel2d::<T>::of(&levels[d[2]])?,
+            DepthLevel2d::<T>::of(&levels[d[3]])?,
+        ])
+    };
+    let Some(a_levels) = of(first) else { return false };
+    let b_levels = if two != 0 {
+        match of(second) {
+            Some(b) => Some(b),
+            None => return false,
+        }
+    } else {
+        None
+    };
+    // Plain loops: LLVM leaves `array::from_fn` and `map` as calls of a closure.
+    let mut reference = [0.0f32; 16];
+    for i in 0..16 {
+        // The reference value: r, clamped as fixed-point depth formats require.
+        reference[i] = c[2][i].clamp(0.0, 1.0);
+    }
+    let compare = sampler.compare.map(Compare::new);
+    let mut d = [0.0f32; 16];
+    dispatch!(depth_lanes [, T], sampler.wrap, filter, &a_levels, compare, &reference, c, &mut d);
+    if let Some(b_levels) = b_levels {
+        let mut b = [0.0f32; 16];
+        dispatch!(depth_lanes [, T], sampler.wrap, filter, &b_levels, compare, &reference, c, &mut b);
+        let mut f = [0.0f32; 16];
+        for i in 0..16 {
+            f[i] = frac[QUAD_OF_LANE[i]];
+        }
+        for i in 0..16 {
+            // A quad of one level keeps its value (not `a + 0·(b − a)`, which differs
+            // where b is not finite).
+            if two & (1 << i) != 0 {
+                d[i] = d[i] + f[i] * (b[i] - d[i]);
+            }
+        }
+    }
+    // The texture colors of the depth mode, in the live lanes.
+    let (constant, depth_channels): (f32, [bool; 4]) = match sampler.depth_mode {
+        DepthMode::Luminance => (1.0, [true, true, true, false]),
+        DepthMode::Intensity => (0.0, [true; 4]),
+        DepthMode::Alpha => (0.0, [false, false, false, true]),
+    };
+    for (channel, o) in depth_channels.iter().zip(out.iter_mut()) {
+        for i in 0..16 {
+            if live & (1 << i) != 0 {
+                o[i] = if *channel { d[i] } else { constant };
+            }
+        }
+    }
+    true
+}
+
+/// The filtered depth (or filtered comparison of `reference` with the texels) of 16 lanes
+/// at the coordinates `c`, each lane in the level of its quad: [`DepthLevel2d::filter`]
+/// lane by lane, in lane loops.
+#[inline(always)]
+fn depth_lanes<'a, X: AxisWrap, Y: AxisWrap, const LINEAR: bool, T: DepthTexels<'a>>(
+    levels: &[DepthLevel2d<T>; 4],
+    compare: Option<Compare>,
+    reference: &F32s,
+    c: &[F32s; 3],
+    out: &mut F32s,
+) {
+    let (mut s, mut t) = ([0.0; 16], [0.0; 16]);
+    for i in 0..16 {
+        s[i] = X::fold(c[0][i]);
+        t[i] = Y::fold(c[1][i]);
+    }
+    let grids = [levels[0].grid, levels[1].grid, levels[2].grid, levels[3].grid];
+    // The texels' stored words (four per lane when linear), gathered quad by quad.
+    let mut raw = [[0u32; 16]; 4];
+    let (mut wx, mut wy) = ([0i32; 16], [0i32; 16]);
+    if LINEAR {
+        let (x0, x1, wx_) = linear_axis_lanes::<X>(&grids, 0, &s);
+        let (y0, y1, wy_) = linear_axis_lanes::<Y>(&grids, 1, &t);
+        (wx, wy) = (wx_, wy_);
+        for (level, lanes) in levels.iter().zip(&QUAD_LANES) {
+            let width = level.width;
+            for &i in lanes {
+                let (r0, r1) = (y0[i] as usize * width, y1[i] as usize * width);
+                raw[0][i] = level.texels.raw(r0 + x0[i] as usize);
+                raw[1][i] = level.texels.raw(r0 + x1[i] as usize);
+                raw[2][i] = level.texels.raw(r1 + x0[i] as usize);
+                raw[3][i] = level.texels.raw(r1 + x1[i] as usize);
+            }
+        }
+    } else {
+        for (level, lanes) in levels.iter().zip(&QUAD_LANES) {
+            for &i in lanes {
+                let x = nearest::<X>(&level.grid, 0, s[i]);
+                let y = nearest::<Y>(&level.grid, 1, t[i]);
+                raw[0][i] = level.texels.raw(y as usize * level.width + x as usize);
+            }
+        }
+    }
+    // Decoded, and compared with the reference when comparison is on.
+    let texels = if LINEAR { 4 } else { 1 };
+    let mut v = [[0.0f32; 16]; 4];
+    for (v, raw) in v.iter_mut().zip(&raw).take(texels) {
+        for i in 0..16 {
+            v[i] = T::decode(raw[i]);
+        }
+        if let Some(cmp) = compare {
+            for i in 0..16 {
+                v[i] = if cmp.passes(reference[i], v[i]) { 1.0 } else { 0.0 };
+            }
+        }
+    }
+    if LINEAR {
+        for i in 0..16 {
+            let (fx, fy) = (wx[i] as f32 / 256.0, wy[i] as f32 / 256.0);
+            let upper = v[0][i] + fx * (v[1][i] - v[0][i]);
+            let lower = v[2][i] + fx * (v[3][i] - v[2][i]);
+            out[i] = upper + fy * (lower - upper);
+        }
+    } else {
+        *out = v[0];
     }
 }
 
@@ -1162,6 +1387,105 @@ mod tests {
                 }
             }
         }
+    }
+
+    // A lane indexes coordinates, colors and masks alike.
+    #[allow(clippy::needless_range_loop)]
+    #[test]
+    fn depth_block_lanes_are_the_quad_lookups() {
+        // Random depth blocks through `sample_block` (the lane loops) against each quad's
+        // `sample_quad` (`depth_quad`): every storage format, image sizes odd and even,
+        // with and without mipmaps, every comparison function and none, nearest and
+        // linear (alike or not for magnification and minification, so that quads of one
+        // block may filter differently), every wrap pair, each depth mode, random partial
+        // masks, r sometimes exactly a stored texel (EQUAL and NOTEQUAL tie there), and
+        // coordinates from nearly flat to steep (one level per block, or levels per quad).
+        // Live lanes must carry the quad path's bits; the others must be left alone.
+        use crate::texture::depth_storage;
+        let mut rng = Rng(0x0dd5_eed5_1234_abcd);
+        let funcs = [None].into_iter().chain(CompareFunc::ALL.into_iter().map(Some)).collect::<Vec<_>>();
+        let modes = [DepthMode::Luminance, DepthMode::Intensity, DepthMode::Alpha];
+        let formats = [
+            depth_storage(16, false, false),
+            depth_storage(24, true, false),
+            depth_storage(24, false, false),
+            depth_storage(32, false, false),
+            depth_storage(32, true, true),
+        ];
+        let (mut checked, mut in_lanes, mut blended) = (0u32, 0u32, 0u32);
+        for (f, format) in formats.iter().enumerate() {
+            for (w, h) in [(8, 8), (5, 3), (7, 12), (16, 1), (1, 6), (33, 17)] {
+                let levels = depth_chain(&mut rng, w, h, *format);
+                for mip in [None, Some(Filter::Nearest), Some(Filter::Linear)] {
+                    for case in 0..36 {
+                        let sampler = Sampler {
+                            compare: funcs[(case + f) % funcs.len()],
+                            depth_mode: modes[(case / 4) % 3],
+                            base: BaseFormat::Depth,
+                            ..rgba_case(&levels, mip, case)
+                        };
+                        let kernel = Kernel::choose(&sampler);
+                        assert_eq!(kernel, Kernel::Depth2d);
+                        for _ in 0..12 {
+                            let scale = [0.0005, 0.02, 0.3, 2.0][(rng.next() % 4) as usize];
+                            let origin = [rng.unit() * 3.0 - 1.0, rng.unit() * 3.0 - 1.0];
+                            let step = [(rng.unit() - 0.5) * scale, (rng.unit() - 0.5) * scale];
+                            let down = [(rng.unit() - 0.5) * scale, (rng.unit() - 0.5) * scale];
+                            // A stored value (of a random level and texel), or around [0, 1].
+                            let level = &levels[(rng.next() % levels.len() as u64) as usize];
+                            let stored = level.depth_f32((rng.next() % (level.width * level.height) as u64) as usize);
+                            let r0 = [stored, stored, rng.unit() * 1.4 - 0.2, 1.0][(rng.next() % 4) as usize];
+                            let mut c = [[0.0f32; 16]; 3];
+                            // Steep blocks: each quad its own derivatives.
+                            let per_quad = rng.next().is_multiple_of(4);
+                            for i in 0..16 {
+                                let (x, y) = ((i & 3) as f32, (i >> 2) as f32);
+                                let k = if per_quad { 1.0 + QUAD_OF_LANE[i] as f32 * 3.0 } else { 1.0 };
+                                let jitter = (rng.unit() - 0.5) * scale * 0.05;
+                                c[0][i] = origin[0] + (step[0] * x + down[0] * y) * k + jitter;
+                                c[1][i] = origin[1] + (step[1] * x + down[1] * y) * k;
+                                c[2][i] =
+                                    if rng.next().is_multiple_of(3) { r0 + (rng.unit() - 0.5) * 0.01 } else { r0 };
+                            }
+                            let live = match rng.next() % 4 {
+                                0 => 0xffff,
+                                1 => rng.next() as u16,
+                                2 => (rng.next() as u16) & (rng.next() as u16),
+                                _ => 1 << (rng.next() % 16),
+                            };
+                            let mut out = [[7.0f32; 16]; 4];
+                            kernel.sample_block(&sampler, &c, live, &mut out);
+                            let mut lanes_out = [[7.0f32; 16]; 4];
+                            let took_lanes = depth_block(&sampler, &c, live, &mut lanes_out);
+                            in_lanes += u32::from(took_lanes && live != 0);
+                            blended += u32::from(took_lanes && mip == Some(Filter::Linear) && live != 0);
+                            for (q, lanes) in QUAD_LANES.iter().enumerate() {
+                                let quad: [[f32; 3]; 4] =
+                                    std::array::from_fn(|l| std::array::from_fn(|j| c[j][lanes[l]]));
+                                let mut expect = [[7.0f32; 4]; 4];
+                                kernel.sample_quad(&sampler, &quad, quad_mask(live, q), &mut expect);
+                                for l in 0..4 {
+                                    let i = lanes[l];
+                                    for k in 0..4 {
+                                        let want = if live & (1 << i) != 0 { expect[l][k] } else { 7.0 };
+                                        assert_eq!(
+                                            out[k][i].to_bits(),
+                                            want.to_bits(),
+                                            "{format:?} {w}x{h} lane {i} channel {k} {sampler:?} {c:?} {live:#x}"
+                                        );
+                                        if took_lanes {
+                                            assert_eq!(lanes_out[k][i].to_bits(), want.to_bits());
+                                        }
+                                    }
+                                }
+                            }
+                            checked += live.count_ones();
+                        }
+                    }
+                }
+            }
+        }
+        assert!(checked > 50_000 && in_lanes > 5_000 && blended > 500, "{checked} {in_lanes} {blended}");
     }
 
     #[test]

@@ -206,6 +206,10 @@ impl Present for CallerPresenter {
         true
     }
 
+    fn private(&self) -> bool {
+        true
+    }
+
     fn present(&mut self, framebuffer: &Framebuffer) {
         let Some(color) = framebuffer.color(ColorSlot::FrontLeft) else {
             return;
@@ -440,8 +444,8 @@ impl OsMesaContext {
         self.shared.with_gl(|gl| gl.flush_rendering());
         let binding = self.lock_binding();
         let b = binding.as_ref()?;
-        let drawable = b.drawable.lock().unwrap_or_else(|p| p.into_inner());
-        let ds = drawable.framebuffer.depth_stencil();
+        let mut drawable = b.drawable.lock().unwrap_or_else(|p| p.into_inner());
+        let ds = drawable.lend_depth_stencil();
         if ds.depth_bits() == 0 {
             return None;
         }
