@@ -53,10 +53,8 @@ pub struct Scene {
     /// The color buffers the scene writes, in the order of every draw's color masks.
     targets: Vec<ColorSlot>,
     states: Vec<Arc<DrawState>>,
-    /// The primitives, and apart (so that adding one copies the job once, straight into
-    /// place) the index of each one's draw state.
-    primitives: Vec<Primitive>,
-    primitive_states: Vec<u32>,
+    /// The primitives and the index of each one's draw state.
+    primitives: Store,
     /// Per draw state, [`Scene::overwrites`].
     overwriting: Vec<bool>,
     /// Per tile (row-major), indices into `primitives` in submission order.
@@ -64,13 +62,107 @@ pub struct Scene {
     /// How many indices the bins hold in all.
     binned: usize,
     /// A deferred part ([`Scene::deferred_part`]): in order, what binning each primitive
-    /// [`Scene::add`] is given needs (its state, its clipped bounds and, for a triangle,
-    /// the edges binning tests), computed on the recording thread; the primitives go to
-    /// `primitives`, and [`Scene::append`] bins them.
-    deferred: Option<Vec<(u32, Rect, Option<PixelEdges>)>>,
+    /// [`Scene::add`] is given needs (its index in the part's store, its state, its
+    /// clipped bounds and, for a triangle, the edges binning tests), computed on the
+    /// recording thread; the primitives go to `primitives`, and [`Scene::append`] bins them.
+    deferred: Option<Vec<Deferred>>,
     /// The index of `states[0]`: 0, but in a deferred part, which holds only the scene's
     /// last [`STATE_CACHE`] states (the ones a draw's state may be).
     state_base: usize,
+}
+
+/// What [`Scene::append`] needs to bin a primitive of a deferred part: its index in the
+/// part's store, its draw state, its clipped bounds and its pixel edges when binning reads
+/// them (see [`Scene::add`]).
+type Deferred = (u32, u32, Rect, Option<PixelEdges>);
+
+/// How many primitives one chunk of a [`Store`] holds (a power of two).
+const CHUNK: usize = 1 << 12;
+
+/// A scene's primitives and the draw state of each, in chunks of [`CHUNK`]: primitive `i` is
+/// entry `i % CHUNK` of chunk `i / CHUNK`. Chunks make a deferred part's primitives part of
+/// the scene without moving them ([`Store::append`] appends the part's chunks, leaving the
+/// rest of the scene's last chunk unused: indices need not be dense), where one vector
+/// copied every job of the part (on small_triangles, 34 MB a frame on the recording thread)
+/// into freshly allocated memory; and the chunks of a rendered scene are kept, emptied, for
+/// the next one (see [`Scene::clear`]), so recording writes into memory already mapped.
+#[derive(Default)]
+struct Store {
+    chunks: Vec<Chunk>,
+    /// Emptied chunks, their storage kept for reuse.
+    spare: Vec<Chunk>,
+    /// How many primitives the chunks hold.
+    len: usize,
+}
+
+/// Up to [`CHUNK`] primitives and their draw states (a clear's is [`CLEAR_STATE`]).
+struct Chunk {
+    primitives: Vec<Primitive>,
+    states: Vec<u32>,
+}
+
+impl Store {
+    /// The index the next [`Store::push`] gives.
+    #[inline(always)]
+    fn next_index(&self) -> u32 {
+        match self.chunks.last() {
+            Some(c) if c.primitives.len() < CHUNK => ((self.chunks.len() - 1) * CHUNK + c.primitives.len()) as u32,
+            _ => (self.chunks.len() * CHUNK) as u32,
+        }
+    }
+
+    /// Adds `primitive`, drawn with `state`; its index.
+    #[inline(always)]
+    fn push(&mut self, primitive: Primitive, state: u32) -> u32 {
+        let index = self.next_index();
+        if index as usize == self.chunks.len() * CHUNK {
+            let chunk = self
+                .spare
+                .pop()
+                .unwrap_or_else(|| Chunk { primitives: Vec::with_capacity(CHUNK), states: Vec::with_capacity(CHUNK) });
+            self.chunks.push(chunk);
+        }
+        let chunk = self.chunks.last_mut().expect("pushed above");
+        chunk.primitives.push(primitive);
+        chunk.states.push(state);
+        self.len += 1;
+        index
+    }
+
+    /// Primitive `index` and its draw state.
+    #[inline(always)]
+    fn get(&self, index: u32) -> (&Primitive, u32) {
+        let (k, i) = (index as usize / CHUNK, index as usize % CHUNK);
+        let chunk = &self.chunks[k];
+        (&chunk.primitives[i], chunk.states[i])
+    }
+
+    /// Appends the chunks of `other`, and takes its spare ones: the index in this store of
+    /// `other`'s primitive `i` is `i` plus the returned offset.
+    fn append(&mut self, other: Store) -> u32 {
+        let offset = (self.chunks.len() * CHUNK) as u32;
+        self.chunks.extend(other.chunks);
+        self.spare.extend(other.spare);
+        self.len += other.len;
+        offset
+    }
+
+    /// Up to `n` spare chunks, for a deferred part to record into.
+    fn lend(&mut self, n: usize) -> Store {
+        let spare = self.spare.split_off(self.spare.len().saturating_sub(n));
+        Store { chunks: Vec::new(), spare, len: 0 }
+    }
+
+    /// Empties the store, keeping the storage of at most `kept` chunks.
+    fn clear(&mut self, kept: usize) {
+        for mut chunk in self.chunks.drain(..) {
+            chunk.primitives.clear();
+            chunk.states.clear();
+            self.spare.push(chunk);
+        }
+        self.spare.truncate(kept);
+        self.len = 0;
+    }
 }
 
 /// Whether what an entry wrote in `tile` inside its rectangle `clip` lies within `region`
@@ -140,8 +232,7 @@ impl Scene {
             tiles_x,
             targets: Vec::new(),
             states: Vec::new(),
-            primitives: Vec::new(),
-            primitive_states: Vec::new(),
+            primitives: Store::default(),
             overwriting: Vec::new(),
             bins: vec![Vec::new(); tiles_x * tiles_y],
             binned: 0,
@@ -154,8 +245,10 @@ impl Scene {
     /// (through [`Scene::add`]) while this scene records the draw's earlier primitives:
     /// it keeps what it is given, unbinned, and [`Scene::append`] bins it afterwards, in
     /// order, exactly as if it had been added here (the bins, the tiles an opaque triangle
-    /// drops and so the bytes are the same). Only [`Scene::add`] may be used on it.
-    pub fn deferred_part(&self, capacity: usize) -> Scene {
+    /// drops and so the bytes are the same). Only [`Scene::add`] may be used on it. It
+    /// records into this scene's spare storage, enough for `capacity` primitives if it has
+    /// that much.
+    pub fn deferred_part(&mut self, capacity: usize) -> Scene {
         debug_assert!(self.deferred.is_none());
         let recent = self.states.len().saturating_sub(STATE_CACHE);
         Scene {
@@ -164,8 +257,7 @@ impl Scene {
             tiles_x: self.tiles_x,
             targets: Vec::new(),
             states: self.states[recent..].to_vec(),
-            primitives: Vec::with_capacity(capacity),
-            primitive_states: Vec::new(),
+            primitives: self.primitives.lend(capacity.div_ceil(CHUNK)),
             overwriting: self.overwriting[recent..].to_vec(),
             bins: Vec::new(),
             binned: 0,
@@ -176,16 +268,14 @@ impl Scene {
 
     /// Bins the primitives recorded into `part` (from [`Scene::deferred_part`]) after
     /// everything recorded here so far.
-    pub fn append(&mut self, mut part: Scene) {
+    pub fn append(&mut self, part: Scene) {
         let Some(deferred) = part.deferred else { return };
-        debug_assert!(self.deferred.is_none() && deferred.len() == part.primitives.len());
-        // The part's primitives moved in one copy, then each binned in order, as
-        // [`Scene::add`] bins it.
-        let first = self.primitives.len();
-        self.primitives.append(&mut part.primitives);
-        for (k, (state, r, edges)) in deferred.into_iter().enumerate() {
-            self.primitive_states.push(state);
-            self.bin((first + k) as u32, state, r, tile_span(r), edges.as_ref());
+        debug_assert!(self.deferred.is_none() && deferred.len() == part.primitives.len);
+        // The part's chunks become the scene's (no job moves), then each primitive is binned
+        // in order, as [`Scene::add`] bins it.
+        let offset = self.primitives.append(part.primitives);
+        for (index, state, r, edges) in deferred {
+            self.bin(index + offset, state, r, tile_span(r), edges.as_ref());
         }
     }
 
@@ -199,12 +289,12 @@ impl Scene {
 
     /// About how much memory the recorded primitives and their bin entries take.
     pub fn recorded_bytes(&self) -> usize {
-        self.primitives.len() * (std::mem::size_of::<Primitive>() + std::mem::size_of::<u32>())
+        self.primitives.len * (std::mem::size_of::<Primitive>() + std::mem::size_of::<u32>())
             + self.binned * std::mem::size_of::<u32>()
     }
 
     pub fn is_empty(&self) -> bool {
-        self.primitives.is_empty()
+        self.primitives.len == 0
     }
 
     pub fn size(&self) -> (usize, usize) {
@@ -269,16 +359,12 @@ impl Scene {
         let edges = triangle
             .filter(|_| !per_sample && edges_needed(span, r, overwriting, drawn.fill_clip, framebuffer))
             .map(|job| job.setup.pixel_edges());
+        let index = self.primitives.push(primitive, state);
         if let Some(deferred) = &mut self.deferred {
-            // The primitive kept apart from what binning it needs, so that
-            // [`Scene::append`] moves all of them in one copy.
-            self.primitives.push(primitive);
-            return deferred.push((state, r, edges));
+            // Binned by [`Scene::append`].
+            return deferred.push((index, state, r, edges));
         }
-        let index = self.primitives.len() as u32;
         self.bin(index, state, r, span, edges.as_ref());
-        self.primitives.push(primitive);
-        self.primitive_states.push(state);
     }
 
     /// Draw state `state` and whether it overwrites (a deferred part holds only the
@@ -361,7 +447,7 @@ impl Scene {
             // (its pixels there must stay cleared; inside, the triangle paints over it).
             let (primitives, entries) = (&self.primitives, &mut self.bins[bin]);
             let before = entries.len();
-            entries.retain(|&i| match &primitives[i as usize] {
+            entries.retain(|&i| match primitives.get(i).0 {
                 Primitive::Clear(c) => c.depth_stencil_only() || !writes_within(tile, c.rect, region),
                 _ => false,
             });
@@ -405,13 +491,13 @@ impl Scene {
         // Whether what an entry wrote inside `clip` lies within the region overwritten.
         let within = |clip: Rect| writes_within(tile, clip, region);
         self.bins[bin].iter().all(|&i| {
-            let primitive = &self.primitives[i as usize];
+            let (primitive, state) = self.primitives.get(i);
             if let Primitive::Clear(c) = primitive {
                 // A depth/stencil clear is kept, and so is a colour clear where the triangle
                 // does not overwrite it (see `drop_covered_tile`).
                 return c.depth_stencil_only() || (c.depth.is_none() && c.stencil.is_none());
             }
-            let s = &self.states[self.primitive_states[i as usize] as usize];
+            let s = &self.states[state as usize];
             let clip = if matches!(primitive, Primitive::Triangle(_)) { s.fill_clip } else { s.clip };
             !matches!(primitive, Primitive::Pixels(_))
                 && within(clip)
@@ -431,7 +517,7 @@ impl Scene {
         for c in &job.colors {
             self.target_index(c.slot);
         }
-        let index = self.primitives.len() as u32;
+        let index = self.primitives.push(Primitive::Clear(job), CLEAR_STATE);
         let t = TILE_SIZE as i32;
         for ty in (r.y0 / t)..=((r.y1 - 1) / t) {
             for tx in (r.x0 / t)..=((r.x1 - 1) / t) {
@@ -439,8 +525,6 @@ impl Scene {
                 self.binned += 1;
             }
         }
-        self.primitives.push(Primitive::Clear(job));
-        self.primitive_states.push(CLEAR_STATE);
     }
 
     /// Bins a primitive covering at most `bounds`, but only into the tiles of each tile row
@@ -459,7 +543,7 @@ impl Scene {
         if r.is_empty() {
             return;
         }
-        let index = self.primitives.len() as u32;
+        let index = self.primitives.next_index();
         let t = TILE_SIZE as i32;
         let mut binned = false;
         for ty in (r.y0 / t)..=((r.y1 - 1) / t) {
@@ -477,8 +561,7 @@ impl Scene {
             }
         }
         if binned {
-            self.primitives.push(primitive);
-            self.primitive_states.push(state);
+            self.primitives.push(primitive, state);
         }
     }
 
@@ -491,7 +574,7 @@ impl Scene {
     /// Renders the scene on up to `threads` threads (the caller's included): the tile
     /// workers render each tile's bin in submission order, each entry by its job.
     pub fn execute_on(&self, framebuffer: &mut Framebuffer, threads: usize) {
-        if self.primitives.is_empty() {
+        if self.is_empty() {
             return;
         }
         // Each draw state compiled once into lane kernels for this framebuffer's formats (the
@@ -509,11 +592,11 @@ impl Scene {
             })
             .collect();
         render_tiles(framebuffer, &self.targets, self.tiles_x, &self.bins, threads, |index, tile, band, scratch| {
-            let primitive = &self.primitives[index as usize];
+            let (primitive, state_index) = self.primitives.get(index);
             if let Primitive::Clear(job) = primitive {
                 return job.render(tile, band);
             }
-            let state_index = self.primitive_states[index as usize] as usize;
+            let state_index = state_index as usize;
             let state = &self.states[state_index];
             let area = tile.intersect(state.clip);
             match primitive {
@@ -545,14 +628,12 @@ impl Scene {
     /// (on small_triangles at 1024² that is 14 000 page faults a frame), and what stays
     /// allocated between scenes is bounded by the budget a scene may reach anyway.
     pub fn clear(&mut self) {
-        let kept_primitives = Self::BUDGET_BYTES / (std::mem::size_of::<Primitive>() + std::mem::size_of::<u32>());
+        let kept_chunks =
+            Self::BUDGET_BYTES / (CHUNK * (std::mem::size_of::<Primitive>() + std::mem::size_of::<u32>())) + 1;
         self.targets.clear();
         self.states.clear();
         self.overwriting.clear();
-        self.primitives.clear();
-        self.primitives.shrink_to(kept_primitives);
-        self.primitive_states.clear();
-        self.primitive_states.shrink_to(kept_primitives);
+        self.primitives.clear(kept_chunks);
         // The bins' entries count against the budget too: a tile keeps at most its share.
         let kept_entries = Self::BUDGET_BYTES / std::mem::size_of::<u32>() / self.bins.len().max(1);
         for bin in &mut self.bins {
@@ -611,7 +692,7 @@ mod tests {
 
     /// What a scene has binned: per tile, the setups of its entries in order.
     fn binned(scene: &Scene) -> Vec<Vec<TriangleSetup>> {
-        let setup = |i: &u32| match &scene.primitives[*i as usize] {
+        let setup = |i: &u32| match scene.primitives.get(*i).0 {
             Primitive::Triangle(job) => job.setup.clone(),
             _ => unreachable!("triangles only"),
         };
@@ -667,7 +748,7 @@ mod tests {
             assert!(later.bins.is_empty() && later.binned == 0, "a deferred part bins nothing");
             parted.append(later);
             assert_eq!(binned(&parted), binned(&whole), "split after {split} triangles");
-            assert_eq!((parted.binned, parted.primitives.len()), (whole.binned, whole.primitives.len()));
+            assert_eq!((parted.binned, parted.primitives.len), (whole.binned, whole.primitives.len));
         }
         // The big triangle (x + y < 290) drops what the first two left in every tile it
         // covers whole; tile (2, 1), pixels x 128..192, y 64..128, it does not (its far
@@ -824,6 +905,41 @@ mod tests {
     /// A plain state (depth-tested, so nothing is dropped) clipped to `clip`.
     fn state_clipped(clip: Rect) -> DrawState {
         DrawState { clip, fill_clip: clip, ..state(false) }
+    }
+
+    #[test]
+    fn the_store_keeps_every_primitive_and_state_across_chunks_and_appends() {
+        use crate::setup::jobs::clear::ClearJob;
+        let clear = |k: usize| {
+            let rect = Rect::from_xywh(k as i32, 0, 1, 1);
+            Primitive::Clear(ClearJob { rect, whole: false, colors: vec![], depth: Some(1.0), stencil: None })
+        };
+        let x_of = |store: &Store, i: u32| match store.get(i) {
+            (Primitive::Clear(c), state) => (c.rect.x0 as usize, state),
+            _ => unreachable!("clears only"),
+        };
+        let mut store = Store::default();
+        let first: Vec<u32> = (0..CHUNK + 5).map(|k| store.push(clear(k), k as u32)).collect();
+        assert_eq!(first, (0..CHUNK as u32 + 5).collect::<Vec<_>>(), "dense within a store");
+        // A part recorded apart, in one spare chunk lent by the store once it has one.
+        store.clear(4);
+        assert_eq!((store.len, store.spare.len()), (0, 2));
+        let first: Vec<u32> = (0..7).map(|k| store.push(clear(k), k as u32)).collect();
+        let mut part = store.lend(1);
+        assert_eq!(part.spare.len(), 1);
+        let local: Vec<u32> = (0..CHUNK + 3).map(|k| part.push(clear(1000 + k), 7)).collect();
+        let offset = store.append(part);
+        assert_eq!(offset as usize, CHUNK, "the part starts at the store's next chunk");
+        let later = store.push(clear(99), 8);
+        assert_eq!(store.len, 7 + CHUNK + 3 + 1);
+        for (k, &i) in first.iter().enumerate() {
+            assert_eq!(x_of(&store, i), (k, k as u32));
+        }
+        for (k, &i) in local.iter().enumerate() {
+            assert_eq!(x_of(&store, i + offset), (1000 + k, 7));
+        }
+        assert_eq!(later as usize, 2 * CHUNK + 3, "after the part's last primitive");
+        assert_eq!(x_of(&store, later), (99, 8));
     }
 
     #[test]
