@@ -338,33 +338,45 @@ impl Scene {
     /// exclusive max), under draw state `state`.
     #[inline]
     pub fn add(&mut self, state: u32, bounds: Rect, primitive: Primitive) {
-        let (drawn, overwriting) = self.draw_state(state);
-        let triangle = match &primitive {
-            Primitive::Triangle(job) => Some(job),
-            _ => None,
+        let primitive = match primitive {
+            Primitive::Triangle(job) => return self.add_triangle(state, bounds, job),
+            other => other,
         };
-        // Rasterized per sample, a triangle may cover samples of pixels whose centre it misses.
-        let per_sample = triangle.is_some() && drawn.multisample.is_some_and(|m| m.per_sample());
-        let (bounds, clip) = match triangle {
-            Some(job) if per_sample => (job.sample_bounds(), drawn.fill_clip),
-            Some(_) => (bounds, drawn.fill_clip),
-            None => (bounds, drawn.clip),
-        };
-        let r = bounds.intersect(clip);
+        let r = bounds.intersect(self.draw_state(state).0.clip);
         if r.is_empty() {
             return;
         }
-        let span = tile_span(r);
+        self.record(state, r, None, primitive);
+    }
+
+    /// [`Scene::add`] for a filled triangle, inlined into the triangle's setup so that the
+    /// job is moved once, into the scene's store.
+    #[inline(always)]
+    pub fn add_triangle(&mut self, state: u32, bounds: Rect, job: TriangleJob) {
+        let (drawn, overwriting) = self.draw_state(state);
+        // Rasterized per sample, a triangle may cover samples of pixels whose centre it misses.
+        let per_sample = drawn.multisample.is_some_and(|m| m.per_sample());
+        let bounds = if per_sample { job.sample_bounds() } else { bounds };
+        let fill_clip = drawn.fill_clip;
+        let r = bounds.intersect(fill_clip);
+        if r.is_empty() {
+            return;
+        }
         let framebuffer = Rect::from_xywh(0, 0, self.width as i32, self.height as i32);
-        let edges = triangle
-            .filter(|_| !per_sample && edges_needed(span, r, overwriting, drawn.fill_clip, framebuffer))
-            .map(|job| job.setup.pixel_edges());
+        let edges = (!per_sample && edges_needed(tile_span(r), r, overwriting, fill_clip, framebuffer))
+            .then(|| job.setup.pixel_edges());
+        self.record(state, r, edges, Primitive::Triangle(job));
+    }
+
+    /// Stores `primitive` (drawn with `state`, its bounds within its clip rectangle `r`, not
+    /// empty) and bins it, or in a deferred part keeps what [`Scene::append`] bins it with.
+    #[inline(always)]
+    fn record(&mut self, state: u32, r: Rect, edges: Option<PixelEdges>, primitive: Primitive) {
         let index = self.primitives.push(primitive, state);
         if let Some(deferred) = &mut self.deferred {
-            // Binned by [`Scene::append`].
             return deferred.push((index, state, r, edges));
         }
-        self.bin(index, state, r, span, edges.as_ref());
+        self.bin(index, state, r, tile_span(r), edges.as_ref());
     }
 
     /// Draw state `state` and whether it overwrites (a deferred part holds only the
