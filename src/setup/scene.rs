@@ -64,8 +64,12 @@ pub struct Scene {
     /// A deferred part ([`Scene::deferred_part`]): in order, what binning each primitive
     /// [`Scene::add`] is given needs (its index in the part's store, its state, its
     /// clipped bounds and, for a triangle, the edges binning tests), computed on the
-    /// recording thread; the primitives go to `primitives`, and [`Scene::append`] bins them.
+    /// recording thread, for the primitives that [`Scene::append`] bins (those that may
+    /// drop tiles' entries, and all after them; the part bins the others into its own
+    /// `bins`, with indices into its own store).
     deferred: Option<Vec<Deferred>>,
+    /// Emptied bins of the last deferred part, lent to the next one.
+    spare_bins: Vec<Vec<u32>>,
     /// The index of `states[0]`: 0, but in a deferred part, which holds only the scene's
     /// last [`STATE_CACHE`] states (the ones a draw's state may be).
     state_base: usize,
@@ -95,18 +99,15 @@ struct Store {
     len: usize,
 }
 
-/// Up to [`CHUNK`] primitives and their draw states (a clear's is [`CLEAR_STATE`]).
-struct Chunk {
-    primitives: Vec<Primitive>,
-    states: Vec<u32>,
-}
+/// Up to [`CHUNK`] primitives, each with its draw state (a clear's is [`CLEAR_STATE`]).
+type Chunk = Vec<(Primitive, u32)>;
 
 impl Store {
     /// The index the next [`Store::push`] gives.
     #[inline(always)]
     fn next_index(&self) -> u32 {
         match self.chunks.last() {
-            Some(c) if c.primitives.len() < CHUNK => ((self.chunks.len() - 1) * CHUNK + c.primitives.len()) as u32,
+            Some(c) if c.len() < CHUNK => ((self.chunks.len() - 1) * CHUNK + c.len()) as u32,
             _ => (self.chunks.len() * CHUNK) as u32,
         }
     }
@@ -114,27 +115,24 @@ impl Store {
     /// Adds `primitive`, drawn with `state`; its index.
     #[inline(always)]
     fn push(&mut self, primitive: Primitive, state: u32) -> u32 {
-        let index = self.next_index();
-        if index as usize == self.chunks.len() * CHUNK {
-            let chunk = self
-                .spare
-                .pop()
-                .unwrap_or_else(|| Chunk { primitives: Vec::with_capacity(CHUNK), states: Vec::with_capacity(CHUNK) });
-            self.chunks.push(chunk);
-        }
-        let chunk = self.chunks.last_mut().expect("pushed above");
-        chunk.primitives.push(primitive);
-        chunk.states.push(state);
         self.len += 1;
-        index
+        let k = self.chunks.len();
+        if let Some(chunk) = self.chunks.last_mut().filter(|c| c.len() < CHUNK) {
+            let index = (k - 1) * CHUNK + chunk.len();
+            chunk.push((primitive, state));
+            return index as u32;
+        }
+        let mut chunk = self.spare.pop().unwrap_or_else(|| Vec::with_capacity(CHUNK));
+        chunk.push((primitive, state));
+        self.chunks.push(chunk);
+        (k * CHUNK) as u32
     }
 
     /// Primitive `index` and its draw state.
     #[inline(always)]
     fn get(&self, index: u32) -> (&Primitive, u32) {
-        let (k, i) = (index as usize / CHUNK, index as usize % CHUNK);
-        let chunk = &self.chunks[k];
-        (&chunk.primitives[i], chunk.states[i])
+        let (primitive, state) = &self.chunks[index as usize / CHUNK][index as usize % CHUNK];
+        (primitive, *state)
     }
 
     /// Appends the chunks of `other`, and takes its spare ones: the index in this store of
@@ -156,8 +154,7 @@ impl Store {
     /// Empties the store, keeping the storage of at most `kept` chunks.
     fn clear(&mut self, kept: usize) {
         for mut chunk in self.chunks.drain(..) {
-            chunk.primitives.clear();
-            chunk.states.clear();
+            chunk.clear();
             self.spare.push(chunk);
         }
         self.spare.truncate(kept);
@@ -237,15 +234,17 @@ impl Scene {
             bins: vec![Vec::new(); tiles_x * tiles_y],
             binned: 0,
             deferred: None,
+            spare_bins: Vec::new(),
             state_base: 0,
         }
     }
 
     /// An empty part of this scene that another thread may record filled triangles into
     /// (through [`Scene::add`]) while this scene records the draw's earlier primitives:
-    /// it keeps what it is given, unbinned, and [`Scene::append`] bins it afterwards, in
-    /// order, exactly as if it had been added here (the bins, the tiles an opaque triangle
-    /// drops and so the bytes are the same). Only [`Scene::add`] may be used on it. It
+    /// [`Scene::append`] makes what it is given part of this scene afterwards, in order,
+    /// exactly as if it had been added here (the bins, the tiles an opaque triangle drops
+    /// and so the bytes are the same): the part bins what it can on its own thread (see
+    /// `deferred`) and keeps the rest for `append` to bin. Only [`Scene::add`] may be used on it. It
     /// records into this scene's spare storage, enough for `capacity` primitives if it has
     /// that much.
     pub fn deferred_part(&mut self, capacity: usize) -> Scene {
@@ -259,9 +258,10 @@ impl Scene {
             states: self.states[recent..].to_vec(),
             primitives: self.primitives.lend(capacity.div_ceil(CHUNK)),
             overwriting: self.overwriting[recent..].to_vec(),
-            bins: Vec::new(),
             binned: 0,
-            deferred: Some(Vec::with_capacity(capacity)),
+            bins: self.lend_bins(),
+            deferred: Some(Vec::new()),
+            spare_bins: Vec::new(),
             state_base: recent,
         }
     }
@@ -270,13 +270,31 @@ impl Scene {
     /// everything recorded here so far.
     pub fn append(&mut self, part: Scene) {
         let Some(deferred) = part.deferred else { return };
-        debug_assert!(self.deferred.is_none() && deferred.len() == part.primitives.len);
+        debug_assert!(self.deferred.is_none() && deferred.len() <= part.primitives.len);
         // The part's chunks become the scene's (no job moves), then each primitive is binned
         // in order, as [`Scene::add`] bins it.
         let offset = self.primitives.append(part.primitives);
-        for (index, state, r, edges) in deferred {
-            self.bin(index + offset, state, r, tile_span(r), edges.as_ref());
+        let mut bins = part.bins;
+        if part.binned > 0 {
+            // What the part binned itself comes first, in order.
+            for (bin, entries) in self.bins.iter_mut().zip(&mut bins) {
+                bin.extend(entries.iter().map(|&i| i + offset));
+                entries.clear();
+            }
+            self.binned += part.binned;
         }
+        self.spare_bins = bins;
+        for (index, state, r, edges) in deferred {
+            let opaque = edges.as_ref().filter(|_| self.overwriting[state as usize] && self.writes_every_target(state));
+            self.bin(index + offset, state, r, tile_span(r), edges.as_ref(), opaque);
+        }
+    }
+
+    /// Empty bins for a deferred part: the ones the last part gave back, kept for reuse.
+    fn lend_bins(&mut self) -> Vec<Vec<u32>> {
+        let mut bins = std::mem::take(&mut self.spare_bins);
+        bins.resize_with(self.bins.len(), Vec::new);
+        bins
     }
 
     /// The recorded primitives a scene may hold before the context renders it (whatever
@@ -373,10 +391,20 @@ impl Scene {
     #[inline(always)]
     fn record(&mut self, state: u32, r: Rect, edges: Option<PixelEdges>, primitive: Primitive) {
         let index = self.primitives.push(primitive, state);
-        if let Some(deferred) = &mut self.deferred {
+        if self.deferred.is_some() {
+            // A primitive of a state that never overwrites drops no tile's entries: its bin
+            // entries (after the part's earlier ones, all binned here) are the same when
+            // made here, on the part's thread. From the first that may drop entries on,
+            // binning waits for [`Scene::append`].
+            let overwriting = self.draw_state(state).1;
+            let deferred = self.deferred.as_mut().expect("a deferred part");
+            if deferred.is_empty() && !overwriting {
+                return self.bin(index, state, r, tile_span(r), edges.as_ref(), None);
+            }
             return deferred.push((index, state, r, edges));
         }
-        self.bin(index, state, r, tile_span(r), edges.as_ref());
+        let opaque = edges.as_ref().filter(|_| self.overwriting[state as usize] && self.writes_every_target(state));
+        self.bin(index, state, r, tile_span(r), edges.as_ref(), opaque);
     }
 
     /// Draw state `state` and whether it overwrites (a deferred part holds only the
@@ -390,17 +418,25 @@ impl Scene {
     /// Bins primitive `index` into the tiles of `r` (its bounds within its clip rectangle,
     /// not empty), which spans the tiles `span` ([`tile_span`]); `edges` are the pixel
     /// edges of a filled triangle when it is tested against tiles or may drop them (see
-    /// [`edges_needed`]).
+    /// [`edges_needed`]); `opaque` the same edges when the triangle may drop what the tiles
+    /// hold ([`Scene::drop_covered_tile`]).
     ///
     /// A triangle is binned only into the tiles its edges reach: a tile of its box where
     /// one edge is negative at every pixel the box holds there has none of its pixels (a
     /// long thin triangle's box has many such tiles), so the tile workers never visit it
     /// for this triangle. Which tiles those are does not depend on the thread count.
     #[inline(always)]
-    fn bin(&mut self, index: u32, state: u32, r: Rect, span: [i32; 4], edges: Option<&PixelEdges>) {
+    fn bin(
+        &mut self,
+        index: u32,
+        state: u32,
+        r: Rect,
+        span: [i32; 4],
+        edges: Option<&PixelEdges>,
+        opaque: Option<&PixelEdges>,
+    ) {
         let t = TILE_SIZE as i32;
         let [tx0, ty0, tx1, ty1] = span;
-        let opaque = edges.filter(|_| self.overwriting[state as usize] && self.writes_every_target(state));
         if tx0 == tx1 && ty0 == ty1 {
             // One tile (small triangles): no tile test.
             return self.bin_tile(index, state, r, tx0, ty0, opaque);
@@ -652,6 +688,9 @@ impl Scene {
             bin.clear();
             bin.shrink_to(kept_entries);
         }
+        for bin in &mut self.spare_bins {
+            bin.shrink_to(kept_entries);
+        }
         self.binned = 0;
     }
 
@@ -729,38 +768,42 @@ mod tests {
             [[5.0, 70.0], [190.0, 66.0], [100.0, 129.0]],
             [[130.0, 10.0], [199.0, 10.0], [160.0, 40.0]],
         ];
-        for split in 0..=triangles.len() {
-            let mut whole = Scene::new(200, 130);
-            let mut parted = Scene::new(200, 130);
-            for scene in [&mut whole, &mut parted] {
-                scene.target_index(ColorSlot::FrontLeft);
-                assert_eq!(scene.add_state(opaque()), (0, false));
-            }
-            for &t in &triangles {
+        // Also under a depth-tested state, which never drops entries: the part bins its
+        // triangles itself, and append merges its bins. A second part, appended after the
+        // first, records into the bins the first gave back.
+        let tested = || DrawState { fragment: state(false).fragment, ..opaque() };
+        for (make, opaque_state) in [(&opaque as &dyn Fn() -> DrawState, true), (&tested, false)] {
+            let add = |scene: &mut Scene, t: [[f32; 2]; 3]| {
                 let p = triangle(t);
                 let bounds = match &p {
                     Primitive::Triangle(job) => job.bounds(),
                     _ => unreachable!(),
                 };
-                whole.add(0, bounds, p);
-            }
-            let mut later = parted.deferred_part(4);
-            for (i, &t) in triangles.iter().enumerate() {
-                let p = triangle(t);
-                let bounds = match &p {
-                    Primitive::Triangle(job) => job.bounds(),
-                    _ => unreachable!(),
-                };
-                if i < split {
-                    parted.add(0, bounds, p);
-                } else {
-                    later.add(0, bounds, p);
+                scene.add(0, bounds, p);
+            };
+            for split in 0..=triangles.len() {
+                let mut whole = Scene::new(200, 130);
+                let mut parted = Scene::new(200, 130);
+                for scene in [&mut whole, &mut parted] {
+                    scene.target_index(ColorSlot::FrontLeft);
+                    assert_eq!(scene.add_state(make()), (0, false));
                 }
+                for _ in 0..2 {
+                    triangles.iter().for_each(|&t| add(&mut whole, t));
+                }
+                let mut later = parted.deferred_part(4);
+                for (i, &t) in triangles.iter().enumerate() {
+                    add(if i < split { &mut parted } else { &mut later }, t);
+                }
+                let binned_apart = later.binned;
+                assert_eq!(binned_apart == 0, opaque_state || split == triangles.len(), "split {split}");
+                parted.append(later);
+                let mut again = parted.deferred_part(4);
+                triangles.iter().for_each(|&t| add(&mut again, t));
+                parted.append(again);
+                assert_eq!(binned(&parted), binned(&whole), "split after {split} triangles");
+                assert_eq!((parted.binned, parted.primitives.len), (whole.binned, whole.primitives.len));
             }
-            assert!(later.bins.is_empty() && later.binned == 0, "a deferred part bins nothing");
-            parted.append(later);
-            assert_eq!(binned(&parted), binned(&whole), "split after {split} triangles");
-            assert_eq!((parted.binned, parted.primitives.len), (whole.binned, whole.primitives.len));
         }
         // The big triangle (x + y < 290) drops what the first two left in every tile it
         // covers whole; tile (2, 1), pixels x 128..192, y 64..128, it does not (its far
