@@ -356,21 +356,22 @@ impl Scene {
     /// exclusive max), under draw state `state`.
     #[inline]
     pub fn add(&mut self, state: u32, bounds: Rect, primitive: Primitive) {
-        let primitive = match primitive {
-            Primitive::Triangle(job) => return self.add_triangle(state, bounds, job),
-            other => other,
+        // The primitive is read where it lies and moved once, into the store (taking a
+        // triangle's job out of it to bin and wrapping it again cost two more copies).
+        let (r, edges) = match &primitive {
+            Primitive::Triangle(job) => self.triangle_binning(state, bounds, job),
+            _ => (bounds.intersect(self.draw_state(state).0.clip), None),
         };
-        let r = bounds.intersect(self.draw_state(state).0.clip);
         if r.is_empty() {
             return;
         }
-        self.record(state, r, None, primitive);
+        self.record(state, r, edges, primitive);
     }
 
-    /// [`Scene::add`] for a filled triangle, inlined into the triangle's setup so that the
-    /// job is moved once, into the scene's store.
+    /// Where a filled triangle `job` with bounds `bounds` is binned: its bounds within its
+    /// clip rectangle, and its pixel edges when binning reads them ([`edges_needed`]).
     #[inline(always)]
-    pub fn add_triangle(&mut self, state: u32, bounds: Rect, job: TriangleJob) {
+    fn triangle_binning(&self, state: u32, bounds: Rect, job: &TriangleJob) -> (Rect, Option<PixelEdges>) {
         let (drawn, overwriting) = self.draw_state(state);
         // Rasterized per sample, a triangle may cover samples of pixels whose centre it misses.
         let per_sample = drawn.multisample.is_some_and(|m| m.per_sample());
@@ -378,12 +379,12 @@ impl Scene {
         let fill_clip = drawn.fill_clip;
         let r = bounds.intersect(fill_clip);
         if r.is_empty() {
-            return;
+            return (r, None);
         }
         let framebuffer = Rect::from_xywh(0, 0, self.width as i32, self.height as i32);
         let edges = (!per_sample && edges_needed(tile_span(r), r, overwriting, fill_clip, framebuffer))
             .then(|| job.setup.pixel_edges());
-        self.record(state, r, edges, Primitive::Triangle(job));
+        (r, edges)
     }
 
     /// Stores `primitive` (drawn with `state`, its bounds within its clip rectangle `r`, not

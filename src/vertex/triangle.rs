@@ -82,6 +82,7 @@ pub fn emit_triangle(scene: &mut Scene, state: u32, g: &Geometry, w: &[WindowVer
     }
     if let Some(mut job) = TriangleJob::with_accuracy(g.accuracy, w, flat, offset, varyings) {
         job.front_facing = front;
-        scene.add_triangle(state, job.bounds(), job);
+        let bounds = job.bounds();
+        scene.add(state, bounds, RasterPrimitive::Triangle(job));
     }
 }
