@@ -99,15 +99,19 @@ struct Store {
     len: usize,
 }
 
-/// Up to [`CHUNK`] primitives, each with its draw state (a clear's is [`CLEAR_STATE`]).
-type Chunk = Vec<(Primitive, u32)>;
+/// Up to [`CHUNK`] primitives and their draw states (a clear's is [`CLEAR_STATE`]), apart:
+/// pushing a primitive with its state as one pair copied the job once more (callgrind).
+struct Chunk {
+    primitives: Vec<Primitive>,
+    states: Vec<u32>,
+}
 
 impl Store {
     /// The index the next [`Store::push`] gives.
     #[inline(always)]
     fn next_index(&self) -> u32 {
         match self.chunks.last() {
-            Some(c) if c.len() < CHUNK => ((self.chunks.len() - 1) * CHUNK + c.len()) as u32,
+            Some(c) if c.primitives.len() < CHUNK => ((self.chunks.len() - 1) * CHUNK + c.primitives.len()) as u32,
             _ => (self.chunks.len() * CHUNK) as u32,
         }
     }
@@ -117,13 +121,18 @@ impl Store {
     fn push(&mut self, primitive: Primitive, state: u32) -> u32 {
         self.len += 1;
         let k = self.chunks.len();
-        if let Some(chunk) = self.chunks.last_mut().filter(|c| c.len() < CHUNK) {
-            let index = (k - 1) * CHUNK + chunk.len();
-            chunk.push((primitive, state));
+        if let Some(chunk) = self.chunks.last_mut().filter(|c| c.primitives.len() < CHUNK) {
+            let index = (k - 1) * CHUNK + chunk.primitives.len();
+            chunk.primitives.push(primitive);
+            chunk.states.push(state);
             return index as u32;
         }
-        let mut chunk = self.spare.pop().unwrap_or_else(|| Vec::with_capacity(CHUNK));
-        chunk.push((primitive, state));
+        let mut chunk = self
+            .spare
+            .pop()
+            .unwrap_or_else(|| Chunk { primitives: Vec::with_capacity(CHUNK), states: Vec::with_capacity(CHUNK) });
+        chunk.primitives.push(primitive);
+        chunk.states.push(state);
         self.chunks.push(chunk);
         (k * CHUNK) as u32
     }
@@ -131,8 +140,8 @@ impl Store {
     /// Primitive `index` and its draw state.
     #[inline(always)]
     fn get(&self, index: u32) -> (&Primitive, u32) {
-        let (primitive, state) = &self.chunks[index as usize / CHUNK][index as usize % CHUNK];
-        (primitive, *state)
+        let (chunk, i) = (&self.chunks[index as usize / CHUNK], index as usize % CHUNK);
+        (&chunk.primitives[i], chunk.states[i])
     }
 
     /// Appends the chunks of `other`, and takes its spare ones: the index in this store of
@@ -154,7 +163,8 @@ impl Store {
     /// Empties the store, keeping the storage of at most `kept` chunks.
     fn clear(&mut self, kept: usize) {
         for mut chunk in self.chunks.drain(..) {
-            chunk.clear();
+            chunk.primitives.clear();
+            chunk.states.clear();
             self.spare.push(chunk);
         }
         self.spare.truncate(kept);
