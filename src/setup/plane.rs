@@ -8,12 +8,14 @@
 //! y-down coordinates with fused multiply-adds, `LinePlane`), while the interpolation
 //! itself is the same.
 //!
-//! A primitive's planes live inside its job, in fixed-capacity arrays sized by the GL limits
-//! ([`MAX_VARYINGS`]), not in a vector per primitive nor in an arena of the scene: setting
-//! up and binning a primitive then allocates nothing, and a job stays self-contained, so the
-//! code that renders it (the tile workers, each job's `render`) reads its planes next to its
-//! edges with no scene at hand. The price is room: every triangle or line job carries
-//! `MAX_VARYINGS` planes (240 bytes), used or not, which the scene's byte budget counts.
+//! A primitive's planes live inside its job, not in an arena of the scene: a job stays
+//! self-contained, so the code that renders it (the tile workers, each job's `render`)
+//! reads its planes next to its edges with no scene at hand. Up to [`INLINE_VARYINGS`]
+//! planes (one texture unit's coordinates, or the fog coordinate and the secondary color)
+//! are held inline, so setting up and binning such a primitive allocates nothing; a draw
+//! with more puts each primitive's planes in one allocation of [`MAX_VARYINGS`]. Holding
+//! all `MAX_VARYINGS` inline made every triangle job 544 bytes, used or not, which every
+//! triangle's setup, binning and rendering moved through memory (small_triangles has none).
 use crate::fragment::block::{lanes, F32s, LANES};
 use crate::gl::limits::MAX_TEXTURE_UNITS;
 
@@ -79,17 +81,32 @@ impl<P: Interpolant> Shading<P> {
     }
 }
 
+/// How many varying planes a primitive holds without an allocation (see the module docs).
+pub const INLINE_VARYINGS: usize = 4;
+
 /// The attributes beyond color that a draw's later stages read (secondary color, fog
 /// coordinate, texture coordinates), interpolated perspective-correctly: planes of a/w and
-/// the plane of 1/w, held inline (see the module docs); or, for the fast accuracy mode,
-/// affinely: planes of the attributes themselves and no 1/w. Empty when the draw needs none.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+/// the plane of 1/w (see the module docs for where they are held); or, for the fast accuracy
+/// mode, affinely: planes of the attributes themselves and no 1/w. Empty when the draw
+/// needs none.
+#[derive(Clone, Debug, PartialEq)]
 pub struct Varyings<P> {
-    /// The first `len` are the planes (of a/w, or of a when `inv_w` is `None`); the rest
-    /// stay default.
-    over_w: [P; MAX_VARYINGS],
-    len: u8,
+    /// The planes (of a/w, or of a when `inv_w` is `None`).
+    over_w: Planes<P>,
     inv_w: Option<P>,
+}
+
+/// The first `len` are the planes; the rest stay default.
+#[derive(Clone, Debug, PartialEq)]
+enum Planes<P> {
+    Inline { planes: [P; INLINE_VARYINGS], len: u8 },
+    Heap { planes: Box<[P; MAX_VARYINGS]>, len: u8 },
+}
+
+impl<P: Default + Copy> Default for Varyings<P> {
+    fn default() -> Self {
+        Varyings { over_w: Planes::Inline { planes: [P::default(); INLINE_VARYINGS], len: 0 }, inv_w: None }
+    }
 }
 
 impl<P: Interpolant + Copy + Default> Varyings<P> {
@@ -109,30 +126,47 @@ impl<P: Interpolant + Copy + Default> Varyings<P> {
 
     #[inline]
     fn with_inv_w(planes_in: impl IntoIterator<Item = P>, inv_w: Option<P>) -> Self {
-        let mut planes = [P::default(); MAX_VARYINGS];
+        let mut planes_in = planes_in.into_iter();
+        let mut planes = [P::default(); INLINE_VARYINGS];
         let mut len = 0;
-        for (slot, p) in planes.iter_mut().zip(planes_in) {
+        for (slot, p) in planes.iter_mut().zip(&mut planes_in) {
             *slot = p;
             len += 1;
         }
-        Varyings { over_w: planes, len, inv_w }
+        let over_w = match planes_in.next() {
+            None => Planes::Inline { planes, len },
+            Some(next) => {
+                let mut all = Box::new([P::default(); MAX_VARYINGS]);
+                all[..INLINE_VARYINGS].copy_from_slice(&planes);
+                let mut len = INLINE_VARYINGS;
+                for (slot, p) in all[INLINE_VARYINGS..].iter_mut().zip(std::iter::once(next).chain(planes_in)) {
+                    *slot = p;
+                    len += 1;
+                }
+                Planes::Heap { planes: all, len: len as u8 }
+            }
+        };
+        Varyings { over_w, inv_w }
     }
 }
 
 impl<P: Interpolant> Varyings<P> {
     /// How many scalar attributes are interpolated.
     pub fn len(&self) -> usize {
-        self.len as usize
+        self.planes().len()
     }
 
     pub fn is_empty(&self) -> bool {
-        self.len == 0
+        self.planes().is_empty()
     }
 
     /// The planes of a/w.
     #[inline]
     pub fn planes(&self) -> &[P] {
-        &self.over_w[..self.len as usize]
+        match &self.over_w {
+            Planes::Inline { planes, len } => &planes[..*len as usize],
+            Planes::Heap { planes, len } => &planes[..*len as usize],
+        }
     }
 
     /// The attributes at (x, y), into `out`.
@@ -244,5 +278,29 @@ impl Interpolant for super::line::LinePlane {
     #[inline]
     fn at(&self, px: f32, py: f32) -> f32 {
         super::line::LinePlane::at(self, px, py)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn varyings_inline_or_on_the_heap_hold_every_plane_in_order() {
+        // Every count up to MAX_VARYINGS (inline up to INLINE_VARYINGS, then one allocation),
+        // and more than MAX_VARYINGS (the rest dropped): the planes come back in order and
+        // evaluate to their own values.
+        for n in 0..=MAX_VARYINGS + 2 {
+            let planes = (0..n).map(|k| Plane { a0: k as f32, dadx: 0.5, dady: -0.25 });
+            let v = Varyings::new(planes.clone(), Plane { a0: 2.0, dadx: 0.0, dady: 0.0 });
+            let kept = n.min(MAX_VARYINGS);
+            assert_eq!(v.len(), kept);
+            assert_eq!(v.planes(), &planes.take(kept).collect::<Vec<_>>()[..]);
+            let mut out = vec![f32::NAN; kept];
+            v.at(2.0, 4.0, &mut out);
+            // (k + 0.5·2 − 0.25·4) / 2 = k / 2.
+            assert_eq!(out, (0..kept).map(|k| k as f32 / 2.0).collect::<Vec<_>>(), "{n} planes");
+        }
+        assert!(Varyings::<Plane>::default().is_empty());
     }
 }

@@ -53,10 +53,8 @@ pub struct Scene {
     /// The color buffers the scene writes, in the order of every draw's color masks.
     targets: Vec<ColorSlot>,
     states: Vec<Arc<DrawState>>,
-    /// The primitives, and apart (so that adding one copies the job once, straight into
-    /// place) the index of each one's draw state.
-    primitives: Vec<Primitive>,
-    primitive_states: Vec<u32>,
+    /// The primitives and the index of each one's draw state.
+    primitives: Store,
     /// Per draw state, [`Scene::overwrites`].
     overwriting: Vec<bool>,
     /// Per tile (row-major), indices into `primitives` in submission order.
@@ -64,13 +62,117 @@ pub struct Scene {
     /// How many indices the bins hold in all.
     binned: usize,
     /// A deferred part ([`Scene::deferred_part`]): in order, what binning each primitive
-    /// [`Scene::add`] is given needs (its state, its clipped bounds and, for a triangle,
-    /// the edges binning tests), computed on the recording thread; the primitives go to
-    /// `primitives`, and [`Scene::append`] bins them.
-    deferred: Option<Vec<(u32, Rect, Option<PixelEdges>)>>,
+    /// [`Scene::add`] is given needs (its index in the part's store, its state, its
+    /// clipped bounds and, for a triangle, the edges binning tests), computed on the
+    /// recording thread, for the primitives that [`Scene::append`] bins (those that may
+    /// drop tiles' entries, and all after them; the part bins the others into its own
+    /// `bins`, with indices into its own store).
+    deferred: Option<Vec<Deferred>>,
+    /// Emptied bins of the last deferred part, lent to the next one.
+    spare_bins: Vec<Vec<u32>>,
     /// The index of `states[0]`: 0, but in a deferred part, which holds only the scene's
     /// last [`STATE_CACHE`] states (the ones a draw's state may be).
     state_base: usize,
+}
+
+/// What [`Scene::append`] needs to bin a primitive of a deferred part: its index in the
+/// part's store, its draw state, its clipped bounds and its pixel edges when binning reads
+/// them (see [`Scene::add`]).
+type Deferred = (u32, u32, Rect, Option<PixelEdges>);
+
+/// How many primitives one chunk of a [`Store`] holds (a power of two). Small enough that
+/// the unused end of a chunk a deferred part leaves behind costs little: a long draw comes
+/// in parts of a few thousand vertices, each split in two (with 4096, small_triangles took
+/// a fresh chunk per part and freed the excess each scene: 3700 more page faults a frame).
+const CHUNK: usize = 1 << 9;
+
+/// A scene's primitives and the draw state of each, in chunks of [`CHUNK`]: primitive `i` is
+/// entry `i % CHUNK` of chunk `i / CHUNK`. Chunks make a deferred part's primitives part of
+/// the scene without moving them ([`Store::append`] appends the part's chunks, leaving the
+/// rest of the scene's last chunk unused: indices need not be dense), where one vector
+/// copied every job of the part (on small_triangles, 34 MB a frame on the recording thread)
+/// into freshly allocated memory; and the chunks of a rendered scene are kept, emptied, for
+/// the next one (see [`Scene::clear`]), so recording writes into memory already mapped.
+#[derive(Default)]
+struct Store {
+    chunks: Vec<Chunk>,
+    /// Emptied chunks, their storage kept for reuse.
+    spare: Vec<Chunk>,
+    /// How many primitives the chunks hold.
+    len: usize,
+}
+
+/// Up to [`CHUNK`] primitives and their draw states (a clear's is [`CLEAR_STATE`]), apart:
+/// pushing a primitive with its state as one pair copied the job once more (callgrind).
+struct Chunk {
+    primitives: Vec<Primitive>,
+    states: Vec<u32>,
+}
+
+impl Store {
+    /// The index the next [`Store::push`] gives.
+    #[inline(always)]
+    fn next_index(&self) -> u32 {
+        match self.chunks.last() {
+            Some(c) if c.primitives.len() < CHUNK => ((self.chunks.len() - 1) * CHUNK + c.primitives.len()) as u32,
+            _ => (self.chunks.len() * CHUNK) as u32,
+        }
+    }
+
+    /// Adds `primitive`, drawn with `state`; its index.
+    #[inline(always)]
+    fn push(&mut self, primitive: Primitive, state: u32) -> u32 {
+        self.len += 1;
+        let k = self.chunks.len();
+        if let Some(chunk) = self.chunks.last_mut().filter(|c| c.primitives.len() < CHUNK) {
+            let index = (k - 1) * CHUNK + chunk.primitives.len();
+            chunk.primitives.push(primitive);
+            chunk.states.push(state);
+            return index as u32;
+        }
+        let mut chunk = self
+            .spare
+            .pop()
+            .unwrap_or_else(|| Chunk { primitives: Vec::with_capacity(CHUNK), states: Vec::with_capacity(CHUNK) });
+        chunk.primitives.push(primitive);
+        chunk.states.push(state);
+        self.chunks.push(chunk);
+        (k * CHUNK) as u32
+    }
+
+    /// Primitive `index` and its draw state.
+    #[inline(always)]
+    fn get(&self, index: u32) -> (&Primitive, u32) {
+        let (chunk, i) = (&self.chunks[index as usize / CHUNK], index as usize % CHUNK);
+        (&chunk.primitives[i], chunk.states[i])
+    }
+
+    /// Appends the chunks of `other`, and takes its spare ones: the index in this store of
+    /// `other`'s primitive `i` is `i` plus the returned offset.
+    fn append(&mut self, other: Store) -> u32 {
+        let offset = (self.chunks.len() * CHUNK) as u32;
+        self.chunks.extend(other.chunks);
+        self.spare.extend(other.spare);
+        self.len += other.len;
+        offset
+    }
+
+    /// Up to `n` spare chunks, for a deferred part to record into.
+    fn lend(&mut self, n: usize) -> Store {
+        let spare = self.spare.split_off(self.spare.len().saturating_sub(n));
+        Store { chunks: Vec::new(), spare, len: 0 }
+    }
+
+    /// Empties the store, keeping the storage of at most `kept` chunks.
+    fn clear(&mut self, kept: usize) {
+        for mut chunk in self.chunks.drain(..) {
+            chunk.primitives.clear();
+            chunk.states.clear();
+            self.spare.push(chunk);
+        }
+        self.spare.truncate(kept);
+        self.len = 0;
+    }
 }
 
 /// Whether what an entry wrote in `tile` inside its rectangle `clip` lies within `region`
@@ -140,22 +242,25 @@ impl Scene {
             tiles_x,
             targets: Vec::new(),
             states: Vec::new(),
-            primitives: Vec::new(),
-            primitive_states: Vec::new(),
+            primitives: Store::default(),
             overwriting: Vec::new(),
             bins: vec![Vec::new(); tiles_x * tiles_y],
             binned: 0,
             deferred: None,
+            spare_bins: Vec::new(),
             state_base: 0,
         }
     }
 
     /// An empty part of this scene that another thread may record filled triangles into
     /// (through [`Scene::add`]) while this scene records the draw's earlier primitives:
-    /// it keeps what it is given, unbinned, and [`Scene::append`] bins it afterwards, in
-    /// order, exactly as if it had been added here (the bins, the tiles an opaque triangle
-    /// drops and so the bytes are the same). Only [`Scene::add`] may be used on it.
-    pub fn deferred_part(&self, capacity: usize) -> Scene {
+    /// [`Scene::append`] makes what it is given part of this scene afterwards, in order,
+    /// exactly as if it had been added here (the bins, the tiles an opaque triangle drops
+    /// and so the bytes are the same): the part bins what it can on its own thread (see
+    /// `deferred`) and keeps the rest for `append` to bin. Only [`Scene::add`] may be used on it. It
+    /// records into this scene's spare storage, enough for `capacity` primitives if it has
+    /// that much.
+    pub fn deferred_part(&mut self, capacity: usize) -> Scene {
         debug_assert!(self.deferred.is_none());
         let recent = self.states.len().saturating_sub(STATE_CACHE);
         Scene {
@@ -164,29 +269,45 @@ impl Scene {
             tiles_x: self.tiles_x,
             targets: Vec::new(),
             states: self.states[recent..].to_vec(),
-            primitives: Vec::with_capacity(capacity),
-            primitive_states: Vec::new(),
+            primitives: self.primitives.lend(capacity.div_ceil(CHUNK)),
             overwriting: self.overwriting[recent..].to_vec(),
-            bins: Vec::new(),
             binned: 0,
-            deferred: Some(Vec::with_capacity(capacity)),
+            bins: self.lend_bins(),
+            deferred: Some(Vec::new()),
+            spare_bins: Vec::new(),
             state_base: recent,
         }
     }
 
     /// Bins the primitives recorded into `part` (from [`Scene::deferred_part`]) after
     /// everything recorded here so far.
-    pub fn append(&mut self, mut part: Scene) {
+    pub fn append(&mut self, part: Scene) {
         let Some(deferred) = part.deferred else { return };
-        debug_assert!(self.deferred.is_none() && deferred.len() == part.primitives.len());
-        // The part's primitives moved in one copy, then each binned in order, as
-        // [`Scene::add`] bins it.
-        let first = self.primitives.len();
-        self.primitives.append(&mut part.primitives);
-        for (k, (state, r, edges)) in deferred.into_iter().enumerate() {
-            self.primitive_states.push(state);
-            self.bin((first + k) as u32, state, r, tile_span(r), edges.as_ref());
+        debug_assert!(self.deferred.is_none() && deferred.len() <= part.primitives.len);
+        // The part's chunks become the scene's (no job moves), then each primitive is binned
+        // in order, as [`Scene::add`] bins it.
+        let offset = self.primitives.append(part.primitives);
+        let mut bins = part.bins;
+        if part.binned > 0 {
+            // What the part binned itself comes first, in order.
+            for (bin, entries) in self.bins.iter_mut().zip(&mut bins) {
+                bin.extend(entries.iter().map(|&i| i + offset));
+                entries.clear();
+            }
+            self.binned += part.binned;
         }
+        self.spare_bins = bins;
+        for (index, state, r, edges) in deferred {
+            let opaque = edges.as_ref().filter(|_| self.overwriting[state as usize] && self.writes_every_target(state));
+            self.bin(index + offset, state, r, tile_span(r), edges.as_ref(), opaque);
+        }
+    }
+
+    /// Empty bins for a deferred part: the ones the last part gave back, kept for reuse.
+    fn lend_bins(&mut self) -> Vec<Vec<u32>> {
+        let mut bins = std::mem::take(&mut self.spare_bins);
+        bins.resize_with(self.bins.len(), Vec::new);
+        bins
     }
 
     /// The recorded primitives a scene may hold before the context renders it (whatever
@@ -199,12 +320,12 @@ impl Scene {
 
     /// About how much memory the recorded primitives and their bin entries take.
     pub fn recorded_bytes(&self) -> usize {
-        self.primitives.len() * (std::mem::size_of::<Primitive>() + std::mem::size_of::<u32>())
+        self.primitives.len * (std::mem::size_of::<Primitive>() + std::mem::size_of::<u32>())
             + self.binned * std::mem::size_of::<u32>()
     }
 
     pub fn is_empty(&self) -> bool {
-        self.primitives.is_empty()
+        self.primitives.len == 0
     }
 
     pub fn size(&self) -> (usize, usize) {
@@ -248,37 +369,56 @@ impl Scene {
     /// exclusive max), under draw state `state`.
     #[inline]
     pub fn add(&mut self, state: u32, bounds: Rect, primitive: Primitive) {
-        let (drawn, overwriting) = self.draw_state(state);
-        let triangle = match &primitive {
-            Primitive::Triangle(job) => Some(job),
-            _ => None,
+        // The primitive is read where it lies and moved once, into the store (taking a
+        // triangle's job out of it to bin and wrapping it again cost two more copies).
+        let (r, edges) = match &primitive {
+            Primitive::Triangle(job) => self.triangle_binning(state, bounds, job),
+            _ => (bounds.intersect(self.draw_state(state).0.clip), None),
         };
-        // Rasterized per sample, a triangle may cover samples of pixels whose centre it misses.
-        let per_sample = triangle.is_some() && drawn.multisample.is_some_and(|m| m.per_sample());
-        let (bounds, clip) = match triangle {
-            Some(job) if per_sample => (job.sample_bounds(), drawn.fill_clip),
-            Some(_) => (bounds, drawn.fill_clip),
-            None => (bounds, drawn.clip),
-        };
-        let r = bounds.intersect(clip);
         if r.is_empty() {
             return;
         }
-        let span = tile_span(r);
-        let framebuffer = Rect::from_xywh(0, 0, self.width as i32, self.height as i32);
-        let edges = triangle
-            .filter(|_| !per_sample && edges_needed(span, r, overwriting, drawn.fill_clip, framebuffer))
-            .map(|job| job.setup.pixel_edges());
-        if let Some(deferred) = &mut self.deferred {
-            // The primitive kept apart from what binning it needs, so that
-            // [`Scene::append`] moves all of them in one copy.
-            self.primitives.push(primitive);
-            return deferred.push((state, r, edges));
+        self.record(state, r, edges, primitive);
+    }
+
+    /// Where a filled triangle `job` with bounds `bounds` is binned: its bounds within its
+    /// clip rectangle, and its pixel edges when binning reads them ([`edges_needed`]).
+    #[inline(always)]
+    fn triangle_binning(&self, state: u32, bounds: Rect, job: &TriangleJob) -> (Rect, Option<PixelEdges>) {
+        let (drawn, overwriting) = self.draw_state(state);
+        // Rasterized per sample, a triangle may cover samples of pixels whose centre it misses.
+        let per_sample = drawn.multisample.is_some_and(|m| m.per_sample());
+        let bounds = if per_sample { job.sample_bounds() } else { bounds };
+        let fill_clip = drawn.fill_clip;
+        let r = bounds.intersect(fill_clip);
+        if r.is_empty() {
+            return (r, None);
         }
-        let index = self.primitives.len() as u32;
-        self.bin(index, state, r, span, edges.as_ref());
-        self.primitives.push(primitive);
-        self.primitive_states.push(state);
+        let framebuffer = Rect::from_xywh(0, 0, self.width as i32, self.height as i32);
+        let edges = (!per_sample && edges_needed(tile_span(r), r, overwriting, fill_clip, framebuffer))
+            .then(|| job.setup.pixel_edges());
+        (r, edges)
+    }
+
+    /// Stores `primitive` (drawn with `state`, its bounds within its clip rectangle `r`, not
+    /// empty) and bins it, or in a deferred part keeps what [`Scene::append`] bins it with.
+    #[inline(always)]
+    fn record(&mut self, state: u32, r: Rect, edges: Option<PixelEdges>, primitive: Primitive) {
+        let index = self.primitives.push(primitive, state);
+        if self.deferred.is_some() {
+            // A primitive of a state that never overwrites drops no tile's entries: its bin
+            // entries (after the part's earlier ones, all binned here) are the same when
+            // made here, on the part's thread. From the first that may drop entries on,
+            // binning waits for [`Scene::append`].
+            let overwriting = self.draw_state(state).1;
+            let deferred = self.deferred.as_mut().expect("a deferred part");
+            if deferred.is_empty() && !overwriting {
+                return self.bin(index, state, r, tile_span(r), edges.as_ref(), None);
+            }
+            return deferred.push((index, state, r, edges));
+        }
+        let opaque = edges.as_ref().filter(|_| self.overwriting[state as usize] && self.writes_every_target(state));
+        self.bin(index, state, r, tile_span(r), edges.as_ref(), opaque);
     }
 
     /// Draw state `state` and whether it overwrites (a deferred part holds only the
@@ -292,17 +432,25 @@ impl Scene {
     /// Bins primitive `index` into the tiles of `r` (its bounds within its clip rectangle,
     /// not empty), which spans the tiles `span` ([`tile_span`]); `edges` are the pixel
     /// edges of a filled triangle when it is tested against tiles or may drop them (see
-    /// [`edges_needed`]).
+    /// [`edges_needed`]); `opaque` the same edges when the triangle may drop what the tiles
+    /// hold ([`Scene::drop_covered_tile`]).
     ///
     /// A triangle is binned only into the tiles its edges reach: a tile of its box where
     /// one edge is negative at every pixel the box holds there has none of its pixels (a
     /// long thin triangle's box has many such tiles), so the tile workers never visit it
     /// for this triangle. Which tiles those are does not depend on the thread count.
     #[inline(always)]
-    fn bin(&mut self, index: u32, state: u32, r: Rect, span: [i32; 4], edges: Option<&PixelEdges>) {
+    fn bin(
+        &mut self,
+        index: u32,
+        state: u32,
+        r: Rect,
+        span: [i32; 4],
+        edges: Option<&PixelEdges>,
+        opaque: Option<&PixelEdges>,
+    ) {
         let t = TILE_SIZE as i32;
         let [tx0, ty0, tx1, ty1] = span;
-        let opaque = edges.filter(|_| self.overwriting[state as usize] && self.writes_every_target(state));
         if tx0 == tx1 && ty0 == ty1 {
             // One tile (small triangles): no tile test.
             return self.bin_tile(index, state, r, tx0, ty0, opaque);
@@ -361,7 +509,7 @@ impl Scene {
             // (its pixels there must stay cleared; inside, the triangle paints over it).
             let (primitives, entries) = (&self.primitives, &mut self.bins[bin]);
             let before = entries.len();
-            entries.retain(|&i| match &primitives[i as usize] {
+            entries.retain(|&i| match primitives.get(i).0 {
                 Primitive::Clear(c) => c.depth_stencil_only() || !writes_within(tile, c.rect, region),
                 _ => false,
             });
@@ -405,13 +553,13 @@ impl Scene {
         // Whether what an entry wrote inside `clip` lies within the region overwritten.
         let within = |clip: Rect| writes_within(tile, clip, region);
         self.bins[bin].iter().all(|&i| {
-            let primitive = &self.primitives[i as usize];
+            let (primitive, state) = self.primitives.get(i);
             if let Primitive::Clear(c) = primitive {
                 // A depth/stencil clear is kept, and so is a colour clear where the triangle
                 // does not overwrite it (see `drop_covered_tile`).
                 return c.depth_stencil_only() || (c.depth.is_none() && c.stencil.is_none());
             }
-            let s = &self.states[self.primitive_states[i as usize] as usize];
+            let s = &self.states[state as usize];
             let clip = if matches!(primitive, Primitive::Triangle(_)) { s.fill_clip } else { s.clip };
             !matches!(primitive, Primitive::Pixels(_))
                 && within(clip)
@@ -431,7 +579,7 @@ impl Scene {
         for c in &job.colors {
             self.target_index(c.slot);
         }
-        let index = self.primitives.len() as u32;
+        let index = self.primitives.push(Primitive::Clear(job), CLEAR_STATE);
         let t = TILE_SIZE as i32;
         for ty in (r.y0 / t)..=((r.y1 - 1) / t) {
             for tx in (r.x0 / t)..=((r.x1 - 1) / t) {
@@ -439,8 +587,6 @@ impl Scene {
                 self.binned += 1;
             }
         }
-        self.primitives.push(Primitive::Clear(job));
-        self.primitive_states.push(CLEAR_STATE);
     }
 
     /// Bins a primitive covering at most `bounds`, but only into the tiles of each tile row
@@ -459,7 +605,7 @@ impl Scene {
         if r.is_empty() {
             return;
         }
-        let index = self.primitives.len() as u32;
+        let index = self.primitives.next_index();
         let t = TILE_SIZE as i32;
         let mut binned = false;
         for ty in (r.y0 / t)..=((r.y1 - 1) / t) {
@@ -477,8 +623,7 @@ impl Scene {
             }
         }
         if binned {
-            self.primitives.push(primitive);
-            self.primitive_states.push(state);
+            self.primitives.push(primitive, state);
         }
     }
 
@@ -491,7 +636,7 @@ impl Scene {
     /// Renders the scene on up to `threads` threads (the caller's included): the tile
     /// workers render each tile's bin in submission order, each entry by its job.
     pub fn execute_on(&self, framebuffer: &mut Framebuffer, threads: usize) {
-        if self.primitives.is_empty() {
+        if self.is_empty() {
             return;
         }
         // Each draw state compiled once into lane kernels for this framebuffer's formats (the
@@ -509,11 +654,11 @@ impl Scene {
             })
             .collect();
         render_tiles(framebuffer, &self.targets, self.tiles_x, &self.bins, threads, |index, tile, band, scratch| {
-            let primitive = &self.primitives[index as usize];
+            let (primitive, state_index) = self.primitives.get(index);
             if let Primitive::Clear(job) = primitive {
                 return job.render(tile, band);
             }
-            let state_index = self.primitive_states[index as usize] as usize;
+            let state_index = state_index as usize;
             let state = &self.states[state_index];
             let area = tile.intersect(state.clip);
             match primitive {
@@ -545,18 +690,20 @@ impl Scene {
     /// (on small_triangles at 1024² that is 14 000 page faults a frame), and what stays
     /// allocated between scenes is bounded by the budget a scene may reach anyway.
     pub fn clear(&mut self) {
-        let kept_primitives = Self::BUDGET_BYTES / (std::mem::size_of::<Primitive>() + std::mem::size_of::<u32>());
+        // Twice a full budget's chunks: deferred parts leave chunks partly used.
+        let kept_chunks =
+            2 * (Self::BUDGET_BYTES / (CHUNK * (std::mem::size_of::<Primitive>() + std::mem::size_of::<u32>())) + 1);
         self.targets.clear();
         self.states.clear();
         self.overwriting.clear();
-        self.primitives.clear();
-        self.primitives.shrink_to(kept_primitives);
-        self.primitive_states.clear();
-        self.primitive_states.shrink_to(kept_primitives);
+        self.primitives.clear(kept_chunks);
         // The bins' entries count against the budget too: a tile keeps at most its share.
         let kept_entries = Self::BUDGET_BYTES / std::mem::size_of::<u32>() / self.bins.len().max(1);
         for bin in &mut self.bins {
             bin.clear();
+            bin.shrink_to(kept_entries);
+        }
+        for bin in &mut self.spare_bins {
             bin.shrink_to(kept_entries);
         }
         self.binned = 0;
@@ -611,7 +758,7 @@ mod tests {
 
     /// What a scene has binned: per tile, the setups of its entries in order.
     fn binned(scene: &Scene) -> Vec<Vec<TriangleSetup>> {
-        let setup = |i: &u32| match &scene.primitives[*i as usize] {
+        let setup = |i: &u32| match scene.primitives.get(*i).0 {
             Primitive::Triangle(job) => job.setup.clone(),
             _ => unreachable!("triangles only"),
         };
@@ -636,38 +783,42 @@ mod tests {
             [[5.0, 70.0], [190.0, 66.0], [100.0, 129.0]],
             [[130.0, 10.0], [199.0, 10.0], [160.0, 40.0]],
         ];
-        for split in 0..=triangles.len() {
-            let mut whole = Scene::new(200, 130);
-            let mut parted = Scene::new(200, 130);
-            for scene in [&mut whole, &mut parted] {
-                scene.target_index(ColorSlot::FrontLeft);
-                assert_eq!(scene.add_state(opaque()), (0, false));
-            }
-            for &t in &triangles {
+        // Also under a depth-tested state, which never drops entries: the part bins its
+        // triangles itself, and append merges its bins. A second part, appended after the
+        // first, records into the bins the first gave back.
+        let tested = || DrawState { fragment: state(false).fragment, ..opaque() };
+        for (make, opaque_state) in [(&opaque as &dyn Fn() -> DrawState, true), (&tested, false)] {
+            let add = |scene: &mut Scene, t: [[f32; 2]; 3]| {
                 let p = triangle(t);
                 let bounds = match &p {
                     Primitive::Triangle(job) => job.bounds(),
                     _ => unreachable!(),
                 };
-                whole.add(0, bounds, p);
-            }
-            let mut later = parted.deferred_part(4);
-            for (i, &t) in triangles.iter().enumerate() {
-                let p = triangle(t);
-                let bounds = match &p {
-                    Primitive::Triangle(job) => job.bounds(),
-                    _ => unreachable!(),
-                };
-                if i < split {
-                    parted.add(0, bounds, p);
-                } else {
-                    later.add(0, bounds, p);
+                scene.add(0, bounds, p);
+            };
+            for split in 0..=triangles.len() {
+                let mut whole = Scene::new(200, 130);
+                let mut parted = Scene::new(200, 130);
+                for scene in [&mut whole, &mut parted] {
+                    scene.target_index(ColorSlot::FrontLeft);
+                    assert_eq!(scene.add_state(make()), (0, false));
                 }
+                for _ in 0..2 {
+                    triangles.iter().for_each(|&t| add(&mut whole, t));
+                }
+                let mut later = parted.deferred_part(4);
+                for (i, &t) in triangles.iter().enumerate() {
+                    add(if i < split { &mut parted } else { &mut later }, t);
+                }
+                let binned_apart = later.binned;
+                assert_eq!(binned_apart == 0, opaque_state || split == triangles.len(), "split {split}");
+                parted.append(later);
+                let mut again = parted.deferred_part(4);
+                triangles.iter().for_each(|&t| add(&mut again, t));
+                parted.append(again);
+                assert_eq!(binned(&parted), binned(&whole), "split after {split} triangles");
+                assert_eq!((parted.binned, parted.primitives.len), (whole.binned, whole.primitives.len));
             }
-            assert!(later.bins.is_empty() && later.binned == 0, "a deferred part bins nothing");
-            parted.append(later);
-            assert_eq!(binned(&parted), binned(&whole), "split after {split} triangles");
-            assert_eq!((parted.binned, parted.primitives.len()), (whole.binned, whole.primitives.len()));
         }
         // The big triangle (x + y < 290) drops what the first two left in every tile it
         // covers whole; tile (2, 1), pixels x 128..192, y 64..128, it does not (its far
@@ -824,6 +975,41 @@ mod tests {
     /// A plain state (depth-tested, so nothing is dropped) clipped to `clip`.
     fn state_clipped(clip: Rect) -> DrawState {
         DrawState { clip, fill_clip: clip, ..state(false) }
+    }
+
+    #[test]
+    fn the_store_keeps_every_primitive_and_state_across_chunks_and_appends() {
+        use crate::setup::jobs::clear::ClearJob;
+        let clear = |k: usize| {
+            let rect = Rect::from_xywh(k as i32, 0, 1, 1);
+            Primitive::Clear(ClearJob { rect, whole: false, colors: vec![], depth: Some(1.0), stencil: None })
+        };
+        let x_of = |store: &Store, i: u32| match store.get(i) {
+            (Primitive::Clear(c), state) => (c.rect.x0 as usize, state),
+            _ => unreachable!("clears only"),
+        };
+        let mut store = Store::default();
+        let first: Vec<u32> = (0..CHUNK + 5).map(|k| store.push(clear(k), k as u32)).collect();
+        assert_eq!(first, (0..CHUNK as u32 + 5).collect::<Vec<_>>(), "dense within a store");
+        // A part recorded apart, in one spare chunk lent by the store once it has one.
+        store.clear(4);
+        assert_eq!((store.len, store.spare.len()), (0, 2));
+        let first: Vec<u32> = (0..7).map(|k| store.push(clear(k), k as u32)).collect();
+        let mut part = store.lend(1);
+        assert_eq!(part.spare.len(), 1);
+        let local: Vec<u32> = (0..CHUNK + 3).map(|k| part.push(clear(1000 + k), 7)).collect();
+        let offset = store.append(part);
+        assert_eq!(offset as usize, CHUNK, "the part starts at the store's next chunk");
+        let later = store.push(clear(99), 8);
+        assert_eq!(store.len, 7 + CHUNK + 3 + 1);
+        for (k, &i) in first.iter().enumerate() {
+            assert_eq!(x_of(&store, i), (k, k as u32));
+        }
+        for (k, &i) in local.iter().enumerate() {
+            assert_eq!(x_of(&store, i + offset), (1000 + k, 7));
+        }
+        assert_eq!(later as usize, 2 * CHUNK + 3, "after the part's last primitive");
+        assert_eq!(x_of(&store, later), (99, 8));
     }
 
     #[test]

@@ -42,42 +42,34 @@ fn snap(v: f32) -> i64 {
     (t + (fraction >= 0.5) as i32 - (fraction <= -0.5) as i32) as i64
 }
 
-/// One edge: `E(x, y) = a·x + b·y + c` over fixed-point coordinates, inside when
-/// `E > 0`, or `E == 0` on a top-left edge.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Edge {
-    a: i64,
-    b: i64,
-    c: i64,
-    /// 0 for left and bottom edges (E == 0 counts as inside), 1 otherwise (needs E ≥ 1).
-    bias: i64,
-}
-
-impl Edge {
-    /// The edge from `p` to `q` of a counter-clockwise triangle.
-    fn new(p: [i64; 2], q: [i64; 2]) -> Edge {
-        let (dx, dy) = (q[0] - p[0], q[1] - p[1]);
-        // E(x, y) = dx·(y − py) − dy·(x − px)
-        let a = -dy;
-        let b = dx;
-        let c = dy * p[0] - dx * p[1];
-        // Counter-clockwise with y up: a left edge goes down (dy < 0); a bottom edge is
-        // horizontal and goes right (dy == 0, dx > 0).
-        let owns_centres = dy < 0 || (dy == 0 && dx > 0);
-        Edge { a, b, c, bias: if owns_centres { 0 } else { 1 } }
-    }
-
-    /// Whether the fixed-point point (x, y) is inside this edge.
-    #[inline]
-    pub fn inside(&self, x: i64, y: i64) -> bool {
-        self.a * x + self.b * y + self.c >= self.bias
-    }
+/// The edge from `p` to `q` of a counter-clockwise triangle over pixel centres: `[c, a, b]`
+/// with pixel (x, y) inside exactly when `c + a·x + b·y ≥ 0` (see
+/// [`TriangleSetup::pixel_edges`]).
+///
+/// Over fixed-point points the edge function is `E(p) = dx·(p.y − py) − dy·(p.x − px)`
+/// (`d = q − p`), positive inside; a point exactly on the edge is inside only on a left or
+/// bottom edge (see the module docs). At the centre of pixel (x, y), `(256·x + 128,
+/// 256·y + 128)`, that is `E ≥ bias` with `bias` 0 for those edges and 1 otherwise; the
+/// centre's half pixel and the bias are folded into `c`.
+#[inline(always)]
+fn pixel_edge(p: [i64; 2], q: [i64; 2]) -> [i64; 3] {
+    let (dx, dy) = (q[0] - p[0], q[1] - p[1]);
+    // E(x, y) = a·x + b·y + c over fixed-point coordinates.
+    let (a, b, c) = (-dy, dx, dy * p[0] - dx * p[1]);
+    // Counter-clockwise with y up: a left edge goes down (dy < 0); a bottom edge is
+    // horizontal and goes right (dy == 0, dx > 0).
+    let owns_centres = dy < 0 || (dy == 0 && dx > 0);
+    let bias = (!owns_centres) as i64;
+    [a * HALF + b * HALF + c - bias, a * ONE, b * ONE]
 }
 
 /// A set-up triangle: its three edges and its pixel bounding box.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct TriangleSetup {
-    edges: [Edge; 3],
+    /// The edges over pixel centres, `[c, a, b]` ([`TriangleSetup::pixel_edges`]), kept in
+    /// the form the block walker reads, so that rendering the triangle in a tile computes
+    /// nothing of them; the row solves read the same values.
+    pixel: [[i64; 3]; 3],
     /// Fixed-point vertices, counter-clockwise.
     pub vertices: [[i64; 2]; 3],
     /// Whether the input was clockwise (reordered to counter-clockwise).
@@ -109,7 +101,7 @@ impl TriangleSetup {
         if was_clockwise {
             v.swap(1, 2);
         }
-        let edges = [Edge::new(v[0], v[1]), Edge::new(v[1], v[2]), Edge::new(v[2], v[0])];
+        let pixel = [pixel_edge(v[0], v[1]), pixel_edge(v[1], v[2]), pixel_edge(v[2], v[0])];
         let xs = v.map(|p| p[0]);
         let ys = v.map(|p| p[1]);
         // Pixel x is covered only if its centre x·256+128 lies within [min, max]. Divisions
@@ -119,7 +111,7 @@ impl TriangleSetup {
         let pixel_lo = |m: i64| -((HALF - m) >> SUBPIXEL_BITS) as i32;
         let pixel_hi = |m: i64| ((m - HALF) >> SUBPIXEL_BITS) as i32;
         Some(TriangleSetup {
-            edges,
+            pixel,
             vertices: v,
             was_clockwise,
             min_x: pixel_lo(*xs.iter().min().unwrap()),
@@ -132,20 +124,17 @@ impl TriangleSetup {
     /// Whether pixel (x, y)'s centre is covered (reference test, one pixel at a time).
     #[inline]
     pub fn covers(&self, x: i32, y: i32) -> bool {
-        let (px, py) = (x as i64 * ONE + HALF, y as i64 * ONE + HALF);
-        self.edges.iter().all(|e| e.inside(px, py))
+        self.pixel.iter().all(|&[c, a, b]| c + a * x as i64 + b * y as i64 >= 0)
     }
 
     /// The covered pixels of row `y` as a half-open range `[x0, x1)` clamped to
     /// `[clip_x0, clip_x1)`, solved exactly from the edge equations; `None` if empty.
     pub fn row_span(&self, y: i32, clip_x0: i32, clip_x1: i32) -> Option<(i32, i32)> {
-        let py = y as i64 * ONE + HALF;
         let mut lo = clip_x0.max(self.min_x) as i64;
         let mut hi = clip_x1.min(self.max_x + 1) as i64; // exclusive
-        for e in &self.edges {
-            // Inside: a·(256·x + 128) + (b·py + c) ≥ bias  ⇔  256·a·x ≥ bias − a·128 − b·py − c.
-            let rhs = e.bias - e.a * HALF - e.b * py - e.c;
-            let k = e.a * ONE;
+        for &[c, k, b] in &self.pixel {
+            // Inside: c + k·x + b·y ≥ 0  ⇔  k·x ≥ −(c + b·y).
+            let rhs = -(c + b * y as i64);
             if k > 0 {
                 lo = lo.max(div_ceil(rhs, k));
             } else if k < 0 {
@@ -165,8 +154,9 @@ impl TriangleSetup {
     /// `c + a·x + b·y ≥ 0`, the same test as [`TriangleSetup::covers`] with the centre's
     /// half pixel and the fill rule's bias folded into `c`. Within the guard band every value
     /// at a pixel of a framebuffer (x, y < 2¹⁵) stays below 2⁶³ (see [`GUARD_BAND`]).
+    #[inline(always)]
     pub fn pixel_edges(&self) -> [[i64; 3]; 3] {
-        self.edges.map(|e| [e.a * HALF + e.b * HALF + e.c - e.bias, e.a * ONE, e.b * ONE])
+        self.pixel
     }
 
     /// The pixel box that may hold covered samples anywhere in a pixel (inclusive min,
@@ -197,10 +187,14 @@ impl TriangleSetup {
     /// instructions in callgrind on the small-triangle benchmark.)
     #[inline]
     fn solve_row(&self, py: i64, offset_x: i64, mut lo: i64, mut hi: i64) -> Option<(i32, i32)> {
-        for e in &self.edges {
-            // Inside: a·(256·x + ox) + (b·py + c) ≥ bias  ⇔  256·a·x ≥ bias − a·ox − b·py − c.
-            let rhs = e.bias - e.a * offset_x - e.b * py - e.c;
-            let k = e.a * ONE;
+        for &[pc, k, pb] in &self.pixel {
+            // The edge over fixed-point points, `a·x + b·y + c ≥ bias` (see `pixel_edge`):
+            // `a` and `b` are the pixel edge's divided by ONE (exact: multiples of it), and
+            // `c − bias` its `c` without the centre's half pixel.
+            let (a, b) = (k >> SUBPIXEL_BITS, pb >> SUBPIXEL_BITS);
+            let c_minus_bias = pc - a * HALF - b * HALF;
+            // Inside: a·(256·x + ox) + b·py + c ≥ bias  ⇔  256·a·x ≥ bias − a·ox − b·py − c.
+            let rhs = -c_minus_bias - a * offset_x - b * py;
             if k > 0 {
                 lo = lo.max(div_ceil(rhs, k));
             } else if k < 0 {
@@ -246,6 +240,32 @@ mod tests {
             let v = [0, 1, 2].map(|_| [coords(&mut seed, 40.0) - 5.0, coords(&mut seed, 40.0) - 5.0]);
             if let Some(t) = TriangleSetup::new(v) {
                 assert_spans_match_pixels(&t);
+            }
+        }
+    }
+
+    #[test]
+    fn sample_rows_at_the_centre_are_the_centre_rows() {
+        // The row solve at any sample offset, taken at the centre, gives `row_span`'s spans;
+        // and a sample a little right of the centre is inside exactly where the edge
+        // functions over fixed-point points say.
+        let mut seed = 0x51f1_5eed_0bad_cafe;
+        for _ in 0..300 {
+            let v = [0, 1, 2].map(|_| [coords(&mut seed, 40.0) - 5.0, coords(&mut seed, 40.0) - 5.0]);
+            let Some(t) = TriangleSetup::new(v) else { continue };
+            for y in t.min_y - 1..=t.max_y + 1 {
+                assert_eq!(t.row_span_at(y, HALF, HALF, -100, 100), t.row_span(y, -100, 100));
+                let span = t.row_span_at(y, HALF + 37, HALF, -100, 100);
+                for x in -10..50 {
+                    let (px, py) = (x as i64 * ONE + HALF + 37, y as i64 * ONE + HALF);
+                    let inside = (0..3).all(|i| {
+                        let (p, q) = (t.vertices[i], t.vertices[(i + 1) % 3]);
+                        let e = (q[0] - p[0]) * (py - p[1]) - (q[1] - p[1]) * (px - p[0]);
+                        let owns = q[1] < p[1] || (q[1] == p[1] && q[0] > p[0]);
+                        e > 0 || (e == 0 && owns)
+                    });
+                    assert_eq!(span.is_some_and(|(a, b)| a <= x && x < b), inside, "({x}, {y})");
+                }
             }
         }
     }
