@@ -416,7 +416,7 @@ fn unorm8_blend_add(p: &TargetParams, band: &mut ColorBand<'_>, at: &BlockAt, co
 fn add_saturate_pair(a: u32, b: u32) -> u32 {
     let sum = a + b;
     let over = (sum >> 8) & 0x0001_0001;
-    (sum | over * 0xff) & 0x00ff_00ff
+    (sum | (over * 0xff)) & 0x00ff_00ff
 }
 
 /// unorm8 blending with one factor pair (codes as [`factor8`]) and GL_FUNC_ADD on RGB and
