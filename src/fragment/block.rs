@@ -5,15 +5,17 @@
 //! Lane `i` of a block at `(x, y)` is pixel `(x + (i & 3), y + (i >> 2))`; a 16-bit mask
 //! says which lanes are live. Depth and colours travel as `[f32; 16]` lanes, stored depth
 //! and stencil as `[u32; 16]`, unorm8 colour as `[u16; 16]` per channel ([`kernels`]).
-//! The stages: colours (and texturing) first only when the alpha test needs alpha (after
-//! a read-only stencil/depth test that drops blocks none of whose lanes can pass, when a
-//! failing fragment changes nothing); the alpha test; the stencil and depth tests (early,
-//! before any colour work, whenever nothing before them can discard; depth clamp included); the occlusion count; colours,
-//! texturing, the colour sum and fog only for blocks with a surviving lane; then per colour
-//! target its write kernel (blend or logic op, dither, channel masks, the format's store).
-//! unorm8 and RGB565 targets blend in exact integers on u16 lanes (`a·b/255` rounded to
-//! nearest, the arithmetic of [`super::blend::blend_unorm8`], so the bytes are those of the
-//! span path); 16-bit and float targets go through the span path's f32 stages row by row.
+//! The stages: the stencil and depth tests first, before any colour work, whenever nothing
+//! before them can discard (depth clamp included); the occlusion count; the colours
+//! (texturing, the colour sum and fog: [`block_colors`], the one place colours are
+//! computed) only for blocks with a surviving lane; then per colour target its write kernel
+//! (blend or logic op, dither, channel masks, the format's store). With the alpha test, the
+//! colours come first, block by block (after a read-only stencil/depth test that drops
+//! blocks none of whose lanes can pass, when a failing fragment changes nothing), then the
+//! alpha test and the stencil and depth tests. unorm8 and RGB565 targets blend in exact
+//! integers on u16 lanes (`a·b/255` rounded to nearest, the arithmetic of
+//! [`super::blend::blend_unorm8`], so the bytes are those of the span path); 16-bit and
+//! float targets go through the span path's f32 stages row by row.
 //!
 //! Texturing runs over the block's lanes (`crate::texture::Texturing::texture_block`, the
 //! span path's results with the varyings of every lane evaluated once). The colour sum and
@@ -21,9 +23,19 @@
 //! [`BlockInputs::varying_lanes`]) with the operations of the span path's
 //! [`super::FragmentState::sum_and_fog`], so its bits.
 //!
-//! The walker calling [`shade_block`] is baseline code, so the colour work after the tests
-//! (colours, colour sum, fog and every target's write kernel) is one body compiled per SIMD
-//! level (`write_block`): one dispatch per block rather than one per stage.
+//! **Batches, one copy per SIMD level.** The walk (`raster::blocks`, in the caller's
+//! per-level copy) collects a primitive's blocks in a [`Batch`]; [`BlockPipeline::render`]
+//! runs each stage over the whole batch as one direct call into that stage's copy for the
+//! level (`simd::dispatch::outlined`, the level a constant of the walk's copy): the
+//! stencil/depth stage ([`depth_stencil::DepthStencilKernel::run_blocks`], its format and
+//! face matched once per batch, the passing blocks kept), then the colour stage over the
+//! survivors. So nothing is dispatched per block, every kernel is inlined into its stage,
+//! and each stage is compiled once per level, not once per combination of stages (compiling
+//! the whole block body into the walk per depth/stencil kind and level cost minutes of LTO
+//! time). A triangle's blocks are disjoint, so running a stage over the batch before the
+//! next gives each pixel what block-by-block order gives. Blocks move their 32-bit pixels
+//! as whole rows in registers ([`load`], [`store`], `simd::dispatch::load_block`) and pack
+//! lane masks by movemask (`simd::dispatch::sign_mask16`).
 //!
 //! Only single-sampled filled triangles outside the exact accuracy mode take this path
 //! (`setup::jobs::triangle`); lines, points, smooth primitives, pixel rectangles,
@@ -39,6 +51,8 @@ use super::{AlphaTest, FragmentState};
 use crate::framebuffer::band::Band;
 use crate::framebuffer::format::float_to_unorm;
 use crate::framebuffer::{ColorFormat, DepthStencilFormat};
+use crate::simd::dispatch::{outlined, sign_mask16, Word32};
+use crate::simd::Supported;
 use depth_stencil::DepthStencilKernel;
 use kernels::TargetKernel;
 use std::sync::atomic::Ordering;
@@ -67,8 +81,9 @@ pub fn map_lanes<T: Copy, U: Copy + Default>(a: &[T; LANES], f: impl Fn(T) -> U)
 }
 
 /// Where a block lies in its band: window position, the index of its lane 0 in the band's
-/// slices, the band's row length, and which lanes are pixels of the band (all but at the
-/// framebuffer's right and top edges).
+/// slices, the band's row length, which lanes are pixels of the band (all but at the
+/// framebuffer's right and top edges), and the SIMD level of the copy handling it (a
+/// constant there: [`load`] and [`store`] move whole rows with that level's instructions).
 #[derive(Clone, Copy, Debug)]
 pub struct BlockAt {
     pub x: i32,
@@ -76,24 +91,50 @@ pub struct BlockAt {
     pub base: usize,
     pub width: usize,
     pub valid: u16,
+    pub level: Supported,
 }
 
-impl BlockAt {
-    /// The block at window `(x, y)` (inside `band`'s rows).
-    #[inline]
-    pub fn new(band: &Band<'_>, x: i32, y: i32) -> Self {
-        let base = (y - band.y0) as usize * band.width + x as usize;
-        let (cols, rows) = (band.width as i32 - x, band.y0 + band.rows as i32 - y);
+/// A band's rows as its blocks see them (a copy, so that the band's layers can be borrowed
+/// while blocks are placed).
+#[derive(Clone, Copy, Debug)]
+pub struct Grid {
+    pub y0: i32,
+    pub rows: usize,
+    pub width: usize,
+    pub level: Supported,
+}
+
+impl Grid {
+    /// `band`'s rows, for the copy of level `level`.
+    #[inline(always)]
+    pub fn new(band: &Band<'_>, level: Supported) -> Self {
+        Grid { y0: band.y0, rows: band.rows, width: band.width, level }
+    }
+
+    /// The block at window `(x, y)` (inside the band's rows).
+    #[inline(always)]
+    pub fn at(&self, x: i32, y: i32) -> BlockAt {
+        let base = (y - self.y0) as usize * self.width + x as usize;
+        let (cols, rows) = (self.width as i32 - x, self.y0 + self.rows as i32 - y);
+        let (width, level) = (self.width, self.level);
         if cols >= 4 && rows >= 4 {
             // All but the blocks at the framebuffer's right and top edges.
-            return BlockAt { x, y, base, width: band.width, valid: 0xffff };
+            return BlockAt { x, y, base, width, valid: 0xffff, level };
         }
         let col_bits = (1u16 << cols.clamp(0, 4)) - 1;
         let mut valid = 0u16;
         for r in 0..rows.clamp(0, 4) {
             valid |= col_bits << (4 * r);
         }
-        BlockAt { x, y, base, width: band.width, valid }
+        BlockAt { x, y, base, width, valid, level }
+    }
+}
+
+impl BlockAt {
+    /// The block at window `(x, y)` (inside `band`'s rows), for the copy of level `level`.
+    #[inline]
+    pub fn new(band: &Band<'_>, x: i32, y: i32, level: Supported) -> Self {
+        Grid::new(band, level).at(x, y)
     }
 
     /// The index of lane `i` in the band's slices.
@@ -103,28 +144,24 @@ impl BlockAt {
     }
 }
 
-/// The 16 pixels of a block from a band slice (lanes outside the band read `T::default()`).
-#[inline(always)]
-pub fn load<T: Copy + Default>(px: &[T], at: &BlockAt) -> [T; LANES] {
-    let mut out = [T::default(); LANES];
-    if at.valid == 0xffff {
+/// A pixel type of the band slices blocks read and write: 32-bit pixels (packed depth,
+/// unorm8 colour) move as whole blocks in registers, bounds-checked once
+/// (`simd::dispatch::load_block`), a partial block stored as a select against the stored
+/// pixels; the others row by row and lane by lane.
+pub trait Pixel: Copy + Default {
+    /// The 16 pixels of a block inside the band (`at.valid` is 0xffff).
+    #[inline(always)]
+    fn load_inside(px: &[Self], at: &BlockAt) -> [Self; LANES] {
+        let mut out = [Self::default(); LANES];
         for r in 0..4 {
             out[4 * r..4 * r + 4].copy_from_slice(&px[at.base + r * at.width..][..4]);
         }
-    } else {
-        for (i, o) in out.iter_mut().enumerate() {
-            if at.valid & (1 << i) != 0 {
-                *o = px[at.index(i)];
-            }
-        }
+        out
     }
-    out
-}
 
-/// Stores the lanes of `mask` (a subset of the valid lanes) into a band slice.
-#[inline(always)]
-pub fn store<T: Copy>(px: &mut [T], at: &BlockAt, values: &[T; LANES], mask: u16) {
-    if at.valid == 0xffff {
+    /// Stores the lanes of `mask` of a block inside the band.
+    #[inline(always)]
+    fn store_inside(px: &mut [Self], at: &BlockAt, values: &[Self; LANES], mask: u16) {
         for r in 0..4 {
             let row = &mut px[at.base + r * at.width..][..4];
             let bits = mask >> (4 * r);
@@ -138,11 +175,106 @@ pub fn store<T: Copy>(px: &mut [T], at: &BlockAt, values: &[T; LANES], mask: u16
                 }
             }
         }
-    } else {
-        for (i, v) in values.iter().enumerate() {
-            if mask & at.valid & (1 << i) != 0 {
-                px[at.index(i)] = *v;
-            }
+    }
+}
+
+impl Pixel for u8 {}
+impl Pixel for u16 {}
+
+/// 32-bit pixels as words, for [`Pixel`]'s block moves.
+pub trait Word: Word32 + Default {
+    fn to_word(self) -> u32;
+    fn from_word(w: u32) -> Self;
+}
+
+impl Word for u32 {
+    #[inline(always)]
+    fn to_word(self) -> u32 {
+        self
+    }
+    #[inline(always)]
+    fn from_word(w: u32) -> Self {
+        w
+    }
+}
+
+impl Word for [u8; 4] {
+    #[inline(always)]
+    fn to_word(self) -> u32 {
+        u32::from_le_bytes(self)
+    }
+    #[inline(always)]
+    fn from_word(w: u32) -> Self {
+        w.to_le_bytes()
+    }
+}
+
+impl Pixel for u32 {
+    #[inline(always)]
+    fn load_inside(px: &[Self], at: &BlockAt) -> [Self; LANES] {
+        load_words(px, at)
+    }
+    #[inline(always)]
+    fn store_inside(px: &mut [Self], at: &BlockAt, values: &[Self; LANES], mask: u16) {
+        store_words(px, at, values, mask)
+    }
+}
+
+impl Pixel for [u8; 4] {
+    #[inline(always)]
+    fn load_inside(px: &[Self], at: &BlockAt) -> [Self; LANES] {
+        load_words(px, at)
+    }
+    #[inline(always)]
+    fn store_inside(px: &mut [Self], at: &BlockAt, values: &[Self; LANES], mask: u16) {
+        store_words(px, at, values, mask)
+    }
+}
+
+#[inline(always)]
+fn load_words<T: Word>(px: &[T], at: &BlockAt) -> [T; LANES] {
+    crate::simd::dispatch::load_block(at.level, px, at.base, at.width)
+}
+
+/// A block of words stored whole: the lanes outside `mask` rewritten with the values just
+/// loaded (the band is this worker's alone), which costs a load and a select where per-lane
+/// stores cost a branch per lane.
+#[inline(always)]
+fn store_words<T: Word>(px: &mut [T], at: &BlockAt, values: &[T; LANES], mask: u16) {
+    let level = at.level;
+    if mask == 0xffff {
+        return crate::simd::dispatch::store_block(level, px, at.base, at.width, values);
+    }
+    let old = crate::simd::dispatch::load_block(level, px, at.base, at.width);
+    let m = depth_stencil::expand_mask(mask);
+    let merged = lanes(|i| T::from_word((values[i].to_word() & m[i]) | (old[i].to_word() & !m[i])));
+    crate::simd::dispatch::store_block(level, px, at.base, at.width, &merged)
+}
+
+/// The 16 pixels of a block from a band slice (lanes outside the band read `T::default()`).
+#[inline(always)]
+pub fn load<T: Pixel>(px: &[T], at: &BlockAt) -> [T; LANES] {
+    if at.valid == 0xffff {
+        return T::load_inside(px, at);
+    }
+    let mut out = [T::default(); LANES];
+    for (i, o) in out.iter_mut().enumerate() {
+        if at.valid & (1 << i) != 0 {
+            *o = px[at.index(i)];
+        }
+    }
+    out
+}
+
+/// Stores the lanes of `mask` (a subset of the valid lanes) into a band slice.
+#[inline(always)]
+pub fn store<T: Pixel>(px: &mut [T], at: &BlockAt, values: &[T; LANES], mask: u16) {
+    if at.valid == 0xffff {
+        return T::store_inside(px, at, values, mask);
+    }
+    for (i, v) in values.iter().enumerate() {
+        if mask & at.valid & (1 << i) != 0 {
+            px[at.index(i)] = *v;
         }
     }
 }
@@ -256,8 +388,8 @@ impl AlphaKernel {
         AlphaKernel { lo, hi, invert }
     }
 
-    #[inline]
-    fn test(&self, alpha: &F32s, live: u16) -> u16 {
+    #[inline(always)]
+    fn test(&self, level: Supported, alpha: &F32s, live: u16) -> u16 {
         let flip = if self.invert { !0u32 } else { 0 };
         let pass: U32s = lanes(|i| {
             let a = alpha[i];
@@ -266,7 +398,7 @@ impl AlphaKernel {
             let inside = if (c >= self.lo) & (c < self.hi) { !0u32 } else { 0 };
             inside ^ flip
         });
-        depth_stencil::pack_mask(&pass) & live
+        sign_mask16(level, &pass) & live
     }
 }
 
@@ -288,134 +420,244 @@ impl BlockPipeline {
     }
 }
 
-/// Runs the fragment pipeline (see the module) on the lanes of `mask` of the block at
-/// `(x, y)` of a primitive facing front or back (`front_facing`, for two-sided stencil).
+/// A block the walk found: window position (multiples of 4) and covered lanes.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct BlockEntry {
+    pub x: i32,
+    pub y: i32,
+    pub mask: u16,
+}
+
+/// Blocks in a batch: the walk's blocks are collected this many at a time, so that each
+/// stage runs as one call per batch rather than one per block.
+pub const BATCH: usize = 32;
+
+/// A batch of a primitive's blocks, in walk order (disjoint pixels: the stages may run over
+/// the whole batch one after the other, each block's result is the same as block by block).
+pub struct Batch {
+    entries: [BlockEntry; BATCH],
+    len: usize,
+}
+
+impl Default for Batch {
+    fn default() -> Self {
+        Batch { entries: [BlockEntry::default(); BATCH], len: 0 }
+    }
+}
+
+impl Batch {
+    /// Adds a block; true when the batch is then full.
+    #[inline(always)]
+    pub fn push(&mut self, x: i32, y: i32, mask: u16) -> bool {
+        // `len < BATCH` always holds here: a full batch is rendered (emptied) at once.
+        let slot = self.len.min(BATCH - 1);
+        self.entries[slot] = BlockEntry { x, y, mask };
+        self.len = slot + 1;
+        self.len == BATCH
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.len == 0
+    }
+}
+
+impl BlockPipeline {
+    /// Runs the fragment pipeline (see the module) on the blocks of `batch` of a primitive
+    /// facing front or back (`front_facing`, for two-sided stencil), and empties it. Called
+    /// from the walk's copy for SIMD level `level` (a constant there): each stage is one
+    /// direct call per batch into its copy for the level (`simd::dispatch::outlined`),
+    /// compiled once per level: the stencil/depth tests of every block, then the colours
+    /// and target writes of the blocks with a surviving lane; with the alpha test, the
+    /// colours, the alpha test and the tests block by block.
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    pub fn render<I: BlockInputs>(
+        &self,
+        level: Supported,
+        state: &DrawState,
+        band: &mut Band<'_>,
+        scratch: &mut Scratch,
+        inputs: &I,
+        front_facing: bool,
+        batch: &mut Batch,
+    ) {
+        let len = std::mem::take(&mut batch.len);
+        let blocks = &mut batch.entries[..len];
+        if blocks.is_empty() {
+            return;
+        }
+        let grid = Grid::new(band, level);
+        if self.alpha.is_some() {
+            // Colours first: kept per block for the target writes (the enum's flat variant
+            // makes the buffer cheap to set up).
+            let mut shaded = [BlockColors::Uniform([0.0; 4]); BATCH];
+            let survivors = outlined(
+                level,
+                #[inline(always)]
+                |level| {
+                    let grid = Grid { level, ..grid };
+                    alpha_blocks(self, state, band, scratch, grid, inputs, front_facing, blocks, &mut shaded)
+                },
+            );
+            if survivors > 0 && !self.targets.is_empty() {
+                let (blocks, shaded) = (&blocks[..survivors], Some(&shaded[..survivors]));
+                outlined(
+                    level,
+                    #[inline(always)]
+                    |level| {
+                        let grid = Grid { level, ..grid };
+                        color_blocks(self, &state.fragment, band, scratch, grid, inputs, blocks, shaded)
+                    },
+                );
+            }
+            return;
+        }
+        let survivors = match &self.depth_stencil {
+            Some(kernel) => outlined(
+                level,
+                #[inline(always)]
+                |level| {
+                    let grid = Grid { level, ..grid };
+                    kernel.run_blocks(
+                        &mut band.depth,
+                        grid,
+                        front_facing,
+                        blocks,
+                        #[inline(always)]
+                        |x, y| inputs.z(x, y),
+                    )
+                },
+            ),
+            None => blocks.len(),
+        };
+        let blocks = &blocks[..survivors];
+        if let Some(counter) = &state.samples_passed {
+            let passed: u32 = blocks.iter().map(|b| b.mask.count_ones()).sum();
+            counter.fetch_add(u64::from(passed), Ordering::Relaxed);
+        }
+        // Without a colour target to write (depth-only passes, all channels masked) the
+        // colours are never needed.
+        if !blocks.is_empty() && !self.targets.is_empty() {
+            outlined(
+                level,
+                #[inline(always)]
+                |level| {
+                    let grid = Grid { level, ..grid };
+                    color_blocks(self, &state.fragment, band, scratch, grid, inputs, blocks, None)
+                },
+            );
+        }
+    }
+}
+
+/// The target writes of blocks whose tests are done (`mask`: the surviving lanes), with
+/// their colours (`shaded`, when the alpha test computed them, else computed here),
+/// compiled once per SIMD level.
 #[allow(clippy::too_many_arguments)]
 #[inline(always)]
-pub fn shade_block(
+fn color_blocks<I: BlockInputs>(
+    pipeline: &BlockPipeline,
+    fragment: &FragmentState,
+    band: &mut Band<'_>,
+    scratch: &mut Scratch,
+    grid: Grid,
+    inputs: &I,
+    blocks: &[BlockEntry],
+    shaded: Option<&[BlockColors]>,
+) {
+    let mut local = BlockColors::Uniform([0.0; 4]);
+    for (i, b) in blocks.iter().enumerate() {
+        let at = grid.at(b.x, b.y);
+        let colors = match shaded {
+            Some(shaded) => &shaded[i],
+            None => {
+                block_colors(fragment, scratch, &at, b.mask, inputs, &mut local);
+                &local
+            }
+        };
+        write_targets(pipeline, band, &at, colors, b.mask);
+    }
+}
+
+/// The pipeline up to the target writes with the alpha test, block by block, compiled once
+/// per SIMD level: the colours, the alpha test, the stencil and depth tests (after a
+/// read-only test that drops blocks none of whose lanes can pass, when a failing fragment
+/// changes nothing) and the occlusion count. Keeps in `blocks`, in order, the blocks with a
+/// surviving lane (their masks those lanes) and their colours in `shaded`; returns how many.
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn alpha_blocks<I: BlockInputs>(
     pipeline: &BlockPipeline,
     state: &DrawState,
     band: &mut Band<'_>,
     scratch: &mut Scratch,
-    x: i32,
-    y: i32,
-    mask: u16,
+    grid: Grid,
+    inputs: &I,
     front_facing: bool,
-    inputs: &impl BlockInputs,
-) {
+    blocks: &mut [BlockEntry],
+    shaded: &mut [BlockColors; BATCH],
+) -> usize {
+    let Some(alpha) = &pipeline.alpha else { return 0 };
     let fragment = &state.fragment;
-    let at = BlockAt::new(band, x, y);
-    let mut live = mask;
-    let mut colors = BlockColors::Uniform([0.0; 4]);
-    if let Some(alpha) = &pipeline.alpha {
-        // Early stencil/depth while the alpha test is on: a block none of whose lanes can
-        // pass changes nothing whatever its alpha, so it needs no colours.
+    let mut kept = 0;
+    for i in 0..blocks.len() {
+        let b = blocks[i];
+        let (x, y) = (b.x, b.y);
+        let at = grid.at(x, y);
+        let mut live = b.mask;
+        // A block none of whose lanes can pass changes nothing whatever its alpha, so it
+        // needs no colours.
         if let Some(kernel) = pipeline.depth_stencil.as_ref().filter(|k| k.culls_before_alpha()) {
             if kernel.test(&mut band.depth, &at, live, front_facing, || inputs.z(x, y)) == 0 {
-                return;
+                continue;
             }
         }
-        shade_colors(fragment, scratch, &at, live, inputs, &mut colors);
-        live = match &colors {
-            BlockColors::Uniform(c) => alpha.test(&[c[3]; LANES], live),
-            BlockColors::Lanes(l) => alpha.test(&l[3], live),
+        let colors = &mut shaded[kept.min(BATCH - 1)];
+        block_colors(fragment, scratch, &at, live, inputs, colors);
+        live = match colors {
+            BlockColors::Uniform(c) => alpha.test(grid.level, &[c[3]; LANES], live),
+            BlockColors::Lanes(l) => alpha.test(grid.level, &l[3], live),
         };
         if live == 0 {
-            return;
+            continue;
         }
-    }
-    if let Some(kernel) = &pipeline.depth_stencil {
-        live = kernel.run(&mut band.depth, &at, live, front_facing, || inputs.z(x, y));
-        if live == 0 {
-            return;
+        if let Some(kernel) = &pipeline.depth_stencil {
+            live = kernel.run(&mut band.depth, &at, live, front_facing, || inputs.z(x, y));
+            if live == 0 {
+                continue;
+            }
         }
+        if let Some(counter) = &state.samples_passed {
+            counter.fetch_add(live.count_ones() as u64, Ordering::Relaxed);
+        }
+        blocks[kept] = BlockEntry { mask: live, ..b };
+        kept += 1;
     }
-    if let Some(counter) = &state.samples_passed {
-        counter.fetch_add(live.count_ones() as u64, Ordering::Relaxed);
-    }
-    // Without a colour target to write (depth-only passes, all channels masked) the
-    // colours are never needed.
-    if !pipeline.targets.is_empty() {
-        let shade = pipeline.alpha.is_none();
-        write_block(pipeline, fragment, band, scratch, &at, live, inputs, &mut colors, shade);
-    }
+    kept
 }
 
-/// The colour stages of a block's surviving lanes, compiled per SIMD level as one body (one
-/// dispatch per block; the walker calling `shade_block` is baseline code): the colours
-/// when `shade` (unless the alpha test already computed them), the colour sum and fog, and
-/// every colour target's write kernel.
-#[allow(clippy::too_many_arguments)]
-#[inline]
-fn write_block(
-    pipeline: &BlockPipeline,
-    fragment: &FragmentState,
-    band: &mut Band<'_>,
-    scratch: &mut Scratch,
-    at: &BlockAt,
-    live: u16,
-    inputs: &impl BlockInputs,
-    colors: &mut BlockColors,
-    shade: bool,
-) {
-    crate::simd::per_level!({
-        if shade {
-            colors_body(fragment, scratch, at, live, inputs, colors);
-        }
-        if fragment.needs_varyings() {
-            sum_and_fog(fragment, at, inputs, colors);
-        }
-        for target in &pipeline.targets {
-            target.run(&mut band.colors[target.index].pixels, at, colors, live);
-        }
-    })
-}
-
-/// The colour sum and fog of a block's fragments over its lanes, every lane (only the live
-/// ones are written): per fragment the arithmetic of [`FragmentState::sum_and_fog`] with its
-/// varyings, so the span path's bits.
+/// Every colour target's write kernel on the lanes of `live`. One target (nearly every
+/// draw) is no loop: in a loop LLVM hoists the mask work of every kernel kind's rare paths
+/// out of it (over 100 instructions per block, measured), to run whichever kind runs.
 #[inline(always)]
-fn sum_and_fog(fragment: &FragmentState, at: &BlockAt, inputs: &impl BlockInputs, colors: &mut BlockColors) {
-    // In place on the lanes (a flat colour becomes lanes first).
-    if let BlockColors::Uniform(_) = colors {
-        *colors = BlockColors::Lanes(colors.lanes());
-    }
-    let BlockColors::Lanes(channels) = colors else { return };
-    // Varyings 0..3: the secondary colour with the colour sum; then the fog coordinate.
-    let mut varyings = [[0f32; LANES]; 4];
-    let sum = if fragment.color_sum { 3 } else { 0 };
-    let count = sum + usize::from(fragment.fog.is_some());
-    inputs.varying_lanes(at.x, at.y, 0, &mut varyings[..count]);
-    for (channel, secondary) in channels.iter_mut().zip(&varyings[..sum]) {
-        *channel = if fragment.clamp_float {
-            lanes(|i| clamp01_lane(channel[i] + secondary[i]))
-        } else {
-            lanes(|i| channel[i] + secondary[i])
-        };
-    }
-    if let Some(fog) = &fragment.fog {
-        fog_lanes(fog, &varyings[sum], channels);
+fn write_targets(pipeline: &BlockPipeline, band: &mut Band<'_>, at: &BlockAt, colors: &BlockColors, live: u16) {
+    match pipeline.targets.as_slice() {
+        [target] => target.run(&mut band.colors[target.index].pixels, at, colors, live),
+        targets => {
+            for target in targets {
+                target.run(&mut band.colors[target.index].pixels, at, colors, live);
+            }
+        }
     }
 }
 
-/// The colours of a block's fragments before the tests (for the alpha test), compiled per
-/// SIMD level: [`colors_body`] in a dispatch of its own.
-#[inline]
-fn shade_colors(
-    fragment: &FragmentState,
-    scratch: &mut Scratch,
-    at: &BlockAt,
-    live: u16,
-    inputs: &impl BlockInputs,
-    colors: &mut BlockColors,
-) {
-    crate::simd::per_level!(colors_body(fragment, scratch, at, live, inputs, colors))
-}
-
-/// The colours of a block's fragments: interpolated (or flat), textured when the draw
-/// textures (over the block's lanes: `crate::texture::Texturing::texture_block`).
+/// The fragment colours of a block (the lanes of `live` are the ones that count): the
+/// primitive's interpolated (or flat) colours, textured when the draw textures (over the
+/// block's lanes: `crate::texture::Texturing::texture_block`), then the colour sum and fog.
+/// The one place the block path computes colours: its inputs are the block's position and
+/// live lanes and the primitive's planes, its output the 16 colour lanes.
 #[inline(always)]
-fn colors_body(
+fn block_colors(
     fragment: &FragmentState,
     _scratch: &mut Scratch,
     at: &BlockAt,
@@ -427,12 +669,43 @@ fn colors_body(
         Some(c) => *colors = BlockColors::Uniform(c),
         None => inputs.colors(at.x, at.y, colors),
     }
-    let Some(texturing) = &fragment.texturing else {
-        return;
-    };
-    let mut lanes = colors.lanes();
-    texturing.texture_block(at.y, live, &mut lanes, |y, first, out| inputs.varying_lanes(at.x, y, first, out));
-    *colors = BlockColors::Lanes(lanes);
+    if let Some(texturing) = &fragment.texturing {
+        let mut lanes = colors.lanes();
+        texturing.texture_block(at.y, live, &mut lanes, |y, first, out| inputs.varying_lanes(at.x, y, first, out));
+        *colors = BlockColors::Lanes(lanes);
+    }
+    if fragment.needs_varyings() {
+        sum_and_fog(fragment, at, inputs, colors);
+    }
+}
+
+/// The colour sum and fog of a block's fragments over its lanes, every lane (only the live
+/// ones are written): per fragment the arithmetic of [`FragmentState::sum_and_fog`] with its
+/// varyings, so the span path's bits.
+#[inline(always)]
+#[allow(clippy::needless_range_loop)] // an index loop: a `zip` can stay a call in a per-level copy
+fn sum_and_fog(fragment: &FragmentState, at: &BlockAt, inputs: &impl BlockInputs, colors: &mut BlockColors) {
+    // In place on the lanes (a flat colour becomes lanes first).
+    if let BlockColors::Uniform(_) = colors {
+        *colors = BlockColors::Lanes(colors.lanes());
+    }
+    let BlockColors::Lanes(channels) = colors else { return };
+    // Varyings 0..3: the secondary colour with the colour sum; then the fog coordinate.
+    let mut varyings = [[0f32; LANES]; 4];
+    let sum = if fragment.color_sum { 3 } else { 0 };
+    let count = sum + usize::from(fragment.fog.is_some());
+    inputs.varying_lanes(at.x, at.y, 0, &mut varyings[..count]);
+    for k in 0..sum {
+        let (channel, secondary) = (&mut channels[k], &varyings[k]);
+        *channel = if fragment.clamp_float {
+            lanes(|i| clamp01_lane(channel[i] + secondary[i]))
+        } else {
+            lanes(|i| channel[i] + secondary[i])
+        };
+    }
+    if let Some(fog) = &fragment.fog {
+        fog_lanes(fog, &varyings[sum], channels);
+    }
 }
 
 #[cfg(test)]
@@ -458,7 +731,7 @@ mod tests {
             depth: DepthBand::None,
             depth_format: DepthStencilFormat::None,
         };
-        let at = BlockAt::new(&band, 4, 0);
+        let at = BlockAt::new(&band, 4, 0, crate::simd::current());
         assert_eq!(at.valid, 0b0000_0011_0011_0011);
         drop(band);
         let mut px = [7u32; 18];
@@ -496,8 +769,9 @@ mod tests {
                         lanes[..chunk.len()].copy_from_slice(chunk);
                         let pixels: Vec<[f32; 4]> = lanes.iter().map(|&a| [0.0, 0.0, 0.0, a]).collect();
                         let want = test.test(&pixels, 0xffff) as u16;
-                        assert_eq!(kernel.test(&lanes, 0xffff), want, "{test:?} {chunk:?}");
-                        assert_eq!(kernel.test(&lanes, 0x5a5a), want & 0x5a5a);
+                        let level = crate::simd::current();
+                        assert_eq!(kernel.test(level, &lanes, 0xffff), want, "{test:?} {chunk:?}");
+                        assert_eq!(kernel.test(level, &lanes, 0x5a5a), want & 0x5a5a);
                     }
                 }
             }

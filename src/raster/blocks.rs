@@ -84,7 +84,7 @@ pub fn walk_blocks(area: Rect, edges: &[PixelEdge; 3], stipple: Option<&[u32; 32
     if area.is_empty() {
         return;
     }
-    let reduced = edges.map(|e| Reduced::new(&e));
+    let reduced = map3(*edges, |e| Reduced::new(&e));
     if reduced.iter().all(|e| e.a.unsigned_abs() + e.b.unsigned_abs() <= 1 << 24) {
         Walker::<i32, _>::new(area, reduced, stipple, emit).run();
     } else {
@@ -184,6 +184,20 @@ impl Lane for i64 {
 
 type Lanes<T> = [T; 16];
 
+/// `f` on each of three edges' values, written out: `<[T; 3]>::map` and
+/// `std::array::from_fn` can stay calls (out of the caller's per-level copy) in a large
+/// function.
+#[inline(always)]
+fn map3<T: Copy, U>(a: [T; 3], f: impl Fn(T) -> U) -> [U; 3] {
+    [f(a[0]), f(a[1]), f(a[2])]
+}
+
+/// `[f(0), f(1), f(2)]` (see [`map3`]).
+#[inline(always)]
+fn index3<U>(f: impl Fn(usize) -> U) -> [U; 3] {
+    [f(0), f(1), f(2)]
+}
+
 /// The negative lanes of `v` as a mask.
 #[inline(always)]
 fn negative<T: Lane>(v: &Lanes<T>) -> u16 {
@@ -229,7 +243,7 @@ fn extremes(e: &Reduced, size: i64) -> (i64, i64) {
 /// largest/smallest over a sub-block, `ab` their steps from one sub-block to the next.
 #[inline(always)]
 fn sub_blocks<T: Lane>(hi: [T; 3], lo: [T; 3], ab: [(T, T); 3]) -> (u16, u16) {
-    let [s0, s1, s2] = ab.map(|(a, b)| steps(a, b));
+    let [s0, s1, s2] = map3(ab, |(a, b)| steps(a, b));
     let at = |base: [T; 3]| lanes(|i| (base[0] + s0[i]) | (base[1] + s1[i]) | (base[2] + s2[i]));
     (!negative(&at(hi)), !negative(&at(lo)))
 }
@@ -280,10 +294,10 @@ impl<'a, T: Lane, F: FnMut(i32, i32, u16)> Walker<'a, T, F> {
         Walker {
             area,
             edges,
-            clamp: edges.map(|e| 64 * e.steepness() + 1),
+            clamp: map3(edges, |e| 64 * e.steepness() + 1),
             stipple,
             start,
-            ab: edges.map(|e| (T::exact(e.a), T::exact(e.b))),
+            ab: map3(edges, |e| (T::exact(e.a), T::exact(e.b))),
             emit,
         }
     }
@@ -300,17 +314,14 @@ impl<'a, T: Lane, F: FnMut(i32, i32, u16)> Walker<'a, T, F> {
     /// The edges' steps scaled by `2^shift`.
     #[inline(always)]
     fn ab_shl(&self, shift: u32) -> [(T, T); 3] {
-        self.ab.map(|(a, b)| (a.shl(shift), b.shl(shift)))
+        map3(self.ab, |(a, b)| (a.shl(shift), b.shl(shift)))
     }
 
     /// `corner` plus each edge's largest (and smallest) value over a block of side `size`.
     #[inline(always)]
     fn extremes(&self, corner: &[T; 3], size: i64) -> ([T; 3], [T; 3]) {
-        let ext = self.edges.map(|e| extremes(&e, size));
-        (
-            std::array::from_fn(|k| corner[k] + T::exact(ext[k].0)),
-            std::array::from_fn(|k| corner[k] + T::exact(ext[k].1)),
-        )
+        let ext = map3(self.edges, |e| extremes(&e, size));
+        (index3(|k| corner[k] + T::exact(ext[k].0)), index3(|k| corner[k] + T::exact(ext[k].1)))
     }
 
     #[inline(always)]
@@ -340,7 +351,7 @@ impl<'a, T: Lane, F: FnMut(i32, i32, u16)> Walker<'a, T, F> {
         let area = self.area;
         let (x, y) = (area.x0 & !3, area.y0 & !3);
         let base = self.corner(x, y);
-        let [s0, s1, s2] = self.ab.map(|(a, b)| steps(a, b));
+        let [s0, s1, s2] = map3(self.ab, |(a, b)| steps(a, b));
         let mut mask = !negative(&lanes(|j| (base[0] + s0[j]) | (base[1] + s1[j]) | (base[2] + s2[j])));
         mask &= rect_mask(area, x, y);
         self.emit_masked(x, y, mask);
@@ -399,7 +410,7 @@ impl<'a, T: Lane, F: FnMut(i32, i32, u16)> Walker<'a, T, F> {
                 (small.0, small.1, corner)
             } else {
                 let (c, r) = (COLUMN[i], ROW[i]);
-                let corner = std::array::from_fn(|k| corner[k] + ab16[k].0.times(c) + ab16[k].1.times(r));
+                let corner = index3(|k| corner[k] + ab16[k].0.times(c) + ab16[k].1.times(r));
                 (x + 16 * c, y + 16 * r, corner)
             };
             self.block16(bx, by, &corner, inside & (1 << i) != 0);
@@ -429,8 +440,8 @@ impl<'a, T: Lane, F: FnMut(i32, i32, u16)> Walker<'a, T, F> {
             let mut mask = if inside & (1 << i) != 0 {
                 0xffff
             } else {
-                let base: [T; 3] = std::array::from_fn(|k| corner[k] + ab4[k].0.times(c) + ab4[k].1.times(r));
-                let [s0, s1, s2] = self.ab.map(|(a, b)| steps(a, b));
+                let base: [T; 3] = index3(|k| corner[k] + ab4[k].0.times(c) + ab4[k].1.times(r));
+                let [s0, s1, s2] = map3(self.ab, |(a, b)| steps(a, b));
                 !negative(&lanes(|j| (base[0] + s0[j]) | (base[1] + s1[j]) | (base[2] + s2[j])))
             };
             if !within && (bx < area.x0 || by < area.y0 || bx + 4 > area.x1 || by + 4 > area.y1) {

@@ -8,9 +8,19 @@
 //! baseline is `unsafe`: the caller promises the CPU has the features. [`run`] takes the
 //! level as a [`Supported`], which only `Supported::new` makes, after detecting the level,
 //! so a level the CPU lacks can never be run whatever a caller asks for.
+//!
+//! [`run_with`] also hands the body its level as a constant of the copy, so that the lane
+//! helpers at the end, which take it, keep only that level's instructions: [`sign_mask16`]
+//! (lane masks to a 16-bit mask by movemask, where LLVM extracts lanes one by one) and
+//! [`load_block`]/[`store_block`] (a 4×4 block of 32-bit pixels as four row loads joined in
+//! registers: filling a stack array row by row and reading it back as 256-bit vectors
+//! stalls on store forwarding, measured as a quarter of the depth kernel's time; and one
+//! bounds check per block instead of one per row). [`outlined`]
+//! runs a body in a per-level copy that is never inlined into its caller: a batch of blocks'
+//! stage compiled once per level and called directly from the walk's copy.
 #![allow(unsafe_code)]
 
-use super::Supported;
+use super::{Level, Supported};
 
 /// Runs `f` compiled for `level` (a level this CPU has: that is what a [`Supported`] is).
 /// `f` should be an `#[inline(always)]` closure (as [`per_level!`](crate::simd::per_level)
@@ -39,6 +49,84 @@ pub fn run<R>(level: Supported, f: impl FnOnce() -> R) -> R {
     }
 }
 
+/// Runs `f(level)` compiled for `level`, as [`run`]: `f` receives the level as a constant
+/// of its copy (each wrapper passes its own), so the helpers that take it keep only their
+/// level's instructions.
+#[inline(always)]
+pub fn run_with<R>(level: Supported, f: impl FnOnce(Supported) -> R) -> R {
+    match level.0 {
+        #[cfg(target_arch = "x86_64")]
+        Level::Avx2 => {
+            // SAFETY: a `Supported` holds only a level the CPU was detected to have
+            // (`Supported::new`): here AVX2, and the AVX it implies.
+            unsafe {
+                avx2(
+                    #[inline(always)]
+                    move || f(Supported(Level::Avx2)),
+                )
+            }
+        }
+        #[cfg(target_arch = "x86_64")]
+        Level::Sse41 => {
+            // SAFETY: a `Supported` holds only a level the CPU was detected to have
+            // (`Supported::new`): here SSE4.1, and the SSSE3 and SSE3 it implies.
+            unsafe {
+                sse41(
+                    #[inline(always)]
+                    move || f(Supported(Level::Sse41)),
+                )
+            }
+        }
+        #[cfg(target_arch = "x86_64")]
+        Level::Sse2 => sse2(
+            #[inline(always)]
+            move || f(Supported(Level::Sse2)),
+        ),
+        #[cfg(not(target_arch = "x86_64"))]
+        Level::Portable => f(Supported(Level::Portable)),
+    }
+}
+
+/// Runs `f(level)` compiled for `level` in a copy that is never inlined into the caller
+/// (unlike [`run`]'s, which LLVM may inline into a caller compiled for the same level). With
+/// `level` a constant (inside a [`run_with`] copy) the call goes straight to the level's
+/// copy: one call, no dispatch, and the body compiled once per level however many callers
+/// there are.
+#[inline(always)]
+pub fn outlined<R>(level: Supported, f: impl FnOnce(Supported) -> R) -> R {
+    match level.0 {
+        #[cfg(target_arch = "x86_64")]
+        Level::Avx2 => {
+            // SAFETY: a `Supported` holds only a level the CPU was detected to have
+            // (`Supported::new`): here AVX2, and the AVX it implies.
+            unsafe {
+                avx2_outlined(
+                    #[inline(always)]
+                    move || f(Supported(Level::Avx2)),
+                )
+            }
+        }
+        #[cfg(target_arch = "x86_64")]
+        Level::Sse41 => {
+            // SAFETY: a `Supported` holds only a level the CPU was detected to have
+            // (`Supported::new`): here SSE4.1, and the SSSE3 and SSE3 it implies.
+            unsafe {
+                sse41_outlined(
+                    #[inline(always)]
+                    move || f(Supported(Level::Sse41)),
+                )
+            }
+        }
+        #[cfg(target_arch = "x86_64")]
+        Level::Sse2 => sse2(
+            #[inline(always)]
+            move || f(Supported(Level::Sse2)),
+        ),
+        #[cfg(not(target_arch = "x86_64"))]
+        Level::Portable => f(Supported(Level::Portable)),
+    }
+}
+
 /// `f` compiled with AVX2 (256-bit integer and float vectors, VEX encodings). Not FMA:
 /// results must not depend on the level (see the room's doc).
 #[cfg(target_arch = "x86_64")]
@@ -59,4 +147,238 @@ fn sse41<R>(f: impl FnOnce() -> R) -> R {
 #[inline(never)]
 fn sse2<R>(f: impl FnOnce() -> R) -> R {
     f()
+}
+
+/// [`avx2`], never inlined.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline(never)]
+fn avx2_outlined<R>(f: impl FnOnce() -> R) -> R {
+    f()
+}
+
+/// [`sse41`], never inlined.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "sse4.1")]
+#[inline(never)]
+fn sse41_outlined<R>(f: impl FnOnce() -> R) -> R {
+    f()
+}
+
+// ---------------------------------------------------------------------------------------
+// Lane helpers.
+
+/// The sign bits of 16 lanes (lane `i`'s bit 31 as bit `i`): lane masks (all-ones or zero
+/// words) packed into a 16-bit mask. LLVM compiles the plain shift-and-OR loop as 16 lane
+/// extractions; this is two `vmovmskps` at AVX2, and at SSE2 and SSE4.1 two signed packs to
+/// 16 bits, one to 8 bits (which keep each lane's sign) and one `pmovmskb`.
+#[inline(always)]
+pub fn sign_mask16(level: Supported, m: &[u32; 16]) -> u16 {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if level.0 == Level::Avx2 {
+            // SAFETY: a `Supported` holds only a level the CPU was detected to have: AVX2.
+            return unsafe { sign_mask16_avx2(m) };
+        }
+        sign_mask16_sse2(m)
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        let _ = level;
+        let mut bits = 0u16;
+        for (i, &v) in m.iter().enumerate() {
+            bits |= ((v >> 31) as u16) << i;
+        }
+        bits
+    }
+}
+
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+fn sign_mask16_sse2(m: &[u32; 16]) -> u16 {
+    use std::arch::x86_64::{__m128i, _mm_loadu_si128, _mm_movemask_epi8, _mm_packs_epi16, _mm_packs_epi32};
+    let p = m.as_ptr() as *const __m128i;
+    // SAFETY: `m` is 16 u32 (64 bytes): the four unaligned 16-byte loads read inside it; SSE2
+    // is the x86-64 baseline.
+    unsafe {
+        let lo = _mm_packs_epi32(_mm_loadu_si128(p), _mm_loadu_si128(p.add(1)));
+        let hi = _mm_packs_epi32(_mm_loadu_si128(p.add(2)), _mm_loadu_si128(p.add(3)));
+        _mm_movemask_epi8(_mm_packs_epi16(lo, hi)) as u16
+    }
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+unsafe fn sign_mask16_avx2(m: &[u32; 16]) -> u16 {
+    use std::arch::x86_64::{_mm256_loadu_ps, _mm256_movemask_ps};
+    let p = m.as_ptr() as *const f32;
+    // SAFETY: `m` is 16 u32 (64 bytes): the two unaligned 32-byte loads read inside it.
+    let (lo, hi) = unsafe { (_mm256_loadu_ps(p), _mm256_loadu_ps(p.add(8))) };
+    (_mm256_movemask_ps(lo) as u32 | (_mm256_movemask_ps(hi) as u32) << 8) as u16
+}
+
+/// Pixel types of 32 bits with no padding and every bit pattern valid, which the row
+/// helpers move as plain 32-bit words.
+pub trait Word32: Copy + sealed::Sealed {}
+impl Word32 for u32 {}
+impl Word32 for [u8; 4] {}
+mod sealed {
+    pub trait Sealed {}
+    impl Sealed for u32 {}
+    impl Sealed for [u8; 4] {}
+}
+
+/// Whether the four rows of 4 pixels from `base`, `width` apart, lie inside a slice of `len`
+/// pixels. (`base`, `width` < `len` keep `base + 3·width + 4` from overflowing: a slice has
+/// fewer than 2⁶¹ elements of 4 bytes, or 2⁶² of 2.)
+#[inline(always)]
+fn block_inside(len: usize, base: usize, width: usize) -> bool {
+    base < len && width < len && base + 3 * width + 4 <= len
+}
+
+/// The 16 pixels of the 4×4 block whose row `r` is `px[base + r·width..][..4]` (lane `4·r + c`
+/// is pixel `c` of row `r`), bounds-checked once and joined in registers: at AVX2 two rows
+/// per 256-bit vector (a load and an insert), at SSE2 and SSE4.1 one 128-bit load per row.
+/// Panics if a row lies outside `px`.
+#[inline(always)]
+pub fn load_block<T: Word32>(level: Supported, px: &[T], base: usize, width: usize) -> [T; 16] {
+    assert!(block_inside(px.len(), base, width), "a block's rows lie inside its slice");
+    #[cfg(target_arch = "x86_64")]
+    {
+        let p = px[base..].as_ptr();
+        if level.0 == Level::Avx2 {
+            // SAFETY: a `Supported` holds only a level the CPU was detected to have: AVX2;
+            // the four rows lie inside `px` (checked above).
+            return unsafe { load_block_avx2(p, width) };
+        }
+        use std::arch::x86_64::{__m128i, _mm_loadu_si128};
+        // SAFETY: rows `r` (0..4) are the 16 bytes at `p + r·width` pixels, inside `px`
+        // (checked above), of 32-bit words (`Word32`: no padding, every bit pattern valid);
+        // SSE2 is the baseline.
+        let row = |r: usize| unsafe { _mm_loadu_si128(p.add(r * width) as *const __m128i) };
+        let v = [row(0), row(1), row(2), row(3)];
+        // SAFETY: four 16-byte vectors are the 64 bytes of 16 words of 32 bits (`Word32`).
+        unsafe { std::mem::transmute_copy::<[__m128i; 4], [T; 16]>(&v) }
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        let _ = level;
+        let mut lanes = [px[base]; 16];
+        for (i, l) in lanes.iter_mut().enumerate() {
+            *l = px[base + (i >> 2) * width + (i & 3)];
+        }
+        lanes
+    }
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+unsafe fn load_block_avx2<T: Word32>(p: *const T, width: usize) -> [T; 16] {
+    use std::arch::x86_64::{__m128i, __m256i, _mm256_castsi128_si256, _mm256_inserti128_si256, _mm_loadu_si128};
+    // SAFETY: the caller checked that the rows (16 bytes at `p + r·width` pixels) are
+    // readable, 32-bit words (`Word32`).
+    let row = |r: usize| unsafe { _mm_loadu_si128(p.add(r * width) as *const __m128i) };
+    let lo = _mm256_inserti128_si256::<1>(_mm256_castsi128_si256(row(0)), row(1));
+    let hi = _mm256_inserti128_si256::<1>(_mm256_castsi128_si256(row(2)), row(3));
+    // SAFETY: two 32-byte vectors are the 64 bytes of 16 words of 32 bits (`Word32`).
+    unsafe { std::mem::transmute_copy::<[__m256i; 2], [T; 16]>(&[lo, hi]) }
+}
+
+/// Stores the 16 lanes of a 4×4 block into its rows ([`load_block`]'s inverse), split from
+/// registers. Panics if a row lies outside `px`.
+#[inline(always)]
+pub fn store_block<T: Word32>(level: Supported, px: &mut [T], base: usize, width: usize, values: &[T; 16]) {
+    assert!(block_inside(px.len(), base, width), "a block's rows lie inside its slice");
+    #[cfg(target_arch = "x86_64")]
+    {
+        let p = px[base..].as_mut_ptr();
+        if level.0 == Level::Avx2 {
+            // SAFETY: a `Supported` holds only a level the CPU was detected to have: AVX2;
+            // the four rows lie inside `px` (checked above).
+            return unsafe { store_block_avx2(p, width, values) };
+        }
+        use std::arch::x86_64::{__m128i, _mm_loadu_si128, _mm_storeu_si128};
+        let v = values.as_ptr() as *const __m128i;
+        for r in 0..4 {
+            // SAFETY: `values` is 64 bytes, read as four 16-byte vectors; row `r` is the 16
+            // bytes at `p + r·width` pixels, inside `px` (checked above), of 32-bit words
+            // (`Word32`), written whole; SSE2 is the baseline.
+            unsafe { _mm_storeu_si128(p.add(r * width) as *mut __m128i, _mm_loadu_si128(v.add(r))) }
+        }
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        let _ = level;
+        for (i, v) in values.iter().enumerate() {
+            px[base + (i >> 2) * width + (i & 3)] = *v;
+        }
+    }
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+unsafe fn store_block_avx2<T: Word32>(p: *mut T, width: usize, values: &[T; 16]) {
+    use std::arch::x86_64::{
+        __m128i, __m256i, _mm256_castsi256_si128, _mm256_extracti128_si256, _mm256_loadu_si256, _mm_storeu_si128,
+    };
+    let v = values.as_ptr() as *const __m256i;
+    // SAFETY: `values` is 64 bytes, read as two 32-byte vectors.
+    let (lo, hi) = unsafe { (_mm256_loadu_si256(v), _mm256_loadu_si256(v.add(1))) };
+    let halves = [
+        _mm256_castsi256_si128(lo),
+        _mm256_extracti128_si256::<1>(lo),
+        _mm256_castsi256_si128(hi),
+        _mm256_extracti128_si256::<1>(hi),
+    ];
+    for (r, half) in halves.into_iter().enumerate() {
+        // SAFETY: the caller checked that row `r` (16 bytes at `p + r·width` pixels, 32-bit
+        // words) lies inside its slice; written whole.
+        unsafe { _mm_storeu_si128(p.add(r * width) as *mut __m128i, half) }
+    }
+}
+
+/// Each lane rounded to the nearest integer, ties to even, as an i32 (lanes of magnitude below
+/// 2³¹): `cvtps2dq`, which rounds by the MXCSR mode, and Rust requires the default environment
+/// (round to nearest even), so every level gives the same integers. Plain Rust has no
+/// round-to-nearest conversion (`as` truncates; `round_ties_even` is a libm call at SSE2).
+#[inline(always)]
+pub fn round_even_i32(level: Supported, x: &[f32; 16]) -> [i32; 16] {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if level.0 == Level::Avx2 {
+            // SAFETY: a `Supported` holds only a level the CPU was detected to have: AVX2.
+            return unsafe { round_even_i32_avx2(x) };
+        }
+        use std::arch::x86_64::{__m128i, _mm_cvtps_epi32, _mm_loadu_ps};
+        let p = x.as_ptr();
+        // SAFETY: `x` is 64 bytes, read as four 16-byte vectors; SSE2 is the baseline.
+        let row = |k: usize| unsafe { _mm_cvtps_epi32(_mm_loadu_ps(p.add(4 * k))) };
+        let v = [row(0), row(1), row(2), row(3)];
+        // SAFETY: four 16-byte vectors are the 64 bytes of 16 i32.
+        unsafe { std::mem::transmute::<[__m128i; 4], [i32; 16]>(v) }
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        let _ = level;
+        let mut out = [0i32; 16];
+        for (o, &v) in out.iter_mut().zip(x) {
+            *o = v.round_ties_even() as i32;
+        }
+        out
+    }
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+unsafe fn round_even_i32_avx2(x: &[f32; 16]) -> [i32; 16] {
+    use std::arch::x86_64::{__m256i, _mm256_cvtps_epi32, _mm256_loadu_ps};
+    let p = x.as_ptr();
+    // SAFETY: `x` is 64 bytes, read as two 32-byte vectors.
+    let (lo, hi) = unsafe { (_mm256_loadu_ps(p), _mm256_loadu_ps(p.add(8))) };
+    // SAFETY: two 32-byte vectors are the 64 bytes of 16 i32.
+    unsafe { std::mem::transmute::<[__m256i; 2], [i32; 16]>([_mm256_cvtps_epi32(lo), _mm256_cvtps_epi32(hi)]) }
 }

@@ -229,7 +229,10 @@ pub fn describe() -> String {
 /// Evaluates an expression (usually a block) compiled once per SIMD level and runs the copy
 /// for this process's [`level`]: the expression becomes an `#[inline(always)]` closure that
 /// each level's `target_feature` wrapper inlines (`dispatch.rs`). `return`, `break` and `?`
-/// inside it act on that closure, not on the enclosing function.
+/// inside it act on that closure, not on the enclosing function. The form
+/// `per_level!(|level| body)` also names the copy's level (a [`Supported`], a constant in
+/// each copy) for the lane helpers that take one ([`dispatch::sign_mask16`],
+/// [`dispatch::load_block`]) and for [`dispatch::outlined`] calls.
 ///
 /// ```
 /// let mut a = [1.0f32; 64];
@@ -243,6 +246,13 @@ pub fn describe() -> String {
 /// ```
 #[macro_export]
 macro_rules! simd_per_level {
+    (|$level:ident| $body:expr) => {
+        $crate::simd::dispatch::run_with(
+            $crate::simd::current(),
+            #[inline(always)]
+            |$level: $crate::simd::Supported| $body,
+        )
+    };
     ($body:expr) => {
         $crate::simd::dispatch::run(
             $crate::simd::current(),
@@ -291,6 +301,60 @@ mod tests {
         assert_eq!(current(), current());
         assert!(Level::best() >= level() || choice().requested.is_some());
         assert!(Level::ALL[0].available());
+    }
+
+    #[test]
+    fn sign_masks_are_the_lanes_sign_bits_at_every_level() {
+        // Lane masks for every 16-bit mask, then words whose other bits vary (only bit 31
+        // counts, whatever the rest).
+        for level in Level::ALL.iter().filter_map(|&l| Supported::new(l)) {
+            for bits in 0..=u16::MAX {
+                let m: [u32; 16] = std::array::from_fn(|i| if bits & (1 << i) != 0 { !0 } else { 0 });
+                let got = dispatch::run_with(level, |l| dispatch::sign_mask16(l, &m));
+                assert_eq!(got, bits, "level {}", level.level());
+                let words: [u32; 16] =
+                    std::array::from_fn(|i| (m[i] & 0x8000_0000) | (i as u32 * 0x0101_0101 + bits as u32));
+                assert_eq!(dispatch::sign_mask16(level, &words), bits, "level {}", level.level());
+            }
+        }
+    }
+
+    #[test]
+    fn blocks_load_and_store_lane_by_lane_at_every_level() {
+        // A 7-wide image of distinct words; the block at column 2 of rows 1..5.
+        let image: Vec<u32> = (0..7 * 6).map(|i| 0x0101_0101 * i + 0x8000_0000 * (i % 3)).collect();
+        let want: [u32; 16] = std::array::from_fn(|i| image[(1 + i / 4) * 7 + 2 + i % 4]);
+        for level in Level::ALL.iter().filter_map(|&l| Supported::new(l)) {
+            let got = dispatch::run_with(level, |l| dispatch::load_block(l, &image, 9, 7));
+            assert_eq!(got, want, "level {}", level.level());
+            let bytes: Vec<[u8; 4]> = image.iter().map(|w| w.to_le_bytes()).collect();
+            let got = dispatch::load_block(level, &bytes, 9, 7);
+            assert_eq!(got.map(u32::from_le_bytes), want, "level {}", level.level());
+            // Stored back reversed into a copy: only the block's 16 words change.
+            let mut copy = image.clone();
+            let values: [u32; 16] = std::array::from_fn(|i| want[15 - i]);
+            dispatch::run_with(level, |l| dispatch::store_block(l, &mut copy, 9, 7, &values));
+            for (i, (&a, &b)) in copy.iter().zip(&image).enumerate() {
+                let (y, x) = (i / 7, i % 7);
+                if (1..5).contains(&y) && (2..6).contains(&x) {
+                    assert_eq!(a, values[(y - 1) * 4 + x - 2], "level {} ({x}, {y})", level.level());
+                } else {
+                    assert_eq!(a, b, "level {} ({x}, {y})", level.level());
+                }
+            }
+            // The last block that fits, and one row too far.
+            assert_eq!(dispatch::load_block(level, &image, 3 + 7 * 2, 7)[15], image[41]);
+            let beyond = std::panic::catch_unwind(|| dispatch::load_block(level, &image, 4 + 7 * 2, 7));
+            assert!(beyond.is_err(), "level {}", level.level());
+        }
+    }
+
+    #[test]
+    fn outlined_copies_run_at_every_level() {
+        for level in Level::ALL.iter().filter_map(|&l| Supported::new(l)) {
+            let got = dispatch::run_with(level, |l| dispatch::outlined(l, |inner| (l, inner)));
+            assert_eq!(got, (level, level));
+        }
     }
 
     #[test]

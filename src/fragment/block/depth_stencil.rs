@@ -17,13 +17,15 @@
 //!   stencil. Packed 24/8 words keep the stencil as `w >> 24` on u32 lanes: one shift out
 //!   and one shift back in, where u8 lanes would need pack and unpack shuffles.
 
-use super::{lanes, load, map_lanes, store, BlockAt, F32s, U32s, LANES};
+use super::{lanes, load, map_lanes, store, BlockAt, BlockEntry, F32s, Grid, U32s, LANES};
 use crate::fragment::stencil::{StencilFace, StencilOp};
 use crate::fragment::FragmentState;
 use crate::framebuffer::band::DepthBand;
 use crate::framebuffer::format::DepthEncoding;
 use crate::framebuffer::DepthStencilFormat;
 use crate::gl::CompareFunc;
+use crate::simd::dispatch::sign_mask16;
+use crate::simd::Supported;
 
 /// GL's comparison bits of `func` (see the module).
 pub fn compare_bits(func: CompareFunc) -> u8 {
@@ -72,19 +74,6 @@ const BIT: U32s = {
     b
 };
 
-/// Lane mask words (all-ones or zero) packed into one bit per lane. (Once the kernel is
-/// inlined LLVM compiles this as lane extractions and scalar shifts whatever the form:
-/// an OR of lanes ANDed with their bits, a tree of halves, or a pack through bytes and a
-/// multiplication gave no fewer instructions in the LTO build.)
-#[inline(always)]
-pub fn pack_mask(m: &U32s) -> u16 {
-    let mut bits = 0u16;
-    for (i, &v) in m.iter().enumerate() {
-        bits |= ((v >> 31) as u16) << i;
-    }
-    bits
-}
-
 /// The lanes where `a func b` holds, as lane mask words: one plain comparison loop per
 /// function (the function is the draw's: the branch goes the same way every block). `T`
 /// is `i32` for values below 2³¹ (unorm depth up to 24 bits, float depth bits, stencil),
@@ -101,12 +90,6 @@ pub fn compare_mask<T: Copy + PartialOrd>(func: u8, a: &[T; LANES], b: &[T; LANE
         6 => lanes(|i| all(a[i] >= b[i])),
         _ => [!0; LANES],
     }
-}
-
-/// The lanes where `fragment func stored` holds, as a 16-bit mask.
-#[inline(always)]
-pub fn compare_lanes(func: u8, fragment: &U32s, stored: &U32s) -> u16 {
-    pack_mask(&compare_mask(func, fragment, stored))
 }
 
 /// `a & b` on lane masks.
@@ -146,8 +129,11 @@ fn stencil_op_code(op: StencilOp) -> u8 {
 
 /// Stencil operation `OP` on the lanes of `which` (lane masks), through the write mask.
 #[inline(always)]
+#[allow(clippy::needless_range_loop)] // an index loop on purpose: see the comment inside
 fn stencil_op_lanes<const OP: u8>(values: &mut U32s, reference: u32, which: &U32s, write_mask: u32) {
-    for (v, &m) in values.iter_mut().zip(which) {
+    // An index loop: a `zip` can stay a call in a large per-level copy.
+    for i in 0..LANES {
+        let (v, m) = (&mut values[i], which[i]);
         let new = match OP {
             1 => 0,
             2 => reference,
@@ -308,6 +294,16 @@ impl DepthStencilKernel {
         (self.run)(&self.params, band, at, &lanes, live, front_facing)
     }
 
+    /// The window depth of block `b` (`z_at(x, y)`: of the block at `(x, y)`), as
+    /// [`Self::depth_lanes`].
+    #[inline(always)]
+    fn block_depth(&self, b: &BlockEntry, z_at: &impl Fn(i32, i32) -> F32s) -> F32s {
+        self.depth_lanes(
+            #[inline(always)]
+            || z_at(b.x, b.y),
+        )
+    }
+
     /// The fragments' window depth, depth-clamped (zeros without the depth test).
     #[inline(always)]
     fn depth_lanes(&self, z: impl FnOnce() -> F32s) -> F32s {
@@ -328,7 +324,7 @@ impl DepthStencilKernel {
 /// −0 give 0), then for unorm the same single-precision product rounded to nearest even
 /// through f64 (`format::round_half_even`), for float the clamped value's bits.
 #[inline(always)]
-fn encode_depth(encoding: DepthEncoding, z: &F32s) -> U32s {
+fn encode_depth(level: Supported, encoding: DepthEncoding, z: &F32s) -> U32s {
     let clamped = lanes(|i| {
         let v = z[i];
         let v = if v > 0.0 { v } else { 0.0 };
@@ -340,22 +336,12 @@ fn encode_depth(encoding: DepthEncoding, z: &F32s) -> U32s {
     });
     match encoding {
         DepthEncoding::Unorm(bits) if bits <= 24 => {
-            // Below 2²³ adding 2²³ in single precision rounds to nearest even; from 2²³ on
-            // every f32 is an integer already: the f64 rounding's result, without f64.
-            const MAGIC: f32 = (1u32 << 23) as f32;
+            // The product is at most 2²⁴ − 1: rounded to nearest even by one conversion
+            // (`simd::dispatch::round_even_i32`), the f64 rounding's result (below 2²⁴ every
+            // f32 is exact in f64, and its nearest integer is the same).
             let max = crate::framebuffer::format::unorm_max(bits) as f32;
-            // The integer read from the bits: below 2²³ those of `p + 2²³` minus 2²³'s; from
-            // 2²³ to 2²⁴ (exponent 23) the mantissa plus the implicit bit.
-            lanes(|i| {
-                let p = clamped[i] * max;
-                let small = (p + MAGIC).to_bits().wrapping_sub(MAGIC.to_bits());
-                let large = (p.to_bits() & 0x007f_ffff) | 0x0080_0000;
-                if p < MAGIC {
-                    small
-                } else {
-                    large
-                }
-            })
+            let p = lanes(|i| clamped[i] * max);
+            map_lanes(&crate::simd::dispatch::round_even_i32(level, &p), |v| v as u32)
         }
         DepthEncoding::Unorm(bits) => {
             const MAGIC: f64 = (1u64 << 52) as f64;
@@ -371,7 +357,9 @@ fn encode_depth(encoding: DepthEncoding, z: &F32s) -> U32s {
 /// the result is the passing lanes and the depth values to store (the stored ones where
 /// nothing is written). `SIGNED`: the stored depth values are below 2³¹.
 #[inline(always)]
+#[allow(clippy::too_many_arguments)]
 fn tests<const SIGNED: bool>(
+    level: Supported,
     p: &DepthStencilParams,
     face: Option<&FaceKernel>,
     encoding: DepthEncoding,
@@ -389,7 +377,7 @@ fn tests<const SIGNED: bool>(
     }
     let mut depth = *stored;
     if let Some((func, write)) = p.depth {
-        let fragment = encode_depth(encoding, z);
+        let fragment = encode_depth(level, encoding, z);
         let pass = if SIGNED {
             let f = map_lanes(&fragment, |v| v as i32);
             let s = map_lanes(stored, |v| v as i32);
@@ -414,7 +402,9 @@ fn tests<const SIGNED: bool>(
 
 /// The stencil and depth tests on one format: the block's stored values loaded as lanes
 /// once, [`tests`], and the block stored back whole (lanes that neither test changed
-/// keep the values just loaded) only when the draw can change them and `STORE`.
+/// keep the values just loaded) only when the draw can change them and `STORE`. Called
+/// through a function pointer (the alpha-test path and the tests), so one dispatch to the
+/// level's copy per block.
 fn depth_stencil<const FMT: u8, const STORE: bool>(
     p: &DepthStencilParams,
     band: &mut DepthBand<'_>,
@@ -423,58 +413,152 @@ fn depth_stencil<const FMT: u8, const STORE: bool>(
     live: u16,
     front_facing: bool,
 ) -> u16 {
-    crate::simd::per_level!({
-        let live_lanes = expand_mask(live);
+    crate::simd::per_level!(|level| {
+        let at = BlockAt { level, ..*at };
         let face = p.stencil.as_ref().map(|f| &f[usize::from(!front_facing)]);
-        let depth_writes = STORE && p.depth.is_some_and(|(_, write)| write);
-        let stencil_writes = STORE && p.stencil_writes;
         match band {
-            DepthBand::Depth16(px) if FMT == D16 => {
-                let stored = map_lanes(&load(px, at), u32::from);
-                let mut stencil = [0; LANES];
-                let (pass, depth) =
-                    tests::<true>(p, None, DepthEncoding::Unorm(16), z, &stored, &mut stencil, &live_lanes);
-                let bits = pack_mask(&pass);
-                if depth_writes && bits != 0 {
-                    store(px, at, &map_lanes(&depth, |v| v as u16), 0xffff);
-                }
-                bits
-            }
-            DepthBand::Packed24(px) if FMT == PACKED24 => {
-                let words = load(px, at);
-                let stored = map_lanes(&words, |w| w & 0x00ff_ffff);
-                let mut stencil = map_lanes(&words, |w| w >> 24);
-                let (pass, depth) =
-                    tests::<true>(p, face, DepthEncoding::Unorm(24), z, &stored, &mut stencil, &live_lanes);
-                let bits = pack_mask(&pass);
-                if (depth_writes && bits != 0) || stencil_writes {
-                    store(px, at, &lanes(|i| depth[i] | stencil[i] << 24), 0xffff);
-                }
-                bits
-            }
-            DepthBand::Depth32(px, s) | DepthBand::Float32(px, s) if FMT == D32 || FMT == F32 => {
-                let stored = load(px, at);
-                let mut stencil = match (&s, face.is_some()) {
-                    (Some(s), true) => map_lanes(&load(s, at), u32::from),
-                    _ => [0; LANES],
-                };
-                let (pass, depth) = if FMT == D32 {
-                    tests::<false>(p, face, DepthEncoding::Unorm(32), z, &stored, &mut stencil, &live_lanes)
-                } else {
-                    tests::<true>(p, face, DepthEncoding::Float, z, &stored, &mut stencil, &live_lanes)
-                };
-                let bits = pack_mask(&pass);
-                if depth_writes && bits != 0 {
-                    store(px, at, &depth, 0xffff);
-                }
-                if let (Some(s), true) = (s, stencil_writes) {
-                    store(s, at, &map_lanes(&stencil, |v| v as u8), 0xffff);
-                }
-                bits
-            }
+            DepthBand::Depth16(px) if FMT == D16 => depth16::<STORE>(p, px, &at, z, live),
+            DepthBand::Packed24(px) if FMT == PACKED24 => packed24::<STORE>(p, face, px, &at, z, live),
+            DepthBand::Depth32(px, s) if FMT == D32 => depth32::<STORE, false>(p, face, px, s, &at, z, live),
+            DepthBand::Float32(px, s) if FMT == F32 => depth32::<STORE, true>(p, face, px, s, &at, z, live),
             _ => live,
         }
     })
+}
+
+impl DepthStencilKernel {
+    /// Runs the tests on every block of `blocks` (`mask`: its covered lanes; `z(x, y)`: the
+    /// window depth of the block at `(x, y)`), keeping in `blocks`, in order, those with a
+    /// passing lane, their masks the passing lanes; returns how many. The format and the
+    /// stencil face are matched once for all of them; compiled into the caller's copy for
+    /// `grid.level` (the block stage's batch call).
+    #[inline(always)]
+    pub fn run_blocks(
+        &self,
+        band: &mut DepthBand<'_>,
+        grid: Grid,
+        front_facing: bool,
+        blocks: &mut [BlockEntry],
+        z_at: impl Fn(i32, i32) -> F32s,
+    ) -> usize {
+        let p = &self.params;
+        let face = p.stencil.as_ref().map(|f| &f[usize::from(!front_facing)]);
+        // Every closure here is inlined into the caller's copy for the level (one that
+        // were not would be baseline code).
+        match band {
+            DepthBand::Depth16(px) => keep(
+                blocks,
+                #[inline(always)]
+                |b| depth16::<true>(p, px, &grid.at(b.x, b.y), &self.block_depth(b, &z_at), b.mask),
+            ),
+            DepthBand::Packed24(px) if face.is_none() => keep(
+                blocks,
+                #[inline(always)]
+                |b| packed24::<true>(p, None, px, &grid.at(b.x, b.y), &self.block_depth(b, &z_at), b.mask),
+            ),
+            DepthBand::Packed24(px) => keep(
+                blocks,
+                #[inline(always)]
+                |b| packed24::<true>(p, face, px, &grid.at(b.x, b.y), &self.block_depth(b, &z_at), b.mask),
+            ),
+            DepthBand::Depth32(px, s) => keep(
+                blocks,
+                #[inline(always)]
+                |b| depth32::<true, false>(p, face, px, s, &grid.at(b.x, b.y), &self.block_depth(b, &z_at), b.mask),
+            ),
+            DepthBand::Float32(px, s) => keep(
+                blocks,
+                #[inline(always)]
+                |b| depth32::<true, true>(p, face, px, s, &grid.at(b.x, b.y), &self.block_depth(b, &z_at), b.mask),
+            ),
+            DepthBand::None => blocks.len(),
+        }
+    }
+}
+
+/// Replaces each block's mask by `test(block)`, keeping (in order, at the front) the blocks
+/// with a lane left; returns how many.
+#[inline(always)]
+fn keep(blocks: &mut [BlockEntry], mut test: impl FnMut(&BlockEntry) -> u16) -> usize {
+    // (Each caller's `test` is one closure, called here once: inlined.)
+    let mut kept = 0;
+    for i in 0..blocks.len() {
+        let mut b = blocks[i];
+        b.mask = test(&b);
+        blocks[kept] = b;
+        kept += usize::from(b.mask != 0);
+    }
+    kept
+}
+
+/// 16-bit depth (no stencil).
+#[inline(always)]
+fn depth16<const STORE: bool>(p: &DepthStencilParams, px: &mut [u16], at: &BlockAt, z: &F32s, live: u16) -> u16 {
+    let stored = map_lanes(&load(px, at), u32::from);
+    let mut stencil = [0; LANES];
+    let (pass, depth) =
+        tests::<true>(at.level, p, None, DepthEncoding::Unorm(16), z, &stored, &mut stencil, &expand_mask(live));
+    let bits = sign_mask16(at.level, &pass);
+    if STORE && p.depth.is_some_and(|(_, write)| write) && bits != 0 {
+        store(px, at, &map_lanes(&depth, |v| v as u16), 0xffff);
+    }
+    bits
+}
+
+/// Packed 24-bit depth and 8-bit stencil (`face`: the stencil test's, if on).
+#[inline(always)]
+fn packed24<const STORE: bool>(
+    p: &DepthStencilParams,
+    face: Option<&FaceKernel>,
+    px: &mut [u32],
+    at: &BlockAt,
+    z: &F32s,
+    live: u16,
+) -> u16 {
+    let words = load(px, at);
+    let stored = map_lanes(&words, |w| w & 0x00ff_ffff);
+    let mut stencil = map_lanes(&words, |w| w >> 24);
+    let (pass, depth) =
+        tests::<true>(at.level, p, face, DepthEncoding::Unorm(24), z, &stored, &mut stencil, &expand_mask(live));
+    let bits = sign_mask16(at.level, &pass);
+    let depth_writes = STORE && p.depth.is_some_and(|(_, write)| write);
+    let stencil_writes = STORE && face.is_some() && p.stencil_writes;
+    if (depth_writes && bits != 0) || stencil_writes {
+        store(px, at, &lanes(|i| depth[i] | stencil[i] << 24), 0xffff);
+    }
+    bits
+}
+
+/// 32-bit unorm (`FLOAT` false) or float depth with an optional separate stencil plane.
+#[inline(always)]
+fn depth32<const STORE: bool, const FLOAT: bool>(
+    p: &DepthStencilParams,
+    face: Option<&FaceKernel>,
+    px: &mut [u32],
+    s: &mut Option<&mut [u8]>,
+    at: &BlockAt,
+    z: &F32s,
+    live: u16,
+) -> u16 {
+    let stored = load(px, at);
+    let mut stencil = match (&s, face.is_some()) {
+        (Some(s), true) => map_lanes(&load(s, at), u32::from),
+        _ => [0; LANES],
+    };
+    let live = expand_mask(live);
+    let (pass, depth) = if FLOAT {
+        tests::<true>(at.level, p, face, DepthEncoding::Float, z, &stored, &mut stencil, &live)
+    } else {
+        tests::<false>(at.level, p, face, DepthEncoding::Unorm(32), z, &stored, &mut stencil, &live)
+    };
+    let bits = sign_mask16(at.level, &pass);
+    if STORE && p.depth.is_some_and(|(_, write)| write) && bits != 0 {
+        store(px, at, &depth, 0xffff);
+    }
+    if let (Some(s), true) = (s, STORE && face.is_some() && p.stencil_writes) {
+        store(s, at, &map_lanes(&stencil, |v| v as u8), 0xffff);
+    }
+    bits
 }
 
 #[cfg(test)]
@@ -487,7 +571,11 @@ mod tests {
         let s = [1u32; LANES];
         for func in CompareFunc::ALL {
             let want = (0..LANES).filter(|&i| crate::fragment::passes(func, f[i], s[i])).fold(0u16, |m, i| m | 1 << i);
-            assert_eq!(compare_lanes(compare_bits(func), &f, &s), want, "{func:?}");
+            assert_eq!(
+                sign_mask16(crate::simd::current(), &compare_mask(compare_bits(func), &f, &s)),
+                want,
+                "{func:?}"
+            );
         }
     }
 
@@ -518,9 +606,11 @@ mod tests {
             for chunk in z.chunks(LANES) {
                 let mut lanes = [0f32; LANES];
                 lanes[..chunk.len()].copy_from_slice(chunk);
-                let got = encode_depth(encoding, &lanes);
-                for i in 0..LANES {
-                    assert_eq!(got[i], encoding.encode_fragment(lanes[i]), "{encoding:?} {:e}", lanes[i]);
+                for level in crate::simd::Level::ALL.iter().filter_map(|&l| Supported::new(l)) {
+                    let got = crate::simd::dispatch::run_with(level, |l| encode_depth(l, encoding, &lanes));
+                    for i in 0..LANES {
+                        assert_eq!(got[i], encoding.encode_fragment(lanes[i]), "{encoding:?} {:e} {level:?}", lanes[i]);
+                    }
                 }
             }
         }
@@ -547,7 +637,7 @@ mod tests {
             DepthStencilFormat::Depth32 { stencil: true },
             DepthStencilFormat::Float32 { stencil: true },
         ];
-        let at = BlockAt { x: 0, y: 0, base: 0, width: 4, valid: 0xffff };
+        let at = BlockAt { x: 0, y: 0, base: 0, width: 4, valid: 0xffff, level: crate::simd::current() };
         let mut rng = Lcg(7);
         for round in 0..3000 {
             let format = formats[round % 4];
@@ -671,7 +761,7 @@ mod tests {
         for bits in 0..=u16::MAX {
             let m = expand_mask(bits);
             assert!(m.iter().all(|&v| v == 0 || v == !0));
-            assert_eq!(pack_mask(&m), bits);
+            assert_eq!(sign_mask16(crate::simd::current(), &m), bits);
         }
     }
 

@@ -155,7 +155,10 @@ fn unorm8_u32(x: f32) -> u32 {
 #[inline(always)]
 fn src_words(colors: &BlockColors) -> U32s {
     match colors {
-        BlockColors::Uniform(c) => [u32::from_le_bytes(c.map(|v| float_to_unorm(v, 8) as u8)); LANES],
+        BlockColors::Uniform(c) => {
+            let b = |k: usize| float_to_unorm(c[k], 8);
+            [b(0) | b(1) << 8 | b(2) << 16 | b(3) << 24; LANES]
+        }
         BlockColors::Lanes([r, g, b, a]) => {
             lanes(|i| unorm8_u32(r[i]) | unorm8_u32(g[i]) << 8 | unorm8_u32(b[i]) << 16 | unorm8_u32(a[i]) << 24)
         }
@@ -229,7 +232,8 @@ fn unorm8_logic_op(p: &TargetParams, band: &mut ColorBand<'_>, at: &BlockAt, col
 #[inline(always)]
 fn logic_lanes(op: LogicOp, src: &U32s, dst: &U32s) -> U32s {
     let t = op as u32;
-    let m = [0, 1, 2, 3].map(|b| 0u32.wrapping_sub((t >> b) & 1));
+    let m = |b: u32| 0u32.wrapping_sub((t >> b) & 1);
+    let m = [m(0), m(1), m(2), m(3)];
     lanes(|i| {
         let (s, d) = (src[i], dst[i]);
         (s & d & m[0]) | (s & !d & m[1]) | (!s & d & m[2]) | (!s & !d & m[3])
@@ -398,14 +402,21 @@ fn unorm8_blend_add(p: &TargetParams, band: &mut ColorBand<'_>, at: &BlockAt, co
     let ColorBand::Unorm8(px) = band else { return };
     let dst = load8(px, at);
     let src = src_words(colors);
-    let s: [u8; 4 * LANES] = std::array::from_fn(|j| (src[j >> 2] >> (8 * (j & 3))) as u8);
-    let d: [u8; 4 * LANES] = std::array::from_fn(|j| (dst[j >> 2] >> (8 * (j & 3))) as u8);
-    let mut sum = [0u8; 4 * LANES];
-    for (o, (a, b)) in sum.iter_mut().zip(s.iter().zip(&d)) {
-        *o = a.saturating_add(*b);
-    }
-    let words = lanes(|i| u32::from_le_bytes([sum[4 * i], sum[4 * i + 1], sum[4 * i + 2], sum[4 * i + 3]]));
+    let words = lanes(|i| {
+        let (s, d) = (src[i], dst[i]);
+        add_saturate_pair(s & 0x00ff_00ff, d & 0x00ff_00ff)
+            | add_saturate_pair((s >> 8) & 0x00ff_00ff, (d >> 8) & 0x00ff_00ff) << 8
+    });
     store8(p, px, at, &words, Some(&dst), live);
+}
+
+/// `min(a + b, 255)` on both bytes of two pairs of bytes in bits 0–7 and 16–23: each sum is
+/// below 2⁹, so it stays in its 16-bit half, and bit 8 says it passed 255.
+#[inline(always)]
+fn add_saturate_pair(a: u32, b: u32) -> u32 {
+    let sum = a + b;
+    let over = (sum >> 8) & 0x0001_0001;
+    (sum | (over * 0xff)) & 0x00ff_00ff
 }
 
 /// unorm8 blending with one factor pair (codes as [`factor8`]) and GL_FUNC_ADD on RGB and
@@ -565,7 +576,7 @@ mod tests {
                 let mut state = FragmentState::plain(None, vec![Some(mask)], false);
                 state.blend = vec![Some(blend)];
                 let kernel = TargetKernel::new(&state, 0, ColorFormat::Unorm8 { alpha: true }, mask);
-                let at = BlockAt { x: 0, y: 0, base: 0, width: 4, valid: 0xffff };
+                let at = BlockAt { x: 0, y: 0, base: 0, width: 4, valid: 0xffff, level: crate::simd::current() };
                 let live = 0xfeff;
                 for a in 0..=255u32 {
                     for d in (0..=255u32).step_by(3) {

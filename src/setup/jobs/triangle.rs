@@ -16,7 +16,7 @@
 //! depth, colours and varyings evaluated per lane from the same planes and the same
 //! arithmetic as the span path ([`TriangleJob::render_blocks`]). Multisampled targets
 //! and the exact mode keep the span path.
-use crate::fragment::block::{lanes, shade_block, BlockColors, BlockInputs, BlockPipeline, F32s};
+use crate::fragment::block::{lanes, Batch, BlockColors, BlockInputs, BlockPipeline, F32s};
 use crate::fragment::pipeline::{shade_span, shade_span_samples, DrawState, Scratch, Span};
 use crate::fragment::{multisample::SampleMasks, span_mask};
 use crate::framebuffer::band::Band;
@@ -228,27 +228,40 @@ impl TriangleJob {
             return;
         }
         let edges = self.setup.pixel_edges().map(PixelEdge::from_array);
-        // The walk, the block driver and the planes compiled once per SIMD level (one
-        // dispatch per triangle and tile); the kernels are the pipeline's own calls.
-        crate::simd::per_level!({
+        // The walk compiled once per SIMD level (one dispatch per triangle and tile); its
+        // blocks collected in batches, each batch's stages one direct call per stage into
+        // their copies for the level (`BlockPipeline::render`).
+        crate::simd::per_level!(|level| {
+            let mut batch = Batch::default();
+            let front_facing = self.front_facing;
             walk_blocks(
                 area,
                 &edges,
                 state.polygon_stipple.as_ref(),
                 #[inline(always)]
-                |x, y, mask| shade_block(pipeline, state, band, scratch, x, y, mask, self.front_facing, self),
-            )
+                |x, y, mask| {
+                    if batch.push(x, y, mask) {
+                        pipeline.render(level, state, band, scratch, self, front_facing, &mut batch);
+                    }
+                },
+            );
+            pipeline.render(level, state, band, scratch, self, front_facing, &mut batch);
         });
     }
 
     /// The planes' offsets of a block's columns and rows (pixel centres relative to the
     /// anchor, computed as the span path computes a span's first pixel).
+    /// Plain loops rather than `std::array::from_fn` (which LLVM may leave as calls).
     #[inline(always)]
     fn block_offsets(&self, x: i32, y: i32) -> Offsets {
-        Offsets {
-            dx: std::array::from_fn(|c| (x + c as i32) as f32 + 0.5 - self.anchor[0]),
-            dy: std::array::from_fn(|r| (y + r as i32) as f32 + 0.5 - self.anchor[1]),
+        let (mut dx, mut dy) = ([0f32; 4], [0f32; 4]);
+        for (c, d) in dx.iter_mut().enumerate() {
+            *d = (x + c as i32) as f32 + 0.5 - self.anchor[0];
         }
+        for (r, d) in dy.iter_mut().enumerate() {
+            *d = (y + r as i32) as f32 + 0.5 - self.anchor[1];
+        }
+        Offsets { dx, dy }
     }
 
     fn shade_span(&self, state: &DrawState, band: &mut Band<'_>, y: i32, x0: i32, x1: i32, scratch: &mut Scratch) {
@@ -328,9 +341,21 @@ struct Offsets {
 /// same bits as the span path's.
 #[inline(always)]
 fn plane_lanes(p: &Plane, o: &Offsets) -> F32s {
-    let cols = o.dx.map(|dx| p.a0 + p.dadx * dx);
-    let rows = o.dy.map(|dy| p.dady * dy);
+    let (mut cols, mut rows) = ([0f32; 4], [0f32; 4]);
+    for (col, dx) in cols.iter_mut().zip(o.dx) {
+        *col = p.a0 + p.dadx * dx;
+    }
+    for (row, dy) in rows.iter_mut().zip(o.dy) {
+        *row = p.dady * dy;
+    }
     lanes(|i| cols[i & 3] + rows[i >> 2])
+}
+
+/// A plane over a block's lanes times `w` per lane.
+#[inline(always)]
+fn times_lanes(p: &Plane, o: &Offsets, w: &F32s) -> F32s {
+    let v = plane_lanes(p, o);
+    lanes(|i| v[i] * w[i])
 }
 
 impl BlockInputs for TriangleJob {
@@ -354,12 +379,13 @@ impl BlockInputs for TriangleJob {
             Shading::Perspective { color_over_w, inv_w } => {
                 let q = plane_lanes(inv_w, &o);
                 let w: F32s = lanes(|i| 1.0 / q[i]);
-                let channel = |p: &Plane| {
-                    let v = plane_lanes(p, &o);
-                    lanes(|i| v[i] * w[i])
-                };
                 let [r, g, b, a] = color_over_w;
-                BlockColors::Lanes([channel(r), channel(g), channel(b), channel(a)])
+                BlockColors::Lanes([
+                    times_lanes(r, &o, &w),
+                    times_lanes(g, &o, &w),
+                    times_lanes(b, &o, &w),
+                    times_lanes(a, &o, &w),
+                ])
             }
         };
     }
