@@ -972,6 +972,12 @@ fn depth_block_in<'a, T: DepthTexels<'a>>(sampler: &'a Sampler, c: &[F32s; 3], l
             DepthLevel2d::<T>::of(&levels[d[3]])?,
         ])
     };
+    // Only textures that wrap alike on both axes (shadow maps do) take the lanes: one copy
+    // of the lane loops per wrap, filter and format instead of one per pair of wraps
+    // (which made this function over half a megabyte); the quad path answers the others.
+    if wrap_class(sampler.wrap[0]) != wrap_class(sampler.wrap[1]) {
+        return false;
+    }
     let Some(a_levels) = of(first) else { return false };
     let b_levels = if two != 0 {
         match of(second) {
@@ -989,10 +995,11 @@ fn depth_block_in<'a, T: DepthTexels<'a>>(sampler: &'a Sampler, c: &[F32s; 3], l
     }
     let compare = sampler.compare.map(Compare::new);
     let mut d = [0.0f32; 16];
-    dispatch!(depth_lanes [, T], sampler.wrap, filter, &a_levels, compare, &reference, c, &mut d);
+    let lanes = depth_lanes_of::<T>(sampler.wrap, filter);
+    lanes(&a_levels, compare, &reference, c, &mut d);
     if let Some(b_levels) = b_levels {
         let mut b = [0.0f32; 16];
-        dispatch!(depth_lanes [, T], sampler.wrap, filter, &b_levels, compare, &reference, c, &mut b);
+        lanes(&b_levels, compare, &reference, c, &mut b);
         let mut f = [0.0f32; 16];
         for i in 0..16 {
             f[i] = frac[QUAD_OF_LANE[i]];
@@ -1021,10 +1028,35 @@ fn depth_block_in<'a, T: DepthTexels<'a>>(sampler: &'a Sampler, c: &[F32s; 3], l
     true
 }
 
+/// Which lane-loop type a wrap mode takes (as `dispatch!` chooses): repeat, mirrored
+/// repeat, or a clamp.
+fn wrap_class(wrap: Wrap) -> u8 {
+    match wrap {
+        Wrap::Repeat => 0,
+        Wrap::MirroredRepeat => 1,
+        _ => 2,
+    }
+}
+
+/// The lane loops of a depth lookup for texels of format `T`.
+type DepthLanes<'a, T> = fn(&[DepthLevel2d<T>; 4], Option<Compare>, &F32s, &[F32s; 3], &mut F32s);
+
+/// [`depth_lanes`] for a texture that wraps by `wrap` on both axes (`wrap[0]`'s class
+/// decides; [`depth_block_in`] checked that `wrap[1]`'s is the same) with `filter`.
+fn depth_lanes_of<'a, T: DepthTexels<'a>>(wrap: [Wrap; 3], filter: Filter) -> DepthLanes<'a, T> {
+    match (wrap_class(wrap[0]), filter) {
+        (0, Filter::Linear) => depth_lanes::<Repeat, Repeat, true, T>,
+        (0, Filter::Nearest) => depth_lanes::<Repeat, Repeat, false, T>,
+        (1, Filter::Linear) => depth_lanes::<Mirror, Mirror, true, T>,
+        (1, Filter::Nearest) => depth_lanes::<Mirror, Mirror, false, T>,
+        (_, Filter::Linear) => depth_lanes::<Edge, Edge, true, T>,
+        (_, Filter::Nearest) => depth_lanes::<Edge, Edge, false, T>,
+    }
+}
+
 /// The filtered depth (or filtered comparison of `reference` with the texels) of 16 lanes
 /// at the coordinates `c`, each lane in the level of its quad: [`DepthLevel2d::filter`]
 /// lane by lane, in lane loops.
-#[inline(always)]
 fn depth_lanes<'a, X: AxisWrap, Y: AxisWrap, const LINEAR: bool, T: DepthTexels<'a>>(
     levels: &[DepthLevel2d<T>; 4],
     compare: Option<Compare>,
