@@ -17,7 +17,7 @@
 //! (MuJoCo's per-frame multisample resolve) copies bytes: the general path's u8 → f32 → u8
 //! round trip is the identity (a test checks every value), so the bytes are the same.
 use super::layers::{color_buffer, depth_stencil_buffer};
-use super::multisample::{average_unorm, resolve_color_span};
+use super::multisample::resolve_color_span;
 use super::surface::{ColorPixels, DepthStencilPixels};
 use super::{ColorBuffer, ColorFormat, DepthStencilBuffer, OutOfMemory, Rect};
 use crate::gl::float::floor_f64;
@@ -238,10 +238,23 @@ fn copy_unorm8(src: &ColorSource, dst: &mut ColorBuffer, x: BlitAxis, y: BlitAxi
                 }
             }
             _ => {
+                // The resolve: each channel's rounded average, (sum + count/2) / count, as
+                // `average_unorm` computes it (a shift for the power-of-two counts).
+                let (half, shift) = (samples as u32 / 2, samples.trailing_zeros());
+                let power_of_two = samples.is_power_of_two();
                 for (k, o) in out.iter_mut().enumerate() {
                     let i = if forward { first + k } else { first - k };
-                    let sum = (0..samples).map(|s| input[i + s * width].map(u32::from));
-                    let p = average_unorm(sum, samples).map(|c| c as u8);
+                    let mut sum = [half; 4];
+                    for s in 0..samples {
+                        let p = input[i + s * width];
+                        for c in 0..4 {
+                            sum[c] += p[c] as u32;
+                        }
+                    }
+                    let mut p = [0u8; 4];
+                    for c in 0..4 {
+                        p[c] = if power_of_two { sum[c] >> shift } else { sum[c] / samples as u32 } as u8;
+                    }
                     *o = if alpha { p } else { [p[0], p[1], p[2], o[3]] };
                 }
             }
@@ -353,7 +366,7 @@ impl<'a> DepthStencilSource<'a> {
 
 /// Copies depth (`depth`) and/or stencil (`stencil`) of `n` pixels from index `from` of
 /// `src` to index `to` of `dst`, as the per-pixel blit writes them; `false` when the
-/// formats differ or the pixel words mix a wanted and an unwanted part.
+/// formats differ.
 fn copy_depth_stencil_span(
     src: &DepthStencilBuffer,
     from: usize,
@@ -370,11 +383,21 @@ fn copy_depth_stencil_span(
                 b[d].copy_from_slice(&a[s]);
             }
         }
-        (DepthStencilPixels::Packed24(a), DepthStencilPixels::Packed24(b)) => match (depth, stencil) {
-            (true, true) => b[d].copy_from_slice(&a[s]),
-            (false, false) => {}
-            _ => return false,
-        },
+        (DepthStencilPixels::Packed24(a), DepthStencilPixels::Packed24(b)) => {
+            // The parts of the packed word copied: depth in the low 24 bits, stencil above.
+            let keep = match (depth, stencil) {
+                (true, true) => {
+                    b[d].copy_from_slice(&a[s]);
+                    return true;
+                }
+                (true, false) => 0xff00_0000,
+                (false, true) => 0x00ff_ffff,
+                (false, false) => return true,
+            };
+            for (b, &a) in b[d].iter_mut().zip(&a[s]) {
+                *b = (*b & keep) | (a & !keep);
+            }
+        }
         (DepthStencilPixels::Depth32(a, sa), DepthStencilPixels::Depth32(b, sb)) => {
             if depth {
                 b[d.clone()].copy_from_slice(&a[s.clone()]);

@@ -129,7 +129,7 @@ pub fn resolve_color_span(
 
 /// The rounded average of `count` 4-channel values (`(sum + count/2) / count`).
 #[inline]
-pub(super) fn average_unorm(values: impl Iterator<Item = [u32; 4]>, count: usize) -> [u32; 4] {
+fn average_unorm(values: impl Iterator<Item = [u32; 4]>, count: usize) -> [u32; 4] {
     let mut sum = [0u32; 4];
     for v in values {
         for (a, c) in sum.iter_mut().zip(v) {
