@@ -46,14 +46,16 @@
 //! (sample rows), and a framebuffer object of multisampled attachments is assembled into a
 //! multisampled [`Framebuffer`] ([`Framebuffer::from_sample_layers`]) without resolved
 //! layers: reading it needs a glBlitFramebuffer resolve, as the specification says.
+use super::state::ScissorState;
 use super::texture::TARGETS;
 use super::Context;
 use crate::framebuffer::blit::{self, BlitAxis, ColorSource, DepthStencilSource};
 use crate::framebuffer::layers::{color_buffer, depth_stencil_buffer};
-use crate::framebuffer::multisample::{resolve_color, resolve_depth_stencil, supported_samples};
+use crate::framebuffer::multisample::supported_samples;
 use crate::framebuffer::surface::ColorPixels;
 use crate::framebuffer::{
     ColorBuffer, ColorFormat, ColorSlot, DepthStencilBuffer, DepthStencilFormat, Framebuffer, FramebufferConfig,
+    OutOfMemory, Rect,
 };
 use crate::gl::enums::*;
 use crate::gl::limits::MAX_DRAW_BUFFERS;
@@ -1157,6 +1159,18 @@ impl Context {
         write: bool,
         f: impl FnOnce(&mut Framebuffer) -> R,
     ) -> Option<R> {
+        let (mut framebuffer, object, lent) = self.assemble_object_framebuffer(name)?;
+        let result = f(&mut framebuffer);
+        self.disassemble_object_framebuffer(framebuffer, &object, lent, write);
+        Some(result)
+    }
+
+    /// The first half of [`Context::with_object_framebuffer`]: framebuffer object `name`
+    /// assembled from its images, which [`Context::disassemble_object_framebuffer`] puts back.
+    fn assemble_object_framebuffer(
+        &mut self,
+        name: u32,
+    ) -> Option<(Framebuffer, FramebufferObject, Vec<Option<Lent>>)> {
         if self.framebuffer_status(name) != GL_FRAMEBUFFER_COMPLETE {
             return None;
         }
@@ -1224,14 +1238,24 @@ impl Context {
                 buffer
             }
         };
-        let mut framebuffer = match info.samples {
+        let framebuffer = match info.samples {
             0 => Framebuffer::from_layers(config, width, height, colors, depth_stencil),
             n => Framebuffer::from_sample_layers(config, width, height, n as usize, colors, depth_stencil),
         };
-        let result = f(&mut framebuffer);
+        Some((framebuffer, object, lent))
+    }
+
+    /// Puts back the images of a framebuffer from [`Context::assemble_object_framebuffer`]
+    /// (written back, for copied layers, when `write` is set).
+    fn disassemble_object_framebuffer(
+        &mut self,
+        framebuffer: Framebuffer,
+        object: &FramebufferObject,
+        lent: Vec<Option<Lent>>,
+        write: bool,
+    ) {
         let (colors, depth_stencil) = framebuffer.into_layers();
-        self.return_layers(&object, colors, Some(depth_stencil), lent, write);
-        Some(result)
+        self.return_layers(object, colors, Some(depth_stencil), lent, write);
     }
 
     fn take_storage(&mut self, rb: u32) -> RenderbufferStorage {
@@ -1444,65 +1468,147 @@ impl Context {
         // Rendering recorded so far completes first (both framebuffers may be involved).
         self.flush_rendering();
         let read_slot = self.current_read_slot();
-        let want_depth = mask & GL_DEPTH_BUFFER_BIT != 0;
-        let want_stencil = mask & GL_STENCIL_BUFFER_BIT != 0;
-        let sources = self.with_read_framebuffer(|fb| {
-            let (w, h) = (fb.width(), fb.height());
-            let color = if mask & GL_COLOR_BUFFER_BIT != 0 {
-                match read_slot.and_then(|s| fb.color_samples(s)) {
-                    // The resolve: each pixel the average of its samples.
-                    Some((samples, count)) => {
-                        let mut resolved = color_buffer(samples.format(), w, h).ok()?;
-                        resolve_color(samples, count, &mut resolved, fb.bounds());
-                        Some(ColorSource::read(&resolved, w, h))
-                    }
-                    None => read_slot.and_then(|s| fb.color(s)).map(|b| ColorSource::read(b, w, h)),
-                }
-            } else {
-                None
-            };
-            let ds = if !(want_depth || want_stencil) {
-                None
-            } else if let Some((samples, count)) = fb.depth_stencil_samples() {
-                // Depth and stencil come from sample 0.
-                let mut resolved = depth_stencil_buffer(samples.format(), w, h).ok()?;
-                resolve_depth_stencil(samples, count, &mut resolved, fb.bounds());
-                Some(DepthStencilSource::read(&resolved, w, h))
-            } else {
-                Some(DepthStencilSource::read(fb.depth_stencil(), w, h))
-            };
-            Some((color, ds))
-        });
-        let Some(sources) = sources else { return };
-        let Some((color, depth_stencil)) = sources else {
-            return self.error(GL_OUT_OF_MEMORY);
-        };
+        let want =
+            (mask & GL_COLOR_BUFFER_BIT != 0, mask & GL_DEPTH_BUFFER_BIT != 0, mask & GL_STENCIL_BUFFER_BIT != 0);
         let x = BlitAxis { src0: src[0], src1: src[2], dst0: dst[0], dst1: dst[2] };
         let y = BlitAxis { src0: src[1], src1: src[3], dst0: dst[1], dst1: dst[3] };
         if x.src0 == x.src1 || y.src0 == y.src1 || x.dst0 == x.dst1 || y.dst0 == y.dst1 {
             return;
         }
-        let targets: Vec<ColorSlot> = self.draw_targets().into_iter().map(|(s, _)| s).collect();
-        let linear = filter == GL_LINEAR;
-        let scissor = self.state.scissor.clone();
-        let _ = self.with_framebuffer(|fb| {
-            let rect = blit::destination(x, y, scissor.clip(fb.bounds()));
-            if rect.is_empty() {
-                return;
+        let job = BlitJob {
+            targets: self.draw_targets().into_iter().map(|(s, _)| s).collect(),
+            read_slot,
+            want,
+            x,
+            y,
+            linear: filter == GL_LINEAR,
+            scissor: self.state.scissor.clone(),
+        };
+        let (read_name, draw_name) = (self.fbo.read, self.fbo.draw);
+        // A read framebuffer apart from the draw one is read where it lives (a multisampled
+        // one resolved as it is read) while the draw framebuffer is written: no copy.
+        if read_name != 0 && read_name != draw_name && !self.share_an_image(read_name, draw_name) {
+            let Some((read_fb, object, lent)) = self.assemble_object_framebuffer(read_name) else { return };
+            let _ = self.with_framebuffer(|fb| job.run(fb, &blit_sources_in_place(&read_fb, job.read_slot, want)));
+            self.disassemble_object_framebuffer(read_fb, &object, lent, false);
+            return;
+        }
+        if read_name == 0 && draw_name != 0 {
+            if let Some(drawable) = self.read_drawable.clone().or_else(|| self.drawable.clone()) {
+                let guard = drawable.lock().unwrap_or_else(|p| p.into_inner());
+                let read_fb = &guard.framebuffer;
+                let _ = self.with_framebuffer(|fb| job.run(fb, &blit_sources_in_place(read_fb, job.read_slot, want)));
             }
-            if let Some(color) = &color {
-                for slot in &targets {
-                    if let Some(buffer) = fb.color_mut(*slot) {
-                        blit::blit_color(color, buffer, x, y, rect, linear);
-                    }
+            return;
+        }
+        // One framebuffer read and written (or two window drawables): a copy of the source
+        // rectangle, which the blit may overwrite, in the buffers' own format.
+        let sources = self.with_read_framebuffer(|fb| {
+            let area = blit::source_area(x, y, fb.bounds());
+            blit_sources_snapshot(fb, read_slot, want, area)
+        });
+        let Some(sources) = sources else { return };
+        let Ok(sources) = sources else {
+            return self.error(GL_OUT_OF_MEMORY);
+        };
+        let _ = self.with_framebuffer(|fb| job.run(fb, &sources));
+    }
+
+    /// Whether framebuffer objects `a` and `b` have an image (a renderbuffer or any image of
+    /// a texture) attached to both (never for the window's, 0).
+    fn share_an_image(&self, a: u32, b: u32) -> bool {
+        let (Some(a), Some(b)) = (self.fbo.framebuffers.get(a), self.fbo.framebuffers.get(b)) else { return false };
+        let same = |p: &Attachment, q: &Attachment| match (p, q) {
+            (Attachment::Renderbuffer(p), Attachment::Renderbuffer(q)) => p == q,
+            (Attachment::Texture { name: p, .. }, Attachment::Texture { name: q, .. }) => p == q,
+            _ => false,
+        };
+        a.attachments.iter().flatten().any(|p| b.attachments.iter().flatten().any(|q| same(p, q)))
+    }
+}
+
+/// A validated glBlitFramebuffer, ready to run on the draw framebuffer.
+struct BlitJob {
+    targets: Vec<ColorSlot>,
+    read_slot: Option<ColorSlot>,
+    /// Color, depth, stencil.
+    want: (bool, bool, bool),
+    x: BlitAxis,
+    y: BlitAxis,
+    linear: bool,
+    scissor: ScissorState,
+}
+
+/// What a blit reads: color and depth/stencil, each when asked for and present.
+type BlitSources<'a> = (Option<ColorSource<'a>>, Option<DepthStencilSource<'a>>);
+
+impl BlitJob {
+    /// Blits `sources` into the draw framebuffer `fb`.
+    fn run(&self, fb: &mut Framebuffer, (color, depth_stencil): &BlitSources) {
+        let (x, y) = (self.x, self.y);
+        let rect = blit::destination(x, y, self.scissor.clip(fb.bounds()));
+        if rect.is_empty() {
+            return;
+        }
+        if let Some(color) = color {
+            for slot in &self.targets {
+                if let Some(buffer) = fb.color_mut(*slot) {
+                    blit::blit_color(color, buffer, x, y, rect, self.linear);
                 }
             }
-            if let Some(source) = &depth_stencil {
-                let width = fb.width();
-                blit::blit_depth_stencil(source, fb.depth_stencil_mut(), width, x, y, rect, (want_depth, want_stencil));
-            }
-        });
+        }
+        if let Some(source) = depth_stencil {
+            let width = fb.width();
+            let (_, depth, stencil) = self.want;
+            blit::blit_depth_stencil(source, fb.depth_stencil_mut(), width, x, y, rect, (depth, stencil));
+        }
     }
+}
+
+/// The color (from `slot`) and depth/stencil buffers of `read` a blit reads, `want`ed as
+/// (color, depth, stencil), read in place.
+fn blit_sources_in_place<'a>(
+    read: &'a Framebuffer,
+    slot: Option<ColorSlot>,
+    want: (bool, bool, bool),
+) -> BlitSources<'a> {
+    let (w, h) = (read.width(), read.height());
+    let color = match slot.filter(|_| want.0) {
+        None => None,
+        Some(slot) => match read.color_samples(slot) {
+            Some((samples, count)) => Some(ColorSource::in_place(samples, count, w, h)),
+            None => read.color(slot).map(|b| ColorSource::in_place(b, 1, w, h)),
+        },
+    };
+    let depth_stencil = (want.1 || want.2).then(|| match read.depth_stencil_samples() {
+        Some((samples, count)) => DepthStencilSource::in_place(samples, count, w, h),
+        None => DepthStencilSource::in_place(read.depth_stencil(), 1, w, h),
+    });
+    (color, depth_stencil)
+}
+
+/// As [`blit_sources_in_place`], copying the pixels of `area` (a multisampled color buffer
+/// resolved).
+fn blit_sources_snapshot(
+    read: &Framebuffer,
+    slot: Option<ColorSlot>,
+    want: (bool, bool, bool),
+    area: Rect,
+) -> Result<BlitSources<'static>, OutOfMemory> {
+    let (w, h) = (read.width(), read.height());
+    let color = match slot.filter(|_| want.0) {
+        None => None,
+        Some(slot) => match read.color_samples(slot) {
+            Some((samples, count)) => Some(ColorSource::snapshot(samples, count, w, h, area)?),
+            None => read.color(slot).map(|b| ColorSource::snapshot(b, 1, w, h, area)).transpose()?,
+        },
+    };
+    let depth_stencil = match (want.1 || want.2, read.depth_stencil_samples()) {
+        (false, _) => None,
+        (true, Some((samples, count))) => Some(DepthStencilSource::snapshot(samples, count, w, h, area)?),
+        (true, None) => Some(DepthStencilSource::snapshot(read.depth_stencil(), 1, w, h, area)?),
+    };
+    Ok((color, depth_stencil))
 }
 
 /// The (target index, face) of a glFramebufferTexture{dims}D texture target.

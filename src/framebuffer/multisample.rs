@@ -70,48 +70,60 @@ pub fn resolve_color(samples: &ColorBuffer, count: usize, resolved: &mut ColorBu
     if rect.is_empty() {
         return;
     }
-    let width = samples.width();
-    let (x0, x1) = (rect.x0 as usize, rect.x1 as usize);
+    let (x0, n) = (rect.x0 as usize, rect.width());
     for y in rect.y0 as usize..rect.y1 as usize {
-        let row = |s: usize| (y * count + s) * width;
-        let out = y * width;
-        match (samples.pixels(), resolved.pixels_mut()) {
-            (ColorPixels::Unorm8(src), ColorPixels::Unorm8(dst)) => {
-                for x in x0..x1 {
-                    dst[out + x] =
-                        average_unorm((0..count).map(|s| src[row(s) + x].map(u32::from)), count).map(|c| c as u8);
-                }
+        resolve_color_span(samples, count, (x0, y), resolved, (x0, y), n);
+    }
+}
+
+/// Averages the samples of the `n` pixels from `(sx, sy)` of `samples` (a layer of `count`
+/// samples per pixel) into the `n` pixels from `(dx, dy)` of `resolved` (single-sampled, of
+/// the same format; nothing is written for another format), as [`resolve_color`] does.
+pub fn resolve_color_span(
+    samples: &ColorBuffer,
+    count: usize,
+    (sx, sy): (usize, usize),
+    resolved: &mut ColorBuffer,
+    (dx, dy): (usize, usize),
+    n: usize,
+) {
+    let (width, out_width) = (samples.width(), resolved.width());
+    let row = |s: usize| (sy * count + s) * width + sx;
+    let out = dy * out_width + dx;
+    match (samples.pixels(), resolved.pixels_mut()) {
+        (ColorPixels::Unorm8(src), ColorPixels::Unorm8(dst)) => {
+            for (x, d) in dst[out..out + n].iter_mut().enumerate() {
+                *d = average_unorm((0..count).map(|s| src[row(s) + x].map(u32::from)), count).map(|c| c as u8);
             }
-            (ColorPixels::Unorm16(src), ColorPixels::Unorm16(dst)) => {
-                for x in x0..x1 {
-                    dst[out + x] =
-                        average_unorm((0..count).map(|s| src[row(s) + x].map(u32::from)), count).map(|c| c as u16);
-                }
-            }
-            (ColorPixels::Rgb565(src), ColorPixels::Rgb565(dst)) => {
-                for x in x0..x1 {
-                    let channels = (0..count).map(|s| {
-                        let p = src[row(s) + x] as u32;
-                        [p >> 11, (p >> 5) & 63, p & 31, 0]
-                    });
-                    let [r, g, b, _] = average_unorm(channels, count);
-                    dst[out + x] = ((r << 11) | (g << 5) | b) as u16;
-                }
-            }
-            (ColorPixels::Float32(src), ColorPixels::Float32(dst)) => {
-                let scale = 1.0 / count as f32;
-                for x in x0..x1 {
-                    let mut sum = [0.0f32; 4];
-                    for s in 0..count {
-                        for (a, v) in sum.iter_mut().zip(src[row(s) + x]) {
-                            *a += v;
-                        }
-                    }
-                    dst[out + x] = sum.map(|a| a * scale);
-                }
-            }
-            _ => return,
         }
+        (ColorPixels::Unorm16(src), ColorPixels::Unorm16(dst)) => {
+            for (x, d) in dst[out..out + n].iter_mut().enumerate() {
+                *d = average_unorm((0..count).map(|s| src[row(s) + x].map(u32::from)), count).map(|c| c as u16);
+            }
+        }
+        (ColorPixels::Rgb565(src), ColorPixels::Rgb565(dst)) => {
+            for (x, d) in dst[out..out + n].iter_mut().enumerate() {
+                let channels = (0..count).map(|s| {
+                    let p = src[row(s) + x] as u32;
+                    [p >> 11, (p >> 5) & 63, p & 31, 0]
+                });
+                let [r, g, b, _] = average_unorm(channels, count);
+                *d = ((r << 11) | (g << 5) | b) as u16;
+            }
+        }
+        (ColorPixels::Float32(src), ColorPixels::Float32(dst)) => {
+            let scale = 1.0 / count as f32;
+            for (x, d) in dst[out..out + n].iter_mut().enumerate() {
+                let mut sum = [0.0f32; 4];
+                for s in 0..count {
+                    for (a, v) in sum.iter_mut().zip(src[row(s) + x]) {
+                        *a += v;
+                    }
+                }
+                *d = sum.map(|a| a * scale);
+            }
+        }
+        _ => {}
     }
 }
 
