@@ -545,20 +545,7 @@ mod tests {
         let ColorPixels::Unorm8(px) = dst.pixels() else { unreachable!() };
         assert_eq!(px, &[[0, 0, 0, 0], [255, 128, 0, 255], [0, 64, 255, 128], [0, 0, 0, 0]]);
     }
-    /// A small deterministic generator for the randomized comparisons.
-    struct Rng(u64);
-
-    impl Rng {
-        fn next(&mut self) -> u64 {
-            self.0 ^= self.0 << 13;
-            self.0 ^= self.0 >> 7;
-            self.0 ^= self.0 << 17;
-            self.0
-        }
-        fn range(&mut self, lo: i32, hi: i32) -> i32 {
-            lo + (self.next() % (hi - lo) as u64) as i32
-        }
-    }
+    use crate::gl::test_rng::TestRng as Rng;
 
     /// A `width` × `rows` buffer of `format` filled with random values.
     fn random_buffer(rng: &mut Rng, format: ColorFormat, width: usize, rows: usize) -> ColorBuffer {
@@ -630,9 +617,9 @@ mod tests {
     /// Random source and destination edges on one axis of a buffer `size` wide: partly
     /// outside the buffer at times, unscaled (`unscaled`) or of any size, either direction.
     fn random_axis(rng: &mut Rng, size: i32, unscaled: bool) -> BlitAxis {
-        let n = rng.range(1, size + 3);
-        let m = if unscaled { n } else { rng.range(1, 2 * size) };
-        let (s0, d0) = (rng.range(-3, size), rng.range(-3, size));
+        let n = rng.between(1, size + 3);
+        let m = if unscaled { n } else { rng.between(1, 2 * size) };
+        let (s0, d0) = (rng.between(-3, size), rng.between(-3, size));
         let (mut a, mut b) = (axis(s0, s0 + n, d0, d0 + m), rng.next() % 4);
         if b & 1 != 0 {
             (a.src0, a.src1) = (a.src1, a.src0);
@@ -669,12 +656,12 @@ mod tests {
             let alpha = round % 3 != 0;
             let format = ColorFormat::Unorm8 { alpha };
             let samples = [1, 2, 4, 8][round % 4];
-            let (w, h) = (rng.range(1, 13), rng.range(1, 11));
+            let (w, h) = (rng.between(1, 13), rng.between(1, 11));
             let src = random_buffer(&mut rng, format, w as usize, h as usize * samples);
-            let (dw, dh) = (rng.range(1, 13) as usize, rng.range(1, 11) as usize);
+            let (dw, dh) = (rng.between(1, 13) as usize, rng.between(1, 11) as usize);
             let dst = random_buffer(&mut rng, format, dw, dh);
             let (x, y) = (random_axis(&mut rng, w, true), random_axis(&mut rng, h, true));
-            let clip = Rect::from_xywh(rng.range(0, 3), rng.range(0, 3), dw as i32, dh as i32);
+            let clip = Rect::from_xywh(rng.between(0, 3), rng.between(0, 3), dw as i32, dh as i32);
             let rect = destination(x, y, clip.intersect(Rect::from_xywh(0, 0, dw as i32, dh as i32)));
             if rect.is_empty() {
                 continue;
@@ -708,9 +695,9 @@ mod tests {
             let (sf, df) = (formats[round % 4], formats[(round / 4) % 4]);
             let samples = if round % 5 == 0 { 4 } else { 1 };
             let linear = round % 2 == 1;
-            let (w, h) = (rng.range(1, 11), rng.range(1, 9));
+            let (w, h) = (rng.between(1, 11), rng.between(1, 9));
             let src = random_buffer(&mut rng, sf, w as usize, h as usize * samples);
-            let (dw, dh) = (rng.range(1, 14) as usize, rng.range(1, 12) as usize);
+            let (dw, dh) = (rng.between(1, 14) as usize, rng.between(1, 12) as usize);
             let dst = random_buffer(&mut rng, df, dw, dh);
             let unscaled = round % 3 == 0;
             let (x, y) = (random_axis(&mut rng, w, unscaled), random_axis(&mut rng, h, unscaled));
@@ -741,7 +728,7 @@ mod tests {
         let mut rng = Rng(42);
         for round in 0..300 {
             let format = ColorFormat::Unorm8 { alpha: round % 2 == 0 };
-            let (w, h) = (rng.range(2, 12), rng.range(2, 10));
+            let (w, h) = (rng.between(2, 12), rng.between(2, 10));
             let original = random_buffer(&mut rng, format, w as usize, h as usize);
             let unscaled = round % 2 == 0;
             let (x, y) = (random_axis(&mut rng, w, unscaled), random_axis(&mut rng, h, unscaled));
@@ -770,7 +757,7 @@ mod tests {
             let format = formats[round % 3];
             let samples = [1, 4][(round / 3) % 2];
             let want = [(true, true), (true, false), (false, true)][(round / 6) % 3];
-            let (w, h) = (rng.range(1, 10), rng.range(1, 9));
+            let (w, h) = (rng.between(1, 10), rng.between(1, 9));
             let random = |rng: &mut Rng, width: usize, rows: usize| {
                 let mut b = depth_stencil_buffer(format, width, rows).unwrap();
                 for i in 0..width * rows {
@@ -780,7 +767,7 @@ mod tests {
                 b
             };
             let src = random(&mut rng, w as usize, h as usize * samples);
-            let (dw, dh) = (rng.range(1, 12) as usize, rng.range(1, 10) as usize);
+            let (dw, dh) = (rng.between(1, 12) as usize, rng.between(1, 10) as usize);
             let dst = random(&mut rng, dw, dh);
             let (x, y) = (random_axis(&mut rng, w, true), random_axis(&mut rng, h, true));
             let rect = destination(x, y, Rect::from_xywh(0, 0, dw as i32, dh as i32));

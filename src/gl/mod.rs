@@ -15,6 +15,8 @@ pub mod glx;
 pub mod limits;
 pub mod names;
 pub mod osmesa;
+#[cfg(test)]
+pub mod test_rng;
 pub mod types;
 
 pub use compare::CompareFunc;

@@ -144,30 +144,6 @@ impl<I: Copy + Eq + Hash, U: Copy + Eq + Hash> Builder<I, U> {
     }
 }
 
-/// A small xorshift generator for the generators' random tests: the same cases on every
-/// run.
+/// The random tests' generator (the generators' tests name it from here).
 #[cfg(test)]
-pub struct TestRng(pub u64);
-
-#[cfg(test)]
-impl TestRng {
-    pub fn bits(&mut self) -> u64 {
-        self.0 ^= self.0 << 13;
-        self.0 ^= self.0 >> 7;
-        self.0 ^= self.0 << 17;
-        self.0
-    }
-
-    pub fn below(&mut self, n: usize) -> usize {
-        (self.bits() % n as u64) as usize
-    }
-
-    pub fn pick<T: Copy>(&mut self, items: &[T]) -> T {
-        items[self.below(items.len())]
-    }
-
-    /// Uniform in [lo, hi), on a grid of 2⁻²⁰ of the range.
-    pub fn range(&mut self, lo: f32, hi: f32) -> f32 {
-        lo + (hi - lo) * (self.below(1 << 20) as f32 / (1 << 20) as f32)
-    }
-}
+pub use crate::gl::test_rng::TestRng;

@@ -1129,19 +1129,7 @@ mod tests {
     use crate::texture::BaseFormat;
     use std::sync::Arc;
 
-    /// A small deterministic generator (xorshift).
-    struct Rng(u64);
-    impl Rng {
-        fn next(&mut self) -> u64 {
-            self.0 ^= self.0 << 13;
-            self.0 ^= self.0 >> 7;
-            self.0 ^= self.0 << 17;
-            self.0
-        }
-        fn unit(&mut self) -> f32 {
-            (self.next() >> 40) as f32 / (1u64 << 24) as f32
-        }
-    }
+    use crate::gl::test_rng::TestRng as Rng;
 
     fn chain(rng: &mut Rng, w: usize, h: usize) -> Vec<Arc<TexImage>> {
         let mut levels = Vec::new();

@@ -839,19 +839,7 @@ mod tests {
         assert_eq!(colors, vec![[0.25; 4]; 3]);
     }
 
-    /// A small deterministic generator (xorshift).
-    struct Rng(u64);
-    impl Rng {
-        fn next(&mut self) -> u64 {
-            self.0 ^= self.0 << 13;
-            self.0 ^= self.0 >> 7;
-            self.0 ^= self.0 << 17;
-            self.0
-        }
-        fn unit(&mut self) -> f32 {
-            (self.next() >> 40) as f32 / (1u64 << 24) as f32
-        }
-    }
+    use crate::gl::test_rng::TestRng as Rng;
 
     /// Random draws of one to three units (every kernel: RGBA8 2D, depth with comparison,
     /// a bordered or clamped 2D image and a cube map through the reference; every classic

@@ -200,7 +200,7 @@ fn generated_programs_give_the_bits_of_the_per_pixel_code() {
             })
             .collect();
         let mut outputs = vec![[0u32; LANES]; 4];
-        let lanes = rng.bits() as u16 | 1;
+        let lanes = rng.next() as u16 | 1;
         let mut io = Io { inputs: &inputs, uniforms: &uniforms, outputs: &mut outputs, textures: &Probe };
         assert_eq!(executor.run(&fixed.program, &mut io, lanes), lanes, "nothing discards");
         // The pipeline's executor gives the reference's results (NaN as any NaN).
