@@ -6,6 +6,8 @@
 pub struct TestRng(pub u64);
 
 impl TestRng {
+    /// The next 64 random bits (not an `Iterator`: the generator never ends).
+    #[allow(clippy::should_implement_trait)]
     pub fn next(&mut self) -> u64 {
         self.0 ^= self.0 << 13;
         self.0 ^= self.0 >> 7;
