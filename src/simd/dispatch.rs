@@ -49,42 +49,51 @@ pub fn run<R>(level: Supported, f: impl FnOnce() -> R) -> R {
     }
 }
 
+/// `f(level)` through the wrapper of `level` among `$avx2`, `$sse41` (`target_feature`
+/// functions) and `$sse2`: the match of [`run_with`] and [`outlined`], which differ only in
+/// the wrappers they call.
+macro_rules! call_at_level {
+    ($level:expr, $f:ident, $avx2:ident, $sse41:ident, $sse2:ident) => {
+        match $level.0 {
+            #[cfg(target_arch = "x86_64")]
+            Level::Avx2 => {
+                // SAFETY: a `Supported` holds only a level the CPU was detected to have
+                // (`Supported::new`): here AVX2, and the AVX it implies.
+                unsafe {
+                    $avx2(
+                        #[inline(always)]
+                        move || $f(Supported(Level::Avx2)),
+                    )
+                }
+            }
+            #[cfg(target_arch = "x86_64")]
+            Level::Sse41 => {
+                // SAFETY: a `Supported` holds only a level the CPU was detected to have
+                // (`Supported::new`): here SSE4.1, and the SSSE3 and SSE3 it implies.
+                unsafe {
+                    $sse41(
+                        #[inline(always)]
+                        move || $f(Supported(Level::Sse41)),
+                    )
+                }
+            }
+            #[cfg(target_arch = "x86_64")]
+            Level::Sse2 => $sse2(
+                #[inline(always)]
+                move || $f(Supported(Level::Sse2)),
+            ),
+            #[cfg(not(target_arch = "x86_64"))]
+            Level::Portable => $f(Supported(Level::Portable)),
+        }
+    };
+}
+
 /// Runs `f(level)` compiled for `level`, as [`run`]: `f` receives the level as a constant
 /// of its copy (each wrapper passes its own), so the helpers that take it keep only their
 /// level's instructions.
 #[inline(always)]
 pub fn run_with<R>(level: Supported, f: impl FnOnce(Supported) -> R) -> R {
-    match level.0 {
-        #[cfg(target_arch = "x86_64")]
-        Level::Avx2 => {
-            // SAFETY: a `Supported` holds only a level the CPU was detected to have
-            // (`Supported::new`): here AVX2, and the AVX it implies.
-            unsafe {
-                avx2(
-                    #[inline(always)]
-                    move || f(Supported(Level::Avx2)),
-                )
-            }
-        }
-        #[cfg(target_arch = "x86_64")]
-        Level::Sse41 => {
-            // SAFETY: a `Supported` holds only a level the CPU was detected to have
-            // (`Supported::new`): here SSE4.1, and the SSSE3 and SSE3 it implies.
-            unsafe {
-                sse41(
-                    #[inline(always)]
-                    move || f(Supported(Level::Sse41)),
-                )
-            }
-        }
-        #[cfg(target_arch = "x86_64")]
-        Level::Sse2 => sse2(
-            #[inline(always)]
-            move || f(Supported(Level::Sse2)),
-        ),
-        #[cfg(not(target_arch = "x86_64"))]
-        Level::Portable => f(Supported(Level::Portable)),
-    }
+    call_at_level!(level, f, avx2, sse41, sse2)
 }
 
 /// Runs `f(level)` compiled for `level` in a copy that is never inlined into the caller
@@ -94,37 +103,7 @@ pub fn run_with<R>(level: Supported, f: impl FnOnce(Supported) -> R) -> R {
 /// there are.
 #[inline(always)]
 pub fn outlined<R>(level: Supported, f: impl FnOnce(Supported) -> R) -> R {
-    match level.0 {
-        #[cfg(target_arch = "x86_64")]
-        Level::Avx2 => {
-            // SAFETY: a `Supported` holds only a level the CPU was detected to have
-            // (`Supported::new`): here AVX2, and the AVX it implies.
-            unsafe {
-                avx2_outlined(
-                    #[inline(always)]
-                    move || f(Supported(Level::Avx2)),
-                )
-            }
-        }
-        #[cfg(target_arch = "x86_64")]
-        Level::Sse41 => {
-            // SAFETY: a `Supported` holds only a level the CPU was detected to have
-            // (`Supported::new`): here SSE4.1, and the SSSE3 and SSE3 it implies.
-            unsafe {
-                sse41_outlined(
-                    #[inline(always)]
-                    move || f(Supported(Level::Sse41)),
-                )
-            }
-        }
-        #[cfg(target_arch = "x86_64")]
-        Level::Sse2 => sse2(
-            #[inline(always)]
-            move || f(Supported(Level::Sse2)),
-        ),
-        #[cfg(not(target_arch = "x86_64"))]
-        Level::Portable => f(Supported(Level::Portable)),
-    }
+    call_at_level!(level, f, avx2_outlined, sse41_outlined, sse2)
 }
 
 /// `f` compiled with AVX2 (256-bit integer and float vectors, VEX encodings). Not FMA:
