@@ -10,7 +10,7 @@
 //! vertices between glMaterial calls inside glBegin/glEnd, whose materials are uniforms);
 //! [`VertexStage::run`] gathers 16 vertices at a time into the program's input words
 //! (structure of arrays), runs the compiled program on the live lanes and scatters its
-//! outputs into [`ClipVertex`]es, in buffers each thread keeps between draws.
+//! outputs into [`ClipVertex`]es.
 //!
 //! There is no second, hand-written path: the per-vertex code the programs replaced is kept
 //! only as the reference the generated programs are tested against
@@ -23,7 +23,6 @@ use super::Vertex;
 use crate::shader::exec::{Io, NoTextures, Word, ALL_LANES, LANES};
 use crate::shader::fast::Registers;
 use glam::Mat4;
-use std::cell::RefCell;
 use std::sync::Arc;
 
 /// Where the fog coordinate of a vertex comes from (GL_FOG_COORD_SRC and
@@ -64,23 +63,18 @@ pub struct Transform<'a> {
     pub lighting: Option<LightingInput<'a>>,
 }
 
-/// The buffers of the per-vertex stage, kept per thread between draws so that a draw
-/// allocates nothing here once they have grown: the executor's registers, the input and
-/// output words of one batch, and the clip-space vertices.
+/// The buffers of one run of the per-vertex stage: the executor's registers, the input and
+/// output words of one batch, and the clip-space vertices, each allocated once per run of
+/// the stage (not per batch). They are not kept between draws in a thread-local: the
+/// allocator's caches then kept growing across create/draw/destroy cycles of contexts
+/// (capi reliability_leaks measured a few KiB per 2000 cycles), and four allocations per
+/// draw cost little beside a draw.
 #[derive(Default)]
 struct Scratch {
     registers: Registers,
     inputs: Vec<Word>,
     outputs: Vec<Word>,
     clip: Vec<ClipVertex>,
-}
-
-/// The most clip-space vertices a thread keeps room for between draws (about 10 MB): a
-/// huge draw's buffer is not kept for the rest of the process.
-const KEPT_VERTICES: usize = 1 << 16;
-
-thread_local! {
-    static SCRATCH: RefCell<Scratch> = RefCell::new(Scratch::default());
 }
 
 /// The vertices of a draw from vertex `from` on, up to the next run: one program and one
@@ -151,17 +145,7 @@ impl VertexStage {
     /// the draw, when it is split between threads), and hands their clip-space vertices to
     /// `then`.
     pub fn run<T>(&self, vertices: &[Vertex], first: usize, then: impl FnOnce(&[ClipVertex]) -> T) -> T {
-        SCRATCH.with(|cell| match cell.try_borrow_mut() {
-            Ok(mut scratch) => {
-                let result = self.run_with(vertices, first, &mut scratch, then);
-                if scratch.clip.capacity() > KEPT_VERTICES {
-                    scratch.clip = Vec::new();
-                }
-                result
-            }
-            // Only if a stage ran inside another's `then`: buffers of its own.
-            Err(_) => self.run_with(vertices, first, &mut Scratch::default(), then),
-        })
+        self.run_with(vertices, first, &mut Scratch::default(), then)
     }
 
     fn run_with<T>(
