@@ -299,10 +299,15 @@ operations!(|st, io, wide| {
     Op::Derivative { x, d, a } => st.put(d, exec::derivative(if x { Axis::X } else { Axis::Y }, st.get(a))),
     Op::Output { slot, a } => {
         let value = *st.get(a);
-        let mask = st.mask;
         let out = &mut io.outputs[slot as usize];
-        for i in 0..LANES {
-            out[i] = (value[i] & mask[i]) | (out[i] & !mask[i]);
+        // Every lane running (a full batch of vertices or a covered block): no blend.
+        if st.exec == exec::ALL_LANES {
+            *out = value;
+        } else {
+            let mask = st.mask;
+            for i in 0..LANES {
+                out[i] = (value[i] & mask[i]) | (out[i] & !mask[i]);
+            }
         }
     },
     Op::Texture(i) => st.texture(io, &wide[i as usize]),
