@@ -7,10 +7,19 @@
  * (a few KiB of slack for lazily grown process-wide tables). Mesa 22 runs 5 + 5 cycles (it
  * takes a third of a second per cycle and grows by about 1 MiB per cycle: printed only).
  * tools/memcheck.sh runs this test under valgrind with a few cycles, where any block still
- * lost at exit is an error. */
+ * lost at exit is an error.
+ *
+ * The test runs itself again with glibc's per-thread cache of freed blocks turned off
+ * (GLIBC_TUNABLES=glibc.malloc.tcache_count=0): mallinfo2 counts the blocks that cache holds
+ * as in use, and which blocks it holds after a cycle depends on the order of allocations and
+ * frees, so it drifted by a few KiB over thousands of cycles without any leak (measured with
+ * the cache off: the same 864 bytes after 2000 and after 4000 cycles). Not under valgrind,
+ * whose allocator has no such cache (and which an exec would leave). */
 #define _DEFAULT_SOURCE
 #include "common.h"
 #include <malloc.h>
+#include <string.h>
+#include <unistd.h>
 
 static unsigned char pixels[64 * 64 * 4];
 
@@ -78,8 +87,15 @@ static void cycle(void)
     OSMesaDestroyContext(b);
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
+    (void)argc;
+    const char *preload = getenv("LD_PRELOAD");
+    if (!getenv("GLIBC_TUNABLES") && !(preload && strstr(preload, "vgpreload"))) {
+        setenv("GLIBC_TUNABLES", "glibc.malloc.tcache_count=0", 1);
+        execv("/proc/self/exe", argv);
+        /* On failure, measure as we are. */
+    }
     int tessera = capi_probe_is_tessera();
     const char *env = getenv("CAPI_CYCLES");
     int cycles = env ? atoi(env) : tessera ? 2000 : 5;

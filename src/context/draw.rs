@@ -1,8 +1,9 @@
 //! Drawing: what the state machine does at a draw. A draw is validated (a framebuffer to
 //! draw into, vertices to draw), its fragment state is compiled into the scene
-//! ([`draw_state`]), what vertex processing reads is snapshotted ([`snapshot`]) and the
-//! vertices are handed to the vertex stage ([`crate::vertex`]), which transforms, clips and
-//! sets up the primitives and bins them into the context's [`Scene`].
+//! ([`draw_state`]), what vertex processing reads is snapshotted ([`snapshot`]), its vertex
+//! program looked up in the share group's cache, and the vertices are handed to the vertex
+//! stage ([`crate::vertex`]), which runs the program on them, clips and sets up the
+//! primitives and bins them into the context's [`Scene`].
 //!
 //! This file also keeps the scene's lifecycle: the pending scene is taken for a draw, kept
 //! for more draws (or rendered when over its budget), and rendered at a flush point
@@ -27,7 +28,6 @@ use crate::vertex::attribute::Attribute;
 use crate::vertex::geometry::Geometry;
 use crate::vertex::line::LineStipple;
 use crate::vertex::pipeline;
-use crate::vertex::transform::transform;
 use crate::vertex::Vertex;
 
 /// The fewest vertices a draw splits between two threads (see [`split_point`]): below
@@ -97,6 +97,7 @@ impl Context {
         }
         let units = self.tex_coord_units();
         let input = self.transform_input(float_color, &units);
+        let vertex_stage = self.vertex_stage(&input, vertices.len());
         let geometry = Geometry { per_sample, ..self.geometry(depth_bits, height) };
         let mut stipple = self.active_line_stipple();
         if let (false, Some(s)) = (part.first, stipple.as_mut()) {
@@ -111,21 +112,22 @@ impl Context {
                 let mut later = scene.deferred_part(second.len() / 3);
                 let ((), stipple) = crate::pool::join(
                     || {
-                        let clip_vertices = transform(&input, second);
-                        pipeline::draw(&mut later, state_index, &geometry, mode, &clip_vertices, part, None);
+                        vertex_stage.run(second, split, |clip_vertices| {
+                            pipeline::draw(&mut later, state_index, &geometry, mode, clip_vertices, part, None)
+                        });
                     },
                     || {
-                        let clip_vertices = transform(&input, first);
-                        pipeline::draw(&mut scene, state_index, &geometry, mode, &clip_vertices, part, stipple)
+                        vertex_stage.run(first, 0, |clip_vertices| {
+                            pipeline::draw(&mut scene, state_index, &geometry, mode, clip_vertices, part, stipple)
+                        })
                     },
                 );
                 scene.append(later);
                 stipple
             }
-            None => {
-                let clip_vertices = transform(&input, vertices);
-                pipeline::draw(&mut scene, state_index, &geometry, mode, &clip_vertices, part, stipple)
-            }
+            None => vertex_stage.run(vertices, 0, |clip_vertices| {
+                pipeline::draw(&mut scene, state_index, &geometry, mode, clip_vertices, part, stipple)
+            }),
         };
         self.end_part(scene, stipple, part);
     }

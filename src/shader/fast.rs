@@ -43,7 +43,9 @@
 //! [`super::math`]'s polynomials, so every level and every CPU gives the same bytes.
 use super::exec::{self, f, fu, map1, map2, Io, LodLanes, SampleRequest, Word, LANES, MAX_LOOP_ITERATIONS};
 use super::ir::{Axis, Program};
-use super::lower::{binary_lane, dot_lane, lower, mad_lane, unary_lane, Code, Cond, Node, Op, Wide, WideLod, R};
+use super::lower::{
+    binary_lane, dot_lane, lower, mad_lane, split_prologue, unary_lane, Code, Cond, Node, Op, Wide, WideLod, R,
+};
 
 #[inline(always)]
 fn map3(a: &Word, b: &Word, c: &Word, op: impl Fn(u32, u32, u32) -> u32) -> Word {
@@ -297,10 +299,15 @@ operations!(|st, io, wide| {
     Op::Derivative { x, d, a } => st.put(d, exec::derivative(if x { Axis::X } else { Axis::Y }, st.get(a))),
     Op::Output { slot, a } => {
         let value = *st.get(a);
-        let mask = st.mask;
         let out = &mut io.outputs[slot as usize];
-        for i in 0..LANES {
-            out[i] = (value[i] & mask[i]) | (out[i] & !mask[i]);
+        // Every lane running (a full batch of vertices or a covered block): no blend.
+        if st.exec == exec::ALL_LANES {
+            *out = value;
+        } else {
+            let mask = st.mask;
+            for i in 0..LANES {
+                out[i] = (value[i] & mask[i]) | (out[i] & !mask[i]);
+            }
         }
     },
     Op::Texture(i) => st.texture(io, &wide[i as usize]),
@@ -411,6 +418,10 @@ fn run_tree<S: Straight>(s: &S, code: &Code, st: &mut Registers, io: &mut Io<'_>
 #[derive(Clone, Debug)]
 pub struct Compiled {
     code: Code,
+    /// The uniform prologue and the rest ([`split_prologue`]), for runs that share
+    /// their uniforms ([`Compiled::prepare`]).
+    prologue: Vec<Op>,
+    rest: Code,
 }
 
 struct Interpreter;
@@ -431,7 +442,9 @@ impl Straight for Interpreter {
 impl Compiled {
     /// Compiles `program`, which [`super::validate::validate`] accepted.
     pub fn new(program: &Program) -> Compiled {
-        Compiled { code: lower(program) }
+        let code = lower(program);
+        let (prologue, rest) = split_prologue(&code);
+        Compiled { code, prologue, rest }
     }
 
     /// The pre-decoded form (for tests and diagnostics).
@@ -443,6 +456,23 @@ impl Compiled {
     /// outputs, lookups and result); returns the lanes that did not discard.
     pub fn run(&self, registers: &mut Registers, io: &mut Io<'_>, lanes: u16) -> u16 {
         run_tree(&Interpreter, &self.code, registers, io, lanes)
+    }
+
+    /// Computes the program's uniform values (its scalar operations on uniforms and
+    /// constants alone) into `registers`, for [`Compiled::run_prepared`] calls with the same
+    /// `uniforms` and registers: a draw's vertex batches compute them once, not per batch.
+    pub fn prepare(&self, registers: &mut Registers, uniforms: &[u32]) {
+        registers.w.resize(self.rest.registers, [0; LANES]);
+        let mut io = Io { inputs: &[], uniforms, outputs: &mut [], textures: &exec::NoTextures };
+        for op in &self.prologue {
+            step(op, registers, &mut io, &self.rest.wide);
+        }
+    }
+
+    /// [`Compiled::run`] after [`Compiled::prepare`] (the same results): `registers` must be
+    /// the prepared ones, unused by any other program since, and `io.uniforms` the same.
+    pub fn run_prepared(&self, registers: &mut Registers, io: &mut Io<'_>, lanes: u16) -> u16 {
+        run_tree(&Interpreter, &self.rest, registers, io, lanes)
     }
 }
 

@@ -25,6 +25,10 @@
 //!   dot products with the same right-hand vector are one matrix·vector product. Each fused
 //!   operation performs exactly the operations, in the order and with the roundings, of the
 //!   instructions it replaces.
+//! - **A uniform prologue.** [`split_prologue`] takes out of the top level the scalar
+//!   operations that compute a value from uniforms and constants alone into a register
+//!   nothing else writes: a caller that runs one program many times with the same uniforms
+//!   (a draw's vertex batches) computes them once ([`super::fast::Compiled::prepare`]).
 //! - **Compact registers.** Only registers something reads or writes get a word, numbered
 //!   densely, and only those a read may reach before any write are zeroed per run. Words are
 //!   not shared between registers with disjoint lifetimes: under divergent control flow a
@@ -1080,4 +1084,132 @@ pub fn lower(program: &Program) -> Code {
     let nodes = lowering.block(&body, false);
     let zeroed = (0..n).filter(|&r| zero[r]).filter_map(|r| lowering.map[r]).collect();
     Code { registers: lowering.registers, zeroed, ops: lowering.ops, wide: lowering.wide, body: nodes }
+}
+
+/// The registers an operation writes (at most four).
+fn op_writes(op: &Op, wide: &[Wide]) -> ([R; 4], usize) {
+    let one = |d: R| ([d, 0, 0, 0], 1);
+    match *op {
+        Op::SConst { d, .. }
+        | Op::SUniform { d, .. }
+        | Op::SMov { d, .. }
+        | Op::SUnary { d, .. }
+        | Op::SBinary { d, .. }
+        | Op::SMad { d, .. }
+        | Op::SDot { d, .. }
+        | Op::SSelect { d, .. }
+        | Op::Const { d, .. }
+        | Op::Uniform { d, .. }
+        | Op::Input { d, .. }
+        | Op::Mov { d, .. }
+        | Op::Add { d, .. }
+        | Op::Sub { d, .. }
+        | Op::Mul { d, .. }
+        | Op::Div { d, .. }
+        | Op::Min { d, .. }
+        | Op::Max { d, .. }
+        | Op::Lt { d, .. }
+        | Op::Le { d, .. }
+        | Op::Sqrt { d, .. }
+        | Op::Rsq { d, .. }
+        | Op::Unary { d, .. }
+        | Op::Binary { d, .. }
+        | Op::Mad { d, .. }
+        | Op::Dot2 { d, .. }
+        | Op::Dot3 { d, .. }
+        | Op::Dot4 { d, .. }
+        | Op::Select { d, .. }
+        | Op::Clamp { d, .. }
+        | Op::Derivative { d, .. } => one(d),
+        Op::Normalize3 { d, .. } => ([d[0], d[1], d[2], 0], 3),
+        Op::Output { .. } => ([0; 4], 0),
+        Op::MatVec(i) | Op::Texture(i) => match wide[i as usize] {
+            Wide::MatVec { rows_n, d, .. } => (d, rows_n as usize),
+            Wide::Sample { dst, .. } | Wide::Fetch { dst, .. } => (dst, 4),
+            Wide::Size { dst, .. } => ([dst[0], dst[1], dst[2], 0], 3),
+        },
+    }
+}
+
+/// Splits `code` into its uniform prologue and the rest (see the module docs): the scalar
+/// operations of top-level, unmasked runs whose operands the prologue computes and whose
+/// register nothing else writes and no run zeroes. Running the prologue, then the rest,
+/// gives `code`'s results; the rest may run many times after one prologue, as long as the
+/// uniforms and the register file stay the same.
+pub fn split_prologue(code: &Code) -> (Vec<Op>, Code) {
+    let n = code.registers;
+    let mut written = vec![0u32; n];
+    for op in &code.ops {
+        let (d, count) = op_writes(op, &code.wide);
+        for &r in &d[..count] {
+            written[r as usize] += 1;
+        }
+    }
+    let mut movable = vec![true; n];
+    for &r in &code.zeroed {
+        movable[r as usize] = false;
+    }
+    for (r, &w) in written.iter().enumerate() {
+        movable[r] &= w == 1;
+    }
+    struct Split<'a> {
+        code: &'a Code,
+        movable: Vec<bool>,
+        hoisted: Vec<bool>,
+        prologue: Vec<Op>,
+        ops: Vec<Op>,
+    }
+    impl Split<'_> {
+        fn hoistable(&self, op: &Op) -> Option<R> {
+            let h = |r: R| self.hoisted[r as usize];
+            let (d, operands) = match *op {
+                Op::SConst { d, .. } | Op::SUniform { d, .. } => (d, true),
+                Op::SMov { d, a } | Op::SUnary { d, a, .. } => (d, h(a)),
+                Op::SBinary { d, a, b, .. } => (d, h(a) && h(b)),
+                Op::SMad { d, a, b, c } | Op::SSelect { d, c, a, b } => (d, h(a) && h(b) && h(c)),
+                Op::SDot { n, d, a, b } => (d, a[..n as usize].iter().chain(&b[..n as usize]).all(|&r| h(r))),
+                _ => return None,
+            };
+            (operands && self.movable[d as usize]).then_some(d)
+        }
+
+        fn nodes(&mut self, nodes: &[Node], top: bool) -> Vec<Node> {
+            let mut out = Vec::new();
+            for node in nodes {
+                match node {
+                    &Node::Run { start, end, masked } => {
+                        let begin = self.ops.len() as u32;
+                        for op in &self.code.ops[start as usize..end as usize] {
+                            match self.hoistable(op).filter(|_| top && !masked) {
+                                Some(d) => {
+                                    self.hoisted[d as usize] = true;
+                                    self.prologue.push(*op);
+                                }
+                                None => self.ops.push(*op),
+                            }
+                        }
+                        let end = self.ops.len() as u32;
+                        if begin < end {
+                            out.push(Node::Run { start: begin, end, masked });
+                        }
+                    }
+                    Node::If { cond, then, otherwise } => {
+                        let (then, otherwise) = (self.nodes(then, false), self.nodes(otherwise, false));
+                        out.push(Node::If { cond: *cond, then, otherwise });
+                    }
+                    Node::Loop { body } => {
+                        let body = self.nodes(body, false);
+                        out.push(Node::Loop { body });
+                    }
+                    other => out.push(other.clone()),
+                }
+            }
+            out
+        }
+    }
+    let mut split =
+        Split { code, movable, hoisted: vec![false; n], prologue: Vec::new(), ops: Vec::with_capacity(code.ops.len()) };
+    let body = split.nodes(&code.body, true);
+    let rest = Code { registers: n, zeroed: code.zeroed.clone(), ops: split.ops, wide: code.wide.clone(), body };
+    (split.prologue, rest)
 }

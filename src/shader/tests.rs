@@ -588,13 +588,19 @@ fn random_programs_match_the_scalar_f64_reference_lane_by_lane() {
         );
         // The compiled executors give the reference executor's bits in every lane.
         let (compiled, threaded) = (Compiled::new(&program), Threaded::new(&program));
-        for which in 0..2 {
+        for which in 0..4 {
             let mut fast_outputs = vec![[0u32; LANES]; program.outputs.len()];
             let mut io = Io { inputs: &inputs, uniforms: &uniforms, outputs: &mut fast_outputs, textures: &NoTextures };
-            let fast_alive = if which == 0 {
-                compiled.run(&mut registers, &mut io, lanes)
-            } else {
-                threaded.run(&mut registers, &mut io, lanes)
+            let fast_alive = match which {
+                0 => compiled.run(&mut registers, &mut io, lanes),
+                1 => threaded.run(&mut registers, &mut io, lanes),
+                // The uniform prologue once, then the rest (twice: the prologue's registers
+                // survive a run).
+                2 => {
+                    compiled.prepare(&mut registers, &uniforms);
+                    compiled.run_prepared(&mut registers, &mut io, lanes)
+                }
+                _ => compiled.run_prepared(&mut registers, &mut io, lanes),
             };
             assert_eq!(fast_alive, alive, "case {case} ({which}): discards differ\n{}", super::dump::dump(&program));
             assert_eq!(

@@ -1,22 +1,30 @@
-//! The fixed-function vertex program: what [`super::transform::transform`] does to a vertex
-//! (clip and eye coordinates, colours clamped or lit, texture-coordinate generation and the
-//! texture matrices, the fog coordinate), written as a shading-IR program
-//! ([`crate::shader::ir`]) from a compact key of the state ([`VertexKey`]), as Mesa builds
-//! one in `ffvertex_prog.c`, so that fixed-function and GLSL vertex processing run on one
-//! executor. (Point size attenuation stays with points until the point path moves onto
-//! programs.)
+//! The fixed-function vertex program: what a draw does to a vertex (clip and eye
+//! coordinates, colours clamped or lit, texture-coordinate generation and the texture
+//! matrices, the fog coordinate), written as a shading-IR program ([`crate::shader::ir`])
+//! from a compact key of the state ([`VertexKey`]), as Mesa builds one in `ffvertex_prog.c`,
+//! so that fixed-function and GLSL vertex processing run on one executor. The draws run it
+//! through [`super::transform::VertexStage`]. (Point size attenuation stays with points
+//! until the point path moves onto programs.)
 //!
-//! The program does the arithmetic of the per-vertex code: the same IEEE operations on the
-//! same operands in the same order (glam's matrix·vector and dot products for the
-//! transform and texgen; for lighting, llvmpipe's run of Mesa's program as
-//! [`super::lighting::Lighting::shade`] does it: DP3 summed from the last component,
-//! multiply-adds not fused, `1/√x` as a square root and a division, and the IR's `Exp2` and
-//! `Log2` being llvmpipe's approximations, [`crate::shader::math::exp2`]), so the same
-//! bits; the tests run both on random states and vertices.
+//! The arithmetic is that of Mesa's fixed-function vertex program as llvmpipe runs it, in
+//! single precision, because llvmpipe's pictures are the reference: glam's matrix·vector
+//! products and dot products for the transform and texgen; for lighting, the program's
+//! order with NIR's lowering (DP3 summed from the last component, multiply-adds not fused,
+//! `1/√x` as a square root and a division, the attenuation's 1/(1/√x) simplified to √x),
+//! and POW as llvmpipe's own exp2/log2 polynomials (the IR's `Exp2` and `Log2`,
+//! [`crate::shader::math::exp2`]). The capi test lighting_float compares the results bit for
+//! bit as floats; the tests run the programs against the hand-written per-vertex code they
+//! replaced ([`reference`], test builds only) on random states and vertices.
+//!
+//! One deliberate difference: Mesa's program, for a material shininess of zero and a light
+//! that is attenuated (local with attenuation, or a spotlight), raises N·H to the power N·L
+//! instead of 0 (its dot product fills the exponent's slot); here the specular factor is
+//! then 1, as the specification's 0⁰ = 1 says.
 //!
 //! What varies without changing the program's shape is a uniform ([`VertexUniform`]): the
 //! matrices, texgen planes, light positions, half vectors, spot and attenuation constants,
-//! and the scene colours and light products that Mesa computes on the CPU. The keys hold
+//! and the scene colours and light products that Mesa computes on the CPU
+//! ([`super::lighting::Lighting`]). The keys hold
 //! the shape: for lighting ([`LightingKey`]) per enabled light whether it is local, a
 //! spotlight, attenuated; the light model; the normal scaling; colour-material tracking
 //! (whose faces compute their scene colour and light products per vertex from the vertex
@@ -331,7 +339,7 @@ pub struct VertexProgram {
 }
 
 impl VertexProgram {
-    /// The program of `key`: what [`super::transform::transform`] does to a vertex.
+    /// The program of `key`.
     pub fn generate(key: &VertexKey) -> VertexProgram {
         let mut g = Gen::new(Stage::Vertex);
         let mut outputs = Vec::new();
@@ -638,7 +646,7 @@ impl Gen {
         })
     }
 
-    /// The texture coordinates of the key's unit `index` ([`super::texgen::TexGen::tex_coords`]):
+    /// The texture coordinates of the key's unit `index` (GL 2.1 §2.11.4):
     /// generated coordinates, then the texture matrix.
     fn tex_coords(
         &mut self,
@@ -714,7 +722,7 @@ impl Gen {
         tc
     }
 
-    /// Texgen's eye-space normal ([`super::texgen::eye_normal`]): the normal dotted with
+    /// Texgen's eye-space normal: the normal dotted with
     /// the inverse modelview's columns, then divided by its length (GL_NORMALIZE) or by
     /// the length of the matrix's third row (GL_RESCALE_NORMAL) when that is positive.
     fn texgen_normal(&mut self, key: &VertexKey) -> [Reg; 3] {
@@ -816,5 +824,7 @@ impl Gen {
     }
 }
 
+#[cfg(test)]
+pub(crate) mod reference;
 #[cfg(test)]
 mod tests;

@@ -1,15 +1,29 @@
-//! The per-vertex stage of a draw: object coordinates to eye and clip coordinates, the fog
-//! coordinate, texture coordinates (texgen), colors clamped and, when lighting is on, the
-//! lit colors (the lighting pass dispatched here, evaluated in [`super::lighting`]).
+//! The per-vertex stage of a draw: the draw's fixed-function vertex program
+//! ([`super::program`]: object to eye and clip coordinates, the fog coordinate, texgen and
+//! the texture matrices, colours clamped or lit) run over its vertices, sixteen at a time.
 //!
 //! Its input is a [`Transform`] that `context` snapshots at the draw: the matrices by value
 //! (as Mesa's validated products, computed once per draw) and the lighting state and
 //! glMaterial marks by reference, so nothing per light or per vertex is copied.
+//! [`VertexStage::new`] makes the state's key, has the caller look its compiled program up
+//! (the share group's cache) and fills the uniform words, once per draw (once per run of
+//! vertices between glMaterial calls inside glBegin/glEnd, whose materials are uniforms);
+//! [`VertexStage::run`] gathers 16 vertices at a time into the program's input words
+//! (structure of arrays), runs the compiled program on the live lanes and scatters its
+//! outputs into [`ClipVertex`]es.
+//!
+//! There is no second, hand-written path: the per-vertex code the programs replaced is kept
+//! only as the reference the generated programs are tested against
+//! (`super::program::reference`, test builds).
 use super::clip::ClipVertex;
 use super::lighting::{Lighting, LightingState, Material, NormalScaling};
+use super::program::{CompiledVertex, VertexInput, VertexKey, VertexOutput};
 use super::texgen::TexGen;
 use super::Vertex;
-use glam::{Mat4, Vec4};
+use crate::shader::exec::{Io, NoTextures, Word, ALL_LANES, LANES};
+use crate::shader::fast::Registers;
+use glam::Mat4;
+use std::sync::Arc;
 
 /// Where the fog coordinate of a vertex comes from (GL_FOG_COORD_SRC and
 /// GL_FOG_DISTANCE_MODE_NV).
@@ -49,67 +63,252 @@ pub struct Transform<'a> {
     pub lighting: Option<LightingInput<'a>>,
 }
 
-/// Vertices to clip space, with their eye coordinates, fog and texture coordinates, and
-/// clamped (or lit) colors.
-pub fn transform(t: &Transform, vertices: &[Vertex]) -> Vec<ClipVertex> {
-    let (modelview, mvp) = (t.modelview, t.model_project);
-    let clamp = t.clamp_color;
-    let clamp4 = |c: [f32; 4]| if clamp { c.map(|x| if x > 0.0 { x.min(1.0) } else { 0.0 }) } else { c };
-    // The fog coordinate of each vertex, interpolated to the fragments: Mesa's
-    // fixed-function vertex program computes the eye distance per vertex too. The fog
-    // factor is per fragment whatever GL_FOG_HINT says: Mesa 22 draws identical images
-    // under GL_NICEST and GL_FASTEST (capi fragment_ops_fog).
-    let fog_coord = |v: &Vertex, eye: Vec4| match t.fog {
-        None | Some(FogSource::Attribute) => v.fog_coord,
-        Some(FogSource::Radial) => eye.truncate().length(),
-        Some(FogSource::Plane) => eye.z,
-        Some(FogSource::PlaneAbsolute) => eye.z.abs(),
-    };
-    let texgen = &t.texgen;
-    let mut out: Vec<ClipVertex> = vertices
-        .iter()
-        .map(|v| {
-            let p = Vec4::from_array(v.position);
-            let eye = modelview * p;
-            ClipVertex {
-                clip: (mvp * p).to_array(),
-                eye: eye.to_array(),
-                color: clamp4(v.color),
-                secondary_color: clamp4(v.secondary_color),
-                back_colors: [[0.0; 4]; 2],
-                tex_coords: if texgen.units.is_empty() { v.tex_coords } else { texgen.tex_coords(v, eye) },
-                fog_coord: fog_coord(v, eye),
-                edge_flag: v.edge_flag,
-            }
-        })
-        .collect();
-    // Lighting is a pass of its own: unlit draws do not see it.
-    if let Some(lighting) = &t.lighting {
-        light_vertices(lighting, vertices, &mut out, &clamp4);
-    }
-    out
+/// The buffers of one run of the per-vertex stage: the executor's registers, the input and
+/// output words of one batch, and the clip-space vertices, each allocated once per run of
+/// the stage (not per batch). They are not kept between draws in a thread-local: the
+/// allocator's caches then kept growing across create/draw/destroy cycles of contexts
+/// (capi reliability_leaks measured a few KiB per 2000 cycles), and four allocations per
+/// draw cost little beside a draw.
+#[derive(Default)]
+struct Scratch {
+    registers: Registers,
+    inputs: Vec<Word>,
+    outputs: Vec<Word>,
+    clip: Vec<ClipVertex>,
 }
 
-/// Replaces the colors of `out` by the lit colors of `vertices` (GL 2.1 section 2.14.1),
-/// the back-face colors too under two-sided lighting.
-fn light_vertices(
-    input: &LightingInput,
-    vertices: &[Vertex],
-    out: &mut [ClipVertex],
-    clamp4: &dyn Fn([f32; 4]) -> [f32; 4],
-) {
-    let mut lighting = Lighting::new(input.state, input.modelview_inverse, input.normals);
-    // glMaterial between glBegin and glEnd: each mark applies from its vertex on.
-    let marks = input.material_marks;
-    let mut next_mark = 0;
-    for (i, (v, c)) in vertices.iter().zip(out.iter_mut()).enumerate() {
-        while next_mark < marks.len() && marks[next_mark].0 <= i {
-            lighting.set_materials(&marks[next_mark].1);
-            next_mark += 1;
+/// The vertices of a draw from vertex `from` on, up to the next run: one program and one
+/// set of uniform values (glMaterial between glBegin and glEnd starts a new run).
+struct Run {
+    from: usize,
+    program: Arc<CompiledVertex>,
+    uniforms: Vec<u32>,
+    /// Lit without two-sided lighting: the back colours are the front ones (as the clipper
+    /// and flat shading read them).
+    lit_one_sided: bool,
+}
+
+/// A draw's vertex processing, ready to run: its program(s), looked up once per draw, and
+/// their uniform values, filled once.
+pub struct VertexStage {
+    first: Run,
+    /// Further runs, after glMaterial calls between glBegin and glEnd (empty otherwise).
+    more: Vec<Run>,
+}
+
+impl VertexStage {
+    /// Prepares the per-vertex stage of a draw of `vertex_count` vertices with the state of
+    /// `t`; `program` returns the compiled program of a key (the share group's cache).
+    pub fn new(
+        t: &Transform,
+        vertex_count: usize,
+        mut program: impl FnMut(&VertexKey) -> Arc<CompiledVertex>,
+    ) -> VertexStage {
+        let Some(input) = &t.lighting else {
+            let compiled = program(&VertexKey::of(t, None));
+            let uniforms = compiled.generated.uniform_values(t, None);
+            return VertexStage {
+                first: Run { from: 0, program: compiled, uniforms, lit_one_sided: false },
+                more: Vec::new(),
+            };
+        };
+        let mut lighting = Lighting::new(input.state, input.modelview_inverse, input.normals);
+        let marks = input.material_marks;
+        let mut runs: Vec<Run> = Vec::new();
+        let (mut from, mut next_mark) = (0, 0);
+        let mut previous_key: Option<VertexKey> = None;
+        loop {
+            // Every mark at or before the run's first vertex applies (the last one wins).
+            while next_mark < marks.len() && marks[next_mark].0 <= from {
+                lighting.set_materials(&marks[next_mark].1);
+                next_mark += 1;
+            }
+            let key = VertexKey::of(t, Some(&lighting));
+            let compiled = match runs.last() {
+                Some(previous) if previous_key.as_ref() == Some(&key) => previous.program.clone(),
+                _ => program(&key),
+            };
+            previous_key = Some(key);
+            let uniforms = compiled.generated.uniform_values(t, Some(&lighting));
+            runs.push(Run { from, program: compiled, uniforms, lit_one_sided: !lighting.two_side() });
+            match marks.get(next_mark) {
+                Some(&(index, _)) if index < vertex_count => from = index,
+                _ => break,
+            }
         }
-        let lit = lighting.shade(c.eye, v.normal, v.color);
-        c.color = clamp4(lit.front);
-        c.secondary_color = clamp4(lit.front_secondary);
-        c.back_colors = [clamp4(lit.back), clamp4(lit.back_secondary)];
+        let mut runs = runs.into_iter();
+        let first = runs.next().expect("at least one run");
+        VertexStage { first, more: runs.collect() }
+    }
+
+    /// Runs the stage on `vertices`, the draw's vertices from index `first` on (a part of
+    /// the draw, when it is split between threads), and hands their clip-space vertices to
+    /// `then`.
+    pub fn run<T>(&self, vertices: &[Vertex], first: usize, then: impl FnOnce(&[ClipVertex]) -> T) -> T {
+        self.run_with(vertices, first, &mut Scratch::default(), then)
+    }
+
+    fn run_with<T>(
+        &self,
+        vertices: &[Vertex],
+        first: usize,
+        scratch: &mut Scratch,
+        then: impl FnOnce(&[ClipVertex]) -> T,
+    ) -> T {
+        scratch.clip.clear();
+        scratch.clip.reserve(vertices.len());
+        let run_at = |i: usize| if i == 0 { Some(&self.first) } else { self.more.get(i - 1) };
+        let relative = |index: usize| index.saturating_sub(first).min(vertices.len());
+        for i in 0..=self.more.len() {
+            let run = run_at(i).expect("a run");
+            let end = run_at(i + 1).map_or(vertices.len(), |next| relative(next.from));
+            let start = relative(run.from);
+            if start < end {
+                run.transform(&vertices[start..end], scratch);
+            }
+        }
+        then(&scratch.clip)
+    }
+}
+
+impl Run {
+    /// Appends the clip-space vertices of `vertices` to `scratch.clip`: 16 vertices at a
+    /// time gathered into the program's input words, run, and scattered back.
+    fn transform(&self, vertices: &[Vertex], scratch: &mut Scratch) {
+        let generated = &self.program.generated;
+        scratch.inputs.resize(generated.inputs.len(), [0; LANES]);
+        scratch.outputs.resize(generated.outputs.len(), [0; LANES]);
+        // Every program's first sixteen outputs: clip and eye coordinates, primary and
+        // secondary colours, in that order; the vertices are made from them (and the fog
+        // coordinate) directly, the others scattered.
+        // The last output is the fog coordinate.
+        let standard = generated.outputs.len() >= 17
+            && generated.outputs[..16].iter().enumerate().all(|(i, &o)| o == STANDARD_OUTPUTS[i])
+            && generated.outputs.last() == Some(&VertexOutput::FogCoord);
+        let scattered = if standard { 16 } else { 0 };
+        let unscattered = if standard { 1 } else { 0 };
+        // The uniform values once for the run, not per batch.
+        self.program.compiled.prepare(&mut scratch.registers, &self.uniforms);
+        for batch in vertices.chunks(LANES) {
+            for (word, &source) in scratch.inputs.iter_mut().zip(&generated.inputs) {
+                gather(source, batch, word);
+            }
+            let lanes = if batch.len() == LANES { ALL_LANES } else { (1u16 << batch.len()) - 1 };
+            let mut io = Io {
+                inputs: &scratch.inputs,
+                uniforms: &self.uniforms,
+                outputs: &mut scratch.outputs,
+                textures: &NoTextures,
+            };
+            self.program.compiled.run_prepared(&mut scratch.registers, &mut io, lanes);
+            let base = scratch.clip.len();
+            let o = &scratch.outputs;
+            // What the program does not write: texture coordinates of units without texgen
+            // or texture matrix, the edge flag, and the back colours of unlit vertices.
+            if standard {
+                let fog = &o[o.len() - 1];
+                for (lane, v) in batch.iter().enumerate() {
+                    let mut first = [[0.0f32; 4]; 4];
+                    for k in 0..16 {
+                        first[k / 4][k % 4] = f32::from_bits(o[k][lane]);
+                    }
+                    let [clip, eye, color, secondary_color] = first;
+                    scratch.clip.push(ClipVertex {
+                        clip,
+                        eye,
+                        color,
+                        secondary_color,
+                        back_colors: if self.lit_one_sided { [color, secondary_color] } else { [[0.0; 4]; 2] },
+                        tex_coords: v.tex_coords,
+                        fog_coord: f32::from_bits(fog[lane]),
+                        edge_flag: v.edge_flag,
+                    });
+                }
+            } else {
+                for v in batch {
+                    scratch.clip.push(ClipVertex {
+                        clip: [0.0; 4],
+                        eye: [0.0; 4],
+                        color: [0.0; 4],
+                        secondary_color: [0.0; 4],
+                        back_colors: [[0.0; 4]; 2],
+                        tex_coords: v.tex_coords,
+                        fog_coord: 0.0,
+                        edge_flag: v.edge_flag,
+                    });
+                }
+            }
+            let out = &mut scratch.clip[base..];
+            let middle = scattered..generated.outputs.len() - unscattered;
+            for (word, &what) in o[middle.clone()].iter().zip(&generated.outputs[middle.clone()]) {
+                scatter(what, word, out);
+            }
+            if self.lit_one_sided && !standard {
+                for c in out {
+                    c.back_colors = [c.color, c.secondary_color];
+                }
+            }
+        }
+    }
+}
+
+/// The first sixteen outputs of every vertex program.
+const STANDARD_OUTPUTS: [VertexOutput; 16] = {
+    let mut outputs = [VertexOutput::FogCoord; 16];
+    let mut k = 0;
+    while k < 4 {
+        outputs[k] = VertexOutput::Clip(k as u8);
+        outputs[4 + k] = VertexOutput::Eye(k as u8);
+        outputs[8 + k] = VertexOutput::Color(k as u8);
+        outputs[12 + k] = VertexOutput::SecondaryColor(k as u8);
+        k += 1;
+    }
+    outputs
+};
+
+/// Input word `source` of the vertices of `batch` (lanes past the batch keep old values:
+/// the program runs them, but nothing reads their results).
+#[inline]
+fn gather(source: VertexInput, batch: &[Vertex], word: &mut Word) {
+    // Plain indexed loops: iterator adapters stay calls in builds without LTO.
+    #[inline(always)]
+    fn fill(word: &mut Word, batch: &[Vertex], get: impl Fn(&Vertex) -> f32) {
+        let n = batch.len().min(LANES);
+        for i in 0..n {
+            word[i] = get(&batch[i]).to_bits();
+        }
+    }
+    match source {
+        VertexInput::Position(k) => fill(word, batch, |v| v.position[k as usize & 3]),
+        VertexInput::Normal(k) => fill(word, batch, |v| v.normal[(k as usize).min(2)]),
+        VertexInput::Color(k) => fill(word, batch, |v| v.color[k as usize & 3]),
+        VertexInput::SecondaryColor(k) => fill(word, batch, |v| v.secondary_color[k as usize & 3]),
+        VertexInput::TexCoord { unit, k } => fill(word, batch, |v| v.tex_coords[unit as usize][k as usize & 3]),
+        VertexInput::FogCoord => fill(word, batch, |v| v.fog_coord),
+        // The lighting-only programs' input, which no vertex program reads.
+        VertexInput::Eye(_) => *word = [0; LANES],
+    }
+}
+
+/// Output word `what` into the clip-space vertices `out` of a batch.
+#[inline]
+fn scatter(what: VertexOutput, word: &Word, out: &mut [ClipVertex]) {
+    #[inline(always)]
+    fn put(word: &Word, out: &mut [ClipVertex], set: impl Fn(&mut ClipVertex, f32)) {
+        let n = out.len().min(LANES);
+        for i in 0..n {
+            set(&mut out[i], f32::from_bits(word[i]));
+        }
+    }
+    match what {
+        VertexOutput::Clip(k) => put(word, out, |c, x| c.clip[k as usize & 3] = x),
+        VertexOutput::Eye(k) => put(word, out, |c, x| c.eye[k as usize & 3] = x),
+        VertexOutput::Color(k) => put(word, out, |c, x| c.color[k as usize & 3] = x),
+        VertexOutput::SecondaryColor(k) => put(word, out, |c, x| c.secondary_color[k as usize & 3] = x),
+        VertexOutput::BackColor { which, k } => {
+            put(word, out, |c, x| c.back_colors[which as usize & 1][k as usize & 3] = x)
+        }
+        VertexOutput::TexCoord { unit, k } => put(word, out, |c, x| c.tex_coords[unit as usize][k as usize & 3] = x),
+        VertexOutput::FogCoord => put(word, out, |c, x| c.fog_coord = x),
     }
 }

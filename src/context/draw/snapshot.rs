@@ -12,7 +12,7 @@ use crate::vertex::lighting::NormalScaling;
 use crate::vertex::line::LineStipple;
 use crate::vertex::point::{point_size, PointAttenuation};
 use crate::vertex::texgen::{TexCoordUnit, TexGen};
-use crate::vertex::transform::{transform, FogSource, LightingInput, Transform};
+use crate::vertex::transform::{FogSource, LightingInput, Transform, VertexStage};
 use crate::vertex::viewport::Viewport;
 use crate::vertex::Vertex;
 use glam::Mat4;
@@ -71,6 +71,12 @@ impl Context {
         }
     }
 
+    /// The per-vertex stage of a draw of `vertex_count` vertices with the state `input`: its
+    /// vertex program from the share group's cache (generated on a miss), and its uniforms.
+    pub(super) fn vertex_stage(&self, input: &Transform, vertex_count: usize) -> VertexStage {
+        VertexStage::new(input, vertex_count, |key| self.programs.lock().vertex(key))
+    }
+
     /// Vertices to clip space as a draw transforms them, with texgen and the texture matrices
     /// applied to the coordinates of `tex_units` (glRasterPos: every unit).
     pub(in crate::context) fn transform_units(
@@ -79,7 +85,8 @@ impl Context {
         float_color: bool,
         tex_units: &[TexCoordUnit],
     ) -> Vec<ClipVertex> {
-        transform(&self.transform_input(float_color, tex_units), vertices)
+        let input = self.transform_input(float_color, tex_units);
+        self.vertex_stage(&input, vertices.len()).run(vertices, 0, <[ClipVertex]>::to_vec)
     }
 
     /// The per-draw geometry constants.

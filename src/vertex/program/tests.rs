@@ -1,6 +1,8 @@
-//! The generated lighting programs against `Lighting::shade`, bit for bit, on random
-//! lighting states and vertices, through the reference executor.
+//! The generated programs against the hand-written per-vertex code they replaced
+//! ([`super::reference`]), bit for bit, on random states and vertices, through the
+//! reference executor and the pipeline's; and the per-vertex stage the draws run.
 
+use super::reference::{shade, transform};
 use super::*;
 use crate::gl::enums::{GL_BACK, GL_FRONT, GL_FRONT_AND_BACK, GL_SEPARATE_SPECULAR_COLOR, GL_SINGLE_COLOR};
 use crate::shader::exec::{Executor, Io, NoTextures, Word, LANES};
@@ -91,7 +93,7 @@ fn generated_programs_give_the_bits_of_shade() {
     let mut rng = Rng(0xddc0_ffee_1234_5677);
     let mut executor = Executor::new();
     for case in 0..2000 {
-        let mut lighting = random_lighting(&mut rng);
+        let lighting = random_lighting(&mut rng);
         let key = LightingKey::of(&lighting);
         let generated = LightingProgram::generate(&key);
         validate(&generated.program).unwrap_or_else(|e| panic!("case {case}: {e:?}"));
@@ -122,7 +124,7 @@ fn generated_programs_give_the_bits_of_shade() {
         let mut io = Io { inputs: &inputs, uniforms: &uniforms, outputs: &mut outputs, textures: &NoTextures };
         executor.run(&generated.program, &mut io, 0xffff);
         for (lane, (eye, normal, color)) in vertices.iter().enumerate() {
-            let lit = lighting.shade(*eye, *normal, *color);
+            let lit = shade(&lighting, *eye, *normal, *color);
             let mut want = vec![lit.front, lit.front_secondary];
             if key.two_side {
                 want.extend([lit.back, lit.back_secondary]);
@@ -199,7 +201,7 @@ fn random_units(rng: &mut Rng) -> Vec<TexCoordUnit> {
 
 #[test]
 fn generated_vertex_programs_give_the_bits_of_transform() {
-    use crate::vertex::transform::{transform, LightingInput as Lit};
+    use crate::vertex::transform::LightingInput as Lit;
     use crate::vertex::Vertex;
     let mut rng = Rng(0x005e_ed0f_7a4e_0001);
     let mut executor = Executor::new();
@@ -298,5 +300,97 @@ fn generated_vertex_programs_give_the_bits_of_transform() {
                 assert_eq!(outputs[slot][lane], expected.to_bits(), "case {case} lane {lane} {what:?}: {key:?}");
             }
         }
+    }
+}
+
+/// Every bit of a clip-space vertex (NaN payloads included).
+fn clip_bits(c: &crate::vertex::clip::ClipVertex) -> Vec<u32> {
+    let mut bits: Vec<u32> = [c.clip, c.eye, c.color, c.secondary_color, c.back_colors[0], c.back_colors[1]]
+        .iter()
+        .chain(&c.tex_coords)
+        .flatten()
+        .map(|x| x.to_bits())
+        .collect();
+    bits.extend([c.fog_coord.to_bits(), c.edge_flag as u32]);
+    bits
+}
+
+#[test]
+fn the_vertex_stage_gives_the_reference_s_vertices_across_batches_and_material_runs() {
+    use crate::vertex::transform::{LightingInput as Lit, VertexStage};
+    use crate::vertex::Vertex;
+    use std::sync::Arc;
+    let mut rng = Rng(0x0057_a9e0_0000_0042);
+    for case in 0..200 {
+        let mut lighting_state = LightingState { enabled: true, ..random_lighting_state(&mut rng) };
+        // Shininess zero or not changes the program's shape from one run to the next.
+        lighting_state.materials[0].shininess = rng.pick(&[0.0, 10.0]);
+        let inverse = random_matrix(&mut rng);
+        let units = random_units(&mut rng);
+        let count = rng.pick(&[1, 15, 16, 17, 40, 64]);
+        let lit = rng.below(4) != 0;
+        // glMaterial marks: a first one at vertex 0 (the materials at glBegin), then a few.
+        let mut marks: Vec<(usize, [Material; 2])> = Vec::new();
+        if lit && rng.below(2) == 0 {
+            let mut at = 0;
+            while at < count + 3 {
+                let mut materials = [random_material(&mut rng), random_material(&mut rng)];
+                materials[0].shininess = rng.pick(&[0.0, 10.0]);
+                marks.push((at, materials));
+                at += rng.pick(&[0, 1, 5, 16, 23]);
+            }
+        }
+        let t = Transform {
+            modelview: random_matrix(&mut rng),
+            model_project: random_matrix(&mut rng),
+            clamp_color: rng.below(2) == 0,
+            fog: [None, Some(FogSource::Radial), Some(FogSource::PlaneAbsolute)][rng.below(3)],
+            texgen: crate::vertex::texgen::TexGen {
+                units: &units,
+                modelview_inverse: inverse,
+                normalize: rng.below(2) == 0,
+                rescale_normal: false,
+            },
+            lighting: lit.then(|| Lit {
+                state: &lighting_state,
+                modelview_inverse: inverse.to_cols_array(),
+                normals: NormalScaling::Normalize,
+                material_marks: &marks,
+            }),
+        };
+        let vertices: Vec<Vertex> = (0..count)
+            .map(|_| {
+                let [x, y, z] = rng.vec3(5.0);
+                Vertex {
+                    position: [x, y, z, 1.0],
+                    color: rng.color(),
+                    secondary_color: std::array::from_fn(|_| rng.range(-0.5, 1.5)),
+                    tex_coords: std::array::from_fn(|_| std::array::from_fn(|_| rng.range(-2.0, 2.0))),
+                    normal: rng.vec3(1.0),
+                    fog_coord: rng.range(-1.0, 4.0),
+                    edge_flag: rng.below(2) == 0,
+                }
+            })
+            .collect();
+        let want: Vec<Vec<u32>> = transform(&t, &vertices).iter().map(clip_bits).collect();
+        let mut lookups = 0;
+        let stage = VertexStage::new(&t, count, |key| {
+            lookups += 1;
+            Arc::new(CompiledVertex::generate(key))
+        });
+        let runs = 1 + marks.iter().filter(|m| m.0 > 0 && m.0 < count).count();
+        assert!(lookups <= runs, "case {case}: a lookup per run of vertices at most, not per batch");
+        let got: Vec<Vec<u32>> = stage.run(&vertices, 0, |c| c.iter().map(clip_bits).collect());
+        assert_eq!(
+            got,
+            want,
+            "case {case}: {count} vertices, marks at {:?}",
+            marks.iter().map(|m| m.0).collect::<Vec<_>>()
+        );
+        // A later part of the draw (a draw split between threads) counts marks from the
+        // draw's first vertex.
+        let split = count / 2;
+        let tail: Vec<Vec<u32>> = stage.run(&vertices[split..], split, |c| c.iter().map(clip_bits).collect());
+        assert_eq!(tail, want[split..], "case {case}: the part from vertex {split}");
     }
 }
