@@ -286,6 +286,20 @@ operations!(|st, io, wide| {
             }
         }),
     ),
+    Op::ClampSelect { d, a, lo, hi } => st.put(
+        d,
+        map3(st.get(a), st.get(lo), st.get(hi), |x, l, h| {
+            if f(l) < f(x) {
+                if f(h) < f(x) {
+                    h
+                } else {
+                    x
+                }
+            } else {
+                l
+            }
+        }),
+    ),
     Op::Normalize3 { d, a } => {
         let v = [*st.get(a[0]), *st.get(a[1]), *st.get(a[2])];
         let s = map1(&dot3(&v[0], &v[1], &v[2], &v[0], &v[1], &v[2]), |x| fu(1.0 / f(x).sqrt()));

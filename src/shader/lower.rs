@@ -20,7 +20,9 @@
 //!   other lanes may read (derivative operands, texture coordinates: the sampler gets every
 //!   lane for its per-quad level of detail) are *pinned*: always written under the mask and
 //!   zeroed per run, so their every lane is what the reference holds.
-//! - **Fused operations.** `max` then `min` of a single-use value is a clamp; a `dot3` of a
+//! - **Fused operations.** `max` then `min` of a single-use value is a clamp, and so is
+//!   `lo < a ? min(a, hi) : lo` (colour clamping: a comparison, a minimum and a select of
+//!   single-use values, as `shader::build`'s `clamp01` writes it); a `dot3` of a
 //!   vector with itself, its `rsq` and the three products are one normalize; consecutive
 //!   dot products with the same right-hand vector are one matrix·vector product. Each fused
 //!   operation performs exactly the operations, in the order and with the roundings, of the
@@ -186,6 +188,14 @@ pub enum Op {
     },
     /// `min(max(a, lo), hi)` as the two instructions compute it.
     Clamp {
+        d: R,
+        a: R,
+        lo: R,
+        hi: R,
+    },
+    /// `lo < a ? min(a, hi) : lo` as the three instructions (a comparison, a minimum and a
+    /// select) compute it: GL's clamp of colours to [0, 1], NaN to 0.
+    ClampSelect {
         d: R,
         a: R,
         lo: R,
@@ -938,6 +948,25 @@ impl Lowering {
                     let op = Op::Clamp { d: self.r(*dst), a: self.r(*a), lo: self.r(*lo), hi: self.r(*hi) };
                     self.ops.push(op);
                     k += 2;
+                    continue;
+                }
+            }
+            // Select clamp: p = lo < x; m = min(x, hi); d = p ? m : lo.
+            if let [Inst::Binary { op: BinaryOp::FLt, dst: p, a: lo, b: x }, Inst::Binary { op: FMin, dst: m, a: x2, b: hi }, Inst::Select { dst, cond, a: m2, b: lo2 }, ..] =
+                rest
+            {
+                if p == cond
+                    && m == m2
+                    && x == x2
+                    && lo == lo2
+                    && p != m
+                    && self.temporary(*p, 1)
+                    && self.temporary(*m, 1)
+                    && !self.uniform(*dst)
+                {
+                    let op = Op::ClampSelect { d: self.r(*dst), a: self.r(*x), lo: self.r(*lo), hi: self.r(*hi) };
+                    self.ops.push(op);
+                    k += 3;
                     continue;
                 }
             }

@@ -905,3 +905,71 @@ fn compiled_executors_match_the_reference_with_derivatives_and_texture_lookups()
     }
     assert!(requests > 3000, "only {requests} texture requests");
 }
+
+#[test]
+fn the_colour_clamp_is_fused_and_keeps_its_bits() {
+    // `0 < x ? min(x, 1) : 0` as the fixed-function generators write it: one operation,
+    // the three instructions' bits on NaN, ±0, ±∞, denormals and values around 0 and 1,
+    // with every lane running and with a partial mask.
+    let mut p = Program::new(Stage::Fragment);
+    let [x, zero, one] = [0; 3].map(|_| p.register(Type::F32));
+    let positive = p.register(Type::Bool);
+    let [at_most_one, clamped] = [0; 2].map(|_| p.register(Type::F32));
+    p.input(Type::F32);
+    p.output(Type::F32);
+    p.body = vec![
+        Stmt::Inst(Inst::Input { dst: x, slot: 0 }),
+        Stmt::Inst(Inst::Const { dst: zero, value: Const::F32(0.0) }),
+        Stmt::Inst(Inst::Const { dst: one, value: Const::F32(1.0) }),
+        Stmt::Inst(Inst::Binary { op: BinaryOp::FLt, dst: positive, a: zero, b: x }),
+        Stmt::Inst(Inst::Binary { op: BinaryOp::FMin, dst: at_most_one, a: x, b: one }),
+        Stmt::Inst(Inst::Select { dst: clamped, cond: positive, a: at_most_one, b: zero }),
+        Stmt::Inst(Inst::Output { slot: 0, src: clamped }),
+    ];
+    validate(&p).unwrap();
+    let compiled = Compiled::new(&p);
+    let fused = compiled.code().ops.iter().filter(|o| matches!(o, super::lower::Op::ClampSelect { .. })).count();
+    assert_eq!(fused, 1, "{:#?}", compiled.code());
+    let values = [
+        f32::NAN,
+        -f32::NAN,
+        0.0,
+        -0.0,
+        f32::INFINITY,
+        f32::NEG_INFINITY,
+        1e-45,
+        -1e-45,
+        0.5,
+        1.0,
+        f32::from_bits(1f32.to_bits() + 1),
+        f32::from_bits(1f32.to_bits() - 1),
+        -0.25,
+        2.0,
+        1e30,
+        0.999,
+    ];
+    let input: Word = std::array::from_fn(|i| values[i].to_bits());
+    for lanes in [ALL_LANES, 0x5a5a] {
+        let mut want = vec![[0u32; LANES]];
+        Executor::new().run(
+            &p,
+            &mut Io { inputs: &[input], uniforms: &[], outputs: &mut want, textures: &NoTextures },
+            lanes,
+        );
+        for i in (0..LANES).filter(|i| lanes >> i & 1 != 0) {
+            let v = values[i];
+            let expected = if v > 0.0 { v.min(1.0) } else { 0.0 };
+            assert_eq!(want[0][i], expected.to_bits(), "the reference, lane {i}");
+        }
+        for which in 0..2 {
+            let mut got = vec![[0u32; LANES]];
+            let mut io = Io { inputs: &[input], uniforms: &[], outputs: &mut got, textures: &NoTextures };
+            if which == 0 {
+                compiled.run(&mut Registers::new(), &mut io, lanes);
+            } else {
+                Threaded::new(&p).run(&mut Registers::new(), &mut io, lanes);
+            }
+            assert_eq!(got, want, "design {which}, lanes {lanes:#x}");
+        }
+    }
+}
