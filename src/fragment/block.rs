@@ -15,11 +15,9 @@
 //! nearest, the arithmetic of [`super::blend::blend_unorm8`], so the bytes are those of the
 //! span path); 16-bit and float targets go through the span path's f32 stages row by row.
 //!
-//! Texturing runs over the block's lanes (`crate::texture::Texturing::texture_block`, the
-//! span path's results with the varyings of every lane evaluated once). The colour sum and
-//! fog run over the lanes ([`super::fog::fog_lanes`], varyings from
-//! [`BlockInputs::varying_lanes`]) with the operations of the span path's
-//! [`super::FragmentState::sum_and_fog`], so its bits.
+//! Texturing, the texture environments, the colour sum and fog are the draw's fragment
+//! program, run over the block's lanes ([`super::shading::Shading::run_block`], varyings
+//! from [`BlockInputs::varying_lanes`]), the very program the span path runs.
 //!
 //! The walker calling [`shade_block`] is baseline code, so the colour work after the tests
 //! (colours, colour sum, fog and every target's write kernel) is one body compiled per SIMD
@@ -33,7 +31,6 @@
 pub mod depth_stencil;
 pub mod kernels;
 
-use super::fog::{clamp01_lane, fog_lanes};
 use super::pipeline::{DrawState, Scratch};
 use super::{AlphaTest, FragmentState};
 use crate::framebuffer::band::Band;
@@ -343,8 +340,8 @@ pub fn shade_block(
 
 /// The colour stages of a block's surviving lanes, compiled per SIMD level as one body (one
 /// dispatch per block; the walker calling `shade_block` is baseline code): the colours
-/// when `shade` (unless the alpha test already computed them), the colour sum and fog, and
-/// every colour target's write kernel.
+/// (the fragment program's) when `shade` (unless the alpha test already computed them),
+/// and every colour target's write kernel.
 #[allow(clippy::too_many_arguments)]
 #[inline]
 fn write_block(
@@ -362,40 +359,10 @@ fn write_block(
         if shade {
             colors_body(fragment, scratch, at, live, inputs, colors);
         }
-        if fragment.needs_varyings() {
-            sum_and_fog(fragment, at, inputs, colors);
-        }
         for target in &pipeline.targets {
             target.run(&mut band.colors[target.index].pixels, at, colors, live);
         }
     })
-}
-
-/// The colour sum and fog of a block's fragments over its lanes, every lane (only the live
-/// ones are written): per fragment the arithmetic of [`FragmentState::sum_and_fog`] with its
-/// varyings, so the span path's bits.
-#[inline(always)]
-fn sum_and_fog(fragment: &FragmentState, at: &BlockAt, inputs: &impl BlockInputs, colors: &mut BlockColors) {
-    // In place on the lanes (a flat colour becomes lanes first).
-    if let BlockColors::Uniform(_) = colors {
-        *colors = BlockColors::Lanes(colors.lanes());
-    }
-    let BlockColors::Lanes(channels) = colors else { return };
-    // Varyings 0..3: the secondary colour with the colour sum; then the fog coordinate.
-    let mut varyings = [[0f32; LANES]; 4];
-    let sum = if fragment.color_sum { 3 } else { 0 };
-    let count = sum + usize::from(fragment.fog.is_some());
-    inputs.varying_lanes(at.x, at.y, 0, &mut varyings[..count]);
-    for (channel, secondary) in channels.iter_mut().zip(&varyings[..sum]) {
-        *channel = if fragment.clamp_float {
-            lanes(|i| clamp01_lane(channel[i] + secondary[i]))
-        } else {
-            lanes(|i| channel[i] + secondary[i])
-        };
-    }
-    if let Some(fog) = &fragment.fog {
-        fog_lanes(fog, &varyings[sum], channels);
-    }
 }
 
 /// The colours of a block's fragments before the tests (for the alpha test), compiled per
@@ -412,12 +379,12 @@ fn shade_colors(
     crate::simd::per_level!(colors_body(fragment, scratch, at, live, inputs, colors))
 }
 
-/// The colours of a block's fragments: interpolated (or flat), textured when the draw
-/// textures (over the block's lanes: `crate::texture::Texturing::texture_block`).
+/// The colours of a block's fragments: interpolated (or flat), then the draw's fragment
+/// program (texturing, colour sum, fog) over the block's lanes when it has one.
 #[inline(always)]
 fn colors_body(
     fragment: &FragmentState,
-    _scratch: &mut Scratch,
+    scratch: &mut Scratch,
     at: &BlockAt,
     live: u16,
     inputs: &impl BlockInputs,
@@ -427,11 +394,14 @@ fn colors_body(
         Some(c) => *colors = BlockColors::Uniform(c),
         None => inputs.colors(at.x, at.y, colors),
     }
-    let Some(texturing) = &fragment.texturing else {
+    let Some(shading) = &fragment.shading else {
         return;
     };
     let mut lanes = colors.lanes();
-    texturing.texture_block(at.y, live, &mut lanes, |y, first, out| inputs.varying_lanes(at.x, y, first, out));
+    let texturing = fragment.texturing.as_deref();
+    shading.run_block(&mut scratch.shading, texturing, at.y, live, &mut lanes, |y, first, out| {
+        inputs.varying_lanes(at.x, y, first, out)
+    });
     *colors = BlockColors::Lanes(lanes);
 }
 
