@@ -103,7 +103,9 @@ impl Shading {
     /// `(x + (i & 3), y + (i >> 2))`): `colors[channel][lane]` holds the primary colours and
     /// receives the program's colour in the live lanes. `varying_lanes(y0, first, out)`
     /// gives varyings `first .. first + out.len()` of the 16 lanes of the block at
-    /// `(x, y0)` (`y0` is `y`, or `y − 1` and `y + 3`, see the module).
+    /// `(x, y0)` (`y0` is `y`, or `y − 1` and `y + 3`, see the module). Inlined into the
+    /// block pipeline's per-SIMD-level body.
+    #[inline(always)]
     pub fn run_block(
         &self,
         scratch: &mut ShadingScratch,
@@ -235,27 +237,30 @@ impl Shading {
 
     /// Runs the program on the lanes of a block whose row pairs are llvmpipe's quads (or
     /// whose lookups need no derivatives): the varyings in `scratch`, `colors` the primary
-    /// colours, replaced by the program's in the lanes `live`.
-    #[inline]
+    /// colours, replaced by the program's in the lanes `live`. Plain lane loops (no
+    /// per-lane branch), so that they vectorise in the caller's SIMD level.
+    #[inline(always)]
     fn run(&self, scratch: &mut ShadingScratch, textures: &StageTextures<'_>, live: u16, colors: &mut [F32s; 4]) {
         let ShadingScratch { registers, inputs, varyings, outputs } = scratch;
         for (word, source) in inputs.iter_mut().zip(&self.program.fixed.inputs) {
             let lanes = match *source {
-                FragmentInput::Primary(k) => &colors[k as usize],
+                FragmentInput::Primary(k) => &colors[k as usize & 3],
                 FragmentInput::Varying(v) => &varyings[v as usize],
             };
-            for (w, x) in word.iter_mut().zip(lanes) {
-                *w = x.to_bits();
+            for i in 0..LANES {
+                word[i] = lanes[i].to_bits();
             }
         }
         let running = if self.derivatives { quads(live) } else { live };
         let mut io = Io { inputs, uniforms: &self.uniforms, outputs, textures };
         self.program.compiled.run(registers, &mut io, running);
+        let mut keep = [0u32; LANES];
+        for (i, k) in keep.iter_mut().enumerate() {
+            *k = 0u32.wrapping_sub((live >> i & 1) as u32);
+        }
         for (channel, out) in colors.iter_mut().zip(outputs.iter()) {
             for i in 0..LANES {
-                if live & (1 << i) != 0 {
-                    channel[i] = f32::from_bits(out[i]);
-                }
+                channel[i] = f32::from_bits((out[i] & keep[i]) | (channel[i].to_bits() & !keep[i]));
             }
         }
     }
@@ -280,18 +285,21 @@ pub struct ShadingScratch {
 
 impl ShadingScratch {
     /// Room for `shading`'s program.
-    #[inline]
+    #[inline(always)]
     fn prepare(&mut self, shading: &Shading) {
         let inputs = shading.program.fixed.inputs.len();
-        if self.inputs.len() != inputs {
-            self.inputs.resize(inputs, [0; LANES]);
+        if self.inputs.len() != inputs || self.varyings.len() < shading.varyings || self.outputs.len() != 4 {
+            self.grow(inputs, shading.varyings);
         }
-        if self.varyings.len() < shading.varyings {
-            self.varyings.resize(shading.varyings, [0.0; LANES]);
+    }
+
+    #[cold]
+    fn grow(&mut self, inputs: usize, varyings: usize) {
+        self.inputs.resize(inputs, [0; LANES]);
+        if self.varyings.len() < varyings {
+            self.varyings.resize(varyings, [0.0; LANES]);
         }
-        if self.outputs.len() != 4 {
-            self.outputs.resize(4, [0; LANES]);
-        }
+        self.outputs.resize(4, [0; LANES]);
     }
 }
 

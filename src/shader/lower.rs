@@ -22,7 +22,8 @@
 //!   zeroed per run, so their every lane is what the reference holds.
 //! - **Fused operations.** `max` then `min` of a single-use value is a clamp, and so is
 //!   `lo < a ? min(a, hi) : lo` (colour clamping: a comparison, a minimum and a select of
-//!   single-use values, as `shader::build`'s `clamp01` writes it); a `dot3` of a
+//!   single-use values, as `shader::build`'s `clamp01` writes it); two single-use
+//!   products and their sum (`a·b + c·e`: texture environments, fog) are a `dot2`; a `dot3` of a
 //!   vector with itself, its `rsq` and the three products are one normalize; consecutive
 //!   dot products with the same right-hand vector are one matrix·vector product. Each fused
 //!   operation performs exactly the operations, in the order and with the roundings, of the
@@ -948,6 +949,18 @@ impl Lowering {
                     let op = Op::Clamp { d: self.r(*dst), a: self.r(*a), lo: self.r(*lo), hi: self.r(*hi) };
                     self.ops.push(op);
                     k += 2;
+                    continue;
+                }
+            }
+            // Two products summed: t = a·b; u = c·e; d = t + u, each rounded once, is dot2.
+            if let [Inst::Binary { op: FMul, dst: t, a: a0, b: b0 }, Inst::Binary { op: FMul, dst: u, a: a1, b: b1 }, Inst::Binary { op: BinaryOp::FAdd, dst, a: t2, b: u2 }, ..] =
+                rest
+            {
+                if t == t2 && u == u2 && t != u && self.temporary(*t, 1) && self.temporary(*u, 1) && !self.uniform(*dst)
+                {
+                    let op = Op::Dot2 { d: self.r(*dst), a: [self.r(*a0), self.r(*a1)], b: [self.r(*b0), self.r(*b1)] };
+                    self.ops.push(op);
+                    k += 3;
                     continue;
                 }
             }

@@ -973,3 +973,59 @@ fn the_colour_clamp_is_fused_and_keeps_its_bits() {
         }
     }
 }
+
+#[test]
+fn two_products_and_their_sum_are_a_dot2_with_their_bits() {
+    // `a·b + c·e` (texture environments, fog): one dot2, each product and the sum rounded
+    // once as the three instructions round them (NaN as any NaN, as everywhere: LLVM may
+    // commute an addition, so a NaN's sign is not a promise); the sum written the other
+    // way round (`u + t`) is left as it is.
+    for swapped in [false, true] {
+        let mut p = Program::new(Stage::Fragment);
+        let regs: Vec<Reg> = (0..7).map(|_| p.register(Type::F32)).collect();
+        let (t, u, d) = (regs[4], regs[5], regs[6]);
+        let mut body: Vec<Stmt> = (0..4)
+            .map(|k| {
+                p.input(Type::F32);
+                Stmt::Inst(Inst::Input { dst: regs[k], slot: k as u16 })
+            })
+            .collect();
+        p.output(Type::F32);
+        let (first, second) = if swapped { (u, t) } else { (t, u) };
+        body.extend([
+            Stmt::Inst(Inst::Binary { op: BinaryOp::FMul, dst: t, a: regs[0], b: regs[1] }),
+            Stmt::Inst(Inst::Binary { op: BinaryOp::FMul, dst: u, a: regs[2], b: regs[3] }),
+            Stmt::Inst(Inst::Binary { op: BinaryOp::FAdd, dst: d, a: first, b: second }),
+            Stmt::Inst(Inst::Output { slot: 0, src: d }),
+        ]);
+        p.body = body;
+        validate(&p).unwrap();
+        let compiled = Compiled::new(&p);
+        let fused = compiled.code().ops.iter().filter(|o| matches!(o, super::lower::Op::Dot2 { .. })).count();
+        assert_eq!(fused, usize::from(!swapped), "{:#?}", compiled.code());
+        let mut rng = Rng(0xd072_0000_1111 + swapped as u64);
+        let specials = [f32::NAN, -f32::NAN, 0.0, -0.0, f32::INFINITY, 1e-45, 3.0e38, 0.1];
+        let inputs: Vec<Word> = (0..4)
+            .map(|_| {
+                std::array::from_fn(|i| {
+                    if i < 8 { specials[(i + rng.next() as usize) % 8] } else { rng.float() }.to_bits()
+                })
+            })
+            .collect();
+        for lanes in [ALL_LANES, 0x3c3c] {
+            let mut want = vec![[0u32; LANES]];
+            Executor::new().run(
+                &p,
+                &mut Io { inputs: &inputs, uniforms: &[], outputs: &mut want, textures: &NoTextures },
+                lanes,
+            );
+            let mut got = vec![[0u32; LANES]];
+            let mut io = Io { inputs: &inputs, uniforms: &[], outputs: &mut got, textures: &NoTextures };
+            compiled.run(&mut Registers::new(), &mut io, lanes);
+            for i in 0..LANES {
+                assert!(same_word(got[0][i], want[0][i], Type::F32), "lanes {lanes:#x}, lane {i}");
+            }
+            assert!(want[0].iter().any(|&w| !f32::from_bits(w).is_nan() && w != 0), "finite sums compared");
+        }
+    }
+}
