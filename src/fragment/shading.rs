@@ -25,7 +25,7 @@ use super::block::{F32s, LANES};
 use super::program::{CompiledFragment, FragmentInput, FragmentKey};
 use super::FragmentState;
 use crate::shader::exec::{Io, SampleRequest, Textures, Word};
-use crate::shader::fast::Registers;
+use crate::shader::fast::{lane_mask, Registers};
 use crate::texture::Texturing;
 use std::sync::Arc;
 
@@ -247,23 +247,29 @@ impl Shading {
                 FragmentInput::Primary(k) => &colors[k as usize & 3],
                 FragmentInput::Varying(v) => &varyings[v as usize],
             };
-            for i in 0..LANES {
-                word[i] = lanes[i].to_bits();
-            }
+            *word = bits(lanes);
         }
         let running = if self.derivatives { quads(live) } else { live };
         let mut io = Io { inputs, uniforms: &self.uniforms, outputs, textures };
         self.program.compiled.run(registers, &mut io, running);
-        let mut keep = [0u32; LANES];
-        for (i, k) in keep.iter_mut().enumerate() {
-            *k = 0u32.wrapping_sub((live >> i & 1) as u32);
-        }
+        let keep = lane_mask(live);
         for (channel, out) in colors.iter_mut().zip(outputs.iter()) {
             for i in 0..LANES {
                 channel[i] = f32::from_bits((out[i] & keep[i]) | (channel[i].to_bits() & !keep[i]));
             }
         }
     }
+}
+
+/// The bit patterns of 16 f32 lanes, as one 64-byte move (a loop storing lane by lane into
+/// the input word stayed 32 scalar moves).
+#[inline(always)]
+fn bits(lanes: &F32s) -> Word {
+    let mut word = [0u32; LANES];
+    for (w, x) in word.iter_mut().zip(lanes) {
+        *w = x.to_bits();
+    }
+    word
 }
 
 /// The lanes of the 2×2 quads (lane row pairs (0, 1) and (2, 3), column pairs (0, 1) and
