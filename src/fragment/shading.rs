@@ -164,6 +164,8 @@ impl Shading {
     /// `varyings_at(dx, dy, out)` evaluates the draw's varyings at the pixel `dx` columns
     /// right of the span's first and `dy` rows above it (a live fragment's own at `dy = 0`;
     /// its quad's neighbours for the derivatives).
+    // The span's place and its inputs, as the span pipeline hands them over.
+    #[allow(clippy::too_many_arguments)]
     pub fn run_span(
         &self,
         scratch: &mut ShadingScratch,
@@ -219,8 +221,8 @@ impl Shading {
                 let dy = low + (lane_row & 1) as i32 - y;
                 varyings_at(dx, dy, pixel);
                 for &(first, count) in &self.varying_runs {
-                    for v in first..first + count {
-                        scratch.varyings[v][lane] = pixel[v];
+                    for (v, value) in scratch.varyings[first..first + count].iter_mut().zip(&pixel[first..]) {
+                        v[lane] = *value;
                     }
                 }
             }
