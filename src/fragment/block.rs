@@ -17,11 +17,9 @@
 //! [`super::blend::blend_unorm8`], so the bytes are those of the span path); 16-bit and
 //! float targets go through the span path's f32 stages row by row.
 //!
-//! Texturing runs over the block's lanes (`crate::texture::Texturing::texture_block`, the
-//! span path's results with the varyings of every lane evaluated once). The colour sum and
-//! fog run over the lanes ([`super::fog::fog_lanes`], varyings from
-//! [`BlockInputs::varying_lanes`]) with the operations of the span path's
-//! [`super::FragmentState::sum_and_fog`], so its bits.
+//! Texturing, the texture environments, the colour sum and fog are the draw's fragment
+//! program, run over the block's lanes ([`super::shading::Shading::run_block`], varyings
+//! from [`BlockInputs::varying_lanes`]), the very program the span path runs.
 //!
 //! **Batches, one copy per SIMD level.** The walk (`raster::blocks`, in the caller's
 //! per-level copy) collects a primitive's blocks in a [`Batch`]; [`BlockPipeline::render`]
@@ -45,7 +43,6 @@
 pub mod depth_stencil;
 pub mod kernels;
 
-use super::fog::{clamp01_lane, fog_lanes};
 use super::pipeline::{DrawState, Scratch};
 use super::{AlphaTest, FragmentState};
 use crate::framebuffer::band::Band;
@@ -652,14 +649,14 @@ fn write_targets(pipeline: &BlockPipeline, band: &mut Band<'_>, at: &BlockAt, co
 }
 
 /// The fragment colours of a block (the lanes of `live` are the ones that count): the
-/// primitive's interpolated (or flat) colours, textured when the draw textures (over the
-/// block's lanes: `crate::texture::Texturing::texture_block`), then the colour sum and fog.
+/// primitive's interpolated (or flat) colours, then the draw's fragment program (texturing,
+/// colour sum, fog: [`crate::fragment::shading`]) over the block's lanes when it has one.
 /// The one place the block path computes colours: its inputs are the block's position and
 /// live lanes and the primitive's planes, its output the 16 colour lanes.
 #[inline(always)]
 fn block_colors(
     fragment: &FragmentState,
-    _scratch: &mut Scratch,
+    scratch: &mut Scratch,
     at: &BlockAt,
     live: u16,
     inputs: &impl BlockInputs,
@@ -669,43 +666,15 @@ fn block_colors(
         Some(c) => *colors = BlockColors::Uniform(c),
         None => inputs.colors(at.x, at.y, colors),
     }
-    if let Some(texturing) = &fragment.texturing {
-        let mut lanes = colors.lanes();
-        texturing.texture_block(at.y, live, &mut lanes, |y, first, out| inputs.varying_lanes(at.x, y, first, out));
-        *colors = BlockColors::Lanes(lanes);
-    }
-    if fragment.needs_varyings() {
-        sum_and_fog(fragment, at, inputs, colors);
-    }
-}
-
-/// The colour sum and fog of a block's fragments over its lanes, every lane (only the live
-/// ones are written): per fragment the arithmetic of [`FragmentState::sum_and_fog`] with its
-/// varyings, so the span path's bits.
-#[inline(always)]
-#[allow(clippy::needless_range_loop)] // an index loop: a `zip` can stay a call in a per-level copy
-fn sum_and_fog(fragment: &FragmentState, at: &BlockAt, inputs: &impl BlockInputs, colors: &mut BlockColors) {
-    // In place on the lanes (a flat colour becomes lanes first).
-    if let BlockColors::Uniform(_) = colors {
-        *colors = BlockColors::Lanes(colors.lanes());
-    }
-    let BlockColors::Lanes(channels) = colors else { return };
-    // Varyings 0..3: the secondary colour with the colour sum; then the fog coordinate.
-    let mut varyings = [[0f32; LANES]; 4];
-    let sum = if fragment.color_sum { 3 } else { 0 };
-    let count = sum + usize::from(fragment.fog.is_some());
-    inputs.varying_lanes(at.x, at.y, 0, &mut varyings[..count]);
-    for k in 0..sum {
-        let (channel, secondary) = (&mut channels[k], &varyings[k]);
-        *channel = if fragment.clamp_float {
-            lanes(|i| clamp01_lane(channel[i] + secondary[i]))
-        } else {
-            lanes(|i| channel[i] + secondary[i])
-        };
-    }
-    if let Some(fog) = &fragment.fog {
-        fog_lanes(fog, &varyings[sum], channels);
-    }
+    let Some(shading) = &fragment.shading else {
+        return;
+    };
+    let mut lanes = colors.lanes();
+    let texturing = fragment.texturing.as_deref();
+    shading.run_block(&mut scratch.shading, texturing, at.y, live, &mut lanes, |y, first, out| {
+        inputs.varying_lanes(at.x, y, first, out)
+    });
+    *colors = BlockColors::Lanes(lanes);
 }
 
 #[cfg(test)]

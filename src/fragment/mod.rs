@@ -4,9 +4,9 @@
 //! multisampled targets ([`multisample`] supplies the per-sample coverage and the
 //! multisample operations). A draw's state is compiled into a [`FragmentState`] once;
 //! disabled operations are absent from it rather than tested per pixel. The stages:
-//! texturing (`crate::texture`), the alpha test ([`alpha`]), the stencil and depth tests
-//! with the stencil operations ([`stencil_depth_test`]), the color sum and fog ([`fog`]),
-//! then per color target blending ([`blend`]) or the logic op ([`logic_op`]), dither
+//! fragment shading (texturing, the texture environments, the color sum and fog: the
+//! draw's fragment program, [`shading`]), the alpha test ([`alpha`]), the stencil and depth
+//! tests with the stencil operations ([`stencil_depth_test`]), then per color target blending ([`blend`]) or the logic op ([`logic_op`]), dither
 //! ([`dither`]) and the masked write ([`output`]).
 //!
 //! Filled triangles on single-sampled targets run the same stages on 4×4 blocks of
@@ -27,6 +27,7 @@ pub mod multisample;
 pub mod output;
 pub mod pipeline;
 pub mod program;
+pub mod shading;
 pub mod stencil;
 
 use crate::framebuffer::band::{ColorBand, DepthBand};
@@ -90,6 +91,9 @@ pub struct FragmentState {
     /// The enabled texture units (their coordinates follow the color sum and fog varyings);
     /// `None` for an untextured draw.
     pub texturing: Option<std::sync::Arc<crate::texture::Texturing>>,
+    /// The fragment program of the texturing, colour sum and fog above, with its values
+    /// ([`shading`]); `None` when it would pass the colour through.
+    pub shading: Option<std::sync::Arc<shading::Shading>>,
 }
 
 impl FragmentState {
@@ -110,45 +114,7 @@ impl FragmentState {
             color_sum: false,
             fog: None,
             texturing: None,
-        }
-    }
-
-    /// Whether the fragment colors need the interpolated varyings (color sum or fog).
-    #[inline]
-    pub fn needs_varyings(&self) -> bool {
-        self.color_sum || self.fog.is_some()
-    }
-
-    /// Adds the secondary color (clamped to [0, 1] when `clamp_float` says fragment colors
-    /// are clamped) and fogs the fragments of `live`; `varyings(i, out)` gives fragment i's
-    /// varyings. The color sum precedes fog (GL 2.1 §3.10, §3.11).
-    pub fn sum_and_fog(
-        &self,
-        colors: &mut [[f32; 4]],
-        live: u64,
-        scratch: &mut [f32],
-        varyings: impl Fn(usize, &mut [f32]),
-    ) {
-        let n = colors.len().min(MAX_SPAN);
-        let mut coords = [0f32; MAX_SPAN];
-        let fog_index = if self.color_sum { 3 } else { 0 };
-        for (i, color) in colors[..n].iter_mut().enumerate() {
-            if live & (1 << i) == 0 {
-                continue;
-            }
-            varyings(i, scratch);
-            if self.color_sum {
-                for (c, &s) in color[..3].iter_mut().zip(&scratch[..3]) {
-                    *c += s;
-                    if self.clamp_float {
-                        *c = if *c > 0.0 { c.min(1.0) } else { 0.0 };
-                    }
-                }
-            }
-            coords[i] = scratch.get(fog_index).copied().unwrap_or(0.0);
-        }
-        if let Some(fog) = &self.fog {
-            fog::apply_fog(fog, &coords[..n], &mut colors[..n], live);
+            shading: None,
         }
     }
 
@@ -435,30 +401,6 @@ mod tests {
         zfail: O::Incr,
         zpass: O::Invert,
     };
-
-    #[test]
-    fn color_sum_clamps_before_fog() {
-        let mut state = FragmentState::plain(None, vec![], true);
-        state.color_sum = true;
-        state.fog = Some(fog::Fog {
-            mode: fog::FogMode::Linear,
-            start: 0.0,
-            end: 1.0,
-            density: 1.0,
-            color: [0.0, 0.0, 1.0, 1.0],
-        });
-        let mut colors = [[0.75, 0.25, 0.0, 0.5], [0.75, 0.25, 0.0, 0.5]];
-        let mut scratch = [0.0; 4];
-        // Secondary (0.5, 0.25, 0) and fog coordinate 0.5 (f = 0.5); pixel 1 is not live.
-        state.sum_and_fog(&mut colors, 0b01, &mut scratch, |_, out| out.copy_from_slice(&[0.5, 0.25, 0.0, 0.5]));
-        assert_eq!(colors[0], [0.5, 0.25, 0.5, 0.5]);
-        assert_eq!(colors[1], [0.75, 0.25, 0.0, 0.5]);
-        // Without fog the fog coordinate is not read; unclamped float colors keep the full sum.
-        state.fog = None;
-        state.clamp_float = false;
-        state.sum_and_fog(&mut colors, 0b10, &mut scratch[..3], |_, out| out.copy_from_slice(&[0.5, 0.0, 0.25]));
-        assert_eq!(colors[1], [1.25, 0.25, 0.25, 0.5]);
-    }
 
     #[test]
     fn stencil_then_depth_on_packed_and_separate_storage() {

@@ -3,11 +3,13 @@
 //! multisampled targets.
 //!
 //! The stages (GL 2.1 chapter 4.1, with texturing, the color sum and fog of §3.8–§3.11 in
-//! front): the fragment colors (texturing), the primitive's coverage for smooth primitives,
+//! front): the fragment colors (the draw's fragment program: texturing, the color sum and
+//! fog, [`super::shading`]), the primitive's coverage for smooth primitives,
 //! alpha-to-coverage, the alpha test, the stencil and depth tests, the occlusion query
-//! count, the color sum and fog, alpha-to-one, then per color target blending or the logic
-//! op, dither and the masked write. Colors (and texturing) are computed before the tests
-//! only when a stage before them needs alpha; an untextured draw does no texture work.
+//! count, alpha-to-one, then per color target blending or the logic op, dither and the
+//! masked write. Colors are computed before the tests only when a stage before them needs
+//! alpha (fog and the color sum change no alpha, so running them before the alpha test
+//! changes nothing); a draw without a program does no shading work.
 //!
 //! What differs between a single-sampled and a multisampled target is only where a span's
 //! coverage and depth live: one live mask per span ([`PixelMask`]) or one per sample
@@ -71,10 +73,8 @@ impl PartialEq for DrawState {
 pub struct Scratch {
     pub z: Vec<f32>,
     pub colors: Vec<[f32; 4]>,
-    /// One fragment's varyings (color sum and fog).
-    pub varyings: Vec<f32>,
-    /// Texturing: the varyings of a fragment and of its quad's neighbours.
-    pub texture: Vec<f32>,
+    /// The fragment program's registers and lanes.
+    pub shading: super::shading::ShadingScratch,
 }
 
 /// Where a span lies: window row `y`, columns `x0..x0 + n`, starting at pixel `row_start`
@@ -360,15 +360,6 @@ pub fn shade<F: Footprint>(
         uniform = shade_colors(fragment, &span, scratch, live, c, &varyings);
         uniform = coverage.apply(&mut scratch.colors, uniform, span.n);
     }
-    if fragment.needs_varyings() {
-        if let Some(color) = uniform.take() {
-            scratch.colors.clear();
-            scratch.colors.resize(span.n, color);
-        }
-        let fog_slot = usize::from(fragment.color_sum) * 3;
-        scratch.varyings.resize(fog_slot + 1, 0.0);
-        fragment.sum_and_fog(&mut scratch.colors, live, &mut scratch.varyings, |i, out| varyings(i as i32, 0, out));
-    }
     if footprint.alpha_to_one() {
         match uniform.as_mut() {
             Some(c) => c[3] = 1.0,
@@ -382,9 +373,9 @@ pub fn shade<F: Footprint>(
     });
 }
 
-/// The colors of a span's fragments before the tests: the interpolated (or flat) colors,
-/// textured when the draw textures (then never uniform). Always inlined, as
-/// [`write_span_colors`].
+/// The colors of a span's fragments: the interpolated (or flat) colors, then the draw's
+/// fragment program (texturing, color sum, fog: [`super::shading::Shading::run_span`]) when
+/// it has one (then never uniform). Always inlined, as [`write_span_colors`].
 #[inline(always)]
 fn shade_colors(
     fragment: &FragmentState,
@@ -396,13 +387,14 @@ fn shade_colors(
 ) -> Option<[f32; 4]> {
     scratch.colors.clear();
     let uniform = colors(&mut scratch.colors);
-    let Some(texturing) = &fragment.texturing else {
+    let Some(shading) = &fragment.shading else {
         return uniform;
     };
     if let Some(color) = uniform {
         scratch.colors.resize(span.n, color);
     }
-    texturing.texture_span(&mut scratch.colors, live, span.x0, span.y, &mut scratch.texture, varyings);
+    let texturing = fragment.texturing.as_deref();
+    shading.run_span(&mut scratch.shading, texturing, span.x0, span.y, live, &mut scratch.colors, varyings);
     None
 }
 

@@ -4,11 +4,12 @@
 //! as Mesa builds one in `ff_fragment_shader`, so that fixed-function and GLSL fragment
 //! shading run on one executor.
 //!
-//! The program does the arithmetic of the per-pixel code it stands for
-//! ([`crate::texture::env::TexEnv::apply`], [`super::FragmentState::sum_and_fog`],
-//! [`super::fog::fog_factor`]): the same IEEE operations on the same operands in the same
-//! order, and fog's own exponential ([`crate::shader::math::exp`]), so the same bits; the
-//! tests run both on random states and inputs.
+//! The program is the one path: the pipeline runs it for every fragment
+//! ([`super::shading`]). Its arithmetic is that of the per-pixel code it replaced, kept for
+//! the tests only as their reference (`TexEnv::apply`, `fog::fog_factor` and the colour sum
+//! in `tests.rs`): the same IEEE operations on the same operands in the same order, and
+//! fog's own exponential ([`crate::shader::math::exp`]), so the same bits; the tests run
+//! both on random states and inputs.
 //!
 //! What varies between draws without changing the program's shape is a uniform (each
 //! unit's GL_TEXTURE_ENV_COLOR, the fog parameters), so that the cache of programs is

@@ -56,12 +56,16 @@ fn map3(a: &Word, b: &Word, c: &Word, op: impl Fn(u32, u32, u32) -> u32) -> Word
     out
 }
 
-/// The lanes of `exec` as a word of all-ones and zeros.
+/// Lane `i`'s bit of a lane mask.
+pub const LANE_BITS: Word = [1, 2, 4, 8, 16, 32, 64, 128, 256, 512, 1024, 2048, 4096, 8192, 16384, 32768];
+
+/// The lanes of `exec` as a word of all-ones and zeros (a broadcast, an and and a compare
+/// per vector: the shifts by each lane's index stayed scalar).
 #[inline(always)]
-fn lane_mask(exec: u16) -> Word {
+pub fn lane_mask(exec: u16) -> Word {
     let mut mask = [0u32; LANES];
-    for (i, m) in mask.iter_mut().enumerate() {
-        *m = 0u32.wrapping_sub((exec >> i & 1) as u32);
+    for (m, bit) in mask.iter_mut().zip(LANE_BITS) {
+        *m = if exec as u32 & bit != 0 { !0 } else { 0 };
     }
     mask
 }
@@ -285,6 +289,20 @@ operations!(|st, io, wide| {
                 h
             } else {
                 t
+            }
+        }),
+    ),
+    Op::ClampSelect { d, a, lo, hi } => st.put(
+        d,
+        map3(st.get(a), st.get(lo), st.get(hi), |x, l, h| {
+            if f(l) < f(x) {
+                if f(h) < f(x) {
+                    h
+                } else {
+                    x
+                }
+            } else {
+                l
             }
         }),
     ),

@@ -20,7 +20,10 @@
 //!   other lanes may read (derivative operands, texture coordinates: the sampler gets every
 //!   lane for its per-quad level of detail) are *pinned*: always written under the mask and
 //!   zeroed per run, so their every lane is what the reference holds.
-//! - **Fused operations.** `max` then `min` of a single-use value is a clamp; a `dot3` of a
+//! - **Fused operations.** `max` then `min` of a single-use value is a clamp, and so is
+//!   `lo < a ? min(a, hi) : lo` (colour clamping: a comparison, a minimum and a select of
+//!   single-use values, as `shader::build`'s `clamp01` writes it); two single-use
+//!   products and their sum (`a·b + c·e`: texture environments, fog) are a `dot2`; a `dot3` of a
 //!   vector with itself, its `rsq` and the three products are one normalize; consecutive
 //!   dot products with the same right-hand vector are one matrix·vector product. Each fused
 //!   operation performs exactly the operations, in the order and with the roundings, of the
@@ -190,6 +193,14 @@ pub enum Op {
     },
     /// `min(max(a, lo), hi)` as the two instructions compute it.
     Clamp {
+        d: R,
+        a: R,
+        lo: R,
+        hi: R,
+    },
+    /// `lo < a ? min(a, hi) : lo` as the three instructions (a comparison, a minimum and a
+    /// select) compute it: GL's clamp of colours to [0, 1], NaN to 0.
+    ClampSelect {
         d: R,
         a: R,
         lo: R,
@@ -945,6 +956,37 @@ impl Lowering {
                     continue;
                 }
             }
+            // Two products summed: t = a·b; u = c·e; d = t + u, each rounded once, is dot2.
+            if let [Inst::Binary { op: FMul, dst: t, a: a0, b: b0 }, Inst::Binary { op: FMul, dst: u, a: a1, b: b1 }, Inst::Binary { op: BinaryOp::FAdd, dst, a: t2, b: u2 }, ..] =
+                rest
+            {
+                if t == t2 && u == u2 && t != u && self.temporary(*t, 1) && self.temporary(*u, 1) && !self.uniform(*dst)
+                {
+                    let op = Op::Dot2 { d: self.r(*dst), a: [self.r(*a0), self.r(*a1)], b: [self.r(*b0), self.r(*b1)] };
+                    self.ops.push(op);
+                    k += 3;
+                    continue;
+                }
+            }
+            // Select clamp: p = lo < x; m = min(x, hi); d = p ? m : lo.
+            if let [Inst::Binary { op: BinaryOp::FLt, dst: p, a: lo, b: x }, Inst::Binary { op: FMin, dst: m, a: x2, b: hi }, Inst::Select { dst, cond, a: m2, b: lo2 }, ..] =
+                rest
+            {
+                if p == cond
+                    && m == m2
+                    && x == x2
+                    && lo == lo2
+                    && p != m
+                    && self.temporary(*p, 1)
+                    && self.temporary(*m, 1)
+                    && !self.uniform(*dst)
+                {
+                    let op = Op::ClampSelect { d: self.r(*dst), a: self.r(*x), lo: self.r(*lo), hi: self.r(*hi) };
+                    self.ops.push(op);
+                    k += 3;
+                    continue;
+                }
+            }
             // Normalize: l = dot3(v, v); s = rsq l; d0 = v0·s; d1 = v1·s; d2 = v2·s.
             if let [Inst::Dot { dst: l, n: 3, a: v, b: v2 }, Inst::Unary { op: UnaryOp::Rsq, dst: s, a: l2 }, Inst::Binary { op: FMul, dst: d0, a: m0, b: s0 }, Inst::Binary { op: FMul, dst: d1, a: m1, b: s1 }, Inst::Binary { op: FMul, dst: d2, a: m2, b: s2 }, ..] =
                 rest
@@ -1120,6 +1162,7 @@ fn op_writes(op: &Op, wide: &[Wide]) -> ([R; 4], usize) {
         | Op::Dot4 { d, .. }
         | Op::Select { d, .. }
         | Op::Clamp { d, .. }
+        | Op::ClampSelect { d, .. }
         | Op::Derivative { d, .. } => one(d),
         Op::Normalize3 { d, .. } => ([d[0], d[1], d[2], 0], 3),
         Op::Output { .. } => ([0; 4], 0),

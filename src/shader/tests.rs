@@ -911,3 +911,127 @@ fn compiled_executors_match_the_reference_with_derivatives_and_texture_lookups()
     }
     assert!(requests > 3000, "only {requests} texture requests");
 }
+
+#[test]
+fn the_colour_clamp_is_fused_and_keeps_its_bits() {
+    // `0 < x ? min(x, 1) : 0` as the fixed-function generators write it: one operation,
+    // the three instructions' bits on NaN, ±0, ±∞, denormals and values around 0 and 1,
+    // with every lane running and with a partial mask.
+    let mut p = Program::new(Stage::Fragment);
+    let [x, zero, one] = [0; 3].map(|_| p.register(Type::F32));
+    let positive = p.register(Type::Bool);
+    let [at_most_one, clamped] = [0; 2].map(|_| p.register(Type::F32));
+    p.input(Type::F32);
+    p.output(Type::F32);
+    p.body = vec![
+        Stmt::Inst(Inst::Input { dst: x, slot: 0 }),
+        Stmt::Inst(Inst::Const { dst: zero, value: Const::F32(0.0) }),
+        Stmt::Inst(Inst::Const { dst: one, value: Const::F32(1.0) }),
+        Stmt::Inst(Inst::Binary { op: BinaryOp::FLt, dst: positive, a: zero, b: x }),
+        Stmt::Inst(Inst::Binary { op: BinaryOp::FMin, dst: at_most_one, a: x, b: one }),
+        Stmt::Inst(Inst::Select { dst: clamped, cond: positive, a: at_most_one, b: zero }),
+        Stmt::Inst(Inst::Output { slot: 0, src: clamped }),
+    ];
+    validate(&p).unwrap();
+    let compiled = Compiled::new(&p);
+    let fused = compiled.code().ops.iter().filter(|o| matches!(o, super::lower::Op::ClampSelect { .. })).count();
+    assert_eq!(fused, 1, "{:#?}", compiled.code());
+    let values = [
+        f32::NAN,
+        -f32::NAN,
+        0.0,
+        -0.0,
+        f32::INFINITY,
+        f32::NEG_INFINITY,
+        1e-45,
+        -1e-45,
+        0.5,
+        1.0,
+        f32::from_bits(1f32.to_bits() + 1),
+        f32::from_bits(1f32.to_bits() - 1),
+        -0.25,
+        2.0,
+        1e30,
+        0.999,
+    ];
+    let input: Word = std::array::from_fn(|i| values[i].to_bits());
+    for lanes in [ALL_LANES, 0x5a5a] {
+        let mut want = vec![[0u32; LANES]];
+        Executor::new().run(
+            &p,
+            &mut Io { inputs: &[input], uniforms: &[], outputs: &mut want, textures: &NoTextures },
+            lanes,
+        );
+        for i in (0..LANES).filter(|i| lanes >> i & 1 != 0) {
+            let v = values[i];
+            let expected = if v > 0.0 { v.min(1.0) } else { 0.0 };
+            assert_eq!(want[0][i], expected.to_bits(), "the reference, lane {i}");
+        }
+        for which in 0..2 {
+            let mut got = vec![[0u32; LANES]];
+            let mut io = Io { inputs: &[input], uniforms: &[], outputs: &mut got, textures: &NoTextures };
+            if which == 0 {
+                compiled.run(&mut Registers::new(), &mut io, lanes);
+            } else {
+                Threaded::new(&p).run(&mut Registers::new(), &mut io, lanes);
+            }
+            assert_eq!(got, want, "design {which}, lanes {lanes:#x}");
+        }
+    }
+}
+
+#[test]
+fn two_products_and_their_sum_are_a_dot2_with_their_bits() {
+    // `a·b + c·e` (texture environments, fog): one dot2, each product and the sum rounded
+    // once as the three instructions round them (NaN as any NaN, as everywhere: LLVM may
+    // commute an addition, so a NaN's sign is not a promise); the sum written the other
+    // way round (`u + t`) is left as it is.
+    for swapped in [false, true] {
+        let mut p = Program::new(Stage::Fragment);
+        let regs: Vec<Reg> = (0..7).map(|_| p.register(Type::F32)).collect();
+        let (t, u, d) = (regs[4], regs[5], regs[6]);
+        let mut body: Vec<Stmt> = (0..4)
+            .map(|k| {
+                p.input(Type::F32);
+                Stmt::Inst(Inst::Input { dst: regs[k], slot: k as u16 })
+            })
+            .collect();
+        p.output(Type::F32);
+        let (first, second) = if swapped { (u, t) } else { (t, u) };
+        body.extend([
+            Stmt::Inst(Inst::Binary { op: BinaryOp::FMul, dst: t, a: regs[0], b: regs[1] }),
+            Stmt::Inst(Inst::Binary { op: BinaryOp::FMul, dst: u, a: regs[2], b: regs[3] }),
+            Stmt::Inst(Inst::Binary { op: BinaryOp::FAdd, dst: d, a: first, b: second }),
+            Stmt::Inst(Inst::Output { slot: 0, src: d }),
+        ]);
+        p.body = body;
+        validate(&p).unwrap();
+        let compiled = Compiled::new(&p);
+        let fused = compiled.code().ops.iter().filter(|o| matches!(o, super::lower::Op::Dot2 { .. })).count();
+        assert_eq!(fused, usize::from(!swapped), "{:#?}", compiled.code());
+        let mut rng = Rng(0xd072_0000_1111 + swapped as u64);
+        let specials = [f32::NAN, -f32::NAN, 0.0, -0.0, f32::INFINITY, 1e-45, 3.0e38, 0.1];
+        let inputs: Vec<Word> = (0..4)
+            .map(|_| {
+                std::array::from_fn(|i| {
+                    if i < 8 { specials[(i + rng.next() as usize) % 8] } else { rng.float() }.to_bits()
+                })
+            })
+            .collect();
+        for lanes in [ALL_LANES, 0x3c3c] {
+            let mut want = vec![[0u32; LANES]];
+            Executor::new().run(
+                &p,
+                &mut Io { inputs: &inputs, uniforms: &[], outputs: &mut want, textures: &NoTextures },
+                lanes,
+            );
+            let mut got = vec![[0u32; LANES]];
+            let mut io = Io { inputs: &inputs, uniforms: &[], outputs: &mut got, textures: &NoTextures };
+            compiled.run(&mut Registers::new(), &mut io, lanes);
+            for i in 0..LANES {
+                assert!(same_word(got[0][i], want[0][i], Type::F32), "lanes {lanes:#x}, lane {i}");
+            }
+            assert!(want[0].iter().any(|&w| !f32::from_bits(w).is_nan() && w != 0), "finite sums compared");
+        }
+    }
+}

@@ -1,5 +1,7 @@
 //! Texture environments (GL 2.1 §3.8.13): how a unit combines its texture color with the
-//! color from the previous unit (the primary color for the first), compiled per draw.
+//! color from the previous unit (the primary color for the first), compiled per draw into
+//! [`TexEnv`], the state the fixed-function fragment program (`crate::fragment::program`)
+//! is generated from; the program is what runs. [`TexEnv::apply`] is the tests' reference.
 //!
 //! The classic modes follow tables 3.22 and 3.23 by base format; GL_COMBINE follows tables
 //! 3.24 and 3.25 with every source of ARB_texture_env_crossbar. Colors are floats; every
@@ -74,7 +76,7 @@ pub struct TexEnv {
     pub color: [f32; 4],
 }
 
-#[inline]
+#[cfg(test)]
 fn clamp01(x: f32) -> f32 {
     if x > 0.0 {
         x.min(1.0)
@@ -83,10 +85,16 @@ fn clamp01(x: f32) -> f32 {
     }
 }
 
+/// **The test reference only** (not compiled into the library): the per-fragment
+/// arithmetic of the environments, written out directly from the tables, which the
+/// generated fragment program (`crate::fragment::program`, the one path the pipeline runs)
+/// must reproduce bit for bit; its tests run both on random states. A second, independent
+/// writing of the same operations catches a generator that reorders or drops one, which an
+/// f64 evaluation within a tolerance would not.
+#[cfg(test)]
 impl TexEnv {
     /// The unit's output color from the previous unit's `previous`, the fragment's `primary`
     /// color and the texture colors of every unit (`texels[unit]`, this one's at `unit`).
-    #[inline(always)]
     pub fn apply(&self, unit: usize, previous: [f32; 4], primary: [f32; 4], texels: &[[f32; 4]]) -> [f32; 4] {
         let t = texels[unit];
         let (cf, cc) = (previous, self.color);
@@ -132,107 +140,8 @@ impl TexEnv {
     }
 }
 
-/// Lanes of a 4×4 block (see [`super::Texturing::texture_block`]).
-type F32s = [f32; 16];
-
-impl TexEnv {
-    /// Whether [`TexEnv::apply_lanes`] computes this environment (all but GL_COMBINE).
-    #[inline]
-    pub fn has_lanes(&self) -> bool {
-        !matches!(self.mode, EnvMode::Combine(_))
-    }
-
-    /// [`TexEnv::apply`] over the lanes of a block for the classic modes (not GL_COMBINE,
-    /// which reads other units and the primary colour): `colors` holds the previous unit's
-    /// colours and receives this unit's in the lanes `live` (the others keep theirs), `t`
-    /// this unit's texture colours. The same operations per lane as `apply`, so its bits.
-    #[inline(always)]
-    pub fn apply_lanes(&self, colors: &mut [F32s; 4], t: &[F32s; 4], live: u16) {
-        let has_color = !matches!(self.base, BaseFormat::Alpha);
-        let has_alpha = matches!(
-            self.base,
-            BaseFormat::Alpha | BaseFormat::LuminanceAlpha | BaseFormat::Intensity | BaseFormat::Rgba
-        );
-        let cc = self.color;
-        match self.mode {
-            EnvMode::Replace => lanes_env(
-                colors,
-                t,
-                live,
-                |cf, t, _, _| if has_color { t } else { cf },
-                |cf, ta, _| if has_alpha { ta } else { cf },
-            ),
-            EnvMode::Modulate => lanes_env(
-                colors,
-                t,
-                live,
-                |cf, t, _, _| if has_color { cf * t } else { cf },
-                |cf, ta, _| if has_alpha { cf * ta } else { cf },
-            ),
-            EnvMode::Decal => match self.base {
-                BaseFormat::Rgb => lanes_env(colors, t, live, |_, t, _, _| t, |cf, _, _| cf),
-                BaseFormat::Rgba => lanes_env(colors, t, live, |cf, t, ta, _| cf * (1.0 - ta) + t * ta, |cf, _, _| cf),
-                _ => lanes_env(colors, t, live, |cf, _, _, _| cf, |cf, _, _| cf),
-            },
-            EnvMode::Blend => lanes_env(
-                colors,
-                t,
-                live,
-                |cf, t, _, k| if has_color { cf * (1.0 - t) + cc[k] * t } else { cf },
-                |cf, ta, _| match self.base {
-                    BaseFormat::Intensity => cf * (1.0 - ta) + cc[3] * ta,
-                    _ if has_alpha => cf * ta,
-                    _ => cf,
-                },
-            ),
-            EnvMode::Add => lanes_env(
-                colors,
-                t,
-                live,
-                |cf, t, _, _| if has_color { cf + t } else { cf },
-                |cf, ta, _| match self.base {
-                    BaseFormat::Intensity => cf + ta,
-                    _ if has_alpha => cf * ta,
-                    _ => cf,
-                },
-            ),
-            EnvMode::Combine(_) => {}
-        }
-    }
-}
-
-/// `f(previous, texel, texel alpha, k)` per colour channel k < 3 and `g(previous alpha,
-/// texel alpha, 0)` for alpha over a block's lanes, clamped to [0, 1] and stored in the
-/// lanes `live`.
-#[inline(always)]
-fn lanes_env(
-    colors: &mut [F32s; 4],
-    t: &[F32s; 4],
-    live: u16,
-    f: impl Fn(f32, f32, f32, usize) -> f32,
-    g: impl Fn(f32, f32, f32) -> f32,
-) {
-    let ta = t[3];
-    for k in 0..3 {
-        let (cf, tk) = (colors[k], &t[k]);
-        let mut out = cf;
-        for i in 0..16 {
-            let v = clamp01(f(cf[i], tk[i], ta[i], k));
-            out[i] = if live & (1 << i) != 0 { v } else { cf[i] };
-        }
-        colors[k] = out;
-    }
-    let cf = colors[3];
-    let mut out = cf;
-    for i in 0..16 {
-        let v = clamp01(g(cf[i], ta[i], 0.0));
-        out[i] = if live & (1 << i) != 0 { v } else { cf[i] };
-    }
-    colors[3] = out;
-}
-
-/// The color of a combine source.
-#[inline]
+/// The color of a combine source (test reference).
+#[cfg(test)]
 fn source(
     s: Source,
     unit: usize,
@@ -250,7 +159,8 @@ fn source(
     }
 }
 
-#[inline(never)]
+/// GL_COMBINE (test reference).
+#[cfg(test)]
 fn combine(
     comb: &Combine,
     unit: usize,

@@ -3,6 +3,8 @@
 //! color) that its enabled per-fragment stages read.
 use super::super::Context;
 use crate::fragment::pipeline::DrawState;
+use crate::fragment::program::FragmentKey;
+use crate::fragment::shading::{is_identity, Shading};
 use crate::fragment::{DepthTest, FragmentState};
 use crate::framebuffer::{ColorFormat, Rect};
 use crate::gl::enums::*;
@@ -87,6 +89,13 @@ impl Context {
         // varyings (`varyings_needed`).
         let first_slot = 3 * usize::from(self.color_sum_active()) + usize::from(self.state.fog.enabled);
         fragment.texturing = self.compile_texturing(first_slot, height as i32).map(std::sync::Arc::new);
+        // The fragment program of texturing, colour sum and fog, from the share group's
+        // cache (once per draw state; none when it would pass the colour through).
+        let key = FragmentKey::of(&fragment);
+        if !is_identity(&key) {
+            let program = self.programs.lock().fragment(&key);
+            fragment.shading = Some(std::sync::Arc::new(Shading::new(program, &fragment)));
+        }
         let samples_passed = self.queries.active_counter();
         let multisample = self.multisample_state(self.framebuffer_samples());
         DrawState { fragment, clip, fill_clip, polygon_stipple, samples_passed, multisample }

@@ -155,8 +155,11 @@ fn random_case(rng: &mut Rng) -> Case {
     Case { units, state, varyings }
 }
 
-/// The per-pixel code's colour of one fragment: every unit's environment in order, then
-/// the colour sum and fog.
+/// The per-pixel code's colour of one fragment (the tests' reference, written out
+/// directly: [`TexEnv::apply`] and [`super::super::fog::fog_factor`] are compiled for the
+/// tests only): every unit's environment in order, then the colour sum (clamped when
+/// fragment colours are) and fog, `f·C + (1 − f)·Cfog` on RGB. The colour sum precedes fog
+/// (GL 2.1 §3.10, §3.11).
 fn reference(case: &Case, primary: [f32; 4], varyings: &[f32]) -> [f32; 4] {
     let mut texels = [[0.0, 0.0, 0.0, 1.0]; MAX_UNITS];
     for (unit, slot, _) in &case.units {
@@ -166,10 +169,23 @@ fn reference(case: &Case, primary: [f32; 4], varyings: &[f32]) -> [f32; 4] {
     for (unit, _, env) in &case.units {
         color = env.apply(*unit, color, primary, &texels);
     }
-    let mut colors = [color];
-    let mut scratch = vec![0.0; varyings.len().max(4)];
-    case.state.sum_and_fog(&mut colors, 1, &mut scratch, |_, out| out[..varyings.len()].copy_from_slice(varyings));
-    colors[0]
+    let state = &case.state;
+    if state.color_sum {
+        for (c, &s) in color[..3].iter_mut().zip(&varyings[..3]) {
+            *c += s;
+            if state.clamp_float {
+                *c = if *c > 0.0 { c.min(1.0) } else { 0.0 };
+            }
+        }
+    }
+    if let Some(fog) = &state.fog {
+        let coordinate = varyings[if state.color_sum { 3 } else { 0 }];
+        let f = super::super::fog::fog_factor(fog, coordinate);
+        for (x, &fog_c) in color[..3].iter_mut().zip(&fog.color[..3]) {
+            *x = f * *x + (1.0 - f) * fog_c;
+        }
+    }
+    color
 }
 
 #[test]

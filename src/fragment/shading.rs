@@ -1,0 +1,363 @@
+//! Fragment shading: a draw's fragment program ([`super::program`], looked up in the share
+//! group's cache once per draw state) run over 16 lanes by the shading executor
+//! ([`crate::shader::fast`]), for a 4×4 block ([`Shading::run_block`]) or a span
+//! ([`Shading::run_span`]): one path for texturing, the texture environments, the colour sum
+//! and fog, whatever the primitive. A draw whose program would pass the colour through (no
+//! unit, no colour sum, no fog) has none, and its colours are not touched.
+//!
+//! Texture lookups go to the texture room through [`StageTextures`], the executor's
+//! [`Textures`] over a draw's units: coordinates divided by q (0 when q is 0), then
+//! [`crate::texture::TextureStage::sample_block`], llvmpipe's level of detail per 2×2 quad.
+//!
+//! **Quads.** The executor's lanes are row-major, and a lookup's quads are the lane row pairs
+//! (0, 1) and (2, 3). llvmpipe's quads pair its y-down rows, so they are the block's row
+//! pairs when `fb_height − y` is even; otherwise they straddle the block's edges, and a
+//! program whose lookups need derivatives runs on the block one row below (rows 0..3 of the
+//! block as its rows 1..4) and the block three rows above (row 3 as its row 0), whose row
+//! pairs are llvmpipe's quads. Running the program on those shifted blocks, rather than
+//! asking the sampler for other pixels' coordinates, is what a program computing its
+//! coordinates (GLSL) needs too. A span runs as 16-lane groups of 8 columns of its row and
+//! the row it shares quads with (lane rows 0 and 1 the left 4 columns, 2 and 3 the right 4).
+//! Every lane of a quad with a live lane runs (helper lanes: their own pixel's varyings),
+//! only the live lanes' colours are kept.
+
+use super::block::{F32s, LANES};
+use super::program::{CompiledFragment, FragmentInput, FragmentKey};
+use super::FragmentState;
+use crate::shader::exec::{Io, SampleRequest, Textures, Word};
+use crate::shader::fast::{lane_mask, Registers};
+use crate::texture::Texturing;
+use std::sync::Arc;
+
+/// The most varyings a fixed-function fragment program reads: the secondary colour, the
+/// fog coordinate and every unit's s, t, r, q.
+const MAX_VARYINGS: usize = 4 + 4 * super::program::MAX_UNITS;
+
+/// A draw's fragment shading: its compiled program and the values it reads.
+#[derive(Debug)]
+pub struct Shading {
+    pub program: Arc<CompiledFragment>,
+    /// The uniform words (environment colours, fog parameters) of the draw.
+    uniforms: Vec<u32>,
+    /// Runs of consecutive varyings the program reads: (first, count).
+    varying_runs: Vec<(usize, usize)>,
+    /// One more than the highest varying the program reads.
+    varyings: usize,
+    /// Whether a lookup depends on derivatives (then quads matter).
+    derivatives: bool,
+    /// Framebuffer height: llvmpipe's quads pair its y-down rows.
+    fb_height: i32,
+}
+
+impl PartialEq for Shading {
+    /// Two draws shade alike if they run the very same program on the same values.
+    fn eq(&self, other: &Self) -> bool {
+        Arc::ptr_eq(&self.program, &other.program)
+            && self.uniforms == other.uniforms
+            && self.fb_height == other.fb_height
+    }
+}
+
+/// Whether `key`'s program passes the primary colour through unchanged (then a draw has no
+/// [`Shading`]).
+pub fn is_identity(key: &FragmentKey) -> bool {
+    key.stages.is_empty() && key.color_sum.is_none() && key.fog.is_none()
+}
+
+impl Shading {
+    /// The shading of `state` (its texturing, colour sum and fog) by `program`, the program
+    /// of `FragmentKey::of(state)`.
+    pub fn new(program: Arc<CompiledFragment>, state: &FragmentState) -> Shading {
+        let stages = state.texturing.as_ref().map_or(&[][..], |t| &t.stages[..]);
+        let envs: Vec<_> = stages.iter().map(|s| &s.env).collect();
+        let uniforms = program.fixed.uniform_values(&envs, state.fog.as_ref());
+        let mut read: Vec<usize> = program
+            .fixed
+            .inputs
+            .iter()
+            .filter_map(|i| match *i {
+                FragmentInput::Varying(v) => Some(v as usize),
+                FragmentInput::Primary(_) => None,
+            })
+            .collect();
+        read.sort_unstable();
+        read.dedup();
+        let mut varying_runs: Vec<(usize, usize)> = Vec::new();
+        for v in &read {
+            match varying_runs.last_mut() {
+                Some((first, count)) if *first + *count == *v => *count += 1,
+                _ => varying_runs.push((*v, 1)),
+            }
+        }
+        Shading {
+            uniforms,
+            varying_runs,
+            varyings: read.last().map_or(0, |v| v + 1),
+            derivatives: stages.iter().any(|s| s.needs_derivatives()),
+            fb_height: state.texturing.as_ref().map_or(0, |t| t.fb_height),
+            program,
+        }
+    }
+
+    /// Shades the lanes `live` of the 4×4 block at window `(x, y)` (lane `i` the pixel
+    /// `(x + (i & 3), y + (i >> 2))`): `colors[channel][lane]` holds the primary colours and
+    /// receives the program's colour in the live lanes. `varying_lanes(y0, first, out)`
+    /// gives varyings `first .. first + out.len()` of the 16 lanes of the block at
+    /// `(x, y0)` (`y0` is `y`, or `y − 1` and `y + 3`, see the module). Inlined into the
+    /// block pipeline's per-SIMD-level body.
+    #[inline(always)]
+    pub fn run_block(
+        &self,
+        scratch: &mut ShadingScratch,
+        texturing: Option<&Texturing>,
+        y: i32,
+        live: u16,
+        colors: &mut [F32s; 4],
+        varying_lanes: impl Fn(i32, usize, &mut [F32s]),
+    ) {
+        if live == 0 {
+            return;
+        }
+        let textures = StageTextures { texturing };
+        scratch.prepare(self);
+        if !self.derivatives || (self.fb_height - y) & 1 == 0 {
+            for &(first, count) in &self.varying_runs {
+                varying_lanes(y, first, &mut scratch.varyings[first..first + count]);
+            }
+            self.run(scratch, &textures, live, colors);
+            return;
+        }
+        // Rows 0..3 of the block are rows 1..4 of the block below, row 3 is row 0 of the
+        // block above.
+        let below = live << 4;
+        if below != 0 {
+            let mut shifted = [[0.0; LANES]; 4];
+            for (s, c) in shifted.iter_mut().zip(colors.iter()) {
+                s[4..].copy_from_slice(&c[..12]);
+            }
+            for &(first, count) in &self.varying_runs {
+                varying_lanes(y - 1, first, &mut scratch.varyings[first..first + count]);
+            }
+            self.run(scratch, &textures, below, &mut shifted);
+            for (s, c) in shifted.iter().zip(colors.iter_mut()) {
+                c[..12].copy_from_slice(&s[4..]);
+            }
+        }
+        let above = live >> 12;
+        if above != 0 {
+            let mut shifted = [[0.0; LANES]; 4];
+            for (s, c) in shifted.iter_mut().zip(colors.iter()) {
+                s[..4].copy_from_slice(&c[12..]);
+            }
+            for &(first, count) in &self.varying_runs {
+                varying_lanes(y + 3, first, &mut scratch.varyings[first..first + count]);
+            }
+            self.run(scratch, &textures, above, &mut shifted);
+            for (s, c) in shifted.iter().zip(colors.iter_mut()) {
+                c[12..].copy_from_slice(&s[..4]);
+            }
+        }
+    }
+
+    /// Shades the fragments `live` of the span at window row `y`, columns `x0 ..
+    /// x0 + colors.len()`: `colors` holds the primary colours and receives the program's.
+    /// `varyings_at(dx, dy, out)` evaluates the draw's varyings at the pixel `dx` columns
+    /// right of the span's first and `dy` rows above it (a live fragment's own at `dy = 0`;
+    /// its quad's neighbours for the derivatives).
+    // The span's place and its inputs, as the span pipeline hands them over.
+    #[allow(clippy::too_many_arguments)]
+    pub fn run_span(
+        &self,
+        scratch: &mut ShadingScratch,
+        texturing: Option<&Texturing>,
+        x0: i32,
+        y: i32,
+        live: u64,
+        colors: &mut [[f32; 4]],
+        varyings_at: impl Fn(i32, i32, &mut [f32]),
+    ) {
+        let n = colors.len().min(64);
+        let mut rest = live & super::span_mask(n);
+        if rest == 0 {
+            return;
+        }
+        let textures = StageTextures { texturing };
+        scratch.prepare(self);
+        // The window row of lane rows 0 and 2: the lower row of llvmpipe's quads holding
+        // row `y` (see the module); the span is lane row `row` (and `row + 2`).
+        let low = if (self.fb_height - y) & 1 == 0 { y } else { y - 1 };
+        let row = (y - low) as usize;
+        let mut pixel = [0.0; MAX_VARYINGS];
+        let pixel = &mut pixel[..self.varyings];
+        while rest != 0 {
+            // The 8 columns from a multiple of 8 holding the first fragment left.
+            let left = (x0 + rest.trailing_zeros() as i32) & !7;
+            let mut lanes = 0u16;
+            let mut block = [[0.0; LANES]; 4];
+            let lane_of = |d: i32| 4 * (2 * (d >> 2) as usize + row) + (d & 3) as usize;
+            for d in 0..8 {
+                let i = left + d - x0;
+                if (0..n as i32).contains(&i) && rest & (1u64 << i) != 0 {
+                    let lane = lane_of(d);
+                    lanes |= 1 << lane;
+                    for (k, channel) in block.iter_mut().enumerate() {
+                        channel[lane] = colors[i as usize][k];
+                    }
+                }
+            }
+            for d in 0..8 {
+                let i = left + d - x0;
+                if (0..64).contains(&i) {
+                    rest &= !(1u64 << i);
+                }
+            }
+            let evaluated = if self.derivatives { quads(lanes) } else { lanes };
+            for v in &mut scratch.varyings[..self.varyings] {
+                *v = [0.0; LANES];
+            }
+            for lane in (0..LANES).filter(|l| evaluated & (1 << l) != 0) {
+                let (lane_row, col) = (lane >> 2, (lane & 3) as i32);
+                let dx = left + col + 4 * (lane_row >> 1) as i32 - x0;
+                let dy = low + (lane_row & 1) as i32 - y;
+                varyings_at(dx, dy, pixel);
+                for &(first, count) in &self.varying_runs {
+                    for (v, value) in scratch.varyings[first..first + count].iter_mut().zip(&pixel[first..]) {
+                        v[lane] = *value;
+                    }
+                }
+            }
+            self.run(scratch, &textures, lanes, &mut block);
+            for d in 0..8 {
+                let i = left + d - x0;
+                let lane = lane_of(d);
+                if lanes & (1 << lane) != 0 {
+                    colors[i as usize] = std::array::from_fn(|k| block[k][lane]);
+                }
+            }
+        }
+    }
+
+    /// Runs the program on the lanes of a block whose row pairs are llvmpipe's quads (or
+    /// whose lookups need no derivatives): the varyings in `scratch`, `colors` the primary
+    /// colours, replaced by the program's in the lanes `live`. Plain lane loops (no
+    /// per-lane branch), so that they vectorise in the caller's SIMD level.
+    #[inline(always)]
+    fn run(&self, scratch: &mut ShadingScratch, textures: &StageTextures<'_>, live: u16, colors: &mut [F32s; 4]) {
+        let ShadingScratch { registers, inputs, varyings, outputs } = scratch;
+        for (word, source) in inputs.iter_mut().zip(&self.program.fixed.inputs) {
+            let lanes = match *source {
+                FragmentInput::Primary(k) => &colors[k as usize & 3],
+                FragmentInput::Varying(v) => &varyings[v as usize],
+            };
+            *word = bits(lanes);
+        }
+        let running = if self.derivatives { quads(live) } else { live };
+        let mut io = Io { inputs, uniforms: &self.uniforms, outputs, textures };
+        self.program.compiled.run(registers, &mut io, running);
+        let keep = lane_mask(live);
+        for (channel, out) in colors.iter_mut().zip(outputs.iter()) {
+            for i in 0..LANES {
+                channel[i] = f32::from_bits((out[i] & keep[i]) | (channel[i].to_bits() & !keep[i]));
+            }
+        }
+    }
+}
+
+/// The bit patterns of 16 f32 lanes, as one 64-byte move (a loop storing lane by lane into
+/// the input word stayed 32 scalar moves).
+#[inline(always)]
+fn bits(lanes: &F32s) -> Word {
+    let mut word = [0u32; LANES];
+    for (w, x) in word.iter_mut().zip(lanes) {
+        *w = x.to_bits();
+    }
+    word
+}
+
+/// The lanes of the 2×2 quads (lane row pairs (0, 1) and (2, 3), column pairs (0, 1) and
+/// (2, 3)) holding a lane of `live`.
+#[inline(always)]
+pub fn quads(live: u16) -> u16 {
+    let columns = live | ((live >> 1) & 0x5555) | ((live & 0x5555) << 1);
+    columns | ((columns >> 4) & 0x0f0f) | ((columns & 0x0f0f) << 4)
+}
+
+/// A worker's storage for runs of fragment programs, reused from block to block.
+#[derive(Default)]
+pub struct ShadingScratch {
+    registers: Registers,
+    inputs: Vec<Word>,
+    varyings: Vec<F32s>,
+    outputs: Vec<Word>,
+}
+
+impl ShadingScratch {
+    /// Room for `shading`'s program.
+    #[inline(always)]
+    fn prepare(&mut self, shading: &Shading) {
+        let inputs = shading.program.fixed.inputs.len();
+        if self.inputs.len() != inputs || self.varyings.len() < shading.varyings || self.outputs.len() != 4 {
+            self.grow(inputs, shading.varyings);
+        }
+    }
+
+    #[cold]
+    fn grow(&mut self, inputs: usize, varyings: usize) {
+        self.inputs.resize(inputs, [0; LANES]);
+        if self.varyings.len() < varyings {
+            self.varyings.resize(varyings, [0.0; LANES]);
+        }
+        self.outputs.resize(4, [0; LANES]);
+    }
+}
+
+/// The executor's texture lookups over a draw's units: the fixed-function lookup (s, t, r
+/// divided by q, implicit level of detail) through each unit's block lookup.
+pub struct StageTextures<'a> {
+    pub texturing: Option<&'a Texturing>,
+}
+
+impl Textures for StageTextures<'_> {
+    fn sample(&self, r: &SampleRequest<'_>, out: &mut [Word; 4]) {
+        let Some(stage) = self.texturing.and_then(|t| t.stages.iter().find(|s| s.unit == r.unit as usize)) else {
+            // No such unit: the default texel (0, 0, 0, 1).
+            *out = [[0; LANES], [0; LANES], [0; LANES], [1f32.to_bits(); LANES]];
+            return;
+        };
+        let mut c = [[0f32; LANES]; 3];
+        for i in 0..LANES {
+            let q = f32::from_bits(r.coords[3][i]);
+            let inv = if !r.projective {
+                1.0
+            } else if q != 0.0 {
+                1.0 / q
+            } else {
+                0.0
+            };
+            for (j, cj) in c.iter_mut().enumerate() {
+                cj[i] =
+                    if r.projective { f32::from_bits(r.coords[j][i]) * inv } else { f32::from_bits(r.coords[j][i]) };
+            }
+        }
+        let mut texels = [[0f32; LANES]; 4];
+        stage.sample_block(&c, r.lanes, &mut texels);
+        for (o, t) in out.iter_mut().zip(&texels) {
+            for i in 0..LANES {
+                o[i] = t[i].to_bits();
+            }
+        }
+    }
+
+    fn fetch(&self, _: u8, _: u8, _: &[Word; 3], _: &Word, _: u16, out: &mut [Word; 4]) {
+        // Fixed-function programs do not fetch texels by index (GLSL's texelFetch will).
+        *out = [[0; LANES]; 4];
+    }
+
+    fn size(&self, _: u8, _: &Word, _: u16, out: &mut [Word; 3]) {
+        // Nor ask sizes (GLSL's textureSize will).
+        *out = [[0; LANES]; 3];
+    }
+}
+
+#[cfg(test)]
+mod tests;
