@@ -1,8 +1,10 @@
 //! Entry points of the raster position and pixel rectangles: glRasterPos*, glWindowPos*,
 //! glBitmap, glDrawPixels, glCopyPixels, glPixelZoom. All are compiled into display lists; glBitmap and
 //! glDrawPixels read their image (under the unpack modes) when issued.
-use super::caller_memory::{self, read};
+use super::caller_memory::read;
+use super::pixel_source::{PackDest, UnpackSource};
 use super::{record_or_run, with_context};
+use crate::context::pixel_buffers::element_size;
 use crate::gl::types::*;
 use crate::vertex::components::Component;
 
@@ -528,11 +530,9 @@ pub unsafe extern "C" fn glBitmap(
     bitmap: *const GLubyte,
 ) {
     with_context((), |ctx| {
-        let bits = ctx.unpack_bitmap(width, height, |span| {
-            // SAFETY: the context computed `span` from the unpack parameters as the bytes the
-            // bitmap occupies; by glBitmap's contract the caller's image holds them.
-            unsafe { caller_memory::bytes(bitmap, span) }
-        });
+        // SAFETY: forwarded contract (a bitmap: no element alignment).
+        let source = unsafe { UnpackSource::new(ctx, bitmap as *const GLvoid, 0) };
+        let bits = ctx.unpack_bitmap(width, height, |span| source.bytes(span));
         ctx.record_or_run(move |ctx| ctx.bitmap(width, height, [xorig, yorig], [xmove, ymove], &bits))
     })
 }
@@ -549,11 +549,9 @@ pub unsafe extern "C" fn glDrawPixels(
     pixels: *const GLvoid,
 ) {
     with_context((), |ctx| {
-        let data = ctx.unpack_draw_pixels(width, height, format, type_, |span| {
-            // SAFETY: the context computed `span` from the unpack parameters as the bytes the
-            // image occupies; by glDrawPixels' contract the caller's image holds them.
-            unsafe { caller_memory::bytes(pixels, span) }
-        });
+        // SAFETY: forwarded contract.
+        let source = unsafe { UnpackSource::new(ctx, pixels, element_size(type_)) };
+        let data = ctx.unpack_draw_pixels(width, height, format, type_, |span| source.bytes(span));
         ctx.record_or_run(move |ctx| ctx.draw_pixels(width, height, &data))
     })
 }
@@ -578,63 +576,103 @@ pub extern "C" fn glPixelTransferi(pname: GLenum, param: GLint) {
     record_or_run(move |ctx| ctx.pixel_transfer(pname, param as f32))
 }
 
-/// The `mapsize` values of a glPixelMap call as floats (`None`: a negative size or NULL).
+/// A pixel map entry as the caller's memory or a pixel buffer holds it (native byte order).
+trait MapEntry: Copy {
+    const BYTES: usize;
+    fn from_bytes(bytes: &[u8]) -> Self;
+    fn to_bytes(self, out: &mut [u8]);
+}
+
+macro_rules! map_entry {
+    ($($t:ty),*) => {$(
+        impl MapEntry for $t {
+            const BYTES: usize = std::mem::size_of::<$t>();
+            fn from_bytes(bytes: &[u8]) -> Self {
+                <$t>::from_ne_bytes(bytes.try_into().expect("one entry's bytes"))
+            }
+            fn to_bytes(self, out: &mut [u8]) {
+                out.copy_from_slice(&self.to_ne_bytes());
+            }
+        }
+    )*};
+}
+map_entry!(f32, u32, u16);
+
+/// glPixelMap: the `mapsize` values at `values` as floats, from the caller's memory or, while
+/// a buffer is bound to GL_PIXEL_UNPACK_BUFFER, from that buffer at the offset `values`
+/// gives; then the command runs (or is compiled, with the table read now).
 ///
 /// # Safety
-/// A non-null `values` must point to `mapsize` values.
-unsafe fn map_values<T: Copy>(mapsize: GLsizei, values: *const T, convert: impl Fn(T) -> f32) -> Vec<f32> {
-    if values.is_null() || mapsize <= 0 || mapsize as usize > crate::context::pixel_rect::MAX_PIXEL_MAP_TABLE {
-        // Invalid sizes still reach the context (as an empty or oversized table) for the error.
-        return vec![
-            0.0;
-            if mapsize > 0 { mapsize as usize } else { 0 }
-                .min(crate::context::pixel_rect::MAX_PIXEL_MAP_TABLE + 1)
-        ];
-    }
-    // SAFETY: the caller passes `mapsize` values at `values` (checked non-null above).
-    unsafe { caller_memory::read_array(values, mapsize) }.into_iter().map(convert).collect()
+/// When no unpack buffer is bound, a non-null `values` must point to `mapsize` values.
+unsafe fn pixel_map<T: MapEntry>(map: GLenum, mapsize: GLsizei, values: *const T, convert: impl Fn(T) -> f32) {
+    use crate::context::pixel_rect::MAX_PIXEL_MAP_TABLE;
+    with_context((), |ctx| {
+        let table = if mapsize <= 0 || mapsize as usize > MAX_PIXEL_MAP_TABLE {
+            // Invalid sizes still reach the context (as an empty or oversized table) for the error.
+            vec![0.0; mapsize.clamp(0, MAX_PIXEL_MAP_TABLE as GLsizei + 1) as usize]
+        } else {
+            // SAFETY: forwarded contract (`mapsize` entries of `T::BYTES` bytes each).
+            let source = unsafe { UnpackSource::new(ctx, values as *const GLvoid, T::BYTES) };
+            match source.bytes(0..mapsize as usize * T::BYTES) {
+                Ok(Some(bytes)) => bytes.chunks_exact(T::BYTES).map(|b| convert(T::from_bytes(b))).collect(),
+                // NULL: the table of `mapsize` zeros, as before (the context checks the map).
+                Ok(None) => vec![0.0; mapsize as usize],
+                Err(error) => return ctx.error(error),
+            }
+        };
+        ctx.record_or_run(move |ctx| ctx.pixel_map(map, &table))
+    })
 }
 
 /// # Safety
-/// `values` must point to `mapsize` floats.
+/// `values` must point to `mapsize` floats (or be an offset into the unpack buffer).
 #[no_mangle]
 pub unsafe extern "C" fn glPixelMapfv(map: GLenum, mapsize: GLsizei, values: *const GLfloat) {
     // SAFETY: forwarded contract of this entry point.
-    let table = unsafe { map_values(mapsize, values, |v| v) };
-    record_or_run(move |ctx| ctx.pixel_map(map, &table))
+    unsafe { pixel_map(map, mapsize, values, |v| v) }
 }
 
 /// # Safety
-/// `values` must point to `mapsize` GLuints.
+/// `values` must point to `mapsize` GLuints (or be an offset into the unpack buffer).
 #[no_mangle]
 pub unsafe extern "C" fn glPixelMapuiv(map: GLenum, mapsize: GLsizei, values: *const GLuint) {
     use crate::context::pixel_rect::pixel_map_from_integer;
     // SAFETY: forwarded contract of this entry point.
-    let table = unsafe { map_values(mapsize, values, |v| pixel_map_from_integer(map, v, 4294967295.0)) };
-    record_or_run(move |ctx| ctx.pixel_map(map, &table))
+    unsafe { pixel_map(map, mapsize, values, |v| pixel_map_from_integer(map, v, 4294967295.0)) }
 }
 
 /// # Safety
-/// `values` must point to `mapsize` GLushorts.
+/// `values` must point to `mapsize` GLushorts (or be an offset into the unpack buffer).
 #[no_mangle]
 pub unsafe extern "C" fn glPixelMapusv(map: GLenum, mapsize: GLsizei, values: *const GLushort) {
     use crate::context::pixel_rect::pixel_map_from_integer;
     // SAFETY: forwarded contract of this entry point.
-    let table = unsafe { map_values(mapsize, values, |v| pixel_map_from_integer(map, v as u32, 65535.0)) };
-    record_or_run(move |ctx| ctx.pixel_map(map, &table))
+    unsafe { pixel_map(map, mapsize, values, |v| pixel_map_from_integer(map, v as u32, 65535.0)) }
 }
 
-/// Writes a pixel map table to the caller's array, each entry converted by `convert`.
+/// Writes a pixel map table to the caller's array, or, while a buffer is bound to
+/// GL_PIXEL_PACK_BUFFER, into that buffer at the offset `values` gives; each entry converted
+/// by `convert`.
 ///
 /// # Safety
-/// `values` must have room for the table (GL_PIXEL_MAP_*_SIZE entries).
-unsafe fn write_map<T>(map: GLenum, values: *mut T, convert: impl Fn(f32, bool) -> T) {
+/// When no pack buffer is bound, `values` must have room for the table
+/// (GL_PIXEL_MAP_*_SIZE entries).
+unsafe fn write_map<T: MapEntry>(map: GLenum, values: *mut T, convert: impl Fn(f32, bool) -> T) {
     with_context((), |ctx| {
-        if let Some(table) = ctx.get_pixel_map(map) {
-            let color = !matches!(map, crate::gl::enums::GL_PIXEL_MAP_I_TO_I | crate::gl::enums::GL_PIXEL_MAP_S_TO_S);
-            // SAFETY: the caller provides room for the whole table (or passes NULL).
-            unsafe { caller_memory::write_all(values, table.iter().map(|&v| convert(v, color))) }
+        let Some(table) = ctx.get_pixel_map(map) else { return };
+        let color = !matches!(map, crate::gl::enums::GL_PIXEL_MAP_I_TO_I | crate::gl::enums::GL_PIXEL_MAP_S_TO_S);
+        // SAFETY: forwarded contract (room for the whole table, or NULL).
+        let mut dest = unsafe { PackDest::new(ctx, values as *mut GLvoid, T::BYTES) };
+        match dest.bytes_mut(0..table.len() * T::BYTES) {
+            Ok(Some(out)) => {
+                for (entry, &v) in out.chunks_exact_mut(T::BYTES).zip(&table) {
+                    convert(v, color).to_bytes(entry);
+                }
+            }
+            Ok(None) => {}
+            Err(error) => ctx.error(error),
         }
+        dest.finish();
     })
 }
 

@@ -1,9 +1,11 @@
 //! Entry points for glReadPixels and glPixelStore.
-use super::caller_memory;
+use super::pixel_source::PackDest;
 use super::with_context;
+use crate::context::pixel_buffers::element_size;
 use crate::gl::types::*;
 
 /// # Safety
+/// Unless a buffer is bound to GL_PIXEL_PACK_BUFFER (then `pixels` is an offset into it),
 /// `pixels` must point to client memory laid out as the pack parameters describe for a
 /// `width` × `height` image of `format`/`type` (GL's contract for glReadPixels); only the
 /// bytes of the pixels inside the framebuffer are written. NULL writes nothing.
@@ -18,12 +20,14 @@ pub unsafe extern "C" fn glReadPixels(
     pixels: *mut GLvoid,
 ) {
     with_context((), |ctx| {
-        ctx.read_pixels(x, y, width, height, format, type_, |span| {
-            // SAFETY: the context computed `span` from the pack parameters as the bytes of
-            // the client image that the clipped read writes; by glReadPixels' contract the
-            // caller's image holds them, and nothing else accesses that memory during the call.
-            unsafe { caller_memory::bytes_mut(pixels, span) }
-        })
+        // SAFETY: forwarded contract.
+        let mut dest = unsafe { PackDest::new(ctx, pixels, element_size(type_)) };
+        let out = &mut dest;
+        ctx.read_pixels(x, y, width, height, format, type_, move |span| {
+            let out = out;
+            out.bytes_mut(span)
+        });
+        dest.finish();
     })
 }
 

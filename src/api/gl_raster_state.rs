@@ -1,6 +1,7 @@
 //! Entry points for the rasterization state: shading, faces, polygon modes and offset, lines,
 //! points and the polygon stipple.
 use super::caller_memory;
+use super::pixel_source::{PackDest, UnpackSource};
 use super::{record_or_run, with_context};
 use crate::context::Context;
 use crate::gl::types::*;
@@ -152,11 +153,9 @@ pub unsafe extern "C" fn glPointParameterfvEXT(pname: GLenum, params: *const GLf
 #[no_mangle]
 pub unsafe extern "C" fn glPolygonStipple(mask: *const GLubyte) {
     with_context((), |ctx| {
-        let pattern = ctx.unpack_polygon_stipple(|span| {
-            // SAFETY: the context computed `span` from the unpack parameters as the bytes the
-            // 32×32 bitmap occupies; by glPolygonStipple's contract the caller's image holds them.
-            unsafe { caller_memory::bytes(mask, span) }
-        });
+        // SAFETY: forwarded contract (a bitmap: no element alignment).
+        let source = unsafe { UnpackSource::new(ctx, mask as *const GLvoid, 0) };
+        let pattern = ctx.unpack_polygon_stipple(|span| source.bytes(span));
         ctx.record_or_run(move |ctx| ctx.set_polygon_stipple(pattern))
     })
 }
@@ -167,11 +166,13 @@ pub unsafe extern "C" fn glPolygonStipple(mask: *const GLubyte) {
 #[no_mangle]
 pub unsafe extern "C" fn glGetPolygonStipple(mask: *mut GLubyte) {
     with_context((), |ctx| {
-        ctx.get_polygon_stipple(|span| {
-            // SAFETY: the context computed `span` from the pack parameters as the bytes the
-            // 32×32 bitmap occupies; by glGetPolygonStipple's contract the caller provides them,
-            // and nothing else accesses that memory during the call.
-            unsafe { caller_memory::bytes_mut(mask, span) }
-        })
+        // SAFETY: forwarded contract (a bitmap: no element alignment).
+        let mut dest = unsafe { PackDest::new(ctx, mask as *mut GLvoid, 0) };
+        let out = &mut dest;
+        ctx.get_polygon_stipple(move |span| {
+            let out = out;
+            out.bytes_mut(span)
+        });
+        dest.finish();
     })
 }

@@ -2,42 +2,54 @@
 //! texture coordinate generation. Compressed images are refused (no compressed format is
 //! supported or advertised).
 use super::caller_memory::{self, read_array};
+use super::pixel_source::{PackDest, UnpackSource};
 use super::{guard, record_or_run, with_context};
+use crate::context::pixel_buffers::{element_size, ClientBytes};
 use crate::context::texture::{ImageArgs, Region};
 use crate::gl::types::*;
 use std::ops::Range;
 
 /// Runs an image command now, or, while a display list is compiled, records it with a copy
 /// of the client image read under the unpack state of this moment (GL 2.1 §5.4), which is
-/// restored around the command when the list runs.
+/// restored around the command when the list runs. The image is the caller's memory or, while
+/// a buffer is bound to GL_PIXEL_UNPACK_BUFFER, that buffer (also when compiled: the list
+/// keeps a copy of the buffer's bytes; a refused buffer access is recorded then, as Mesa
+/// does, and the list's command reads no image).
 ///
 /// # Safety
-/// A non-null `pixels` must hold the image as the unpack parameters describe it.
+/// A non-null `pixels` must hold the image as the unpack parameters describe it (when no
+/// unpack buffer is bound).
 unsafe fn image_command(
     pixels: *const GLvoid,
     dims: usize,
     format: GLenum,
     ty: GLenum,
     size: [GLsizei; 3],
-    run: impl for<'b> Fn(&mut crate::context::Context, &'b dyn Fn(Range<usize>) -> Option<&'b [u8]>) + Send + Sync + 'static,
+    run: impl for<'b> Fn(&mut crate::context::Context, &'b dyn Fn(Range<usize>) -> ClientBytes<'b>) + Send + Sync + 'static,
 ) {
     with_context((), |ctx| {
+        // SAFETY: forwarded contract.
+        let source = unsafe { UnpackSource::new(ctx, pixels, element_size(ty)) };
         if !ctx.lists.compiling() {
-            // SAFETY: the context computes `span` from the unpack parameters as the bytes of
-            // the client image the call reads; by the command's contract the caller's image
-            // holds them.
-            return run(ctx, &|span| unsafe { caller_memory::bytes(pixels, span) });
+            return run(ctx, &|span| source.bytes(span));
         }
         let unpack = ctx.pixel_store.unpack;
-        let copy = ctx.client_image_span(dims, format, ty, size).and_then(|span| {
-            // SAFETY: as above, for the bytes the unpack parameters of this moment place the image in.
-            unsafe { caller_memory::bytes(pixels, span.clone()) }.map(|bytes| (span.start, bytes.to_vec()))
-        });
+        let copy = match ctx.client_image_span(dims, format, ty, size).map(|span| (span.clone(), source.bytes(span))) {
+            Some((span, Ok(bytes))) => bytes.map(|bytes| (span.start, bytes.to_vec())),
+            Some((_, Err(error))) => {
+                ctx.error(error);
+                None
+            }
+            None => None,
+        };
         ctx.record_or_run(move |ctx| {
             let saved = std::mem::replace(&mut ctx.pixel_store.unpack, unpack);
             let read = |span: Range<usize>| {
-                let (start, bytes) = copy.as_ref()?;
-                bytes.get(span.start.checked_sub(*start)?..span.end.checked_sub(*start)?)
+                let Some((start, bytes)) = copy.as_ref() else { return Ok(None) };
+                let (Some(from), Some(to)) = (span.start.checked_sub(*start), span.end.checked_sub(*start)) else {
+                    return Ok(None);
+                };
+                Ok(bytes.get(from..to))
             };
             run(ctx, &read);
             ctx.pixel_store.unpack = saved;
@@ -330,12 +342,14 @@ pub unsafe extern "C" fn glGetTexImage(
     pixels: *mut GLvoid,
 ) {
     with_context((), |ctx| {
-        ctx.get_tex_image(target, level, format, type_, |span| {
-            // SAFETY: the context computed `span` from the pack parameters as the bytes of
-            // the client image the call writes; by glGetTexImage's contract the caller's
-            // memory holds them.
-            unsafe { caller_memory::bytes_mut(pixels, span) }
-        })
+        // SAFETY: forwarded contract.
+        let mut dest = unsafe { PackDest::new(ctx, pixels, element_size(type_)) };
+        let out = &mut dest;
+        ctx.get_tex_image(target, level, format, type_, move |span| {
+            let out = out;
+            out.bytes_mut(span)
+        });
+        dest.finish();
     })
 }
 

@@ -34,6 +34,7 @@ pub mod gl_vertex;
 /// cbindgen:ignore
 pub mod glx;
 pub mod osmesa;
+mod pixel_source;
 pub mod procs;
 pub mod tessera_ext;
 

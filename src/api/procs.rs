@@ -135,6 +135,8 @@ mod tests {
             | "GL_EXT_bgra"
             | "GL_EXT_packed_depth_stencil"
             | "GL_EXT_packed_pixels"
+            | "GL_ARB_pixel_buffer_object"
+            | "GL_EXT_pixel_buffer_object"
             | "GL_EXT_rescale_normal"
             | "GL_EXT_separate_specular_color"
             | "GL_EXT_shadow_funcs"

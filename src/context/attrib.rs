@@ -259,6 +259,14 @@ impl Context {
         }
         match self.client_attrib_stack.pop() {
             Some(saved) => {
+                if let Some(store) = &saved.pixel_store {
+                    // The pixel buffer bindings come back as glBindBuffer binds them (a
+                    // buffer deleted since is a new, empty buffer of the same name), as the
+                    // array bindings do.
+                    let mut buffers = self.buffers.lock();
+                    buffers.create_on_bind(store.pack_buffer);
+                    buffers.create_on_bind(store.unpack_buffer);
+                }
                 restore(&mut self.pixel_store, saved.pixel_store);
                 if let Some(arrays) = saved.vertex_arrays {
                     self.restore_client_arrays(arrays);

@@ -1803,7 +1803,7 @@ mod tests {
             depth: 1,
             border: 0,
         };
-        ctx.tex_image(2, args, format, ty, |_| None);
+        ctx.tex_image(2, args, format, ty, |_| Ok(None));
         ctx.framebuffer_texture(2, GL_FRAMEBUFFER, attachment, GL_TEXTURE_2D, tex, 0, 0);
         tex
     }
@@ -1908,7 +1908,7 @@ mod tests {
             depth: 3,
             border: 0,
         };
-        ctx.tex_image(3, args, GL_RGBA, GL_UNSIGNED_BYTE, |_| None);
+        ctx.tex_image(3, args, GL_RGBA, GL_UNSIGNED_BYTE, |_| Ok(None));
         ctx.framebuffer_texture(3, GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_3D, tex, 0, 1);
         assert_eq!(ctx.check_framebuffer_status(GL_FRAMEBUFFER), GL_FRAMEBUFFER_COMPLETE);
         ctx.state.color.clear_color = [1.0, 1.0, 1.0, 1.0];

@@ -31,6 +31,7 @@ pub mod lighting;
 pub mod lists;
 pub mod matrix;
 pub mod multisample;
+pub mod pixel_buffers;
 pub mod pixel_rect;
 pub mod programs;
 pub mod queries;

@@ -25,6 +25,7 @@
 //! GL_COLOR_INDEX (RGBA mode): indices shifted and offset, through I_TO_I under
 //! GL_MAP_COLOR, then through the I_TO_[RGBA] maps to colors (Mesa 22 matches without
 //! shift, offset or GL_MAP_COLOR, which it ignores for this format).
+use super::pixel_buffers::ClientBytes;
 use super::read_pixels::{check_format_and_type, read_format, unknown_format_error, ReadFormat};
 use super::selection::FeedbackVertex;
 use super::state::PixelTransfer;
@@ -84,7 +85,7 @@ impl Context {
         &self,
         width: i32,
         height: i32,
-        source: impl FnOnce(Range<usize>) -> Option<&'a [u8]>,
+        source: impl FnOnce(Range<usize>) -> ClientBytes<'a>,
     ) -> Result<Option<Arc<Vec<bool>>>, GLenum> {
         if width < 0 || height < 0 {
             return Err(GL_INVALID_VALUE);
@@ -98,7 +99,7 @@ impl Context {
             ImageLayout::new(ClientFormat::StencilIndex, ClientType::Bitmap, &modes, w).ok_or(GL_INVALID_VALUE)?;
         let span = layout.span(0..w, 0..h).ok_or(GL_INVALID_VALUE)?;
         let start = span.start;
-        let Some(client) = source(span) else {
+        let Some(client) = source(span)? else {
             return Ok(None);
         };
         let mut bits = Vec::new();
@@ -185,7 +186,7 @@ impl Context {
         height: i32,
         format: GLenum,
         ty: GLenum,
-        source: impl FnOnce(Range<usize>) -> Option<&'a [u8]>,
+        source: impl FnOnce(Range<usize>) -> ClientBytes<'a>,
     ) -> Result<Option<DrawPixelsData>, GLenum> {
         if width < 0 || height < 0 {
             return Err(GL_INVALID_VALUE);
@@ -205,7 +206,7 @@ impl Context {
         let layout = ImageLayout::new(format, client_type, &modes, w).ok_or(GL_INVALID_VALUE)?;
         let span = layout.span(0..w, 0..h).ok_or(GL_INVALID_VALUE)?;
         let start = span.start;
-        let Some(client) = source(span) else {
+        let Some(client) = source(span)? else {
             return Ok(None);
         };
         let pixel_bytes = layout.pixel_bytes();
@@ -518,7 +519,7 @@ impl Context {
             _ => GL_FLOAT,
         };
         let earlier = self.take_error();
-        self.read_pixels(x, y, width, height, format, read_type, |span| bytes.get_mut(span));
+        self.read_pixels(x, y, width, height, format, read_type, |span| Ok(bytes.get_mut(span)));
         let read_error = self.take_error();
         self.error(earlier);
         self.pixel_store.pack = saved;
@@ -526,7 +527,7 @@ impl Context {
             return self.error(read_error);
         }
         let saved = std::mem::replace(&mut self.pixel_store.unpack, tight);
-        let data = self.unpack_draw_pixels(width, height, format, read_type, |span| bytes.get(span));
+        let data = self.unpack_draw_pixels(width, height, format, read_type, |span| Ok(bytes.get(span)));
         self.pixel_store.unpack = saved;
         drop(bytes);
         let saved_window = self.state.current.raster.window;

@@ -13,6 +13,7 @@
 //! glGetPolygonStipple writes it with the pack modes. Packing writes only the pattern's bits:
 //! Mesa 22 zeroes the rest of the first and last byte of each row when GL_PACK_SKIP_PIXELS is
 //! not a multiple of 8, which tessera does not copy.
+use super::pixel_buffers::{ClientBytes, ClientBytesMut};
 use super::Context;
 use crate::gl::enums::*;
 use crate::gl::limits::{MAX_LINE_WIDTH, MAX_POINT_SIZE};
@@ -227,7 +228,7 @@ impl Context {
 
     /// glPolygonStipple: `source` maps the span of client bytes the pattern occupies under the
     /// unpack modes to those bytes (`None`: a NULL pointer, which changes nothing).
-    pub fn polygon_stipple<'a>(&mut self, source: impl FnOnce(Range<usize>) -> Option<&'a [u8]>) {
+    pub fn polygon_stipple<'a>(&mut self, source: impl FnOnce(Range<usize>) -> ClientBytes<'a>) {
         let pattern = self.unpack_polygon_stipple(source);
         self.set_polygon_stipple(pattern)
     }
@@ -236,12 +237,12 @@ impl Context {
     /// read when the command is issued (also when it is compiled into a display list).
     pub fn unpack_polygon_stipple<'a>(
         &self,
-        source: impl FnOnce(Range<usize>) -> Option<&'a [u8]>,
+        source: impl FnOnce(Range<usize>) -> ClientBytes<'a>,
     ) -> Result<Option<[u32; 32]>, GLenum> {
         let modes = PackModes::from(&self.pixel_store.unpack);
         let (layout, span) = stipple_layout(&modes).ok_or(GL_INVALID_VALUE)?;
         let start = span.start;
-        Ok(source(span).and_then(|client| unpack_stipple(client, &layout, start, modes.lsb_first)))
+        Ok(source(span)?.and_then(|client| unpack_stipple(client, &layout, start, modes.lsb_first)))
     }
 
     /// glPolygonStipple with its pattern already read.
@@ -258,7 +259,7 @@ impl Context {
 
     /// glGetPolygonStipple: `dest` maps the span of client bytes the pattern occupies under
     /// the pack modes to those bytes (`None`: a NULL pointer, which writes nothing).
-    pub fn get_polygon_stipple<'a>(&mut self, dest: impl FnOnce(Range<usize>) -> Option<&'a mut [u8]>) {
+    pub fn get_polygon_stipple<'a>(&mut self, dest: impl FnOnce(Range<usize>) -> ClientBytesMut<'a>) {
         if !self.check_outside_begin_end() {
             return;
         }
@@ -267,8 +268,10 @@ impl Context {
             return self.error(GL_INVALID_VALUE);
         };
         let start = span.start;
-        if let Some(client) = dest(span) {
-            pack_stipple(&self.state.polygon_stipple, client, &layout, start, modes.lsb_first);
+        match dest(span) {
+            Ok(Some(client)) => pack_stipple(&self.state.polygon_stipple, client, &layout, start, modes.lsb_first),
+            Ok(None) => {}
+            Err(error) => self.error(error),
         }
     }
 }
@@ -398,11 +401,11 @@ mod tests {
         }
         ctx.polygon_stipple(|span| {
             assert_eq!(span, 0..128);
-            Some(&bytes[span])
+            Ok(Some(&bytes[span]))
         });
         assert_eq!(ctx.state.polygon_stipple, pattern());
         let mut out = [0u8; 128];
-        ctx.get_polygon_stipple(|span| Some(&mut out[span]));
+        ctx.get_polygon_stipple(|span| Ok(Some(&mut out[span])));
         assert_eq!(out.to_vec(), bytes);
     }
 
@@ -423,7 +426,7 @@ mod tests {
         }
         ctx.polygon_stipple(|span| {
             assert_eq!(span, 16..(33 * 8 + 5));
-            Some(&client[span])
+            Ok(Some(&client[span]))
         });
         assert_eq!(ctx.state.polygon_stipple, pattern());
 
@@ -431,7 +434,7 @@ mod tests {
         let p = &mut ctx.pixel_store.pack;
         (p.lsb_first, p.skip_pixels, p.skip_rows, p.row_length, p.alignment) = (true, 3, 2, 40, 8);
         let mut out = vec![0xa5u8; 8 * 34];
-        ctx.get_polygon_stipple(|span| Some(&mut out[span]));
+        ctx.get_polygon_stipple(|span| Ok(Some(&mut out[span])));
         for (i, (&o, &c)) in out.iter().zip(&client).enumerate() {
             let (row, byte) = (i / 8, i % 8);
             let inside = (2..34).contains(&row) && byte < 5;
@@ -455,7 +458,7 @@ mod tests {
         let client: Vec<u8> = (0..=255).collect();
         ctx.polygon_stipple(|span| {
             assert_eq!(span, 1..129);
-            Some(&client[span])
+            Ok(Some(&client[span]))
         });
         // Row r is bytes 4r+1 .. 4r+4 of the client image.
         assert_eq!(ctx.state.polygon_stipple[0], 0x0102_0304);
@@ -464,7 +467,7 @@ mod tests {
         let mut out = [0u8; 132];
         ctx.get_polygon_stipple(|span| {
             assert_eq!(span, 2..130);
-            Some(&mut out[span])
+            Ok(Some(&mut out[span]))
         });
         assert_eq!(&out[..7], &[0, 0, 1, 2, 3, 4, 5]);
         assert_eq!(&out[128..], &[0x7f, 0x80, 0, 0]);
@@ -476,11 +479,11 @@ mod tests {
         let mut bytes = [0u8; 128];
         bytes[0] = 0x80; // row 0, leftmost pixel
         bytes[127] = 0x01; // row 31, rightmost pixel
-        ctx.polygon_stipple(|span| Some(&bytes[span]));
+        ctx.polygon_stipple(|span| Ok(Some(&bytes[span])));
         assert_eq!(ctx.state.polygon_stipple[0], 0x8000_0000);
         assert_eq!(ctx.state.polygon_stipple[31], 1);
         ctx.pixel_store.unpack.lsb_first = true;
-        ctx.polygon_stipple(|span| Some(&bytes[span]));
+        ctx.polygon_stipple(|span| Ok(Some(&bytes[span])));
         assert_eq!(ctx.state.polygon_stipple[0], 0x0100_0000);
         assert_eq!(ctx.state.polygon_stipple[31], 0x80);
     }
@@ -488,8 +491,8 @@ mod tests {
     #[test]
     fn null_stipple_pointers_change_nothing() {
         let mut ctx = context();
-        ctx.polygon_stipple(|_| None);
-        ctx.get_polygon_stipple(|_| None);
+        ctx.polygon_stipple(|_| Ok(None));
+        ctx.get_polygon_stipple(|_| Ok(None));
         assert_eq!(ctx.state, State::new(GL_FRONT));
         assert_eq!(ctx.take_error(), GL_NO_ERROR);
     }
@@ -512,7 +515,7 @@ mod tests {
             |c| c.point_parameter(GL_POINT_SIZE_MIN, [2.0, 0.0, 0.0]),
             |c| c.point_parameter(0xdead, [2.0, 0.0, 0.0]),
             |c| c.line_width(-1.0),
-            |c| c.polygon_stipple(|_| Some(&[0u8; 128][..])),
+            |c| c.polygon_stipple(|_| Ok(Some(&[0u8; 128][..]))),
             |c| c.get_polygon_stipple(|_| panic!("must not write")),
         ];
         for command in commands {

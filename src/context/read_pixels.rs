@@ -22,6 +22,7 @@
 //! only for fixed-point buffers, as the specification and ARB_color_buffer_float define it)
 //! or when the type is not a float type. Mesa 22 treats its OSMesa float buffers as
 //! fixed-point here and clamps them under GL_FIXED_ONLY; tessera does not.
+use super::pixel_buffers::ClientBytesMut;
 use super::state::PixelStoreModes;
 use super::Context;
 use crate::framebuffer::{Framebuffer, Rect};
@@ -251,15 +252,17 @@ impl Context {
         height: i32,
         format: GLenum,
         ty: GLenum,
-        dest: impl FnOnce(Range<usize>) -> Option<&'a mut [u8]>,
+        dest: impl FnOnce(Range<usize>) -> ClientBytesMut<'a>,
     ) {
         let Some(job) = self.validate_read(x, y, width, height, format, ty) else {
             return;
         };
         // Rendering recorded so far completes before the read (a flush point).
         self.flush_rendering();
-        let Some(out) = dest(job.span.clone()) else {
-            return;
+        let out = match dest(job.span.clone()) {
+            Ok(Some(out)) => out,
+            Ok(None) => return,
+            Err(error) => return self.error(error),
         };
         let slot = self.current_read_slot();
         let _ = self.with_read_framebuffer(|fb| read_into(fb, slot, &job, out));
@@ -444,7 +447,7 @@ mod tests {
     }
 
     fn read(ctx: &mut Context, rect: [i32; 4], format: GLenum, ty: GLenum, buffer: &mut [u8]) -> GLenum {
-        ctx.read_pixels(rect[0], rect[1], rect[2], rect[3], format, ty, |span| buffer.get_mut(span));
+        ctx.read_pixels(rect[0], rect[1], rect[2], rect[3], format, ty, |span| Ok(buffer.get_mut(span)));
         ctx.take_error()
     }
 
@@ -524,7 +527,7 @@ mod tests {
         let mut asked = None;
         ctx.read_pixels(1, 1, 2, 2, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, |span| {
             asked = Some(span.clone());
-            buf.get_mut(span)
+            Ok(buf.get_mut(span))
         });
         // Rows 8 bytes apart (5 rounded up to 8), first row after one skipped row.
         assert_eq!(asked, Some(10..20));

@@ -529,6 +529,10 @@ impl Default for PixelStoreModes {
 pub struct PixelStoreState {
     pub pack: PixelStoreModes,
     pub unpack: PixelStoreModes,
+    /// The buffers bound to GL_PIXEL_PACK_BUFFER and GL_PIXEL_UNPACK_BUFFER (0: none, the
+    /// pointer arguments are client memory). Saved with this group, as Mesa saves them.
+    pub pack_buffer: u32,
+    pub unpack_buffer: u32,
 }
 
 /// GL_CURRENT_BIT: the current vertex attributes (what glColor, glNormal, ... set).

@@ -64,6 +64,7 @@ pub const VERSION: &str = concat!("1.5 tessera ", env!("CARGO_PKG_VERSION"), "\0
 // |                      | polygon offset r = 2^(e − 23) of the largest depth | works | context/draw.rs float_depth_resolution; capi depth_buffer_float |
 // |                      | glBlitFramebuffer float ↔ fixed depth: GL_INVALID_OPERATION (formats differ, as Mesa) | works | capi depth_buffer_float |
 // |                      | GL_FLOAT_32_UNSIGNED_INT_24_8_REV pixel type  | see below | |
+// | GL_ARB_pixel_buffer_object | pack and unpack buffer targets (GL 2.1): glReadPixels, glGetTexImage, glGetPolygonStipple, glGetPixelMap into a buffer; glTexImage*, glTexSubImage*, glDrawPixels, glBitmap, glPolygonStipple, glPixelMap from one (also while compiling a list); range, alignment and mapping errors | works | context/pixel_buffers.rs; capi pixel_buffer_objects |
 //
 // Outside these lists but needed by every version: GL 1.0's evaluators (capi evaluators),
 // polygon/line/point smoothing (capi smooth_primitives), and color-index pixel data in RGBA
@@ -88,6 +89,7 @@ pub const EXTENSIONS: &[&str] = &[
     "GL_ARB_multitexture",
     "GL_ARB_occlusion_query",
     "GL_ARB_framebuffer_object",
+    "GL_ARB_pixel_buffer_object",
     "GL_ARB_point_parameters",
     "GL_ARB_shadow",
     "GL_ARB_texture_border_clamp",
@@ -116,6 +118,7 @@ pub const EXTENSIONS: &[&str] = &[
     "GL_EXT_multi_draw_arrays",
     "GL_EXT_packed_depth_stencil",
     "GL_EXT_packed_pixels",
+    "GL_EXT_pixel_buffer_object",
     "GL_EXT_point_parameters",
     "GL_EXT_polygon_offset_clamp",
     "GL_EXT_provoking_vertex",

@@ -16,6 +16,7 @@
 //! (glCompressedTexImage* is GL_INVALID_ENUM). GL_COLOR_INDEX image data (every index type,
 //! GL_BITMAP included) becomes RGBA through GL_INDEX_SHIFT/OFFSET and the GL_PIXEL_MAP_I_TO_*
 //! tables (GL 2.1 §3.6.5, "Color Index Lookup"); glGetTexImage cannot return indices.
+use super::pixel_buffers::{ClientBytes, ClientBytesMut};
 use super::Context;
 use crate::framebuffer::format::DepthEncoding;
 use crate::gl::enums::*;
@@ -727,7 +728,7 @@ impl Context {
         a: ImageArgs,
         format: GLenum,
         ty: GLenum,
-        data: impl FnOnce(Range<usize>) -> Option<&'a [u8]>,
+        data: impl FnOnce(Range<usize>) -> ClientBytes<'a>,
     ) {
         let Some((it, info, pair)) = self.check_tex_image(dims, &a, Some((format, ty)), true) else {
             return;
@@ -760,7 +761,12 @@ impl Context {
         let Some(span) = client.span(iw, ih, id) else {
             return self.error(GL_INVALID_VALUE);
         };
-        if let Some(bytes) = if span.is_empty() { None } else { data(span.clone()) } {
+        let bytes = if span.is_empty() { Ok(None) } else { data(span.clone()) };
+        let bytes = match bytes {
+            Ok(bytes) => bytes,
+            Err(error) => return self.error(error),
+        };
+        if let Some(bytes) = bytes {
             let unpack = Unpack {
                 swap: self.pixel_store.unpack.swap_bytes,
                 lsb_first: self.pixel_store.unpack.lsb_first,
@@ -838,7 +844,7 @@ impl Context {
         r: Region,
         format: GLenum,
         ty: GLenum,
-        data: impl FnOnce(Range<usize>) -> Option<&'a [u8]>,
+        data: impl FnOnce(Range<usize>) -> ClientBytes<'a>,
     ) {
         if !self.check_outside_begin_end() {
             return;
@@ -869,8 +875,10 @@ impl Context {
         if span.is_empty() {
             return;
         }
-        let Some(bytes) = data(span.clone()) else {
-            return;
+        let bytes = match data(span.clone()) {
+            Ok(Some(bytes)) => bytes,
+            Ok(None) => return,
+            Err(error) => return self.error(error),
         };
         self.flush_rendering();
         let unpack = Unpack {
@@ -1266,7 +1274,7 @@ impl Context {
         level: i32,
         format: GLenum,
         ty: GLenum,
-        dest: impl FnOnce(Range<usize>) -> Option<&'a mut [u8]>,
+        dest: impl FnOnce(Range<usize>) -> ClientBytesMut<'a>,
     ) {
         if !self.check_outside_begin_end() {
             return;
@@ -1324,7 +1332,11 @@ impl Context {
         if span.is_empty() {
             return;
         }
-        let Some(out) = dest(span.clone()) else { return };
+        let out = match dest(span.clone()) {
+            Ok(Some(out)) => out,
+            Ok(None) => return,
+            Err(error) => return self.error(error),
+        };
         let swap = self.pixel_store.pack.swap_bytes;
         for z in 0..d {
             for y in 0..h {

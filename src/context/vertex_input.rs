@@ -207,6 +207,8 @@ impl Context {
 
             GL_ARRAY_BUFFER_BINDING => vec![Int(arrays.array_buffer as i32)],
             GL_ELEMENT_ARRAY_BUFFER_BINDING => vec![Int(arrays.element_array_buffer as i32)],
+            GL_PIXEL_PACK_BUFFER_BINDING => vec![Int(self.pixel_store.pack_buffer as i32)],
+            GL_PIXEL_UNPACK_BUFFER_BINDING => vec![Int(self.pixel_store.unpack_buffer as i32)],
             GL_VERTEX_ARRAY_BUFFER_BINDING => binding(ArrayId::Vertex),
             GL_NORMAL_ARRAY_BUFFER_BINDING => binding(ArrayId::Normal),
             GL_COLOR_ARRAY_BUFFER_BINDING => binding(ArrayId::Color),

@@ -10,12 +10,14 @@ use crate::gl::enums::*;
 use crate::gl::names::NameTable;
 use crate::gl::types::GLenum;
 
-/// The binding points tessera implements (GL_PIXEL_PACK/UNPACK_BUFFER belong to GL 2.1,
-/// which is not advertised, and are refused).
+/// The binding points tessera implements: vertex arrays and indices (GL 1.5), the pixel
+/// pack and unpack buffers (GL 2.1, ARB_pixel_buffer_object).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum BufferTarget {
     Array,
     ElementArray,
+    PixelPack,
+    PixelUnpack,
 }
 
 impl BufferTarget {
@@ -23,6 +25,8 @@ impl BufferTarget {
         match e {
             GL_ARRAY_BUFFER => Some(Self::Array),
             GL_ELEMENT_ARRAY_BUFFER => Some(Self::ElementArray),
+            GL_PIXEL_PACK_BUFFER => Some(Self::PixelPack),
+            GL_PIXEL_UNPACK_BUFFER => Some(Self::PixelUnpack),
             _ => None,
         }
     }
@@ -238,7 +242,9 @@ mod tests {
     fn targets_usages_and_accesses() {
         assert_eq!(BufferTarget::from_gl(GL_ARRAY_BUFFER), Some(BufferTarget::Array));
         assert_eq!(BufferTarget::from_gl(GL_ELEMENT_ARRAY_BUFFER), Some(BufferTarget::ElementArray));
-        assert_eq!(BufferTarget::from_gl(GL_PIXEL_PACK_BUFFER), None);
+        assert_eq!(BufferTarget::from_gl(GL_PIXEL_PACK_BUFFER), Some(BufferTarget::PixelPack));
+        assert_eq!(BufferTarget::from_gl(GL_PIXEL_UNPACK_BUFFER), Some(BufferTarget::PixelUnpack));
+        assert_eq!(BufferTarget::from_gl(GL_PIXEL_UNPACK_BUFFER + 1), None);
         assert!(is_usage(GL_DYNAMIC_COPY) && is_usage(GL_STREAM_DRAW) && !is_usage(GL_STREAM_DRAW + 3));
         assert!(is_access(GL_READ_ONLY) && is_access(GL_READ_WRITE) && !is_access(GL_READ_WRITE + 1));
     }

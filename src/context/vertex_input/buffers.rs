@@ -1,14 +1,15 @@
 //! The buffer object commands (GL 1.5 and ARB_vertex_buffer_object): glGenBuffers,
 //! glBindBuffer, glBufferData, glBufferSubData, glGetBufferSubData, glMapBuffer,
-//! glUnmapBuffer, glGetBufferParameteriv, glGetBufferPointerv, glIsBuffer, glDeleteBuffers.
+//! glUnmapBuffer, glGetBufferParameteriv, glGetBufferPointerv, glIsBuffer, glDeleteBuffers;
+//! on the vertex array and index targets and on the pixel pack and unpack targets (GL 2.1,
+//! ARB_pixel_buffer_object: what the pixel commands do with them is `super::super::pixel_buffers`).
 //!
 //! Errors come in Mesa 22's order: the target (GL_INVALID_ENUM), the bound buffer
 //! (GL_INVALID_OPERATION when none), then the arguments, then the mapping.
 //!
-//! Deliberate differences from Mesa 22: GL_PIXEL_PACK_BUFFER, GL_PIXEL_UNPACK_BUFFER and the
-//! later targets are GL_INVALID_ENUM (GL 2.1 is not advertised and pixel transfers do not read
-//! buffers); a failed glBufferData (GL_OUT_OF_MEMORY) keeps the old contents, where Mesa leaves
-//! an empty buffer.
+//! Deliberate differences from Mesa 22: the targets of later versions (uniform, texture,
+//! copy buffers...) are GL_INVALID_ENUM; a failed glBufferData (GL_OUT_OF_MEMORY) keeps the
+//! old contents, where Mesa leaves an empty buffer.
 use super::Context;
 use crate::gl::enums::*;
 use crate::gl::types::{GLenum, GLint};
@@ -20,6 +21,8 @@ impl Context {
         match target {
             BufferTarget::Array => self.vertex_input.arrays.array_buffer,
             BufferTarget::ElementArray => self.vertex_input.arrays.element_array_buffer,
+            BufferTarget::PixelPack => self.pixel_store.pack_buffer,
+            BufferTarget::PixelUnpack => self.pixel_store.unpack_buffer,
         }
     }
 
@@ -71,7 +74,7 @@ impl Context {
     }
 
     /// glDeleteBuffers of `names` (the first `n` of the caller's array). Bindings of the
-    /// deleted buffers in this context return to 0: the two binding points and every array
+    /// deleted buffers in this context return to 0: the four binding points and every array
     /// (which then draws nothing: its pointer was an offset into the deleted buffer).
     pub fn delete_buffers(&mut self, n: i32, names: &[u32]) {
         if !self.check_outside_begin_end() {
@@ -83,6 +86,11 @@ impl Context {
         for &name in names {
             if !self.buffers.lock().delete(name) {
                 continue;
+            }
+            for binding in [&mut self.pixel_store.pack_buffer, &mut self.pixel_store.unpack_buffer] {
+                if *binding == name {
+                    *binding = 0;
+                }
             }
             let arrays = &mut self.vertex_input.arrays;
             if arrays.array_buffer == name {
@@ -111,6 +119,8 @@ impl Context {
         match target {
             BufferTarget::Array => arrays.array_buffer = name,
             BufferTarget::ElementArray => arrays.element_array_buffer = name,
+            BufferTarget::PixelPack => self.pixel_store.pack_buffer = name,
+            BufferTarget::PixelUnpack => self.pixel_store.unpack_buffer = name,
         }
     }
 
@@ -294,7 +304,7 @@ mod tests {
     #[test]
     fn buffer_data_errors_in_mesas_order() {
         let mut ctx = context();
-        ctx.buffer_data(GL_PIXEL_PACK_BUFFER, 4, GL_STATIC_DRAW, |_| None);
+        ctx.buffer_data(GL_TEXTURE_2D, 4, GL_STATIC_DRAW, |_| None);
         assert_eq!(ctx.take_error(), GL_INVALID_ENUM);
         ctx.buffer_data(GL_ARRAY_BUFFER, -1, 0x1234, |_| None);
         assert_eq!(ctx.take_error(), GL_INVALID_OPERATION, "no buffer bound comes first");
@@ -358,6 +368,8 @@ mod tests {
         assert_eq!(ctx.get_buffer_parameter(GL_ELEMENT_ARRAY_BUFFER, 0x1234), None);
         assert_eq!(ctx.take_error(), GL_INVALID_ENUM);
         assert_eq!(ctx.get_buffer_parameter(GL_PIXEL_UNPACK_BUFFER, GL_BUFFER_SIZE), None);
+        assert_eq!(ctx.take_error(), GL_INVALID_OPERATION, "a pixel target with no buffer bound");
+        assert_eq!(ctx.get_buffer_parameter(GL_PIXEL_UNPACK_BUFFER + 1, GL_BUFFER_SIZE), None);
         assert_eq!(ctx.take_error(), GL_INVALID_ENUM);
     }
 
