@@ -21,7 +21,8 @@ pub unsafe extern "C" fn glReadPixels(
 ) {
     with_context((), |ctx| {
         // SAFETY: forwarded contract.
-        let mut dest = unsafe { PackDest::new(ctx, pixels, element_size(type_)) };
+        let mut dest = unsafe { PackDest::new(ctx, pixels, element_size(type_)) }
+            .whole_image(ctx.read_image_span(width, height, format, type_));
         let out = &mut dest;
         ctx.read_pixels(x, y, width, height, format, type_, move |span| {
             let out = out;

@@ -50,6 +50,9 @@ impl UnpackSource {
 pub(crate) struct PackDest {
     pointer: *mut u8,
     buffer: Option<PixelBuffer>,
+    /// The span the whole image occupies when the command writes only part of it (a clipped
+    /// glReadPixels): a buffer must hold all of it.
+    image: Option<Range<usize>>,
     /// The span the command wrote and the copy of the buffer's bytes it wrote into.
     written: Option<(Range<usize>, Vec<u8>)>,
 }
@@ -63,7 +66,13 @@ impl PackDest {
     /// nothing else accesses while this destination lives.
     pub unsafe fn new(ctx: &Context, pointer: *mut GLvoid, element: usize) -> PackDest {
         let buffer = ctx.pack_buffer(pointer as usize, element);
-        PackDest { pointer: pointer as *mut u8, buffer, written: None }
+        PackDest { pointer: pointer as *mut u8, buffer, image: None, written: None }
+    }
+
+    /// Requires a buffer to hold the whole image `span`, also where the command writes only
+    /// part of it.
+    pub fn whole_image(self, span: Option<Range<usize>>) -> PackDest {
+        PackDest { image: span, ..self }
     }
 
     /// The bytes of `span` (relative to the pointer) for the command to write.
@@ -74,6 +83,9 @@ impl PackDest {
             // them and nothing else accesses it.
             return Ok(unsafe { caller_memory::bytes_mut(self.pointer, span) });
         };
+        if let Some(image) = &self.image {
+            buffer.check(image.clone())?;
+        }
         let copy = buffer.read(span.clone())?;
         let (_, bytes) = self.written.insert((span, copy));
         Ok(Some(bytes))

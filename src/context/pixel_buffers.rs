@@ -12,7 +12,9 @@
 //! so after the command's own argument checks, in Mesa 22's order: GL_INVALID_OPERATION
 //! when the span passes the end of the buffer (a buffer of no storage has no span), when the
 //! offset is not a multiple of the size of the type's element (bitmaps excepted), or while
-//! the buffer is mapped; the command then changes nothing.
+//! the buffer is mapped; the command then changes nothing. A glReadPixels clipped by the
+//! window needs room for its whole image (`Context::read_image_span`), as GL 2.1 §4.3.2
+//! writes every pixel; one wholly outside the window writes nothing and is not checked.
 //!
 //! An unpack reads a copy of its span, taken while the (shared) buffer table is locked for
 //! just that copy: the command runs with the context borrowed and may take other locks. A
@@ -82,6 +84,11 @@ impl PixelBuffer {
         Ok(start..end)
     }
 
+    /// Whether the command may access `span` (relative to the offset) of the buffer.
+    pub fn check(&self, span: Range<usize>) -> Result<(), GLenum> {
+        self.range(self.table.lock().get(self.name), &span).map(|_| ())
+    }
+
     /// A copy of the bytes of `span` (relative to the offset).
     pub fn read(&self, span: Range<usize>) -> Result<Vec<u8>, GLenum> {
         let table = self.table.lock();
@@ -126,6 +133,8 @@ mod tests {
         assert_eq!(ctx.unpack_buffer(2, 1).unwrap().read(1..4), Ok(b"def".to_vec()));
         assert_eq!(ctx.unpack_buffer(2, 2).unwrap().read(0..6), Ok(b"cdefgh".to_vec()));
         assert_eq!(ctx.unpack_buffer(2, 2).unwrap().read(0..7), Err(GL_INVALID_OPERATION), "past the end");
+        assert_eq!(ctx.unpack_buffer(2, 2).unwrap().check(0..6), Ok(()));
+        assert_eq!(ctx.unpack_buffer(2, 2).unwrap().check(5..7), Err(GL_INVALID_OPERATION));
         assert_eq!(ctx.unpack_buffer(3, 2).unwrap().read(0..2), Err(GL_INVALID_OPERATION), "misaligned");
         assert_eq!(ctx.unpack_buffer(3, 0).unwrap().read(0..2), Ok(b"de".to_vec()), "bitmaps: no alignment");
         assert_eq!(ctx.unpack_buffer(usize::MAX, 1).unwrap().read(1..2), Err(GL_INVALID_OPERATION), "wraps");

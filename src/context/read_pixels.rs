@@ -268,6 +268,26 @@ impl Context {
         let _ = self.with_read_framebuffer(|fb| read_into(fb, slot, &job, out));
     }
 
+    /// The bytes of a whole `width` × `height` glReadPixels image of `format`/`ty` under the
+    /// pack state, before clipping: what a pixel pack buffer must hold, since GL 2.1 §4.3.2
+    /// writes every pixel of the image (undefined values outside the window). Deliberate
+    /// difference: Mesa 22 checks less and writes the rows of such a read past the end of the
+    /// buffer (capi pixel_buffer_objects). `None` when the arguments are invalid (the command
+    /// reports that) or the image is empty.
+    pub fn read_image_span(&self, width: i32, height: i32, format: GLenum, ty: GLenum) -> Option<Range<usize>> {
+        if width <= 0 || height <= 0 {
+            return None;
+        }
+        let client_format = match read_format(format)? {
+            ReadFormat::Client(f) => f,
+            ReadFormat::ColorIndex => ClientFormat::StencilIndex,
+        };
+        let client_ty = check_format_and_type(ReadFormat::Client(client_format), ty).ok()?;
+        let modes = PackModes::from(&self.pixel_store.pack);
+        let (w, h) = (width as usize, height as usize);
+        ImageLayout::new(client_format, client_ty, &modes, w)?.span(0..w, 0..h)
+    }
+
     /// Checks a glReadPixels call (recording the error) and works out its clipped rectangle
     /// and client layout; `None` when invalid, when nothing is inside the framebuffer or when
     /// no framebuffer is bound.
