@@ -15,9 +15,9 @@
 #   4. glxgears runs and its window shows the gears (not blank);
 #   5. piglit: every command of ../shared/piglit/fragment-ops.txt is run; each one
 #      tests/piglit/expected.txt marks "pass" must pass (a skip is not a pass).
-#   6. piglit's framebuffer-object tests, further GL 1.x tests and the pixel buffer object
-#      tests: each command tests/piglit/fbo-expected.txt, gl1x-expected.txt or
-#      pbo-expected.txt marks "pass" must pass.
+#   6. piglit's framebuffer-object tests, further GL 1.x tests and the tests of the GL 2.x
+#      features tessera has: each command tests/piglit/fbo-expected.txt, gl1x-expected.txt or
+#      gl2x-expected.txt marks "pass" must pass.
 # Needs xvfb, piglit, mesa-utils, freeglut3-dev, libglfw3-dev, x11-apps, libx11-dev, python3 (installed by
 # tools/setup-debian.sh). Without them it skips loudly, except under CI=true where it fails.
 set -euo pipefail
@@ -263,9 +263,9 @@ for c in "${unexpected_passes[@]}"; do
     echo "xvfb-tests: piglit $c now passes: mark it 'pass' in $expected"
 done
 
-# 6. piglit's framebuffer-object tests, further GL 1.x tests and the pixel buffer object
-#    tests: every command of tests/piglit/fbo-expected.txt, gl1x-expected.txt and pbo-expected.txt.
-for expectations in tests/piglit/fbo-expected.txt tests/piglit/gl1x-expected.txt tests/piglit/pbo-expected.txt; do
+# 6. piglit's framebuffer-object tests, further GL 1.x tests and the GL 2.x
+#    feature tests: every command of tests/piglit/fbo-expected.txt, gl1x-expected.txt and gl2x-expected.txt.
+for expectations in tests/piglit/fbo-expected.txt tests/piglit/gl1x-expected.txt tests/piglit/gl2x-expected.txt; do
     passed=0
     while read -r status command; do
         [[ -z $status || $status == \#* ]] && continue

@@ -136,6 +136,7 @@ mod tests {
             | "GL_EXT_packed_depth_stencil"
             | "GL_EXT_packed_pixels"
             | "GL_ARB_pixel_buffer_object"
+            | "GL_ARB_point_sprite"
             | "GL_EXT_pixel_buffer_object"
             | "GL_EXT_rescale_normal"
             | "GL_EXT_separate_specular_color"

@@ -64,6 +64,7 @@ pub const VERSION: &str = concat!("1.5 tessera ", env!("CARGO_PKG_VERSION"), "\0
 // |                      | polygon offset r = 2^(e − 23) of the largest depth | works | context/draw.rs float_depth_resolution; capi depth_buffer_float |
 // |                      | glBlitFramebuffer float ↔ fixed depth: GL_INVALID_OPERATION (formats differ, as Mesa) | works | capi depth_buffer_float |
 // |                      | GL_FLOAT_32_UNSIGNED_INT_24_8_REV pixel type  | see below | |
+// | GL_ARB_point_sprite (GL 2.0) | GL_POINT_SPRITE: squares of the unrounded size whatever GL_POINT_SMOOTH says, GL_COORD_REPLACE per unit (s, t across the square, r = 0, q = 1), GL_POINT_SPRITE_COORD_ORIGIN; llvmpipe's coordinate planes | works | setup/jobs/point.rs Sprite; capi point_sprites |
 // | GL_ARB_pixel_buffer_object | pack and unpack buffer targets (GL 2.1): glReadPixels, glGetTexImage, glGetPolygonStipple, glGetPixelMap into a buffer; glTexImage*, glTexSubImage*, glDrawPixels, glBitmap, glPolygonStipple, glPixelMap from one (also while compiling a list); range, alignment and mapping errors | works | context/pixel_buffers.rs; capi pixel_buffer_objects |
 //
 // Outside these lists but needed by every version: GL 1.0's evaluators (capi evaluators),
@@ -91,6 +92,7 @@ pub const EXTENSIONS: &[&str] = &[
     "GL_ARB_framebuffer_object",
     "GL_ARB_pixel_buffer_object",
     "GL_ARB_point_parameters",
+    "GL_ARB_point_sprite",
     "GL_ARB_shadow",
     "GL_ARB_texture_border_clamp",
     "GL_ARB_texture_compression",

@@ -35,6 +35,11 @@ impl Attribute {
         Attribute { kind: AttributeKind::TexCoord, unit: unit as u8, component: component as u8 }
     }
 
+    /// The texture unit and component of a texture coordinate attribute.
+    pub fn texture_coordinate(self) -> Option<(usize, usize)> {
+        (self.kind == AttributeKind::TexCoord).then_some((self.unit as usize, self.component as usize))
+    }
+
     /// This attribute among a vertex's secondary color, fog coordinate and texture coordinates.
     pub fn pick(self, secondary_color: &[f32; 4], fog_coord: f32, tex_coords: &[[f32; 4]]) -> f32 {
         match self.kind {

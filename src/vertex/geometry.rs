@@ -56,6 +56,8 @@ pub struct Geometry {
     /// filled polygons are set up as smooth jobs (coverage in alpha) instead of aliased ones.
     pub smooth_lines: bool,
     pub smooth_points: bool,
+    /// GL_POINT_SPRITE: points are sprites (`super::point::PointSprites`).
+    pub sprite: Option<super::point::PointSprites>,
     pub smooth_polygons: bool,
     /// Lines and points cover samples (a multisampled target with GL_MULTISAMPLE on; set by
     /// the context from the draw state).

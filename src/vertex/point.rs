@@ -7,12 +7,14 @@ use crate::framebuffer::Rect;
 use crate::gl::float::fused_multiply_add;
 use crate::gl::limits::MAX_POINT_SIZE;
 use crate::setup::jobs::line::LineVertex;
-use crate::setup::jobs::point::PointJob;
+use crate::setup::jobs::point::{PointJob, Sprite, SpriteCoord};
 use crate::setup::jobs::smooth::{SmoothJob, SmoothPoint};
 use crate::setup::multisample::SampleQuad;
 use crate::setup::plane::point_varyings;
 use crate::setup::point::point_rect;
+use crate::setup::triangle::to_fixed;
 use crate::setup::{Primitive as RasterPrimitive, Scene};
+use crate::vertex::attribute::Attribute;
 
 /// The size points are drawn with without distance attenuation: glPointSize `size` clamped to
 /// GL_POINT_SIZE_MIN/MAX (the minimum winning when they cross, as in Mesa) and to the
@@ -57,6 +59,30 @@ impl PointAttenuation {
     }
 }
 
+/// GL_POINT_SPRITE's state for a draw (GL 2.0 §3.3): what replaces each of the draw's
+/// varyings on a sprite (`None`: the vertex's value) and where t = 0 is.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PointSprites {
+    pub replaced: Vec<Option<SpriteCoord>>,
+    /// GL_POINT_SPRITE_COORD_ORIGIN is GL_LOWER_LEFT (t = 0 at the bottom).
+    pub lower_left: bool,
+}
+
+impl PointSprites {
+    /// The sprite state of a draw with `varyings`, where `coord_replace(unit)` is that
+    /// unit's GL_COORD_REPLACE.
+    pub fn new(varyings: &[Attribute], coord_replace: impl Fn(usize) -> bool, lower_left: bool) -> PointSprites {
+        let replaced = varyings
+            .iter()
+            .map(|v| {
+                let (_, component) = v.texture_coordinate().filter(|&(unit, _)| coord_replace(unit))?;
+                Some([SpriteCoord::S, SpriteCoord::T, SpriteCoord::R, SpriteCoord::Q][component])
+            })
+            .collect();
+        PointSprites { replaced, lower_left }
+    }
+}
+
 impl Geometry {
     /// The width of a point whose vertex has eye coordinates `eye`.
     pub fn point_size_at(&self, eye: [f32; 4]) -> f32 {
@@ -74,6 +100,26 @@ pub fn emit_window_point(scene: &mut Scene, state: u32, g: &Geometry, w: &LineVe
     // llvmpipe interpolates point colors perspective-correctly too: (c/w)·w.
     let color = if w.inv_w == 1.0 { w.color } else { w.color.map(|c| c * w.inv_w * (1.0 / w.inv_w)) };
     let varyings = point_varyings(g.varyings.iter().map(|v| v.of_line(w)));
+    if let Some(sprites) = &g.sprite {
+        // A sprite is the square of its unrounded size (at least one pixel, as llvmpipe's
+        // quad points), whatever GL_POINT_SMOOTH says (GL 2.0 §3.3).
+        let side = size.max(1.0);
+        let Some(square) = SampleQuad::point([w.x, g.height as f32 - w.y_down], side) else { return };
+        let (x0, y0, x1, y1) = square.pixel_box();
+        let rect = Rect { x0, y0, x1, y1 };
+        let fixed_side = to_fixed(side).max(256);
+        let mut sprite =
+            Sprite::new([w.x, w.y_down], w.inv_w, fixed_side, &sprites.replaced, sprites.lower_left, g.height);
+        let sample_square = if g.per_sample {
+            Some(Box::new(square))
+        } else {
+            sprite.square = Some(square);
+            None
+        };
+        let job = PointJob { rect, z: w.z, color, varyings, sample_square, sprite: Some(Box::new(sprite)) };
+        scene.add(state, rect, RasterPrimitive::Point(job));
+        return;
+    }
     if g.per_sample {
         // The square of the unrounded size, as llvmpipe draws it on a multisampled target
         // (sizes below 1 draw as 1 there, as for aliased points); GL_POINT_SMOOTH changes
@@ -82,7 +128,11 @@ pub fn emit_window_point(scene: &mut Scene, state: u32, g: &Geometry, w: &LineVe
             let (x0, y0, x1, y1) = square.pixel_box();
             let rect = Rect { x0, y0, x1, y1 };
             let sample_square = Some(Box::new(square));
-            scene.add(state, rect, RasterPrimitive::Point(PointJob { rect, z: w.z, color, varyings, sample_square }));
+            scene.add(
+                state,
+                rect,
+                RasterPrimitive::Point(PointJob { rect, z: w.z, color, varyings, sample_square, sprite: None }),
+            );
         }
         return;
     }
@@ -94,7 +144,7 @@ pub fn emit_window_point(scene: &mut Scene, state: u32, g: &Geometry, w: &LineVe
         return;
     }
     let rect = point_rect(w.x, w.y_down, size, g.height);
-    let point = PointJob { rect, z: w.z, color, varyings, sample_square: None };
+    let point = PointJob { rect, z: w.z, color, varyings, sample_square: None, sprite: None };
     scene.add(state, rect, RasterPrimitive::Point(point));
 }
 

@@ -10,7 +10,7 @@ use crate::vertex::clip::{ClipPlanes, ClipVertex};
 use crate::vertex::geometry::Geometry;
 use crate::vertex::lighting::NormalScaling;
 use crate::vertex::line::LineStipple;
-use crate::vertex::point::{point_size, PointAttenuation};
+use crate::vertex::point::{point_size, PointAttenuation, PointSprites};
 use crate::vertex::texgen::{TexCoordUnit, TexGen};
 use crate::vertex::transform::{FogSource, LightingInput, Transform, VertexStage};
 use crate::vertex::viewport::Viewport;
@@ -115,13 +115,20 @@ impl Context {
             DepthEncoding::Unorm(0) => 0.0,
             DepthEncoding::Unorm(bits) => (2.0 / ((1u64 << bits) - 1) as f64) as f32,
         };
+        let varyings = self.varyings_needed();
+        let texture = &self.state.texture;
+        let sprite = lp.point_sprite.then(|| {
+            let coord_replace = |unit: usize| texture.unit_state.get(unit).is_some_and(|u| u.env.coord_replace);
+            PointSprites::new(&varyings, coord_replace, lp.point_sprite_coord_origin == GL_LOWER_LEFT)
+        });
         Geometry {
             accuracy: self.accuracy,
             smooth_lines: lp.line_smooth,
             smooth_points: lp.point_smooth,
+            sprite,
             smooth_polygons: polygon.smooth,
             per_sample: false,
-            varyings: self.varyings_needed(),
+            varyings,
             viewport,
             line_planes: ClipPlanes { guard_x: 1.0, guard_y: 1.0, ..planes.clone() },
             planes,
