@@ -10,8 +10,9 @@
 //! smallest value is non-negative, so the inside of a large triangle costs no edge work
 //! below the level where it became inside. A 4×4 block that is neither evaluates its 16
 //! pixels as lanes. A triangle whose pixels lie within the 16×16 pixels from its first
-//! aligned 4×4 block starts there, one within a 4×4 block at its pixels (small triangles
-//! pay for neither the 64-pixel level nor a tile's loops).
+//! aligned 4×4 block starts there, one within 6 blocks or one block at its blocks' pixels
+//! (small triangles pay for neither the upper levels nor a tile's loops). A lane mask's
+//! signs are gathered by movemask (`simd::dispatch::sign_mask16`), at the caller's level.
 //!
 //! **Exact in 32-bit lanes.** The values are exact integers. An edge's `a` and `b` are
 //! multiples of 256 (the setup's pixel-unit coefficients of 1/256-pixel coordinates);
@@ -41,6 +42,8 @@
 
 use super::walk::stipple_mask;
 use crate::framebuffer::Rect;
+use crate::simd::dispatch::sign_mask16;
+use crate::simd::Supported;
 use std::ops::{Add, BitOr};
 
 /// One edge function over window pixels: `c + a·x + b·y`, covered where ≥ 0.
@@ -58,37 +61,45 @@ impl PixelEdge {
     }
 }
 
-/// The coverage mask of the 4×4 block at `(x, y)` cut to the rectangle `area`.
+/// The coverage mask of the 4×4 block at `(x, y)` cut to the rectangle `area`, without a
+/// loop: the columns inside as 4 bits copied to each row's nibble, the rows inside as whole
+/// nibbles.
 #[inline(always)]
 pub fn rect_mask(area: Rect, x: i32, y: i32) -> u16 {
-    let mut cols = 0u16;
-    for c in 0..4 {
-        let px = x + c;
-        cols |= ((px >= area.x0 && px < area.x1) as u16) << c;
-    }
-    let mut mask = 0u16;
-    for r in 0..4 {
-        let py = y + r;
-        if py >= area.y0 && py < area.y1 {
-            mask |= cols << (4 * r);
+    // Bits `lo..hi` of 4 (clamped), in steps of `unit` bits.
+    let run = |lo: i32, hi: i32, unit: i32| {
+        let (lo, hi) = (lo.clamp(0, 4), hi.clamp(0, 4));
+        if hi > lo {
+            (1u32 << (unit * hi)) - (1u32 << (unit * lo))
+        } else {
+            0
         }
-    }
-    mask
+    };
+    let cols = run(area.x0 - x, area.x1 - x, 1);
+    let rows = run(area.y0 - y, area.y1 - y, 4);
+    ((cols * 0x1111) & rows) as u16
 }
 
 /// Walks the pixels of `area` covered by all three `edges`, calling `emit(x, y, mask)` for
 /// every 4×4 block (at multiples of 4) with a covered pixel. `stipple` is the polygon
-/// stipple pattern when enabled.
+/// stipple pattern when enabled; `level` the SIMD level of the caller's copy (the lanes'
+/// signs are gathered by movemask).
 #[inline(always)]
-pub fn walk_blocks(area: Rect, edges: &[PixelEdge; 3], stipple: Option<&[u32; 32]>, emit: impl FnMut(i32, i32, u16)) {
+pub fn walk_blocks(
+    level: Supported,
+    area: Rect,
+    edges: &[PixelEdge; 3],
+    stipple: Option<&[u32; 32]>,
+    emit: impl FnMut(i32, i32, u16),
+) {
     if area.is_empty() {
         return;
     }
     let reduced = map3(*edges, |e| Reduced::new(&e));
     if reduced.iter().all(|e| e.a.unsigned_abs() + e.b.unsigned_abs() <= 1 << 24) {
-        Walker::<i32, _>::new(area, reduced, stipple, emit).run();
+        Walker::<i32, _>::new(level, area, reduced, stipple, emit).run();
     } else {
-        Walker::<i64, _>::new(area, reduced, stipple, emit).run();
+        Walker::<i64, _>::new(level, area, reduced, stipple, emit).run();
     }
 }
 
@@ -134,6 +145,8 @@ trait Lane: Copy + Default + Add<Output = Self> + BitOr<Output = Self> {
     fn times(self, k: i32) -> Self;
     /// `self · 2^n` (which fits).
     fn shl(self, n: u32) -> Self;
+    /// The negative lanes of `v` as a mask (lane `i` as bit `i`).
+    fn negatives(level: Supported, v: &Lanes<Self>) -> u16;
 }
 
 impl Lane for i32 {
@@ -156,6 +169,15 @@ impl Lane for i32 {
     #[inline(always)]
     fn shl(self, n: u32) -> Self {
         self << n
+    }
+    /// By movemask: LLVM compiles the plain loop of sign bits as 16 lane extractions.
+    #[inline(always)]
+    fn negatives(level: Supported, v: &Lanes<Self>) -> u16 {
+        let mut words = [0u32; 16];
+        for i in 0..16 {
+            words[i] = v[i] as u32;
+        }
+        sign_mask16(level, &words)
     }
 }
 
@@ -180,6 +202,14 @@ impl Lane for i64 {
     fn shl(self, n: u32) -> Self {
         self << n
     }
+    #[inline(always)]
+    fn negatives(_: Supported, v: &Lanes<Self>) -> u16 {
+        let mut bits = 0u16;
+        for (i, x) in v.iter().enumerate() {
+            bits |= x.sign() << i;
+        }
+        bits
+    }
 }
 
 type Lanes<T> = [T; 16];
@@ -196,16 +226,6 @@ fn map3<T: Copy, U>(a: [T; 3], f: impl Fn(T) -> U) -> [U; 3] {
 #[inline(always)]
 fn index3<U>(f: impl Fn(usize) -> U) -> [U; 3] {
     [f(0), f(1), f(2)]
-}
-
-/// The negative lanes of `v` as a mask.
-#[inline(always)]
-fn negative<T: Lane>(v: &Lanes<T>) -> u16 {
-    let mut bits = 0u16;
-    for (i, x) in v.iter().enumerate() {
-        bits |= x.sign() << i;
-    }
-    bits
 }
 
 /// The lanes `f(0) … f(15)` (a plain loop, which LLVM vectorises).
@@ -242,10 +262,10 @@ fn extremes(e: &Reduced, size: i64) -> (i64, i64) {
 /// inside: `hi`/`lo` are the three edges' values at the block's corner plus their
 /// largest/smallest over a sub-block, `ab` their steps from one sub-block to the next.
 #[inline(always)]
-fn sub_blocks<T: Lane>(hi: [T; 3], lo: [T; 3], ab: [(T, T); 3]) -> (u16, u16) {
+fn sub_blocks<T: Lane>(level: Supported, hi: [T; 3], lo: [T; 3], ab: [(T, T); 3]) -> (u16, u16) {
     let [s0, s1, s2] = map3(ab, |(a, b)| steps(a, b));
     let at = |base: [T; 3]| lanes(|i| (base[0] + s0[i]) | (base[1] + s1[i]) | (base[2] + s2[i]));
-    (!negative(&at(hi)), !negative(&at(lo)))
+    (!T::negatives(level, &at(hi)), !T::negatives(level, &at(lo)))
 }
 
 /// The 16 sub-blocks of side `size` of the block at `(x, y)` that meet `area`.
@@ -267,13 +287,15 @@ fn area_mask(area: Rect, x: i32, y: i32, size: i32) -> u16 {
 }
 
 struct Walker<'a, T, F> {
+    level: Supported,
     area: Rect,
     edges: [Reduced; 3],
     /// The clamp of each edge's corner values (see the module).
     clamp: [i64; 3],
     stipple: Option<&'a [u32; 32]>,
-    /// Where the walk starts: 2 when the area lies within one aligned 4×4 block, 1 when
-    /// it lies within the 16×16 pixels from its first aligned 4×4 block, 0 at the tiles.
+    /// Where the walk starts: 3 when the area lies within one aligned 4×4 block, 2 when
+    /// within at most 6 aligned blocks (3 by 2, 2 by 3) from its first, 1 when within the 16×16 pixels from
+    /// its first aligned 4×4 block, 0 at the tiles.
     start: u8,
     /// Each edge's `a` and `b` as lanes.
     ab: [(T, T); 3],
@@ -282,9 +304,11 @@ struct Walker<'a, T, F> {
 
 impl<'a, T: Lane, F: FnMut(i32, i32, u16)> Walker<'a, T, F> {
     #[inline(always)]
-    fn new(area: Rect, edges: [Reduced; 3], stipple: Option<&'a [u32; 32]>, emit: F) -> Self {
+    fn new(level: Supported, area: Rect, edges: [Reduced; 3], stipple: Option<&'a [u32; 32]>, emit: F) -> Self {
         let (x4, y4) = (area.x0 & !3, area.y0 & !3);
         let start = if area.x1 - x4 <= 4 && area.y1 - y4 <= 4 {
+            3
+        } else if area.x1 - x4 <= 12 && area.y1 - y4 <= 12 && (area.x1 - x4 + 3) / 4 * ((area.y1 - y4 + 3) / 4) <= 6 {
             2
         } else if area.x1 - x4 <= 16 && area.y1 - y4 <= 16 {
             1
@@ -292,6 +316,7 @@ impl<'a, T: Lane, F: FnMut(i32, i32, u16)> Walker<'a, T, F> {
             0
         };
         Walker {
+            level,
             area,
             edges,
             clamp: map3(edges, |e| 64 * e.steepness() + 1),
@@ -326,8 +351,11 @@ impl<'a, T: Lane, F: FnMut(i32, i32, u16)> Walker<'a, T, F> {
 
     #[inline(always)]
     fn run(&mut self) {
-        if self.start == 2 {
+        if self.start == 3 {
             return self.one_block();
+        }
+        if self.start == 2 {
+            return self.few_blocks();
         }
         if self.start > 0 {
             return self.tile(0, 0);
@@ -352,9 +380,31 @@ impl<'a, T: Lane, F: FnMut(i32, i32, u16)> Walker<'a, T, F> {
         let (x, y) = (area.x0 & !3, area.y0 & !3);
         let base = self.corner(x, y);
         let [s0, s1, s2] = map3(self.ab, |(a, b)| steps(a, b));
-        let mut mask = !negative(&lanes(|j| (base[0] + s0[j]) | (base[1] + s1[j]) | (base[2] + s2[j])));
+        let mut mask = !T::negatives(self.level, &lanes(|j| (base[0] + s0[j]) | (base[1] + s1[j]) | (base[2] + s2[j])));
         mask &= rect_mask(area, x, y);
         self.emit_masked(x, y, mask);
+    }
+
+    /// An area within up to 6 aligned 4×4 blocks from its first (a small triangle's): each
+    /// of its blocks tested at once as in [`Walker::one_block`]. For so few blocks the
+    /// 16×16 level's bounds on each edge ([`Walker::block16`]) cost more than they save.
+    #[inline(always)]
+    fn few_blocks(&mut self) {
+        let area = self.area;
+        let (x, y) = (area.x0 & !3, area.y0 & !3);
+        let base = self.corner(x, y);
+        let [s0, s1, s2] = map3(self.ab, |(a, b)| steps(a, b));
+        let ab4 = self.ab_shl(2);
+        let (columns, rows) = (1 + (area.x1 - 1 - x) / 4, 1 + (area.y1 - 1 - y) / 4);
+        for r in 0..rows {
+            for c in 0..columns {
+                let b: [T; 3] = index3(|k| base[k] + ab4[k].0.times(c) + ab4[k].1.times(r));
+                let lanes = lanes(|j| (b[0] + s0[j]) | (b[1] + s1[j]) | (b[2] + s2[j]));
+                let (bx, by) = (x + 4 * c, y + 4 * r);
+                let mask = !T::negatives(self.level, &lanes) & rect_mask(area, bx, by);
+                self.emit_masked(bx, by, mask);
+            }
+        }
     }
 
     /// Emits the block at `(x, y)` with the covered pixels `mask`, cut by the stipple.
@@ -397,7 +447,7 @@ impl<'a, T: Lane, F: FnMut(i32, i32, u16)> Walker<'a, T, F> {
                 (mask, mask, corner)
             } else {
                 let (hi, lo) = self.extremes(&corner, 16);
-                let (visit, inside) = sub_blocks(hi, lo, self.ab_shl(4));
+                let (visit, inside) = sub_blocks(self.level, hi, lo, self.ab_shl(4));
                 (visit & mask, inside & mask, corner)
             }
         };
@@ -427,7 +477,7 @@ impl<'a, T: Lane, F: FnMut(i32, i32, u16)> Walker<'a, T, F> {
             (mask, mask)
         } else {
             let (hi, lo) = self.extremes(corner, 4);
-            let (visit, inside) = sub_blocks(hi, lo, ab4);
+            let (visit, inside) = sub_blocks(self.level, hi, lo, ab4);
             (visit & mask, inside & mask)
         };
         let within = x >= area.x0 && y >= area.y0 && x + 16 <= area.x1 && y + 16 <= area.y1;
@@ -442,7 +492,7 @@ impl<'a, T: Lane, F: FnMut(i32, i32, u16)> Walker<'a, T, F> {
             } else {
                 let base: [T; 3] = index3(|k| corner[k] + ab4[k].0.times(c) + ab4[k].1.times(r));
                 let [s0, s1, s2] = map3(self.ab, |(a, b)| steps(a, b));
-                !negative(&lanes(|j| (base[0] + s0[j]) | (base[1] + s1[j]) | (base[2] + s2[j])))
+                !T::negatives(self.level, &lanes(|j| (base[0] + s0[j]) | (base[1] + s1[j]) | (base[2] + s2[j])))
             };
             if !within && (bx < area.x0 || by < area.y0 || bx + 4 > area.x1 || by + 4 > area.y1) {
                 mask &= rect_mask(area, bx, by);
@@ -467,7 +517,10 @@ mod tests {
     /// The blocks `Walker<T>` emits for `area`.
     fn walked<T: Lane>(area: Rect, edges: &[PixelEdge; 3]) -> Vec<(i32, i32, u16)> {
         let mut seen = Vec::new();
-        Walker::<T, _>::new(area, edges.map(|e| Reduced::new(&e)), None, |x, y, m| seen.push((x, y, m))).run();
+        Walker::<T, _>::new(crate::simd::current(), area, edges.map(|e| Reduced::new(&e)), None, |x, y, m| {
+            seen.push((x, y, m))
+        })
+        .run();
         seen
     }
 
@@ -527,7 +580,7 @@ mod tests {
             let area = Rect { x0, y0, x1: x0 + 1 + next(2).unsigned_abs().min(103 - x0 as u64) as i32, y1: y0 + 2 };
             let stipple = (round % 3 == 0).then_some(&pattern);
             let mut seen = Vec::new();
-            walk_blocks(area, &edges, stipple, |x, y, m| seen.push((x, y, m)));
+            walk_blocks(crate::simd::current(), area, &edges, stipple, |x, y, m| seen.push((x, y, m)));
             let mut expected = 0u16;
             for y in area.y0..area.y1 {
                 for x in area.x0..area.x1 {
@@ -543,10 +596,95 @@ mod tests {
             assert_eq!(seen, expected, "round {round}");
             let reduced = edges.map(|e| Reduced::new(&e));
             let mut wide = Vec::new();
-            Walker::<i64, _>::new(area, reduced, stipple, |x, y, m| wide.push((x, y, m))).run();
+            Walker::<i64, _>::new(crate::simd::current(), area, reduced, stipple, |x, y, m| wide.push((x, y, m))).run();
             assert_eq!(wide, expected, "round {round}, i64 lanes");
         }
         assert!(covered > 200, "{covered}");
+    }
+
+    #[test]
+    fn small_areas_are_walked_as_the_hierarchical_walk_walks_them() {
+        // Small triangles at every sub-pixel position of their first vertex, both windings,
+        // edges through pixel centres (the fill rule), walked over their box cut by a
+        // scissor-like rectangle: the direct paths (one block, a few blocks) emit exactly
+        // what the tile walk (64 → 16 → 4) emits, which the per-pixel test checks.
+        let mut seed = 0x2545_f491_4f6c_dd1du64;
+        let mut next = |range: i64| {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed % (2 * range as u64)) as i64 - range
+        };
+        let level = crate::simd::current();
+        let mut direct = 0;
+        for sub in 0..256 {
+            for round in 0..12 {
+                let base = [(200 + next(8)) * 256 + sub, (70 + next(8)) * 256 + (sub * 7) % 256];
+                let extent = if round % 3 == 0 { 3 } else { 11 };
+                let mut v = [base, [0; 2], [0; 2]];
+                for p in &mut v[1..] {
+                    *p = [base[0] + next(extent * 256), base[1] + next(extent * 256)];
+                    if round % 4 == 0 {
+                        // On pixel centres: edges through centres.
+                        *p = p.map(|c| (c & !255) + 128);
+                    }
+                }
+                for w in [v, [v[0], v[2], v[1]]] {
+                    // The setup's pixel edges (`TriangleSetup::pixel_edges`, a room above):
+                    // counter-clockwise, centres at +128, bias 1 but on left and bottom edges.
+                    let area2 = (w[1][0] - w[0][0]) * (w[2][1] - w[0][1]) - (w[2][0] - w[0][0]) * (w[1][1] - w[0][1]);
+                    if area2 == 0 {
+                        continue;
+                    }
+                    let w = if area2 < 0 { [w[0], w[2], w[1]] } else { w };
+                    let edges: [PixelEdge; 3] = std::array::from_fn(|i| {
+                        let (p, q) = (w[i], w[(i + 1) % 3]);
+                        let (dx, dy) = (q[0] - p[0], q[1] - p[1]);
+                        let (a, b, c) = (-dy, dx, dy * p[0] - dx * p[1]);
+                        let bias = !(dy < 0 || (dy == 0 && dx > 0)) as i64;
+                        PixelEdge { c: a * 128 + b * 128 + c - bias, a: a * 256, b: b * 256 }
+                    });
+                    let covers = |x: i32, y: i32| edges.iter().all(|e| e.c + e.a * x as i64 + e.b * y as i64 >= 0);
+                    let lo = |k: usize| -((128 - w.iter().map(|p| p[k]).min().unwrap()) >> 8) as i32;
+                    let hi = |k: usize| ((w.iter().map(|p| p[k]).max().unwrap() - 128) >> 8) as i32 + 1;
+                    let bounds = Rect { x0: lo(0), y0: lo(1), x1: hi(0), y1: hi(1) };
+                    if bounds.is_empty() {
+                        continue;
+                    }
+                    let scissor = if round % 5 == 0 {
+                        Rect::from_xywh(bounds.x0 + 1, bounds.y0, 3, 100)
+                    } else {
+                        Rect::from_xywh(0, 0, 1000, 1000)
+                    };
+                    let area = bounds.intersect(scissor);
+                    if area.is_empty() {
+                        continue;
+                    }
+                    let reduced = edges.map(|e| Reduced::new(&e));
+                    let mut tiled = Vec::new();
+                    let mut walker = Walker::<i32, _>::new(level, area, reduced, None, |x, y, m| tiled.push((x, y, m)));
+                    direct += (walker.start >= 2) as usize;
+                    walker.start = 0;
+                    walker.run();
+                    let mut seen = Vec::new();
+                    walk_blocks(level, area, &edges, None, |x, y, m| seen.push((x, y, m)));
+                    // The same blocks (a 16×16 boundary may order them differently).
+                    let (mut sorted, mut tiled) = (seen.clone(), tiled);
+                    sorted.sort_unstable();
+                    tiled.sort_unstable();
+                    assert_eq!(sorted, tiled, "{w:?} in {area:?}");
+                    for y in area.y0..area.y1 {
+                        for x in area.x0..area.x1 {
+                            let (bx, by) = (x & !3, y & !3);
+                            let bit = 1 << ((x - bx) + 4 * (y - by));
+                            let emitted = seen.iter().any(|&(sx, sy, m)| (sx, sy) == (bx, by) && m & bit != 0);
+                            assert_eq!(emitted, covers(x, y), "({x}, {y}) of {w:?}");
+                        }
+                    }
+                }
+            }
+        }
+        assert!(direct > 3000, "{direct}");
     }
 
     #[test]
@@ -557,11 +695,17 @@ mod tests {
         let mut pattern = [0u32; 32];
         pattern[1] = 0x8000_0000 >> 12; // column 12 of rows 1, 33, …
         let mut seen = Vec::new();
-        walk_blocks(Rect::from_xywh(0, 0, 16, 2), &[e, always, always], Some(&pattern), |x, y, m| seen.push((x, y, m)));
+        walk_blocks(
+            crate::simd::current(),
+            Rect::from_xywh(0, 0, 16, 2),
+            &[e, always, always],
+            Some(&pattern),
+            |x, y, m| seen.push((x, y, m)),
+        );
         // Only pixel (12, 1): block (12, 0), lane 4.
         assert_eq!(seen, [(12, 0, 1 << 4)]);
         let mut count = 0;
-        walk_blocks(Rect::from_xywh(0, 0, 70, 3), &[e, always, always], None, |x, _, m| {
+        walk_blocks(crate::simd::current(), Rect::from_xywh(0, 0, 70, 3), &[e, always, always], None, |x, _, m| {
             assert!(x >= 8);
             count += m.count_ones();
         });

@@ -235,6 +235,7 @@ impl TriangleJob {
             let mut batch = Batch::default();
             let front_facing = self.front_facing;
             walk_blocks(
+                level,
                 area,
                 &edges,
                 state.polygon_stipple.as_ref(),
@@ -543,7 +544,7 @@ mod block_walk_tests {
         let edges = t.pixel_edges().map(PixelEdge::from_array);
         let (w, h) = (area.width(), area.height());
         let mut seen = vec![false; w * h];
-        walk_blocks(area, &edges, None, |x, y, mask| {
+        walk_blocks(crate::simd::current(), area, &edges, None, |x, y, mask| {
             assert!(x % 4 == 0 && y % 4 == 0, "block origin ({x},{y})");
             for i in 0..16 {
                 if mask & (1 << i) != 0 {
@@ -600,13 +601,19 @@ mod block_walk_tests {
         let b = TriangleSetup::new([quad[0], quad[2], quad[3]]).unwrap();
         let mut hits = vec![0u8; 64 * 64];
         for t in [&a, &b] {
-            walk_blocks(Rect::from_xywh(0, 0, 64, 64), &t.pixel_edges().map(PixelEdge::from_array), None, |x, y, m| {
-                for i in 0..16 {
-                    if m & (1 << i) != 0 {
-                        hits[((y + (i >> 2)) * 64 + x + (i & 3)) as usize] += 1;
+            walk_blocks(
+                crate::simd::current(),
+                Rect::from_xywh(0, 0, 64, 64),
+                &t.pixel_edges().map(PixelEdge::from_array),
+                None,
+                |x, y, m| {
+                    for i in 0..16 {
+                        if m & (1 << i) != 0 {
+                            hits[((y + (i >> 2)) * 64 + x + (i & 3)) as usize] += 1;
+                        }
                     }
-                }
-            });
+                },
+            );
         }
         for y in 0..64 {
             for x in 0..64 {
