@@ -2,9 +2,10 @@
 //! string, line and column it is about, and the log prints them as Mesa does
 //! (`0:12(5): error: ...`), so that a program that greps a driver's info log reads ours.
 //!
-//! Columns count from 1, in characters of the line after line continuations are joined;
-//! lines are as `#line` left them. A message is an error (the compile fails), a
-//! preprocessor error (the same, worded as Mesa's preprocessor words its own) or a warning.
+//! Columns count from 1 as Mesa counts them: in the preprocessor's output, where each run of
+//! white space and comments is one space (so a tab or a comment counts one);
+//! lines are as `#line` left them. A message is an error (the compile fails) or a warning,
+//! each labelled as coming from the preprocessor or the compiler, as Mesa labels them.
 
 use std::fmt;
 
@@ -28,6 +29,7 @@ pub enum Severity {
     Error,
     PreprocessorError,
     Warning,
+    PreprocessorWarning,
 }
 
 impl Severity {
@@ -36,6 +38,7 @@ impl Severity {
             Severity::Error => "error",
             Severity::PreprocessorError => "preprocessor error",
             Severity::Warning => "warning",
+            Severity::PreprocessorWarning => "preprocessor warning",
         }
     }
 }
@@ -46,6 +49,12 @@ pub struct Diagnostic {
     pub pos: Pos,
     pub severity: Severity,
     pub message: String,
+}
+
+impl Diagnostic {
+    pub fn is_error(&self) -> bool {
+        matches!(self.severity, Severity::Error | Severity::PreprocessorError)
+    }
 }
 
 impl fmt::Display for Diagnostic {
@@ -74,18 +83,22 @@ impl InfoLog {
         self.push(pos, Severity::Warning, message);
     }
 
+    pub fn preprocessor_warning(&mut self, pos: Pos, message: impl Into<String>) {
+        self.push(pos, Severity::PreprocessorWarning, message);
+    }
+
     fn push(&mut self, pos: Pos, severity: Severity, message: impl Into<String>) {
         self.diagnostics.push(Diagnostic { pos, severity, message: message.into() });
     }
 
     /// Whether the compile failed (any error; warnings do not count).
     pub fn has_errors(&self) -> bool {
-        self.diagnostics.iter().any(|d| d.severity != Severity::Warning)
+        self.diagnostics.iter().any(|d| d.is_error())
     }
 
     /// The first error, if any.
     pub fn first_error(&self) -> Option<&Diagnostic> {
-        self.diagnostics.iter().find(|d| d.severity != Severity::Warning)
+        self.diagnostics.iter().find(|d| d.is_error())
     }
 
     /// The info log text as `glGetShaderInfoLog` returns it: one message a line.

@@ -101,23 +101,28 @@ fn is_ident_char(b: u8) -> bool {
 }
 
 /// Splits a source string into preprocessing tokens, a `Newline` token ending each line
-/// (and the last). An unterminated block comment is an error.
+/// (and the last). An unterminated block comment is an error. Columns count white space
+/// runs as one character, as Mesa's messages do (see [`renumber_columns`]).
 pub fn tokenize(source: &str, source_number: u32, log: &mut InfoLog) -> Vec<PpToken> {
     let chars = join_continuations(source);
     let mut tokens = Vec::new();
     let mut i = 0;
     let mut space = false;
+    // The column as Mesa counts it: in the text with each run of white space and comments
+    // squeezed to one space (what its preprocessor hands its parser).
+    let mut column = 1u32;
     let at = |i: usize| chars.get(i).map(|c| c.0);
     while i < chars.len() {
-        let (b, line, column) = chars[i];
-        let pos = Pos::new(source_number, line, column);
-        let push = |kind, text: String, tokens: &mut Vec<PpToken>, space: &mut bool| {
+        let (b, line, _) = chars[i];
+        let pos = Pos::new(source_number, line, column + space as u32);
+        let push = |kind, text: String, tokens: &mut Vec<PpToken>, space: &mut bool, column: &mut u32| {
+            *column = if kind == PpKind::Newline { 1 } else { pos.column + text.chars().count() as u32 };
             tokens.push(PpToken { kind, text, pos, space_before: *space, painted: false });
             *space = false;
         };
         match b {
             b'\n' => {
-                push(PpKind::Newline, "\n".into(), &mut tokens, &mut space);
+                push(PpKind::Newline, "\n".into(), &mut tokens, &mut space, &mut column);
                 i += 1;
             }
             b' ' | b'\t' | 0x0B | 0x0C => {
@@ -135,7 +140,8 @@ pub fn tokenize(source: &str, source_number: u32, log: &mut InfoLog) -> Vec<PpTo
                 loop {
                     if i >= chars.len() {
                         log.preprocessor_error(pos, "Unterminated comment");
-                        return tokens_with_final_newline(tokens, source_number, &chars);
+                        let line = chars.last().map_or(1, |c| c.1);
+                        return tokens_with_final_newline(tokens, Pos::new(source_number, line, column + 1));
                     }
                     if chars[i].0 == b'*' && at(i + 1) == Some(b'/') {
                         i += 2;
@@ -151,7 +157,7 @@ pub fn tokenize(source: &str, source_number: u32, log: &mut InfoLog) -> Vec<PpTo
                     i += 1;
                 }
                 let text = chars[start..i].iter().map(|c| c.0 as char).collect();
-                push(PpKind::Ident, text, &mut tokens, &mut space);
+                push(PpKind::Ident, text, &mut tokens, &mut space, &mut column);
             }
             _ if b.is_ascii_digit() || (b == b'.' && at(i + 1).is_some_and(|c| c.is_ascii_digit())) => {
                 let start = i;
@@ -167,7 +173,7 @@ pub fn tokenize(source: &str, source_number: u32, log: &mut InfoLog) -> Vec<PpTo
                     i += 1;
                 }
                 let text = chars[start..i].iter().map(|c| c.0 as char).collect();
-                push(PpKind::Number, text, &mut tokens, &mut space);
+                push(PpKind::Number, text, &mut tokens, &mut space, &mut column);
             }
             _ => {
                 let matches = |p: &&&str| {
@@ -176,7 +182,7 @@ pub fn tokenize(source: &str, source_number: u32, log: &mut InfoLog) -> Vec<PpTo
                 };
                 if let Some(p) = PUNCTUATORS.iter().find(matches) {
                     i += p.len();
-                    push(PpKind::Punct, (*p).to_string(), &mut tokens, &mut space);
+                    push(PpKind::Punct, (*p).to_string(), &mut tokens, &mut space, &mut column);
                 } else {
                     // One character, whole (UTF-8 continuation bytes with it).
                     let start = i;
@@ -185,25 +191,31 @@ pub fn tokenize(source: &str, source_number: u32, log: &mut InfoLog) -> Vec<PpTo
                         i += 1;
                     }
                     let bytes: Vec<u8> = chars[start..i].iter().map(|c| c.0).collect();
-                    push(PpKind::Other, String::from_utf8_lossy(&bytes).into_owned(), &mut tokens, &mut space);
+                    push(
+                        PpKind::Other,
+                        String::from_utf8_lossy(&bytes).into_owned(),
+                        &mut tokens,
+                        &mut space,
+                        &mut column,
+                    );
                 }
             }
         }
     }
-    tokens_with_final_newline(tokens, source_number, &chars)
+    let line = chars.last().map_or(1, |c| c.1);
+    tokens_with_final_newline(tokens, Pos::new(source_number, line, column + space as u32))
 }
 
 fn is_hex_number(chars: &[(u8, u32, u32)]) -> bool {
     chars.len() >= 2 && chars[0].0 == b'0' && matches!(chars[1].0, b'x' | b'X')
 }
 
-fn tokens_with_final_newline(mut tokens: Vec<PpToken>, source: u32, chars: &[(u8, u32, u32)]) -> Vec<PpToken> {
+fn tokens_with_final_newline(mut tokens: Vec<PpToken>, end: Pos) -> Vec<PpToken> {
     if tokens.last().is_none_or(|t| t.kind != PpKind::Newline) {
-        let (line, column) = chars.last().map_or((1, 1), |c| (c.1, c.2 + 1));
         tokens.push(PpToken {
             kind: PpKind::Newline,
             text: "\n".into(),
-            pos: Pos::new(source, line, column),
+            pos: end,
             space_before: false,
             painted: false,
         });
@@ -406,7 +418,7 @@ pub struct Token {
 
 /// The preprocessor's output as GLSL tokens for `version`, ending with [`TokenKind::End`]
 /// at `end`.
-pub fn classify(tokens: &[PpToken], version: u32, end: Pos) -> Vec<Token> {
+pub fn classify(tokens: &[PpToken], version: u32, end: Pos, log: &mut InfoLog) -> Vec<Token> {
     let mut out = Vec::with_capacity(tokens.len() + 1);
     for t in tokens {
         let kind = match t.kind {
@@ -420,7 +432,12 @@ pub fn classify(tokens: &[PpToken], version: u32, end: Pos) -> Vec<Token> {
                     TokenKind::Ident(t.text.clone())
                 }
             }
-            PpKind::Number => number(&t.text, version),
+            PpKind::Number => {
+                if let Some(w) = number_warning(&t.text, version) {
+                    log.warning(t.pos, w);
+                }
+                number(&t.text, version)
+            }
             PpKind::Punct => match PUNCTUATORS.iter().find(|p| **p == t.text) {
                 Some(&p) if p != "#" && p != "##" && p != "\\" => TokenKind::Punct(p),
                 _ => TokenKind::Invalid(format!("syntax error, unexpected `{}'", t.text)),
@@ -431,6 +448,23 @@ pub fn classify(tokens: &[PpToken], version: u32, end: Pos) -> Vec<Token> {
     }
     out.push(Token { kind: TokenKind::End, pos: end });
     out
+}
+
+/// The columns of the preprocessor's output as Mesa reports them: on each output line,
+/// tokens one space apart where white space separated them (in the source or in a macro's
+/// body), so that a message about an expanded macro points where Mesa's does.
+pub fn renumber_columns(tokens: &mut [PpToken]) {
+    let mut line = (u32::MAX, u32::MAX);
+    let mut column = 1u32;
+    for t in tokens {
+        if (t.pos.source, t.pos.line) != line {
+            line = (t.pos.source, t.pos.line);
+            column = 1;
+        }
+        column += t.space_before as u32;
+        t.pos.column = column;
+        column += t.text.chars().count() as u32;
+    }
 }
 
 /// The value of a numeric literal, or why it is none.
@@ -456,29 +490,51 @@ pub fn number(text: &str, version: u32) -> TokenKind {
     if digits.is_empty() && radix == 16 || !digits.chars().all(|c| c.is_digit(radix)) {
         return TokenKind::Invalid(format!("invalid {kind} integer literal `{text}'"));
     }
-    let mut value: u64 = 0;
-    for c in digits.chars() {
-        value = value * radix as u64 + c.to_digit(radix).unwrap_or(0) as u64;
-        if value > u32::MAX as u64 {
-            return TokenKind::Invalid(format!("literal value `{text}' out of range"));
+    TokenKind::Int(integer_value(digits, radix) as u32)
+}
+
+/// An integer's value, saturating at `u64::MAX` (as C's `strtoull`).
+fn integer_value(digits: &str, radix: u32) -> u64 {
+    digits.chars().fold(0u64, |v, c| {
+        v.checked_mul(radix as u64)
+            .and_then(|v| v.checked_add(c.to_digit(radix).unwrap_or(0) as u64))
+            .unwrap_or(u64::MAX)
+    })
+}
+
+/// What Mesa warns about in a literal that it accepts: an integer above 32 bits (its low
+/// 32 bits are kept) and, in GLSL 1.10, a float's `f` suffix (1.20's; the 1.10 grammar has
+/// none, but Mesa compiles it, and so do the shaders written against Mesa).
+pub fn number_warning(text: &str, version: u32) -> Option<String> {
+    match number(text, version) {
+        TokenKind::Int(_) => {
+            let (digits, radix) = if is_hex_text(text) {
+                (&text[2..], 16)
+            } else if text.len() > 1 && text.starts_with('0') {
+                (&text[1..], 8)
+            } else {
+                (text, 10)
+            };
+            (integer_value(digits, radix) > u32::MAX as u64).then(|| format!("literal value `{text}' out of range"))
         }
+        TokenKind::Float(_) if version < 120 && text.ends_with(['f', 'F']) => {
+            Some(format!("floating-point suffix in `{text}' is not valid in GLSL 1.10"))
+        }
+        _ => None,
     }
-    TokenKind::Int(value as u32)
 }
 
 fn is_hex_text(text: &str) -> bool {
     text.len() >= 2 && text.as_bytes()[0] == b'0' && matches!(text.as_bytes()[1], b'x' | b'X')
 }
 
-/// A float literal: digits with a point and/or an exponent; the `f`/`F` suffix from GLSL
-/// 1.20 on (1.10's grammar has none; 1.20's section 4.1.4 adds it).
+/// A float literal: digits with a point and/or an exponent, and an optional `f`/`F` suffix
+/// (GLSL 1.20's section 4.1.4; in 1.10 see [`number_warning`]).
 fn float_literal(text: &str, version: u32) -> TokenKind {
     let invalid = || TokenKind::Invalid(format!("invalid floating-point literal `{text}'"));
     let mut body = text;
     if let Some(stripped) = text.strip_suffix(['f', 'F']) {
-        if version < 120 {
-            return TokenKind::Invalid(format!("floating-point suffix in `{text}' requires GLSL 1.20"));
-        }
+        let _ = version; // accepted in 1.10 with a warning (number_warning)
         body = stripped;
     }
     let (mantissa, exponent) = match body.find(['e', 'E']) {
@@ -525,10 +581,12 @@ mod tests {
     #[test]
     fn continuations_join_lines_and_positions_stay_in_the_source() {
         let mut log = InfoLog::default();
-        let t = tokenize("ab\\\ncd ef\n  g", 0, &mut log);
+        let t = tokenize("ab\\\ncd ef\n  g\t /* x */  h", 0, &mut log);
         assert_eq!(t[0].text, "abcd");
-        assert_eq!((t[1].text.as_str(), t[1].pos.line, t[1].pos.column), ("ef", 2, 4));
-        assert_eq!((t[3].text.as_str(), t[3].pos.line, t[3].pos.column), ("g", 3, 3));
+        assert_eq!((t[1].text.as_str(), t[1].pos.line, t[1].pos.column), ("ef", 2, 6));
+        // Columns count a run of white space and comments as one character (Mesa's count).
+        assert_eq!((t[3].text.as_str(), t[3].pos.line, t[3].pos.column), ("g", 3, 2));
+        assert_eq!((t[4].text.as_str(), t[4].pos.column), ("h", 4));
     }
 
     #[test]
@@ -543,7 +601,11 @@ mod tests {
         assert_eq!(number("017", 110), TokenKind::Int(15));
         assert_eq!(number("0x1F", 110), TokenKind::Int(31));
         assert_eq!(number("4294967295", 110), TokenKind::Int(u32::MAX));
-        assert!(matches!(number("4294967296", 110), TokenKind::Invalid(m) if m.contains("out of range")));
+        assert_eq!(number_warning("4294967295", 110), None);
+        // Mesa keeps the low 32 bits and warns.
+        assert_eq!(number("4294967297", 110), TokenKind::Int(1));
+        assert!(number_warning("4294967297", 110).is_some_and(|m| m.contains("out of range")));
+        assert_eq!(number("99999999999999999999999", 110), TokenKind::Int(u32::MAX));
         assert!(matches!(number("08", 110), TokenKind::Invalid(_)));
         assert!(matches!(number("0xg", 110), TokenKind::Invalid(_)));
         assert!(matches!(number("0x", 110), TokenKind::Invalid(_)));
@@ -553,7 +615,9 @@ mod tests {
         assert_eq!(number("1E-1", 110), TokenKind::Float(0.1));
         assert_eq!(number("1e5f", 120), TokenKind::Float(1e5));
         assert_eq!(number("1.0F", 120), TokenKind::Float(1.0));
-        assert!(matches!(number("1.0f", 110), TokenKind::Invalid(m) if m.contains("1.20")));
+        assert_eq!(number("1.0f", 110), TokenKind::Float(1.0));
+        assert!(number_warning("1.0f", 110).is_some_and(|m| m.contains("GLSL 1.10")));
+        assert_eq!(number_warning("1.0f", 120), None);
         assert!(matches!(number("1e", 110), TokenKind::Invalid(_)));
         assert!(matches!(number("1.0.0", 110), TokenKind::Invalid(_)));
         assert!(matches!(number("1u", 120), TokenKind::Invalid(_)));

@@ -39,7 +39,7 @@ pub fn parse_shader(source: &str, options: &Options, log: &mut InfoLog) -> Optio
     if log.has_errors() {
         return None;
     }
-    let tokens = lex::classify(&pre.tokens, pre.version, pre.end);
+    let tokens = lex::classify(&pre.tokens, pre.version, pre.end, log);
     let unit = parse::parse(&tokens, pre.version, log).ok()?;
     Some(Parsed { unit, extensions: pre.extensions, invariant_all: pre.invariant_all })
 }

@@ -10,12 +10,12 @@
 //! never expanded again. Limits keep pathological input bounded: the expanded text of a
 //! compile and the nesting of macro arguments have ceilings, past which it is an error.
 //!
-//! Where GLSL differs from C: identifiers in `#if` that are no macro are an error (not 0);
-//! `#line N` makes the *next* line N + 1 (GLSL 1.10/1.20 section 3.3; C and GLSL 3.30 make
+//! Where GLSL differs from C: `#line N` makes the *next* line N + 1 (GLSL 1.10/1.20 section 3.3; C and GLSL 3.30 make
 //! it N); `#version` and `#extension` lines are not macro-expanded; macro names starting
 //! with `GL_` are reserved (an error), names containing `__` draw a warning as in Mesa
 //! (both specifications reserve them; piglit's 1.10 tests require such identifiers to
-//! compile).
+//! compile). Identifiers in `#if` that are no macro count 0, as in C and in Mesa, though
+//! the GLSL specifications make them an error: tessera compiles what Mesa compiles.
 
 use super::diagnostics::{InfoLog, Pos};
 use super::lex::{self, PpKind, PpToken, TokenKind};
@@ -144,7 +144,7 @@ pub fn preprocess(source: &str, options: &Options, log: &mut InfoLog) -> Preproc
         t.pos.source = pp.source;
         if t.kind == PpKind::Newline {
             end = t.pos;
-            pp.line(std::mem::take(&mut line));
+            pp.line(std::mem::take(&mut line), t.pos);
         } else {
             line.push(t);
         }
@@ -153,6 +153,7 @@ pub fn preprocess(source: &str, options: &Options, log: &mut InfoLog) -> Preproc
     for c in std::mem::take(&mut pp.conds) {
         pp.log.preprocessor_error(c.pos, "Unterminated #if");
     }
+    lex::renumber_columns(&mut pp.out);
     Preprocessed {
         version: pp.version,
         tokens: pp.out,
@@ -198,13 +199,14 @@ impl Pp<'_> {
         self.macros.insert(name.into(), Macro { params: None, body, builtin: true });
     }
 
-    fn line(&mut self, line: Vec<PpToken>) {
+    /// One line of the source; `end` is where it ends (Mesa reports `#if` errors there).
+    fn line(&mut self, line: Vec<PpToken>, end: Pos) {
         if line.is_empty() {
             return;
         }
         if is_punct(line.first(), "#") {
             self.flush();
-            self.directive(&line);
+            self.directive(&line, end);
             self.seen_anything = true;
         } else {
             self.seen_anything = true;
@@ -224,7 +226,7 @@ impl Pp<'_> {
         self.out.extend(expanded);
     }
 
-    fn directive(&mut self, line: &[PpToken]) {
+    fn directive(&mut self, line: &[PpToken], end: Pos) {
         let hash = &line[0];
         let Some(name) = line.get(1) else { return }; // the null directive
         let rest = &line[2..];
@@ -240,12 +242,13 @@ impl Pp<'_> {
                 let value = if !active {
                     false
                 } else if name.text == "if" {
-                    self.condition(rest, hash.pos)
+                    self.condition(rest, end)
                 } else {
                     match rest.first() {
                         Some(t) if t.kind == PpKind::Ident => {
                             if rest.len() > 1 {
-                                self.log.warning(rest[1].pos, format!("extra tokens after #{}", name.text));
+                                self.log
+                                    .preprocessor_warning(rest[1].pos, format!("extra tokens after #{}", name.text));
                             }
                             self.macros.contains_key(&t.text) == (name.text == "ifdef")
                         }
@@ -260,7 +263,7 @@ impl Pp<'_> {
                     active: value,
                     taken: value,
                     seen_else: false,
-                    pos: hash.pos,
+                    pos: end,
                 });
             }
             "elif" => {
@@ -273,7 +276,7 @@ impl Pp<'_> {
                     return;
                 }
                 // A group already taken does not evaluate its later expressions (C's rule).
-                let value = if c.parent_active && !c.taken { self.condition(rest, hash.pos) } else { false };
+                let value = if c.parent_active && !c.taken { self.condition(rest, end) } else { false };
                 let c = self.conds.last_mut().expect("checked above");
                 c.active = value;
                 c.taken |= value;
@@ -326,7 +329,7 @@ impl Pp<'_> {
             return;
         };
         let value = match lex::number(&number.text, 110) {
-            TokenKind::Int(v) => v,
+            TokenKind::Int(v) if lex::number_warning(&number.text, 110).is_none() => v,
             _ => {
                 self.log.error(number.pos, format!("invalid version number `{}'", number.text));
                 return;
@@ -374,10 +377,12 @@ impl Pp<'_> {
         } else if !self.options.extensions.contains(name) {
             match behavior {
                 Behavior::Require => {
-                    self.log.error(pos, format!("extension `{name}' unsupported"));
+                    self.log.error(rest[0].pos, format!("extension `{name}' unsupported"));
                     return;
                 }
-                Behavior::Enable | Behavior::Warn => self.log.warning(pos, format!("extension `{name}' unsupported")),
+                Behavior::Enable | Behavior::Warn => {
+                    self.log.warning(rest[0].pos, format!("extension `{name}' unsupported"))
+                }
                 Behavior::Disable => {}
             }
         }
@@ -426,7 +431,7 @@ impl Pp<'_> {
             return false;
         }
         if t.text.contains("__") && !undef {
-            self.log.warning(
+            self.log.preprocessor_warning(
                 t.pos,
                 format!("macro names containing `__' are reserved for the implementation (`{}')", t.text),
             );
@@ -558,7 +563,7 @@ impl Pp<'_> {
             Ok(v) if eval.at == tokens.len() => v != 0,
             Ok(_) => {
                 let t = &tokens[eval.at];
-                self.log.preprocessor_error(t.pos, format!("syntax error in #if: unexpected `{}'", t.text));
+                self.log.preprocessor_error(pos, format!("syntax error in #if: unexpected `{}'", t.text));
                 false
             }
             Err(()) => false,
@@ -797,8 +802,9 @@ fn binary_precedence(op: &str) -> Option<u8> {
 }
 
 impl Eval<'_, '_> {
-    fn error<T>(&mut self, pos: Pos, message: String) -> Result<T, ()> {
-        self.log.preprocessor_error(pos, message);
+    /// Reports an error at the end of the directive's line, where Mesa reports it.
+    fn error<T>(&mut self, _at: Pos, message: String) -> Result<T, ()> {
+        self.log.preprocessor_error(self.pos, message);
         Err(())
     }
 
@@ -860,7 +866,9 @@ impl Eval<'_, '_> {
                 TokenKind::Int(v) => Ok(v as i64),
                 _ => self.error(t.pos, format!("`{text}' is not an integer constant in #if")),
             },
-            (PpKind::Ident, name) => self.error(t.pos, format!("undefined identifier `{name}' in #if")),
+            // An identifier that is no macro is 0, as in C and in Mesa (GLSL 1.10/1.20
+            // section 3.3 makes it an error; shaders written against Mesa rely on 0).
+            (PpKind::Ident, _) => Ok(0),
             (_, text) => self.error(t.pos, format!("syntax error in #if: unexpected `{text}'")),
         }
     }
