@@ -24,6 +24,19 @@ use std::collections::HashMap;
 /// The deepest nesting of parentheses, unary operators and statements the parser accepts.
 pub const MAX_NESTING: usize = 256;
 
+/// The struct types of the built-in uniform state (GLSL 1.10/1.20 section 7.5), which a
+/// shader may name (`vec4 f(gl_LightSourceParameters l)`).
+pub const BUILTIN_STRUCTS: [&str; 8] = [
+    "gl_DepthRangeParameters",
+    "gl_PointParameters",
+    "gl_MaterialParameters",
+    "gl_LightSourceParameters",
+    "gl_LightModelParameters",
+    "gl_LightModelProducts",
+    "gl_LightProducts",
+    "gl_FogParameters",
+];
+
 /// A parse failed; the message is in the log.
 #[derive(Debug)]
 pub struct Failed;
@@ -42,7 +55,9 @@ pub struct Parser<'a> {
 
 /// Parses a preprocessed shader's tokens (ending with [`TokenKind::End`]).
 pub fn parse(tokens: &[Token], version: u32, log: &mut InfoLog) -> PResult<TranslationUnit> {
-    let mut p = Parser { tokens, at: 0, version, log, scopes: vec![HashMap::new()], depth: 0 };
+    // The built-in uniform state's struct types are type names from the start.
+    let builtins = BUILTIN_STRUCTS.iter().map(|n| (n.to_string(), true)).collect();
+    let mut p = Parser { tokens, at: 0, version, log, scopes: vec![builtins], depth: 0 };
     let mut items = Vec::new();
     while p.peek() != &TokenKind::End {
         if p.eat_punct(";") {
