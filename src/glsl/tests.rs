@@ -669,3 +669,22 @@ fn piglit_glsl_110_120_execution_shaders_parse() {
     assert!(parsed > 1000, "only {parsed} shaders found");
     assert!(failures.is_empty(), "{} shaders refused:\n{}", failures.len(), failures.join(""));
 }
+
+/// Times the front end on a 100 000-line shader and a 200-line one (run by hand:
+/// `cargo test --release --lib glsl::tests::front_end_timing -- --ignored --nocapture`).
+#[test]
+#[ignore]
+fn front_end_timing() {
+    for lines in [200, 100_000] {
+        let mut src =
+            String::from("#version 120\n#define SQ(x) ((x) * (x))\nuniform vec4 u;\nvoid main() {\n  vec4 a = u;\n");
+        for i in 0..lines {
+            src.push_str(&format!("  a.x += SQ(a.y * {i}.0 + u.z) - float({i}) / (1.0 + a.w); // line {i}\n"));
+        }
+        src.push_str("  gl_FragColor = a;\n}\n");
+        let start = std::time::Instant::now();
+        let mut log = InfoLog::default();
+        assert!(parse_shader(&src, &Options::default(), &mut log).is_some(), "{}", log.text());
+        println!("{lines} lines: {:?}", start.elapsed());
+    }
+}
