@@ -22,6 +22,8 @@
 //! fragment     a covered span → the framebuffer, GL's stage order written once (pipeline.rs):
 //!              scissor, alpha (alpha.rs), stencil (stencil.rs), depth (mod.rs), fog (fog.rs),
 //!              blending (blend.rs), logic op, dither, write masks (output.rs), multisample
+//! glsl         the GLSL 1.10/1.20 front end: preprocessor, lexer, parser (semantic analysis
+//!              and lowering onto the shading IR next)
 //! shader       programs: the shading IR (ir.rs), its validator, text dump and the
 //!              16-lane executor (exec.rs) with tessera's own exp2/log2/sin/cos (math.rs)
 //! texture      texture storage, sampling (sampler.rs) and the texture environments (env.rs)
@@ -41,6 +43,7 @@ pub mod context;
 pub mod fragment;
 pub mod framebuffer;
 pub mod gl;
+pub mod glsl;
 pub mod pixel;
 pub mod pool;
 pub mod raster;

@@ -2,8 +2,8 @@
 //! source text so that CI fails when a room reaches up.
 //!
 //! The rooms of `src/`, from the top (the C edge) to the bottom (the GL vocabulary):
-//! `api → winsys → context → vertex → setup → raster → fragment → shader → texture → pixel →
-//! framebuffer → simd → pool → gl`. A room may name (`crate::<room>`, in a `use` or a path) only itself and
+//! `api → winsys → context → vertex → setup → raster → fragment → glsl → shader → texture →
+//! pixel → framebuffer → simd → pool → gl`. A room may name (`crate::<room>`, in a `use` or a path) only itself and
 //! rooms below it; in particular the engine rooms never name `api`, `context` or `winsys`.
 //! Every room but the FFI edge (`api`, `winsys`: Xlib and the C ABI) denies unsafe code at its
 //! root, and within the engine only the wrapper around caller-owned pixel memory
@@ -13,7 +13,7 @@
 use std::path::{Path, PathBuf};
 
 /// The rooms in pipeline order, top first.
-const ROOMS: [&str; 14] = [
+const ROOMS: [&str; 15] = [
     "api",
     "winsys",
     "context",
@@ -21,6 +21,7 @@ const ROOMS: [&str; 14] = [
     "setup",
     "raster",
     "fragment",
+    "glsl",
     "shader",
     "texture",
     "pixel",

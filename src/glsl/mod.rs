@@ -1,0 +1,45 @@
+//! The GLSL front end: GLSL 1.10 and 1.20 shader source → a syntax tree with source
+//! positions and an info log worded as Mesa's. This is its first part, the preprocessor,
+//! the lexer and the parser; semantic analysis (types, built-ins, constant folding) and the
+//! lowering onto the shading IR of [`crate::shader`] build on it.
+//!
+//! - [`preprocess`]: directives, conditionals and macro expansion over tokens.
+//! - [`lex`]: source → preprocessing tokens → GLSL tokens of the shader's version.
+//! - [`parse`]: recursive descent over the grammar of chapter 9 into [`ast`].
+//! - [`diagnostics`]: positions and the info log (`0:12(5): error: ...`).
+//!
+//! As in Mesa, preprocessor errors end the compile before parsing, and the first syntax
+//! error ends the parse. Nothing here is tied to a GL context: the GL entry points reach it
+//! once semantic analysis and lowering exist.
+#![deny(unsafe_code)]
+
+pub mod ast;
+pub mod diagnostics;
+pub mod lex;
+pub mod parse;
+pub mod preprocess;
+
+#[cfg(test)]
+mod tests;
+
+pub use diagnostics::InfoLog;
+pub use preprocess::Options;
+
+/// A parsed shader and what the preprocessor recorded about it.
+#[derive(Clone, Debug)]
+pub struct Parsed {
+    pub unit: ast::TranslationUnit,
+    pub extensions: Vec<preprocess::Extension>,
+    pub invariant_all: bool,
+}
+
+/// Preprocesses and parses one shader source. `None` when the log holds an error.
+pub fn parse_shader(source: &str, options: &Options, log: &mut InfoLog) -> Option<Parsed> {
+    let pre = preprocess::preprocess(source, options, log);
+    if log.has_errors() {
+        return None;
+    }
+    let tokens = lex::classify(&pre.tokens, pre.version, pre.end, log);
+    let unit = parse::parse(&tokens, pre.version, log).ok()?;
+    Some(Parsed { unit, extensions: pre.extensions, invariant_all: pre.invariant_all })
+}
