@@ -902,7 +902,7 @@ fn fuse(ops: &[Op], runs: &[(u32, u32, bool)], wide: &[Wide], outputs: &[R]) -> 
         .iter()
         .flat_map(|op| {
             let (d, n) = op_writes(op, wide);
-            d[..n].to_vec().into_iter().chain(op_reads(op, wide))
+            d.into_iter().take(n).chain(op_reads(op, wide))
         })
         .chain(outputs.iter().copied())
         .map(|r| r as usize + 1)
