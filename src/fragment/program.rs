@@ -28,7 +28,7 @@
 
 use super::fog::{Fog, FogMode};
 use crate::shader::build::Builder;
-use crate::shader::fast::Compiled;
+use crate::shader::fast::{Bound, Compiled};
 use crate::shader::ir::{BinaryOp, Inst, Lod, Program, Reg, Stage, Type, UnaryOp};
 use crate::texture::env::{CombineFn, EnvMode, Operand, Source, TexEnv};
 use crate::texture::BaseFormat;
@@ -188,6 +188,9 @@ pub enum FragmentUniform {
 pub struct CompiledFragment {
     pub fixed: FixedFragment,
     pub compiled: Compiled,
+    /// The form the pipeline runs when the program has one (no control flow: every
+    /// fixed-function program).
+    pub bound: Option<Bound>,
 }
 
 impl CompiledFragment {
@@ -195,7 +198,8 @@ impl CompiledFragment {
     pub fn generate(key: &FragmentKey) -> CompiledFragment {
         let fixed = FixedFragment::generate(key);
         let compiled = Compiled::new(&fixed.program);
-        CompiledFragment { fixed, compiled }
+        let bound = compiled.bind();
+        CompiledFragment { fixed, compiled, bound }
     }
 }
 

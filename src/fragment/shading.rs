@@ -25,9 +25,14 @@ use super::block::{F32s, LANES};
 use super::program::{CompiledFragment, FragmentInput, FragmentKey};
 use super::FragmentState;
 use crate::shader::exec::{Io, SampleRequest, Textures, Word};
-use crate::shader::fast::{lane_mask, Registers};
+use crate::shader::fast::{lane_mask, Bound, Registers};
+use crate::shader::lower::R;
 use crate::texture::Texturing;
+use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::Arc;
+
+/// The next [`Shading::id`] (0 is no shading: a fresh scratch has prepared none).
+static NEXT_ID: AtomicU64 = AtomicU64::new(1);
 
 /// The most varyings a fixed-function fragment program reads: the secondary colour, the
 /// fog coordinate and every unit's s, t, r, q.
@@ -47,6 +52,15 @@ pub struct Shading {
     derivatives: bool,
     /// Framebuffer height: llvmpipe's quads pair its y-down rows.
     fb_height: i32,
+    /// With the program's bound form: the primary colour channels its registers take
+    /// (register, channel), the varyings (register, varying), and the output registers
+    /// the colour channels take (channel, register), less a channel the program passes
+    /// through unchanged.
+    bound_primary: Vec<(R, usize)>,
+    bound_varyings: Vec<(R, usize)>,
+    bound_outputs: Vec<(usize, R)>,
+    /// Which shading a scratch's registers were prepared for (its uniform values).
+    id: u64,
 }
 
 impl PartialEq for Shading {
@@ -89,8 +103,39 @@ impl Shading {
                 _ => varying_runs.push((*v, 1)),
             }
         }
+        let (mut bound_primary, mut bound_varyings, mut bound_outputs) = (Vec::new(), Vec::new(), Vec::new());
+        if let Some(bound) = &program.bound {
+            let input = |slot: usize| bound.input_register(slot);
+            let primary_register = |k: usize| {
+                let slot = program.fixed.inputs.iter().position(|i| *i == FragmentInput::Primary(k as u8));
+                slot.and_then(input)
+            };
+            for k in 0..4 {
+                let Some(r) = bound.output_register(k) else { continue };
+                if primary_register(k) != Some(r) {
+                    bound_outputs.push((k, r));
+                }
+            }
+            for (slot, source) in program.fixed.inputs.iter().enumerate() {
+                let Some(r) = input(slot) else { continue };
+                match *source {
+                    FragmentInput::Primary(k) => {
+                        // A channel passed through unchanged and read by nothing else
+                        // stays where it is.
+                        if bound.reads_register(r) || bound_outputs.iter().any(|&(_, o)| o == r) {
+                            bound_primary.push((r, k as usize & 3));
+                        }
+                    }
+                    FragmentInput::Varying(v) => bound_varyings.push((r, v as usize)),
+                }
+            }
+        }
         Shading {
             uniforms,
+            bound_primary,
+            bound_varyings,
+            bound_outputs,
+            id: NEXT_ID.fetch_add(1, Ordering::Relaxed),
             varying_runs,
             varyings: read.last().map_or(0, |v| v + 1),
             derivatives: stages.iter().any(|s| s.needs_derivatives()),
@@ -101,7 +146,8 @@ impl Shading {
 
     /// Shades the lanes `live` of the 4×4 block at window `(x, y)` (lane `i` the pixel
     /// `(x + (i & 3), y + (i >> 2))`): `colors[channel][lane]` holds the primary colours and
-    /// receives the program's colour in the live lanes. `varying_lanes(y0, first, out)`
+    /// receives the program's colour in the live lanes (the other lanes' colours are left
+    /// unspecified: the pipeline does not read them). `varying_lanes(y0, first, out)`
     /// gives varyings `first .. first + out.len()` of the 16 lanes of the block at
     /// `(x, y0)` (`y0` is `y`, or `y − 1` and `y + 3`, see the module). Inlined into the
     /// block pipeline's per-SIMD-level body.
@@ -118,43 +164,50 @@ impl Shading {
         if live == 0 {
             return;
         }
-        let textures = StageTextures { texturing };
+        let textures = StageTextures { texturing, used: !0 };
         scratch.prepare(self);
-        if !self.derivatives || (self.fb_height - y) & 1 == 0 {
-            for &(first, count) in &self.varying_runs {
-                varying_lanes(y, first, &mut scratch.varyings[first..first + count]);
+        // The passes: the block itself, or (see the module) the block one row below, whose
+        // rows 1..4 are the block's rows 0..3, and the block three rows above, whose row 0
+        // is the block's row 3. One call site each for the varyings and the program, so
+        // that both are inlined into the caller's SIMD level.
+        let aligned = !self.derivatives || (self.fb_height - y) & 1 == 0;
+        let passes: [(i32, u16); 2] = if aligned { [(0, live), (0, 0)] } else { [(-1, live << 4), (3, live >> 12)] };
+        for (dy, lanes) in passes {
+            if lanes == 0 {
+                continue;
             }
-            self.run(scratch, &textures, live, colors);
-            return;
-        }
-        // Rows 0..3 of the block are rows 1..4 of the block below, row 3 is row 0 of the
-        // block above.
-        let below = live << 4;
-        if below != 0 {
             let mut shifted = [[0.0; LANES]; 4];
-            for (s, c) in shifted.iter_mut().zip(colors.iter()) {
-                s[4..].copy_from_slice(&c[..12]);
-            }
+            let target = match dy {
+                0 => &mut *colors,
+                -1 => {
+                    for (s, c) in shifted.iter_mut().zip(colors.iter()) {
+                        s[4..].copy_from_slice(&c[..12]);
+                    }
+                    &mut shifted
+                }
+                _ => {
+                    for (s, c) in shifted.iter_mut().zip(colors.iter()) {
+                        s[..4].copy_from_slice(&c[12..]);
+                    }
+                    &mut shifted
+                }
+            };
             for &(first, count) in &self.varying_runs {
-                varying_lanes(y - 1, first, &mut scratch.varyings[first..first + count]);
+                varying_lanes(y + dy, first, &mut scratch.varyings[first..first + count]);
             }
-            self.run(scratch, &textures, below, &mut shifted);
-            for (s, c) in shifted.iter().zip(colors.iter_mut()) {
-                c[..12].copy_from_slice(&s[4..]);
-            }
-        }
-        let above = live >> 12;
-        if above != 0 {
-            let mut shifted = [[0.0; LANES]; 4];
-            for (s, c) in shifted.iter_mut().zip(colors.iter()) {
-                s[..4].copy_from_slice(&c[12..]);
-            }
-            for &(first, count) in &self.varying_runs {
-                varying_lanes(y + 3, first, &mut scratch.varyings[first..first + count]);
-            }
-            self.run(scratch, &textures, above, &mut shifted);
-            for (s, c) in shifted.iter().zip(colors.iter_mut()) {
-                c[12..].copy_from_slice(&s[..4]);
+            self.run(scratch, &textures, lanes, target);
+            match dy {
+                0 => {}
+                -1 => {
+                    for (s, c) in shifted.iter().zip(colors.iter_mut()) {
+                        c[..12].copy_from_slice(&s[4..]);
+                    }
+                }
+                _ => {
+                    for (s, c) in shifted.iter().zip(colors.iter_mut()) {
+                        c[12..].copy_from_slice(&s[..4]);
+                    }
+                }
             }
         }
     }
@@ -181,7 +234,7 @@ impl Shading {
         if rest == 0 {
             return;
         }
-        let textures = StageTextures { texturing };
+        let textures = StageTextures { texturing, used: !0 };
         scratch.prepare(self);
         // The window row of lane rows 0 and 2: the lower row of llvmpipe's quads holding
         // row `y` (see the module); the span is lane row `row` (and `row + 2`).
@@ -243,7 +296,12 @@ impl Shading {
     /// per-lane branch), so that they vectorise in the caller's SIMD level.
     #[inline(always)]
     fn run(&self, scratch: &mut ShadingScratch, textures: &StageTextures<'_>, live: u16, colors: &mut [F32s; 4]) {
-        let ShadingScratch { registers, inputs, varyings, outputs } = scratch;
+        if let Some(bound) = &self.program.bound {
+            self.run_bound(bound, scratch, textures, live, colors);
+            return;
+        }
+        scratch.prepared = 0;
+        let ShadingScratch { registers, inputs, varyings, outputs, .. } = scratch;
         for (word, source) in inputs.iter_mut().zip(&self.program.fixed.inputs) {
             let lanes = match *source {
                 FragmentInput::Primary(k) => &colors[k as usize & 3],
@@ -258,6 +316,45 @@ impl Shading {
         for (channel, out) in colors.iter_mut().zip(outputs.iter()) {
             for i in 0..LANES {
                 channel[i] = f32::from_bits((out[i] & keep[i]) | (channel[i].to_bits() & !keep[i]));
+            }
+        }
+    }
+}
+
+impl Shading {
+    /// [`Shading::run`] with the program's bound form: the uniform values computed once per
+    /// scratch and draw, the inputs written straight into their registers and the colours
+    /// read straight from the output registers.
+    #[inline(always)]
+    fn run_bound(
+        &self,
+        bound: &Bound,
+        scratch: &mut ShadingScratch,
+        textures: &StageTextures<'_>,
+        live: u16,
+        colors: &mut [F32s; 4],
+    ) {
+        let ShadingScratch { registers, varyings, prepared, .. } = scratch;
+        if *prepared != self.id {
+            bound.prepare(registers, &self.uniforms);
+            *prepared = self.id;
+        }
+        for &(r, k) in &self.bound_primary {
+            *registers.word(r) = bits(&colors[k]);
+        }
+        for &(r, v) in &self.bound_varyings {
+            *registers.word(r) = bits(&varyings[v]);
+        }
+        let running = if self.derivatives { quads(live) } else { live };
+        let textures = StageTextures { texturing: textures.texturing, used: live };
+        let mut io = Io { inputs: &[], uniforms: &self.uniforms, outputs: &mut [], textures: &textures };
+        bound.run(registers, &mut io, running);
+        // Every lane: the pipeline uses only the live lanes' colours (the others' are
+        // whatever the registers hold).
+        for &(k, r) in &self.bound_outputs {
+            let out = registers.word(r);
+            for i in 0..LANES {
+                colors[k][i] = f32::from_bits(out[i]);
             }
         }
     }
@@ -289,6 +386,8 @@ pub struct ShadingScratch {
     inputs: Vec<Word>,
     varyings: Vec<F32s>,
     outputs: Vec<Word>,
+    /// The [`Shading::id`] whose uniform values `registers` hold (0: none).
+    prepared: u64,
 }
 
 impl ShadingScratch {
@@ -315,6 +414,10 @@ impl ShadingScratch {
 /// divided by q, implicit level of detail) through each unit's block lookup.
 pub struct StageTextures<'a> {
     pub texturing: Option<&'a Texturing>,
+    /// The lanes whose texels are used: a fixed-function program reads a texel only in its
+    /// own lane (no derivative of it, no lookup at it), so the lanes that only help a quad's
+    /// level of detail need none.
+    pub used: u16,
 }
 
 impl Textures for StageTextures<'_> {
@@ -340,7 +443,7 @@ impl Textures for StageTextures<'_> {
             }
         }
         let mut texels = [[0f32; LANES]; 4];
-        stage.sample_block(&c, r.lanes, &mut texels);
+        stage.sample_block(&c, r.lanes & self.used, &mut texels);
         for (o, t) in out.iter_mut().zip(&texels) {
             for i in 0..LANES {
                 o[i] = t[i].to_bits();

@@ -44,7 +44,8 @@
 use super::exec::{self, f, fu, map1, map2, Io, LodLanes, SampleRequest, Word, LANES, MAX_LOOP_ITERATIONS};
 use super::ir::{Axis, Program};
 use super::lower::{
-    binary_lane, dot_lane, lower, mad_lane, split_prologue, unary_lane, Code, Cond, Node, Op, Wide, WideLod, R,
+    binary_lane, dot_lane, lower, mad_lane, op_writes, split_prologue, unary_lane, Code, Cond, Node, Op, Wide, WideLod,
+    R,
 };
 
 #[inline(always)]
@@ -84,6 +85,12 @@ pub struct Registers {
 impl Registers {
     pub fn new() -> Registers {
         Registers::default()
+    }
+
+    /// Register `r`'s word (a [`Bound`] program's input or output).
+    #[inline(always)]
+    pub fn word(&mut self, r: R) -> &mut Word {
+        &mut self.w[r as usize]
     }
 
     #[inline(always)]
@@ -523,4 +530,460 @@ impl Threaded {
     pub fn run(&self, registers: &mut Registers, io: &mut Io<'_>, lanes: u16) -> u16 {
         run_tree(&self.thunks, &self.code, registers, io, lanes)
     }
+}
+
+/// A program without control flow bound for a caller that runs it on many blocks with the
+/// same uniforms and hands its inputs and takes its outputs in place: the fragment pipeline
+/// ([`crate::fragment`]'s shading). [`Compiled::bind`] makes it from the prepared form
+/// ([`split_prologue`]): the `Input` operations are gone (the caller writes each input's
+/// register, [`Bound::input`]), and so are the `Output` operations (the caller reads each
+/// output's register, [`Bound::output`]); the runs are a flat list, executed without the
+/// control tree.
+///
+/// The results in the running lanes are [`Compiled::run`]'s. An input's register holds the
+/// caller's value in every lane, where the reference has it only in the running lanes (and
+/// zero or an older value elsewhere), and an output's register holds the value in the
+/// running lanes (the caller keeps those); so a caller must run every lane a running lane's
+/// result may read across lanes (a derivative's or an implicit-LOD lookup's 2×2 quad) — the
+/// fragment pipeline runs whole quads.
+#[derive(Clone, Debug)]
+pub struct Bound {
+    /// The uniform prologue ([`Compiled::prepare`]'s).
+    prologue: Vec<Op>,
+    /// The runs: (first op, end, masked).
+    runs: Vec<(u32, u32, bool)>,
+    ops: Vec<BOp>,
+    wide: Vec<Wide>,
+    registers: usize,
+    /// The words zeroed per run (less the inputs').
+    zeroed: Vec<R>,
+    /// Each input slot's register (`None`: the program does not read it).
+    inputs: Vec<Option<R>>,
+    /// Each output slot's register (`None`: the program does not write it).
+    outputs: Vec<Option<R>>,
+    /// Whether a run reads the lane mask (a masked run, a texture lookup).
+    needs_mask: bool,
+}
+
+impl Compiled {
+    /// The bound form of the program (see [`Bound`]), if it has no control flow, reads each
+    /// input once into a register nothing else writes, and writes each output once from a
+    /// register nothing writes after.
+    pub fn bind(&self) -> Option<Bound> {
+        let rest = &self.rest;
+        let mut written = vec![0u32; rest.registers];
+        for op in &rest.ops {
+            let (d, count) = op_writes(op, &rest.wide);
+            for &r in &d[..count] {
+                written[r as usize] += 1;
+            }
+        }
+        let mut inputs: Vec<Option<R>> = Vec::new();
+        let mut outputs: Vec<Option<R>> = Vec::new();
+        let mut ops = Vec::with_capacity(rest.ops.len());
+        let mut runs: Vec<(u32, u32, bool)> = Vec::new();
+        let mut last_write = vec![0usize; rest.registers];
+        for (k, op) in rest.ops.iter().enumerate() {
+            let (d, count) = op_writes(op, &rest.wide);
+            for &r in &d[..count] {
+                last_write[r as usize] = k;
+            }
+        }
+        for node in &rest.body {
+            let &Node::Run { start, end, masked } = node else { return None };
+            let begin = ops.len() as u32;
+            for (k, op) in rest.ops[start as usize..end as usize].iter().enumerate() {
+                let k = start as usize + k;
+                match *op {
+                    Op::Input { d, slot } => {
+                        let slot = slot as usize;
+                        if written[d as usize] != 1 {
+                            return None;
+                        }
+                        if inputs.len() <= slot {
+                            inputs.resize(slot + 1, None);
+                        }
+                        if inputs[slot].replace(d).is_some() {
+                            return None;
+                        }
+                    }
+                    Op::Output { slot, a } => {
+                        let slot = slot as usize;
+                        if last_write[a as usize] > k && written[a as usize] > 0 {
+                            return None;
+                        }
+                        if outputs.len() <= slot {
+                            outputs.resize(slot + 1, None);
+                        }
+                        if outputs[slot].replace(a).is_some() {
+                            return None;
+                        }
+                    }
+                    _ => ops.push(*op),
+                }
+            }
+            let end = ops.len() as u32;
+            match runs.last_mut() {
+                _ if begin == end => {}
+                Some(last) if last.2 == masked && last.1 == begin => last.1 = end,
+                _ => runs.push((begin, end, masked)),
+            }
+        }
+        // An input read before its `Input` (a zeroed register) keeps the general path.
+        let input_regs: Vec<R> = inputs.iter().flatten().copied().collect();
+        let zeroed: Vec<R> = rest.zeroed.iter().copied().filter(|r| !input_regs.contains(r)).collect();
+        if rest.zeroed.iter().any(|r| input_regs.contains(r)) {
+            // Only pinned inputs (texture coordinates) are zeroed and written before any
+            // read; any other zeroed input may be read before its write.
+            for &r in input_regs.iter().filter(|r| rest.zeroed.contains(r)) {
+                let first_read = rest.ops.iter().position(|op| op_reads(op, &rest.wide).contains(&r));
+                let write = rest.ops.iter().position(|op| matches!(*op, Op::Input { d, .. } if d == r));
+                if first_read.is_some_and(|read| write.is_none_or(|w| read < w)) {
+                    return None;
+                }
+            }
+        }
+        let outputs_read: Vec<R> = outputs.iter().flatten().copied().collect();
+        let (ops, runs) = fuse(&ops, &runs, &rest.wide, &outputs_read);
+        let needs_mask = runs.iter().any(|r| r.2) || ops.iter().any(|op| matches!(op, BOp::Op(Op::Texture(_))));
+        Some(Bound {
+            needs_mask,
+            prologue: self.prologue.clone(),
+            runs,
+            ops,
+            wide: rest.wide.clone(),
+            registers: rest.registers,
+            zeroed,
+            inputs,
+            outputs,
+        })
+    }
+}
+
+/// The registers an operation reads (for [`Compiled::bind`]'s checks).
+fn op_reads(op: &Op, wide: &[Wide]) -> Vec<R> {
+    match *op {
+        Op::SConst { .. } | Op::SUniform { .. } | Op::Const { .. } | Op::Uniform { .. } | Op::Input { .. } => vec![],
+        Op::SMov { a, .. }
+        | Op::SUnary { a, .. }
+        | Op::Mov { a, .. }
+        | Op::Sqrt { a, .. }
+        | Op::Rsq { a, .. }
+        | Op::Unary { a, .. }
+        | Op::Derivative { a, .. }
+        | Op::Output { a, .. } => vec![a],
+        Op::SBinary { a, b, .. }
+        | Op::Add { a, b, .. }
+        | Op::Sub { a, b, .. }
+        | Op::Mul { a, b, .. }
+        | Op::Div { a, b, .. }
+        | Op::Min { a, b, .. }
+        | Op::Max { a, b, .. }
+        | Op::Lt { a, b, .. }
+        | Op::Le { a, b, .. }
+        | Op::Binary { a, b, .. } => vec![a, b],
+        Op::SMad { a, b, c, .. }
+        | Op::Mad { a, b, c, .. }
+        | Op::SSelect { c, a, b, .. }
+        | Op::Select { c, a, b, .. } => {
+            vec![a, b, c]
+        }
+        Op::Clamp { a, lo, hi, .. } | Op::ClampSelect { a, lo, hi, .. } => vec![a, lo, hi],
+        Op::SDot { n, a, b, .. } => a[..n as usize].iter().chain(&b[..n as usize]).copied().collect(),
+        Op::Dot2 { a, b, .. } => a.iter().chain(&b).copied().collect(),
+        Op::Dot3 { a, b, .. } => a.iter().chain(&b).copied().collect(),
+        Op::Dot4 { a, b, .. } => a.iter().chain(&b).copied().collect(),
+        Op::Normalize3 { a, .. } => a.to_vec(),
+        Op::MatVec(i) | Op::Texture(i) => match wide[i as usize] {
+            Wide::MatVec { n, rows_n, rows, v, .. } => {
+                let n = n as usize;
+                rows[..rows_n as usize].iter().flat_map(|r| r[..n].to_vec()).chain(v[..n].iter().copied()).collect()
+            }
+            Wide::Sample { coords, lod, compare, .. } => {
+                let mut list = coords.to_vec();
+                if let WideLod::Bias(r) | WideLod::Explicit(r) = lod {
+                    list.push(r);
+                }
+                list.extend(compare);
+                list
+            }
+            Wide::Fetch { coords, lod, .. } => coords.iter().copied().chain([lod]).collect(),
+            Wide::Size { lod, .. } => vec![lod],
+        },
+    }
+}
+
+impl Bound {
+    /// Computes the uniform values into `registers` ([`Compiled::prepare`]): once for
+    /// [`Bound::run`]s with the same uniforms and registers.
+    pub fn prepare(&self, registers: &mut Registers, uniforms: &[u32]) {
+        registers.w.resize(self.registers, [0; LANES]);
+        let mut io = Io { inputs: &[], uniforms, outputs: &mut [], textures: &exec::NoTextures };
+        for op in &self.prologue {
+            step(op, registers, &mut io, &self.wide);
+        }
+    }
+
+    /// How many of each fused operation the bound form holds: [`BOp::MulClamp`],
+    /// [`BOp::Ramp`], [`BOp::Mix3`] (for tests and diagnostics).
+    pub fn fused(&self) -> [usize; 3] {
+        let count = |f: fn(&BOp) -> bool| self.ops.iter().filter(|op| f(op)).count();
+        [
+            count(|op| matches!(op, BOp::MulClamp { .. })),
+            count(|op| matches!(op, BOp::Ramp { .. })),
+            count(|op| matches!(op, BOp::Mix3 { .. })),
+        ]
+    }
+
+    /// Whether the program reads input `slot`.
+    pub fn reads_input(&self, slot: usize) -> bool {
+        matches!(self.inputs.get(slot), Some(Some(_)))
+    }
+
+    /// The register of input `slot` (`None`: not read).
+    pub fn input_register(&self, slot: usize) -> Option<R> {
+        self.inputs.get(slot).copied().flatten()
+    }
+
+    /// The register holding output `slot` after a run (`None`: not written).
+    pub fn output_register(&self, slot: usize) -> Option<R> {
+        self.outputs.get(slot).copied().flatten()
+    }
+
+    /// Whether an operation of the run reads register `r` (not counting outputs).
+    pub fn reads_register(&self, r: R) -> bool {
+        self.ops.iter().any(|op| match op {
+            BOp::Op(op) => op_reads(op, &self.wide).contains(&r),
+            BOp::MulClamp { a, b, lo, hi, .. } => [*a, *b, *lo, *hi].contains(&r),
+            BOp::Mix3 { f, g, a, b, .. } => [*f, *g].iter().chain(a).chain(b).any(|&x| x == r),
+            BOp::Ramp { c, e, s, lo, hi, one, f, .. } => [*c, *e, *s, *lo, *hi, *one, *f].contains(&r),
+        })
+    }
+
+    /// The register of input `slot`, to write before a run (`None`: not read).
+    #[inline(always)]
+    pub fn input<'r>(&self, registers: &'r mut Registers, slot: usize) -> Option<&'r mut Word> {
+        match self.inputs.get(slot) {
+            Some(&Some(r)) => Some(&mut registers.w[r as usize]),
+            _ => None,
+        }
+    }
+
+    /// The register holding output `slot` after a run (in its running lanes).
+    #[inline(always)]
+    pub fn output<'r>(&self, registers: &'r Registers, slot: usize) -> Option<&'r Word> {
+        match self.outputs.get(slot) {
+            Some(&Some(r)) => Some(&registers.w[r as usize]),
+            _ => None,
+        }
+    }
+
+    /// Runs the program in the lanes `lanes` of `registers` (prepared by
+    /// [`Bound::prepare`], inputs written); `io`'s inputs and outputs are not used.
+    #[inline(always)]
+    pub fn run(&self, registers: &mut Registers, io: &mut Io<'_>, lanes: u16) {
+        for &r in &self.zeroed {
+            registers.w[r as usize] = [0; LANES];
+        }
+        registers.exec = lanes;
+        if self.needs_mask {
+            registers.mask = lane_mask(lanes);
+        }
+        let wide = &self.wide[..];
+        for &(start, end, masked) in &self.runs {
+            registers.masked = masked;
+            for op in &self.ops[start as usize..end as usize] {
+                match op {
+                    BOp::Op(op) => step(op, registers, io, wide),
+                    BOp::MulClamp { d, a, b, lo, hi } => {
+                        let st = &mut *registers;
+                        let (a, b, lo, hi) = (st.get(*a), st.get(*b), st.get(*lo), st.get(*hi));
+                        let mut v = [0u32; LANES];
+                        for i in 0..LANES {
+                            v[i] = clamp_select_lane(fu(f(a[i]) * f(b[i])), lo[i], hi[i]);
+                        }
+                        st.put(*d, v);
+                    }
+                    BOp::Mix3 { d, f: x, g: y, a, b } => {
+                        for k in 0..3 {
+                            let st = &mut *registers;
+                            let v = dot2(st.get(*x), st.get(*y), st.get(a[k]), st.get(b[k]));
+                            st.put(d[k], v);
+                        }
+                    }
+                    BOp::Ramp { f: fr, g, c, e, s, lo, hi, one } => {
+                        let st = &mut *registers;
+                        let (c, e, s, lo, hi) = (st.get(*c), st.get(*e), st.get(*s), st.get(*lo), st.get(*hi));
+                        let mut v = [0u32; LANES];
+                        for i in 0..LANES {
+                            v[i] = clamp_select_lane(fu((f(e[i]) - f(c[i])) / f(s[i])), lo[i], hi[i]);
+                        }
+                        st.put(*fr, v);
+                        let w = map2(st.get(*one), st.get(*fr), |x, y| fu(f(x) - f(y)));
+                        st.put(*g, w);
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// `l < x ? min(x, h) : l` as [`Op::ClampSelect`] computes it.
+#[inline(always)]
+fn clamp_select_lane(x: u32, l: u32, h: u32) -> u32 {
+    if f(l) < f(x) {
+        if f(h) < f(x) {
+            h
+        } else {
+            x
+        }
+    } else {
+        l
+    }
+}
+
+/// An operation of a [`Bound`] program: the executor's, or a fused operation for a hot
+/// pattern of the fixed-function fragment programs ([`fuse`]). Each performs exactly the
+/// operations, in the order and with the roundings, of the operations it replaces, whose
+/// intermediate registers nothing else reads.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum BOp {
+    Op(Op),
+    /// `t = a·b; d = clamp_select(t, lo, hi)`: a texture environment's product and GL's
+    /// clamp of the colour.
+    MulClamp {
+        d: R,
+        a: R,
+        b: R,
+        lo: R,
+        hi: R,
+    },
+    /// `d[k] = dot2((f, g), (a[k], b[k]))` for k = 0, 1, 2 in order: fog's blend of three
+    /// channels (and any three products sharing their weights).
+    Mix3 {
+        d: [R; 3],
+        f: R,
+        g: R,
+        a: [R; 3],
+        b: [R; 3],
+    },
+    /// `t = e − c; u = t / s; f = clamp_select(u, lo, hi); g = one − f`: linear fog's factor
+    /// and its complement.
+    Ramp {
+        f: R,
+        g: R,
+        c: R,
+        e: R,
+        s: R,
+        lo: R,
+        hi: R,
+        one: R,
+    },
+}
+
+/// The registers a [`BOp`] writes.
+fn bop_writes(op: &BOp, wide: &[Wide]) -> Vec<R> {
+    match *op {
+        BOp::Op(ref op) => {
+            let (w, n) = op_writes(op, wide);
+            w[..n].to_vec()
+        }
+        BOp::MulClamp { d, .. } => vec![d],
+        BOp::Mix3 { d, .. } => d.to_vec(),
+        BOp::Ramp { f, g, .. } => vec![f, g],
+    }
+}
+
+/// Fuses the hot patterns of `ops` (run by run: `runs` are (start, end, masked)) into
+/// [`BOp`]s. `outputs` are registers the caller reads after the run. An intermediate is
+/// elided only if the fused operation is its one read.
+fn fuse(ops: &[Op], runs: &[(u32, u32, bool)], wide: &[Wide], outputs: &[R]) -> (Vec<BOp>, Vec<(u32, u32, bool)>) {
+    let registers = ops
+        .iter()
+        .flat_map(|op| {
+            let (d, n) = op_writes(op, wide);
+            d.into_iter().take(n).chain(op_reads(op, wide))
+        })
+        .chain(outputs.iter().copied())
+        .map(|r| r as usize + 1)
+        .max()
+        .unwrap_or(0);
+    let mut reads = vec![0u32; registers];
+    for op in ops {
+        for r in op_reads(op, wide) {
+            reads[r as usize] += 1;
+        }
+    }
+    for &r in outputs {
+        reads[r as usize] += 1;
+    }
+    let temporary = |r: R| reads[r as usize] == 1;
+    let mut out = Vec::with_capacity(ops.len());
+    let mut out_runs = Vec::with_capacity(runs.len());
+    for &(start, end, masked) in runs {
+        let begin = out.len() as u32;
+        let mut run = ops[start as usize..end as usize].iter().map(|&op| Some(BOp::Op(op))).collect::<Vec<_>>();
+        // A product whose one read is a later clamp moves to the clamp (the operations
+        // between write neither its operands nor its result).
+        for j in 0..run.len() {
+            let Some(BOp::Op(Op::ClampSelect { d, a: t, lo, hi })) = run[j] else { continue };
+            if !temporary(t) || t == lo || t == hi {
+                continue;
+            }
+            let writer = (0..j).rev().find(|&i| run[i].is_some_and(|op| bop_writes(&op, wide).contains(&t)));
+            let Some(i) = writer else { continue };
+            let Some(BOp::Op(Op::Mul { d: t2, a, b })) = run[i] else { continue };
+            let clobbered =
+                run[i + 1..j].iter().flatten().any(|op| bop_writes(op, wide).iter().any(|r| [a, b, t].contains(r)));
+            if t2 == t && !clobbered {
+                run[i] = None;
+                run[j] = Some(BOp::MulClamp { d, a, b, lo, hi });
+            }
+        }
+        let run: Vec<BOp> = run.into_iter().flatten().collect();
+        let run = &run[..];
+        let mut k = 0;
+        while k < run.len() {
+            let rest = &run[k..];
+            if let [BOp::Op(Op::Sub { d: t, a: e, b: c }), BOp::Op(Op::Div { d: u, a: t2, b: s }), BOp::Op(Op::ClampSelect { d: fr, a: u2, lo, hi }), BOp::Op(Op::Sub { d: g, a: one, b: f2 }), ..] =
+                *rest
+            {
+                if t == t2
+                    && u == u2
+                    && f2 == fr
+                    && t != u
+                    && temporary(t)
+                    && temporary(u)
+                    && ![e, c, s].contains(&t)
+                    && ![lo, hi].contains(&u)
+                {
+                    out.push(BOp::Ramp { f: fr, g, c, e, s, lo, hi, one });
+                    k += 4;
+                    continue;
+                }
+            }
+            if let [BOp::Op(Op::Dot2 { d: d0, a: w0, b: b0 }), BOp::Op(Op::Dot2 { d: d1, a: w1, b: b1 }), BOp::Op(Op::Dot2 { d: d2, a: w2, b: b2 }), ..] =
+                *rest
+            {
+                // Each write before the next's reads, as in sequence: no later operand is an
+                // earlier result.
+                let later = |d: R, w: [R; 2], b: [R; 2]| w.contains(&d) || b.contains(&d);
+                if w0 == w1 && w1 == w2 && !later(d0, w1, b1) && !later(d0, w2, b2) && !later(d1, w2, b2) {
+                    out.push(BOp::Mix3 {
+                        d: [d0, d1, d2],
+                        f: w0[0],
+                        g: w0[1],
+                        a: [b0[0], b1[0], b2[0]],
+                        b: [b0[1], b1[1], b2[1]],
+                    });
+                    k += 3;
+                    continue;
+                }
+            }
+            out.push(rest[0]);
+            k += 1;
+        }
+        out_runs.push((begin, out.len() as u32, masked));
+    }
+    (out, out_runs)
 }

@@ -1129,7 +1129,7 @@ pub fn lower(program: &Program) -> Code {
 }
 
 /// The registers an operation writes (at most four).
-fn op_writes(op: &Op, wide: &[Wide]) -> ([R; 4], usize) {
+pub(super) fn op_writes(op: &Op, wide: &[Wide]) -> ([R; 4], usize) {
     let one = |d: R| ([d, 0, 0, 0], 1);
     match *op {
         Op::SConst { d, .. }

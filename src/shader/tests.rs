@@ -1035,3 +1035,178 @@ fn two_products_and_their_sum_are_a_dot2_with_their_bits() {
         }
     }
 }
+
+/// Runs `program`'s bound form ([`Compiled::bind`]) as the fragment pipeline does: the
+/// uniform prologue once, each input written into its register in every lane, each output
+/// read from its register. `None` if the program has no bound form.
+fn run_bound(program: &Program, inputs: &[Word], uniforms: &[u32], lanes: u16) -> Option<Vec<Word>> {
+    let bound = Compiled::new(program).bind()?;
+    let mut registers = Registers::new();
+    bound.prepare(&mut registers, uniforms);
+    let mut outputs = Vec::new();
+    // Twice: the prepared registers survive a run.
+    for _ in 0..2 {
+        for (slot, word) in inputs.iter().enumerate() {
+            if let Some(r) = bound.input(&mut registers, slot) {
+                *r = *word;
+            }
+        }
+        let mut io = Io { inputs: &[], uniforms, outputs: &mut [], textures: &NoTextures };
+        bound.run(&mut registers, &mut io, lanes);
+        outputs = (0..program.outputs.len())
+            .map(|slot| bound.output(&registers, slot).copied().unwrap_or([0; LANES]))
+            .collect();
+    }
+    Some(outputs)
+}
+
+#[test]
+fn bound_straight_programs_match_the_reference_in_the_running_lanes() {
+    // The random programs' top-level instructions alone (no control flow): the bound form
+    // gives the reference's bits in every running lane.
+    let mut rng = Rng(0xb0b0_7777_1234_5678);
+    let mut executor = Executor::new();
+    let mut bound = 0;
+    for case in 0..3000u64 {
+        let stage = if case % 2 == 0 { Stage::Fragment } else { Stage::Vertex };
+        let mut program = Generator::new(rng.next(), stage).program();
+        program.body.retain(|s| matches!(s, Stmt::Inst(_)));
+        validate(&program).unwrap_or_else(|e| panic!("case {case}: {e}\n{}", super::dump::dump(&program)));
+        let inputs: Vec<Word> = program
+            .inputs
+            .iter()
+            .map(|t| std::array::from_fn(|_| if *t == Type::F32 { rng.float().to_bits() } else { rng.int() }))
+            .collect();
+        let uniforms = [rng.float().to_bits(), rng.int()];
+        let mut want = vec![[0u32; LANES]; program.outputs.len()];
+        let lanes = if rng.chance(60) { ALL_LANES } else { rng.next() as u16 };
+        executor.run(
+            &program,
+            &mut Io { inputs: &inputs, uniforms: &uniforms, outputs: &mut want, textures: &NoTextures },
+            lanes,
+        );
+        let Some(got) = run_bound(&program, &inputs, &uniforms, lanes) else { continue };
+        bound += 1;
+        for (slot, ty) in program.outputs.iter().enumerate() {
+            for lane in (0..LANES).filter(|l| lanes >> l & 1 != 0) {
+                assert!(
+                    same_word(got[slot][lane], want[slot][lane], *ty),
+                    "case {case}, lane {lane}, output {slot}: {:#x} vs {:#x}\n{}",
+                    got[slot][lane],
+                    want[slot][lane],
+                    super::dump::dump(&program)
+                );
+            }
+        }
+    }
+    assert!(bound > 200, "only {bound} programs bound");
+}
+
+/// Lanes of special values (NaN, ±0, ±∞, denormals, values around 0 and 1) and random ones.
+fn special_word(rng: &mut Rng) -> Word {
+    let specials = [f32::NAN, -0.0, 0.0, f32::INFINITY, f32::NEG_INFINITY, 1e-45, -1e-40, 1.0, 0.5, 3.0e38, -2.0];
+    std::array::from_fn(|i| {
+        if i < 8 { specials[(i + rng.next() as usize) % specials.len()] } else { rng.float() }.to_bits()
+    })
+}
+
+#[test]
+fn the_fused_fragment_patterns_keep_their_bits() {
+    // Linear fog (its ramp and the three channels' blend) and a modulate with the colour
+    // clamp, as the fixed-function generator writes them: fused in the bound form, and the
+    // reference's bits in the running lanes on special values, with every lane running and
+    // with partial masks.
+    let mut p = Program::new(Stage::Fragment);
+    let f32s = |p: &mut Program, n: usize| (0..n).map(|_| p.register(Type::F32)).collect::<Vec<Reg>>();
+    let color = f32s(&mut p, 4);
+    let texel = f32s(&mut p, 4);
+    let [coord, end, start, zero, one, t, span, u, factor, rest] = f32s(&mut p, 10).try_into().unwrap();
+    let fog_color = f32s(&mut p, 3);
+    let products = f32s(&mut p, 4);
+    let clamped = f32s(&mut p, 4);
+    let mut body = Vec::new();
+    for (k, &r) in color.iter().chain(&texel).chain([&coord]).enumerate() {
+        p.input(Type::F32);
+        body.push(Stmt::Inst(Inst::Input { dst: r, slot: k as u16 }));
+    }
+    for (k, &r) in [end, start].iter().chain(&fog_color).enumerate() {
+        p.uniform(Type::F32);
+        body.push(Stmt::Inst(Inst::Uniform { dst: r, slot: k as u16 }));
+    }
+    body.push(Stmt::Inst(Inst::Const { dst: zero, value: Const::F32(0.0) }));
+    body.push(Stmt::Inst(Inst::Const { dst: one, value: Const::F32(1.0) }));
+    // Modulate: four products, then four clamps.
+    for k in 0..4 {
+        body.push(Stmt::Inst(Inst::Binary { op: BinaryOp::FMul, dst: products[k], a: color[k], b: texel[k] }));
+    }
+    for k in 0..4 {
+        let (positive, at_most_one) = (p.register(Type::Bool), p.register(Type::F32));
+        body.extend([
+            Stmt::Inst(Inst::Binary { op: BinaryOp::FLt, dst: positive, a: zero, b: products[k] }),
+            Stmt::Inst(Inst::Binary { op: BinaryOp::FMin, dst: at_most_one, a: products[k], b: one }),
+            Stmt::Inst(Inst::Select { dst: clamped[k], cond: positive, a: at_most_one, b: zero }),
+        ]);
+    }
+    // Fog: (end − c) / (end − start), clamped; the blend of each channel.
+    let (positive, at_most_one) = (p.register(Type::Bool), p.register(Type::F32));
+    body.extend([
+        Stmt::Inst(Inst::Binary { op: BinaryOp::FSub, dst: t, a: end, b: coord }),
+        Stmt::Inst(Inst::Binary { op: BinaryOp::FSub, dst: span, a: end, b: start }),
+        Stmt::Inst(Inst::Binary { op: BinaryOp::FDiv, dst: u, a: t, b: span }),
+        Stmt::Inst(Inst::Binary { op: BinaryOp::FLt, dst: positive, a: zero, b: u }),
+        Stmt::Inst(Inst::Binary { op: BinaryOp::FMin, dst: at_most_one, a: u, b: one }),
+        Stmt::Inst(Inst::Select { dst: factor, cond: positive, a: at_most_one, b: zero }),
+        Stmt::Inst(Inst::Binary { op: BinaryOp::FSub, dst: rest, a: one, b: factor }),
+    ]);
+    let mut fogged = Vec::new();
+    for k in 0..3 {
+        let [kept, added, sum] = [0; 3].map(|_| p.register(Type::F32));
+        body.extend([
+            Stmt::Inst(Inst::Binary { op: BinaryOp::FMul, dst: kept, a: factor, b: clamped[k] }),
+            Stmt::Inst(Inst::Binary { op: BinaryOp::FMul, dst: added, a: rest, b: fog_color[k] }),
+            Stmt::Inst(Inst::Binary { op: BinaryOp::FAdd, dst: sum, a: kept, b: added }),
+        ]);
+        fogged.push(sum);
+    }
+    fogged.push(clamped[3]);
+    for (slot, &r) in fogged.iter().enumerate() {
+        p.output(Type::F32);
+        body.push(Stmt::Inst(Inst::Output { slot: slot as u16, src: r }));
+    }
+    p.body = body;
+    validate(&p).unwrap();
+    let bound = Compiled::new(&p).bind().expect("a straight program binds");
+    assert_eq!(bound.fused(), [4, 1, 1], "MulClamp, Ramp, Mix3 in {bound:#?}");
+    let mut rng = Rng(0xf0f0_1234);
+    let mut compared = 0;
+    for case in 0..200 {
+        let inputs: Vec<Word> = (0..9).map(|_| special_word(&mut rng)).collect();
+        let uniforms: Vec<u32> = match case % 4 {
+            // A degenerate span (division by zero) and special parameters, then plain ones.
+            0 => vec![0.5f32.to_bits(), 0.5f32.to_bits(), 0.2f32.to_bits(), f32::NAN.to_bits(), 1.0f32.to_bits()],
+            1 => special_word(&mut rng)[..5].to_vec(),
+            _ => (0..5).map(|_| rng.float().to_bits()).collect(),
+        };
+        for lanes in [ALL_LANES, 0x5a5a, 0x0001, rng.next() as u16] {
+            let mut want = vec![[0u32; LANES]; 4];
+            Executor::new().run(
+                &p,
+                &mut Io { inputs: &inputs, uniforms: &uniforms, outputs: &mut want, textures: &NoTextures },
+                lanes,
+            );
+            let got = run_bound(&p, &inputs, &uniforms, lanes).unwrap();
+            for slot in 0..4 {
+                for lane in (0..LANES).filter(|l| lanes >> l & 1 != 0) {
+                    assert!(
+                        same_word(got[slot][lane], want[slot][lane], Type::F32),
+                        "case {case}, lanes {lanes:#x}, output {slot}, lane {lane}: {:#x} vs {:#x}",
+                        got[slot][lane],
+                        want[slot][lane]
+                    );
+                    compared += !f32::from_bits(want[slot][lane]).is_nan() as usize;
+                }
+            }
+        }
+    }
+    assert!(compared > 5000, "only {compared} numbers compared");
+}
