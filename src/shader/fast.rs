@@ -44,7 +44,8 @@
 use super::exec::{self, f, fu, map1, map2, Io, LodLanes, SampleRequest, Word, LANES, MAX_LOOP_ITERATIONS};
 use super::ir::{Axis, Program};
 use super::lower::{
-    binary_lane, dot_lane, lower, mad_lane, split_prologue, unary_lane, Code, Cond, Node, Op, Wide, WideLod, R,
+    binary_lane, dot_lane, lower, mad_lane, op_writes, split_prologue, unary_lane, Code, Cond, Node, Op, Wide, WideLod,
+    R,
 };
 
 #[inline(always)]
@@ -329,6 +330,20 @@ operations!(|st, io, wide| {
         }
     },
     Op::Texture(i) => st.texture(io, &wide[i as usize]),
+    Op::MatRow { d, m, v } => {
+        let [m0, m1, m2, m3] = m.map(|r| f(st.s(r)));
+        let (v0, v1, v2, v3) = (st.get(v[0]), st.get(v[1]), st.get(v[2]), st.get(v[3]));
+        let mut out = [0u32; LANES];
+        for i in 0..LANES {
+            let t = m0 * f(v0[i]);
+            let t = m1 * f(v1[i]) + t;
+            let t = m2 * f(v2[i]) + t;
+            out[i] = fu(m3 * f(v3[i]) + t);
+        }
+        st.put(d, out)
+    },
+    Op::Exp2 { d, a } => st.put(d, super::math::exp2_lanes(st.get(a))),
+    Op::Log2 { d, a } => st.put(d, super::math::log2_lanes(st.get(a))),
 });
 
 /// Where the lanes that stopped running went (as in the reference).
@@ -491,6 +506,106 @@ impl Compiled {
     /// the prepared ones, unused by any other program since, and `io.uniforms` the same.
     pub fn run_prepared(&self, registers: &mut Registers, io: &mut Io<'_>, lanes: u16) -> u16 {
         run_tree(&Interpreter, &self.rest, registers, io, lanes)
+    }
+}
+
+/// A program without control flow, texture lookups or derivatives whose inputs and outputs
+/// are bound to registers ([`Compiled::bind`]): its caller writes the input values straight
+/// into the register file and reads the outputs from it, with no staging words and no
+/// operations copying them in and out (a draw's vertex batches: [`crate::vertex`]).
+#[derive(Clone, Debug)]
+pub struct Bound {
+    /// Per input slot, the register that holds its value (`None`: nothing reads it).
+    pub inputs: Vec<Option<R>>,
+    /// Per output slot, the register that holds its value after [`Compiled::run_bound`].
+    pub outputs: Vec<R>,
+    /// The operations of the program after the prologue, without its inputs and outputs.
+    ops: Vec<Op>,
+}
+
+impl Registers {
+    /// The register file (a bound program's outputs: [`Bound::outputs`]).
+    pub fn words(&self) -> &[Word] {
+        &self.w
+    }
+
+    /// The register file, for a bound program's inputs ([`Bound::inputs`]).
+    pub fn words_mut(&mut self) -> &mut [Word] {
+        &mut self.w
+    }
+}
+
+impl Compiled {
+    /// The program's inputs and outputs bound to registers, when its code after the
+    /// prologue is one unmasked run of operations without texture lookups or derivatives,
+    /// every input register is written by its input alone and read after it only (never
+    /// zeroed), every output slot is written once, and its register is not written after
+    /// that. Then [`Compiled::run_bound`], the inputs written into `inputs`' registers before
+    /// and the outputs read from `outputs`' after, gives [`Compiled::run_prepared`]'s
+    /// outputs: with one run, every write is unmasked, and an input or output is a copy.
+    pub fn bind(&self, input_slots: usize, output_slots: usize) -> Option<Bound> {
+        let rest = &self.rest;
+        let ops = match rest.body.as_slice() {
+            [] => &[][..],
+            [Node::Run { start, end, masked: false }] => &rest.ops[*start as usize..*end as usize],
+            _ => return None,
+        };
+        if !rest.zeroed.is_empty() {
+            return None;
+        }
+        let mut writes = vec![0u32; rest.registers];
+        for op in ops {
+            let (d, n) = op_writes(op, &rest.wide);
+            for &r in &d[..n] {
+                writes[r as usize] += 1;
+            }
+        }
+        let mut inputs = vec![None; input_slots];
+        let mut outputs = vec![None; output_slots];
+        let mut kept = Vec::with_capacity(ops.len());
+        for (i, op) in ops.iter().enumerate() {
+            match *op {
+                Op::Input { d, slot } => {
+                    let input = inputs.get_mut(slot as usize)?;
+                    if writes[d as usize] != 1 || input.is_some() {
+                        return None;
+                    }
+                    *input = Some(d);
+                }
+                Op::Output { slot, a } => {
+                    let written_later = ops[i + 1..].iter().any(|later| {
+                        let (d, n) = op_writes(later, &rest.wide);
+                        d[..n].contains(&a)
+                    });
+                    let output = outputs.get_mut(slot as usize)?;
+                    if written_later || output.is_some() {
+                        return None;
+                    }
+                    *output = Some(a);
+                }
+                Op::Texture(_) | Op::Derivative { .. } => return None,
+                other => kept.push(other),
+            }
+        }
+        let outputs = outputs.into_iter().collect::<Option<Vec<R>>>()?;
+        Some(Bound { inputs, outputs, ops: kept })
+    }
+
+    /// Runs the bound program `bound` ([`Compiled::bind`] of this program) in the lanes of
+    /// `lanes`, after [`Compiled::prepare`] with `uniforms` on `registers`, whose input
+    /// registers the caller has filled.
+    pub fn run_bound(&self, bound: &Bound, registers: &mut Registers, uniforms: &[u32], lanes: u16) {
+        let st = registers;
+        st.exec = lanes;
+        st.mask = lane_mask(lanes);
+        st.masked = false;
+        let mut io = Io { inputs: &[], uniforms, outputs: &mut [], textures: &exec::NoTextures };
+        let (ops, wide) = (&bound.ops[..], &self.rest.wide[..]);
+        crate::simd::per_level!({
+            for op in ops {
+                step(op, st, &mut io, wide);
+            }
+        })
     }
 }
 
