@@ -76,6 +76,8 @@ struct Scratch {
     inputs: Vec<Word>,
     outputs: Vec<Word>,
     clip: Vec<ClipVertex>,
+    /// The records of one batch, made in place ([`Run::transform_bound`]).
+    batch: Vec<ClipVertex>,
 }
 
 /// The vertices of a draw from vertex `from` on, up to the next run: one program and one
@@ -201,29 +203,29 @@ impl Run {
             compiled.run_bound(&binding.bound, &mut scratch.registers, &self.uniforms, lanes);
             let w = scratch.registers.words();
             let base = scratch.clip.len();
-            // The sixteen standard outputs of each lane, by 4×4 transposes of their words.
-            let mut standard = [[[0.0f32; 4]; 4]; LANES];
-            for group in 0..4 {
-                let words: [&Word; 4] = std::array::from_fn(|j| &w[binding.standard[4 * group + j] as usize]);
-                transpose_out(words, group, &mut standard);
+            // The batch's records are made in place in a buffer of sixteen (every field
+            // written; the sixteen standard outputs by 4×4 transposes of their words), then
+            // appended at once: a record built on the stack and pushed is a copy more.
+            let n = batch.len().min(LANES);
+            if scratch.batch.len() != LANES {
+                scratch.batch = vec![EMPTY; LANES];
             }
+            let records = &mut scratch.batch[..n];
+            let group = |g: usize| -> [&Word; 4] { std::array::from_fn(|j| &w[binding.standard[4 * g + j] as usize]) };
+            transpose_out(group(0), records, |c| &mut c.clip);
+            transpose_out(group(1), records, |c| &mut c.eye);
+            transpose_out(group(2), records, |c| &mut c.color);
+            transpose_out(group(3), records, |c| &mut c.secondary_color);
             let fog = &w[binding.standard[16] as usize];
-            let one_sided = self.lit_one_sided;
             // Plain indexed loops: iterator adapters stay calls in builds without LTO.
-            for lane in 0..batch.len().min(LANES) {
-                let v = &batch[lane];
-                let [clip, eye, color, secondary_color] = standard[lane];
-                scratch.clip.push(ClipVertex {
-                    clip,
-                    eye,
-                    color,
-                    secondary_color,
-                    back_colors: if one_sided { [color, secondary_color] } else { [[0.0; 4]; 2] },
-                    tex_coords: v.tex_coords,
-                    fog_coord: f32::from_bits(fog[lane]),
-                    edge_flag: v.edge_flag,
-                });
+            for lane in 0..n {
+                let (v, c) = (&batch[lane], &mut records[lane]);
+                c.back_colors = if self.lit_one_sided { [c.color, c.secondary_color] } else { [[0.0; 4]; 2] };
+                c.tex_coords = v.tex_coords;
+                c.fog_coord = f32::from_bits(fog[lane]);
+                c.edge_flag = v.edge_flag;
             }
+            scratch.clip.extend_from_slice(records);
             let out = &mut scratch.clip[base..];
             for &(what, r) in &binding.scattered {
                 scatter(what, &w[r as usize], out);
@@ -382,10 +384,10 @@ fn gather4(batch: &[Vertex], words: &mut [Word], registers: [Option<R>; 4], get:
     }
 }
 
-/// Transposes the four words `words` (a group of four standard outputs) into component
-/// `group` of every lane's outputs `out`.
+/// Transposes the four words `words` (a group of four standard outputs) into the field
+/// `field` of the records `out` (one per lane).
 #[inline(always)]
-fn transpose_out(words: [&Word; 4], group: usize, out: &mut [[[f32; 4]; 4]; LANES]) {
+fn transpose_out(words: [&Word; 4], out: &mut [ClipVertex], field: impl Fn(&mut ClipVertex) -> &mut [f32; 4]) {
     for quad in 0..LANES / 4 {
         let column = |j: usize| {
             let w = &words[j];
@@ -394,10 +396,27 @@ fn transpose_out(words: [&Word; 4], group: usize, out: &mut [[[f32; 4]; 4]; LANE
         };
         let m = Mat4::from_cols(column(0), column(1), column(2), column(3)).transpose();
         for i in 0..4 {
-            out[4 * quad + i][group] = m.col(i).to_array();
+            if let Some(c) = out.get_mut(4 * quad + i) {
+                *field(c) = m.col(i).to_array();
+            }
+        }
+        if 4 * quad + 4 >= out.len() {
+            break;
         }
     }
 }
+
+/// A record every field of which the batch overwrites.
+const EMPTY: ClipVertex = ClipVertex {
+    clip: [0.0; 4],
+    eye: [0.0; 4],
+    color: [0.0; 4],
+    secondary_color: [0.0; 4],
+    back_colors: [[0.0; 4]; 2],
+    tex_coords: [[0.0; 4]; crate::gl::limits::MAX_TEXTURE_UNITS],
+    fog_coord: 0.0,
+    edge_flag: false,
+};
 
 /// The first sixteen outputs of every vertex program.
 const STANDARD_OUTPUTS: [VertexOutput; 16] = {
