@@ -163,7 +163,7 @@ const EXP2_MIN: f32 = -126.99999;
 #[inline(always)]
 fn fma_common(a: f32, b: f32, c: f32, slow: &mut bool) -> f32 {
     let s = a as f64 * b as f64 + c as f64;
-    *slow |= (s.to_bits() & 0x1fff_ffff == 0x1000_0000) | !(s.abs() >= f32::MIN_POSITIVE as f64);
+    *slow |= (s.to_bits() & 0x1fff_ffff == 0x1000_0000) | (s.abs() < f32::MIN_POSITIVE as f64) | s.is_nan();
     s as f32
 }
 
@@ -178,7 +178,7 @@ pub fn log2_lanes(x: &[u32; 16]) -> [u32; 16] {
     for i in 0..16 {
         let bits = x[i];
         let v = f32::from_bits(bits);
-        let mut s = !(v > 0.0) | (v == f32::INFINITY);
+        let mut s = (v <= 0.0) | v.is_nan() | (v == f32::INFINITY);
         let exponent = (((bits & 0x7f80_0000) >> 23) as i32 - 127) as f32;
         let mantissa = f32::from_bits((bits & 0x007f_ffff) | 1.0f32.to_bits());
         let y = (mantissa - 1.0) / (mantissa + 1.0);

@@ -367,8 +367,8 @@ fn gather4(batch: &[Vertex], words: &mut [Word], registers: [Option<R>; 4], get:
             }
         };
         let m = Mat4::from_cols(column(0), column(1), column(2), column(3)).transpose();
-        for k in 0..4 {
-            t[k][4 * quad..4 * quad + 4].copy_from_slice(&m.col(k).to_array());
+        for (k, word) in t.iter_mut().enumerate() {
+            word[4 * quad..4 * quad + 4].copy_from_slice(&m.col(k).to_array());
         }
         if 4 * quad + 4 >= n {
             break;
