@@ -87,7 +87,7 @@ impl Registers {
         Registers::default()
     }
 
-    /// Register `r`'s word (a [`Bound`] program's input or output).
+    /// Register `r`'s word (a [`Bound`] or [`BoundRun`] program's input or output).
     #[inline(always)]
     pub fn word(&mut self, r: R) -> &mut Word {
         &mut self.w[r as usize]
@@ -336,6 +336,20 @@ operations!(|st, io, wide| {
         }
     },
     Op::Texture(i) => st.texture(io, &wide[i as usize]),
+    Op::MatRow { d, m, v } => {
+        let [m0, m1, m2, m3] = m.map(|r| f(st.s(r)));
+        let (v0, v1, v2, v3) = (st.get(v[0]), st.get(v[1]), st.get(v[2]), st.get(v[3]));
+        let mut out = [0u32; LANES];
+        for i in 0..LANES {
+            let t = m0 * f(v0[i]);
+            let t = m1 * f(v1[i]) + t;
+            let t = m2 * f(v2[i]) + t;
+            out[i] = fu(m3 * f(v3[i]) + t);
+        }
+        st.put(d, out)
+    },
+    Op::Exp2 { d, a } => st.put(d, super::math::exp2_lanes(st.get(a))),
+    Op::Log2 { d, a } => st.put(d, super::math::log2_lanes(st.get(a))),
 });
 
 /// Where the lanes that stopped running went (as in the reference).
@@ -498,6 +512,108 @@ impl Compiled {
     /// the prepared ones, unused by any other program since, and `io.uniforms` the same.
     pub fn run_prepared(&self, registers: &mut Registers, io: &mut Io<'_>, lanes: u16) -> u16 {
         run_tree(&Interpreter, &self.rest, registers, io, lanes)
+    }
+}
+
+/// A program without control flow, texture lookups or derivatives whose inputs and outputs
+/// are bound to registers, run as one unmasked run of operations (the vertex stage's form;
+/// [`Bound`] is the fragment pipeline's, more general one: masked runs and texture lookups,
+/// with its own fused operations; the two are to become one) ([`Compiled::bind_run`]): its caller writes the input values straight
+/// into the register file and reads the outputs from it, with no staging words and no
+/// operations copying them in and out (a draw's vertex batches: [`crate::vertex`]).
+#[derive(Clone, Debug)]
+pub struct BoundRun {
+    /// Per input slot, the register that holds its value (`None`: nothing reads it).
+    pub inputs: Vec<Option<R>>,
+    /// Per output slot, the register that holds its value after [`Compiled::run_bound_run`].
+    pub outputs: Vec<R>,
+    /// The operations of the program after the prologue, without its inputs and outputs.
+    ops: Vec<Op>,
+}
+
+impl Registers {
+    /// The register file (a bound program's outputs: [`BoundRun::outputs`]).
+    pub fn words(&self) -> &[Word] {
+        &self.w
+    }
+
+    /// The register file, for a bound program's inputs ([`BoundRun::inputs`]).
+    pub fn words_mut(&mut self) -> &mut [Word] {
+        &mut self.w
+    }
+}
+
+impl Compiled {
+    /// The program's inputs and outputs bound to registers, when its code after the
+    /// prologue is one unmasked run of operations without texture lookups or derivatives,
+    /// every input register is written by its input alone and read after it only (never
+    /// zeroed), every output slot is written once, and its register is not written after
+    /// that. Then [`Compiled::run_bound_run`], the inputs written into `inputs`' registers before
+    /// and the outputs read from `outputs`' after, gives [`Compiled::run_prepared`]'s
+    /// outputs: with one run, every write is unmasked, and an input or output is a copy.
+    pub fn bind_run(&self, input_slots: usize, output_slots: usize) -> Option<BoundRun> {
+        let rest = &self.rest;
+        let ops = match rest.body.as_slice() {
+            [] => &[][..],
+            [Node::Run { start, end, masked: false }] => &rest.ops[*start as usize..*end as usize],
+            _ => return None,
+        };
+        if !rest.zeroed.is_empty() {
+            return None;
+        }
+        let mut writes = vec![0u32; rest.registers];
+        for op in ops {
+            let (d, n) = op_writes(op, &rest.wide);
+            for &r in &d[..n] {
+                writes[r as usize] += 1;
+            }
+        }
+        let mut inputs = vec![None; input_slots];
+        let mut outputs = vec![None; output_slots];
+        let mut kept = Vec::with_capacity(ops.len());
+        for (i, op) in ops.iter().enumerate() {
+            match *op {
+                Op::Input { d, slot } => {
+                    let input = inputs.get_mut(slot as usize)?;
+                    if writes[d as usize] != 1 || input.is_some() {
+                        return None;
+                    }
+                    *input = Some(d);
+                }
+                Op::Output { slot, a } => {
+                    let written_later = ops[i + 1..].iter().any(|later| {
+                        let (d, n) = op_writes(later, &rest.wide);
+                        d[..n].contains(&a)
+                    });
+                    let output = outputs.get_mut(slot as usize)?;
+                    if written_later || output.is_some() {
+                        return None;
+                    }
+                    *output = Some(a);
+                }
+                Op::Texture(_) | Op::Derivative { .. } => return None,
+                other => kept.push(other),
+            }
+        }
+        let outputs = outputs.into_iter().collect::<Option<Vec<R>>>()?;
+        Some(BoundRun { inputs, outputs, ops: kept })
+    }
+
+    /// Runs the bound program `bound` ([`Compiled::bind_run`] of this program) in the lanes of
+    /// `lanes`, after [`Compiled::prepare`] with `uniforms` on `registers`, whose input
+    /// registers the caller has filled.
+    pub fn run_bound_run(&self, bound: &BoundRun, registers: &mut Registers, uniforms: &[u32], lanes: u16) {
+        let st = registers;
+        st.exec = lanes;
+        st.mask = lane_mask(lanes);
+        st.masked = false;
+        let mut io = Io { inputs: &[], uniforms, outputs: &mut [], textures: &exec::NoTextures };
+        let (ops, wide) = (&bound.ops[..], &self.rest.wide[..]);
+        crate::simd::per_level!({
+            for op in ops {
+                step(op, st, &mut io, wide);
+            }
+        })
     }
 }
 
@@ -671,6 +787,8 @@ fn op_reads(op: &Op, wide: &[Wide]) -> Vec<R> {
         | Op::Rsq { a, .. }
         | Op::Unary { a, .. }
         | Op::Derivative { a, .. }
+        | Op::Exp2 { a, .. }
+        | Op::Log2 { a, .. }
         | Op::Output { a, .. } => vec![a],
         Op::SBinary { a, b, .. }
         | Op::Add { a, b, .. }
@@ -694,6 +812,7 @@ fn op_reads(op: &Op, wide: &[Wide]) -> Vec<R> {
         Op::Dot3 { a, b, .. } => a.iter().chain(&b).copied().collect(),
         Op::Dot4 { a, b, .. } => a.iter().chain(&b).copied().collect(),
         Op::Normalize3 { a, .. } => a.to_vec(),
+        Op::MatRow { m, v, .. } => m.iter().chain(&v).copied().collect(),
         Op::MatVec(i) | Op::Texture(i) => match wide[i as usize] {
             Wide::MatVec { n, rows_n, rows, v, .. } => {
                 let n = n as usize;

@@ -224,6 +224,24 @@ pub enum Op {
     },
     /// Texture lookups: [`Wide`].
     Texture(u16),
+    /// `d = ((m0·v0 + m1·v1) + m2·v2) + m3·v3` with uniform `m` (their lane 0 read), as the
+    /// multiplication and the three multiply-adds it replaces compute it (each product and
+    /// sum rounded, in that order): a row of a uniform matrix times a vector (the vertex
+    /// programs' transforms, as glam's `Mat4 * Vec4` computes them).
+    MatRow {
+        d: R,
+        m: [R; 4],
+        v: [R; 4],
+    },
+    /// `Exp2` and `Log2` over the lanes at once ([`super::math::exp2_lanes`]).
+    Exp2 {
+        d: R,
+        a: R,
+    },
+    Log2 {
+        d: R,
+        a: R,
+    },
 }
 
 /// The operations too large to keep in an [`Op`].
@@ -788,6 +806,8 @@ impl Lowering {
                     _ if scalar => Op::SUnary { op, d, a },
                     UnaryOp::Sqrt => Op::Sqrt { d, a },
                     UnaryOp::Rsq => Op::Rsq { d, a },
+                    UnaryOp::Exp2 => Op::Exp2 { d, a },
+                    UnaryOp::Log2 => Op::Log2 { d, a },
                     _ => Op::Unary { op, d, a },
                 }
             }
@@ -945,6 +965,30 @@ impl Lowering {
         let mut k = 0;
         while k < insts.len() {
             let rest = &insts[k..];
+            // A row of a uniform matrix times a vector: t0 = m0·v0; t1 = m1·v1 + t0;
+            // t2 = m2·v2 + t1; d = m3·v3 + t2.
+            if let [Inst::Binary { op: FMul, dst: t0, a: m0, b: v0 }, Inst::Mad { dst: t1, a: m1, b: v1, c: c1 }, Inst::Mad { dst: t2, a: m2, b: v2, c: c2 }, Inst::Mad { dst, a: m3, b: v3, c: c3 }, ..] =
+                rest
+            {
+                let (m, v, t) = ([*m0, *m1, *m2, *m3], [*v0, *v1, *v2, *v3], [*t0, *t1, *t2]);
+                if c1 == t0
+                    && c2 == t1
+                    && c3 == t2
+                    && t0 != t1
+                    && t1 != t2
+                    && t0 != t2
+                    && m.iter().all(|&r| self.uniform(r) && !t.contains(&r))
+                    && v.iter().all(|r| !t.contains(r))
+                    && t.iter().all(|&r| self.temporary(r, 1))
+                    && !t.contains(dst)
+                    && !self.uniform(*dst)
+                {
+                    let op = Op::MatRow { d: self.r(*dst), m: m.map(|r| self.r(r)), v: v.map(|r| self.r(r)) };
+                    self.ops.push(op);
+                    k += 4;
+                    continue;
+                }
+            }
             // Clamp: t = max(a, lo); d = min(t, hi).
             if let [Inst::Binary { op: FMax, dst: t, a, b: lo }, Inst::Binary { op: FMin, dst, a: t2, b: hi }, ..] =
                 rest
@@ -1163,7 +1207,10 @@ pub(super) fn op_writes(op: &Op, wide: &[Wide]) -> ([R; 4], usize) {
         | Op::Select { d, .. }
         | Op::Clamp { d, .. }
         | Op::ClampSelect { d, .. }
-        | Op::Derivative { d, .. } => one(d),
+        | Op::Derivative { d, .. }
+        | Op::MatRow { d, .. }
+        | Op::Exp2 { d, .. }
+        | Op::Log2 { d, .. } => one(d),
         Op::Normalize3 { d, .. } => ([d[0], d[1], d[2], 0], 3),
         Op::Output { .. } => ([0; 4], 0),
         Op::MatVec(i) | Op::Texture(i) => match wide[i as usize] {

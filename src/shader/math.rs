@@ -155,6 +155,87 @@ pub fn exp2(x: f32) -> f32 {
     whole * polynomial(x - floor, &EXP2_POLYNOMIAL)
 }
 
+/// The lower clamp of [`exp2`]'s argument.
+const EXP2_MIN: f32 = -126.99999;
+
+/// The common case of [`fused_multiply_add`] in a lane loop: the rounded f64 sum, and
+/// `slow` set when the lane needs the rare case (the scalar function then decides).
+#[inline(always)]
+fn fma_common(a: f32, b: f32, c: f32, slow: &mut bool) -> f32 {
+    let s = a as f64 * b as f64 + c as f64;
+    *slow |= (s.to_bits() & 0x1fff_ffff == 0x1000_0000) | (s.abs() < f32::MIN_POSITIVE as f64) | s.is_nan();
+    s as f32
+}
+
+/// [`log2`] of sixteen lanes of f32 bits, the same bits: the common case branch-free over
+/// the lanes (so that it vectorises), then the scalar function for the lanes it does not
+/// cover (NaN, zero, negative, +∞, and the rare fused multiply-adds).
+#[inline(always)]
+pub fn log2_lanes(x: &[u32; 16]) -> [u32; 16] {
+    let c = LOG2_POLYNOMIAL.map(|c| c as f32);
+    let mut out = [0u32; 16];
+    let mut slow = [false; 16];
+    for i in 0..16 {
+        let bits = x[i];
+        let v = f32::from_bits(bits);
+        let mut s = (v <= 0.0) | v.is_nan() | (v == f32::INFINITY);
+        let exponent = (((bits & 0x7f80_0000) >> 23) as i32 - 127) as f32;
+        let mantissa = f32::from_bits((bits & 0x007f_ffff) | 1.0f32.to_bits());
+        let y = (mantissa - 1.0) / (mantissa + 1.0);
+        // polynomial(y², LOG2_POLYNOMIAL), its terms in its order.
+        let z = y * y;
+        let z2 = z * z;
+        let even = fma_common(z2, c[4], c[2], &mut s);
+        let odd = fma_common(z2, c[3], c[1], &mut s);
+        let even = fma_common(z2, even, c[0], &mut s);
+        let p = fma_common(odd, z, even, &mut s);
+        out[i] = fma_common(y, p, exponent, &mut s).to_bits();
+        slow[i] = s;
+    }
+    for i in 0..16 {
+        if slow[i] {
+            out[i] = log2(f32::from_bits(x[i])).to_bits();
+        }
+    }
+    out
+}
+
+/// [`exp2`] of sixteen lanes of f32 bits, the same bits (as [`log2_lanes`]; the scalar
+/// function takes NaN and the rare fused multiply-adds).
+#[inline(always)]
+pub fn exp2_lanes(x: &[u32; 16]) -> [u32; 16] {
+    let c = EXP2_POLYNOMIAL.map(|c| c as f32);
+    let mut out = [0u32; 16];
+    let mut slow = [false; 16];
+    for i in 0..16 {
+        let v = f32::from_bits(x[i]);
+        let mut s = v.is_nan();
+        // v.clamp(EXP2_MIN, 128.0) and floor_f32 of it (|v| < 2²³, not NaN), branch-free.
+        let v = if v < EXP2_MIN { EXP2_MIN } else { v };
+        let v = if v > 128.0 { 128.0 } else { v };
+        let t = v as i32 as f32;
+        let t = if t > v { t - 1.0 } else { t };
+        let floor = if t == 0.0 { 0.0f32.copysign(v) } else { t };
+        let whole = f32::from_bits(((floor as i32 + 127) as u32) << 23);
+        // polynomial(v − floor, EXP2_POLYNOMIAL), its terms in its order.
+        let r = v - floor;
+        let r2 = r * r;
+        let odd = fma_common(r2, c[5], c[3], &mut s);
+        let even = fma_common(r2, c[4], c[2], &mut s);
+        let odd = fma_common(r2, odd, c[1], &mut s);
+        let even = fma_common(r2, even, c[0], &mut s);
+        let p = fma_common(odd, r, even, &mut s);
+        out[i] = (whole * p).to_bits();
+        slow[i] = s;
+    }
+    for i in 0..16 {
+        if slow[i] {
+            out[i] = exp2(f32::from_bits(x[i])).to_bits();
+        }
+    }
+    out
+}
+
 /// The reduction of x by multiples of π/2, in f64 (exact enough for |x| ≤ 10⁵: π/2 in two
 /// parts, the first with 33 significant bits so that k·part is exact for k < 2²⁰): the
 /// remainder in [−π/4, π/4] and the quadrant.

@@ -1210,3 +1210,140 @@ fn the_fused_fragment_patterns_keep_their_bits() {
     }
     assert!(compared > 5000, "only {compared} numbers compared");
 }
+
+#[test]
+fn a_uniform_matrix_row_times_a_vector_is_one_operation_with_its_bits() {
+    // `m0·v0`, then `m1·v1 + t`, `m2·v2 + t`, `m3·v3 + t` with uniform m (the vertex
+    // programs' transforms): one MatRow, each product and sum rounded as the four
+    // instructions round them, on NaN, ±∞, ±0, denormals and overflowing products, with
+    // every lane running and with a partial mask, through run, prepare + run_prepared and
+    // bind_run + run_bound_run.
+    let mut p = Program::new(Stage::Vertex);
+    let v: Vec<Reg> = (0..4).map(|_| p.register(Type::F32)).collect();
+    let m: Vec<Reg> = (0..4).map(|_| p.register(Type::F32)).collect();
+    let t: Vec<Reg> = (0..4).map(|_| p.register(Type::F32)).collect();
+    let mut body = Vec::new();
+    for k in 0..4 {
+        p.input(Type::F32);
+        p.uniform(Type::F32);
+        body.push(Stmt::Inst(Inst::Input { dst: v[k], slot: k as u16 }));
+        body.push(Stmt::Inst(Inst::Uniform { dst: m[k], slot: k as u16 }));
+    }
+    p.output(Type::F32);
+    body.push(Stmt::Inst(Inst::Binary { op: BinaryOp::FMul, dst: t[0], a: m[0], b: v[0] }));
+    for k in 1..4 {
+        body.push(Stmt::Inst(Inst::Mad { dst: t[k], a: m[k], b: v[k], c: t[k - 1] }));
+    }
+    body.push(Stmt::Inst(Inst::Output { slot: 0, src: t[3] }));
+    p.body = body;
+    validate(&p).unwrap();
+    let compiled = Compiled::new(&p);
+    let fused = compiled.code().ops.iter().filter(|o| matches!(o, super::lower::Op::MatRow { .. })).count();
+    assert_eq!(fused, 1, "{:#?}", compiled.code());
+    let specials = [f32::NAN, -f32::NAN, 0.0, -0.0, f32::INFINITY, f32::NEG_INFINITY, 1e-45, 3.0e38, -2.5e-39, 0.1];
+    let mut rng = Rng(0x3a7_0000_2222);
+    for round in 0..40 {
+        let value =
+            |rng: &mut Rng| if rng.chance(30) { specials[rng.below(specials.len())] } else { rng.float() }.to_bits();
+        let inputs: Vec<Word> = (0..4).map(|_| std::array::from_fn(|_| value(&mut rng))).collect();
+        let uniforms: Vec<u32> = (0..4).map(|_| value(&mut rng)).collect();
+        for lanes in [ALL_LANES, 0x0ff0, 0x0001] {
+            let mut want = vec![[0u32; LANES]];
+            Executor::new().run(
+                &p,
+                &mut Io { inputs: &inputs, uniforms: &uniforms, outputs: &mut want, textures: &NoTextures },
+                lanes,
+            );
+            let check = |got: &[Word], how: &str| {
+                for i in (0..LANES).filter(|i| lanes >> i & 1 != 0) {
+                    assert!(
+                        same_word(got[0][i], want[0][i], Type::F32),
+                        "round {round}, {how}, lanes {lanes:#x}, lane {i}"
+                    );
+                }
+            };
+            let mut got = vec![[0u32; LANES]];
+            let mut io = Io { inputs: &inputs, uniforms: &uniforms, outputs: &mut got, textures: &NoTextures };
+            compiled.run(&mut Registers::new(), &mut io, lanes);
+            check(&got, "run");
+            let mut registers = Registers::new();
+            compiled.prepare(&mut registers, &uniforms);
+            let mut io = Io { inputs: &inputs, uniforms: &uniforms, outputs: &mut got, textures: &NoTextures };
+            compiled.run_prepared(&mut registers, &mut io, lanes);
+            check(&got, "run_prepared");
+            let bound = compiled.bind_run(4, 1).expect("straight-line code binds");
+            let mut registers = Registers::new();
+            compiled.prepare(&mut registers, &uniforms);
+            for (slot, r) in bound.inputs.iter().enumerate() {
+                registers.words_mut()[r.expect("every input is read") as usize] = inputs[slot];
+            }
+            compiled.run_bound_run(&bound, &mut registers, &uniforms, lanes);
+            check(&[registers.words()[bound.outputs[0] as usize]], "run_bound_run");
+        }
+    }
+}
+
+#[test]
+fn exp2_and_log2_over_lanes_give_the_scalar_functions_bits() {
+    // The executor's lane forms of Exp2 and Log2 against the scalar polynomials, on
+    // NaN, ±∞, ±0, denormals, negative values, the clamps of exp2 and random values, with
+    // every lane running and with a partial mask.
+    let specials = [
+        f32::NAN,
+        -f32::NAN,
+        0.0,
+        -0.0,
+        f32::INFINITY,
+        f32::NEG_INFINITY,
+        1e-45,
+        -1e-45,
+        1.1e-38,
+        -126.99999,
+        -127.0,
+        -200.0,
+        128.0,
+        127.99,
+        300.0,
+        -0.5,
+        1.0,
+        0.5,
+        2.0,
+        -3.25,
+    ];
+    let mut p = Program::new(Stage::Vertex);
+    let [x, e, l] = [0; 3].map(|_| p.register(Type::F32));
+    p.input(Type::F32);
+    p.output(Type::F32);
+    p.output(Type::F32);
+    p.body = vec![
+        Stmt::Inst(Inst::Input { dst: x, slot: 0 }),
+        Stmt::Inst(Inst::Unary { op: UnaryOp::Exp2, dst: e, a: x }),
+        Stmt::Inst(Inst::Unary { op: UnaryOp::Log2, dst: l, a: x }),
+        Stmt::Inst(Inst::Output { slot: 0, src: e }),
+        Stmt::Inst(Inst::Output { slot: 1, src: l }),
+    ];
+    validate(&p).unwrap();
+    let compiled = Compiled::new(&p);
+    let ops = &compiled.code().ops;
+    assert!(ops.iter().any(|o| matches!(o, super::lower::Op::Exp2 { .. })), "{ops:?}");
+    assert!(ops.iter().any(|o| matches!(o, super::lower::Op::Log2 { .. })), "{ops:?}");
+    let mut rng = Rng(0xe2_0000_3333);
+    for round in 0..2000 {
+        let input: Word = std::array::from_fn(|_| match rng.below(4) {
+            0 => specials[rng.below(specials.len())].to_bits(),
+            1 => rng.next() as u32,
+            _ => rng.float().to_bits(),
+        });
+        let lanes = if round % 2 == 0 { ALL_LANES } else { 0x9c3f };
+        let mut got = vec![[0u32; LANES]; 2];
+        let mut io = Io { inputs: &[input], uniforms: &[], outputs: &mut got, textures: &NoTextures };
+        compiled.run(&mut Registers::new(), &mut io, lanes);
+        for i in (0..LANES).filter(|i| lanes >> i & 1 != 0) {
+            let v = f32::from_bits(input[i]);
+            assert_eq!(got[0][i], super::math::exp2(v).to_bits(), "exp2 of {v:e} ({:#x})", input[i]);
+            assert_eq!(got[1][i], super::math::log2(v).to_bits(), "log2 of {v:e} ({:#x})", input[i]);
+        }
+        assert_eq!(super::math::exp2_lanes(&input), input.map(|b| super::math::exp2(f32::from_bits(b)).to_bits()));
+        assert_eq!(super::math::log2_lanes(&input), input.map(|b| super::math::log2(f32::from_bits(b)).to_bits()));
+    }
+}

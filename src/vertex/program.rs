@@ -36,7 +36,7 @@
 
 use super::lighting::{Lighting, NormalScaling};
 use super::texgen::Gen as Generation;
-use super::transform::{FogSource, Transform};
+use super::transform::{Binding, FogSource, Transform};
 use crate::gl::enums::{GL_AMBIENT, GL_AMBIENT_AND_DIFFUSE, GL_DIFFUSE, GL_EMISSION, GL_SPECULAR};
 use crate::shader::build::Builder;
 use crate::shader::fast::Compiled;
@@ -318,6 +318,9 @@ pub enum VertexOutput {
 pub struct CompiledVertex {
     pub generated: VertexProgram,
     pub compiled: Compiled,
+    /// Its inputs and outputs in registers, when the compiled form allows it (every
+    /// generated program so far: straight-line code).
+    pub binding: Option<Binding>,
 }
 
 impl CompiledVertex {
@@ -325,7 +328,8 @@ impl CompiledVertex {
     pub fn generate(key: &VertexKey) -> CompiledVertex {
         let generated = VertexProgram::generate(key);
         let compiled = Compiled::new(&generated.program);
-        CompiledVertex { generated, compiled }
+        let binding = Binding::of(&generated, &compiled);
+        CompiledVertex { generated, compiled, binding }
     }
 }
 
@@ -624,9 +628,11 @@ impl Gen {
     /// computes it: ((c0·x + c1·y) + c2·z) + c3·w per row, every product and sum rounded.
     fn matrix_times(&mut self, which: impl Fn(u8) -> VertexUniform, v: [Reg; 4]) -> [Reg; 4] {
         std::array::from_fn(|r| {
+            // The row's uniforms first, then its four operations in a row: the executor
+            // fuses them into one ([`crate::shader::lower::Op::MatRow`]).
+            let row: [Reg; 4] = std::array::from_fn(|c| self.uniform(which(4 * c as u8 + r as u8)));
             let mut sum = None;
-            for (c, &x) in v.iter().enumerate() {
-                let m = self.uniform(which(4 * c as u8 + r as u8));
+            for (&m, &x) in row.iter().zip(&v) {
                 sum = Some(match sum {
                     None => self.binary(BinaryOp::FMul, m, x),
                     Some(s) => self.mad(m, x, s),

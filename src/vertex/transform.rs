@@ -17,12 +17,13 @@
 //! (`super::program::reference`, test builds).
 use super::clip::ClipVertex;
 use super::lighting::{Lighting, LightingState, Material, NormalScaling};
-use super::program::{CompiledVertex, VertexInput, VertexKey, VertexOutput};
+use super::program::{CompiledVertex, VertexInput, VertexKey, VertexOutput, VertexProgram};
 use super::texgen::TexGen;
 use super::Vertex;
 use crate::shader::exec::{Io, NoTextures, Word, ALL_LANES, LANES};
-use crate::shader::fast::Registers;
-use glam::Mat4;
+use crate::shader::fast::{BoundRun, Compiled, Registers};
+use crate::shader::lower::R;
+use glam::{Mat4, Vec4};
 use std::sync::Arc;
 
 /// Where the fog coordinate of a vertex comes from (GL_FOG_COORD_SRC and
@@ -75,6 +76,8 @@ struct Scratch {
     inputs: Vec<Word>,
     outputs: Vec<Word>,
     clip: Vec<ClipVertex>,
+    /// The records of one batch, made in place ([`Run::transform_bound`]).
+    batch: Vec<ClipVertex>,
 }
 
 /// The vertices of a draw from vertex `from` on, up to the next run: one program and one
@@ -172,23 +175,70 @@ impl VertexStage {
 }
 
 impl Run {
-    /// Appends the clip-space vertices of `vertices` to `scratch.clip`: 16 vertices at a
-    /// time gathered into the program's input words, run, and scattered back.
+    /// Appends the clip-space vertices of `vertices` to `scratch.clip`.
     fn transform(&self, vertices: &[Vertex], scratch: &mut Scratch) {
+        // The uniform values once for the run, not per batch.
+        self.program.compiled.prepare(&mut scratch.registers, &self.uniforms);
+        match &self.program.binding {
+            Some(binding) => self.transform_bound(binding, vertices, scratch),
+            None => self.transform_staged(vertices, scratch),
+        }
+    }
+
+    /// 16 vertices at a time: their attributes written straight into the program's input
+    /// registers, the program run, the clip-space vertices made from its output registers.
+    fn transform_bound(&self, binding: &Binding, vertices: &[Vertex], scratch: &mut Scratch) {
+        let compiled = &self.program.compiled;
+        for batch in vertices.chunks(LANES) {
+            let words = scratch.registers.words_mut();
+            gather4(batch, words, binding.position, |v| v.position);
+            gather4(batch, words, binding.normal, |v| [v.normal[0], v.normal[1], v.normal[2], 0.0]);
+            gather4(batch, words, binding.color, |v| v.color);
+            gather4(batch, words, binding.secondary_color, |v| v.secondary_color);
+            gather4(batch, words, [binding.fog_coord, None, None, None], |v| [v.fog_coord, 0.0, 0.0, 0.0]);
+            for (unit, &registers) in binding.tex_coords.iter().enumerate() {
+                gather4(batch, words, registers, |v| v.tex_coords[unit]);
+            }
+            let lanes = if batch.len() == LANES { ALL_LANES } else { (1u16 << batch.len()) - 1 };
+            compiled.run_bound_run(&binding.bound, &mut scratch.registers, &self.uniforms, lanes);
+            let w = scratch.registers.words();
+            let base = scratch.clip.len();
+            // The batch's records are made in place in a buffer of sixteen (every field
+            // written; the sixteen standard outputs by 4×4 transposes of their words), then
+            // appended at once: a record built on the stack and pushed is a copy more.
+            let n = batch.len().min(LANES);
+            if scratch.batch.len() != LANES {
+                scratch.batch = vec![EMPTY; LANES];
+            }
+            let records = &mut scratch.batch[..n];
+            let group = |g: usize| -> [&Word; 4] { std::array::from_fn(|j| &w[binding.standard[4 * g + j] as usize]) };
+            transpose_out(group(0), records, |c| &mut c.clip);
+            transpose_out(group(1), records, |c| &mut c.eye);
+            transpose_out(group(2), records, |c| &mut c.color);
+            transpose_out(group(3), records, |c| &mut c.secondary_color);
+            let fog = &w[binding.standard[16] as usize];
+            // Plain indexed loops: iterator adapters stay calls in builds without LTO.
+            for lane in 0..n {
+                let (v, c) = (&batch[lane], &mut records[lane]);
+                c.back_colors = if self.lit_one_sided { [c.color, c.secondary_color] } else { [[0.0; 4]; 2] };
+                c.tex_coords = v.tex_coords;
+                c.fog_coord = f32::from_bits(fog[lane]);
+                c.edge_flag = v.edge_flag;
+            }
+            scratch.clip.extend_from_slice(records);
+            let out = &mut scratch.clip[base..];
+            for &(what, r) in &binding.scattered {
+                scatter(what, &w[r as usize], out);
+            }
+        }
+    }
+
+    /// 16 vertices at a time gathered into the program's input words, run, and scattered
+    /// back (programs [`Binding::of`] does not bind).
+    fn transform_staged(&self, vertices: &[Vertex], scratch: &mut Scratch) {
         let generated = &self.program.generated;
         scratch.inputs.resize(generated.inputs.len(), [0; LANES]);
         scratch.outputs.resize(generated.outputs.len(), [0; LANES]);
-        // Every program's first sixteen outputs: clip and eye coordinates, primary and
-        // secondary colours, in that order; the vertices are made from them (and the fog
-        // coordinate) directly, the others scattered.
-        // The last output is the fog coordinate.
-        let standard = generated.outputs.len() >= 17
-            && generated.outputs[..16].iter().enumerate().all(|(i, &o)| o == STANDARD_OUTPUTS[i])
-            && generated.outputs.last() == Some(&VertexOutput::FogCoord);
-        let scattered = if standard { 16 } else { 0 };
-        let unscattered = if standard { 1 } else { 0 };
-        // The uniform values once for the run, not per batch.
-        self.program.compiled.prepare(&mut scratch.registers, &self.uniforms);
         for batch in vertices.chunks(LANES) {
             for (word, &source) in scratch.inputs.iter_mut().zip(&generated.inputs) {
                 gather(source, batch, word);
@@ -202,48 +252,23 @@ impl Run {
             };
             self.program.compiled.run_prepared(&mut scratch.registers, &mut io, lanes);
             let base = scratch.clip.len();
-            let o = &scratch.outputs;
             // What the program does not write: texture coordinates of units without texgen
             // or texture matrix, the edge flag, and the back colours of unlit vertices.
-            if standard {
-                let fog = &o[o.len() - 1];
-                for (lane, v) in batch.iter().enumerate() {
-                    let mut first = [[0.0f32; 4]; 4];
-                    for k in 0..16 {
-                        first[k / 4][k % 4] = f32::from_bits(o[k][lane]);
-                    }
-                    let [clip, eye, color, secondary_color] = first;
-                    scratch.clip.push(ClipVertex {
-                        clip,
-                        eye,
-                        color,
-                        secondary_color,
-                        back_colors: if self.lit_one_sided { [color, secondary_color] } else { [[0.0; 4]; 2] },
-                        tex_coords: v.tex_coords,
-                        fog_coord: f32::from_bits(fog[lane]),
-                        edge_flag: v.edge_flag,
-                    });
-                }
-            } else {
-                for v in batch {
-                    scratch.clip.push(ClipVertex {
-                        clip: [0.0; 4],
-                        eye: [0.0; 4],
-                        color: [0.0; 4],
-                        secondary_color: [0.0; 4],
-                        back_colors: [[0.0; 4]; 2],
-                        tex_coords: v.tex_coords,
-                        fog_coord: 0.0,
-                        edge_flag: v.edge_flag,
-                    });
-                }
-            }
+            scratch.clip.extend(batch.iter().map(|v| ClipVertex {
+                clip: [0.0; 4],
+                eye: [0.0; 4],
+                color: [0.0; 4],
+                secondary_color: [0.0; 4],
+                back_colors: [[0.0; 4]; 2],
+                tex_coords: v.tex_coords,
+                fog_coord: 0.0,
+                edge_flag: v.edge_flag,
+            }));
             let out = &mut scratch.clip[base..];
-            let middle = scattered..generated.outputs.len() - unscattered;
-            for (word, &what) in o[middle.clone()].iter().zip(&generated.outputs[middle.clone()]) {
+            for (word, &what) in scratch.outputs.iter().zip(&generated.outputs) {
                 scatter(what, word, out);
             }
-            if self.lit_one_sided && !standard {
+            if self.lit_one_sided {
                 for c in out {
                     c.back_colors = [c.color, c.secondary_color];
                 }
@@ -251,6 +276,147 @@ impl Run {
         }
     }
 }
+
+/// Where a vertex program's inputs and outputs live in its register file
+/// ([`Compiled::bind`]), for [`Run::transform_bound`]: per attribute the registers of its
+/// components (`None`: not read), the registers of the sixteen outputs every program has
+/// first (clip and eye coordinates, primary and secondary colours) and of the fog
+/// coordinate, its last output, and the others' (back colours, texture coordinates).
+#[derive(Clone, Debug)]
+pub struct Binding {
+    bound: BoundRun,
+    position: [Option<R>; 4],
+    normal: [Option<R>; 4],
+    color: [Option<R>; 4],
+    secondary_color: [Option<R>; 4],
+    fog_coord: Option<R>,
+    tex_coords: Vec<[Option<R>; 4]>,
+    standard: [R; 17],
+    scattered: Vec<(VertexOutput, R)>,
+}
+
+impl Binding {
+    /// The binding of `generated`'s compiled form `compiled`, if it can be bound.
+    pub fn of(generated: &VertexProgram, compiled: &Compiled) -> Option<Binding> {
+        let outputs = &generated.outputs;
+        let standard_layout = outputs.len() >= 17
+            && outputs[..16].iter().enumerate().all(|(i, &o)| o == STANDARD_OUTPUTS[i])
+            && outputs.last() == Some(&VertexOutput::FogCoord);
+        if !standard_layout {
+            return None;
+        }
+        let bound = compiled.bind_run(generated.inputs.len(), outputs.len())?;
+        let mut binding = Binding {
+            position: [None; 4],
+            normal: [None; 4],
+            color: [None; 4],
+            secondary_color: [None; 4],
+            fog_coord: None,
+            tex_coords: Vec::new(),
+            standard: [0; 17],
+            scattered: Vec::new(),
+            bound,
+        };
+        for (&source, &register) in generated.inputs.iter().zip(&binding.bound.inputs) {
+            let Some(r) = register else { continue };
+            match source {
+                VertexInput::Position(k) => binding.position[k as usize & 3] = Some(r),
+                VertexInput::Normal(k) => binding.normal[(k as usize).min(2)] = Some(r),
+                VertexInput::Color(k) => binding.color[k as usize & 3] = Some(r),
+                VertexInput::SecondaryColor(k) => binding.secondary_color[k as usize & 3] = Some(r),
+                VertexInput::FogCoord => binding.fog_coord = Some(r),
+                VertexInput::TexCoord { unit, k } => {
+                    let unit = unit as usize;
+                    if binding.tex_coords.len() <= unit {
+                        binding.tex_coords.resize(unit + 1, [None; 4]);
+                    }
+                    binding.tex_coords[unit][k as usize & 3] = Some(r);
+                }
+                // The lighting-only programs' input, which no vertex program reads.
+                VertexInput::Eye(_) => return None,
+            }
+        }
+        let registers = &binding.bound.outputs;
+        binding.standard[..16].copy_from_slice(&registers[..16]);
+        binding.standard[16] = registers[registers.len() - 1];
+        binding.scattered =
+            outputs[16..outputs.len() - 1].iter().copied().zip(registers[16..].iter().copied()).collect();
+        Some(binding)
+    }
+}
+
+/// Writes the words of `registers` (the components of an attribute, `None` for those the
+/// program does not read) with the attribute `get` of the vertices of `batch` (lanes past
+/// the batch get zeros: the program runs them, but nothing reads their results).
+#[inline(always)]
+fn gather4(batch: &[Vertex], words: &mut [Word], registers: [Option<R>; 4], get: impl Fn(&Vertex) -> [f32; 4]) {
+    if registers[0].is_none() && registers[1].is_none() && registers[2].is_none() && registers[3].is_none() {
+        return;
+    }
+    // Four vertices at a time: their attribute vectors are the columns of a matrix whose
+    // transpose's columns are four lanes of the component words (glam's SSE shuffles).
+    let mut t = [[0.0f32; LANES]; 4];
+    let n = batch.len().min(LANES);
+    for quad in 0..LANES / 4 {
+        let column = |i: usize| {
+            let lane = 4 * quad + i;
+            if lane < n {
+                Vec4::from_array(get(&batch[lane]))
+            } else {
+                Vec4::ZERO
+            }
+        };
+        let m = Mat4::from_cols(column(0), column(1), column(2), column(3)).transpose();
+        for (k, word) in t.iter_mut().enumerate() {
+            word[4 * quad..4 * quad + 4].copy_from_slice(&m.col(k).to_array());
+        }
+        if 4 * quad + 4 >= n {
+            break;
+        }
+    }
+    for k in 0..4 {
+        if let Some(r) = registers[k] {
+            let word = &mut words[r as usize];
+            for lane in 0..LANES {
+                word[lane] = t[k][lane].to_bits();
+            }
+        }
+    }
+}
+
+/// Transposes the four words `words` (a group of four standard outputs) into the field
+/// `field` of the records `out` (one per lane).
+#[inline(always)]
+fn transpose_out(words: [&Word; 4], out: &mut [ClipVertex], field: impl Fn(&mut ClipVertex) -> &mut [f32; 4]) {
+    for quad in 0..LANES / 4 {
+        let column = |j: usize| {
+            let w = &words[j];
+            let x = |i: usize| f32::from_bits(w[4 * quad + i]);
+            Vec4::new(x(0), x(1), x(2), x(3))
+        };
+        let m = Mat4::from_cols(column(0), column(1), column(2), column(3)).transpose();
+        for i in 0..4 {
+            if let Some(c) = out.get_mut(4 * quad + i) {
+                *field(c) = m.col(i).to_array();
+            }
+        }
+        if 4 * quad + 4 >= out.len() {
+            break;
+        }
+    }
+}
+
+/// A record every field of which the batch overwrites.
+const EMPTY: ClipVertex = ClipVertex {
+    clip: [0.0; 4],
+    eye: [0.0; 4],
+    color: [0.0; 4],
+    secondary_color: [0.0; 4],
+    back_colors: [[0.0; 4]; 2],
+    tex_coords: [[0.0; 4]; crate::gl::limits::MAX_TEXTURE_UNITS],
+    fog_coord: 0.0,
+    edge_flag: false,
+};
 
 /// The first sixteen outputs of every vertex program.
 const STANDARD_OUTPUTS: [VertexOutput; 16] = {

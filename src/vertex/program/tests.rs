@@ -387,10 +387,45 @@ fn the_vertex_stage_gives_the_reference_s_vertices_across_batches_and_material_r
             "case {case}: {count} vertices, marks at {:?}",
             marks.iter().map(|m| m.0).collect::<Vec<_>>()
         );
+        // The staged path (programs whose inputs and outputs are not bound to registers)
+        // gives the same vertices; every generated program binds.
+        let staged = VertexStage::new(&t, count, |key| {
+            let mut compiled = CompiledVertex::generate(key);
+            assert!(compiled.binding.is_some(), "case {case}: a generated program binds");
+            compiled.binding = None;
+            Arc::new(compiled)
+        });
+        let got: Vec<Vec<u32>> = staged.run(&vertices, 0, |c| c.iter().map(clip_bits).collect());
+        assert_eq!(got, want, "case {case}: the staged path");
         // A later part of the draw (a draw split between threads) counts marks from the
         // draw's first vertex.
         let split = count / 2;
         let tail: Vec<Vec<u32>> = stage.run(&vertices[split..], split, |c| c.iter().map(clip_bits).collect());
         assert_eq!(tail, want[split..], "case {case}: the part from vertex {split}");
     }
+}
+
+#[test]
+fn the_transforms_run_as_fused_matrix_rows_and_the_program_binds() {
+    // The clip and eye transforms are one MatRow per row (the executor's fused form, which
+    // the generator's instruction order must keep reachable), and the program binds its
+    // inputs and outputs to registers.
+    use crate::shader::lower::Op;
+    let t = Transform {
+        modelview: glam::Mat4::IDENTITY,
+        model_project: glam::Mat4::IDENTITY,
+        clamp_color: true,
+        fog: None,
+        texgen: crate::vertex::texgen::TexGen {
+            units: &[],
+            modelview_inverse: glam::Mat4::IDENTITY,
+            normalize: false,
+            rescale_normal: false,
+        },
+        lighting: None,
+    };
+    let compiled = CompiledVertex::generate(&VertexKey::of(&t, None));
+    let rows = compiled.compiled.code().ops.iter().filter(|o| matches!(o, Op::MatRow { .. })).count();
+    assert_eq!(rows, 8, "{:#?}", compiled.compiled.code());
+    assert!(compiled.binding.is_some());
 }
