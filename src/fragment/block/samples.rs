@@ -25,9 +25,12 @@
 //! the blocks with a passing sample; alpha-to-one; then per sample the target writes
 //! (blend, logic op, dither at the pixel's position, masks).
 //!
-//! Draws with the alpha test or alpha-to-coverage (which need colours before the tests)
-//! and with depth clamping (which the multisampled span path has never applied) are not
-//! compiled for this path: `setup` keeps them on the span path.
+//! With the alpha test the colours come first, block by block (after a read-only
+//! per-sample stencil/depth test that drops blocks none of whose samples can pass, when a
+//! failing fragment changes nothing): the alpha test removes a failing pixel's every
+//! sample, then the per-sample tests run. Draws with alpha-to-coverage and with depth
+//! clamping (which the multisampled span path has never applied) are not compiled for this
+//! path: `setup` keeps them on the span path.
 
 use super::{block_colors, write_targets, BlockColors, BlockEntry, BlockInputs, BlockPipeline, F32s, Grid, BATCH};
 use crate::fragment::pipeline::{DrawState, Scratch};
@@ -86,12 +89,9 @@ impl SampleBatch {
 
 impl BlockPipeline {
     /// Whether a draw state runs on the multisampled block path (see the module): without
-    /// the alpha test, alpha-to-coverage and depth clamping.
+    /// alpha-to-coverage and depth clamping.
     pub fn takes_samples(state: &DrawState) -> bool {
-        let f = &state.fragment;
-        f.alpha.is_none()
-            && f.depth_clamp.is_none()
-            && !state.multisample.is_some_and(|m| m.enabled && m.alpha_to_coverage)
+        state.fragment.depth_clamp.is_none() && !state.multisample.is_some_and(|m| m.enabled && m.alpha_to_coverage)
     }
 
     /// Runs the multisampled pipeline (see the module) on the blocks of `batch` of a
@@ -117,6 +117,33 @@ impl BlockPipeline {
         }
         let samples = band.samples.min(MAX_SAMPLES);
         let grid = Grid::new(band, level);
+        let alpha_to_one = state.multisample.is_some_and(|m| m.enabled && m.alpha_to_one);
+        if self.alpha.is_some() {
+            // Colours first, kept per block for the target writes (as `render`).
+            let mut shaded = [BlockColors::Uniform([0.0; 4]); BATCH];
+            let survivors = outlined(
+                level,
+                #[inline(always)]
+                |level| {
+                    let grid = Grid { level, ..grid };
+                    alpha_sample_blocks(self, state, band, scratch, grid, inputs, front_facing, blocks, &mut shaded)
+                },
+            );
+            if survivors > 0 && !self.targets.is_empty() {
+                let (blocks, shaded) = (&blocks[..survivors], &shaded[..survivors]);
+                outlined(
+                    level,
+                    #[inline(always)]
+                    |level| {
+                        let grid = Grid { level, ..grid };
+                        let fragment = &state.fragment;
+                        let colors = ShadedColors::Kept(shaded);
+                        color_sample_blocks(self, fragment, band, scratch, grid, inputs, blocks, colors, alpha_to_one)
+                    },
+                );
+            }
+            return;
+        }
         if let Some(kernel) = &self.depth_stencil {
             outlined(
                 level,
@@ -175,16 +202,100 @@ impl BlockPipeline {
             return;
         }
         let blocks = &blocks[..kept];
-        let alpha_to_one = state.multisample.is_some_and(|m| m.enabled && m.alpha_to_one);
         outlined(
             level,
             #[inline(always)]
             |level| {
                 let grid = Grid { level, ..grid };
-                color_sample_blocks(self, &state.fragment, band, scratch, grid, inputs, blocks, samples, alpha_to_one)
+                let colors = ShadedColors::Compute;
+                color_sample_blocks(self, &state.fragment, band, scratch, grid, inputs, blocks, colors, alpha_to_one)
             },
         );
     }
+}
+
+/// The colours of the blocks [`color_sample_blocks`] writes: computed there, or kept from
+/// the alpha test (one per block).
+#[derive(Clone, Copy)]
+enum ShadedColors<'a> {
+    Compute,
+    Kept(&'a [BlockColors]),
+}
+
+/// The pipeline up to the target writes with the alpha test, block by block, compiled once
+/// per SIMD level (the span path's order): the colours of the pixels with a covered
+/// sample, the alpha test (a failing pixel loses every sample), then per sample the
+/// stencil and depth tests, and the occlusion count. When a failing fragment changes
+/// nothing, a read-only test first drops blocks none of whose samples can pass (no colours
+/// computed for them). Keeps in `blocks`, in order, the blocks with a surviving sample
+/// (their masks the pixels with one) and their colours in `shaded`; returns how many.
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn alpha_sample_blocks<I: SampleInputs>(
+    pipeline: &BlockPipeline,
+    state: &DrawState,
+    band: &mut Band<'_>,
+    scratch: &mut Scratch,
+    grid: Grid,
+    inputs: &I,
+    front_facing: bool,
+    blocks: &mut [SampleEntry],
+    shaded: &mut [BlockColors; BATCH],
+) -> usize {
+    let Some(alpha) = &pipeline.alpha else { return 0 };
+    let samples = band.samples.min(MAX_SAMPLES);
+    let fragment = &state.fragment;
+    let mut kept = 0;
+    let mut passed = 0u32;
+    for i in 0..blocks.len() {
+        let mut b = blocks[i];
+        let (x, y) = (b.x, b.y);
+        if let Some(kernel) = pipeline.depth_stencil.as_ref().filter(|k| k.culls_before_alpha()) {
+            let mut any = 0;
+            for s in (0..samples).filter(|&s| b.samples[s] != 0) {
+                let at = grid.sample(s).at(x, y);
+                any |= kernel.test(&mut band.depth, &at, b.samples[s], front_facing, || inputs.sample_z(x, y, s));
+                if any != 0 {
+                    break;
+                }
+            }
+            if any == 0 {
+                continue;
+            }
+        }
+        let at = grid.at(x, y);
+        let colors = &mut shaded[kept.min(BATCH - 1)];
+        block_colors(fragment, scratch, &at, b.mask, inputs, colors);
+        let live = match colors {
+            BlockColors::Uniform(c) => alpha.test(grid.level, &[c[3]; super::LANES], b.mask),
+            BlockColors::Lanes(l) => alpha.test(grid.level, &l[3], b.mask),
+        };
+        if live == 0 {
+            continue;
+        }
+        let mut mask = 0;
+        for s in 0..samples {
+            let mut m = b.samples[s] & live;
+            if m != 0 {
+                if let Some(kernel) = &pipeline.depth_stencil {
+                    let at = grid.sample(s).at(x, y);
+                    m = kernel.run(&mut band.depth, &at, m, front_facing, || inputs.sample_z(x, y, s));
+                }
+            }
+            b.samples[s] = m;
+            mask |= m;
+            passed += m.count_ones();
+        }
+        if mask == 0 {
+            continue;
+        }
+        blocks[kept] = SampleEntry { mask, ..b };
+        kept += 1;
+    }
+    if let Some(counter) = &state.samples_passed {
+        counter.fetch_add(u64::from(passed), Ordering::Relaxed);
+    }
+    kept
 }
 
 /// The colours of blocks whose tests are done, once per block, written to each sample's
@@ -199,13 +310,17 @@ fn color_sample_blocks<I: BlockInputs>(
     grid: Grid,
     inputs: &I,
     blocks: &[SampleEntry],
-    samples: usize,
+    shaded: ShadedColors<'_>,
     alpha_to_one: bool,
 ) {
+    let samples = band.samples.min(MAX_SAMPLES);
     let mut colors = BlockColors::Uniform([0.0; 4]);
-    for b in blocks {
+    for (i, b) in blocks.iter().enumerate() {
         let at = grid.at(b.x, b.y);
-        block_colors(fragment, scratch, &at, b.mask, inputs, &mut colors);
+        match shaded {
+            ShadedColors::Compute => block_colors(fragment, scratch, &at, b.mask, inputs, &mut colors),
+            ShadedColors::Kept(kept) => colors = kept[i],
+        }
         if alpha_to_one {
             match &mut colors {
                 BlockColors::Uniform(c) => c[3] = 1.0,

@@ -748,7 +748,7 @@ mod sample_block_tests {
     use crate::fragment::blend::{Blend, BlendEquation, BlendFactor, BlendFunc};
     use crate::fragment::multisample::MultisampleState;
     use crate::fragment::stencil::{StencilFace, StencilOp};
-    use crate::fragment::{DepthTest, FragmentState, StencilTest};
+    use crate::fragment::{AlphaTest, DepthTest, FragmentState, StencilTest};
     use crate::framebuffer::band::{ColorBand, ColorTarget, DepthBand};
     use crate::framebuffer::{ColorFormat, ColorSlot, DepthStencilFormat};
     use crate::gl::limits::MAX_TEXTURE_UNITS;
@@ -868,6 +868,10 @@ mod sample_block_tests {
             fragment.stencil = Some(StencilTest { front: face(rng), back: face(rng) });
         }
         if rng.below(3) == 0 {
+            let func = CompareFunc::ALL[rng.below(8) as usize];
+            fragment.alpha = Some(AlphaTest { func, reference: rng.unit(), unorm8: rng.below(2) == 0 });
+        }
+        if rng.below(3) == 0 {
             let func = BlendFunc {
                 src: BlendFactor::SrcAlpha,
                 dst: BlendFactor::OneMinusSrcAlpha,
@@ -904,7 +908,7 @@ mod sample_block_tests {
     fn multisampled_blocks_write_what_sample_spans_write() {
         let size = 70i32;
         let mut rng = Rng(0x2545_f491_4f6c_dd1d);
-        for round in 0..300 {
+        for round in 0..600 {
             let samples = [2, 4, 8][round % 3];
             let format = [
                 DepthStencilFormat::Packed24 { depth: true, stencil: true },
