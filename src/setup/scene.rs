@@ -642,9 +642,10 @@ impl Scene {
         // Each draw state compiled once into lane kernels for this framebuffer's formats (the
         // band's colour targets are the scene's targets the framebuffer has, in order).
         let single_sampled = framebuffer.samples() == 1;
+        // (A multisampled framebuffer's bands are its sample layers: their formats.)
         let formats: Vec<ColorFormat> =
-            self.targets.iter().filter_map(|&slot| framebuffer.color(slot).map(|b| b.format())).collect();
-        let depth_format = framebuffer.depth_stencil().format();
+            self.targets.iter().filter_map(|&slot| framebuffer.band_color_format(slot)).collect();
+        let depth_format = framebuffer.band_depth_stencil_format();
         // Multisampled: the states the sample block path takes (`fragment::block::samples`).
         let pipelines: Vec<Option<BlockPipeline>> = self
             .states
