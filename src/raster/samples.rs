@@ -85,9 +85,8 @@ impl SampleEdges {
         }
         for (s, o) in out.iter_mut().enumerate().take(self.samples) {
             let mut outside = 0u16;
-            for k in 0..3 {
-                let base = corner[k] + self.shifts[k][s];
-                let steps = &self.steps[k];
+            for ((c, shifts), steps) in corner.iter().zip(&self.shifts).zip(&self.steps) {
+                let base = c + shifts[s];
                 for (i, step) in steps.iter().enumerate() {
                     outside |= (((base + step) as u64 >> 63) as u16) << i;
                 }
