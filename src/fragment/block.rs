@@ -35,10 +35,12 @@
 //! as whole rows in registers ([`load`], [`store`], `simd::dispatch::load_block`) and pack
 //! lane masks by movemask (`simd::dispatch::sign_mask16`).
 //!
-//! Only single-sampled filled triangles outside the exact accuracy mode take this path
-//! (`setup::jobs::triangle`); lines, points, smooth primitives, pixel rectangles,
-//! multisampled targets and `TESSERA_ACCURACY=exact` keep the span pipeline
-//! ([`super::pipeline`]) until they move to blocks.
+//! Only filled triangles outside the exact accuracy mode take this path
+//! (`setup::jobs::triangle`), on multisampled targets through [`samples`] (one sample's
+//! plane of a block at a time, the colour once per block) unless the draw uses
+//! alpha-to-coverage or depth clamping; lines, points, smooth primitives, pixel
+//! rectangles, those multisampled draws and `TESSERA_ACCURACY=exact` keep the span
+//! pipeline ([`super::pipeline`]) until they move to blocks.
 
 pub mod depth_stencil;
 pub mod kernels;

@@ -14,8 +14,11 @@
 //! the tile is walked hierarchically on its integer edge functions
 //! (`raster::blocks`) and each block runs the lane pipeline (`fragment::block`), with
 //! depth, colours and varyings evaluated per lane from the same planes and the same
-//! arithmetic as the span path ([`TriangleJob::render_blocks`]). Multisampled targets
-//! and the exact mode keep the span path.
+//! arithmetic as the span path ([`TriangleJob::render_blocks`]). On a multisampled
+//! target the walk covers every pixel with a possibly covered sample and each block gets
+//! its exact per-sample masks (`raster::samples`), its depth per sample from the same
+//! plane at the sample positions ([`TriangleJob::render_sample_blocks`]); draws with
+//! alpha-to-coverage or depth clamping, and the exact mode, keep the span path.
 use crate::fragment::block::samples::{SampleBatch, SampleInputs};
 use crate::fragment::block::{lanes, Batch, BlockColors, BlockInputs, BlockPipeline, F32s};
 use crate::fragment::pipeline::{shade_span, shade_span_samples, DrawState, Scratch, Span};
