@@ -35,13 +35,16 @@
 //! as whole rows in registers ([`load`], [`store`], `simd::dispatch::load_block`) and pack
 //! lane masks by movemask (`simd::dispatch::sign_mask16`).
 //!
-//! Only single-sampled filled triangles outside the exact accuracy mode take this path
-//! (`setup::jobs::triangle`); lines, points, smooth primitives, pixel rectangles,
-//! multisampled targets and `TESSERA_ACCURACY=exact` keep the span pipeline
-//! ([`super::pipeline`]) until they move to blocks.
+//! Only filled triangles outside the exact accuracy mode take this path
+//! (`setup::jobs::triangle`), on multisampled targets through [`samples`] (one sample's
+//! plane of a block at a time, the colour once per block) unless the draw uses
+//! alpha-to-coverage or depth clamping; lines, points, smooth primitives, pixel
+//! rectangles, those multisampled draws and `TESSERA_ACCURACY=exact` keep the span
+//! pipeline ([`super::pipeline`]) until they move to blocks.
 
 pub mod depth_stencil;
 pub mod kernels;
+pub mod samples;
 
 use super::pipeline::{DrawState, Scratch};
 use super::{AlphaTest, FragmentState};
@@ -78,7 +81,8 @@ pub fn map_lanes<T: Copy, U: Copy + Default>(a: &[T; LANES], f: impl Fn(T) -> U)
 }
 
 /// Where a block lies in its band: window position, the index of its lane 0 in the band's
-/// slices, the band's row length, which lanes are pixels of the band (all but at the
+/// slices, the distance between its rows there (the band's row length; on a multisampled
+/// band its samples' rows too), which lanes are pixels of the band (all but at the
 /// framebuffer's right and top edges), and the SIMD level of the copy handling it (a
 /// constant there: [`load`] and [`store`] move whole rows with that level's instructions).
 #[derive(Clone, Copy, Debug)]
@@ -92,28 +96,41 @@ pub struct BlockAt {
 }
 
 /// A band's rows as its blocks see them (a copy, so that the band's layers can be borrowed
-/// while blocks are placed).
+/// while blocks are placed). On a multisampled band a grid is one sample's plane
+/// ([`Grid::sample`]): its pixel rows `stride` apart in the band's slices (the samples of
+/// a pixel row are consecutive storage rows, `framebuffer::multisample`), from `offset`.
 #[derive(Clone, Copy, Debug)]
 pub struct Grid {
     pub y0: i32,
     pub rows: usize,
     pub width: usize,
+    /// The distance between pixel rows in the band's slices (`width · samples`).
+    pub stride: usize,
+    /// The index of the grid's first pixel in the band's slices (sample `s`: `s · width`).
+    pub offset: usize,
     pub level: Supported,
 }
 
 impl Grid {
-    /// `band`'s rows, for the copy of level `level`.
+    /// `band`'s rows (sample 0's on a multisampled band), for the copy of level `level`.
     #[inline(always)]
     pub fn new(band: &Band<'_>, level: Supported) -> Self {
-        Grid { y0: band.y0, rows: band.rows, width: band.width, level }
+        let stride = band.width * band.samples.max(1);
+        Grid { y0: band.y0, rows: band.rows, width: band.width, stride, offset: 0, level }
+    }
+
+    /// Sample `s`'s plane of a multisampled band's grid.
+    #[inline(always)]
+    pub fn sample(&self, s: usize) -> Self {
+        Grid { offset: s * self.width, ..*self }
     }
 
     /// The block at window `(x, y)` (inside the band's rows).
     #[inline(always)]
     pub fn at(&self, x: i32, y: i32) -> BlockAt {
-        let base = (y - self.y0) as usize * self.width + x as usize;
+        let base = (y - self.y0) as usize * self.stride + self.offset + x as usize;
         let (cols, rows) = (self.width as i32 - x, self.y0 + self.rows as i32 - y);
-        let (width, level) = (self.width, self.level);
+        let (width, level) = (self.stride, self.level);
         if cols >= 4 && rows >= 4 {
             // All but the blocks at the framebuffer's right and top edges.
             return BlockAt { x, y, base, width, valid: 0xffff, level };

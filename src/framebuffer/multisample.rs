@@ -251,6 +251,25 @@ impl Framebuffer {
         self.color.iter().find(|(s, _)| *s == slot).or(sampled).map(|(_, b)| b.format())
     }
 
+    /// The format of color buffer `slot` as the bands render into it (its multisampled
+    /// layer's when multisampled; `None` when the bands have no such target).
+    pub fn band_color_format(&self, slot: ColorSlot) -> Option<ColorFormat> {
+        match &self.multisample {
+            Some(layers) => layers.color.iter().find(|(s, _)| *s == slot).map(|(_, b)| b.format()),
+            None => self.color.iter().find(|(s, _)| *s == slot).map(|(_, b)| b.format()),
+        }
+    }
+
+    /// The format of the depth/stencil layer the bands render into: the multisampled one's
+    /// when multisampled (a framebuffer object of multisampled attachments has no resolved
+    /// depth/stencil layer).
+    pub fn band_depth_stencil_format(&self) -> DepthStencilFormat {
+        match &self.multisample {
+            Some(layers) => layers.depth_stencil.format(),
+            None => self.depth_stencil.format(),
+        }
+    }
+
     /// Samples per pixel: 1 unless multisampled.
     pub fn samples(&self) -> usize {
         self.multisample.as_ref().map_or(1, |m| m.samples)

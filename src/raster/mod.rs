@@ -14,6 +14,7 @@
 #![deny(unsafe_code)]
 
 pub mod blocks;
+pub mod samples;
 pub mod walk;
 
 use crate::fragment::pipeline::Scratch;

@@ -642,15 +642,20 @@ impl Scene {
         // Each draw state compiled once into lane kernels for this framebuffer's formats (the
         // band's colour targets are the scene's targets the framebuffer has, in order).
         let single_sampled = framebuffer.samples() == 1;
+        // (A multisampled framebuffer's bands are its sample layers: their formats.)
         let formats: Vec<ColorFormat> =
-            self.targets.iter().filter_map(|&slot| framebuffer.color(slot).map(|b| b.format())).collect();
-        let depth_format = framebuffer.depth_stencil().format();
+            self.targets.iter().filter_map(|&slot| framebuffer.band_color_format(slot)).collect();
+        let depth_format = framebuffer.band_depth_stencil_format();
+        // Multisampled: the states the sample block path takes (`fragment::block::samples`).
         let pipelines: Vec<Option<BlockPipeline>> = self
             .states
             .iter()
             .map(|s| {
-                (single_sampled && s.multisample.is_none())
-                    .then(|| BlockPipeline::compile(&s.fragment, &formats, depth_format))
+                let blocks = match s.multisample {
+                    None => single_sampled,
+                    Some(_) => !single_sampled && BlockPipeline::takes_samples(s),
+                };
+                blocks.then(|| BlockPipeline::compile(&s.fragment, &formats, depth_format))
             })
             .collect();
         render_tiles(framebuffer, &self.targets, self.tiles_x, &self.bins, threads, |index, tile, band, scratch| {
@@ -665,6 +670,10 @@ impl Scene {
                 Primitive::Triangle(job) if band.samples == 1 && pipelines[state_index].is_some() => {
                     let pipeline = pipelines[state_index].as_ref().expect("compiled above");
                     job.render_blocks(state, pipeline, tile.intersect(state.fill_clip), band, scratch)
+                }
+                Primitive::Triangle(job) if pipelines[state_index].is_some() => {
+                    let pipeline = pipelines[state_index].as_ref().expect("compiled above");
+                    job.render_sample_blocks(state, pipeline, tile.intersect(state.fill_clip), band, scratch)
                 }
                 Primitive::Triangle(job) if state.multisample.is_some_and(|m| m.per_sample()) => {
                     job.render_samples(state, tile.intersect(state.fill_clip), band, scratch)

@@ -14,15 +14,21 @@
 //! the tile is walked hierarchically on its integer edge functions
 //! (`raster::blocks`) and each block runs the lane pipeline (`fragment::block`), with
 //! depth, colours and varyings evaluated per lane from the same planes and the same
-//! arithmetic as the span path ([`TriangleJob::render_blocks`]). Multisampled targets
-//! and the exact mode keep the span path.
+//! arithmetic as the span path ([`TriangleJob::render_blocks`]). On a multisampled
+//! target the walk covers every pixel with a possibly covered sample and each block gets
+//! its exact per-sample masks (`raster::samples`), its depth per sample from the same
+//! plane at the sample positions ([`TriangleJob::render_sample_blocks`]); draws with
+//! alpha-to-coverage or depth clamping, and the exact mode, keep the span path.
+use crate::fragment::block::samples::{SampleBatch, SampleInputs};
 use crate::fragment::block::{lanes, Batch, BlockColors, BlockInputs, BlockPipeline, F32s};
 use crate::fragment::pipeline::{shade_span, shade_span_samples, DrawState, Scratch, Span};
 use crate::fragment::{multisample::SampleMasks, span_mask};
 use crate::framebuffer::band::Band;
+use crate::framebuffer::multisample::MAX_SAMPLES;
 use crate::framebuffer::Rect;
 use crate::gl::limits::MAX_TEXTURE_UNITS;
 use crate::raster::blocks::{walk_blocks, PixelEdge};
+use crate::raster::samples::SampleEdges;
 use crate::raster::walk::{stipple_mask, walk_sample_spans, walk_spans};
 use crate::setup::accuracy::Accuracy;
 use crate::setup::multisample::{sample_offsets, sample_shifts, SampleOffset};
@@ -250,6 +256,76 @@ impl TriangleJob {
         });
     }
 
+    /// Renders the part of the triangle inside `area` (within the band) into a
+    /// multisampled `band` in 4×4 blocks through the compiled lane `pipeline`
+    /// (`fragment::block::samples`): per sample at the standard positions while
+    /// GL_MULTISAMPLE is on (the walk on the edges widened to every sample, each block's
+    /// sample masks exact: `raster::samples`), else at pixel centres with every sample of a
+    /// covered pixel covered at the pixel's depth (§3.2.1), as the span path
+    /// ([`TriangleJob::render_samples`], [`TriangleJob::render`]), which the exact accuracy
+    /// mode keeps.
+    pub fn render_sample_blocks(
+        &self,
+        state: &DrawState,
+        pipeline: &BlockPipeline,
+        area: Rect,
+        band: &mut Band<'_>,
+        scratch: &mut Scratch,
+    ) {
+        let ms = state.multisample.filter(|m| m.enabled);
+        let per_sample = ms.is_some_and(|m| m.per_sample());
+        if self.exact.is_some() {
+            return if per_sample {
+                self.render_samples(state, area, band, scratch)
+            } else {
+                self.render(state, area, band, scratch)
+            };
+        }
+        let samples = band.samples.min(MAX_SAMPLES);
+        let offsets = sample_offsets(band.samples);
+        let pixel_edges = self.setup.pixel_edges().map(PixelEdge::from_array);
+        let sample_edges = per_sample.then(|| SampleEdges::new(&pixel_edges, offsets.iter().map(|o| [o.x, o.y])));
+        let (area, edges) = match &sample_edges {
+            Some(e) => (area.intersect(self.sample_bounds()), e.widened()),
+            None => (area.intersect(self.bounds()), pixel_edges),
+        };
+        if area.is_empty() {
+            return;
+        }
+        // GL_SAMPLE_COVERAGE's samples (all when the multisample operations are off).
+        let coverage = ms.map_or(0xff, |m| m.coverage_mask);
+        let mut keep = [0u16; MAX_SAMPLES];
+        for (s, k) in keep.iter_mut().enumerate().take(samples) {
+            *k = if coverage & (1 << s) != 0 { 0xffff } else { 0 };
+        }
+        let inputs = SampleDepth { job: self, shifts: per_sample.then(|| sample_shifts(offsets)) };
+        crate::simd::per_level!(|level| {
+            let mut batch = SampleBatch::default();
+            let front_facing = self.front_facing;
+            walk_blocks(
+                area,
+                &edges,
+                state.polygon_stipple.as_ref(),
+                #[inline(always)]
+                |x, y, mask| {
+                    let mut masks = match &sample_edges {
+                        Some(e) => e.masks(x, y, mask),
+                        None => [mask; MAX_SAMPLES],
+                    };
+                    let mut any = 0;
+                    for (m, k) in masks.iter_mut().zip(keep) {
+                        *m &= k;
+                        any |= *m;
+                    }
+                    if any != 0 && batch.push(x, y, masks) {
+                        pipeline.render_samples(level, state, band, scratch, &inputs, front_facing, &mut batch);
+                    }
+                },
+            );
+            pipeline.render_samples(level, state, band, scratch, &inputs, front_facing, &mut batch);
+        });
+    }
+
     /// The planes' offsets of a block's columns and rows (pixel centres relative to the
     /// anchor, computed as the span path computes a span's first pixel).
     /// Plain loops rather than `std::array::from_fn` (which LLVM may leave as calls).
@@ -413,6 +489,58 @@ impl BlockInputs for TriangleJob {
         let px: F32s = lanes(|i| dx0 + (i & 3) as f32);
         let py: F32s = lanes(|i| (y + (i >> 2) as i32) as f32 + 0.5 - self.anchor[1] + 0.0);
         self.varyings.lanes_at(&px, &py, first, out);
+    }
+}
+
+/// A triangle as the multisampled block pipeline reads it: its block inputs, and its depth
+/// at each sample position (`shifts`: from the pixel centre, in pixels; `None` while
+/// GL_MULTISAMPLE is off, when every sample takes the centre's depth).
+struct SampleDepth<'a> {
+    job: &'a TriangleJob,
+    shifts: Option<[[f32; 2]; MAX_SAMPLES]>,
+}
+
+impl BlockInputs for SampleDepth<'_> {
+    #[inline(always)]
+    fn z(&self, x: i32, y: i32) -> F32s {
+        self.job.z(x, y)
+    }
+    #[inline(always)]
+    fn colors(&self, x: i32, y: i32, out: &mut BlockColors) {
+        self.job.colors(x, y, out)
+    }
+    #[inline]
+    fn varyings(&self, x: i32, y: i32, dx: i32, dy: i32, out: &mut [f32]) {
+        self.job.varyings(x, y, dx, dy, out)
+    }
+    #[inline(always)]
+    fn uniform_color(&self) -> Option<[f32; 4]> {
+        self.job.uniform_color()
+    }
+    #[inline(always)]
+    fn varying_lanes(&self, x: i32, y: i32, first: usize, out: &mut [F32s]) {
+        self.job.varying_lanes(x, y, first, out)
+    }
+}
+
+impl SampleInputs for SampleDepth<'_> {
+    /// The depth plane at the sample: the pixel centres' offsets plus the sample's shift,
+    /// the operations of the span path's `z.at(dx0 + i + shift_x, dy + shift_y)` (the
+    /// offsets are exact, as for [`TriangleJob::block_offsets`]).
+    #[inline(always)]
+    fn sample_z(&self, x: i32, y: i32, sample: usize) -> F32s {
+        let Some(shifts) = &self.shifts else {
+            return self.job.z(x, y);
+        };
+        let [sx, sy] = shifts[sample];
+        let mut o = self.job.block_offsets(x, y);
+        for d in &mut o.dx {
+            *d += sx;
+        }
+        for d in &mut o.dy {
+            *d += sy;
+        }
+        plane_lanes(&self.job.z, &o)
     }
 }
 
@@ -620,6 +748,255 @@ mod block_walk_tests {
                 let inside = x < 40 && y < 33;
                 assert_eq!(hits[y * 64 + x], inside as u8, "({x},{y})");
             }
+        }
+    }
+}
+
+#[cfg(test)]
+mod sample_block_tests {
+    use super::*;
+    use crate::fragment::blend::{Blend, BlendEquation, BlendFactor, BlendFunc};
+    use crate::fragment::multisample::MultisampleState;
+    use crate::fragment::stencil::{StencilFace, StencilOp};
+    use crate::fragment::{AlphaTest, DepthTest, FragmentState, StencilTest};
+    use crate::framebuffer::band::{ColorBand, ColorTarget, DepthBand};
+    use crate::framebuffer::{ColorFormat, ColorSlot, DepthStencilFormat};
+    use crate::gl::limits::MAX_TEXTURE_UNITS;
+    use crate::gl::CompareFunc;
+    use crate::raster::blocks::walk_blocks;
+    use crate::setup::triangle::TriangleSetup;
+    use std::sync::atomic::{AtomicU64, Ordering};
+    use std::sync::Arc;
+
+    /// A tiny deterministic generator (xorshift).
+    struct Rng(u64);
+    impl Rng {
+        fn bits(&mut self) -> u64 {
+            self.0 ^= self.0 << 13;
+            self.0 ^= self.0 >> 7;
+            self.0 ^= self.0 << 17;
+            self.0
+        }
+        fn unit(&mut self) -> f32 {
+            ((self.bits() >> 11) as f64 / (1u64 << 53) as f64) as f32
+        }
+        fn below(&mut self, n: u64) -> u64 {
+            self.bits() % n
+        }
+    }
+
+    #[test]
+    fn block_sample_masks_are_the_span_walk_samples() {
+        let mut rng = Rng(0x9e37_79b9_7f4a_7c15);
+        for round in 0..1500 {
+            let range = [6.0, 30.0, 120.0][round % 3];
+            let mut v = [0, 1, 2].map(|_| [rng.unit() * range, rng.unit() * range]);
+            if round % 4 == 0 {
+                // On sample positions and pixel edges: the fill rule decides.
+                v = v.map(|p| p.map(|c| (c * 4.0) as i32 as f32 / 4.0));
+            }
+            let Some(t) = TriangleSetup::new(v) else { continue };
+            let (bx0, by0, bx1, by1) = t.pixel_box();
+            let area = Rect { x0: bx0.max(0), y0: by0.max(0), x1: bx1.min(200), y1: by1.min(200) };
+            for samples in [2, 4, 8] {
+                let offsets = sample_offsets(samples);
+                let edges = t.pixel_edges().map(PixelEdge::from_array);
+                let se = SampleEdges::new(&edges, offsets.iter().map(|o| [o.x, o.y]));
+                let w = 200usize;
+                let mut got = vec![0u8; w * w];
+                walk_blocks(area, &se.widened(), None, |x, y, mask| {
+                    let masks = se.masks(x, y, mask);
+                    assert!(masks[samples..].iter().all(|&m| m == 0));
+                    for (s, m) in masks.iter().enumerate() {
+                        assert_eq!(m & !mask, 0);
+                        for i in 0..16 {
+                            if m & (1 << i) != 0 {
+                                got[(y as usize + i / 4) * w + x as usize + i % 4] |= 1 << s;
+                            }
+                        }
+                    }
+                });
+                for py in area.y0..area.y1 {
+                    let mut want = vec![0u8; w];
+                    for (s, o) in offsets.iter().enumerate() {
+                        if let Some((a, b)) = t.row_span_at(py, o.x, o.y, area.x0, area.x1) {
+                            for cell in &mut want[a as usize..b as usize] {
+                                *cell |= 1 << s;
+                            }
+                        }
+                    }
+                    for px in area.x0..area.x1 {
+                        assert_eq!(
+                            got[py as usize * w + px as usize],
+                            want[px as usize],
+                            "{v:?} {samples} ({px},{py})"
+                        );
+                    }
+                }
+            }
+        }
+    }
+
+    fn vertex(rng: &mut Rng, size: f32) -> WindowVertex {
+        WindowVertex {
+            x: rng.unit() * (size + 20.0) - 10.0,
+            y: rng.unit() * (size + 20.0) - 10.0,
+            z: rng.unit() * 1.2 - 0.1,
+            inv_w: 0.3 + rng.unit() * 2.0,
+            color: [rng.unit(), rng.unit(), rng.unit(), rng.unit()],
+            secondary_color: [0.0; 4],
+            tex_coords: [[0.0; 4]; MAX_TEXTURE_UNITS],
+            fog_coord: 0.0,
+        }
+    }
+
+    fn face(rng: &mut Rng) -> StencilFace {
+        use StencilOp::*;
+        let ops = [Keep, Zero, Replace, Incr, Decr, IncrWrap, DecrWrap, Invert];
+        let op = |rng: &mut Rng| ops[rng.below(8) as usize];
+        StencilFace {
+            func: CompareFunc::ALL[rng.below(8) as usize],
+            reference: rng.below(6) as u8,
+            value_mask: [0xff, 0x7, 0xfe][rng.below(3) as usize],
+            write_mask: [0xff, 0x3, 0][rng.below(3) as usize],
+            sfail: op(rng),
+            zfail: op(rng),
+            zpass: op(rng),
+        }
+    }
+
+    /// A random draw state of the kinds the sample block path takes.
+    fn random_state(rng: &mut Rng, samples: usize, size: i32, stencil: bool) -> DrawState {
+        let depth = (rng.below(5) != 0)
+            .then(|| DepthTest { func: CompareFunc::ALL[rng.below(8) as usize], write: rng.below(3) != 0 });
+        let mask = match rng.below(4) {
+            0 => [true, false, true, false],
+            _ => [true; 4],
+        };
+        let mut fragment = FragmentState::plain(depth, vec![Some(mask)], false);
+        if stencil && rng.below(2) == 0 {
+            fragment.stencil = Some(StencilTest { front: face(rng), back: face(rng) });
+        }
+        if rng.below(3) == 0 {
+            let func = CompareFunc::ALL[rng.below(8) as usize];
+            fragment.alpha = Some(AlphaTest { func, reference: rng.unit(), unorm8: rng.below(2) == 0 });
+        }
+        if rng.below(3) == 0 {
+            let func = BlendFunc {
+                src: BlendFactor::SrcAlpha,
+                dst: BlendFactor::OneMinusSrcAlpha,
+                equation: BlendEquation::ALL[rng.below(5) as usize],
+            };
+            fragment.blend = vec![Some(Blend { rgb: func, alpha: func })];
+        }
+        let all = ((1u32 << samples) - 1) as u8;
+        let multisample = MultisampleState {
+            samples: samples as u8,
+            enabled: rng.below(4) != 0,
+            alpha_to_coverage: false,
+            alpha_to_one: rng.below(4) == 0,
+            coverage_mask: if rng.below(3) == 0 { rng.below(256) as u8 & all } else { all },
+        };
+        let clip = if rng.below(3) == 0 {
+            Rect::from_xywh(3, 5, size - 9, size - 7)
+        } else {
+            Rect::from_xywh(0, 0, size, size)
+        };
+        let polygon_stipple =
+            (rng.below(6) == 0).then(|| std::array::from_fn(|i| 0x5a5a_f00f_u32.rotate_left(i as u32 * 3)));
+        DrawState {
+            fragment,
+            clip,
+            fill_clip: clip,
+            polygon_stipple,
+            samples_passed: Some(Arc::new(AtomicU64::new(0))),
+            multisample: Some(multisample),
+        }
+    }
+
+    #[test]
+    fn multisampled_blocks_write_what_sample_spans_write() {
+        let size = 70i32;
+        let mut rng = Rng(0x2545_f491_4f6c_dd1d);
+        for round in 0..600 {
+            let samples = [2, 4, 8][round % 3];
+            let format = [
+                DepthStencilFormat::Packed24 { depth: true, stencil: true },
+                DepthStencilFormat::Depth16,
+                DepthStencilFormat::Float32 { stencil: true },
+            ][(round / 3) % 3];
+            let stencil = format.stencil_bits() > 0;
+            let n = (size * size) as usize * samples;
+            let mut colors = [vec![[7u8, 9, 11, 13]; n], vec![[7u8, 9, 11, 13]; n]];
+            let mut depth32 = [vec![0u32; n], vec![0u32; n]];
+            let mut depth16 = [vec![0u16; n], vec![0u16; n]];
+            let mut stencil8 = [vec![0u8; n], vec![0u8; n]];
+            // Stored depth and stencil varying per sample.
+            for i in 0..n {
+                let (d, s) = (rng.bits() as u32, rng.below(6) as u8);
+                for k in 0..2 {
+                    depth32[k][i] = match format {
+                        DepthStencilFormat::Packed24 { .. } => (d & 0x00ff_ffff) | (u32::from(s) << 24),
+                        _ => ((d % 1001) as f32 / 1000.0).to_bits(),
+                    };
+                    depth16[k][i] = d as u16;
+                    stencil8[k][i] = s;
+                }
+            }
+            let [c0, c1] = &mut colors;
+            let [d0, d1] = &mut depth32;
+            let [h0, h1] = &mut depth16;
+            let [s0, s1] = &mut stencil8;
+            let mut bands: Vec<Band<'_>> = [(c0, d0, h0, s0), (c1, d1, h1, s1)]
+                .into_iter()
+                .map(|(c, d, h, s)| Band {
+                    y0: 0,
+                    rows: size as usize,
+                    width: size as usize,
+                    samples,
+                    colors: vec![ColorTarget {
+                        slot: ColorSlot::FrontLeft,
+                        format: ColorFormat::Unorm8 { alpha: true },
+                        pixels: ColorBand::Unorm8(c),
+                    }],
+                    depth: match format {
+                        DepthStencilFormat::Packed24 { .. } => DepthBand::Packed24(d),
+                        DepthStencilFormat::Depth16 => DepthBand::Depth16(h),
+                        _ => DepthBand::Float32(d, Some(s)),
+                    },
+                    depth_format: format,
+                })
+                .collect();
+            let state = random_state(&mut rng, samples, size, stencil);
+            let pipeline = BlockPipeline::compile(&state.fragment, &[ColorFormat::Unorm8 { alpha: true }], format);
+            let counter = state.samples_passed.clone().unwrap();
+            let (mut block_count, mut span_count) = (0, 0);
+            let mut scratch = Scratch::default();
+            for _ in 0..6 {
+                let v = [0, 1, 2].map(|_| vertex(&mut rng, size as f32));
+                let flat = (rng.below(4) == 0).then_some([0.25, 0.5, 0.75, 0.4]);
+                let Some(mut job) = TriangleJob::new(v, flat, 0.0, &[]) else { continue };
+                job.front_facing = rng.below(2) == 0;
+                // Two tiles' worth of areas, as the scene hands them.
+                for area in [Rect::from_xywh(0, 0, size, 32), Rect::from_xywh(0, 32, size, size - 32)] {
+                    let area = area.intersect(state.fill_clip);
+                    counter.store(0, Ordering::Relaxed);
+                    job.render_sample_blocks(&state, &pipeline, area, &mut bands[0], &mut scratch);
+                    block_count += counter.load(Ordering::Relaxed);
+                    counter.store(0, Ordering::Relaxed);
+                    if state.multisample.unwrap().per_sample() {
+                        job.render_samples(&state, area, &mut bands[1], &mut scratch);
+                    } else {
+                        job.render(&state, area, &mut bands[1], &mut scratch);
+                    }
+                    span_count += counter.load(Ordering::Relaxed);
+                }
+            }
+            drop(bands);
+            assert_eq!(block_count, span_count, "round {round}: samples passed");
+            assert!(colors[0] == colors[1], "round {round}: colours differ ({samples} samples, {format:?})");
+            assert!(depth32[0] == depth32[1] && depth16[0] == depth16[1], "round {round}: depth differs");
+            assert!(stencil8[0] == stencil8[1], "round {round}: stencil differs");
         }
     }
 }
