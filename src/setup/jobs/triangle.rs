@@ -303,6 +303,7 @@ impl TriangleJob {
             let mut batch = SampleBatch::default();
             let front_facing = self.front_facing;
             walk_blocks(
+                level,
                 area,
                 &edges,
                 state.polygon_stipple.as_ref(),
@@ -804,7 +805,7 @@ mod sample_block_tests {
                 let se = SampleEdges::new(&edges, offsets.iter().map(|o| [o.x, o.y]));
                 let w = 200usize;
                 let mut got = vec![0u8; w * w];
-                walk_blocks(area, &se.widened(), None, |x, y, mask| {
+                walk_blocks(crate::simd::current(), area, &se.widened(), None, |x, y, mask| {
                     let masks = se.masks(x, y, mask);
                     assert!(masks[samples..].iter().all(|&m| m == 0));
                     for (s, m) in masks.iter().enumerate() {
