@@ -294,8 +294,15 @@ impl Shading {
     /// whose lookups need no derivatives): the varyings in `scratch`, `colors` the primary
     /// colours, replaced by the program's in the lanes `live`. Plain lane loops (no
     /// per-lane branch), so that they vectorise in the caller's SIMD level.
-    #[inline(always)]
+    ///
+    /// One copy per SIMD level, called from the block and span paths' own copies (inlined
+    /// into each, it made the libraries a few hundred kB larger).
     fn run(&self, scratch: &mut ShadingScratch, textures: &StageTextures<'_>, live: u16, colors: &mut [F32s; 4]) {
+        crate::simd::per_level!(self.run_body(scratch, textures, live, colors))
+    }
+
+    #[inline(always)]
+    fn run_body(&self, scratch: &mut ShadingScratch, textures: &StageTextures<'_>, live: u16, colors: &mut [F32s; 4]) {
         if let Some(bound) = &self.program.bound {
             self.run_bound(bound, scratch, textures, live, colors);
             return;

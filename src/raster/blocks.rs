@@ -36,9 +36,11 @@
 //! framebuffer), so a block at the framebuffer's right or top edge carries only its pixels
 //! inside; polygon stipple is applied here as a mask. Everything here is `#[inline(always)]`
 //! so that the caller's per-level copy (`crate::simd`) compiles the walk and the block
-//! handler together, once per SIMD level. The span walkers ([`super::walk`]) remain for
-//! lines, points, smooth primitives, pixel rectangles, multisampled targets and the exact
-//! accuracy mode.
+//! handler together, once per SIMD level. Multisampled triangles walk here too, on edges
+//! widened to their outermost samples, each block then masked per sample
+//! ([`super::samples`]). The span walkers ([`super::walk`]) remain for lines, points, smooth
+//! primitives, pixel rectangles, multisampled draws with alpha-to-coverage or depth clamping,
+//! and the exact accuracy mode.
 
 use super::walk::stipple_mask;
 use crate::framebuffer::Rect;

@@ -492,7 +492,10 @@ impl Compiled {
     }
 
     /// Runs the program in the lanes of `lanes`, as [`exec::Executor::run`] does (the same
-    /// outputs, lookups and result); returns the lanes that did not discard.
+    /// outputs, lookups and result); returns the lanes that did not discard. Never inlined:
+    /// its runs have their own per-level copies, which every caller's per-level body would
+    /// otherwise copy again.
+    #[inline(never)]
     pub fn run(&self, registers: &mut Registers, io: &mut Io<'_>, lanes: u16) -> u16 {
         run_tree(&Interpreter, &self.code, registers, io, lanes)
     }
@@ -898,9 +901,15 @@ impl Bound {
     }
 
     /// Runs the program in the lanes `lanes` of `registers` (prepared by
-    /// [`Bound::prepare`], inputs written); `io`'s inputs and outputs are not used.
-    #[inline(always)]
+    /// [`Bound::prepare`], inputs written); `io`'s inputs and outputs are not used. One copy
+    /// per SIMD level, called from the fragment pipeline's: inlined into each of its
+    /// per-level bodies, the interpreter's match made the libraries 1.5 MB larger.
     pub fn run(&self, registers: &mut Registers, io: &mut Io<'_>, lanes: u16) {
+        crate::simd::per_level!(self.run_body(registers, io, lanes))
+    }
+
+    #[inline(always)]
+    fn run_body(&self, registers: &mut Registers, io: &mut Io<'_>, lanes: u16) {
         for &r in &self.zeroed {
             registers.w[r as usize] = [0; LANES];
         }

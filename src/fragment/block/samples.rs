@@ -118,8 +118,9 @@ impl BlockPipeline {
         let samples = band.samples.min(MAX_SAMPLES);
         let grid = Grid::new(band, level);
         let alpha_to_one = state.multisample.is_some_and(|m| m.enabled && m.alpha_to_one);
+        // Colours first with the alpha test, kept per block for the target writes (as
+        // `render`); one copy of the target writes per level serves both orders.
         if self.alpha.is_some() {
-            // Colours first, kept per block for the target writes (as `render`).
             let mut shaded = [BlockColors::Uniform([0.0; 4]); BATCH];
             let survivors = outlined(
                 level,
@@ -130,16 +131,17 @@ impl BlockPipeline {
                 },
             );
             if survivors > 0 && !self.targets.is_empty() {
-                let (blocks, shaded) = (&blocks[..survivors], &shaded[..survivors]);
-                outlined(
+                let colors = ShadedColors::Kept(&shaded[..survivors]);
+                self.write_sample_blocks(
                     level,
-                    #[inline(always)]
-                    |level| {
-                        let grid = Grid { level, ..grid };
-                        let fragment = &state.fragment;
-                        let colors = ShadedColors::Kept(shaded);
-                        color_sample_blocks(self, fragment, band, scratch, grid, inputs, blocks, colors, alpha_to_one)
-                    },
+                    state,
+                    band,
+                    scratch,
+                    grid,
+                    inputs,
+                    &blocks[..survivors],
+                    colors,
+                    alpha_to_one,
                 );
             }
             return;
@@ -201,13 +203,31 @@ impl BlockPipeline {
         if kept == 0 || self.targets.is_empty() {
             return;
         }
-        let blocks = &blocks[..kept];
+        let colors = ShadedColors::Compute;
+        self.write_sample_blocks(level, state, band, scratch, grid, inputs, &blocks[..kept], colors, alpha_to_one);
+    }
+
+    /// The colours (unless kept) and the target writes of `blocks`, compiled once per SIMD
+    /// level for both orders of [`Self::render_samples`].
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn write_sample_blocks<I: SampleInputs>(
+        &self,
+        level: Supported,
+        state: &DrawState,
+        band: &mut Band<'_>,
+        scratch: &mut Scratch,
+        grid: Grid,
+        inputs: &I,
+        blocks: &[SampleEntry],
+        colors: ShadedColors<'_>,
+        alpha_to_one: bool,
+    ) {
         outlined(
             level,
             #[inline(always)]
             |level| {
                 let grid = Grid { level, ..grid };
-                let colors = ShadedColors::Compute;
                 color_sample_blocks(self, &state.fragment, band, scratch, grid, inputs, blocks, colors, alpha_to_one)
             },
         );
