@@ -145,55 +145,21 @@ impl PointJob {
         }
     }
 
-    /// Renders the part of a single-sampled sprite inside `area`: the pixels whose centres
-    /// its square covers.
-    fn render_sprite(
-        &self,
-        square: &SampleQuad,
-        state: &DrawState,
-        area: Rect,
-        band: &mut Band<'_>,
-        scratch: &mut Scratch,
-    ) {
+    /// Renders the part of the point inside `area` (within the band) into `band`: its
+    /// square's rows, or a single-sampled sprite's pixels whose centres its square covers.
+    pub fn render(&self, state: &DrawState, area: Rect, band: &mut Band<'_>, scratch: &mut Scratch) {
         let area = area.intersect(self.rect);
+        let square = self.sprite.as_ref().and_then(|s| s.square.as_ref());
         let centre = sample_offsets(1)[0];
         for y in area.y0..area.y1 {
-            let Some((x0, x1)) = square.row_span_at(y, centre.x, centre.y, area.x0, area.x1) else { continue };
-            let mut x0 = x0;
+            let row = match square {
+                Some(square) => square.row_span_at(y, centre.x, centre.y, area.x0, area.x1),
+                None => Some((area.x0, area.x1)),
+            };
+            let Some((mut x0, x1)) = row else { continue };
             while x0 < x1 {
                 let end = (x0 + MAX_SPAN as i32).min(x1);
                 let n = (end - x0) as usize;
-                let row_start = (y - band.y0) as usize * band.width + x0 as usize;
-                let span = Span { y, x0, n, row_start, front_facing: true };
-                shade_span(
-                    state,
-                    band,
-                    scratch,
-                    span,
-                    span_mask(n),
-                    |_| self.z,
-                    |_| Some(self.color),
-                    |dx, dy, out| self.varyings_at(x0 + dx, y + dy, out),
-                );
-                x0 = end;
-            }
-        }
-    }
-
-    /// Renders the part of the point inside `area` (within the band) into `band`.
-    pub fn render(&self, state: &DrawState, area: Rect, band: &mut Band<'_>, scratch: &mut Scratch) {
-        if let Some(square) = self.sprite.as_ref().and_then(|s| s.square.as_ref()) {
-            return self.render_sprite(square, state, area, band, scratch);
-        }
-        let area = area.intersect(self.rect);
-        if area.is_empty() {
-            return;
-        }
-        for y in area.y0..area.y1 {
-            let mut x0 = area.x0;
-            while x0 < area.x1 {
-                let x1 = (x0 + MAX_SPAN as i32).min(area.x1);
-                let n = (x1 - x0) as usize;
                 let row_start = (y - band.y0) as usize * band.width + x0 as usize;
                 // Points are front-facing (GL 2.1 §4.1.5); so are the vertices of polygons in
                 // GL_POINT mode, as in Mesa 22 (llvmpipe and softpipe), though §4.1.5 gives
@@ -207,9 +173,9 @@ impl PointJob {
                     span_mask(n),
                     |_| self.z,
                     |_| Some(self.color),
-                    |_, _, out| out.iter_mut().zip(&self.varyings).for_each(|(o, &v)| *o = v),
+                    |dx, dy, out| self.varyings_at(x0 + dx, y + dy, out),
                 );
-                x0 = x1;
+                x0 = end;
             }
         }
     }
