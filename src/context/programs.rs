@@ -2,8 +2,9 @@
 //! the draws' states generate, each kind in a [`ProgramCache`] keyed by the state's compact
 //! key, so that a context finds a program any context of its group compiled before.
 //!
-//! Not yet used by the draws: the pipeline still runs the hand-written vertex and fragment
-//! stages, and the switch to these programs waits until they are as fast (see issue #19).
+//! Every draw looks its programs up here (once per draw state; the vertex stage once per run
+//! of vertices between glMaterial calls): the generated programs are the only vertex
+//! processing and fragment shading there is.
 //!
 //! Under `TESSERA_DEBUG=programs` every program generated on a miss is printed on stderr in
 //! the text form of [`crate::shader::dump`], after a line naming its kind and the cache's
