@@ -3,10 +3,9 @@
 //! The variable is a comma-separated list of topics, read once per process:
 //! - `pipeline`: every draw prints (on stderr) the fragment stages its state compiled to, in
 //!   order, and whether the state was compiled anew or found in the scene's cache.
-//! - `programs`: every fixed-function vertex or fragment program generated (on a miss of
-//!   the share group's cache, `super::programs`) is printed on stderr in its text form. No
-//!   draw generates programs yet (the pipeline still runs the hand-written stages), so the
-//!   README does not list this topic until one does.
+//! - `programs`: every fixed-function vertex or fragment program the draws generate (on a
+//!   miss of the share group's cache, `super::programs`) is printed on stderr in its text
+//!   form.
 //! - `config`: the first context created prints the renderer's configuration, one line per
 //!   setting: `tessera config: simd avx2 (detected; TESSERA_SIMD unset)` (the SIMD level of
 //!   the hot loops, `crate::simd`), `... threads 2`, `... accuracy conformant`.
