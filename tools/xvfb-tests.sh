@@ -244,7 +244,7 @@ while IFS= read -r line; do
     [[ -z $line || $line == \#* ]] && continue
     command=$(echo ${line%%#*})
     output=$(cd "$piglit_bin" && "${on_tessera[@]}" timeout 120 ./$command 2>&1) || true
-    result=$(grep -o '"result": *"[a-z]*"' <<<"$output" | tail -1 | sed 's/.*"\([a-z]*\)"$/\1/')
+    result=$(grep -o '"result": *"[a-z]*"' <<<"$output" | tail -1 | sed 's/.*"\([a-z]*\)"$/\1/' || true)
     result=${result:-crash}
     count[$result]=$((${count[$result]:-0} + 1))
     case ${want[$command]:-} in
@@ -271,7 +271,7 @@ for expectations in tests/piglit/fbo-expected.txt tests/piglit/gl1x-expected.txt
         [[ -z $status || $status == \#* ]] && continue
         command=$(echo ${command%%#*})
         output=$(cd "$piglit_bin" && "${on_tessera[@]}" timeout 120 ./$command 2>&1) || true
-        result=$(grep -o '"result": *"[a-z]*"' <<<"$output" | tail -1 | sed 's/.*"\([a-z]*\)"$/\1/')
+        result=$(grep -o '"result": *"[a-z]*"' <<<"$output" | tail -1 | sed 's/.*"\([a-z]*\)"$/\1/' || true)
         result=${result:-crash}
         case $status in
         pass)
