@@ -7942,6 +7942,50 @@ void glFeedbackBuffer(GLsizei size, GLenum type_, GLfloat *buffer);
 
 void glPassThrough(GLfloat token);
 
+GLuint glCreateShader(GLenum shaderType);
+
+GLuint glCreateProgram(void);
+
+void glShaderSource(GLuint shader, GLsizei count, const GLchar *const *string, const GLint *length);
+
+void glCompileShader(GLuint shader);
+
+void glDeleteShader(GLuint shader);
+
+void glDeleteProgram(GLuint program);
+
+GLboolean glIsShader(GLuint shader);
+
+GLboolean glIsProgram(GLuint program);
+
+void glAttachShader(GLuint program, GLuint shader);
+
+void glDetachShader(GLuint program, GLuint shader);
+
+void glGetAttachedShaders(GLuint program, GLsizei maxCount, GLsizei *count, GLuint *shaders);
+
+void glGetShaderiv(GLuint shader, GLenum pname, GLint *params);
+
+void glGetProgramiv(GLuint program, GLenum pname, GLint *params);
+
+void glGetShaderInfoLog(GLuint shader, GLsizei bufSize, GLsizei *length, GLchar *infoLog);
+
+void glGetProgramInfoLog(GLuint program, GLsizei bufSize, GLsizei *length, GLchar *infoLog);
+
+void glGetShaderSource(GLuint shader, GLsizei bufSize, GLsizei *length, GLchar *source);
+
+void glLinkProgram(GLuint program);
+
+void glValidateProgram(GLuint program);
+
+void glUseProgram(GLuint program);
+
+void glBindAttribLocation(GLuint program, GLuint index, const GLchar *name);
+
+GLint glGetAttribLocation(GLuint program, const GLchar *name);
+
+GLint glGetUniformLocation(GLuint program, const GLchar *name);
+
 void glEnable(GLenum cap);
 
 void glDisable(GLenum cap);

@@ -26,6 +26,7 @@ pub mod gl_pixels;
 pub mod gl_queries;
 pub mod gl_raster_state;
 pub mod gl_selection;
+pub mod gl_shaders;
 pub mod gl_state;
 pub mod gl_texture;
 pub mod gl_transform;
