@@ -149,13 +149,16 @@ pub unsafe extern "C" fn glGetProgramiv(program: GLuint, pname: GLenum, params: 
 /// Runs a string query of an object, or records GL_INVALID_VALUE for a negative buffer size
 /// (after the object's own checks, as Mesa orders them).
 fn string_query(buffer_size: GLsizei, text_of: impl FnOnce(&mut Context) -> Option<String>) -> Option<String> {
-    query(|ctx| {
-        let text = text_of(ctx)?;
-        if buffer_size < 0 {
-            ctx.error(GL_INVALID_VALUE);
-            return None;
-        }
-        Some(text)
+    guard(None, || {
+        current::with_current(|ctx| {
+            let text = text_of(ctx)?;
+            if buffer_size < 0 {
+                ctx.error(GL_INVALID_VALUE);
+                return None;
+            }
+            Some(text)
+        })
+        .flatten()
     })
 }
 
