@@ -16,7 +16,6 @@
 //! spec allows. A violation panics, which libFuzzer reports as a finding.
 
 use std::ffi::{c_void, CString};
-use tessera::gl::enums::*;
 use tessera::api::gl_arrays as arrays;
 use tessera::api::gl_buffer_objects as buffers;
 use tessera::api::gl_evaluators as evaluators;
@@ -27,6 +26,7 @@ use tessera::api::gl_state as state;
 use tessera::api::gl_vertex as vertex;
 use tessera::api::gl_vertex_attribs as attribs;
 use tessera::api::osmesa::*;
+use tessera::gl::enums::*;
 use tessera::gl::osmesa::*;
 use tessera::gl::types::OSMesaContext;
 
@@ -160,7 +160,8 @@ fn arena() -> *const u8 {
     }) as *const u8
 }
 
-/// Points every client array of the current context (all texture units) into the arena:
+/// Points every client array of the current context (all texture units and generic
+/// attributes) into the arena:
 /// GL's initial pointers are NULL, and enabling such an array and drawing reads address 0,
 /// which is the caller's fault, not a finding.
 fn point_arrays_into_the_arena() {
@@ -180,6 +181,9 @@ fn point_arrays_into_the_arena() {
             arrays::glTexCoordPointer(4, GL_FLOAT, 0, a);
         }
         arrays::glClientActiveTexture(GL_TEXTURE0);
+        for index in 0..16 {
+            attribs::glVertexAttribPointer(index, 4, GL_FLOAT, 0, 0, a);
+        }
     }
     let _ = state::glGetError();
 }
@@ -700,19 +704,27 @@ impl Fuzzer {
         }
     }
 
-    // Some of tessera's pointer-taking entry points are declared safe, some unsafe.
-    #[allow(unused_unsafe)]
     /// A generic attribute array (index 0 is the position array draws read), or its enable.
     #[allow(unused_unsafe)]
     fn op_attrib_pointer(&mut self) {
         let index = self.byte() as u32 % 18;
         if self.byte() % 3 == 0 {
             let on = self.byte() % 2 == 0;
-            return if on { attribs::glEnableVertexAttribArray(index) } else { attribs::glDisableVertexAttribArray(index) };
+            if trace() {
+                eprintln!("  generic array {index} enabled {on}");
+            }
+            return if on {
+                attribs::glEnableVertexAttribArray(index)
+            } else {
+                attribs::glDisableVertexAttribArray(index)
+            };
         }
         let size = self.byte() as i32 % 6 - 1;
         let normalized = self.boolean();
         let (ty, stride, pointer) = (self.array_type(), self.array_stride(), self.array_pointer());
+        if trace() {
+            eprintln!("  generic array {index} size {size} type {ty:#x} normalized {normalized} stride {stride} pointer {pointer:?} (arena {:?})", arena());
+        }
         // SAFETY: as op_array_pointer.
         unsafe { attribs::glVertexAttribPointer(index, size, ty, normalized, stride, pointer) };
     }
@@ -745,7 +757,8 @@ impl Fuzzer {
         for _ in 0..count {
             let len = self.byte() as usize % 96;
             let end = (self.pos + len).min(self.data.len());
-            let bytes: Vec<u8> = self.data[self.pos.min(end)..end].iter().map(|&b| if b == 0 { b' ' } else { b }).collect();
+            let bytes: Vec<u8> =
+                self.data[self.pos.min(end)..end].iter().map(|&b| if b == 0 { b' ' } else { b }).collect();
             self.pos = end;
             lengths.push(match self.byte() % 3 {
                 0 => -1,
@@ -790,6 +803,8 @@ impl Fuzzer {
         assert!(length >= 0 && length <= size.max(0), "{}: length {length} for buffer {size}", self.current);
     }
 
+    // Some of tessera's pointer-taking entry points are declared safe, some unsafe.
+    #[allow(unused_unsafe)]
     fn op_interleaved(&mut self) {
         let format = GL_V2F + self.byte() as u32 % 16;
         let (stride, pointer) = (self.array_stride(), self.array_pointer());
