@@ -244,7 +244,10 @@ fn main() {
         let call = if ret == "void" {
             format!("seed_depth++;\n    real({});\n    seed_depth--;", c_args.join(", "))
         } else {
-            format!("seed_depth++;\n    {ret} result = real({});\n    seed_depth--;\n    return result;", c_args.join(", "))
+            format!(
+                "seed_depth++;\n    {ret} result = real({});\n    seed_depth--;\n    return result;",
+                c_args.join(", ")
+            )
         };
         let _ = writeln!(
             shim,

@@ -16,15 +16,17 @@
 //! spec allows. A violation panics, which libFuzzer reports as a finding.
 
 use std::ffi::{c_void, CString};
-use tessera::gl::enums::*;
 use tessera::api::gl_arrays as arrays;
 use tessera::api::gl_buffer_objects as buffers;
 use tessera::api::gl_evaluators as evaluators;
 use tessera::api::gl_pixels as pixels;
 use tessera::api::gl_raster_state as raster;
+use tessera::api::gl_shaders as shaders;
 use tessera::api::gl_state as state;
 use tessera::api::gl_vertex as vertex;
+use tessera::api::gl_vertex_attribs as attribs;
 use tessera::api::osmesa::*;
+use tessera::gl::enums::*;
 use tessera::gl::osmesa::*;
 use tessera::gl::types::OSMesaContext;
 
@@ -158,7 +160,8 @@ fn arena() -> *const u8 {
     }) as *const u8
 }
 
-/// Points every client array of the current context (all texture units) into the arena:
+/// Points every client array of the current context (all texture units and generic
+/// attributes) into the arena:
 /// GL's initial pointers are NULL, and enabling such an array and drawing reads address 0,
 /// which is the caller's fault, not a finding.
 fn point_arrays_into_the_arena() {
@@ -178,6 +181,9 @@ fn point_arrays_into_the_arena() {
             arrays::glTexCoordPointer(4, GL_FLOAT, 0, a);
         }
         arrays::glClientActiveTexture(GL_TEXTURE0);
+        for index in 0..16 {
+            attribs::glVertexAttribPointer(index, 4, GL_FLOAT, 0, 0, a);
+        }
     }
     let _ = state::glGetError();
 }
@@ -234,6 +240,9 @@ const HAND: &[(&str, Op)] = &[
     ("glFinish", Fuzzer::op_finish),
     ("glEvalMesh1", Fuzzer::op_eval_mesh1),
     ("glEvalMesh2", Fuzzer::op_eval_mesh2),
+    ("glVertexAttribPointer", Fuzzer::op_attrib_pointer),
+    ("glShaderSource", Fuzzer::op_shader_source),
+    ("glGet*InfoLog", Fuzzer::op_info_log),
 ];
 
 /// Runs the command stream `data`; panics on a finding. Returns the number of calls made.
@@ -693,6 +702,105 @@ impl Fuzzer {
                 }
             }
         }
+    }
+
+    /// A generic attribute array (index 0 is the position array draws read), or its enable.
+    #[allow(unused_unsafe)]
+    fn op_attrib_pointer(&mut self) {
+        let index = self.byte() as u32 % 18;
+        if self.byte() % 3 == 0 {
+            let on = self.byte() % 2 == 0;
+            if trace() {
+                eprintln!("  generic array {index} enabled {on}");
+            }
+            return if on {
+                attribs::glEnableVertexAttribArray(index)
+            } else {
+                attribs::glDisableVertexAttribArray(index)
+            };
+        }
+        let size = self.byte() as i32 % 6 - 1;
+        let normalized = self.boolean();
+        let (ty, stride, pointer) = (self.array_type(), self.array_stride(), self.array_pointer());
+        if trace() {
+            eprintln!("  generic array {index} size {size} type {ty:#x} normalized {normalized} stride {stride} pointer {pointer:?} (arena {:?})", arena());
+        }
+        // SAFETY: as op_array_pointer.
+        unsafe { attribs::glVertexAttribPointer(index, size, ty, normalized, stride, pointer) };
+    }
+
+    /// A shader name: usually a small one (the first objects of a context), sometimes any.
+    fn object_name(&mut self) -> u32 {
+        match self.byte() {
+            0..=239 => self.byte() as u32 % 8,
+            _ => self.u32(),
+        }
+    }
+
+    /// glShaderSource with pieces from the input (some counted, some NUL-terminated, some
+    /// NULL), then sometimes glCompileShader; or glCreateShader/glCreateProgram first.
+    fn op_shader_source(&mut self) {
+        match self.byte() % 4 {
+            0 => {
+                let kind = [GL_VERTEX_SHADER, GL_FRAGMENT_SHADER, 0x1234][self.byte() as usize % 3];
+                shaders::glCreateShader(kind);
+            }
+            1 => {
+                shaders::glCreateProgram();
+            }
+            _ => {}
+        }
+        let shader = self.object_name();
+        let count = self.byte() as usize % 4;
+        let mut pieces: Vec<CString> = Vec::new();
+        let mut lengths: Vec<i32> = Vec::new();
+        for _ in 0..count {
+            let len = self.byte() as usize % 96;
+            let end = (self.pos + len).min(self.data.len());
+            let bytes: Vec<u8> =
+                self.data[self.pos.min(end)..end].iter().map(|&b| if b == 0 { b' ' } else { b }).collect();
+            self.pos = end;
+            lengths.push(match self.byte() % 3 {
+                0 => -1,
+                _ => bytes.len() as i32,
+            });
+            pieces.push(CString::new(bytes).expect("no NUL inside"));
+        }
+        let mut pointers: Vec<*const std::ffi::c_char> = pieces.iter().map(|p| p.as_ptr()).collect();
+        if !pointers.is_empty() && self.byte() % 16 == 0 {
+            pointers[0] = std::ptr::null();
+        }
+        let with_lengths = self.byte() % 2 == 0;
+        // SAFETY: `count` pointers (NULL or NUL-terminated strings of at least `lengths[i]`
+        // bytes) and `count` lengths, alive during the call.
+        unsafe {
+            shaders::glShaderSource(
+                shader,
+                count as i32,
+                pointers.as_ptr(),
+                if with_lengths { lengths.as_ptr() } else { std::ptr::null() },
+            )
+        };
+        if self.byte() % 2 == 0 {
+            shaders::glCompileShader(shader);
+        }
+    }
+
+    /// The info logs and source of small names into a bounded buffer.
+    fn op_info_log(&mut self) {
+        let name = self.object_name();
+        let size = self.count(256);
+        let mut length = 0;
+        let buffer = self.scratch.ptr() as *mut std::ffi::c_char;
+        // SAFETY: the scratch area holds more than 256 bytes; `length` is one GLsizei.
+        unsafe {
+            match self.byte() % 3 {
+                0 => shaders::glGetShaderInfoLog(name, size, &mut length, buffer),
+                1 => shaders::glGetProgramInfoLog(name, size, &mut length, buffer),
+                _ => shaders::glGetShaderSource(name, size, &mut length, buffer),
+            }
+        }
+        assert!(length >= 0 && length <= size.max(0), "{}: length {length} for buffer {size}", self.current);
     }
 
     // Some of tessera's pointer-taking entry points are declared safe, some unsafe.

@@ -7942,6 +7942,50 @@ void glFeedbackBuffer(GLsizei size, GLenum type_, GLfloat *buffer);
 
 void glPassThrough(GLfloat token);
 
+GLuint glCreateShader(GLenum shaderType);
+
+GLuint glCreateProgram(void);
+
+void glShaderSource(GLuint shader, GLsizei count, const GLchar *const *string, const GLint *length);
+
+void glCompileShader(GLuint shader);
+
+void glDeleteShader(GLuint shader);
+
+void glDeleteProgram(GLuint program);
+
+GLboolean glIsShader(GLuint shader);
+
+GLboolean glIsProgram(GLuint program);
+
+void glAttachShader(GLuint program, GLuint shader);
+
+void glDetachShader(GLuint program, GLuint shader);
+
+void glGetAttachedShaders(GLuint program, GLsizei maxCount, GLsizei *count, GLuint *shaders);
+
+void glGetShaderiv(GLuint shader, GLenum pname, GLint *params);
+
+void glGetProgramiv(GLuint program, GLenum pname, GLint *params);
+
+void glGetShaderInfoLog(GLuint shader, GLsizei bufSize, GLsizei *length, GLchar *infoLog);
+
+void glGetProgramInfoLog(GLuint program, GLsizei bufSize, GLsizei *length, GLchar *infoLog);
+
+void glGetShaderSource(GLuint shader, GLsizei bufSize, GLsizei *length, GLchar *source);
+
+void glLinkProgram(GLuint program);
+
+void glValidateProgram(GLuint program);
+
+void glUseProgram(GLuint program);
+
+void glBindAttribLocation(GLuint program, GLuint index, const GLchar *name);
+
+GLint glGetAttribLocation(GLuint program, const GLchar *name);
+
+GLint glGetUniformLocation(GLuint program, const GLchar *name);
+
 void glEnable(GLenum cap);
 
 void glDisable(GLenum cap);
@@ -8595,6 +8639,92 @@ void glRectfv(const GLfloat *v1, const GLfloat *v2);
 void glRectd(GLdouble x1, GLdouble y1, GLdouble x2, GLdouble y2);
 
 void glRectdv(const GLdouble *v1, const GLdouble *v2);
+
+void glVertexAttrib1s(GLuint index, GLshort x);
+
+void glVertexAttrib1f(GLuint index, GLfloat x);
+
+void glVertexAttrib1d(GLuint index, GLdouble x);
+
+void glVertexAttrib2s(GLuint index, GLshort x, GLshort y);
+
+void glVertexAttrib2f(GLuint index, GLfloat x, GLfloat y);
+
+void glVertexAttrib2d(GLuint index, GLdouble x, GLdouble y);
+
+void glVertexAttrib3s(GLuint index, GLshort x, GLshort y, GLshort z);
+
+void glVertexAttrib3f(GLuint index, GLfloat x, GLfloat y, GLfloat z);
+
+void glVertexAttrib3d(GLuint index, GLdouble x, GLdouble y, GLdouble z);
+
+void glVertexAttrib4s(GLuint index, GLshort x, GLshort y, GLshort z, GLshort w);
+
+void glVertexAttrib4f(GLuint index, GLfloat x, GLfloat y, GLfloat z, GLfloat w);
+
+void glVertexAttrib4d(GLuint index, GLdouble x, GLdouble y, GLdouble z, GLdouble w);
+
+void glVertexAttrib1sv(GLuint index, const GLshort *v);
+
+void glVertexAttrib1fv(GLuint index, const GLfloat *v);
+
+void glVertexAttrib1dv(GLuint index, const GLdouble *v);
+
+void glVertexAttrib2sv(GLuint index, const GLshort *v);
+
+void glVertexAttrib2fv(GLuint index, const GLfloat *v);
+
+void glVertexAttrib2dv(GLuint index, const GLdouble *v);
+
+void glVertexAttrib3sv(GLuint index, const GLshort *v);
+
+void glVertexAttrib3fv(GLuint index, const GLfloat *v);
+
+void glVertexAttrib3dv(GLuint index, const GLdouble *v);
+
+void glVertexAttrib4sv(GLuint index, const GLshort *v);
+
+void glVertexAttrib4fv(GLuint index, const GLfloat *v);
+
+void glVertexAttrib4dv(GLuint index, const GLdouble *v);
+
+void glVertexAttrib4bv(GLuint index, const GLbyte *v);
+
+void glVertexAttrib4iv(GLuint index, const GLint *v);
+
+void glVertexAttrib4ubv(GLuint index, const GLubyte *v);
+
+void glVertexAttrib4usv(GLuint index, const GLushort *v);
+
+void glVertexAttrib4uiv(GLuint index, const GLuint *v);
+
+void glVertexAttrib4Nbv(GLuint index, const GLbyte *v);
+
+void glVertexAttrib4Nsv(GLuint index, const GLshort *v);
+
+void glVertexAttrib4Niv(GLuint index, const GLint *v);
+
+void glVertexAttrib4Nubv(GLuint index, const GLubyte *v);
+
+void glVertexAttrib4Nusv(GLuint index, const GLushort *v);
+
+void glVertexAttrib4Nuiv(GLuint index, const GLuint *v);
+
+void glVertexAttrib4Nub(GLuint index, GLubyte x, GLubyte y, GLubyte z, GLubyte w);
+
+void glVertexAttribPointer(GLuint index, GLint size, GLenum type_, GLboolean normalized, GLsizei stride, const GLvoid *pointer);
+
+void glEnableVertexAttribArray(GLuint index);
+
+void glDisableVertexAttribArray(GLuint index);
+
+void glGetVertexAttribfv(GLuint index, GLenum pname, GLfloat *params);
+
+void glGetVertexAttribdv(GLuint index, GLenum pname, GLdouble *params);
+
+void glGetVertexAttribiv(GLuint index, GLenum pname, GLint *params);
+
+void glGetVertexAttribPointerv(GLuint index, GLenum pname, GLvoid **pointer);
 
 OSMesaContext OSMesaCreateContext(GLenum format, OSMesaContext sharelist);
 

@@ -26,10 +26,12 @@ pub mod gl_pixels;
 pub mod gl_queries;
 pub mod gl_raster_state;
 pub mod gl_selection;
+pub mod gl_shaders;
 pub mod gl_state;
 pub mod gl_texture;
 pub mod gl_transform;
 pub mod gl_vertex;
+pub mod gl_vertex_attribs;
 /// GLX needs the X types of <GL/glx.h>: kept out of tessera.h.
 /// cbindgen:ignore
 pub mod glx;

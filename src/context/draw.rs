@@ -19,6 +19,7 @@ pub(super) mod tests;
 
 use super::{debug, Context};
 use crate::framebuffer::ColorFormat;
+use crate::gl::enums::GL_INVALID_OPERATION;
 use crate::gl::types::GLenum;
 use crate::raster::thread_count;
 use crate::setup::jobs::clear::ClearJob;
@@ -66,6 +67,12 @@ impl Context {
     /// and last parts of a polygon draw its first and closing outline edges. Parts are
     /// delivered only while rendering (selection and feedback take primitives whole).
     pub fn draw_part(&mut self, mode: GLenum, vertices: &[Vertex], part: DrawPart) {
+        if self.program_in_use.executable().is_some() {
+            // GLSL programs do not run yet (their lowering onto the shading IR is the rest of
+            // issue #20; GL_VERSION stays 1.5 until it lands): refuse the draw rather than
+            // draw it with fixed-function processing.
+            return self.error(GL_INVALID_OPERATION);
+        }
         if !self.rendering() {
             return self.select_vertices(mode, vertices);
         }

@@ -233,6 +233,8 @@ impl Context {
             GL_DRAW_FRAMEBUFFER_BINDING => one(Int(self.fbo.draw as i32)),
             GL_READ_FRAMEBUFFER_BINDING => one(Int(self.fbo.read as i32)),
             GL_RENDERBUFFER_BINDING => one(Int(self.fbo.renderbuffer as i32)),
+            GL_CURRENT_PROGRAM => one(Int(self.program_in_use.name() as i32)),
+            GL_MAX_VERTEX_ATTRIBS => one(Int(crate::gl::limits::MAX_VERTEX_ATTRIBS as i32)),
             GL_MAX_COLOR_ATTACHMENTS => one(Int(super::framebuffer_object::MAX_COLOR_ATTACHMENTS as i32)),
             GL_MAX_RENDERBUFFER_SIZE => one(Int(super::framebuffer_object::MAX_RENDERBUFFER_SIZE)),
             GL_MAX_SAMPLES => one(Int(super::framebuffer_object::MAX_SAMPLES)),

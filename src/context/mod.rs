@@ -39,6 +39,7 @@ pub mod raster_pos;
 pub mod raster_state;
 pub mod read_pixels;
 pub mod selection;
+pub mod shader_objects;
 pub mod share;
 pub mod state;
 pub mod strings;
@@ -108,6 +109,10 @@ pub struct Context {
     pub evaluators: evaluators::EvalMaps,
     /// Framebuffer and renderbuffer objects and their bindings.
     pub fbo: framebuffer_object::FramebufferObjects,
+    /// GLSL shader and program objects, shared like the textures.
+    pub shader_objects: share::Shared<shader_objects::ShaderObjects>,
+    /// The GLSL program in use (glUseProgram), or none.
+    pub program_in_use: shader_objects::ProgramInUse,
 }
 
 impl Context {
@@ -139,6 +144,8 @@ impl Context {
             selection: Default::default(),
             evaluators: Default::default(),
             fbo: framebuffer_object::FramebufferObjects::new(buffer),
+            shader_objects: Default::default(),
+            program_in_use: Default::default(),
         }
     }
 

@@ -1,7 +1,7 @@
 //! Share groups: the objects that contexts created with a share context have in common.
 //!
-//! GL 2.1 appendix D: texture objects, buffer objects and display lists (names and
-//! contents) are shared by a context and every context created with it as share context
+//! GL 2.1 appendix D: texture objects, buffer objects, shader and program objects and
+//! display lists (names and contents) are shared by a context and every context created with it as share context
 //! (OSMesaCreateContextExt/Attribs' and glXCreateContext's share list argument), and so,
 //! here, are the compiled fixed-function programs (`super::programs`). Each kind
 //! of object is one table behind a [`Shared`] handle (an `Arc<Mutex<_>>`): the contexts of a
@@ -58,6 +58,7 @@ pub struct ShareGroup {
     textures: Shared<crate::context::texture::TextureTable>,
     programs: Shared<super::programs::ProgramCaches>,
     buffers: Shared<crate::vertex::buffer_objects::BufferTable>,
+    shader_objects: Shared<super::shader_objects::ShaderObjects>,
     lists: super::lists::ListNames,
 }
 
@@ -68,16 +69,18 @@ impl super::Context {
             textures: self.textures.clone(),
             programs: self.programs.clone(),
             buffers: self.buffers.clone(),
+            shader_objects: self.shader_objects.clone(),
             lists: self.lists.names(),
         }
     }
 
     /// Makes this (new) context share the objects of `group`: its texture objects, buffer
-    /// objects and display lists.
+    /// objects, shader and program objects and display lists.
     pub fn join_share_group(&mut self, group: &ShareGroup) {
         self.textures = group.textures.clone();
         self.programs = group.programs.clone();
         self.buffers = group.buffers.clone();
+        self.shader_objects = group.shader_objects.clone();
         self.lists.share(group.lists.clone());
     }
 }

@@ -547,6 +547,9 @@ pub struct CurrentState {
     pub index: f32,
     /// The current raster position (glRasterPos, glWindowPos) and its attributes.
     pub raster: crate::context::raster_pos::RasterPos,
+    /// The current generic attributes (glVertexAttrib); attribute 0 is the vertex itself and
+    /// has none.
+    pub generic: [[f32; 4]; crate::gl::limits::MAX_VERTEX_ATTRIBS],
 }
 
 impl CurrentState {
@@ -576,6 +579,7 @@ impl Default for CurrentState {
             edge_flag: true,
             index: 1.0,
             raster: Default::default(),
+            generic: [[0.0, 0.0, 0.0, 1.0]; crate::gl::limits::MAX_VERTEX_ATTRIBS],
         }
     }
 }

@@ -23,6 +23,7 @@ mod arrays;
 mod buffers;
 mod compiled;
 mod draws;
+mod generic;
 mod immediate;
 
 use super::get::Value;
@@ -33,6 +34,7 @@ use crate::gl::types::GLenum;
 use crate::vertex::arrays::{ArrayId, ClientArrays};
 use crate::vertex::assembly::{continued_vertices, DrawPart};
 use crate::vertex::Vertex;
+pub use generic::AttribValue;
 
 /// GL_MAX_ELEMENTS_VERTICES / GL_MAX_ELEMENTS_INDICES: a recommendation only (any count
 /// works); Mesa's value.

@@ -10,6 +10,8 @@ pub const MAX_CLIP_PLANES: usize = 6;
 pub const MAX_LIGHTS: usize = 8;
 /// Texture units with fixed-function state (GL_MAX_TEXTURE_UNITS).
 pub const MAX_TEXTURE_UNITS: usize = 4;
+/// GL_MAX_VERTEX_ATTRIBS: generic vertex attributes (GL 2.0), as Mesa's 16.
+pub const MAX_VERTEX_ATTRIBS: usize = 16;
 /// Largest point size and line width (GL_POINT_SIZE_RANGE / GL_LINE_WIDTH_RANGE maximum).
 pub const MAX_POINT_SIZE: f32 = 255.0;
 pub const MAX_LINE_WIDTH: f32 = 255.0;

@@ -7,7 +7,7 @@
 //! touched, and it only ever covers what GL's contract says the caller provides.
 use super::components::{decoder, ComponentType, Decoder};
 use crate::gl::enums::*;
-use crate::gl::limits::MAX_TEXTURE_UNITS;
+use crate::gl::limits::{MAX_TEXTURE_UNITS, MAX_VERTEX_ATTRIBS};
 use crate::gl::types::GLenum;
 
 /// The fixed-function vertex arrays.
@@ -85,6 +85,10 @@ pub struct ArrayState {
     /// use the array draw nothing (GL leaves this undefined; Mesa 22 reads the offset as a
     /// client address).
     pub orphaned: bool,
+    /// A generic attribute array's integer components are normalized fixed-point values
+    /// (glVertexAttribPointer's `normalized`; the fixed-function arrays' rule is their
+    /// [`ArrayId::normalized`]).
+    pub normalized: bool,
 }
 
 impl ArrayState {
@@ -97,6 +101,7 @@ impl ArrayState {
             pointer: 0,
             buffer: 0,
             orphaned: false,
+            normalized: false,
         }
     }
 
@@ -133,6 +138,9 @@ pub struct ClientArrays {
     pub array_buffer: u32,
     /// GL_ELEMENT_ARRAY_BUFFER_BINDING.
     pub element_array_buffer: u32,
+    /// The generic attribute arrays (glVertexAttribPointer). Array 0 is the vertex position
+    /// when enabled ([`ClientArrays::position`]); the others wait for GLSL programs.
+    pub generic: [ArrayState; MAX_VERTEX_ATTRIBS],
 }
 
 impl Default for ClientArrays {
@@ -151,6 +159,7 @@ impl Default for ClientArrays {
             client_active_texture: 0,
             array_buffer: 0,
             element_array_buffer: 0,
+            generic: [ArrayState::new(4); MAX_VERTEX_ATTRIBS],
         }
     }
 }
@@ -217,7 +226,18 @@ impl ClientArrays {
         })
     }
 
-    /// Every array with its id, texture units in order.
+    /// The array draws take positions from: generic attribute 0 when it is enabled, which
+    /// GL 2.0 section 2.8 gives precedence over the vertex array, else the vertex array.
+    pub fn position(&self) -> &ArrayState {
+        if self.generic[0].enabled {
+            &self.generic[0]
+        } else {
+            &self.vertex
+        }
+    }
+
+    /// Every array a draw reads with its id, texture units in order; the positions are
+    /// [`ClientArrays::position`]'s.
     pub fn all(&self) -> impl Iterator<Item = (ArrayId, &ArrayState)> {
         let fixed = [
             ArrayId::Vertex,
@@ -228,10 +248,13 @@ impl ClientArrays {
             ArrayId::Index,
             ArrayId::EdgeFlag,
         ];
-        fixed.into_iter().chain((0..MAX_TEXTURE_UNITS).map(ArrayId::TexCoord)).map(move |id| (id, self.get(id)))
+        fixed.into_iter().chain((0..MAX_TEXTURE_UNITS).map(ArrayId::TexCoord)).map(move |id| match id {
+            ArrayId::Vertex => (id, self.position()),
+            _ => (id, self.get(id)),
+        })
     }
 
-    /// Every array, mutably.
+    /// Every array, mutably, the generic ones included.
     pub fn all_mut(&mut self) -> impl Iterator<Item = &mut ArrayState> {
         [
             &mut self.vertex,
@@ -244,6 +267,7 @@ impl ClientArrays {
         ]
         .into_iter()
         .chain(self.tex_coords.iter_mut())
+        .chain(self.generic.iter_mut())
     }
 }
 
@@ -374,7 +398,7 @@ impl<'a> BoundArray<'a> {
             stride: array.effective_stride(),
             element_size: array.element_size(),
             size: array.size as usize,
-            decode: decoder(array.component, id.normalized()),
+            decode: decoder(array.component, id.normalized() || array.normalized),
             float: array.component == ComponentType::Float,
         }
     }
@@ -535,7 +559,7 @@ mod tests {
         assert_eq!(arrays.array_of_capability(GL_TEXTURE_2D), None);
         assert_eq!(arrays.array_of_pointer_name(GL_VERTEX_ARRAY), None);
         assert_eq!(arrays.all().count(), 7 + MAX_TEXTURE_UNITS);
-        assert_eq!(arrays.all_mut().count(), 7 + MAX_TEXTURE_UNITS);
+        assert_eq!(arrays.all_mut().count(), 7 + MAX_TEXTURE_UNITS + MAX_VERTEX_ATTRIBS);
         assert_eq!(arrays.edge_flag.element_size(), 1);
         assert_eq!(arrays.vertex.effective_stride(), 16);
     }

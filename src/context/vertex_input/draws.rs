@@ -161,7 +161,7 @@ fn assemble(
     memory: &dyn ClientMemory,
     batch: &mut Vec<Vertex>,
 ) -> Result<(), NoDraw> {
-    if !arrays.vertex.enabled {
+    if !arrays.position().enabled {
         return Err(NoDraw::Undefined);
     }
     let Some((first, last)) = elements.range() else {

@@ -1,0 +1,653 @@
+//! GLSL shader and program objects (GL 2.1 section 2.15): their one name space, shared by a
+//! share group; source, compile status and info logs; attachment; link and validate status;
+//! the program each context uses; and GL's deferred deletion.
+//!
+//! Shaders and programs are one [`NameTable`] of [`Object`]s, because GL gives them one name
+//! space: a program's name passed where a shader is expected is GL_INVALID_OPERATION, a name
+//! that is neither GL_INVALID_VALUE ([`ShaderObjects::shader`], [`ShaderObjects::program`]).
+//!
+//! Deletion is deferred as GL 2.1 section 2.15.1 says: a shader attached to a program is only
+//! flagged (GL_DELETE_STATUS) and goes when its last program lets go of it; a program current
+//! in some context is flagged and goes when the last context stops using it, detaching (and
+//! so perhaps deleting) its shaders. A context's use is a [`ProgramInUse`], which also keeps
+//! the executable of the link that was current at glUseProgram time (a failed relink keeps
+//! the last good one in use) and lets go of the program when the context is destroyed.
+//!
+//! Compiling runs the GLSL front end (`crate::glsl`) over the source; its info log is worded
+//! like Mesa's. Linking checks what the front end knows today (every attached shader
+//! compiled); executing GLSL programs comes with the lowering onto the shading IR (issue #20).
+use super::share::Shared;
+use crate::gl::enums::*;
+use crate::gl::names::NameTable;
+use crate::gl::types::*;
+use std::sync::Arc;
+
+/// The largest generic vertex attribute index plus one (GL_MAX_VERTEX_ATTRIBS, as Mesa's 16).
+pub const MAX_VERTEX_ATTRIBS: u32 = 16;
+
+/// The stage a shader object compiles for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Stage {
+    Vertex,
+    Fragment,
+}
+
+impl Stage {
+    fn from_gl(kind: GLenum) -> Option<Stage> {
+        match kind {
+            GL_VERTEX_SHADER => Some(Stage::Vertex),
+            GL_FRAGMENT_SHADER => Some(Stage::Fragment),
+            _ => None,
+        }
+    }
+
+    fn to_gl(self) -> GLenum {
+        match self {
+            Stage::Vertex => GL_VERTEX_SHADER,
+            Stage::Fragment => GL_FRAGMENT_SHADER,
+        }
+    }
+}
+
+/// A shader object.
+#[derive(Debug)]
+pub struct Shader {
+    stage: Stage,
+    /// The source of the last glShaderSource, its pieces joined (`None`: never given).
+    source: Option<String>,
+    compiled: bool,
+    info_log: String,
+    /// glDeleteShader while attached: deleted when the last program detaches it.
+    delete_pending: bool,
+    /// How many programs it is attached to.
+    attachments: u32,
+}
+
+/// What a successful link made: the executable a context runs while the program is in use.
+#[derive(Debug, Default)]
+pub struct Executable {
+    /// The stages the program replaces (a missing one stays fixed-function, as GL 2.1 says).
+    pub vertex: bool,
+    pub fragment: bool,
+}
+
+/// A program object.
+#[derive(Debug, Default)]
+pub struct Program {
+    /// The attached shaders, in attach order.
+    shaders: Vec<u32>,
+    link_status: bool,
+    validate_status: bool,
+    info_log: String,
+    /// The executable of the last successful link.
+    executable: Option<Arc<Executable>>,
+    /// glBindAttribLocation's bindings, used by the next link.
+    attribute_bindings: Vec<(String, u32)>,
+    /// glDeleteProgram while in use: deleted when no context uses it.
+    delete_pending: bool,
+    /// How many contexts use it (glUseProgram).
+    users: u32,
+}
+
+/// A shader or a program: they share one name space.
+#[derive(Debug)]
+pub enum Object {
+    Shader(Shader),
+    Program(Program),
+}
+
+/// The shader and program objects of a share group.
+#[derive(Debug, Default)]
+pub struct ShaderObjects {
+    names: NameTable<Object>,
+}
+
+/// Why a name was refused, as the GL error it records.
+type Refused = GLenum;
+
+impl ShaderObjects {
+    /// The shader `name`: GL_INVALID_VALUE for no object, GL_INVALID_OPERATION for a program.
+    fn shader(&mut self, name: u32) -> Result<&mut Shader, Refused> {
+        match self.names.get_mut(name) {
+            Some(Object::Shader(shader)) => Ok(shader),
+            Some(Object::Program(_)) => Err(GL_INVALID_OPERATION),
+            None => Err(GL_INVALID_VALUE),
+        }
+    }
+
+    /// The program `name`: GL_INVALID_VALUE for no object, GL_INVALID_OPERATION for a shader.
+    fn program(&mut self, name: u32) -> Result<&mut Program, Refused> {
+        match self.names.get_mut(name) {
+            Some(Object::Program(program)) => Ok(program),
+            Some(Object::Shader(_)) => Err(GL_INVALID_OPERATION),
+            None => Err(GL_INVALID_VALUE),
+        }
+    }
+
+    fn create(&mut self, object: Object) -> u32 {
+        let mut object = Some(object);
+        match self.names.generate_objects(1, || object.take().expect("one name")) {
+            Ok(names) => names[0],
+            Err(_) => 0,
+        }
+    }
+
+    /// Deletes shader `name` if it is flagged and no program holds it any more.
+    fn collect_shader(&mut self, name: u32) {
+        if let Ok(shader) = self.shader(name) {
+            if shader.delete_pending && shader.attachments == 0 {
+                self.names.delete(name);
+            }
+        }
+    }
+
+    /// Deletes program `name` if it is flagged and no context uses it, detaching its shaders.
+    fn collect_program(&mut self, name: u32) {
+        let Ok(program) = self.program(name) else { return };
+        if !(program.delete_pending && program.users == 0) {
+            return;
+        }
+        let shaders = std::mem::take(&mut program.shaders);
+        self.names.delete(name);
+        for shader in shaders {
+            if let Ok(s) = self.shader(shader) {
+                s.attachments -= 1;
+            }
+            self.collect_shader(shader);
+        }
+    }
+}
+
+/// The program a context uses (glUseProgram), holding its place in the program's user count.
+/// Dropping it (context destruction) lets go of the program.
+#[derive(Debug, Default)]
+pub struct ProgramInUse {
+    name: u32,
+    executable: Option<Arc<Executable>>,
+    objects: Option<Shared<ShaderObjects>>,
+}
+
+impl ProgramInUse {
+    /// The program's name (GL_CURRENT_PROGRAM), 0 for fixed-function processing.
+    pub fn name(&self) -> u32 {
+        self.name
+    }
+
+    /// The executable in use, `None` for fixed-function processing.
+    pub fn executable(&self) -> Option<&Arc<Executable>> {
+        self.executable.as_ref()
+    }
+
+    /// Stops using the program (the caller holds the table locked).
+    fn release(&mut self, objects: &mut ShaderObjects) {
+        let name = std::mem::take(&mut self.name);
+        self.executable = None;
+        self.objects = None;
+        if let Ok(program) = objects.program(name) {
+            program.users -= 1;
+            objects.collect_program(name);
+        }
+    }
+}
+
+impl Drop for ProgramInUse {
+    fn drop(&mut self) {
+        if let Some(objects) = self.objects.take() {
+            self.release(&mut objects.lock());
+        }
+    }
+}
+
+/// Writes `text` as glGet*InfoLog and glGetShaderSource do: at most `buffer_size - 1` bytes
+/// and a NUL into `write`'s buffer; returns the count written without the NUL.
+pub fn copy_out(text: &str, buffer_size: usize) -> (usize, Vec<u8>) {
+    if buffer_size == 0 {
+        return (0, Vec::new());
+    }
+    let count = text.len().min(buffer_size - 1);
+    let mut bytes = Vec::with_capacity(count + 1);
+    bytes.extend_from_slice(&text.as_bytes()[..count]);
+    bytes.push(0);
+    (count, bytes)
+}
+
+/// GL's length of a string value: its bytes and the NUL, or 0 for an empty string.
+fn length_with_nul(text: &str) -> GLint {
+    if text.is_empty() {
+        0
+    } else {
+        GLint::try_from(text.len() + 1).unwrap_or(GLint::MAX)
+    }
+}
+
+impl super::Context {
+    /// Runs `f` on the share group's shader objects; its error, if any, is recorded.
+    /// Between glBegin and glEnd it records GL_INVALID_OPERATION instead.
+    fn with_shader_objects<R>(&mut self, f: impl FnOnce(&mut ShaderObjects) -> Result<R, Refused>) -> Option<R> {
+        if !self.check_outside_begin_end() {
+            return None;
+        }
+        let result = f(&mut self.shader_objects.lock());
+        match result {
+            Ok(value) => Some(value),
+            Err(error) => {
+                self.error(error);
+                None
+            }
+        }
+    }
+
+    /// glCreateShader: 0 (and GL_INVALID_ENUM) for a type that is not a shader stage.
+    pub fn create_shader(&mut self, kind: GLenum) -> u32 {
+        if !self.check_outside_begin_end() {
+            return 0;
+        }
+        let Some(stage) = Stage::from_gl(kind) else {
+            self.error(GL_INVALID_ENUM);
+            return 0;
+        };
+        let shader = Shader {
+            stage,
+            source: None,
+            compiled: false,
+            info_log: String::new(),
+            delete_pending: false,
+            attachments: 0,
+        };
+        let name = self.shader_objects.lock().create(Object::Shader(shader));
+        if name == 0 {
+            self.error(GL_OUT_OF_MEMORY);
+        }
+        name
+    }
+
+    /// glCreateProgram.
+    pub fn create_program(&mut self) -> u32 {
+        if !self.check_outside_begin_end() {
+            return 0;
+        }
+        let name = self.shader_objects.lock().create(Object::Program(Program::default()));
+        if name == 0 {
+            self.error(GL_OUT_OF_MEMORY);
+        }
+        name
+    }
+
+    /// glShaderSource, given the pieces already read from the caller, or the error the
+    /// arguments make once the shader is found (a negative count or a NULL array:
+    /// GL_INVALID_VALUE; a NULL piece: GL_INVALID_OPERATION, as Mesa).
+    pub fn shader_source(&mut self, shader: u32, pieces: Result<Vec<Vec<u8>>, GLenum>) {
+        self.with_shader_objects(|objects| {
+            let shader = objects.shader(shader)?;
+            let pieces = pieces?;
+            let mut source = Vec::with_capacity(pieces.iter().map(Vec::len).sum());
+            for piece in &pieces {
+                source.extend_from_slice(piece);
+            }
+            // GLSL source is ASCII; other bytes reach the compiler, which refuses them.
+            shader.source = Some(String::from_utf8_lossy(&source).into_owned());
+            Ok(())
+        });
+    }
+
+    /// glCompileShader: compiles the source with the GLSL front end and keeps its log.
+    pub fn compile_shader(&mut self, shader: u32) {
+        let Some((stage, source)) = self.with_shader_objects(|objects| {
+            let shader = objects.shader(shader)?;
+            Ok((shader.stage, shader.source.clone()))
+        }) else {
+            return;
+        };
+        // Compile without the table locked: a long compile must not stall other contexts.
+        let (compiled, info_log) = match source {
+            None => (false, String::new()),
+            Some(source) => compile(stage, &source),
+        };
+        self.with_shader_objects(|objects| {
+            // The shader may have been deleted meanwhile by another context: then nothing.
+            if let Ok(shader) = objects.shader(shader) {
+                shader.compiled = compiled;
+                shader.info_log = info_log;
+            }
+            Ok(())
+        });
+    }
+
+    /// glDeleteShader: deleted at once, or flagged while attached to a program.
+    pub fn delete_shader(&mut self, name: u32) {
+        if name == 0 {
+            return;
+        }
+        self.with_shader_objects(|objects| {
+            let shader = objects.shader(name)?;
+            shader.delete_pending = true;
+            objects.collect_shader(name);
+            Ok(())
+        });
+    }
+
+    /// glDeleteProgram: deleted at once, or flagged while some context uses it.
+    pub fn delete_program(&mut self, name: u32) {
+        if name == 0 {
+            return;
+        }
+        self.with_shader_objects(|objects| {
+            let program = objects.program(name)?;
+            program.delete_pending = true;
+            objects.collect_program(name);
+            Ok(())
+        });
+    }
+
+    /// glIsShader.
+    pub fn is_shader(&mut self, name: u32) -> bool {
+        self.check_outside_begin_end() && matches!(self.shader_objects.lock().names.get(name), Some(Object::Shader(_)))
+    }
+
+    /// glIsProgram.
+    pub fn is_program(&mut self, name: u32) -> bool {
+        self.check_outside_begin_end() && matches!(self.shader_objects.lock().names.get(name), Some(Object::Program(_)))
+    }
+
+    /// glAttachShader.
+    pub fn attach_shader(&mut self, program: u32, shader: u32) {
+        self.with_shader_objects(|objects| {
+            let attached = objects.program(program)?.shaders.contains(&shader);
+            let attaching = objects.shader(shader)?;
+            if attached {
+                return Err(GL_INVALID_OPERATION);
+            }
+            attaching.attachments += 1;
+            objects.program(program)?.shaders.push(shader);
+            Ok(())
+        });
+    }
+
+    /// glDetachShader: a flagged shader goes with its last attachment.
+    pub fn detach_shader(&mut self, program: u32, shader: u32) {
+        self.with_shader_objects(|objects| {
+            objects.program(program)?;
+            objects.shader(shader)?;
+            let shaders = &mut objects.program(program)?.shaders;
+            let index = shaders.iter().position(|&s| s == shader).ok_or(GL_INVALID_OPERATION)?;
+            shaders.remove(index);
+            objects.shader(shader)?.attachments -= 1;
+            objects.collect_shader(shader);
+            Ok(())
+        });
+    }
+
+    /// glGetAttachedShaders: at most `max_count` names, in attach order.
+    pub fn attached_shaders(&mut self, program: u32, max_count: GLsizei) -> Option<Vec<u32>> {
+        self.with_shader_objects(|objects| {
+            let program = objects.program(program)?;
+            let max_count = usize::try_from(max_count).map_err(|_| GL_INVALID_VALUE)?;
+            Ok(program.shaders.iter().copied().take(max_count).collect())
+        })
+    }
+
+    /// glGetShaderiv.
+    pub fn get_shader(&mut self, shader: u32, pname: GLenum) -> Option<GLint> {
+        self.with_shader_objects(|objects| {
+            let shader = objects.shader(shader)?;
+            Ok(match pname {
+                GL_SHADER_TYPE => shader.stage.to_gl() as GLint,
+                GL_DELETE_STATUS => shader.delete_pending as GLint,
+                GL_COMPILE_STATUS => shader.compiled as GLint,
+                GL_INFO_LOG_LENGTH => length_with_nul(&shader.info_log),
+                GL_SHADER_SOURCE_LENGTH => shader.source.as_deref().map_or(0, length_with_nul),
+                _ => return Err(GL_INVALID_ENUM),
+            })
+        })
+    }
+
+    /// glGetProgramiv.
+    pub fn get_program(&mut self, program: u32, pname: GLenum) -> Option<GLint> {
+        self.with_shader_objects(|objects| {
+            let program = objects.program(program)?;
+            Ok(match pname {
+                GL_DELETE_STATUS => program.delete_pending as GLint,
+                GL_LINK_STATUS => program.link_status as GLint,
+                GL_VALIDATE_STATUS => program.validate_status as GLint,
+                GL_INFO_LOG_LENGTH => length_with_nul(&program.info_log),
+                GL_ATTACHED_SHADERS => program.shaders.len() as GLint,
+                // Reflection comes with the front end's interface analysis: none yet.
+                GL_ACTIVE_ATTRIBUTES
+                | GL_ACTIVE_ATTRIBUTE_MAX_LENGTH
+                | GL_ACTIVE_UNIFORMS
+                | GL_ACTIVE_UNIFORM_MAX_LENGTH => 0,
+                _ => return Err(GL_INVALID_ENUM),
+            })
+        })
+    }
+
+    /// glGetShaderInfoLog's text.
+    pub fn shader_info_log(&mut self, shader: u32) -> Option<String> {
+        self.with_shader_objects(|objects| Ok(objects.shader(shader)?.info_log.clone()))
+    }
+
+    /// glGetShaderSource's text (empty when no source was given).
+    pub fn shader_source_text(&mut self, shader: u32) -> Option<String> {
+        self.with_shader_objects(|objects| Ok(objects.shader(shader)?.source.clone().unwrap_or_default()))
+    }
+
+    /// glGetProgramInfoLog's text.
+    pub fn program_info_log(&mut self, program: u32) -> Option<String> {
+        self.with_shader_objects(|objects| Ok(objects.program(program)?.info_log.clone()))
+    }
+
+    /// glLinkProgram. A context that uses the program keeps its executable until it calls
+    /// glUseProgram again, except that a successful relink of the program in use becomes
+    /// current at once (GL 2.1 section 2.15.2).
+    pub fn link_program(&mut self, program: u32) {
+        let Some(executable) = self.with_shader_objects(|objects| {
+            let shaders = objects.program(program)?.shaders.clone();
+            let mut log = String::new();
+            let mut executable = Executable::default();
+            for &name in &shaders {
+                let shader = objects.shader(name)?;
+                if !shader.compiled {
+                    log.push_str("error: linking with uncompiled/unspecialized shader\n");
+                    break;
+                }
+                match shader.stage {
+                    Stage::Vertex => executable.vertex = true,
+                    Stage::Fragment => executable.fragment = true,
+                }
+            }
+            let program = objects.program(program)?;
+            program.link_status = log.is_empty();
+            program.info_log = log;
+            if program.link_status {
+                program.executable = Some(Arc::new(executable));
+            }
+            Ok(program.executable.clone().filter(|_| program.link_status))
+        }) else {
+            return;
+        };
+        if self.program_in_use.name == program {
+            if let Some(executable) = executable {
+                self.program_in_use.executable = Some(executable);
+            }
+        }
+    }
+
+    /// glValidateProgram: whether the program could run in the current state (linked).
+    pub fn validate_program(&mut self, program: u32) {
+        self.with_shader_objects(|objects| {
+            let program = objects.program(program)?;
+            program.validate_status = program.link_status;
+            program.info_log =
+                if program.link_status { String::new() } else { "error: program not linked\n".to_string() };
+            Ok(())
+        });
+    }
+
+    /// glUseProgram: 0 returns to fixed-function processing; a program that did not link
+    /// is GL_INVALID_OPERATION.
+    pub fn use_program(&mut self, name: u32) {
+        if !self.check_outside_begin_end() {
+            return;
+        }
+        let objects = self.shader_objects.clone();
+        let mut table = objects.lock();
+        let executable = if name == 0 {
+            None
+        } else {
+            let program = match table.program(name) {
+                Ok(program) => program,
+                Err(error) => {
+                    drop(table);
+                    self.error(error);
+                    return;
+                }
+            };
+            if !program.link_status {
+                drop(table);
+                self.error(GL_INVALID_OPERATION);
+                return;
+            }
+            program.users += 1;
+            program.executable.clone()
+        };
+        // Let go of the previous program after taking the new one (it may be the same).
+        let mut previous = std::mem::take(&mut self.program_in_use);
+        previous.release(&mut table);
+        if name != 0 {
+            self.program_in_use = ProgramInUse { name, executable, objects: Some(objects.clone()) };
+        }
+    }
+
+    /// glBindAttribLocation: takes effect at the next link.
+    pub fn bind_attrib_location(&mut self, program: u32, index: u32, name: &[u8]) {
+        self.with_shader_objects(|objects| {
+            let program = objects.program(program)?;
+            if index >= MAX_VERTEX_ATTRIBS {
+                return Err(GL_INVALID_VALUE);
+            }
+            if name.starts_with(b"gl_") {
+                return Err(GL_INVALID_OPERATION);
+            }
+            let name = String::from_utf8_lossy(name).into_owned();
+            program.attribute_bindings.retain(|(n, _)| *n != name);
+            program.attribute_bindings.push((name, index));
+            Ok(())
+        });
+    }
+
+    /// glGetAttribLocation and glGetUniformLocation: -1, since a linked program has no active
+    /// attributes or uniforms until the front end analyses interfaces; GL_INVALID_OPERATION
+    /// for a program that did not link.
+    pub fn interface_location(&mut self, program: u32) -> GLint {
+        self.with_shader_objects(|objects| {
+            let program = objects.program(program)?;
+            if !program.link_status {
+                return Err(GL_INVALID_OPERATION);
+            }
+            Ok(-1)
+        })
+        .unwrap_or(-1)
+    }
+}
+
+/// Compiles `source` for `stage`: whether it compiled, and the info log (empty on success
+/// without warnings, as Mesa's).
+fn compile(stage: Stage, source: &str) -> (bool, String) {
+    let _ = stage;
+    let mut log = crate::glsl::InfoLog::default();
+    let parsed = crate::glsl::parse_shader(source, &crate::glsl::Options::default(), &mut log);
+    (parsed.is_some() && !log.has_errors(), log.text())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::context::{Context, ContextConfig};
+    use crate::framebuffer::{ColorFormat, DepthStencilFormat, FramebufferConfig};
+
+    fn context() -> Context {
+        let depth_stencil = DepthStencilFormat::Packed24 { depth: true, stencil: true };
+        let visual = FramebufferConfig::single_buffered(ColorFormat::Unorm8 { alpha: true }, depth_stencil, 0);
+        Context::new(ContextConfig { visual })
+    }
+
+    /// A linked program of one compiled vertex shader, the shader already flagged deleted.
+    fn linked_program(ctx: &mut Context) -> (u32, u32) {
+        let shader = ctx.create_shader(GL_VERTEX_SHADER);
+        ctx.shader_source(shader, Ok(vec![b"void main() { gl_Position = vec4(0.0); }".to_vec()]));
+        ctx.compile_shader(shader);
+        let program = ctx.create_program();
+        ctx.attach_shader(program, shader);
+        ctx.link_program(program);
+        ctx.delete_shader(shader);
+        assert_eq!(ctx.get_program(program, GL_LINK_STATUS), Some(1));
+        (program, shader)
+    }
+
+    #[test]
+    fn a_destroyed_context_lets_go_of_the_deleted_program_it_used() {
+        let mut first = context();
+        let mut second = context();
+        second.join_share_group(&first.share_group());
+        let (program, shader) = linked_program(&mut first);
+        second.use_program(program);
+        first.delete_program(program);
+        // Flagged: the second context still uses it, and it holds the flagged shader.
+        assert!(first.is_program(program) && first.is_shader(shader));
+        assert_eq!(first.get_program(program, GL_DELETE_STATUS), Some(1));
+        drop(second);
+        assert!(!first.is_program(program), "gone with its last user");
+        assert!(!first.is_shader(shader), "its flagged shader went with it");
+        assert_eq!(first.take_error(), GL_NO_ERROR);
+    }
+
+    #[test]
+    fn using_the_same_program_again_keeps_one_use() {
+        let mut ctx = context();
+        let (program, _) = linked_program(&mut ctx);
+        ctx.use_program(program);
+        ctx.use_program(program);
+        ctx.delete_program(program);
+        assert!(ctx.is_program(program));
+        ctx.use_program(0);
+        assert!(!ctx.is_program(program), "one glUseProgram(0) releases it");
+        assert_eq!(ctx.program_in_use.name(), 0);
+    }
+
+    #[test]
+    fn draws_with_a_program_in_use_are_refused_until_programs_run() {
+        let mut ctx = context();
+        let (program, _) = linked_program(&mut ctx);
+        ctx.use_program(program);
+        ctx.draw_vertices(
+            crate::gl::enums::GL_POINTS,
+            &[crate::context::draw::replay::vertex(0.0, 0.0, 0.0, [1.0; 4])],
+        );
+        assert_eq!(ctx.take_error(), GL_INVALID_OPERATION);
+    }
+
+    #[test]
+    fn commands_between_begin_and_end_are_invalid_operations() {
+        let mut ctx = context();
+        ctx.inside_begin_end = true;
+        assert_eq!(ctx.create_program(), 0);
+        assert_eq!(ctx.take_error(), GL_INVALID_OPERATION);
+        assert!(!ctx.is_shader(1));
+        assert_eq!(ctx.take_error(), GL_INVALID_OPERATION);
+    }
+
+    #[test]
+    fn copy_out_truncates_and_terminates() {
+        assert_eq!(copy_out("hello", 0), (0, vec![]));
+        assert_eq!(copy_out("hello", 1), (0, vec![0]));
+        assert_eq!(copy_out("hello", 3), (2, b"he\0".to_vec()));
+        assert_eq!(copy_out("hello", 6), (5, b"hello\0".to_vec()));
+        assert_eq!(copy_out("hello", 60), (5, b"hello\0".to_vec()));
+    }
+
+    #[test]
+    fn string_lengths_count_the_nul_except_when_empty() {
+        assert_eq!(length_with_nul(""), 0);
+        assert_eq!(length_with_nul("a"), 2);
+    }
+}
