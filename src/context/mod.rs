@@ -108,6 +108,9 @@ pub struct Context {
     pub evaluators: evaluators::EvalMaps,
     /// Framebuffer and renderbuffer objects and their bindings.
     pub fbo: framebuffer_object::FramebufferObjects,
+    /// The per-vertex stage's buffers, kept between draws: the recording thread's and the
+    /// helper's of a draw split in two (`draw::Context::draw_part`).
+    vertex_scratch: [crate::vertex::transform::VertexScratch; 2],
 }
 
 impl Context {
@@ -139,6 +142,7 @@ impl Context {
             selection: Default::default(),
             evaluators: Default::default(),
             fbo: framebuffer_object::FramebufferObjects::new(buffer),
+            vertex_scratch: Default::default(),
         }
     }
 
