@@ -117,14 +117,15 @@ impl Context {
             Some(split) => {
                 let (first, second) = vertices.split_at(split);
                 let mut later = scene.deferred_part(second.len() / 3);
+                let [own, helper] = &mut self.vertex_scratch;
                 let ((), stipple) = crate::pool::join(
                     || {
-                        vertex_stage.run(second, split, |clip_vertices| {
+                        vertex_stage.run_in(helper, second, split, |clip_vertices| {
                             pipeline::draw(&mut later, state_index, &geometry, mode, clip_vertices, part, None)
                         });
                     },
                     || {
-                        vertex_stage.run(first, 0, |clip_vertices| {
+                        vertex_stage.run_in(own, first, 0, |clip_vertices| {
                             pipeline::draw(&mut scene, state_index, &geometry, mode, clip_vertices, part, stipple)
                         })
                     },
@@ -132,7 +133,7 @@ impl Context {
                 scene.append(later);
                 stipple
             }
-            None => vertex_stage.run(vertices, 0, |clip_vertices| {
+            None => vertex_stage.run_in(&mut self.vertex_scratch[0], vertices, 0, |clip_vertices| {
                 pipeline::draw(&mut scene, state_index, &geometry, mode, clip_vertices, part, stipple)
             }),
         };

@@ -113,6 +113,9 @@ pub struct Context {
     pub shader_objects: share::Shared<shader_objects::ShaderObjects>,
     /// The GLSL program in use (glUseProgram), or none.
     pub program_in_use: shader_objects::ProgramInUse,
+    /// The per-vertex stage's buffers, kept between draws: the recording thread's and the
+    /// helper's of a draw split in two (`draw::Context::draw_part`).
+    vertex_scratch: [crate::vertex::transform::VertexScratch; 2],
 }
 
 impl Context {
@@ -146,6 +149,7 @@ impl Context {
             fbo: framebuffer_object::FramebufferObjects::new(buffer),
             shader_objects: Default::default(),
             program_in_use: Default::default(),
+            vertex_scratch: Default::default(),
         }
     }
 

@@ -27,15 +27,16 @@ pub const TILE_SIZE: usize = 64;
 
 /// Renders `bins` (per tile, row-major, `tiles_x` tiles a row: what to render there, in
 /// order) into the color `targets` of `framebuffer` on up to `threads` threads (the caller's
-/// included): `render(item, tile, band, scratch)` renders one bin entry into the part
-/// `tile` (a rectangle of the framebuffer) of `band`.
-pub fn render_tiles<T: Copy + Sync>(
+/// included): `render(item, tile, band, scratch, local)` renders one bin entry into the part
+/// `tile` (a rectangle of the framebuffer) of `band`. `local` is the caller's own per-band
+/// state (made once per band, not per entry: a triangle's batch of blocks).
+pub fn render_tiles<T: Copy + Sync, L: Default>(
     framebuffer: &mut Framebuffer,
     targets: &[ColorSlot],
     tiles_x: usize,
     bins: &[Vec<T>],
     threads: usize,
-    render: impl Fn(T, Rect, &mut Band<'_>, &mut Scratch) + Sync,
+    render: impl Fn(T, Rect, &mut Band<'_>, &mut Scratch, &mut L) + Sync,
 ) {
     let bounds = framebuffer.bounds();
     let bands = framebuffer.bands(TILE_SIZE, targets);
@@ -45,11 +46,12 @@ pub fn render_tiles<T: Copy + Sync>(
         crate::simd::per_level!({
             let ty = band.y0 as usize / TILE_SIZE;
             let mut scratch = Scratch::default();
+            let mut local = L::default();
             for tx in 0..tiles_x {
                 let tile = Rect::from_xywh((tx * TILE_SIZE) as i32, band.y0, TILE_SIZE as i32, band.rows as i32)
                     .intersect(bounds);
                 for &item in &bins[ty * tiles_x + tx] {
-                    render(item, tile, &mut band, &mut scratch);
+                    render(item, tile, &mut band, &mut scratch, &mut local);
                 }
             }
         })

@@ -156,6 +156,13 @@ impl<P: Interpolant> Varyings<P> {
         self.planes().len()
     }
 
+    /// Whether the planes are in an allocation of their own (more than
+    /// [`INLINE_VARYINGS`]).
+    #[inline(always)]
+    pub fn on_heap(&self) -> bool {
+        matches!(self.over_w, Planes::Heap { .. })
+    }
+
     pub fn is_empty(&self) -> bool {
         self.planes().is_empty()
     }

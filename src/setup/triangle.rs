@@ -70,8 +70,10 @@ pub struct TriangleSetup {
     /// the form the block walker reads, so that rendering the triangle in a tile computes
     /// nothing of them; the row solves read the same values.
     pixel: [[i64; 3]; 3],
-    /// Fixed-point vertices, counter-clockwise.
-    pub vertices: [[i64; 2]; 3],
+    /// Fixed-point vertices, counter-clockwise (within the guard band they fit in i32:
+    /// |v| ≤ 2³⁰; halving their size keeps a triangle's job smaller, and the scene moves
+    /// every job through memory).
+    pub vertices: [[i32; 2]; 3],
     /// Whether the input was clockwise (reordered to counter-clockwise).
     pub was_clockwise: bool,
     /// Inclusive pixel bounds that may contain covered centres.
@@ -112,7 +114,7 @@ impl TriangleSetup {
         let pixel_hi = |m: i64| ((m - HALF) >> SUBPIXEL_BITS) as i32;
         Some(TriangleSetup {
             pixel,
-            vertices: v,
+            vertices: v.map(|p| p.map(|c| c as i32)),
             was_clockwise,
             min_x: pixel_lo(*xs.iter().min().unwrap()),
             max_x: pixel_hi(*xs.iter().max().unwrap()),
@@ -162,8 +164,8 @@ impl TriangleSetup {
     /// The pixel box that may hold covered samples anywhere in a pixel (inclusive min,
     /// exclusive max): `(x0, y0, x1, y1)`.
     pub fn pixel_box(&self) -> (i32, i32, i32, i32) {
-        let xs = self.vertices.map(|p| p[0]);
-        let ys = self.vertices.map(|p| p[1]);
+        let xs = self.vertices.map(|p| p[0] as i64);
+        let ys = self.vertices.map(|p| p[1] as i64);
         let lo = |m: i64| div_floor(m, ONE) as i32;
         let hi = |m: i64| div_floor(m, ONE) as i32 + 1;
         let (min, max) = (|a: [i64; 3]| a[0].min(a[1]).min(a[2]), |a: [i64; 3]| a[0].max(a[1]).max(a[2]));
@@ -259,7 +261,7 @@ mod tests {
                 for x in -10..50 {
                     let (px, py) = (x as i64 * ONE + HALF + 37, y as i64 * ONE + HALF);
                     let inside = (0..3).all(|i| {
-                        let (p, q) = (t.vertices[i], t.vertices[(i + 1) % 3]);
+                        let (p, q) = (t.vertices[i].map(i64::from), t.vertices[(i + 1) % 3].map(i64::from));
                         let e = (q[0] - p[0]) * (py - p[1]) - (q[1] - p[1]) * (px - p[0]);
                         let owns = q[1] < p[1] || (q[1] == p[1] && q[0] > p[0]);
                         e > 0 || (e == 0 && owns)

@@ -78,7 +78,23 @@ struct Scratch {
     clip: Vec<ClipVertex>,
     /// The records of one batch, made in place ([`Run::transform_bound`]).
     batch: Vec<ClipVertex>,
+    /// The program `registers` were last prepared for (held, so that no other program can
+    /// be allocated where it was).
+    program: Option<Arc<CompiledVertex>>,
+    /// The uniform values `registers` were prepared with.
+    prepared: Vec<u32>,
 }
+
+/// The buffers of the per-vertex stage kept between draws by their owner (a context, one
+/// per thread that may run the stage for it: [`VertexStage::run_in`]), so that a small draw
+/// (a glBegin/glEnd pair of a few vertices) does not allocate and zero the executor's
+/// registers and its vertex buffers each time. Owned by the context, not by the thread, they
+/// go with it (see [`Scratch`]). The registers start from zeros again whenever the program
+/// changes, so a program never sees another's values; with the same program, what a run
+/// reads it has written itself (its inputs, all sixteen lanes, and its uniform values,
+/// prepared at each run) or is what the program never writes (still zero).
+#[derive(Default)]
+pub struct VertexScratch(Scratch);
 
 /// The vertices of a draw from vertex `from` on, up to the next run: one program and one
 /// set of uniform values (glMaterial between glBegin and glEnd starts a new run).
@@ -151,6 +167,17 @@ impl VertexStage {
         self.run_with(vertices, first, &mut Scratch::default(), then)
     }
 
+    /// [`VertexStage::run`] in the buffers `scratch` (kept by the caller between draws).
+    pub fn run_in<T>(
+        &self,
+        scratch: &mut VertexScratch,
+        vertices: &[Vertex],
+        first: usize,
+        then: impl FnOnce(&[ClipVertex]) -> T,
+    ) -> T {
+        self.run_with(vertices, first, &mut scratch.0, then)
+    }
+
     fn run_with<T>(
         &self,
         vertices: &[Vertex],
@@ -177,8 +204,19 @@ impl VertexStage {
 impl Run {
     /// Appends the clip-space vertices of `vertices` to `scratch.clip`.
     fn transform(&self, vertices: &[Vertex], scratch: &mut Scratch) {
-        // The uniform values once for the run, not per batch.
-        self.program.compiled.prepare(&mut scratch.registers, &self.uniforms);
+        let same_program = scratch.program.as_ref().is_some_and(|p| Arc::ptr_eq(p, &self.program));
+        if !same_program {
+            scratch.registers = Registers::default();
+            scratch.program = Some(self.program.clone());
+        }
+        // The uniform values once for the run, not per batch; not again for a run of the
+        // program that last ran here with the same uniforms (the batches of a run leave them
+        // as they are, and so do the runs: a draw of a few vertices with the state of the
+        // draw before it).
+        if !same_program || scratch.prepared != self.uniforms {
+            self.program.compiled.prepare(&mut scratch.registers, &self.uniforms);
+            scratch.prepared.clone_from(&self.uniforms);
+        }
         match &self.program.binding {
             Some(binding) => self.transform_bound(binding, vertices, scratch),
             None => self.transform_staged(vertices, scratch),

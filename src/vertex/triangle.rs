@@ -7,6 +7,7 @@ use super::offset::{clamp_offset, polygon_offset};
 use crate::setup::jobs::smooth::{SmoothJob, SmoothTriangle};
 use crate::setup::jobs::triangle::{TriangleJob, WindowVertex};
 use crate::setup::plane::MAX_VARYINGS;
+use crate::setup::triangle::TriangleSetup;
 use crate::setup::{Primitive as RasterPrimitive, Scene};
 
 /// The colors of a flat-shaded primitive: its provoking vertex's front primary and
@@ -64,6 +65,29 @@ pub fn emit_triangle(scene: &mut Scene, state: u32, g: &Geometry, w: &[WindowVer
     if culls(g.cull, front) {
         return;
     }
+    if g.smooth_polygons {
+        let (offset, values, n) = offset_and_varyings(g, w);
+        if let Some(job) = SmoothTriangle::new(*w, flat, offset, &values[..n], front) {
+            let job = SmoothJob::Triangle(Box::new(job));
+            scene.add(state, job.bounds(), RasterPrimitive::Smooth(job));
+        }
+        return;
+    }
+    // The edges first: a triangle that covers no pixel (most of a mesh finer than the
+    // pixels) is dropped before its planes are made.
+    let Some(setup) = TriangleSetup::new(w.map(|p| [p.x, p.y])) else { return };
+    scene.add_triangle(state, setup, |setup| {
+        let (offset, values, n) = offset_and_varyings(g, w);
+        let mut job = TriangleJob::with_setup(setup, g.accuracy, w, flat, offset, &values[..n]);
+        job.front_facing = front;
+        job
+    });
+}
+
+/// A triangle's polygon offset and the values at its corners of the varyings the draw
+/// interpolates (the first of the `MAX_VARYINGS` rows).
+#[inline(always)]
+fn offset_and_varyings(g: &Geometry, w: &[WindowVertex; 3]) -> (f32, [[f32; 3]; MAX_VARYINGS], usize) {
     let offset =
         g.offset.map_or(0.0, |(factor, units)| clamp_offset(polygon_offset(w, factor, units, g.depth), g.offset_clamp));
     // On the stack: setting up a triangle allocates nothing.
@@ -72,17 +96,5 @@ pub fn emit_triangle(scene: &mut Scene, state: u32, g: &Geometry, w: &[WindowVer
     for (value, a) in values.iter_mut().zip(&g.varyings) {
         *value = [0, 1, 2].map(|i| a.of(&w[i]));
     }
-    let varyings = &values[..n];
-    if g.smooth_polygons {
-        if let Some(job) = SmoothTriangle::new(*w, flat, offset, varyings, front) {
-            let job = SmoothJob::Triangle(Box::new(job));
-            scene.add(state, job.bounds(), RasterPrimitive::Smooth(job));
-        }
-        return;
-    }
-    if let Some(mut job) = TriangleJob::with_accuracy(g.accuracy, w, flat, offset, varyings) {
-        job.front_facing = front;
-        let bounds = job.bounds();
-        scene.add(state, bounds, RasterPrimitive::Triangle(job));
-    }
+    (offset, values, n)
 }

@@ -558,7 +558,9 @@ fn a_scene_over_its_budget_is_rendered_at_the_next_draw() {
     assert!(pixels(&mut ctx, &d).iter().all(|&p| p == expected));
 }
 
-/// A long triangle strip of small triangles (zig-zag rows over a 64 × 64 window), drawn in
+/// A long triangle strip of small triangles (zig-zag rows over a 64 × 64 window, each
+/// triangle half of a 1 × 2 pixel cell and covering one pixel centre, so that the scene
+/// records every one: a triangle covering no centre is not recorded), drawn in
 /// immediate mode, from a client array, and from a display list that captured that array
 /// draw: the scene is rendered whenever it passes its budget, so what it records never
 /// exceeds the budget by more than one part of a draw. (Before display-list draws were cut
@@ -571,8 +573,8 @@ fn long_draws_keep_the_scene_within_its_budget() {
     use crate::context::vertex_input::BATCH_VERTICES;
     const N: usize = 300_000;
     let position = |i: usize| {
-        let (column, row) = ((i / 2) % 100, (i / 2) / 100);
-        [1.0 + 0.5 * column as f32, ((row % 30) * 2 + (i & 1) * 2) as f32 + 0.25]
+        let (column, row) = ((i / 2) % 60, (i / 2) / 60);
+        [0.75 + column as f32, ((row % 30) * 2 + (i & 1) * 2) as f32 + 0.25]
     };
     let (mut ctx, _d) = Context::with_test_drawable(
         FramebufferConfig::single_buffered(ColorFormat::Unorm8 { alpha: true }, DepthStencilFormat::None, 0),

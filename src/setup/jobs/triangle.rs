@@ -125,6 +125,21 @@ impl TriangleJob {
         varyings: &[[f32; 3]],
     ) -> Option<TriangleJob> {
         let setup = TriangleSetup::new(v.map(|p| [p.x, p.y]))?;
+        Some(Self::with_setup(setup, accuracy, v, flat, depth_offset, varyings))
+    }
+
+    /// As [`TriangleJob::with_accuracy`] for a triangle already set up (`setup`, from the
+    /// positions of `v`): its planes, made only once the caller knows the triangle may
+    /// cover something (see `Scene::add_triangle`).
+    #[inline]
+    pub fn with_setup(
+        setup: TriangleSetup,
+        accuracy: Accuracy,
+        v: &[WindowVertex; 3],
+        flat: Option<[f32; 4]>,
+        depth_offset: f32,
+        varyings: &[[f32; 3]],
+    ) -> TriangleJob {
         // Attribute values in the setup's (counter-clockwise) vertex order.
         let order = if setup.was_clockwise { [0, 2, 1] } else { [0, 1, 2] };
         let v = order.map(|i| &v[i]);
@@ -185,15 +200,14 @@ impl TriangleJob {
             });
             Varyings::new(over_w, plane(inv_w))
         };
-        Some(TriangleJob {
-            setup,
-            anchor: [p0[0] as f32, p0[1] as f32],
-            z,
-            shading,
-            varyings,
-            front_facing: true,
-            exact,
-        })
+        TriangleJob { setup, anchor: [p0[0] as f32, p0[1] as f32], z, shading, varyings, front_facing: true, exact }
+    }
+
+    /// Whether dropping the job frees memory (the scene drops only the jobs that do:
+    /// `setup::scene`). Every field that may own memory is named here.
+    #[inline(always)]
+    pub fn owns_memory(&self) -> bool {
+        self.exact.is_some() || self.varyings.on_heap()
     }
 
     /// The pixel rectangle that may contain covered centres.
@@ -216,8 +230,10 @@ impl TriangleJob {
     }
 
     /// Renders the part of the triangle inside `area` (within the band) into a
-    /// single-sampled `band` in 4×4 blocks through the compiled lane `pipeline`; the exact
-    /// accuracy mode renders spans instead ([`TriangleJob::render`]).
+    /// single-sampled `band` in 4×4 blocks through the compiled lane `pipeline`, collected
+    /// in `batch` (empty, and left empty: the tile worker's, made once per band rather than
+    /// once per triangle); the exact accuracy mode renders spans instead
+    /// ([`TriangleJob::render`]).
     pub fn render_blocks(
         &self,
         state: &DrawState,
@@ -225,6 +241,7 @@ impl TriangleJob {
         area: Rect,
         band: &mut Band<'_>,
         scratch: &mut Scratch,
+        batch: &mut Batch,
     ) {
         if self.exact.is_some() {
             return self.render(state, area, band, scratch);
@@ -238,7 +255,6 @@ impl TriangleJob {
         // blocks collected in batches, each batch's stages one direct call per stage into
         // their copies for the level (`BlockPipeline::render`).
         crate::simd::per_level!(|level| {
-            let mut batch = Batch::default();
             let front_facing = self.front_facing;
             walk_blocks(
                 level,
@@ -248,11 +264,11 @@ impl TriangleJob {
                 #[inline(always)]
                 |x, y, mask| {
                     if batch.push(x, y, mask) {
-                        pipeline.render(level, state, band, scratch, self, front_facing, &mut batch);
+                        pipeline.render(level, state, band, scratch, self, front_facing, batch);
                     }
                 },
             );
-            pipeline.render(level, state, band, scratch, self, front_facing, &mut batch);
+            pipeline.render(level, state, band, scratch, self, front_facing, batch);
         });
     }
 
