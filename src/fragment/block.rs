@@ -686,12 +686,24 @@ fn block_colors(
     let Some(shading) = &fragment.shading else {
         return;
     };
-    let mut lanes = colors.lanes();
+    // The program writes its colours in place: the interpolated lanes are not copied out
+    // and back (a flat colour becomes lanes first).
+    if let BlockColors::Uniform(_) = colors {
+        *colors = BlockColors::Lanes(colors.lanes());
+    }
+    let BlockColors::Lanes(lanes) = colors else { return };
     let texturing = fragment.texturing.as_deref();
-    shading.run_block(&mut scratch.shading, texturing, at.y, live, &mut lanes, |y, first, out| {
-        inputs.varying_lanes(at.x, y, first, out)
-    });
-    *colors = BlockColors::Lanes(lanes);
+    // The closure inlined (LLVM left it a call per varying run and pass, with the planes'
+    // setup behind it, in each per-level body).
+    shading.run_block(
+        &mut scratch.shading,
+        texturing,
+        at.y,
+        live,
+        lanes,
+        #[inline(always)]
+        |y, first, out| inputs.varying_lanes(at.x, y, first, out),
+    );
 }
 
 #[cfg(test)]

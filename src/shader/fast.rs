@@ -839,7 +839,8 @@ impl Bound {
     /// Computes the uniform values into `registers` ([`Compiled::prepare`]): once for
     /// [`Bound::run`]s with the same uniforms and registers.
     pub fn prepare(&self, registers: &mut Registers, uniforms: &[u32]) {
-        registers.w.resize(self.registers, [0; LANES]);
+        // At least a [`View`]'s words.
+        registers.w.resize(self.registers.max(FILE), [0; LANES]);
         let mut io = Io { inputs: &[], uniforms, outputs: &mut [], textures: &exec::NoTextures };
         for op in &self.prologue {
             step(op, registers, &mut io, &self.wide);
@@ -924,35 +925,77 @@ impl Bound {
                 match op {
                     BOp::Op(op) => step(op, registers, io, wide),
                     BOp::MulClamp { d, a, b, lo, hi } => {
-                        let st = &mut *registers;
+                        let mut st = registers.view();
                         let (a, b, lo, hi) = (st.get(*a), st.get(*b), st.get(*lo), st.get(*hi));
                         let mut v = [0u32; LANES];
                         for i in 0..LANES {
                             v[i] = clamp_select_lane(fu(f(a[i]) * f(b[i])), lo[i], hi[i]);
                         }
-                        st.put(*d, v);
+                        st.put(*d, &v);
                     }
                     BOp::Mix3 { d, f: x, g: y, a, b } => {
+                        let mut st = registers.view();
                         for k in 0..3 {
-                            let st = &mut *registers;
                             let v = dot2(st.get(*x), st.get(*y), st.get(a[k]), st.get(b[k]));
-                            st.put(d[k], v);
+                            st.put(d[k], &v);
                         }
                     }
                     BOp::Ramp { f: fr, g, c, e, s, lo, hi, one } => {
-                        let st = &mut *registers;
+                        let mut st = registers.view();
                         let (c, e, s, lo, hi) = (st.get(*c), st.get(*e), st.get(*s), st.get(*lo), st.get(*hi));
                         let mut v = [0u32; LANES];
                         for i in 0..LANES {
                             v[i] = clamp_select_lane(fu((f(e[i]) - f(c[i])) / f(s[i])), lo[i], hi[i]);
                         }
-                        st.put(*fr, v);
-                        let w = map2(st.get(*one), st.get(*fr), |x, y| fu(f(x) - f(y)));
-                        st.put(*g, w);
+                        let w = map2(st.get(*one), &v, |x, y| fu(f(x) - f(y)));
+                        st.put(*fr, &v);
+                        st.put(*g, &w);
                     }
                 }
             }
         }
+    }
+}
+
+/// How many words of the register file a [`Bound`] run's fused operations see as an array
+/// ([`View`]); [`fuse`] fuses only operations whose registers are below it.
+const FILE: usize = 256;
+
+/// The first [`FILE`] words of a register file as an array, with the run's mask: a
+/// register number below [`FILE`] indexes it with no bounds check (a fused operation's
+/// five to fifteen checked reads and writes were a third of a fog program's run).
+struct View<'a> {
+    w: &'a mut [Word; FILE],
+    mask: &'a Word,
+    masked: bool,
+}
+
+impl View<'_> {
+    #[inline(always)]
+    fn get(&self, r: R) -> &Word {
+        &self.w[usize::from(r as u8)]
+    }
+
+    #[inline(always)]
+    fn put(&mut self, d: R, v: &Word) {
+        let dst = &mut self.w[usize::from(d as u8)];
+        if !self.masked {
+            *dst = *v;
+        } else {
+            for i in 0..LANES {
+                dst[i] = (v[i] & self.mask[i]) | (dst[i] & !self.mask[i]);
+            }
+        }
+    }
+}
+
+impl Registers {
+    /// The file as a [`View`] (at least [`FILE`] words: [`Bound::prepare`] makes it so).
+    #[inline(always)]
+    fn view(&mut self) -> View<'_> {
+        let Registers { w, mask, masked, .. } = self;
+        let w: &mut [Word; FILE] = (&mut w[..FILE]).try_into().expect("a prepared register file");
+        View { w, mask, masked: *masked }
     }
 }
 
@@ -1046,6 +1089,8 @@ fn fuse(ops: &[Op], runs: &[(u32, u32, bool)], wide: &[Wide], outputs: &[R]) -> 
         reads[r as usize] += 1;
     }
     let temporary = |r: R| reads[r as usize] == 1;
+    // A fused operation indexes a [`View`]: its registers must be below [`FILE`].
+    let small = |rs: &[R]| rs.iter().all(|&r| (r as usize) < FILE);
     let mut out = Vec::with_capacity(ops.len());
     let mut out_runs = Vec::with_capacity(runs.len());
     for &(start, end, masked) in runs {
@@ -1063,7 +1108,7 @@ fn fuse(ops: &[Op], runs: &[(u32, u32, bool)], wide: &[Wide], outputs: &[R]) -> 
             let Some(BOp::Op(Op::Mul { d: t2, a, b })) = run[i] else { continue };
             let clobbered =
                 run[i + 1..j].iter().flatten().any(|op| bop_writes(op, wide).iter().any(|r| [a, b, t].contains(r)));
-            if t2 == t && !clobbered {
+            if t2 == t && !clobbered && small(&[d, a, b, lo, hi]) {
                 run[i] = None;
                 run[j] = Some(BOp::MulClamp { d, a, b, lo, hi });
             }
@@ -1084,6 +1129,8 @@ fn fuse(ops: &[Op], runs: &[(u32, u32, bool)], wide: &[Wide], outputs: &[R]) -> 
                     && temporary(u)
                     && ![e, c, s].contains(&t)
                     && ![lo, hi].contains(&u)
+                    && one != fr
+                    && small(&[fr, g, c, e, s, lo, hi, one])
                 {
                     out.push(BOp::Ramp { f: fr, g, c, e, s, lo, hi, one });
                     k += 4;
@@ -1096,7 +1143,14 @@ fn fuse(ops: &[Op], runs: &[(u32, u32, bool)], wide: &[Wide], outputs: &[R]) -> 
                 // Each write before the next's reads, as in sequence: no later operand is an
                 // earlier result.
                 let later = |d: R, w: [R; 2], b: [R; 2]| w.contains(&d) || b.contains(&d);
-                if w0 == w1 && w1 == w2 && !later(d0, w1, b1) && !later(d0, w2, b2) && !later(d1, w2, b2) {
+                let registers = [d0, d1, d2, w0[0], w0[1], b0[0], b0[1], b1[0], b1[1], b2[0], b2[1]];
+                if w0 == w1
+                    && w1 == w2
+                    && !later(d0, w1, b1)
+                    && !later(d0, w2, b2)
+                    && !later(d1, w2, b2)
+                    && small(&registers)
+                {
                     out.push(BOp::Mix3 {
                         d: [d0, d1, d2],
                         f: w0[0],

@@ -1115,19 +1115,41 @@ fn the_fused_fragment_patterns_keep_their_bits() {
     // Linear fog (its ramp and the three channels' blend) and a modulate with the colour
     // clamp, as the fixed-function generator writes them: fused in the bound form, and the
     // reference's bits in the running lanes on special values, with every lane running and
-    // with partial masks.
+    // with partial masks. With 300 live registers before them (a sum of 300 inputs, output
+    // last), their registers lie past the 256 a fused operation can index: not fused, and
+    // the same bits.
+    for padding in [0, 300] {
+        fused_fragment_patterns(padding);
+    }
+}
+
+fn fused_fragment_patterns(padding: usize) {
     let mut p = Program::new(Stage::Fragment);
     let f32s = |p: &mut Program, n: usize| (0..n).map(|_| p.register(Type::F32)).collect::<Vec<Reg>>();
+    let mut body = Vec::new();
+    let mut sum = None;
+    for k in 0..padding {
+        let r = p.register(Type::F32);
+        p.input(Type::F32);
+        body.push(Stmt::Inst(Inst::Input { dst: r, slot: k as u16 }));
+        sum = Some(match sum {
+            None => r,
+            Some(a) => {
+                let d = p.register(Type::F32);
+                body.push(Stmt::Inst(Inst::Binary { op: BinaryOp::FAdd, dst: d, a, b: r }));
+                d
+            }
+        });
+    }
     let color = f32s(&mut p, 4);
     let texel = f32s(&mut p, 4);
     let [coord, end, start, zero, one, t, span, u, factor, rest] = f32s(&mut p, 10).try_into().unwrap();
     let fog_color = f32s(&mut p, 3);
     let products = f32s(&mut p, 4);
     let clamped = f32s(&mut p, 4);
-    let mut body = Vec::new();
     for (k, &r) in color.iter().chain(&texel).chain([&coord]).enumerate() {
         p.input(Type::F32);
-        body.push(Stmt::Inst(Inst::Input { dst: r, slot: k as u16 }));
+        body.push(Stmt::Inst(Inst::Input { dst: r, slot: (padding + k) as u16 }));
     }
     for (k, &r) in [end, start].iter().chain(&fog_color).enumerate() {
         p.uniform(Type::F32);
@@ -1169,6 +1191,8 @@ fn the_fused_fragment_patterns_keep_their_bits() {
         fogged.push(sum);
     }
     fogged.push(clamped[3]);
+    fogged.extend(sum);
+    let outputs = fogged.len();
     for (slot, &r) in fogged.iter().enumerate() {
         p.output(Type::F32);
         body.push(Stmt::Inst(Inst::Output { slot: slot as u16, src: r }));
@@ -1176,11 +1200,12 @@ fn the_fused_fragment_patterns_keep_their_bits() {
     p.body = body;
     validate(&p).unwrap();
     let bound = Compiled::new(&p).bind().expect("a straight program binds");
-    assert_eq!(bound.fused(), [4, 1, 1], "MulClamp, Ramp, Mix3 in {bound:#?}");
+    let fused = if padding < 200 { [4, 1, 1] } else { [0, 0, 0] };
+    assert_eq!(bound.fused(), fused, "MulClamp, Ramp, Mix3 in {bound:#?}");
     let mut rng = Rng(0xf0f0_1234);
     let mut compared = 0;
     for case in 0..200 {
-        let inputs: Vec<Word> = (0..9).map(|_| special_word(&mut rng)).collect();
+        let inputs: Vec<Word> = (0..padding + 9).map(|_| special_word(&mut rng)).collect();
         let uniforms: Vec<u32> = match case % 4 {
             // A degenerate span (division by zero) and special parameters, then plain ones.
             0 => vec![0.5f32.to_bits(), 0.5f32.to_bits(), 0.2f32.to_bits(), f32::NAN.to_bits(), 1.0f32.to_bits()],
@@ -1188,14 +1213,14 @@ fn the_fused_fragment_patterns_keep_their_bits() {
             _ => (0..5).map(|_| rng.float().to_bits()).collect(),
         };
         for lanes in [ALL_LANES, 0x5a5a, 0x0001, rng.next() as u16] {
-            let mut want = vec![[0u32; LANES]; 4];
+            let mut want = vec![[0u32; LANES]; outputs];
             Executor::new().run(
                 &p,
                 &mut Io { inputs: &inputs, uniforms: &uniforms, outputs: &mut want, textures: &NoTextures },
                 lanes,
             );
             let got = run_bound(&p, &inputs, &uniforms, lanes).unwrap();
-            for slot in 0..4 {
+            for slot in 0..outputs {
                 for lane in (0..LANES).filter(|l| lanes >> l & 1 != 0) {
                     assert!(
                         same_word(got[slot][lane], want[slot][lane], Type::F32),
