@@ -51,7 +51,7 @@ use super::{AlphaTest, FragmentState};
 use crate::framebuffer::band::Band;
 use crate::framebuffer::format::float_to_unorm;
 use crate::framebuffer::{ColorFormat, DepthStencilFormat};
-use crate::simd::dispatch::{outlined, sign_mask16, Word32};
+use crate::simd::dispatch::{outlined, outlined_sse2_for_sse41, sign_mask16, Word32};
 use crate::simd::Supported;
 use depth_stencil::DepthStencilKernel;
 use kernels::TargetKernel;
@@ -515,19 +515,13 @@ impl BlockPipeline {
             );
             if survivors > 0 && !self.targets.is_empty() {
                 let (blocks, shaded) = (&blocks[..survivors], Some(&shaded[..survivors]));
-                outlined(
-                    level,
-                    #[inline(always)]
-                    |level| {
-                        let grid = Grid { level, ..grid };
-                        color_blocks(self, &state.fragment, band, scratch, grid, inputs, blocks, shaded)
-                    },
-                );
+                self.color_stage(level, state, band, scratch, grid, inputs, blocks, shaded);
             }
             return;
         }
+        // SSE4.1's copy of the tests ran more instructions than SSE2's (simd::dispatch).
         let survivors = match &self.depth_stencil {
-            Some(kernel) => outlined(
+            Some(kernel) => outlined_sse2_for_sse41(
                 level,
                 #[inline(always)]
                 |level| {
@@ -552,15 +546,34 @@ impl BlockPipeline {
         // Without a colour target to write (depth-only passes, all channels masked) the
         // colours are never needed.
         if !blocks.is_empty() && !self.targets.is_empty() {
-            outlined(
-                level,
-                #[inline(always)]
-                |level| {
-                    let grid = Grid { level, ..grid };
-                    color_blocks(self, &state.fragment, band, scratch, grid, inputs, blocks, None)
-                },
-            );
+            self.color_stage(level, state, band, scratch, grid, inputs, blocks, None);
         }
+    }
+
+    /// The colour stage ([`color_blocks`]) of both orders of [`Self::render`] as one copy
+    /// per level (one closure): whether the colours were kept is a branch per block, not a
+    /// second copy of every target kernel (about 60 KB per level).
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn color_stage<I: BlockInputs>(
+        &self,
+        level: Supported,
+        state: &DrawState,
+        band: &mut Band<'_>,
+        scratch: &mut Scratch,
+        grid: Grid,
+        inputs: &I,
+        blocks: &[BlockEntry],
+        shaded: Option<&[BlockColors]>,
+    ) {
+        outlined(
+            level,
+            #[inline(always)]
+            |level| {
+                let grid = Grid { level, ..grid };
+                color_blocks(self, &state.fragment, band, scratch, grid, inputs, blocks, shaded)
+            },
+        );
     }
 }
 
