@@ -119,6 +119,29 @@ impl BlockPipeline {
         if blocks.is_empty() {
             return;
         }
+        // The batch's stages in one copy per level, called from both of the walk's calls
+        // (a direct call per batch: the level is a constant of the walk's copy), each stage
+        // a direct call from it, rather than their glue inlined into each call of the walk.
+        outlined(
+            level,
+            #[inline(always)]
+            |level| self.sample_stages(level, state, band, scratch, inputs, front_facing, blocks),
+        );
+    }
+
+    /// [`Self::render_samples`]'s stages on the non-empty `blocks` of a batch.
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn sample_stages<I: SampleInputs>(
+        &self,
+        level: Supported,
+        state: &DrawState,
+        band: &mut Band<'_>,
+        scratch: &mut Scratch,
+        inputs: &I,
+        front_facing: bool,
+        blocks: &mut [SampleEntry],
+    ) {
         let samples = band.samples.min(MAX_SAMPLES);
         let grid = Grid::new(band, level);
         let alpha_to_one = state.multisample.is_some_and(|m| m.enabled && m.alpha_to_one);
