@@ -51,7 +51,7 @@ use super::{AlphaTest, FragmentState};
 use crate::framebuffer::band::Band;
 use crate::framebuffer::format::float_to_unorm;
 use crate::framebuffer::{ColorFormat, DepthStencilFormat};
-use crate::simd::dispatch::{outlined, sign_mask16, Word32};
+use crate::simd::dispatch::{outlined, outlined_sse2_for_sse41, sign_mask16, Word32};
 use crate::simd::Supported;
 use depth_stencil::DepthStencilKernel;
 use kernels::TargetKernel;
@@ -500,6 +500,28 @@ impl BlockPipeline {
         if blocks.is_empty() {
             return;
         }
+        // The stages' glue in one copy per level, called directly from both of the walk's
+        // calls (the level is a constant of the walk's copy), instead of inlined into each.
+        outlined(
+            level,
+            #[inline(always)]
+            |level| self.stages(level, state, band, scratch, inputs, front_facing, blocks),
+        );
+    }
+
+    /// [`Self::render`]'s stages on the non-empty `blocks` of a batch.
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn stages<I: BlockInputs>(
+        &self,
+        level: Supported,
+        state: &DrawState,
+        band: &mut Band<'_>,
+        scratch: &mut Scratch,
+        inputs: &I,
+        front_facing: bool,
+        blocks: &mut [BlockEntry],
+    ) {
         let grid = Grid::new(band, level);
         if self.alpha.is_some() {
             // Colours first: kept per block for the target writes (the enum's flat variant
@@ -515,19 +537,13 @@ impl BlockPipeline {
             );
             if survivors > 0 && !self.targets.is_empty() {
                 let (blocks, shaded) = (&blocks[..survivors], Some(&shaded[..survivors]));
-                outlined(
-                    level,
-                    #[inline(always)]
-                    |level| {
-                        let grid = Grid { level, ..grid };
-                        color_blocks(self, &state.fragment, band, scratch, grid, inputs, blocks, shaded)
-                    },
-                );
+                self.color_stage(level, state, band, scratch, grid, inputs, blocks, shaded);
             }
             return;
         }
+        // SSE4.1's copy of the tests ran more instructions than SSE2's (simd::dispatch).
         let survivors = match &self.depth_stencil {
-            Some(kernel) => outlined(
+            Some(kernel) => outlined_sse2_for_sse41(
                 level,
                 #[inline(always)]
                 |level| {
@@ -552,6 +568,8 @@ impl BlockPipeline {
         // Without a colour target to write (depth-only passes, all channels masked) the
         // colours are never needed.
         if !blocks.is_empty() && !self.targets.is_empty() {
+            // Its own copy, not `color_stage`'s: merged, the colours computed here ran
+            // about 4 % more instructions (callgrind, flat fill).
             outlined(
                 level,
                 #[inline(always)]
@@ -561,6 +579,33 @@ impl BlockPipeline {
                 },
             );
         }
+    }
+
+    /// The colour stage ([`color_blocks`]) of blocks whose colours were kept, one copy per
+    /// level (one closure) for the alpha-test order of [`Self::render`] and for the
+    /// multisampled blocks (`samples`), not a copy of every target kernel each (about
+    /// 60 KB per level).
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn color_stage<I: BlockInputs>(
+        &self,
+        level: Supported,
+        state: &DrawState,
+        band: &mut Band<'_>,
+        scratch: &mut Scratch,
+        grid: Grid,
+        inputs: &I,
+        blocks: &[BlockEntry],
+        shaded: Option<&[BlockColors]>,
+    ) {
+        outlined(
+            level,
+            #[inline(always)]
+            |level| {
+                let grid = Grid { level, ..grid };
+                color_blocks(self, &state.fragment, band, scratch, grid, inputs, blocks, shaded)
+            },
+        );
     }
 }
 

@@ -39,112 +39,119 @@ pub fn write_target(
     ops: &TargetOps<'_>,
 ) {
     // One copy per SIMD level (`crate::simd`): the conversion and blend loops inlined into
-    // the body run with the CPU's instructions.
-    crate::simd::per_level!({
-        let n = colors.len().min(MAX_SPAN);
-        let colors = &colors[..n];
-        let mask = ops.mask;
-        match target {
-            ColorBand::Unorm8(px) => {
-                let px = &mut px[row_start..row_start + n];
-                let mut src = [[0u8; 4]; MAX_SPAN];
-                to_unorm8(colors, &mut src);
-                let mut out = [[0u8; 4]; MAX_SPAN];
-                out[..n].copy_from_slice(px);
-                if let Some(op) = ops.logic_op {
-                    logic_op_unorm8(op, &src[..n], &mut out[..n], live);
-                } else if let Some(blend) = ops.blend {
-                    blend_unorm8(blend, constant_unorm8(ops.blend_color), &src[..n], &mut out[..n], live);
-                } else {
-                    out[..n].copy_from_slice(&src[..n]);
-                }
-                if mask == [true; 4] && live == span_mask(n) {
-                    px.copy_from_slice(&out[..n]);
-                } else {
-                    for_live(live, n, |i| (0..4).filter(|&k| mask[k]).for_each(|k| px[i][k] = out[i][k]));
-                }
-            }
-            ColorBand::Rgb565(px) => {
-                let px = &mut px[row_start..row_start + n];
-                let mut color = [[0u8; 4]; MAX_SPAN];
-                to_unorm8(colors, &mut color);
-                if let (Some(blend), None) = (ops.blend, ops.logic_op) {
-                    let mut dst = [[0u8; 4]; MAX_SPAN];
-                    for (d, &w) in dst.iter_mut().zip(px.iter()) {
-                        *d = widen_565(w);
+    // the body run with the CPU's instructions. Two copies, not three: SSE4.1 runs SSE2's
+    // (this span path is the rare one, lines, points and float targets, and SSE4.1's copy
+    // was 120 KB of the libraries, SSE2's 50 KB).
+    let level = crate::simd::current();
+    crate::simd::dispatch::run_with_sse2_for_sse41(
+        level,
+        #[inline(always)]
+        |_| {
+            let n = colors.len().min(MAX_SPAN);
+            let colors = &colors[..n];
+            let mask = ops.mask;
+            match target {
+                ColorBand::Unorm8(px) => {
+                    let px = &mut px[row_start..row_start + n];
+                    let mut src = [[0u8; 4]; MAX_SPAN];
+                    to_unorm8(colors, &mut src);
+                    let mut out = [[0u8; 4]; MAX_SPAN];
+                    out[..n].copy_from_slice(px);
+                    if let Some(op) = ops.logic_op {
+                        logic_op_unorm8(op, &src[..n], &mut out[..n], live);
+                    } else if let Some(blend) = ops.blend {
+                        blend_unorm8(blend, constant_unorm8(ops.blend_color), &src[..n], &mut out[..n], live);
+                    } else {
+                        out[..n].copy_from_slice(&src[..n]);
                     }
-                    blend_unorm8(blend, constant_unorm8(ops.blend_color), &color[..n], &mut dst[..n], live);
-                    color = dst;
-                }
-                let mut words = [0u16; MAX_SPAN];
-                if ops.dither {
-                    dither_rgb565(x0 as u32, y as u32, &color[..n], &mut words[..n]);
-                } else {
-                    for (w, c) in words.iter_mut().zip(&color[..n]) {
-                        *w = ((c[0] as u16 >> 3) << 11) | ((c[1] as u16 >> 2) << 5) | (c[2] as u16 >> 3);
+                    if mask == [true; 4] && live == span_mask(n) {
+                        px.copy_from_slice(&out[..n]);
+                    } else {
+                        for_live(live, n, |i| (0..4).filter(|&k| mask[k]).for_each(|k| px[i][k] = out[i][k]));
                     }
                 }
-                if let Some(op) = ops.logic_op {
-                    let mut dst = [0u16; MAX_SPAN];
-                    dst[..n].copy_from_slice(px);
-                    logic_op_u16(op, &words[..n], &mut dst[..n], live);
-                    words = dst;
-                }
-                let keep: u16 = (if mask[0] { 0 } else { 0xf800 })
-                    | (if mask[1] { 0 } else { 0x07e0 })
-                    | (if mask[2] { 0 } else { 0x001f });
-                for_live(live, n, |i| px[i] = (px[i] & keep) | (words[i] & !keep));
-            }
-            ColorBand::Unorm16(px) => {
-                let px = &mut px[row_start..row_start + n];
-                let mut out = [[0u16; 4]; MAX_SPAN];
-                if let Some(op) = ops.logic_op {
-                    let mut src = [0u16; 4 * MAX_SPAN];
-                    let mut dst = [0u16; 4 * MAX_SPAN];
-                    for i in 0..n {
-                        for k in 0..4 {
-                            src[4 * i + k] = float_to_unorm(colors[i][k], 16) as u16;
-                            dst[4 * i + k] = px[i][k];
+                ColorBand::Rgb565(px) => {
+                    let px = &mut px[row_start..row_start + n];
+                    let mut color = [[0u8; 4]; MAX_SPAN];
+                    to_unorm8(colors, &mut color);
+                    if let (Some(blend), None) = (ops.blend, ops.logic_op) {
+                        let mut dst = [[0u8; 4]; MAX_SPAN];
+                        for (d, &w) in dst.iter_mut().zip(px.iter()) {
+                            *d = widen_565(w);
+                        }
+                        blend_unorm8(blend, constant_unorm8(ops.blend_color), &color[..n], &mut dst[..n], live);
+                        color = dst;
+                    }
+                    let mut words = [0u16; MAX_SPAN];
+                    if ops.dither {
+                        dither_rgb565(x0 as u32, y as u32, &color[..n], &mut words[..n]);
+                    } else {
+                        for (w, c) in words.iter_mut().zip(&color[..n]) {
+                            *w = ((c[0] as u16 >> 3) << 11) | ((c[1] as u16 >> 2) << 5) | (c[2] as u16 >> 3);
                         }
                     }
-                    // Each pixel's four channels are live together.
-                    for (i, o) in out[..n].iter_mut().enumerate() {
-                        let word_live = if live & (1 << i) != 0 { 0xf } else { 0 };
-                        let (s, d) = (&src[4 * i..4 * i + 4], &mut dst[4 * i..4 * i + 4]);
-                        logic_op_u16(op, s, d, word_live);
-                        o.copy_from_slice(d);
+                    if let Some(op) = ops.logic_op {
+                        let mut dst = [0u16; MAX_SPAN];
+                        dst[..n].copy_from_slice(px);
+                        logic_op_u16(op, &words[..n], &mut dst[..n], live);
+                        words = dst;
                     }
-                } else if let Some(blend) = ops.blend {
+                    let keep: u16 = (if mask[0] { 0 } else { 0xf800 })
+                        | (if mask[1] { 0 } else { 0x07e0 })
+                        | (if mask[2] { 0 } else { 0x001f });
+                    for_live(live, n, |i| px[i] = (px[i] & keep) | (words[i] & !keep));
+                }
+                ColorBand::Unorm16(px) => {
+                    let px = &mut px[row_start..row_start + n];
+                    let mut out = [[0u16; 4]; MAX_SPAN];
+                    if let Some(op) = ops.logic_op {
+                        let mut src = [0u16; 4 * MAX_SPAN];
+                        let mut dst = [0u16; 4 * MAX_SPAN];
+                        for i in 0..n {
+                            for k in 0..4 {
+                                src[4 * i + k] = float_to_unorm(colors[i][k], 16) as u16;
+                                dst[4 * i + k] = px[i][k];
+                            }
+                        }
+                        // Each pixel's four channels are live together.
+                        for (i, o) in out[..n].iter_mut().enumerate() {
+                            let word_live = if live & (1 << i) != 0 { 0xf } else { 0 };
+                            let (s, d) = (&src[4 * i..4 * i + 4], &mut dst[4 * i..4 * i + 4]);
+                            logic_op_u16(op, s, d, word_live);
+                            o.copy_from_slice(d);
+                        }
+                    } else if let Some(blend) = ops.blend {
+                        let mut dst = [[0f32; 4]; MAX_SPAN];
+                        for (d, p) in dst.iter_mut().zip(px.iter()) {
+                            *d = p.map(|v| v as f32 / 65535.0);
+                        }
+                        blend_f32(blend, ops.blend_color, colors, &mut dst[..n], live, true);
+                        for (o, d) in out.iter_mut().zip(&dst[..n]) {
+                            *o = d.map(|x| float_to_unorm(x, 16) as u16);
+                        }
+                    } else {
+                        return write_colors(target, row_start, colors, live, mask, ops.clamp_float);
+                    }
+                    for_live(live, n, |i| (0..4).filter(|&k| mask[k]).for_each(|k| px[i][k] = out[i][k]));
+                }
+                ColorBand::Float32(px) => {
+                    // Logic ops do not apply to float buffers.
+                    let Some(blend) = ops.blend else {
+                        return write_colors(target, row_start, colors, live, mask, ops.clamp_float);
+                    };
+                    let px = &mut px[row_start..row_start + n];
+                    let mut src = [[0f32; 4]; MAX_SPAN];
+                    for (s, c) in src.iter_mut().zip(colors) {
+                        *s = if ops.clamp_float { c.map(|x| if x > 0.0 { x.min(1.0) } else { 0.0 }) } else { *c };
+                    }
                     let mut dst = [[0f32; 4]; MAX_SPAN];
-                    for (d, p) in dst.iter_mut().zip(px.iter()) {
-                        *d = p.map(|v| v as f32 / 65535.0);
-                    }
-                    blend_f32(blend, ops.blend_color, colors, &mut dst[..n], live, true);
-                    for (o, d) in out.iter_mut().zip(&dst[..n]) {
-                        *o = d.map(|x| float_to_unorm(x, 16) as u16);
-                    }
-                } else {
-                    return write_colors(target, row_start, colors, live, mask, ops.clamp_float);
+                    dst[..n].copy_from_slice(px);
+                    blend_f32(blend, ops.blend_color, &src[..n], &mut dst[..n], live, false);
+                    for_live(live, n, |i| (0..4).filter(|&k| mask[k]).for_each(|k| px[i][k] = dst[i][k]));
                 }
-                for_live(live, n, |i| (0..4).filter(|&k| mask[k]).for_each(|k| px[i][k] = out[i][k]));
             }
-            ColorBand::Float32(px) => {
-                // Logic ops do not apply to float buffers.
-                let Some(blend) = ops.blend else {
-                    return write_colors(target, row_start, colors, live, mask, ops.clamp_float);
-                };
-                let px = &mut px[row_start..row_start + n];
-                let mut src = [[0f32; 4]; MAX_SPAN];
-                for (s, c) in src.iter_mut().zip(colors) {
-                    *s = if ops.clamp_float { c.map(|x| if x > 0.0 { x.min(1.0) } else { 0.0 }) } else { *c };
-                }
-                let mut dst = [[0f32; 4]; MAX_SPAN];
-                dst[..n].copy_from_slice(px);
-                blend_f32(blend, ops.blend_color, &src[..n], &mut dst[..n], live, false);
-                for_live(live, n, |i| (0..4).filter(|&k| mask[k]).for_each(|k| px[i][k] = dst[i][k]));
-            }
-        }
-    })
+        },
+    )
 }
 
 /// Calls `f(i)` for every bit `i < n` of `live`.

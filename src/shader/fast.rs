@@ -443,6 +443,16 @@ fn nodes<S: Straight>(
     exec
 }
 
+/// Runs a prologue (the uniform values, once per draw or batch of draws) at the baseline:
+/// one copy of the interpreter's `match` for [`Compiled::prepare`] and [`Bound::prepare`].
+#[inline(never)]
+fn run_prologue(prologue: &[Op], registers: &mut Registers, uniforms: &[u32], wide: &[Wide]) {
+    let mut io = Io { inputs: &[], uniforms, outputs: &mut [], textures: &exec::NoTextures };
+    for op in prologue {
+        step(op, registers, &mut io, wide);
+    }
+}
+
 fn run_tree<S: Straight>(s: &S, code: &Code, st: &mut Registers, io: &mut Io<'_>, lanes: u16) -> u16 {
     st.w.resize(code.registers, [0; LANES]);
     for &r in &code.zeroed {
@@ -505,10 +515,7 @@ impl Compiled {
     /// `uniforms` and registers: a draw's vertex batches compute them once, not per batch.
     pub fn prepare(&self, registers: &mut Registers, uniforms: &[u32]) {
         registers.w.resize(self.rest.registers, [0; LANES]);
-        let mut io = Io { inputs: &[], uniforms, outputs: &mut [], textures: &exec::NoTextures };
-        for op in &self.prologue {
-            step(op, registers, &mut io, &self.rest.wide);
-        }
+        run_prologue(&self.prologue, registers, uniforms, &self.rest.wide);
     }
 
     /// [`Compiled::run`] after [`Compiled::prepare`] (the same results): `registers` must be
@@ -841,10 +848,7 @@ impl Bound {
     pub fn prepare(&self, registers: &mut Registers, uniforms: &[u32]) {
         // At least a [`View`]'s words.
         registers.w.resize(self.registers.max(FILE), [0; LANES]);
-        let mut io = Io { inputs: &[], uniforms, outputs: &mut [], textures: &exec::NoTextures };
-        for op in &self.prologue {
-            step(op, registers, &mut io, &self.wide);
-        }
+        run_prologue(&self.prologue, registers, uniforms, &self.wide);
     }
 
     /// How many of each fused operation the bound form holds: [`BOp::MulClamp`],

@@ -88,6 +88,33 @@ macro_rules! call_at_level {
     };
 }
 
+/// [`call_at_level!`] without an SSE4.1 copy: that level runs the SSE2 wrapper, given
+/// `Supported(Sse2)` (SSE2 is the x86-64 baseline, which every CPU has).
+macro_rules! call_at_level_sse2_for_sse41 {
+    ($level:expr, $f:ident, $avx2:ident, $sse2:ident) => {
+        match $level.0 {
+            #[cfg(target_arch = "x86_64")]
+            Level::Avx2 => {
+                // SAFETY: a `Supported` holds only a level the CPU was detected to have
+                // (`Supported::new`): here AVX2, and the AVX it implies.
+                unsafe {
+                    $avx2(
+                        #[inline(always)]
+                        move || $f(Supported(Level::Avx2)),
+                    )
+                }
+            }
+            #[cfg(target_arch = "x86_64")]
+            Level::Sse41 | Level::Sse2 => $sse2(
+                #[inline(always)]
+                move || $f(Supported(Level::Sse2)),
+            ),
+            #[cfg(not(target_arch = "x86_64"))]
+            Level::Portable => $f(Supported(Level::Portable)),
+        }
+    };
+}
+
 /// Runs `f(level)` compiled for `level`, as [`run`]: `f` receives the level as a constant
 /// of its copy (each wrapper passes its own), so the helpers that take it keep only their
 /// level's instructions.
@@ -104,6 +131,23 @@ pub fn run_with<R>(level: Supported, f: impl FnOnce(Supported) -> R) -> R {
 #[inline(always)]
 pub fn outlined<R>(level: Supported, f: impl FnOnce(Supported) -> R) -> R {
     call_at_level!(level, f, avx2_outlined, sse41_outlined, sse2)
+}
+
+/// [`run_with`] for a body whose SSE4.1 copy measured no faster than its SSE2 one: the
+/// SSE4.1 level runs the SSE2 copy (given `Supported(Sse2)`, which every x86-64 CPU has),
+/// so the body is compiled twice, not three times. For the stencil/depth kernels, whose
+/// SSE4.1 code ran about 10 % more instructions than SSE2's on the benchmark's scenes
+/// (callgrind), and whose third copy cost the libraries tens of kilobytes.
+#[inline(always)]
+pub fn run_with_sse2_for_sse41<R>(level: Supported, f: impl FnOnce(Supported) -> R) -> R {
+    call_at_level_sse2_for_sse41!(level, f, avx2, sse2)
+}
+
+/// [`outlined`] with the SSE4.1 level running the SSE2 copy, as
+/// [`run_with_sse2_for_sse41`].
+#[inline(always)]
+pub fn outlined_sse2_for_sse41<R>(level: Supported, f: impl FnOnce(Supported) -> R) -> R {
+    call_at_level_sse2_for_sse41!(level, f, avx2_outlined, sse2)
 }
 
 /// `f` compiled with AVX2 (256-bit integer and float vectors, VEX encodings). Not FMA:

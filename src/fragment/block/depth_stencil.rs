@@ -413,17 +413,23 @@ fn depth_stencil<const FMT: u8, const STORE: bool>(
     live: u16,
     front_facing: bool,
 ) -> u16 {
-    crate::simd::per_level!(|level| {
-        let at = BlockAt { level, ..*at };
-        let face = p.stencil.as_ref().map(|f| &f[usize::from(!front_facing)]);
-        match band {
-            DepthBand::Depth16(px) if FMT == D16 => depth16::<STORE>(p, px, &at, z, live),
-            DepthBand::Packed24(px) if FMT == PACKED24 => packed24::<STORE>(p, face, px, &at, z, live),
-            DepthBand::Depth32(px, s) if FMT == D32 => depth32::<STORE, false>(p, face, px, s, &at, z, live),
-            DepthBand::Float32(px, s) if FMT == F32 => depth32::<STORE, true>(p, face, px, s, &at, z, live),
-            _ => live,
-        }
-    })
+    // Two copies (SSE4.1 runs SSE2's, which measured fewer instructions: simd::dispatch).
+    let level = crate::simd::current();
+    crate::simd::dispatch::run_with_sse2_for_sse41(
+        level,
+        #[inline(always)]
+        |level| {
+            let at = BlockAt { level, ..*at };
+            let face = p.stencil.as_ref().map(|f| &f[usize::from(!front_facing)]);
+            match band {
+                DepthBand::Depth16(px) if FMT == D16 => depth16::<STORE>(p, px, &at, z, live),
+                DepthBand::Packed24(px) if FMT == PACKED24 => packed24::<STORE>(p, face, px, &at, z, live),
+                DepthBand::Depth32(px, s) if FMT == D32 => depth32::<STORE, false>(p, face, px, s, &at, z, live),
+                DepthBand::Float32(px, s) if FMT == F32 => depth32::<STORE, true>(p, face, px, s, &at, z, live),
+                _ => live,
+            }
+        },
+    )
 }
 
 impl DepthStencilKernel {

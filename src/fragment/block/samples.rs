@@ -32,18 +32,22 @@
 //! clamping (which the multisampled span path has never applied) are not compiled for this
 //! path: `setup` keeps them on the span path.
 
-use super::{block_colors, write_targets, BlockColors, BlockEntry, BlockInputs, BlockPipeline, F32s, Grid, BATCH};
+use super::{block_colors, BlockColors, BlockEntry, BlockInputs, BlockPipeline, F32s, Grid, BATCH};
 use crate::fragment::pipeline::{DrawState, Scratch};
-use crate::fragment::FragmentState;
 use crate::framebuffer::band::Band;
 use crate::framebuffer::multisample::MAX_SAMPLES;
-use crate::simd::dispatch::outlined;
+use crate::simd::dispatch::{outlined, outlined_sse2_for_sse41};
 use crate::simd::Supported;
 use std::sync::atomic::Ordering;
 
 /// What a primitive gives the multisampled block pipeline beyond [`BlockInputs`]: its
 /// depth at each sample position.
 pub trait SampleInputs: BlockInputs {
+    /// The primitive's inputs at pixel centres (the colours), the type the single-sample
+    /// pipeline's stages are compiled for, so that the colour writes share their copies.
+    type Pixels: BlockInputs;
+    fn pixels(&self) -> &Self::Pixels;
+
     /// The window depth of sample `sample` of the 16 pixels of the block at `(x, y)`.
     fn sample_z(&self, x: i32, y: i32, sample: usize) -> F32s;
 }
@@ -115,6 +119,29 @@ impl BlockPipeline {
         if blocks.is_empty() {
             return;
         }
+        // The batch's stages in one copy per level, called from both of the walk's calls
+        // (a direct call per batch: the level is a constant of the walk's copy), each stage
+        // a direct call from it, rather than their glue inlined into each call of the walk.
+        outlined(
+            level,
+            #[inline(always)]
+            |level| self.sample_stages(level, state, band, scratch, inputs, front_facing, blocks),
+        );
+    }
+
+    /// [`Self::render_samples`]'s stages on the non-empty `blocks` of a batch.
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn sample_stages<I: SampleInputs>(
+        &self,
+        level: Supported,
+        state: &DrawState,
+        band: &mut Band<'_>,
+        scratch: &mut Scratch,
+        inputs: &I,
+        front_facing: bool,
+        blocks: &mut [SampleEntry],
+    ) {
         let samples = band.samples.min(MAX_SAMPLES);
         let grid = Grid::new(band, level);
         let alpha_to_one = state.multisample.is_some_and(|m| m.enabled && m.alpha_to_one);
@@ -131,7 +158,7 @@ impl BlockPipeline {
                 },
             );
             if survivors > 0 && !self.targets.is_empty() {
-                let colors = ShadedColors::Kept(&shaded[..survivors]);
+                let blocks = &blocks[..survivors];
                 self.write_sample_blocks(
                     level,
                     state,
@@ -139,15 +166,17 @@ impl BlockPipeline {
                     scratch,
                     grid,
                     inputs,
-                    &blocks[..survivors],
-                    colors,
+                    blocks,
+                    &mut shaded,
+                    true,
                     alpha_to_one,
                 );
             }
             return;
         }
         if let Some(kernel) = &self.depth_stencil {
-            outlined(
+            // As `render`'s tests: SSE4.1's copy measured slower than SSE2's.
+            outlined_sse2_for_sse41(
                 level,
                 #[inline(always)]
                 |level| {
@@ -203,12 +232,18 @@ impl BlockPipeline {
         if kept == 0 || self.targets.is_empty() {
             return;
         }
-        let colors = ShadedColors::Compute;
-        self.write_sample_blocks(level, state, band, scratch, grid, inputs, &blocks[..kept], colors, alpha_to_one);
+        let mut shaded = [BlockColors::Uniform([0.0; 4]); BATCH];
+        let blocks = &blocks[..kept];
+        self.write_sample_blocks(level, state, band, scratch, grid, inputs, blocks, &mut shaded, false, alpha_to_one);
     }
 
-    /// The colours (unless kept) and the target writes of `blocks`, compiled once per SIMD
-    /// level for both orders of [`Self::render_samples`].
+    /// The colours (unless kept in `shaded`, one per block) and the target writes of
+    /// `blocks`, for both orders of [`Self::render_samples`]: the colours once per block
+    /// (one small stage per level), then per sample the single-sample pipeline's colour
+    /// stage (`color_stage`) with the colours kept, on the sample's plane of the blocks.
+    /// That stage's copies (every target kernel, about 60 KB per level) thus serve both
+    /// paths; a sample's writes are one call per batch, and the samples are disjoint
+    /// pixels, so writing sample by sample gives the bytes of block by block.
     #[allow(clippy::too_many_arguments)]
     #[inline(always)]
     fn write_sample_blocks<I: SampleInputs>(
@@ -220,26 +255,62 @@ impl BlockPipeline {
         grid: Grid,
         inputs: &I,
         blocks: &[SampleEntry],
-        colors: ShadedColors<'_>,
+        shaded: &mut [BlockColors; BATCH],
+        kept: bool,
         alpha_to_one: bool,
     ) {
-        outlined(
-            level,
-            #[inline(always)]
-            |level| {
-                let grid = Grid { level, ..grid };
-                color_sample_blocks(self, &state.fragment, band, scratch, grid, inputs, blocks, colors, alpha_to_one)
-            },
-        );
+        let pixels = inputs.pixels();
+        let n = blocks.len().min(BATCH);
+        let blocks = &blocks[..n];
+        if !kept {
+            let fragment = &state.fragment;
+            outlined(
+                level,
+                #[inline(always)]
+                |level| {
+                    let grid = Grid { level, ..grid };
+                    for (b, colors) in blocks.iter().zip(shaded.iter_mut()) {
+                        block_colors(fragment, scratch, &grid.at(b.x, b.y), b.mask, pixels, colors);
+                    }
+                },
+            );
+        }
+        if alpha_to_one {
+            for colors in &mut shaded[..n] {
+                match colors {
+                    BlockColors::Uniform(c) => c[3] = 1.0,
+                    BlockColors::Lanes(l) => l[3] = [1.0; super::LANES],
+                }
+            }
+        }
+        let samples = band.samples.min(MAX_SAMPLES);
+        let mut plane = [BlockEntry::default(); BATCH];
+        for s in 0..samples {
+            let mut m = 0;
+            for b in blocks.iter().filter(|b| b.samples[s] != 0) {
+                plane[m.min(BATCH - 1)] = BlockEntry { x: b.x, y: b.y, mask: b.samples[s] };
+                m += 1;
+            }
+            if m == 0 {
+                continue;
+            }
+            let grid = grid.sample(s);
+            if m == n {
+                self.color_stage(level, state, band, scratch, grid, pixels, &plane[..m], Some(&shaded[..m]));
+            } else {
+                // Some blocks lack sample s (edge blocks): the others' colours, in order.
+                let mut colors = [BlockColors::Uniform([0.0; 4]); BATCH];
+                let mut j = 0;
+                for (b, c) in blocks.iter().zip(shaded.iter()) {
+                    if b.samples[s] != 0 {
+                        colors[j.min(BATCH - 1)] = *c;
+                        j += 1;
+                    }
+                }
+                self.color_stage(level, state, band, scratch, grid, pixels, &plane[..m], Some(&colors[..m]));
+            }
+        }
     }
-}
-
-/// The colours of the blocks [`color_sample_blocks`] writes: computed there, or kept from
-/// the alpha test (one per block).
-#[derive(Clone, Copy)]
-enum ShadedColors<'a> {
-    Compute,
-    Kept(&'a [BlockColors]),
 }
 
 /// The pipeline up to the target writes with the alpha test, block by block, compiled once
@@ -316,41 +387,4 @@ fn alpha_sample_blocks<I: SampleInputs>(
         counter.fetch_add(u64::from(passed), Ordering::Relaxed);
     }
     kept
-}
-
-/// The colours of blocks whose tests are done, once per block, written to each sample's
-/// surviving pixels; compiled once per SIMD level.
-#[allow(clippy::too_many_arguments)]
-#[inline(always)]
-fn color_sample_blocks<I: BlockInputs>(
-    pipeline: &BlockPipeline,
-    fragment: &FragmentState,
-    band: &mut Band<'_>,
-    scratch: &mut Scratch,
-    grid: Grid,
-    inputs: &I,
-    blocks: &[SampleEntry],
-    shaded: ShadedColors<'_>,
-    alpha_to_one: bool,
-) {
-    let samples = band.samples.min(MAX_SAMPLES);
-    let mut colors = BlockColors::Uniform([0.0; 4]);
-    for (i, b) in blocks.iter().enumerate() {
-        let at = grid.at(b.x, b.y);
-        match shaded {
-            ShadedColors::Compute => block_colors(fragment, scratch, &at, b.mask, inputs, &mut colors),
-            ShadedColors::Kept(kept) => colors = kept[i],
-        }
-        if alpha_to_one {
-            match &mut colors {
-                BlockColors::Uniform(c) => c[3] = 1.0,
-                BlockColors::Lanes(l) => l[3] = [1.0; super::LANES],
-            }
-        }
-        for s in 0..samples {
-            if b.samples[s] != 0 {
-                write_targets(pipeline, band, &grid.sample(s).at(b.x, b.y), &colors, b.samples[s]);
-            }
-        }
-    }
 }

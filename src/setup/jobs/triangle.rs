@@ -541,6 +541,12 @@ impl BlockInputs for SampleDepth<'_> {
 }
 
 impl SampleInputs for SampleDepth<'_> {
+    type Pixels = TriangleJob;
+    #[inline(always)]
+    fn pixels(&self) -> &TriangleJob {
+        self.job
+    }
+
     /// The depth plane at the sample: the pixel centres' offsets plus the sample's shift,
     /// the operations of the span path's `z.at(dx0 + i + shift_x, dy + shift_y)` (the
     /// offsets are exact, as for [`TriangleJob::block_offsets`]).
