@@ -500,28 +500,6 @@ impl BlockPipeline {
         if blocks.is_empty() {
             return;
         }
-        // The stages' glue in one copy per level, called directly from both of the walk's
-        // calls (the level is a constant of the walk's copy), instead of inlined into each.
-        outlined(
-            level,
-            #[inline(always)]
-            |level| self.stages(level, state, band, scratch, inputs, front_facing, blocks),
-        );
-    }
-
-    /// [`Self::render`]'s stages on the non-empty `blocks` of a batch.
-    #[allow(clippy::too_many_arguments)]
-    #[inline(always)]
-    fn stages<I: BlockInputs>(
-        &self,
-        level: Supported,
-        state: &DrawState,
-        band: &mut Band<'_>,
-        scratch: &mut Scratch,
-        inputs: &I,
-        front_facing: bool,
-        blocks: &mut [BlockEntry],
-    ) {
         let grid = Grid::new(band, level);
         if self.alpha.is_some() {
             // Colours first: kept per block for the target writes (the enum's flat variant
