@@ -294,7 +294,7 @@ def main():
     md.append("")
     md.append(
         "Size on disk of the drop-in libraries of `cargo build --release` (the release profile: fat LTO, one "
-        "codegen unit, no debug information; the symbol table is kept so that perf and callgrind name functions)."
+        "codegen unit, no debug information, no symbol table; `cargo build --profile profiling` keeps both for perf and callgrind)."
     )
     md.append("")
     md.append("| Library | Bytes | MB | Limit |")
