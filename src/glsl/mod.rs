@@ -14,7 +14,11 @@
 #![deny(unsafe_code)]
 
 pub mod ast;
+pub mod builtins;
+pub mod check;
 pub mod diagnostics;
+pub mod fold;
+pub mod hir;
 pub mod lex;
 pub mod parse;
 pub mod preprocess;
@@ -22,7 +26,9 @@ pub mod preprocess;
 #[cfg(test)]
 mod tests;
 
+pub use builtins::Limits;
 pub use diagnostics::InfoLog;
+pub use hir::{Checked, Stage};
 pub use preprocess::Options;
 
 /// A parsed shader and what the preprocessor recorded about it.
@@ -42,4 +48,11 @@ pub fn parse_shader(source: &str, options: &Options, log: &mut InfoLog) -> Optio
     let tokens = lex::classify(&pre.tokens, pre.version, pre.end, log);
     let unit = parse::parse(&tokens, pre.version, log).ok()?;
     Some(Parsed { unit, extensions: pre.extensions, invariant_all: pre.invariant_all })
+}
+
+/// Compiles one shader source for `stage`: preprocessing, parsing and semantic analysis.
+/// `None` when the log holds an error; warnings may be in the log either way.
+pub fn compile_shader(source: &str, stage: Stage, options: &Options, log: &mut InfoLog) -> Option<Checked> {
+    let parsed = parse_shader(source, options, log)?;
+    check::check(&parsed, stage, &Limits::default(), log)
 }
