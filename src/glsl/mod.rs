@@ -24,6 +24,8 @@ pub mod parse;
 pub mod preprocess;
 
 #[cfg(test)]
+mod check_tests;
+#[cfg(test)]
 mod tests;
 
 pub use builtins::Limits;
