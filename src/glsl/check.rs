@@ -32,6 +32,9 @@ enum Symbol {
     Struct(Arc<StructType>),
 }
 
+/// A parameter as declared: type, direction, name, `const`.
+type ParamDecl = (Type, ParameterDirection, Option<String>, bool);
+
 /// The expression failed to check; its message is in the log.
 type R<T> = Option<T>;
 
@@ -1053,10 +1056,6 @@ impl<'a> Checker<'a> {
                     }
                     have += a.ty.components();
                 }
-                if have < need && !(args.len() == 1 && !ty.is_scalar()) {
-                    self.error(pos, format!("too few components to construct `{ty}'"));
-                    return None;
-                }
                 if have < need {
                     self.error(pos, format!("too few components to construct `{ty}'"));
                     return None;
@@ -1094,7 +1093,7 @@ impl<'a> Checker<'a> {
                 })
                 .collect()
         };
-        let builtins_visible = !(self.version >= 120 && !user.is_empty());
+        let builtins_visible = self.version < 120 || user.is_empty();
         let sigs: Vec<&'static Signature> = if builtins_visible {
             builtins::functions()
                 .get(name)
@@ -1243,10 +1242,8 @@ impl<'a> Checker<'a> {
         let q = full.qualifiers;
         let Some(base) = self.type_specifier(&full.specifier) else { return Vec::new() };
         if declarators.is_empty() {
-            if q.storage.is_some() || q.invariant || q.centroid {
-                if !matches!(base, Type::Struct(_)) {
-                    self.log.warning(pos, "empty declaration with qualifiers");
-                }
+            if (q.storage.is_some() || q.invariant || q.centroid) && !matches!(base, Type::Struct(_)) {
+                self.log.warning(pos, "empty declaration with qualifiers");
             }
             return Vec::new();
         }
@@ -1317,20 +1314,18 @@ impl<'a> Checker<'a> {
         }
         self.check_name(name, pos);
         match storage {
-            Some(Storage::Attribute) => {
-                if !matches!(ty, Type::Scalar(Scalar::Float) | Type::Vector(Scalar::Float, _) | Type::Matrix(..)) {
-                    self.error(pos, format!("vertex shader input / attribute cannot have type `{ty}'"));
-                    return None;
-                }
+            Some(Storage::Attribute)
+                if !matches!(ty, Type::Scalar(Scalar::Float) | Type::Vector(Scalar::Float, _) | Type::Matrix(..)) =>
+            {
+                self.error(pos, format!("vertex shader input / attribute cannot have type `{ty}'"));
+                return None;
             }
-            Some(Storage::Varying) => {
-                if !ty.is_float_based() {
-                    self.error(
-                        pos,
-                        format!("varying variables must be of type float, vec, mat or arrays of these, not `{ty}'"),
-                    );
-                    return None;
-                }
+            Some(Storage::Varying) if !ty.is_float_based() => {
+                self.error(
+                    pos,
+                    format!("varying variables must be of type float, vec, mat or arrays of these, not `{ty}'"),
+                );
+                return None;
             }
             _ => {}
         }
@@ -1476,11 +1471,7 @@ impl<'a> Checker<'a> {
 
     /// Declares (or finds) the function a prototype names; `define` when a body follows.
     /// Returns the function and its parameters' types, directions and names.
-    fn function_prototype(
-        &mut self,
-        p: &ast::FunctionPrototype,
-        define: bool,
-    ) -> R<(FunctionId, Vec<(Type, ParameterDirection, Option<String>, bool)>)> {
+    fn function_prototype(&mut self, p: &ast::FunctionPrototype, define: bool) -> R<(FunctionId, Vec<ParamDecl>)> {
         let q = p.return_type.qualifiers;
         if q.storage.is_some() || q.invariant || q.centroid {
             self.error(p.pos, format!("function `{}' return type has qualifiers", p.name));

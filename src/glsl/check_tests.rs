@@ -15,7 +15,7 @@ fn frag(source: &str) -> Checked {
 
 /// The first error of a fragment (or vertex) shader that must not compile.
 fn error(source: &str, stage: Stage) -> String {
-    let log = compile(source, stage).err().expect("compile error");
+    let log = compile(source, stage).expect_err("compile error");
     log.lines().next().unwrap_or_default().to_string()
 }
 
@@ -236,6 +236,6 @@ fn pathological_nesting_is_an_error() {
         src.push_str(" + a");
     }
     src.push_str("); }\n");
-    let log = compile(&src, Stage::Fragment).err().expect("refused");
+    let log = compile(&src, Stage::Fragment).expect_err("refused");
     assert!(log.contains("nesting deeper than"), "{log}");
 }
