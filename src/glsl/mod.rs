@@ -1,16 +1,18 @@
-//! The GLSL front end: GLSL 1.10 and 1.20 shader source → a syntax tree with source
-//! positions and an info log worded as Mesa's. This is its first part, the preprocessor,
-//! the lexer and the parser; semantic analysis (types, built-ins, constant folding) and the
-//! lowering onto the shading IR of [`crate::shader`] build on it.
+//! The GLSL front end: GLSL 1.10 and 1.20 shader source → a checked, typed program
+//! ([`hir`]) for one stage, with an info log worded as Mesa's. The lowering onto the shading
+//! IR of [`crate::shader`] builds on it; [`compile_shader`] is the entry point for
+//! `glCompileShader`.
 //!
 //! - [`preprocess`]: directives, conditionals and macro expansion over tokens.
 //! - [`lex`]: source → preprocessing tokens → GLSL tokens of the shader's version.
 //! - [`parse`]: recursive descent over the grammar of chapter 9 into [`ast`].
+//! - [`check`]: semantic analysis into [`hir`], with the built-ins of [`builtins`] and the
+//!   constant folding of [`fold`].
 //! - [`diagnostics`]: positions and the info log (`0:12(5): error: ...`).
 //!
 //! As in Mesa, preprocessor errors end the compile before parsing, and the first syntax
-//! error ends the parse. Nothing here is tied to a GL context: the GL entry points reach it
-//! once semantic analysis and lowering exist.
+//! error ends the parse; semantic errors are all reported. Nothing here is tied to a GL
+//! context.
 #![deny(unsafe_code)]
 
 pub mod ast;
