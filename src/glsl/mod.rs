@@ -1,28 +1,38 @@
-//! The GLSL front end: GLSL 1.10 and 1.20 shader source → a syntax tree with source
-//! positions and an info log worded as Mesa's. This is its first part, the preprocessor,
-//! the lexer and the parser; semantic analysis (types, built-ins, constant folding) and the
-//! lowering onto the shading IR of [`crate::shader`] build on it.
+//! The GLSL front end: GLSL 1.10 and 1.20 shader source → a checked, typed program
+//! ([`hir`]) for one stage, with an info log worded as Mesa's. The lowering onto the shading
+//! IR of [`crate::shader`] builds on it; [`compile_shader`] is the entry point for
+//! `glCompileShader`.
 //!
 //! - [`preprocess`]: directives, conditionals and macro expansion over tokens.
 //! - [`lex`]: source → preprocessing tokens → GLSL tokens of the shader's version.
 //! - [`parse`]: recursive descent over the grammar of chapter 9 into [`ast`].
+//! - [`check`]: semantic analysis into [`hir`], with the built-ins of [`builtins`] and the
+//!   constant folding of [`fold`].
 //! - [`diagnostics`]: positions and the info log (`0:12(5): error: ...`).
 //!
 //! As in Mesa, preprocessor errors end the compile before parsing, and the first syntax
-//! error ends the parse. Nothing here is tied to a GL context: the GL entry points reach it
-//! once semantic analysis and lowering exist.
+//! error ends the parse; semantic errors are all reported. Nothing here is tied to a GL
+//! context.
 #![deny(unsafe_code)]
 
 pub mod ast;
+pub mod builtins;
+pub mod check;
 pub mod diagnostics;
+pub mod fold;
+pub mod hir;
 pub mod lex;
 pub mod parse;
 pub mod preprocess;
 
 #[cfg(test)]
+mod check_tests;
+#[cfg(test)]
 mod tests;
 
+pub use builtins::Limits;
 pub use diagnostics::InfoLog;
+pub use hir::{Checked, Stage};
 pub use preprocess::Options;
 
 /// A parsed shader and what the preprocessor recorded about it.
@@ -42,4 +52,11 @@ pub fn parse_shader(source: &str, options: &Options, log: &mut InfoLog) -> Optio
     let tokens = lex::classify(&pre.tokens, pre.version, pre.end, log);
     let unit = parse::parse(&tokens, pre.version, log).ok()?;
     Some(Parsed { unit, extensions: pre.extensions, invariant_all: pre.invariant_all })
+}
+
+/// Compiles one shader source for `stage`: preprocessing, parsing and semantic analysis.
+/// `None` when the log holds an error; warnings may be in the log either way.
+pub fn compile_shader(source: &str, stage: Stage, options: &Options, log: &mut InfoLog) -> Option<Checked> {
+    let parsed = parse_shader(source, options, log)?;
+    check::check(&parsed, stage, &Limits::default(), log)
 }
