@@ -550,13 +550,16 @@ impl super::Context {
     }
 }
 
-/// Compiles `source` for `stage`: whether it compiled, and the info log (empty on success
-/// without warnings, as Mesa's).
+/// Compiles `source` for `stage` with the GLSL front end: whether it compiled, and the info
+/// log (empty on success without warnings, as Mesa's).
 fn compile(stage: Stage, source: &str) -> (bool, String) {
-    let _ = stage;
+    let stage = match stage {
+        Stage::Vertex => crate::glsl::Stage::Vertex,
+        Stage::Fragment => crate::glsl::Stage::Fragment,
+    };
     let mut log = crate::glsl::InfoLog::default();
-    let parsed = crate::glsl::parse_shader(source, &crate::glsl::Options::default(), &mut log);
-    (parsed.is_some() && !log.has_errors(), log.text())
+    let checked = crate::glsl::compile_shader(source, stage, &crate::glsl::Options::default(), &mut log);
+    (checked.is_some() && !log.has_errors(), log.text())
 }
 
 #[cfg(test)]

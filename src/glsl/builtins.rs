@@ -249,21 +249,26 @@ pub struct Limits {
 }
 
 impl Default for Limits {
-    /// Mesa's llvmpipe values for a compatibility context.
+    /// What tessera's GL reports (`crate::gl::limits`): 4 texture units, 6 clip planes. No
+    /// texture image units for vertex shaders (GL 2.0 allows 0). Shaders see 8 texture
+    /// coordinate sets, as on Mesa (piglit's shaders index `gl_TexCoord[7]` without asking),
+    /// which GL_MAX_TEXTURE_COORDS must report once programs run; the uniform and varying
+    /// budgets are Mesa's llvmpipe values.
     fn default() -> Self {
+        use crate::gl::limits::{MAX_CLIP_PLANES, MAX_DRAW_BUFFERS, MAX_LIGHTS, MAX_TEXTURE_UNITS, MAX_VERTEX_ATTRIBS};
         Limits {
-            max_lights: 8,
-            max_clip_planes: 8,
-            max_texture_units: 8,
+            max_lights: MAX_LIGHTS as i32,
+            max_clip_planes: MAX_CLIP_PLANES as i32,
+            max_texture_units: MAX_TEXTURE_UNITS as i32,
             max_texture_coords: 8,
-            max_vertex_attribs: 16,
+            max_vertex_attribs: MAX_VERTEX_ATTRIBS as i32,
             max_vertex_uniform_components: 4096,
             max_varying_floats: 128,
-            max_vertex_texture_image_units: 16,
-            max_combined_texture_image_units: 32,
-            max_texture_image_units: 16,
+            max_vertex_texture_image_units: 0,
+            max_combined_texture_image_units: MAX_TEXTURE_UNITS as i32,
+            max_texture_image_units: MAX_TEXTURE_UNITS as i32,
             max_fragment_uniform_components: 4096,
-            max_draw_buffers: 8,
+            max_draw_buffers: MAX_DRAW_BUFFERS as i32,
         }
     }
 }

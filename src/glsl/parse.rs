@@ -7,8 +7,8 @@
 //! parser words it, and, as in Mesa, the first syntax error ends the parse. The parser
 //! keeps the struct names in scope because the grammar needs them: `S x;` declares, `s x;`
 //! is an error, `S(1.0)` constructs. Nesting (parentheses, unary operators, statements) has
-//! a ceiling, [`MAX_NESTING`], so that a pathological shader is an error, not a stack
-//! overflow.
+//! a ceiling, [`MAX_NESTING`], and so do the chains that grow a tree to the left
+//! ([`MAX_CHAIN`]), so that a pathological shader is an error, not a stack overflow.
 //!
 //! Version gating: the 1.20 keywords (`invariant`, `centroid`, `mat2x3`...) are keywords
 //! only in 1.20 shaders (the lexer's business); the 1.20 syntax (array types on the type
@@ -23,6 +23,11 @@ use std::collections::HashMap;
 
 /// The deepest nesting of parentheses, unary operators and statements the parser accepts.
 pub const MAX_NESTING: usize = 256;
+
+/// The most operators a left-growing chain (`a + b + c ...`, `a, b, c ...`, `a[0].x.y ...`)
+/// may hold: each adds a level to the tree that semantic analysis walks and that is freed
+/// recursively, so an unbounded chain (10⁵ terms) would overflow the caller's stack.
+pub const MAX_CHAIN: usize = 512;
 
 /// The struct types of the built-in uniform state (GLSL 1.10/1.20 section 7.5), which a
 /// shader may name (`vec4 f(gl_LightSourceParameters l)`).
@@ -253,6 +258,16 @@ impl Parser<'_> {
 
     fn leave(&mut self) {
         self.depth -= 1;
+    }
+
+    /// Counts one more operator of a left-growing chain: an error past [`MAX_CHAIN`].
+    fn lengthen(&mut self, chain: &mut usize) -> PResult<()> {
+        *chain += 1;
+        if *chain > MAX_CHAIN {
+            let pos = self.pos();
+            return self.error(pos, format!("expression of more than {MAX_CHAIN} operators in a row"));
+        }
+        Ok(())
     }
 
     fn declare(&mut self, name: &str, is_type: bool) {
@@ -701,7 +716,9 @@ impl Parser<'_> {
     /// `expression`: assignments separated by commas.
     pub fn expression(&mut self) -> PResult<Expr> {
         let mut e = self.assignment()?;
+        let mut chain = 0;
         while self.is_punct(",") {
+            self.lengthen(&mut chain)?;
             let pos = self.pos();
             self.bump();
             let right = self.assignment()?;
@@ -760,10 +777,12 @@ impl Parser<'_> {
     fn binary(&mut self, min: u8) -> PResult<(Expr, bool)> {
         let mut left = self.unary()?;
         let mut shaped = true;
+        let mut chain = 0;
         while let Some((prec, op)) = match self.peek() {
             TokenKind::Punct(p) => binary_op(p).filter(|(prec, _)| *prec > min),
             _ => None,
         } {
+            self.lengthen(&mut chain)?;
             let pos = self.pos();
             self.bump();
             let (right, _) = self.binary(prec)?;
@@ -794,7 +813,9 @@ impl Parser<'_> {
 
     fn postfix(&mut self) -> PResult<Expr> {
         let mut e = self.primary()?;
+        let mut chain = 0;
         loop {
+            self.lengthen(&mut chain)?;
             let pos = self.pos();
             if self.eat_punct("[") {
                 self.enter()?;

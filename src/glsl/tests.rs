@@ -473,6 +473,32 @@ fn deep_nesting_is_an_error_not_a_crash() {
     parse_ok(&format!("void main() {{ float x = {}1.0{}; }}", "(".repeat(200), ")".repeat(200)));
 }
 
+/// Chains that grow the tree to the left without nesting (10⁵ terms overflowed the stack
+/// when the tree was checked and freed) are refused past their ceiling, on this thread's
+/// stack; a long but bounded chain compiles.
+#[test]
+fn long_operator_chains_are_an_error_not_a_crash() {
+    let n = 100_000;
+    for (what, source) in [
+        ("sum", format!("void main() {{ float a = 1.0; gl_FragColor = vec4({}); }}", vec!["a"; n].join("+"))),
+        ("sequence", format!("void main() {{ float a = 1.0; a = ({}); }}", vec!["a"; n].join(","))),
+        ("swizzles", format!("void main() {{ vec4 a = vec4(1.0); a.x = a{}; }}", ".xxxx".repeat(n))),
+    ] {
+        let mut log = InfoLog::default();
+        let checked = super::compile_shader(&source, super::Stage::Fragment, &Options::default(), &mut log);
+        assert!(checked.is_none(), "{what}");
+        assert!(log.text().contains("operators in a row"), "{what}: {}", log.text());
+    }
+    let sum = vec!["a"; 400].join("+");
+    let mut log = InfoLog::default();
+    let source = format!("void main() {{ float a = 1.0; gl_FragColor = vec4({sum}); }}");
+    assert!(
+        super::compile_shader(&source, super::Stage::Fragment, &Options::default(), &mut log).is_some(),
+        "{}",
+        log.text()
+    );
+}
+
 // ---------------------------------------------------------------- piglit
 
 /// One piglit parser test: its path under the spec directory and its expected result.
