@@ -24,14 +24,15 @@
 // vectorise (iterator chains over zipped arrays stay scalar or calls without LTO).
 #![allow(clippy::needless_range_loop)]
 
-use super::kernel::{quad_levels, QUAD_LANES};
-use super::sampler::{fixed, floor_i32, mirror, repeat, DepthMode, Filter, Levels, Sampler, Wrap};
+use super::kernel::QUAD_LANES;
+use super::sampler::{fast_log2, fixed, floor_i32, log2, mirror, repeat, DepthMode, Filter, Levels, Sampler, Wrap};
 use super::{DepthStencilPixels, F32s, TexImage, Texels, LANES};
 use crate::framebuffer::format::DepthEncoding;
 use crate::gl::CompareFunc;
 
 type I32s = [i32; LANES];
 type U32s = [u32; LANES];
+type U16s = [u16; LANES];
 
 /// Every lane, in order.
 const ALL_LANES: [usize; LANES] = [0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15];
@@ -112,20 +113,15 @@ impl Plan {
             return live == 0;
         }
         // Each live quad's levels; the other quads read the first live quad's.
+        let lambdas = if self.fixed_level { None } else { Some(self.lambdas(sampler, c)) };
         let mut which = [None; 4];
-        for (q, lanes) in QUAD_LANES.iter().enumerate() {
-            if live & QUAD_BITS[q] == 0 {
-                continue;
+        for q in 0..4 {
+            if live & QUAD_BITS[q] != 0 {
+                which[q] = Some(match lambdas {
+                    None => Levels::One(0, sampler.mag),
+                    Some(lambda) => sampler.levels(lambda[q], self.grids.len()),
+                });
             }
-            which[q] = Some(if self.fixed_level {
-                Levels::One(0, sampler.mag)
-            } else {
-                let (l0, l1, l2) = (lanes[0], lanes[1], lanes[2]);
-                let ddx = [c[0][l1] - c[0][l0], c[1][l1] - c[1][l0], c[2][l1] - c[2][l0]];
-                let ddy = [c[0][l2] - c[0][l0], c[1][l2] - c[1][l0], c[2][l2] - c[2][l0]];
-                let c0 = [c[0][l0], c[1][l0], c[2][l0]];
-                quad_levels(sampler, ddx, ddy, &[c0; 4])
-            });
         }
         let filter_of = |l: Levels| match l {
             Levels::One(_, mode) => mode,
@@ -150,10 +146,10 @@ impl Plan {
         }
         // The coordinates as the filter sees them (mirrored repeat folds them).
         let mut st = [c[0], c[1]];
-        for (k, s) in st.iter_mut().enumerate() {
+        for k in 0..2 {
             if self.wrap[k] == AxisWrap::Mirror {
-                for v in s.iter_mut() {
-                    *v = mirror(*v);
+                for l in 0..LANES {
+                    st[k][l] = mirror(st[k][l]);
                 }
             }
         }
@@ -163,6 +159,39 @@ impl Plan {
         } else {
             self.rgba_block(sampler, &levels, linear, &st, out)
         }
+    }
+
+    /// λ of each quad: [`Sampler::lambda`] of a borderless 2D texture, whose derivatives
+    /// are the differences along the quad's upper row and left column (ρ² the larger
+    /// squared length of the scaled derivative vectors, r's scaled by 0).
+    #[inline(always)]
+    fn lambdas(&self, sampler: &Sampler, c: &[F32s; 3]) -> [f32; 4] {
+        let size = self.grids[0].sizef;
+        let mut rho2 = [0.0f32; 4];
+        for q in 0..4 {
+            let [l0, l1, l2, _] = QUAD_LANES[q];
+            let length2 = |a: usize| {
+                let (x, y, z) =
+                    ((c[0][a] - c[0][l0]) * size[0], (c[1][a] - c[1][l0]) * size[1], (c[2][a] - c[2][l0]) * 0.0);
+                x * x + y * y + z * z
+            };
+            rho2[q] = length2(l1).max(length2(l2));
+        }
+        let mut lambda = [0.0f32; 4];
+        for q in 0..4 {
+            // With a mipmap blend, llvmpipe's piecewise linear log₂; the others exact.
+            let half = if sampler.mip == Some(Filter::Linear) { 0.5 * fast_log2(rho2[q]) } else { 0.5 * log2(rho2[q]) };
+            // Clamped as `Sampler::lambda` clamps (the maximum wins; NaN stays NaN).
+            let mut l = half + sampler.lod_bias;
+            if l < sampler.min_lod {
+                l = sampler.min_lod;
+            }
+            if l > sampler.max_lod {
+                l = sampler.max_lod;
+            }
+            lambda[q] = l;
+        }
+        lambda
     }
 
     /// The per-lane sizes of the levels `d` (one per quad) along axis `k`.
@@ -211,7 +240,7 @@ impl Plan {
     /// weight of the second in 1/256. The position in texels less ½ is taken to 1/256
     /// rounded to nearest even (`fixed`), by the magic number below 2²², exactly beyond.
     #[inline(always)]
-    fn linear_axis(&self, k: usize, s: &F32s, sizef: &F32s, size: &I32s) -> (I32s, I32s, U32s) {
+    fn linear_axis(&self, k: usize, s: &F32s, sizef: &F32s, size: &I32s) -> (I32s, I32s, I32s) {
         const MAGIC: f32 = 12_582_912.0;
         let mut u = [0.0f32; LANES];
         for l in 0..LANES {
@@ -225,30 +254,43 @@ impl Plan {
             f[l] = ((v + MAGIC).to_bits() as i32).wrapping_sub(MAGIC.to_bits() as i32);
             big[l] = !(v.abs() < 4_194_304.0);
         }
-        if big.iter().any(|&b| b) {
+        if big != [false; LANES] {
             for l in 0..LANES {
                 if big[l] {
                     f[l] = fixed(u[l]);
                 }
             }
         }
-        let (mut i0, mut i1, mut w) = ([0; LANES], [0; LANES], [0u32; LANES]);
+        let (mut i0, mut i1, mut w) = ([0; LANES], [0; LANES], [0; LANES]);
         for l in 0..LANES {
             i0[l] = f[l] >> 8;
             i1[l] = (f[l] >> 8) + 1;
-            w[l] = (f[l] & 0xff) as u32;
+            w[l] = f[l] & 0xff;
         }
         (self.wrap_lanes(k, &i0, size), self.wrap_lanes(k, &i1, size), w)
     }
 
-    /// `sampler::axis` (nearest) along axis `k` of 16 lanes: ⌊s · size⌋, wrapped.
+    /// `sampler::axis` (nearest) along axis `k` of 16 lanes: ⌊s · size⌋, wrapped. Below 2²²
+    /// the integer nearest u (by the magic number) less one where it is above u;
+    /// `floor_i32` beyond (a float-to-integer cast is scalar code per lane).
     #[inline(always)]
     fn nearest_axis(&self, k: usize, s: &F32s, sizef: &F32s, size: &I32s) -> I32s {
+        const MAGIC: f32 = 12_582_912.0;
+        let mut u = [0.0f32; LANES];
         let mut i = [0; LANES];
+        let mut big = [false; LANES];
         for l in 0..LANES {
-            let u = s[l] * sizef[l];
-            let floor = floor_i32(u);
-            i[l] = if u.is_finite() { floor } else { 0 };
+            u[l] = s[l] * sizef[l];
+            let r = ((u[l] + MAGIC).to_bits() as i32).wrapping_sub(MAGIC.to_bits() as i32);
+            i[l] = r - i32::from(r as f32 > u[l]);
+            big[l] = !(u[l].abs() < 4_194_304.0);
+        }
+        if big != [false; LANES] {
+            for l in 0..LANES {
+                if big[l] {
+                    i[l] = if u[l].is_finite() { floor_i32(u[l]) } else { 0 };
+                }
+            }
         }
         self.wrap_lanes(k, &i, size)
     }
@@ -280,8 +322,8 @@ impl Plan {
         }
     }
 
-    /// The filtered texels of the lanes at `st` in the levels `d` (one per quad), as their
-    /// red-and-blue and green-and-alpha halves; `None` if a level holds no RGBA8 texels.
+    /// The filtered texels of the lanes at `st` in the levels `d` (one per quad), channel
+    /// by channel; `None` if a level holds no RGBA8 texels.
     #[inline(always)]
     fn rgba_levels(
         &self,
@@ -289,45 +331,59 @@ impl Plan {
         d: [usize; 4],
         linear: bool,
         st: &[F32s; 2],
-    ) -> Option<[U32s; 2]> {
+    ) -> Option<[U16s; 4]> {
         let mut fp = Footprint { index: [[0; LANES]; 4], wx: [0; LANES], wy: [0; LANES] };
         self.footprint(d, linear, st, &mut fp);
         let mut texels = [[0u32; LANES]; 4];
         let corners = if linear { 4 } else { 1 };
         if d[1..].iter().all(|&x| x == d[0]) {
             let t = rgba_texels(&images[d[0]])?;
-            for (texels, index) in texels.iter_mut().zip(&fp.index).take(corners) {
+            for c in 0..corners {
                 for l in 0..LANES {
-                    texels[l] = u32::from_le_bytes(t[index[l] as usize]);
+                    texels[c][l] = u32::from_le_bytes(t[fp.index[c][l] as usize]);
                 }
             }
         } else {
-            for (q, lanes) in QUAD_LANES.iter().enumerate() {
+            for q in 0..4 {
                 let t = rgba_texels(&images[d[q]])?;
-                for (texels, index) in texels.iter_mut().zip(&fp.index).take(corners) {
-                    for &l in lanes {
-                        texels[l] = u32::from_le_bytes(t[index[l] as usize]);
+                for c in 0..corners {
+                    for l in QUAD_LANES[q] {
+                        texels[c][l] = u32::from_le_bytes(t[fp.index[c][l] as usize]);
                     }
                 }
             }
         }
-        let mut halves = [[0u32; LANES]; 2];
-        for (h, half) in halves.iter_mut().enumerate() {
-            let shift = 8 * h as u32;
-            if linear {
-                for l in 0..LANES {
-                    let p = |c: usize| (texels[c][l] >> shift) & 0x00ff_00ff;
-                    let upper = lerp2(p(0), p(1), fp.wx[l]);
-                    let lower = lerp2(p(2), p(3), fp.wx[l]);
-                    half[l] = lerp2(upper, lower, fp.wy[l]);
-                }
-            } else {
-                for l in 0..LANES {
-                    half[l] = (texels[0][l] >> shift) & 0x00ff_00ff;
-                }
+        // Channel by channel in 16-bit lanes (a 16-lane channel is one AVX2 register, and
+        // SSE2 multiplies 16-bit lanes, not 32-bit ones).
+        let (mut wx, mut wy) = ([0u16; LANES], [0u16; LANES]);
+        for l in 0..LANES {
+            (wx[l], wy[l]) = (fp.wx[l] as u16, fp.wy[l] as u16);
+        }
+        // The channels of each corner's texels (constant shifts, so that the loop
+        // vectorises), then the lerps channel by channel.
+        let mut p = [[[0u16; LANES]; 4]; 4];
+        for c in 0..corners {
+            for l in 0..LANES {
+                let t = texels[c][l];
+                p[0][c][l] = (t & 0xff) as u16;
+                p[1][c][l] = ((t >> 8) & 0xff) as u16;
+                p[2][c][l] = ((t >> 16) & 0xff) as u16;
+                p[3][c][l] = (t >> 24) as u16;
             }
         }
-        Some(halves)
+        let mut channels = [[0u16; LANES]; 4];
+        for k in 0..4 {
+            if linear {
+                for l in 0..LANES {
+                    let upper = lerp8(p[k][0][l], p[k][1][l], wx[l]);
+                    let lower = lerp8(p[k][2][l], p[k][3][l], wx[l]);
+                    channels[k][l] = lerp8(upper, lower, wy[l]);
+                }
+            } else {
+                channels[k] = p[k][0];
+            }
+        }
+        Some(channels)
     }
 
     /// The filtered depths (or filtered comparisons with `reference`) of the lanes at `st`
@@ -354,25 +410,25 @@ impl Plan {
             if f != format {
                 return None;
             }
-            for (raw, index) in raw.iter_mut().zip(&fp.index).take(corners) {
-                texels.gather(index, &ALL_LANES, raw);
+            for c in 0..corners {
+                texels.gather(&fp.index[c], &ALL_LANES, &mut raw[c]);
             }
         } else {
-            for (q, lanes) in QUAD_LANES.iter().enumerate() {
+            for q in 0..4 {
                 let (texels, f) = depth_texels(&images[d[q]])?;
                 if f != format {
                     return None;
                 }
-                for (raw, index) in raw.iter_mut().zip(&fp.index).take(corners) {
-                    texels.gather(index, lanes, raw);
+                for c in 0..corners {
+                    texels.gather(&fp.index[c], &QUAD_LANES[q], &mut raw[c]);
                 }
             }
         }
         let mut v = [[0.0f32; LANES]; 4];
-        for (v, raw) in v.iter_mut().zip(&raw).take(corners) {
-            format.decode(raw, v);
+        for c in 0..corners {
+            format.decode(&raw[c], &mut v[c]);
             if let Some(func) = compare {
-                compare_lanes(func, reference, v);
+                compare_lanes(func, reference, &mut v[c]);
             }
         }
         if !linear {
@@ -402,25 +458,26 @@ impl Plan {
         let Some(mut v) = self.rgba_levels(images, levels.first, linear, st) else { return false };
         if levels.two != 0 {
             let Some(b) = self.rgba_levels(images, levels.second, linear, st) else { return false };
-            let mut w = [0u32; LANES];
+            // A quad of one level blends it with itself at weight 0: itself.
+            let quad_w = levels.frac.map(|f| (f * 256.0) as i32 as u16);
+            let mut w = [0u16; LANES];
             for l in 0..LANES {
-                // A quad of one level blends it with itself at weight 0: itself.
-                w[l] = (levels.frac[QUAD_OF_LANE[l]] * 256.0) as i32 as u32;
+                w[l] = quad_w[QUAD_OF_LANE[l]];
             }
-            for (a, b) in v.iter_mut().zip(&b) {
+            for k in 0..4 {
                 for l in 0..LANES {
-                    a[l] = lerp2(a[l], b[l], w[l]);
+                    v[k][l] = lerp8(v[k][l], b[k][l], w[l]);
                 }
             }
         }
         // u8 → f32 as the reference converts it: `/ 255` from one level, `· (1/255)` from a
         // blend of two.
-        for (k, o) in out.iter_mut().enumerate() {
-            let (half, shift) = (&v[k & 1], 16 * (k >> 1) as u32);
+        for k in 0..4 {
             let mut x = [0.0f32; LANES];
             for l in 0..LANES {
-                x[l] = ((half[l] >> shift) & 0xff) as f32;
+                x[l] = v[k][l] as i32 as f32;
             }
+            let o = &mut out[k];
             match levels.two {
                 0 => {
                     for l in 0..LANES {
@@ -484,13 +541,13 @@ impl Plan {
             DepthMode::Intensity => (0.0, [true; 4]),
             DepthMode::Alpha => (0.0, [false, false, false, true]),
         };
-        for (channel, o) in depth_channels.iter().zip(out.iter_mut()) {
-            if *channel {
+        for k in 0..4 {
+            if depth_channels[k] {
                 for l in 0..LANES {
-                    o[l] = d[l].to_bits();
+                    out[k][l] = d[l].to_bits();
                 }
             } else {
-                *o = [constant.to_bits(); LANES];
+                out[k] = [constant.to_bits(); LANES];
             }
         }
         true
@@ -510,8 +567,8 @@ struct QuadLevels {
 /// second texel along x and y (linear).
 struct Footprint {
     index: [I32s; 4],
-    wx: U32s,
-    wy: U32s,
+    wx: I32s,
+    wy: I32s,
 }
 
 /// The comparisons of `reference` with the depths `v` by `func`, as 1 or 0 into `v`
@@ -538,11 +595,12 @@ fn compare_lanes(func: CompareFunc, reference: &F32s, v: &mut F32s) {
     }
 }
 
-/// llvmpipe's 8-bit lerp on the two 8-bit fields (bits 0–7 and 16–23) of `a` and `b`,
-/// weight `w` in 1/256 (0..=255).
+/// llvmpipe's 8-bit lerp `a + ((b − a)·w + 128) >> 8`, weight `w` in 1/256 (0..=255), as
+/// `(a·(256 − w) + b·w + 128) >> 8` (the `256·a` is a whole multiple of 256) in 16 bits:
+/// at most 255·256 + 128.
 #[inline(always)]
-fn lerp2(a: u32, b: u32, w: u32) -> u32 {
-    ((a * (256 - w) + b * w + 0x0080_0080) >> 8) & 0x00ff_00ff
+fn lerp8(a: u16, b: u16, w: u16) -> u16 {
+    (a * (256 - w) + b * w + 128) >> 8
 }
 
 /// The texels of an RGBA8 level.
@@ -571,12 +629,15 @@ impl DepthFormat {
         match self {
             DepthFormat::Unorm16 => {
                 for l in 0..LANES {
-                    out[l] = raw[l] as f32 * (1.0 / 65535.0);
+                    out[l] = raw[l] as i32 as f32 * (1.0 / 65535.0);
                 }
             }
             DepthFormat::Unorm24 => {
+                // The single-precision quotient: the double-precision product rounded to
+                // single precision, for every 24-bit value (the test below checks them
+                // all), in a quarter of the instructions.
                 for l in 0..LANES {
-                    out[l] = ((raw[l] & 0x00ff_ffff) as f64 * (1.0 / 16_777_215.0)) as f32;
+                    out[l] = (raw[l] & 0x00ff_ffff) as i32 as f32 / 16_777_215.0;
                 }
             }
             DepthFormat::Unorm32 => {
@@ -636,4 +697,19 @@ fn depth_texels(img: &TexImage) -> Option<(DepthWords<'_>, DepthFormat)> {
         _ => return None,
     };
     (count > 0).then_some((words, format))
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::framebuffer::format::DepthEncoding;
+
+    #[test]
+    fn single_precision_quotients_are_the_24_bit_depth_texels() {
+        // `DepthFormat::Unorm24`'s decoding against `depth_texel`'s (Mesa's double-precision
+        // product), for every 24-bit value.
+        for v in 0..1u32 << 24 {
+            let lanes = v as f32 / 16_777_215.0;
+            assert_eq!(lanes.to_bits(), super::super::depth_texel(DepthEncoding::Unorm(24), v).to_bits(), "{v}");
+        }
+    }
 }

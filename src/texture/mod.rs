@@ -374,15 +374,15 @@ impl TextureStage {
                 let reciprocal = 1.0 / q;
                 inv[i] = if q != 0.0 { reciprocal } else { 0.0 };
             }
-            for (cj, words) in c.iter_mut().zip(coords) {
+            for j in 0..3 {
                 for i in 0..LANES {
-                    cj[i] = f32::from_bits(words[i]) * inv[i];
+                    c[j][i] = f32::from_bits(coords[j][i]) * inv[i];
                 }
             }
         } else {
-            for (cj, words) in c.iter_mut().zip(coords) {
+            for j in 0..3 {
                 for i in 0..LANES {
-                    cj[i] = f32::from_bits(words[i]);
+                    c[j][i] = f32::from_bits(coords[j][i]);
                 }
             }
         }
