@@ -6,8 +6,8 @@
 //! unit, no colour sum, no fog) has none, and its colours are not touched.
 //!
 //! Texture lookups go to the texture room through [`StageTextures`], the executor's
-//! [`Textures`] over a draw's units: coordinates divided by q (0 when q is 0), then
-//! [`crate::texture::TextureStage::sample_block`], llvmpipe's level of detail per 2×2 quad.
+//! [`Textures`] over a draw's units: [`crate::texture::TextureStage::sample_lanes`], the
+//! coordinates divided by q (0 when q is 0) and llvmpipe's level of detail per 2×2 quad.
 //!
 //! **Quads.** The executor's lanes are row-major, and a lookup's quads are the lane row pairs
 //! (0, 1) and (2, 3). llvmpipe's quads pair its y-down rows, so they are the block's row
@@ -434,28 +434,7 @@ impl Textures for StageTextures<'_> {
             *out = [[0; LANES], [0; LANES], [0; LANES], [1f32.to_bits(); LANES]];
             return;
         };
-        let mut c = [[0f32; LANES]; 3];
-        for i in 0..LANES {
-            let q = f32::from_bits(r.coords[3][i]);
-            let inv = if !r.projective {
-                1.0
-            } else if q != 0.0 {
-                1.0 / q
-            } else {
-                0.0
-            };
-            for (j, cj) in c.iter_mut().enumerate() {
-                cj[i] =
-                    if r.projective { f32::from_bits(r.coords[j][i]) * inv } else { f32::from_bits(r.coords[j][i]) };
-            }
-        }
-        let mut texels = [[0f32; LANES]; 4];
-        stage.sample_block(&c, r.lanes & self.used, &mut texels);
-        for (o, t) in out.iter_mut().zip(&texels) {
-            for i in 0..LANES {
-                o[i] = t[i].to_bits();
-            }
-        }
+        stage.sample_lanes(r.coords, r.projective, r.lanes & self.used, out);
     }
 
     fn fetch(&self, _: u8, _: u8, _: &[Word; 3], _: &Word, _: u16, out: &mut [Word; 4]) {

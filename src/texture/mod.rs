@@ -1,7 +1,7 @@
 //! Texturing: texture images as stored ([`TexImage`]), the samplers a draw compiles from
 //! texture objects ([`sampler`]), the kernels that run their lookups a 2×2 quad at a time
 //! (`kernel`, chosen once per draw), and the texture environments' state ([`env`]).
-//! [`TextureStage::sample_block`] is the lookup of 16 lanes in structure-of-arrays form that
+//! [`TextureStage::sample_lanes`] is the lookup of 16 lanes in structure-of-arrays form that
 //! a fragment program's sample instruction calls (`crate::fragment::shading`); the
 //! environments themselves are part of the generated fragment program.
 //!
@@ -38,6 +38,7 @@
 
 pub mod env;
 mod kernel;
+mod lanes;
 pub mod sampler;
 
 use crate::framebuffer::format::DepthEncoding;
@@ -332,8 +333,10 @@ pub struct TextureStage {
     pub sampler: sampler::Sampler,
     pub env: env::TexEnv,
     pub slot: usize,
-    /// How the sampler's lookups run, chosen from it.
+    /// How the sampler's lookups run, chosen from it: quad by quad (`kernel`), and the
+    /// lane loops' plan for the textures they take.
     kernel: kernel::Kernel,
+    plan: Option<lanes::Plan>,
     /// Whether a lookup depends on the derivatives of its coordinates: not when every λ
     /// gives the same level and filter (no mipmaps, one filter for magnification and
     /// minification), as for most shadow maps.
@@ -341,17 +344,64 @@ pub struct TextureStage {
 }
 
 impl TextureStage {
-    /// The texture colors (`out[channel][lane]`, before the environment) of the lanes
-    /// `live` of a 4×4 block, lanes row-major (lane `i` at column `i & 3`, row `i >> 2`,
-    /// rows upward) and the coordinates `c` already divided by q: the level of detail per
-    /// 2×2 quad of rows (0, 1) and (2, 3), the upper row of each (llvmpipe's) giving the x
-    /// derivative and its left column the y one. Every lane of a quad with a live lane must
-    /// hold its pixel's coordinates. This is the implicit-LOD lookup a program's sample
-    /// instruction needs (`shader::exec::Textures::sample` over a draw's stages: divide by
-    /// q when projective, then call this); lanes of other quads are left alone.
-    #[inline]
+    /// The texture colors (`out[channel][lane]`, f32 bits, before the environment) of the
+    /// lanes `live` of a 4×4 block, lanes row-major (lane `i` at column `i & 3`, row
+    /// `i >> 2`, rows upward), from the coordinates (s, t, r, q) `coords` (f32 bits; divided
+    /// by q when `projective`, 0 where q is 0): the level of detail per 2×2 quad of rows
+    /// (0, 1) and (2, 3), the upper row of each (llvmpipe's) giving the x derivative and its
+    /// left column the y one. Every lane of a quad with a live lane must hold its pixel's
+    /// coordinates. This is the implicit-LOD lookup a fixed-function program's sample
+    /// instruction needs (`shader::exec::Textures::sample` over a draw's stages). Lanes
+    /// outside `live` receive unspecified values or are left alone.
+    ///
+    /// Compiled once per SIMD level: the lane loops of the common textures (`lanes`) run at
+    /// the machine's level; other textures go quad by quad through the reference kernels.
+    pub fn sample_lanes(&self, coords: &[[u32; LANES]; 4], projective: bool, live: u16, out: &mut [[u32; LANES]; 4]) {
+        crate::simd::per_level!(self.sample_lanes_body(coords, projective, live, out))
+    }
+
+    // Lanes index the coordinate arrays alike.
+    #[allow(clippy::needless_range_loop)]
+    #[inline(always)]
+    fn sample_lanes_body(&self, coords: &[[u32; LANES]; 4], projective: bool, live: u16, out: &mut [[u32; LANES]; 4]) {
+        let mut c = [[0f32; LANES]; 3];
+        if projective {
+            let mut inv = [0f32; LANES];
+            for i in 0..LANES {
+                // Divided in every lane, then chosen: a division under a condition stays
+                // scalar.
+                let q = f32::from_bits(coords[3][i]);
+                let reciprocal = 1.0 / q;
+                inv[i] = if q != 0.0 { reciprocal } else { 0.0 };
+            }
+            for j in 0..3 {
+                for i in 0..LANES {
+                    c[j][i] = f32::from_bits(coords[j][i]) * inv[i];
+                }
+            }
+        } else {
+            for j in 0..3 {
+                for i in 0..LANES {
+                    c[j][i] = f32::from_bits(coords[j][i]);
+                }
+            }
+        }
+        if let Some(plan) = &self.plan {
+            if plan.sample(&self.sampler, &c, live, out) {
+                return;
+            }
+        }
+        self.kernel.sample_quads(&self.sampler, &c, live, out);
+    }
+
+    /// [`TextureStage::sample_lanes`] of coordinates already divided by q, as f32 colors
+    /// (the tests' form).
+    #[cfg(test)]
     pub fn sample_block(&self, c: &[F32s; 3], live: u16, out: &mut [F32s; 4]) {
-        self.kernel.sample_block(&self.sampler, c, live, out);
+        let coords = [0, 1, 2, 3].map(|j| if j < 3 { c[j].map(f32::to_bits) } else { [1f32.to_bits(); LANES] });
+        let mut words = out.map(|channel| channel.map(f32::to_bits));
+        self.sample_lanes(&coords, false, live, &mut words);
+        *out = words.map(|channel| channel.map(f32::from_bits));
     }
 
     /// Whether a lookup depends on the derivatives of its coordinates (then its level of
@@ -363,8 +413,13 @@ impl TextureStage {
 
     pub fn new(unit: usize, sampler: sampler::Sampler, env: env::TexEnv, slot: usize) -> TextureStage {
         let kernel = kernel::Kernel::choose(&sampler);
+        let plan = match kernel {
+            kernel::Kernel::Rgba2d => Some(lanes::Plan::new(&sampler, false)),
+            kernel::Kernel::Depth2d => Some(lanes::Plan::new(&sampler, true)),
+            kernel::Kernel::Reference => None,
+        };
         let derivatives = sampler.mip.is_some() || sampler.mag != sampler.min;
-        TextureStage { unit, sampler, env, slot, kernel, derivatives }
+        TextureStage { unit, sampler, env, slot, kernel, plan, derivatives }
     }
 }
 
@@ -398,7 +453,7 @@ impl PartialEq for Texturing {
 /// Most texture units a draw can use.
 pub const MAX_UNITS: usize = crate::gl::limits::MAX_TEXTURE_UNITS;
 
-/// Fragments in a block given to [`TextureStage::sample_block`]: four 2×2 quads.
+/// Fragments in a block given to [`TextureStage::sample_lanes`]: four 2×2 quads.
 pub const LANES: usize = 16;
 
 /// One value per lane of a block.
