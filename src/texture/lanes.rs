@@ -240,6 +240,8 @@ impl Plan {
     /// weight of the second in 1/256. The position in texels less ½ is taken to 1/256
     /// rounded to nearest even (`fixed`), by the magic number below 2²², exactly beyond.
     #[inline(always)]
+    // `!(x < limit)` is true for NaN as well, in one vector compare.
+    #[allow(clippy::neg_cmp_op_on_partial_ord)]
     fn linear_axis(&self, k: usize, s: &F32s, sizef: &F32s, size: &I32s) -> (I32s, I32s, I32s) {
         const MAGIC: f32 = 12_582_912.0;
         let mut u = [0.0f32; LANES];
@@ -274,6 +276,8 @@ impl Plan {
     /// the integer nearest u (by the magic number) less one where it is above u;
     /// `floor_i32` beyond (a float-to-integer cast is scalar code per lane).
     #[inline(always)]
+    // `!(x < limit)` is true for NaN as well, in one vector compare.
+    #[allow(clippy::neg_cmp_op_on_partial_ord)]
     fn nearest_axis(&self, k: usize, s: &F32s, sizef: &F32s, size: &I32s) -> I32s {
         const MAGIC: f32 = 12_582_912.0;
         let mut u = [0.0f32; LANES];
