@@ -105,6 +105,17 @@ impl ArrayState {
         }
     }
 
+    /// Records a glXxxPointer's validated format and where the elements are (`pointer` is an
+    /// offset into `buffer` when that is not 0).
+    pub fn specify(&mut self, size: i32, component: ComponentType, stride: i32, pointer: usize, buffer: u32) {
+        self.size = size;
+        self.component = component;
+        self.stride = stride;
+        self.pointer = pointer;
+        self.buffer = buffer;
+        self.orphaned = false;
+    }
+
     /// Bytes of one element.
     pub fn element_size(&self) -> usize {
         self.size as usize * self.component.size()

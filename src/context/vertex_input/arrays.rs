@@ -33,13 +33,7 @@ impl Context {
 
     fn set_array(&mut self, id: ArrayId, size: i32, component: ComponentType, stride: i32, pointer: usize) {
         let buffer = self.vertex_input.arrays.array_buffer;
-        let array = self.vertex_input.arrays.get_mut(id);
-        array.size = size;
-        array.component = component;
-        array.stride = stride;
-        array.pointer = pointer;
-        array.buffer = buffer;
-        array.orphaned = false;
+        self.vertex_input.arrays.get_mut(id).specify(size, component, stride, pointer, buffer);
     }
 
     /// glVertexPointer.

@@ -95,13 +95,8 @@ impl Context {
         }
         let buffer = self.vertex_input.arrays.array_buffer;
         let array = &mut self.vertex_input.arrays.generic[index];
-        array.size = size;
-        array.component = component;
+        array.specify(size, component, stride, pointer, buffer);
         array.normalized = normalized;
-        array.stride = stride;
-        array.pointer = pointer;
-        array.buffer = buffer;
-        array.orphaned = false;
     }
 
     /// glEnableVertexAttribArray / glDisableVertexAttribArray.
