@@ -1,6 +1,6 @@
 //! Entry points for GLSL shader and program objects (GL 2.0).
 use super::caller_memory;
-use super::{guard, record_or_run, with_context};
+use super::{guard, query, record_or_run, with_context};
 use crate::context::{current, Context};
 use crate::gl::enums::{GL_INVALID_OPERATION, GL_INVALID_VALUE};
 use crate::gl::types::*;
@@ -18,12 +18,6 @@ unsafe fn write_string(text: &str, buffer_size: GLsizei, length: *mut GLsizei, b
     unsafe { caller_memory::write_all(buffer as *mut u8, bytes) };
     // SAFETY: the caller provides room for one value (or passes NULL).
     unsafe { caller_memory::write(length, count as GLsizei) };
-}
-
-/// Runs `f` on the current context for a value that is not `Copy` (`None`: no context, an
-/// error, or a caught panic).
-fn query<R>(f: impl FnOnce(&mut Context) -> Option<R>) -> Option<R> {
-    guard(None, || current::with_current(f).flatten())
 }
 
 #[no_mangle]

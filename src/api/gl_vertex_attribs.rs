@@ -1,8 +1,7 @@
 //! Entry points for generic vertex attributes (GL 2.0): glVertexAttrib* in every form,
 //! glVertexAttribPointer, glEnable/DisableVertexAttribArray and the glGetVertexAttrib* queries.
 use super::caller_memory::{self, read};
-use super::{guard, record_or_run, with_context};
-use crate::context::current;
+use super::{query, record_or_run, with_context};
 use crate::gl::types::*;
 use crate::vertex::components::Component;
 
@@ -372,17 +371,12 @@ pub extern "C" fn glDisableVertexAttribArray(index: GLuint) {
     with_context((), |ctx| ctx.enable_vertex_attrib_array(index, false))
 }
 
-/// The answer of a glGetVertexAttrib* query (`None`: no context, an error or a caught panic).
-fn attrib_query(index: GLuint, pname: GLenum) -> Option<crate::context::vertex_input::AttribValue> {
-    guard(None, || current::with_current(|ctx| ctx.get_vertex_attrib(index, pname)).flatten())
-}
-
 /// # Safety
 /// `params` must have room for 4 values for GL_CURRENT_VERTEX_ATTRIB, else 1 (NULL writes
 /// nothing).
 #[no_mangle]
 pub unsafe extern "C" fn glGetVertexAttribfv(index: GLuint, pname: GLenum, params: *mut GLfloat) {
-    if let Some(value) = attrib_query(index, pname) {
+    if let Some(value) = query(|ctx| ctx.get_vertex_attrib(index, pname)) {
         // SAFETY: the caller provides room for the values `pname` has.
         unsafe { caller_memory::write_all(params, value.floats().into_iter().map(|v| v as f32)) }
     }
@@ -392,7 +386,7 @@ pub unsafe extern "C" fn glGetVertexAttribfv(index: GLuint, pname: GLenum, param
 /// As [`glGetVertexAttribfv`].
 #[no_mangle]
 pub unsafe extern "C" fn glGetVertexAttribdv(index: GLuint, pname: GLenum, params: *mut GLdouble) {
-    if let Some(value) = attrib_query(index, pname) {
+    if let Some(value) = query(|ctx| ctx.get_vertex_attrib(index, pname)) {
         // SAFETY: the caller provides room for the values `pname` has.
         unsafe { caller_memory::write_all(params, value.floats()) }
     }
@@ -402,7 +396,7 @@ pub unsafe extern "C" fn glGetVertexAttribdv(index: GLuint, pname: GLenum, param
 /// As [`glGetVertexAttribfv`].
 #[no_mangle]
 pub unsafe extern "C" fn glGetVertexAttribiv(index: GLuint, pname: GLenum, params: *mut GLint) {
-    if let Some(value) = attrib_query(index, pname) {
+    if let Some(value) = query(|ctx| ctx.get_vertex_attrib(index, pname)) {
         // SAFETY: the caller provides room for the values `pname` has.
         unsafe { caller_memory::write_all(params, value.integers()) }
     }
@@ -412,7 +406,7 @@ pub unsafe extern "C" fn glGetVertexAttribiv(index: GLuint, pname: GLenum, param
 /// `pointer` must have room for one pointer (NULL writes nothing).
 #[no_mangle]
 pub unsafe extern "C" fn glGetVertexAttribPointerv(index: GLuint, pname: GLenum, pointer: *mut *mut GLvoid) {
-    let address = guard(None, || current::with_current(|ctx| ctx.get_vertex_attrib_pointer(index, pname)).flatten());
+    let address = query(|ctx| ctx.get_vertex_attrib_pointer(index, pname));
     if let Some(address) = address {
         // SAFETY: the caller provides room for one pointer (or passes NULL).
         unsafe { caller_memory::write(pointer, address as *mut GLvoid) }

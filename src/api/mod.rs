@@ -63,6 +63,13 @@ pub(crate) fn with_context<R: Copy>(default: R, f: impl FnOnce(&mut Context) -> 
     guard(default, || current::with_current(f).unwrap_or(default))
 }
 
+/// Runs `f` on the calling thread's current context for a value that is not `Copy` (an
+/// object's string, a list of names): `None` when there is no context, when `f` records an
+/// error, or when it panics.
+pub(crate) fn query<R>(f: impl FnOnce(&mut Context) -> Option<R>) -> Option<R> {
+    guard(None, || current::with_current(f).flatten())
+}
+
 /// The path of every command that display lists compile: runs `command` on the current
 /// context, or records it in the list being compiled (see `context::lists`). The closure owns
 /// its arguments (`move`), so anything a pointer argument designates must be read into owned

@@ -20,32 +20,26 @@ use super::share::Shared;
 use crate::gl::enums::*;
 use crate::gl::names::NameTable;
 use crate::gl::types::*;
+use crate::glsl::Stage;
 use std::sync::Arc;
 
 /// The largest generic vertex attribute index plus one (GL_MAX_VERTEX_ATTRIBS, as Mesa's 16).
 pub const MAX_VERTEX_ATTRIBS: u32 = 16;
 
-/// The stage a shader object compiles for.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Stage {
-    Vertex,
-    Fragment,
+/// The stage of a glCreateShader type.
+fn stage_of(kind: GLenum) -> Option<Stage> {
+    match kind {
+        GL_VERTEX_SHADER => Some(Stage::Vertex),
+        GL_FRAGMENT_SHADER => Some(Stage::Fragment),
+        _ => None,
+    }
 }
 
-impl Stage {
-    fn from_gl(kind: GLenum) -> Option<Stage> {
-        match kind {
-            GL_VERTEX_SHADER => Some(Stage::Vertex),
-            GL_FRAGMENT_SHADER => Some(Stage::Fragment),
-            _ => None,
-        }
-    }
-
-    fn to_gl(self) -> GLenum {
-        match self {
-            Stage::Vertex => GL_VERTEX_SHADER,
-            Stage::Fragment => GL_FRAGMENT_SHADER,
-        }
+/// GL_SHADER_TYPE of a stage.
+fn shader_type(stage: Stage) -> GLenum {
+    match stage {
+        Stage::Vertex => GL_VERTEX_SHADER,
+        Stage::Fragment => GL_FRAGMENT_SHADER,
     }
 }
 
@@ -242,7 +236,7 @@ impl super::Context {
         if !self.check_outside_begin_end() {
             return 0;
         }
-        let Some(stage) = Stage::from_gl(kind) else {
+        let Some(stage) = stage_of(kind) else {
             self.error(GL_INVALID_ENUM);
             return 0;
         };
@@ -391,7 +385,7 @@ impl super::Context {
         self.with_shader_objects(|objects| {
             let shader = objects.shader(shader)?;
             Ok(match pname {
-                GL_SHADER_TYPE => shader.stage.to_gl() as GLint,
+                GL_SHADER_TYPE => shader_type(shader.stage) as GLint,
                 GL_DELETE_STATUS => shader.delete_pending as GLint,
                 GL_COMPILE_STATUS => shader.compiled as GLint,
                 GL_INFO_LOG_LENGTH => length_with_nul(&shader.info_log),
@@ -553,10 +547,6 @@ impl super::Context {
 /// Compiles `source` for `stage` with the GLSL front end: whether it compiled, and the info
 /// log (empty on success without warnings, as Mesa's).
 fn compile(stage: Stage, source: &str) -> (bool, String) {
-    let stage = match stage {
-        Stage::Vertex => crate::glsl::Stage::Vertex,
-        Stage::Fragment => crate::glsl::Stage::Fragment,
-    };
     let mut log = crate::glsl::InfoLog::default();
     let checked = crate::glsl::compile_shader(source, stage, &crate::glsl::Options::default(), &mut log);
     (checked.is_some() && !log.has_errors(), log.text())
