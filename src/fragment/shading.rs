@@ -347,7 +347,7 @@ impl Shading {
             *prepared = self.id;
         }
         for &(r, k) in &self.bound_primary {
-            *registers.word(r) = bits(&colors[k]);
+            *registers.word(r) = bits(&colors[k & 3]);
         }
         for &(r, v) in &self.bound_varyings {
             *registers.word(r) = bits(&varyings[v]);
@@ -355,14 +355,15 @@ impl Shading {
         let running = if self.derivatives { quads(live) } else { live };
         let textures = StageTextures { texturing: textures.texturing, used: live };
         let mut io = Io { inputs: &[], uniforms: &self.uniforms, outputs: &mut [], textures: &textures };
-        bound.run(registers, &mut io, running);
+        bound.run_inline(registers, &mut io, running);
         // Every lane: the pipeline uses only the live lanes' colours (the others' are
-        // whatever the registers hold).
+        // whatever the registers hold). The word is read whole into a local first: the
+        // colours reach here through the caller's closure, so LLVM cannot tell them apart
+        // from the register file, and a lane-by-lane copy between the two stayed 16
+        // scalar loads and stores per channel (a third of the run of a fog program).
         for &(k, r) in &self.bound_outputs {
-            let out = registers.word(r);
-            for i in 0..LANES {
-                colors[k][i] = f32::from_bits(out[i]);
-            }
+            let out: Word = *registers.word(r);
+            colors[k & 3] = floats(&out);
         }
     }
 }
@@ -376,6 +377,16 @@ fn bits(lanes: &F32s) -> Word {
         *w = x.to_bits();
     }
     word
+}
+
+/// The f32 lanes of 16 bit patterns ([`bits`]'s inverse).
+#[inline(always)]
+fn floats(word: &Word) -> F32s {
+    let mut lanes = [0f32; LANES];
+    for (x, w) in lanes.iter_mut().zip(word) {
+        *x = f32::from_bits(*w);
+    }
+    lanes
 }
 
 /// The lanes of the 2×2 quads (lane row pairs (0, 1) and (2, 3), column pairs (0, 1) and

@@ -907,14 +907,17 @@ impl Bound {
 
     /// Runs the program in the lanes `lanes` of `registers` (prepared by
     /// [`Bound::prepare`], inputs written); `io`'s inputs and outputs are not used. One copy
-    /// per SIMD level, called from the fragment pipeline's: inlined into each of its
-    /// per-level bodies, the interpreter's match made the libraries 1.5 MB larger.
+    /// per SIMD level. The fragment pipeline calls [`Bound::run_inline`] from its shading
+    /// copy, which is itself one per level (inlined into each of the pipeline's per-level
+    /// bodies instead, the interpreter's match made the libraries 1.5 MB larger).
     pub fn run(&self, registers: &mut Registers, io: &mut Io<'_>, lanes: u16) {
-        crate::simd::per_level!(self.run_body(registers, io, lanes))
+        crate::simd::per_level!(self.run_inline(registers, io, lanes))
     }
 
+    /// [`Bound::run`] inlined into a caller that is itself compiled once per SIMD level
+    /// (the fragment pipeline's one shading copy per level): no second dispatch per block.
     #[inline(always)]
-    fn run_body(&self, registers: &mut Registers, io: &mut Io<'_>, lanes: u16) {
+    pub fn run_inline(&self, registers: &mut Registers, io: &mut Io<'_>, lanes: u16) {
         for &r in &self.zeroed {
             registers.w[r as usize] = [0; LANES];
         }
