@@ -34,9 +34,6 @@ type I32s = [i32; LANES];
 type U32s = [u32; LANES];
 type U16s = [u16; LANES];
 
-/// Every lane, in order.
-const ALL_LANES: [usize; LANES] = [0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15];
-
 /// The lanes of each quad ([`QUAD_LANES`]) as a mask.
 const QUAD_BITS: [u16; 4] = [0x0033, 0x00cc, 0x3300, 0xcc00];
 
@@ -250,15 +247,18 @@ impl Plan {
             u[l] = if s[l].is_finite() { scaled } else { 0.0 };
         }
         let mut f = [0i32; LANES];
-        let mut big = [false; LANES];
+        // Whether any lane is beyond the magic number's range, as one reduction (an array
+        // of flags compared with all-false was packed to bytes and stored lane by lane);
+        // the rare lanes beyond are found again in the branch.
+        let mut big = false;
         for l in 0..LANES {
             let v = u[l] * 256.0;
             f[l] = ((v + MAGIC).to_bits() as i32).wrapping_sub(MAGIC.to_bits() as i32);
-            big[l] = !(v.abs() < 4_194_304.0);
+            big |= !(v.abs() < 4_194_304.0);
         }
-        if big != [false; LANES] {
+        if big {
             for l in 0..LANES {
-                if big[l] {
+                if !((u[l] * 256.0).abs() < 4_194_304.0) {
                     f[l] = fixed(u[l]);
                 }
             }
@@ -282,16 +282,17 @@ impl Plan {
         const MAGIC: f32 = 12_582_912.0;
         let mut u = [0.0f32; LANES];
         let mut i = [0; LANES];
-        let mut big = [false; LANES];
+        // One reduction for the lanes beyond the magic number's range (see `linear_axis`).
+        let mut big = false;
         for l in 0..LANES {
             u[l] = s[l] * sizef[l];
             let r = ((u[l] + MAGIC).to_bits() as i32).wrapping_sub(MAGIC.to_bits() as i32);
             i[l] = r - i32::from(r as f32 > u[l]);
-            big[l] = !(u[l].abs() < 4_194_304.0);
+            big |= !(u[l].abs() < 4_194_304.0);
         }
-        if big != [false; LANES] {
+        if big {
             for l in 0..LANES {
-                if big[l] {
+                if !(u[l].abs() < 4_194_304.0) {
                     i[l] = if u[l].is_finite() { floor_i32(u[l]) } else { 0 };
                 }
             }
@@ -415,7 +416,7 @@ impl Plan {
                 return None;
             }
             for c in 0..corners {
-                texels.gather(&fp.index[c], &ALL_LANES, &mut raw[c]);
+                texels.gather_all(&fp.index[c], &mut raw[c]);
             }
         } else {
             for q in 0..4 {
@@ -666,6 +667,25 @@ enum DepthWords<'a> {
 }
 
 impl DepthWords<'_> {
+    /// The words at `index` of every lane, into `out`: [`Self::gather`] in a plain lane
+    /// loop (through the list of lanes, each lane's index was loaded from it and its
+    /// place in `out` checked).
+    #[inline(always)]
+    fn gather_all(self, index: &I32s, out: &mut U32s) {
+        match self {
+            DepthWords::U16(w) => {
+                for l in 0..LANES {
+                    out[l] = w[index[l] as usize] as u32;
+                }
+            }
+            DepthWords::U32(w) => {
+                for l in 0..LANES {
+                    out[l] = w[index[l] as usize];
+                }
+            }
+        }
+    }
+
     /// The words at `index` of the lanes `lanes`, into `out`.
     #[inline(always)]
     fn gather(self, index: &I32s, lanes: &[usize], out: &mut U32s) {
