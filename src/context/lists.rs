@@ -137,8 +137,17 @@ impl Context {
         }
     }
 
+    /// Boxes `command` for [`Self::record_boxed`]: the only part compiled once per command
+    /// type (about 300), so that the rest, compiled once, is not copied into each.
     #[cold]
     fn record<F: Fn(&mut Context) + Send + Sync + 'static>(&mut self, command: F) {
+        self.record_boxed(Box::new(command))
+    }
+
+    /// [`Self::record`] of a boxed command (run through its vtable under
+    /// GL_COMPILE_AND_EXECUTE, as list playback runs it).
+    #[inline(never)]
+    fn record_boxed(&mut self, command: Command) {
         if self.lists.compiling.as_ref().is_some_and(|c| c.execute) {
             command(self);
         }
@@ -149,7 +158,7 @@ impl Context {
         if compiling.commands.try_reserve(1).is_err() {
             return self.error(GL_OUT_OF_MEMORY);
         }
-        compiling.commands.push(Box::new(command));
+        compiling.commands.push(command);
     }
 
     /// glNewList.

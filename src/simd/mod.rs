@@ -232,7 +232,10 @@ pub fn describe() -> String {
 /// inside it act on that closure, not on the enclosing function. The form
 /// `per_level!(|level| body)` also names the copy's level (a [`Supported`], a constant in
 /// each copy) for the lane helpers that take one ([`dispatch::sign_mask16`],
-/// [`dispatch::load_block`]) and for [`dispatch::outlined`] calls.
+/// [`dispatch::load_block`]) and for [`dispatch::outlined`] calls. The form
+/// `per_level!(sse2_for_sse41, |level| body)` compiles no SSE4.1 copy: that level runs
+/// SSE2's ([`dispatch::run_with_sse2_for_sse41`]), for code whose SSE4.1 copy is not worth
+/// its size.
 ///
 /// ```
 /// let mut a = [1.0f32; 64];
@@ -246,6 +249,13 @@ pub fn describe() -> String {
 /// ```
 #[macro_export]
 macro_rules! simd_per_level {
+    (sse2_for_sse41, |$level:ident| $body:expr) => {
+        $crate::simd::dispatch::run_with_sse2_for_sse41(
+            $crate::simd::current(),
+            #[inline(always)]
+            |$level: $crate::simd::Supported| $body,
+        )
+    };
     (|$level:ident| $body:expr) => {
         $crate::simd::dispatch::run_with(
             $crate::simd::current(),

@@ -318,20 +318,8 @@ impl Kernel {
                 }
             }
             Kernel::Depth2d => {
-                let levels = &sampler.faces[0];
                 let which = quad_levels(sampler, ddx, ddy, c);
-                let done = match &levels[0].texels {
-                    Texels::Depth(buffer) => match (buffer.pixels(), buffer.depth_encoding()) {
-                        (DepthStencilPixels::Depth16(_), _) => depth_quad::<Unorm16>(sampler, which, c, live, out),
-                        (DepthStencilPixels::Packed24(_), _) => depth_quad::<Unorm24>(sampler, which, c, live, out),
-                        (DepthStencilPixels::Depth32(..), DepthEncoding::Float) => {
-                            depth_quad::<FloatDepth>(sampler, which, c, live, out)
-                        }
-                        (DepthStencilPixels::Depth32(..), _) => depth_quad::<Unorm32>(sampler, which, c, live, out),
-                        (DepthStencilPixels::None, _) => false,
-                    },
-                    Texels::Rgba8(_) => false,
-                };
+                let done = depth_quad(sampler, which, c, live, out);
                 if !done {
                     // An image without texels (attached to the framebuffer being drawn)
                     // or of another format: the reference answers.
@@ -355,104 +343,49 @@ pub(super) fn quad_levels(sampler: &Sampler, ddx: [f32; 3], ddy: [f32; 3], c: &[
     }
 }
 
-/// The texels of one level of a depth image in one storage format, decoded as
-/// [`depth_texel`] does.
-trait DepthTexels<'a>: Copy {
-    /// The level's texels, if `img` holds this format.
-    fn of(img: &'a TexImage) -> Option<Self>;
-    /// The stored word of texel `i`, as [`DepthTexels::decode`] takes it.
-    fn raw(self, i: usize) -> u32;
-    /// A stored word as the sampler reads it ([`depth_texel`]): separate from the fetch
-    /// so that the lane loops gather first and decode 16 lanes at once.
-    fn decode(raw: u32) -> f32;
+/// The texels of one level of a depth image, decoded as [`depth_texel`] does. One type for
+/// every storage format, matched per texel (the same arm for every texel of a lookup, so a
+/// predicted branch): a copy of the quad kernels per format cost the libraries 120 KB, for
+/// the lookups the lane loops leave (`super::lanes` decodes 16 lanes per match).
+#[derive(Clone, Copy)]
+enum DepthTexels<'a> {
+    Unorm16(&'a [u16]),
+    /// Packed 24-bit depth (the stencil index above it).
+    Unorm24(&'a [u32]),
+    Unorm32(&'a [u32]),
+    Float(&'a [u32]),
+}
+
+impl<'a> DepthTexels<'a> {
+    /// The level's texels, if it holds depth in a format the quad kernels read.
+    fn of(img: &'a TexImage) -> Option<Self> {
+        let Texels::Depth(buffer) = &img.texels else { return None };
+        match (buffer.pixels(), buffer.depth_encoding()) {
+            (DepthStencilPixels::Depth16(px), _) => Some(DepthTexels::Unorm16(px)),
+            (DepthStencilPixels::Packed24(px), _) => Some(DepthTexels::Unorm24(px)),
+            (DepthStencilPixels::Depth32(px, _), DepthEncoding::Unorm(32)) => Some(DepthTexels::Unorm32(px)),
+            (DepthStencilPixels::Depth32(px, _), DepthEncoding::Float) => Some(DepthTexels::Float(px)),
+            _ => None,
+        }
+    }
+
+    /// The number of texels stored.
+    fn len(self) -> usize {
+        match self {
+            DepthTexels::Unorm16(px) => px.len(),
+            DepthTexels::Unorm24(px) | DepthTexels::Unorm32(px) | DepthTexels::Float(px) => px.len(),
+        }
+    }
+
+    /// Texel `i` as the sampler reads it ([`depth_texel`]).
     #[inline(always)]
     fn texel(self, i: usize) -> f32 {
-        Self::decode(self.raw(i))
-    }
-}
-
-#[derive(Clone, Copy)]
-struct Unorm16<'a>(&'a [u16]);
-#[derive(Clone, Copy)]
-struct Unorm24<'a>(&'a [u32]);
-#[derive(Clone, Copy)]
-struct Unorm32<'a>(&'a [u32]);
-#[derive(Clone, Copy)]
-struct FloatDepth<'a>(&'a [u32]);
-
-/// The pixels of a depth image, if it holds any.
-fn depth_pixels(img: &TexImage) -> Option<(&DepthStencilPixels, DepthEncoding)> {
-    match &img.texels {
-        Texels::Depth(buffer) => Some((buffer.pixels(), buffer.depth_encoding())),
-        Texels::Rgba8(_) => None,
-    }
-}
-
-impl<'a> DepthTexels<'a> for Unorm16<'a> {
-    fn of(img: &'a TexImage) -> Option<Self> {
-        match depth_pixels(img)? {
-            (DepthStencilPixels::Depth16(px), _) => Some(Unorm16(px)),
-            _ => None,
+        match self {
+            DepthTexels::Unorm16(px) => depth_texel(DepthEncoding::Unorm(16), px[i] as u32),
+            DepthTexels::Unorm24(px) => depth_texel(DepthEncoding::Unorm(24), px[i] & 0x00ff_ffff),
+            DepthTexels::Unorm32(px) => depth_texel(DepthEncoding::Unorm(32), px[i]),
+            DepthTexels::Float(px) => depth_texel(DepthEncoding::Float, px[i]),
         }
-    }
-    #[inline(always)]
-    fn raw(self, i: usize) -> u32 {
-        self.0[i] as u32
-    }
-    #[inline(always)]
-    fn decode(raw: u32) -> f32 {
-        depth_texel(DepthEncoding::Unorm(16), raw)
-    }
-}
-
-impl<'a> DepthTexels<'a> for Unorm24<'a> {
-    fn of(img: &'a TexImage) -> Option<Self> {
-        match depth_pixels(img)? {
-            (DepthStencilPixels::Packed24(px), _) => Some(Unorm24(px)),
-            _ => None,
-        }
-    }
-    #[inline(always)]
-    fn raw(self, i: usize) -> u32 {
-        self.0[i] & 0x00ff_ffff
-    }
-    #[inline(always)]
-    fn decode(raw: u32) -> f32 {
-        depth_texel(DepthEncoding::Unorm(24), raw)
-    }
-}
-
-impl<'a> DepthTexels<'a> for Unorm32<'a> {
-    fn of(img: &'a TexImage) -> Option<Self> {
-        match depth_pixels(img)? {
-            (DepthStencilPixels::Depth32(px, _), DepthEncoding::Unorm(32)) => Some(Unorm32(px)),
-            _ => None,
-        }
-    }
-    #[inline(always)]
-    fn raw(self, i: usize) -> u32 {
-        self.0[i]
-    }
-    #[inline(always)]
-    fn decode(raw: u32) -> f32 {
-        depth_texel(DepthEncoding::Unorm(32), raw)
-    }
-}
-
-impl<'a> DepthTexels<'a> for FloatDepth<'a> {
-    fn of(img: &'a TexImage) -> Option<Self> {
-        match depth_pixels(img)? {
-            (DepthStencilPixels::Depth32(px, _), DepthEncoding::Float) => Some(FloatDepth(px)),
-            _ => None,
-        }
-    }
-    #[inline(always)]
-    fn raw(self, i: usize) -> u32 {
-        self.0[i]
-    }
-    #[inline(always)]
-    fn decode(raw: u32) -> f32 {
-        depth_texel(DepthEncoding::Float, raw)
     }
 }
 
@@ -491,23 +424,18 @@ impl Compare {
 
 /// One level of a borderless 2D depth image.
 #[derive(Clone, Copy)]
-struct DepthLevel2d<T> {
-    texels: T,
+struct DepthLevel2d<'a> {
+    texels: DepthTexels<'a>,
     width: usize,
     grid: Grid,
 }
 
-impl<'a, T: DepthTexels<'a>> DepthLevel2d<T> {
+impl<'a> DepthLevel2d<'a> {
     fn of(img: &'a TexImage) -> Option<Self> {
         // Every texel index the wrap modes give must be inside the texels.
         let count = img.width * img.height;
-        let texels = T::of(img)?;
-        let long_enough = match depth_pixels(img)? {
-            (DepthStencilPixels::Depth16(px), _) => px.len() >= count,
-            (DepthStencilPixels::Packed24(px), _) | (DepthStencilPixels::Depth32(px, _), _) => px.len() >= count,
-            (DepthStencilPixels::None, _) => false,
-        };
-        (long_enough && count > 0).then(|| DepthLevel2d { texels, width: img.width, grid: Grid::of(img) })
+        let texels = DepthTexels::of(img)?;
+        (texels.len() >= count && count > 0).then(|| DepthLevel2d { texels, width: img.width, grid: Grid::of(img) })
     }
 
     /// The filtered depth, or the filtered comparison of `reference` with the texels, at
@@ -548,8 +476,8 @@ impl<'a, T: DepthTexels<'a>> DepthLevel2d<T> {
 
 /// The depth lookups of a quad in one level (`second`: blended with a second level by
 /// `frac`, in float as the reference blends depth): the filtered values of the live lanes.
-fn depth_levels<'a, X: AxisWrap, Y: AxisWrap, const LINEAR: bool, T: DepthTexels<'a>>(
-    (first, second): (DepthLevel2d<T>, Option<(DepthLevel2d<T>, f32)>),
+fn depth_levels<X: AxisWrap, Y: AxisWrap, const LINEAR: bool>(
+    (first, second): (DepthLevel2d, Option<(DepthLevel2d, f32)>),
     compare: Option<Compare>,
     c: &[[f32; 3]; 4],
     live: u8,
@@ -569,16 +497,10 @@ fn depth_levels<'a, X: AxisWrap, Y: AxisWrap, const LINEAR: bool, T: DepthTexels
 
 /// The depth lookups of the lanes `live` of a quad in the levels `which`, as texture
 /// colors of the sampler's depth mode; false (and `out` untouched) if a level does not
-/// hold texels of format `T`.
-fn depth_quad<'a, T: DepthTexels<'a>>(
-    sampler: &'a Sampler,
-    which: Levels,
-    c: &[[f32; 3]; 4],
-    live: u8,
-    out: &mut [[f32; 4]; 4],
-) -> bool {
+/// hold depth texels the kernels read.
+fn depth_quad(sampler: &Sampler, which: Levels, c: &[[f32; 3]; 4], live: u8, out: &mut [[f32; 4]; 4]) -> bool {
     let levels = &sampler.faces[0];
-    let level = |d: usize| DepthLevel2d::<T>::of(&levels[d]);
+    let level = |d: usize| DepthLevel2d::of(&levels[d]);
     let (pair, filter) = match which {
         Levels::One(d, filter) => match level(d) {
             Some(a) => ((a, None), filter),
@@ -591,7 +513,7 @@ fn depth_quad<'a, T: DepthTexels<'a>>(
     };
     let mut d = [0.0; 4];
     let compare = sampler.compare.map(Compare::new);
-    dispatch!(depth_levels [, _], sampler.wrap, filter, pair, compare, c, live, &mut d);
+    dispatch!(depth_levels [], sampler.wrap, filter, pair, compare, c, live, &mut d);
     // A blend of two levels blends every channel alike: the constant channels stay
     // (1 + f·0 = 1, 0 + f·0 = 0), the others are the blended depth.
     for l in lanes(live) {

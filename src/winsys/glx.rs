@@ -7,7 +7,7 @@
 //! Reads of the front buffer therefore return exactly what was drawn there. The window's size
 //! is queried at glXMakeCurrent and glXSwapBuffers and the buffers follow it.
 //!
-//! Xlib is loaded at run time (`x11-dl`), the first time a GLX function needs it, so that
+//! Xlib is loaded at run time (`super::libx11`), the first time a GLX function needs it, so that
 //! programs using only OSMesa need no X libraries.
 //!
 //! Handles given to C (GLXContext, GLXFBConfig) are identifiers looked up in registries here,
@@ -16,6 +16,7 @@
 // where `unsigned long` is 64 bits.
 #![allow(clippy::unnecessary_cast)]
 use super::glx_config::{configs_for, FbConfig, VisualDesc};
+use super::libx11::Xlib;
 use super::xshm::ShmImage;
 use crate::context::current::{self, SharedContext};
 use crate::context::{Context, ContextConfig};
@@ -25,12 +26,12 @@ use std::cell::RefCell;
 use std::collections::HashMap;
 use std::ffi::{c_int, c_uint, c_ulong};
 use std::sync::{Arc, Mutex, MutexGuard, OnceLock};
-use x11_dl::xlib::{self, Xlib};
+use x11_dl::xlib;
 
 /// Xlib, loaded once; `None` when libX11.so.6 is missing.
 pub fn xlib() -> Option<&'static Xlib> {
     static XLIB: OnceLock<Option<Xlib>> = OnceLock::new();
-    XLIB.get_or_init(|| Xlib::open().ok()).as_ref()
+    XLIB.get_or_init(Xlib::open).as_ref()
 }
 
 /// A `Display*` of the application, kept as an address (only passed back to Xlib).

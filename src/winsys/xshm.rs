@@ -5,10 +5,11 @@
 //! server that cannot see our memory (another machine or IPC namespace) refuses the attach
 //! with an X error, which is caught by a temporary error handler, as Mesa's Xlib driver
 //! does; the presenter then falls back to XPutImage. `TESSERA_XSHM=0` turns MIT-SHM off.
+use super::libx11::Xlib;
 use std::ffi::{c_int, c_uint, c_ulong};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Mutex, OnceLock};
-use x11_dl::xlib::{self, Xlib};
+use x11_dl::xlib;
 use x11_dl::xshm::{XShmSegmentInfo, Xext};
 
 /// libXext, loaded once; `None` when missing or when `TESSERA_XSHM=0`.
