@@ -88,6 +88,11 @@ pub struct Lowered {
 /// The register index that tags a sampler leaf (`SAMPLER_TAG + index into samplers`).
 const SAMPLER_TAG: u32 = 0xffff_0000;
 
+/// The most registers a lowered program may have: every call is inlined, and a shader that
+/// calls a function twice in each of n nested functions would grow as 2ⁿ (the executor
+/// keeps 64 bytes per register).
+const MAX_REGISTERS: usize = 1 << 18;
+
 /// The size of an unsized built-in array nobody indexed by a constant (`gl_TexCoord`).
 const TEX_COORDS: u32 = 8;
 
@@ -195,6 +200,8 @@ struct Place {
     dynamic: Vec<(Reg, usize, usize)>,
     /// Components of the vector at the place (after the dynamic indices).
     swizzle: Option<Vec<u8>>,
+    /// A dynamic index into the swizzle's components (`v.wzyx[i]`).
+    pick: Option<Reg>,
 }
 
 #[derive(Clone, Debug)]
@@ -270,7 +277,10 @@ pub fn lower(units: &[&Checked]) -> Result<Lowered, String> {
     for (u, c) in units.iter().enumerate() {
         for (id, init) in &c.globals {
             if let Some(init) = init {
-                if c.variables[*id].storage == Some(Storage::Const) && c.variables[*id].constant.is_some() {
+                let v = &c.variables[*id];
+                // A folded constant needs no code; a uniform's initializer is its value
+                // at link time, which the API side sets (the program only reads it).
+                if (v.storage == Some(Storage::Const) && v.constant.is_some()) || v.storage == Some(Storage::Uniform) {
                     continue;
                 }
                 l.frames.push(Frame {
@@ -556,7 +566,7 @@ impl<'a> Lowerer<'a> {
     fn var_place(&mut self, unit: usize, id: hir::VarId, key: Key) -> Place {
         self.ensure_var(unit, id, &key);
         let ty = self.vars[&key].ty.clone();
-        Place { root: Root::Var(key), base: 0, ty, dynamic: Vec::new(), swizzle: None }
+        Place { root: Root::Var(key), base: 0, ty, dynamic: Vec::new(), swizzle: None, pick: None }
     }
 
     /// Gives a local (a declaration, a parameter) fresh registers.
@@ -598,6 +608,11 @@ impl<'a> Lowerer<'a> {
                 let stride = leaf_count(&elem);
                 let constant = index.constant().map(|c| c.components()[0].as_i32());
                 if let Some(sw) = &mut p.swizzle {
+                    if constant.is_none() && p.pick.is_none() {
+                        p.pick = Some(self.expr(index)?[0]);
+                        p.ty = elem;
+                        return Ok(p);
+                    }
                     let Some(k) = constant else {
                         // A dynamic component of a swizzle: index the swizzled value.
                         let v = self.read(&p)?;
@@ -608,6 +623,7 @@ impl<'a> Lowerer<'a> {
                             ty: p.ty,
                             dynamic: vec![(i, 1, count)],
                             swizzle: None,
+                            pick: None,
                         }
                         .retyped(elem));
                     };
@@ -640,7 +656,14 @@ impl<'a> Lowerer<'a> {
             }
             _ => {
                 let v = self.expr(e)?;
-                Ok(Place { root: Root::Temp(v), base: 0, ty: e.ty.clone(), dynamic: Vec::new(), swizzle: None })
+                Ok(Place {
+                    root: Root::Temp(v),
+                    base: 0,
+                    ty: e.ty.clone(),
+                    dynamic: Vec::new(),
+                    swizzle: None,
+                    pick: None,
+                })
             }
         }
     }
@@ -662,7 +685,15 @@ impl<'a> Lowerer<'a> {
 
     fn read(&mut self, p: &Place) -> R<Vec<Reg>> {
         let len = if p.swizzle.is_some() { 0 } else { leaf_count(&p.ty) };
-        self.read_at(&p.root, p.base, len, &p.dynamic, &p.swizzle)
+        let v = self.read_at(&p.root, p.base, len, &p.dynamic, &p.swizzle)?;
+        let Some(index) = p.pick else { return Ok(v) };
+        let mut result = v[0];
+        for (k, &r) in v.iter().enumerate().skip(1) {
+            let kc = self.konst(Const::I32(k as i32));
+            let cond = self.bin(B::IEq, index, kc);
+            result = self.select(cond, r, result);
+        }
+        Ok(vec![result])
     }
 
     fn read_at(
@@ -691,6 +722,18 @@ impl<'a> Lowerer<'a> {
 
     fn write(&mut self, p: &Place, v: &[Reg]) -> R<()> {
         let len = if p.swizzle.is_some() { 0 } else { leaf_count(&p.ty) };
+        if let Some(index) = p.pick {
+            // The whole swizzle, with the picked component replaced.
+            let whole = Place { pick: None, ..p.clone() };
+            let cur = self.read(&whole)?;
+            let mut new = Vec::new();
+            for (k, &c) in cur.iter().enumerate() {
+                let kc = self.konst(Const::I32(k as i32));
+                let cond = self.bin(B::IEq, index, kc);
+                new.push(self.select(cond, v[0], c));
+            }
+            return self.write(&whole, &new);
+        }
         self.write_at(&p.root, p.base, len, &p.dynamic, &p.swizzle, v, None)
     }
 
@@ -772,6 +815,9 @@ impl<'a> Lowerer<'a> {
         }
         if self.frames.len() > 64 {
             return Err("calls nest too deeply".into());
+        }
+        if self.program.registers.len() > MAX_REGISTERS {
+            return Err(format!("the program has more than {MAX_REGISTERS} registers after inlining"));
         }
         let func = &self.units[unit].functions[f];
         let body = func.body.as_ref().expect("definition");
@@ -859,7 +905,7 @@ impl<'a> Lowerer<'a> {
                 let key = self.fresh_local(unit, *id);
                 if let Some(value) = value {
                     let ty = self.vars[&key].ty.clone();
-                    let place = Place { root: Root::Var(key), base: 0, ty, dynamic: vec![], swizzle: None };
+                    let place = Place { root: Root::Var(key), base: 0, ty, dynamic: vec![], swizzle: None, pick: None };
                     self.write(&place, &value)?;
                 }
             }

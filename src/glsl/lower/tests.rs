@@ -650,3 +650,38 @@ fn derivatives_and_fragment_inputs() {
     assert_eq!(r.get("gl_FragColor", 2), [1.0; LANES]);
     assert_eq!(r.get("gl_FragColor", 3), [1.0; LANES]);
 }
+
+#[test]
+fn dynamic_index_into_a_swizzle_reads_and_writes_one_component() {
+    let r = frag(
+        &format!(
+            "{LANE}void main() {{
+                int i = int(lane) - (int(lane) / 4) * 4;
+                gl_FragColor = vec4(1.0, 2.0, 3.0, 4.0);
+                gl_FragColor.wzyx[i] = 9.0;
+                gl_FragData[0].x = 0.0;
+            }}"
+        )
+        .replace("gl_FragData[0].x = 0.0;", ""),
+        &[],
+    );
+    for lane in 0..16usize {
+        let mut want = [1.0, 2.0, 3.0, 4.0];
+        want[3 - lane % 4] = 9.0;
+        assert_eq!([0, 1, 2, 3].map(|k| r.get("gl_FragColor", k)[lane]), want, "lane {lane}");
+    }
+}
+
+#[test]
+fn exponential_inlining_is_an_error_not_a_hang() {
+    let mut src = String::from("void f0() { gl_FragColor = exp(gl_FragColor); }\n");
+    for i in 1..30 {
+        src.push_str(&format!("void f{i}() {{ f{}(); f{}(); }}\n", i - 1, i - 1));
+    }
+    src.push_str("void main() { f29(); }\n");
+    let c = compile(Stage::Fragment, &src);
+    let start = std::time::Instant::now();
+    let e = lower(&[&c]).unwrap_err();
+    assert!(e.contains("registers after inlining"), "{e}");
+    assert!(start.elapsed().as_secs() < 20);
+}
