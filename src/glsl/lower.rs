@@ -121,7 +121,7 @@ fn leaves(ty: &Type, out: &mut Vec<Leaf>) {
         Type::Void => {}
         Type::Scalar(_) | Type::Vector(..) | Type::Matrix(..) => {
             let t = ir_type(ty.base().expect("basic"));
-            out.extend(std::iter::repeat(Leaf::Scalar(t)).take(ty.components()));
+            out.extend(std::iter::repeat_n(Leaf::Scalar(t), ty.components()));
         }
         Type::Sampler(_) => out.push(Leaf::Sampler),
         Type::Struct(s) => s.members.iter().for_each(|(_, t)| leaves(t, out)),
@@ -511,11 +511,10 @@ impl<'a> Lowerer<'a> {
             Key::Global(n) => n.clone(),
             Key::Local(..) => String::new(),
         };
-        let (elem_name, elem_base) = || -> (String, usize) {
-            let mut elems = Vec::new();
-            elements(&ty, name.clone(), 0, &mut elems);
-            elems.into_iter().find(|e| e.1 <= i && i < e.1 + e.2).map(|e| (e.0, e.1)).expect("leaf in an element")
-        }();
+        let mut elems = Vec::new();
+        elements(&ty, name, 0, &mut elems);
+        let (elem_name, elem_base) =
+            elems.into_iter().find(|e| e.1 <= i && i < e.1 + e.2).map(|e| (e.0, e.1)).expect("leaf in an element");
         let r = match kinds[i] {
             Leaf::Sampler => {
                 if class != Class::Uniform {
@@ -763,6 +762,14 @@ impl<'a> Lowerer<'a> {
         }
         let Root::Var(key) = root else { return Err("assignment to a value that is not a variable".into()) };
         let targets = self.static_leaves(root, base, len, swizzle)?;
+        // `v = v.wzyx`: the value is made of the target's own registers.
+        let copied;
+        let v = if v.iter().any(|r| targets.contains(r) && r.0 < SAMPLER_TAG) {
+            copied = self.copy(v);
+            &copied[..]
+        } else {
+            v
+        };
         if targets.len() != v.len() {
             return Err(format!("assignment of {} words to {}", v.len(), targets.len()));
         }
@@ -1049,9 +1056,8 @@ impl<'a> Lowerer<'a> {
             ExprKind::Binary(op, a, b) => match op {
                 hir::BinaryOp::And | hir::BinaryOp::Or => self.logical(*op, a, b),
                 _ => {
-                    let va = self.expr(a)?;
-                    let vb = self.expr(b)?;
-                    self.binary(*op, &va, &a.ty, &vb, &b.ty, &e.ty)
+                    let v = self.operands(&[a, b])?;
+                    self.binary(*op, &v[0], &a.ty, &v[1], &b.ty, &e.ty)
                 }
             },
             ExprKind::Assign(op, target, value) => {
@@ -1125,14 +1131,23 @@ impl<'a> Lowerer<'a> {
                 self.inline(unit, *f, values)
             }
             ExprKind::Builtin(name, args) => {
-                let mut values = Vec::new();
-                for a in args {
-                    values.push(self.expr(a)?);
-                }
+                let values = self.operands(&args.iter().collect::<Vec<_>>())?;
                 let types: Vec<Type> = args.iter().map(|a| a.ty.clone()).collect();
                 self.builtin(name, &values, &types, &e.ty)
             }
         }
+    }
+
+    /// Operands evaluated left to right; a value that a later operand's side effects could
+    /// change (it is a variable's own registers) is copied first.
+    fn operands(&mut self, list: &[&Expr]) -> R<Vec<Vec<Reg>>> {
+        let mut out = Vec::with_capacity(list.len());
+        for (i, e) in list.iter().enumerate() {
+            let v = self.expr(e)?;
+            let later = list[i + 1..].iter().any(|x| side_effects(x));
+            out.push(if later { self.copy(&v) } else { v });
+        }
+        Ok(out)
     }
 
     fn unary(&mut self, op: hir::UnaryOp, a: &Expr, ty: &Type) -> R<Vec<Reg>> {
@@ -1212,7 +1227,7 @@ impl<'a> Lowerer<'a> {
     }
 
     /// A binary operator on lowered operands.
-    fn binary(&mut self, op: hir::BinaryOp, a: &[Reg], at: &Type, b: &[Reg], bt: &Type, rt: &Type) -> R<Vec<Reg>> {
+    fn binary(&mut self, op: hir::BinaryOp, a: &[Reg], at: &Type, b: &[Reg], bt: &Type, _result: &Type) -> R<Vec<Reg>> {
         use hir::BinaryOp::*;
         let base = at.base().or(bt.base());
         let float = base == Some(Scalar::Float);
@@ -1256,10 +1271,6 @@ impl<'a> Lowerer<'a> {
             Or => Ok(vec![self.bin(B::BOr, a[0], b[0])]),
             Xor => Ok(vec![self.bin(B::BXor, a[0], b[0])]),
         }
-        .map(|v: Vec<Reg>| {
-            let _ = rt;
-            v
-        })
     }
 
     /// Whether two values are equal in every leaf (one bool).
@@ -1340,10 +1351,7 @@ impl<'a> Lowerer<'a> {
     /// Constructors: scalars, vectors and matrices from components, a scalar splat or a
     /// matrix's diagonal, a matrix from a matrix; structs and arrays from their parts.
     fn construct(&mut self, ty: &Type, args: &[Expr]) -> R<Vec<Reg>> {
-        let mut values = Vec::new();
-        for a in args {
-            values.push(self.expr(a)?);
-        }
+        let values = self.operands(&args.iter().collect::<Vec<_>>())?;
         match ty {
             Type::Struct(_) | Type::Array(..) => {
                 let mut out = Vec::new();

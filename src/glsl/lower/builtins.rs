@@ -45,6 +45,7 @@ const PI: f32 = std::f32::consts::PI;
 const HALF_PI: f32 = std::f32::consts::FRAC_PI_2;
 
 /// Abramowitz & Stegun 4.4.46: acos(x) ≈ √(1−x)·Σ aₖxᵏ on [0, 1].
+#[allow(clippy::approx_constant)] // A&S's a₀, which is π/2 to its 10 digits
 const ACOS: [f32; 8] = [
     1.570_796_3,
     -0.214_598_8,
