@@ -9,6 +9,8 @@
 //! - [`check`]: semantic analysis into [`hir`], with the built-ins of [`builtins`] and the
 //!   constant folding of [`fold`].
 //! - [`diagnostics`]: positions and the info log (`0:12(5): error: ...`).
+//! - [`lower`]: the checked units of one stage → a shading IR program, with its uniform,
+//!   input, output and sampler interface by GL names.
 //!
 //! As in Mesa, preprocessor errors end the compile before parsing, and the first syntax
 //! error ends the parse; semantic errors are all reported. Nothing here is tied to a GL
@@ -22,6 +24,7 @@ pub mod diagnostics;
 pub mod fold;
 pub mod hir;
 pub mod lex;
+pub mod lower;
 pub mod parse;
 pub mod preprocess;
 

@@ -667,6 +667,7 @@ fn piglit_glsl_110_120_execution_shaders_parse() {
     walk(&root.join("glsl-1.20"), &mut files);
     files.sort();
     let (mut parsed, mut failures) = (0, Vec::new());
+    let (mut lowered, mut not_lowered) = (0, Vec::<String>::new());
     for f in &files {
         let Ok(text) = std::fs::read_to_string(f) else { continue };
         // shader_runner puts `#version 120` before a shader without one when the test
@@ -703,14 +704,31 @@ fn piglit_glsl_110_120_execution_shaders_parse() {
             let source = if requires_120 && !has_version { format!("#version 120\n{source}") } else { source };
             let mut log = InfoLog::default();
             let stage = if kind == "[vertex shader]" { Stage::Vertex } else { Stage::Fragment };
-            if compile_shader(&source, stage, &Options::default(), &mut log).is_some() {
+            if let Some(checked) = compile_shader(&source, stage, &Options::default(), &mut log) {
                 parsed += 1;
+                // Every shader that compiles also lowers onto the IR (and validates), alone
+                // (a test's other stage does not matter to the lowering).
+                let name = f.strip_prefix(root).unwrap_or(f).display().to_string();
+                match std::panic::catch_unwind(|| super::lower::lower(&[&checked])) {
+                    Ok(Ok(_)) => lowered += 1,
+                    // A shader that calls a function defined in another shader of its stage.
+                    Ok(Err(e)) if e.contains("has no definition") || e.contains("no definition of `main'") => {
+                        lowered += 1
+                    }
+                    Ok(Err(e)) => not_lowered.push(format!("{name} {kind}: {e}\n")),
+                    Err(_) => not_lowered.push(format!("{name} {kind}: panic\n")),
+                }
             } else {
                 failures.push(format!("{} {kind}: {}", f.strip_prefix(root).unwrap_or(f).display(), log.text()));
             }
         }
     }
     println!("piglit GLSL 1.10/1.20 execution shaders: {parsed} parse, {} refused", failures.len());
+    println!("{lowered} lower, {} do not:\n{}", not_lowered.len(), not_lowered.join(""));
+    // Only the two tests of 2⁶⁴ nested calls stay refused: every call is inlined (they need
+    // calls in the IR).
+    assert!(not_lowered.iter().all(|f| f.contains("inline-explosion")), "{}", not_lowered.join(""));
+    assert!(lowered >= 1420, "only {lowered} lower");
     assert!(parsed > 1000, "only {parsed} shaders found");
     assert!(failures.is_empty(), "{} shaders refused:\n{}", failures.len(), failures.join(""));
 }
