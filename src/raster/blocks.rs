@@ -552,11 +552,8 @@ mod tests {
             let range = if round % 2 == 0 { 8 } else { 1 << 29 };
             let base = [next(range), next(range), next(range)];
             let steps: [Lanes<i32>; 3] = std::array::from_fn(|_| std::array::from_fn(|_| next(range)));
-            let mut expected = 0u16;
-            for i in 0..16 {
-                let inside = (0..3).all(|k| base[k] + steps[k][i] >= 0);
-                expected |= (inside as u16) << i;
-            }
+            let inside = |i: usize| (0..3).all(|k| base[k] + steps[k][i] >= 0);
+            let expected = (0..16).fold(0u16, |m, i| m | (inside(i) as u16) << i);
             for &level in Level::ALL.iter().filter(|l| l.available()) {
                 let level = Supported::new(level).expect("available");
                 assert_eq!(<i32 as Lane>::inside(level, base, &steps), expected, "round {round}");
