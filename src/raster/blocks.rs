@@ -44,7 +44,7 @@
 
 use super::walk::stipple_mask;
 use crate::framebuffer::Rect;
-use crate::simd::dispatch::sign_mask16;
+use crate::simd::dispatch::{inside_mask16, sign_mask16};
 use crate::simd::Supported;
 use std::ops::{Add, BitOr};
 
@@ -149,6 +149,13 @@ trait Lane: Copy + Default + Add<Output = Self> + BitOr<Output = Self> {
     fn shl(self, n: u32) -> Self;
     /// The negative lanes of `v` as a mask (lane `i` as bit `i`).
     fn negatives(level: Supported, v: &Lanes<Self>) -> u16;
+    /// The lanes `i` (as bit `i`) inside all three edges: `base[k] + steps[k][i]` not
+    /// negative for every `k`, the sign of the OR of the three.
+    #[inline(always)]
+    fn inside(level: Supported, base: [Self; 3], steps: &[Lanes<Self>; 3]) -> u16 {
+        let [s0, s1, s2] = steps;
+        !Self::negatives(level, &lanes(|j| (base[0] + s0[j]) | (base[1] + s1[j]) | (base[2] + s2[j])))
+    }
 }
 
 impl Lane for i32 {
@@ -180,6 +187,12 @@ impl Lane for i32 {
             words[i] = v[i] as u32;
         }
         sign_mask16(level, &words)
+    }
+    /// In explicit vectors (`simd::dispatch::inside_mask16`): the plain loop stayed 48 scalar
+    /// adds and ORs.
+    #[inline(always)]
+    fn inside(level: Supported, base: [Self; 3], steps: &[Lanes<Self>; 3]) -> u16 {
+        inside_mask16(level, base, steps)
     }
 }
 
@@ -265,9 +278,8 @@ fn extremes(e: &Reduced, size: i64) -> (i64, i64) {
 /// largest/smallest over a sub-block, `ab` their steps from one sub-block to the next.
 #[inline(always)]
 fn sub_blocks<T: Lane>(level: Supported, hi: [T; 3], lo: [T; 3], ab: [(T, T); 3]) -> (u16, u16) {
-    let [s0, s1, s2] = map3(ab, |(a, b)| steps(a, b));
-    let at = |base: [T; 3]| lanes(|i| (base[0] + s0[i]) | (base[1] + s1[i]) | (base[2] + s2[i]));
-    (!T::negatives(level, &at(hi)), !T::negatives(level, &at(lo)))
+    let s = map3(ab, |(a, b)| steps(a, b));
+    (T::inside(level, hi, &s), T::inside(level, lo, &s))
 }
 
 /// The 16 sub-blocks of side `size` of the block at `(x, y)` that meet `area`.
@@ -381,9 +393,8 @@ impl<'a, T: Lane, F: FnMut(i32, i32, u16)> Walker<'a, T, F> {
         let area = self.area;
         let (x, y) = (area.x0 & !3, area.y0 & !3);
         let base = self.corner(x, y);
-        let [s0, s1, s2] = map3(self.ab, |(a, b)| steps(a, b));
-        let mut mask = !T::negatives(self.level, &lanes(|j| (base[0] + s0[j]) | (base[1] + s1[j]) | (base[2] + s2[j])));
-        mask &= rect_mask(area, x, y);
+        let s = map3(self.ab, |(a, b)| steps(a, b));
+        let mask = T::inside(self.level, base, &s) & rect_mask(area, x, y);
         self.emit_masked(x, y, mask);
     }
 
@@ -395,15 +406,14 @@ impl<'a, T: Lane, F: FnMut(i32, i32, u16)> Walker<'a, T, F> {
         let area = self.area;
         let (x, y) = (area.x0 & !3, area.y0 & !3);
         let base = self.corner(x, y);
-        let [s0, s1, s2] = map3(self.ab, |(a, b)| steps(a, b));
+        let s = map3(self.ab, |(a, b)| steps(a, b));
         let ab4 = self.ab_shl(2);
         let (columns, rows) = (1 + (area.x1 - 1 - x) / 4, 1 + (area.y1 - 1 - y) / 4);
         for r in 0..rows {
             for c in 0..columns {
                 let b: [T; 3] = index3(|k| base[k] + ab4[k].0.times(c) + ab4[k].1.times(r));
-                let lanes = lanes(|j| (b[0] + s0[j]) | (b[1] + s1[j]) | (b[2] + s2[j]));
                 let (bx, by) = (x + 4 * c, y + 4 * r);
-                let mask = !T::negatives(self.level, &lanes) & rect_mask(area, bx, by);
+                let mask = T::inside(self.level, b, &s) & rect_mask(area, bx, by);
                 self.emit_masked(bx, by, mask);
             }
         }
@@ -483,6 +493,7 @@ impl<'a, T: Lane, F: FnMut(i32, i32, u16)> Walker<'a, T, F> {
             (visit & mask, inside & mask)
         };
         let within = x >= area.x0 && y >= area.y0 && x + 16 <= area.x1 && y + 16 <= area.y1;
+        let s = map3(self.ab, |(a, b)| steps(a, b));
         let mut bits = visit;
         while bits != 0 {
             let i = bits.trailing_zeros() as usize;
@@ -493,8 +504,7 @@ impl<'a, T: Lane, F: FnMut(i32, i32, u16)> Walker<'a, T, F> {
                 0xffff
             } else {
                 let base: [T; 3] = index3(|k| corner[k] + ab4[k].0.times(c) + ab4[k].1.times(r));
-                let [s0, s1, s2] = map3(self.ab, |(a, b)| steps(a, b));
-                !T::negatives(self.level, &lanes(|j| (base[0] + s0[j]) | (base[1] + s1[j]) | (base[2] + s2[j])))
+                T::inside(self.level, base, &s)
             };
             if !within && (bx < area.x0 || by < area.y0 || bx + 4 > area.x1 || by + 4 > area.y1) {
                 mask &= rect_mask(area, bx, by);
@@ -524,6 +534,35 @@ mod tests {
         })
         .run();
         seen
+    }
+
+    #[test]
+    fn inside_masks_are_the_scalar_signs_at_every_level() {
+        // Random bases and steps with sums of every sign (zero included, which is inside),
+        // at each SIMD level the machine has: the mask of the lanes inside all three edges.
+        use crate::simd::{Level, Supported};
+        let mut seed = 0x2545_f491_4f6c_dd1du64;
+        let mut next = |range: i32| {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed % (2 * range as u64 + 1)) as i32 - range
+        };
+        for round in 0..2000 {
+            let range = if round % 2 == 0 { 8 } else { 1 << 29 };
+            let base = [next(range), next(range), next(range)];
+            let steps: [Lanes<i32>; 3] = std::array::from_fn(|_| std::array::from_fn(|_| next(range)));
+            let inside = |i: usize| (0..3).all(|k| base[k] + steps[k][i] >= 0);
+            let expected = (0..16).fold(0u16, |m, i| m | (inside(i) as u16) << i);
+            for &level in Level::ALL.iter().filter(|l| l.available()) {
+                let level = Supported::new(level).expect("available");
+                assert_eq!(<i32 as Lane>::inside(level, base, &steps), expected, "round {round}");
+                assert_eq!(
+                    <i64 as Lane>::inside(level, base.map(i64::from), &steps.map(|s| s.map(i64::from))),
+                    expected
+                );
+            }
+        }
     }
 
     #[test]

@@ -241,6 +241,88 @@ unsafe fn sign_mask16_avx2(m: &[u32; 16]) -> u16 {
     (_mm256_movemask_ps(lo) as u32 | (_mm256_movemask_ps(hi) as u32) << 8) as u16
 }
 
+/// The lanes `i` where `(base[0] + steps[0][i]) | (base[1] + steps[1][i]) | (base[2] +
+/// steps[2][i])` is not negative (bit `i`): the pixels or sub-blocks of a 4×4 block inside
+/// all three edges of a triangle, in 32-bit lanes whose sums the caller knows do not
+/// overflow (`raster::blocks`). Written out per level: LLVM left the plain loop as 48
+/// scalar adds and ORs with the lanes inserted one by one into vectors for the movemask
+/// (the walk of a small triangle's blocks). The adds wrap as the scalar ones do in release
+/// builds; without overflow every level gives the exact sums, so the same mask.
+#[inline(always)]
+pub fn inside_mask16(level: Supported, base: [i32; 3], steps: &[[i32; 16]; 3]) -> u16 {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if level.0 == Level::Avx2 {
+            // SAFETY: a `Supported` holds only a level the CPU was detected to have: AVX2.
+            return unsafe { inside_mask16_avx2(base, steps) };
+        }
+        inside_mask16_sse2(base, steps)
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        let _ = level;
+        let mut bits = 0u16;
+        for i in 0..16 {
+            let v = base[0].wrapping_add(steps[0][i])
+                | base[1].wrapping_add(steps[1][i])
+                | base[2].wrapping_add(steps[2][i]);
+            bits |= ((v >= 0) as u16) << i;
+        }
+        bits
+    }
+}
+
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+fn inside_mask16_sse2(base: [i32; 3], steps: &[[i32; 16]; 3]) -> u16 {
+    use std::arch::x86_64::{
+        __m128i, _mm_add_epi32, _mm_loadu_si128, _mm_movemask_epi8, _mm_or_si128, _mm_packs_epi16, _mm_packs_epi32,
+        _mm_set1_epi32,
+    };
+    let p = [0, 1, 2].map(|k| steps[k].as_ptr() as *const __m128i);
+    // SAFETY: each row of `steps` is 16 i32 (64 bytes): the unaligned 16-byte loads at
+    // quarters 0..4 read inside it; SSE2 is the x86-64 baseline.
+    unsafe {
+        let b = [_mm_set1_epi32(base[0]), _mm_set1_epi32(base[1]), _mm_set1_epi32(base[2])];
+        let quarter = |q: usize| {
+            let e0 = _mm_add_epi32(b[0], _mm_loadu_si128(p[0].add(q)));
+            let e1 = _mm_add_epi32(b[1], _mm_loadu_si128(p[1].add(q)));
+            let e2 = _mm_add_epi32(b[2], _mm_loadu_si128(p[2].add(q)));
+            _mm_or_si128(_mm_or_si128(e0, e1), e2)
+        };
+        // Signed packs keep each lane's sign; the byte movemask gathers them.
+        let lo = _mm_packs_epi32(quarter(0), quarter(1));
+        let hi = _mm_packs_epi32(quarter(2), quarter(3));
+        !(_mm_movemask_epi8(_mm_packs_epi16(lo, hi)) as u16)
+    }
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+unsafe fn inside_mask16_avx2(base: [i32; 3], steps: &[[i32; 16]; 3]) -> u16 {
+    use std::arch::x86_64::{
+        __m256i, _mm256_add_epi32, _mm256_castsi256_ps, _mm256_loadu_si256, _mm256_movemask_ps, _mm256_or_si256,
+        _mm256_set1_epi32,
+    };
+    let b = [_mm256_set1_epi32(base[0]), _mm256_set1_epi32(base[1]), _mm256_set1_epi32(base[2])];
+    let p = [0, 1, 2].map(|k| steps[k].as_ptr() as *const __m256i);
+    let mut bits = 0u32;
+    for h in 0..2 {
+        // SAFETY: each row of `steps` is 16 i32 (64 bytes): the unaligned 32-byte loads at
+        // halves 0 and 1 read inside it.
+        let (s0, s1, s2) = unsafe {
+            (_mm256_loadu_si256(p[0].add(h)), _mm256_loadu_si256(p[1].add(h)), _mm256_loadu_si256(p[2].add(h)))
+        };
+        let v = _mm256_or_si256(
+            _mm256_or_si256(_mm256_add_epi32(b[0], s0), _mm256_add_epi32(b[1], s1)),
+            _mm256_add_epi32(b[2], s2),
+        );
+        bits |= (_mm256_movemask_ps(_mm256_castsi256_ps(v)) as u32) << (8 * h);
+    }
+    !(bits as u16)
+}
+
 /// Pixel types of 32 bits with no padding and every bit pattern valid, which the row
 /// helpers move as plain 32-bit words.
 pub trait Word32: Copy + sealed::Sealed {}

@@ -7,7 +7,7 @@ use super::geometry::Geometry;
 use super::line::{emit_clip_line, LineStipple};
 use super::outline::{decompose_outlines, Outline};
 use super::point::emit_point;
-use super::triangle::{emit_shaded_triangle, FlatColors};
+use super::triangle::{emit_shaded_triangle, emit_shaded_triangle_with, FlatColors};
 use crate::gl::enums::*;
 use crate::gl::types::GLenum;
 use crate::setup::Scene;
@@ -89,8 +89,8 @@ pub fn draw(
                 let (va, vb, vc) = (&clip_vertices[a], &clip_vertices[b], &clip_vertices[c]);
                 let viewport = &geometry.viewport;
                 let w = [viewport.window(va), viewport.window(vb), viewport.window(vc)];
-                let back = [va.back_colors, vb.back_colors, vc.back_colors];
-                emit_shaded_triangle(scene, state_index, geometry, &w, back, flat);
+                let back = || [va.back_colors, vb.back_colors, vc.back_colors];
+                emit_shaded_triangle_with(scene, state_index, geometry, &w, back, flat);
             } else {
                 poly.clear();
                 poly.extend([clip_vertices[a], clip_vertices[b], clip_vertices[c]]);

@@ -35,6 +35,21 @@ pub fn emit_shaded_triangle(
     back: [[[f32; 4]; 2]; 3],
     flat: Option<FlatColors>,
 ) {
+    emit_shaded_triangle_with(scene, state, g, w, || back, flat)
+}
+
+/// [`emit_shaded_triangle`] with the back colors fetched by `back` only when the triangle
+/// uses them (copying them for every triangle of a draw without two-sided lighting cost
+/// a small triangle's setup more than its culling).
+#[inline(always)]
+pub fn emit_shaded_triangle_with(
+    scene: &mut Scene,
+    state: u32,
+    g: &Geometry,
+    w: &[WindowVertex; 3],
+    back: impl FnOnce() -> [[[f32; 4]; 2]; 3],
+    flat: Option<FlatColors>,
+) {
     let use_back = g.two_side && !faces_front(g.front_ccw, area2(w));
     let flat = flat.map(|f| if use_back { f.back } else { f.front });
     if !use_back && flat.is_none() {
@@ -43,7 +58,7 @@ pub fn emit_shaded_triangle(
     }
     let mut w = *w;
     if use_back {
-        for (c, b) in w.iter_mut().zip(back) {
+        for (c, b) in w.iter_mut().zip(back()) {
             (c.color, c.secondary_color) = (b[0], b[1]);
         }
     }
@@ -77,8 +92,15 @@ pub fn emit_triangle(scene: &mut Scene, state: u32, g: &Geometry, w: &[WindowVer
     // pixels) is dropped before its planes are made.
     let Some(setup) = TriangleSetup::new(w.map(|p| [p.x, p.y])) else { return };
     scene.add_triangle(state, setup, |setup| {
-        let (offset, values, n) = offset_and_varyings(g, w);
-        let mut job = TriangleJob::with_setup(setup, g.accuracy, w, flat, offset, &values[..n]);
+        let offset = depth_offset(g, w);
+        // Without varyings (plain coloured meshes) no table of their values is made: zeroing
+        // and returning it was a fifth of a small triangle's job in `perf`.
+        let mut job = if g.varyings.is_empty() {
+            TriangleJob::with_setup(setup, g.accuracy, w, flat, offset, &[])
+        } else {
+            let (values, n) = varying_values(g, w);
+            TriangleJob::with_setup(setup, g.accuracy, w, flat, offset, &values[..n])
+        };
         job.front_facing = front;
         job
     });
@@ -88,13 +110,24 @@ pub fn emit_triangle(scene: &mut Scene, state: u32, g: &Geometry, w: &[WindowVer
 /// interpolates (the first of the `MAX_VARYINGS` rows).
 #[inline(always)]
 fn offset_and_varyings(g: &Geometry, w: &[WindowVertex; 3]) -> (f32, [[f32; 3]; MAX_VARYINGS], usize) {
-    let offset =
-        g.offset.map_or(0.0, |(factor, units)| clamp_offset(polygon_offset(w, factor, units, g.depth), g.offset_clamp));
-    // On the stack: setting up a triangle allocates nothing.
+    let (values, n) = varying_values(g, w);
+    (depth_offset(g, w), values, n)
+}
+
+/// A triangle's polygon offset (0 without one).
+#[inline(always)]
+fn depth_offset(g: &Geometry, w: &[WindowVertex; 3]) -> f32 {
+    g.offset.map_or(0.0, |(factor, units)| clamp_offset(polygon_offset(w, factor, units, g.depth), g.offset_clamp))
+}
+
+/// The values at a triangle's corners of the varyings the draw interpolates (the first of
+/// the `MAX_VARYINGS` rows), on the stack: setting up a triangle allocates nothing.
+#[inline(always)]
+fn varying_values(g: &Geometry, w: &[WindowVertex; 3]) -> ([[f32; 3]; MAX_VARYINGS], usize) {
     let mut values = [[0.0f32; 3]; MAX_VARYINGS];
     let n = g.varyings.len().min(MAX_VARYINGS);
     for (value, a) in values.iter_mut().zip(&g.varyings) {
         *value = [0, 1, 2].map(|i| a.of(&w[i]));
     }
-    (offset, values, n)
+    (values, n)
 }
