@@ -22,6 +22,7 @@ pub mod diagnostics;
 pub mod fold;
 pub mod hir;
 pub mod lex;
+pub mod link;
 pub mod parse;
 pub mod preprocess;
 
