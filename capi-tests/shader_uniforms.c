@@ -91,6 +91,15 @@ static void links(void)
      * Mesa finds it at compile time and tessera at link time: not tested here). Mesa names
      * the functions of the cycle in an order of its own, so only the log's start is
      * compared. */
+    /* Within one shader, recursion is a compile error (the cycle's functions named in an
+     * order of Mesa's own: only the first words and the reason are compared). */
+    GLuint alone = shader(GL_VERTEX_SHADER, "float f(float x) { return f(x); }" VS("gl_PointSize = f(1.0);"));
+    GLint compiled = -1;
+    glGetShaderiv(alone, GL_COMPILE_STATUS, &compiled);
+    char compile_log[256] = "";
+    glGetShaderInfoLog(alone, sizeof compile_log, NULL, compile_log);
+    capi_value("compile.recursion", "compiled=%d log=%s", compiled, first_line(compile_log));
+    glDeleteShader(alone);
     GLuint recursive = glCreateProgram();
     glAttachShader(recursive, shader(GL_VERTEX_SHADER, "void g(); void f() { g(); }" VS("f();")));
     glAttachShader(recursive, shader(GL_VERTEX_SHADER, "void f(); void g() { f(); }"));

@@ -770,7 +770,17 @@ impl ProgramInUse {
 fn compile(stage: Stage, source: &str) -> (Option<Arc<Checked>>, String) {
     let mut log = crate::glsl::InfoLog::default();
     let checked = crate::glsl::compile_shader(source, stage, &crate::glsl::Options::default(), &mut log);
-    (checked.filter(|_| !log.has_errors()).map(Arc::new), log.text())
+    let Some(checked) = checked.filter(|_| !log.has_errors()).map(Arc::new) else { return (None, log.text()) };
+    // Recursion within the shader is a compile error, as Mesa reports it.
+    let recursive = link::recursive_functions(&checked);
+    if recursive.is_empty() {
+        return (Some(checked), log.text());
+    }
+    let mut text = log.text();
+    for signature in recursive {
+        text.push_str(&format!("0:0(0): error: function `{signature}' has static recursion\n"));
+    }
+    (None, text)
 }
 
 #[cfg(test)]

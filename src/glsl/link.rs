@@ -26,7 +26,7 @@ use super::hir::{Checked, Constant, Expr, ExprKind, FunctionId, Scalar, Stage, S
 use super::lex::Sampler;
 use crate::gl::enums::*;
 use crate::gl::types::GLenum;
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 use std::fmt::Write as _;
 use std::sync::Arc;
 
@@ -238,7 +238,7 @@ struct Reach<'a> {
     uses: HashMap<Var, Use>,
     /// Use order of variables (first use first).
     order: Vec<Var>,
-    functions: Vec<Func>,
+    functions: HashSet<Func>,
     errors: Vec<String>,
 }
 
@@ -265,7 +265,7 @@ impl<'a> Reach<'a> {
             definitions,
             uses: HashMap::new(),
             order: Vec::new(),
-            functions: Vec::new(),
+            functions: HashSet::new(),
             errors: Vec::new(),
         }
     }
@@ -293,29 +293,32 @@ impl<'a> Reach<'a> {
         found
     }
 
-    /// Walks `main` and everything it calls, recording uses and the call graph's cycles.
+    /// Walks `main` and everything it calls, recording uses and the functions on cycles of
+    /// the call graph.
     fn walk_from(&mut self, main: Func) {
-        let mut state: HashMap<Func, bool> = HashMap::new(); // false: on the stack, true: done
+        let mut done: HashSet<Func> = HashSet::new();
+        let mut stack: Vec<Func> = Vec::new();
         let mut recursive: Vec<Func> = Vec::new();
-        self.visit(main, &mut state, &mut recursive);
+        self.visit(main, &mut done, &mut stack, &mut recursive);
         for f in recursive.iter().rev() {
             self.errors.push(format!("function `{}' has static recursion.\n", signature(&self.shaders[f.0], f.1)));
         }
     }
 
-    fn visit(&mut self, f: Func, state: &mut HashMap<Func, bool>, recursive: &mut Vec<Func>) {
-        match state.get(&f) {
-            Some(true) => return,
-            Some(false) => {
-                if !recursive.contains(&f) {
-                    recursive.push(f);
+    fn visit(&mut self, f: Func, done: &mut HashSet<Func>, stack: &mut Vec<Func>, recursive: &mut Vec<Func>) {
+        if let Some(at) = stack.iter().position(|&g| g == f) {
+            for &g in &stack[at..] {
+                if !recursive.contains(&g) {
+                    recursive.push(g);
                 }
-                return;
             }
-            None => {}
+            return;
         }
-        state.insert(f, false);
-        self.functions.push(f);
+        if done.contains(&f) {
+            return;
+        }
+        stack.push(f);
+        self.functions.insert(f);
         let shaders = self.shaders;
         let mut calls = Vec::new();
         if let Some(body) = &shaders[f.0].functions[f.1].body {
@@ -325,10 +328,11 @@ impl<'a> Reach<'a> {
         }
         for call in calls {
             if let Some(target) = self.resolve((f.0, call)) {
-                self.visit(target, state, recursive);
+                self.visit(target, done, stack, recursive);
             }
         }
-        state.insert(f, true);
+        stack.pop();
+        done.insert(f);
     }
 
     fn stmt(&mut self, s: usize, stmt: &Stmt, calls: &mut Vec<FunctionId>) {
@@ -437,6 +441,41 @@ impl<'a> Reach<'a> {
             }
         }
     }
+}
+
+/// The signatures (`float f(float)`) of the functions of one shader that call themselves,
+/// directly or not, in definition order: GLSL has no recursion, and Mesa refuses it when
+/// compiling a shader (recursion through several shaders is a link error).
+pub fn recursive_functions(shader: &Arc<Checked>) -> Vec<String> {
+    let shaders = std::slice::from_ref(shader);
+    let mut reach = Reach::new(shaders, shader.stage);
+    let callees: Vec<Vec<FunctionId>> = shader
+        .functions
+        .iter()
+        .map(|f| {
+            let mut calls = Vec::new();
+            for stmt in f.body.iter().flatten() {
+                reach.stmt(0, stmt, &mut calls);
+            }
+            calls
+        })
+        .collect();
+    (0..shader.functions.len())
+        .filter(|&f| {
+            let mut seen = vec![false; callees.len()];
+            let mut stack = callees[f].clone();
+            while let Some(g) = stack.pop() {
+                if g == f {
+                    return true;
+                }
+                if !std::mem::replace(&mut seen[g], true) {
+                    stack.extend_from_slice(&callees[g]);
+                }
+            }
+            false
+        })
+        .map(|f| signature(shader, f))
+        .collect()
 }
 
 /// One global of the program, merged over the shaders that declare it.
@@ -817,4 +856,127 @@ fn attributes(
         list[i].location = Some(start as u32);
     }
     Ok(list)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::glsl::{compile_shader, InfoLog, Options};
+
+    fn compiled(stage: Stage, source: &str) -> Arc<Checked> {
+        let mut log = InfoLog::default();
+        let checked = compile_shader(source, stage, &Options::default(), &mut log);
+        Arc::new(checked.unwrap_or_else(|| panic!("{}", log.text())))
+    }
+
+    fn vertex(source: &str) -> Arc<Checked> {
+        compiled(Stage::Vertex, source)
+    }
+
+    fn fragment(source: &str) -> Arc<Checked> {
+        compiled(Stage::Fragment, source)
+    }
+
+    #[test]
+    fn uniform_leaves_locations_and_words() {
+        let v = vertex(
+            "#version 120\nstruct S { float a; vec3 b[2]; };\nuniform S s[2];\nuniform mat2x3 m;\n\
+             uniform float unused;\nuniform vec2 init = vec2(3.0, 4.0);\n\
+             void main() { gl_Position = vec4(s[1].b[1], s[0].a) + vec4(m[1], 1.0) + init.xyxy; }",
+        );
+        let linked = link(&[v], &[]).unwrap();
+        let names: Vec<_> = linked.uniforms.iter().map(|u| (u.name.as_str(), u.size, u.location)).collect();
+        assert_eq!(
+            names,
+            [
+                ("s[0].a", 1, Some(0)),
+                ("s[0].b[0]", 2, Some(1)),
+                ("s[1].a", 1, Some(3)),
+                ("s[1].b[0]", 2, Some(4)),
+                ("m", 1, Some(6)),
+                ("init", 1, Some(7)),
+            ]
+        );
+        assert_eq!(linked.uniform_location("s[1].b"), Some(4));
+        assert_eq!(linked.uniform_location("s[1].b[1]"), Some(5));
+        assert_eq!(linked.uniform_location("s[1].b[2]"), None);
+        assert_eq!(linked.uniform_location("m[0]"), Some(6), "[0] names a non-array too");
+        assert_eq!(linked.uniform_location("s[1].b[01]"), None);
+        assert_eq!(linked.uniform_location("unused"), None);
+        // Words: 1 + 6 + 1 + 6 (the structs), 6 for the matrix, then the initializer.
+        let (u, first) = linked.element("s[1].b[1]").unwrap();
+        assert_eq!((u.gl_type(), first), (GL_FLOAT_VEC3, 7 + 1 + 3));
+        let (_, first) = linked.element("init").unwrap();
+        assert_eq!(&linked.initial_values[first..first + 2], &[3.0f32.to_bits(), 4.0f32.to_bits()]);
+    }
+
+    #[test]
+    fn constant_indices_shrink_top_level_arrays_and_builtins_have_no_location() {
+        let v = vertex(
+            "uniform float a[8]; uniform float d[8];\n\
+             void main() { gl_Position = vec4(a[2] + d[int(gl_Vertex.x)]) + gl_LightSource[1].diffuse; }",
+        );
+        let linked = link(&[v], &[]).unwrap();
+        let find = |n: &str| linked.uniforms.iter().find(|u| u.name == n).unwrap();
+        assert_eq!(find("a[0]").size, 3);
+        assert_eq!(find("d[0]").size, 8);
+        assert_eq!(find("gl_LightSource[1].diffuse").location, None);
+        assert!(linked.uniforms.iter().all(|u| !u.name.starts_with("gl_LightSource[2]")));
+        assert_eq!(linked.uniform_location("gl_LightSource[1].diffuse"), None);
+    }
+
+    #[test]
+    fn attributes_bound_then_largest_first_with_gl_vertex_on_zero() {
+        let v = vertex(
+            "attribute vec4 a; attribute mat3 m; attribute vec2 b; attribute float unused;\n\
+             void main() { gl_Position = gl_Vertex + a + vec4(m[0], b.x); }",
+        );
+        let linked = link(&[v.clone()], &[]).unwrap();
+        let at = |l: &Linked, n: &str| l.attribute_location(n);
+        assert_eq!((at(&linked, "m"), at(&linked, "a"), at(&linked, "b")), (Some(1), Some(4), Some(5)));
+        assert_eq!(at(&linked, "gl_Vertex"), None);
+        assert_eq!(at(&linked, "unused"), None);
+        let linked = link(&[v], &[("b".into(), 1), ("a".into(), 9)]).unwrap();
+        assert_eq!((at(&linked, "m"), at(&linked, "a"), at(&linked, "b")), (Some(2), Some(9), Some(1)));
+    }
+
+    #[test]
+    fn link_errors_are_worded_as_mesa_words_them() {
+        let error = |shaders: &[Arc<Checked>]| link(shaders, &[]).unwrap_err();
+        assert_eq!(error(&[vertex("void f() {}")]), "error: vertex shader lacks `main'\n");
+        let main = "void main() { gl_Position = vec4(0.0); }";
+        assert_eq!(error(&[vertex(main), vertex(main)]), "error: function `main' is multiply defined\n");
+        assert_eq!(error(&[vertex("void f(); void main() { f(); }")]), "error: unresolved reference to function `f'\n");
+        assert_eq!(
+            error(&[
+                vertex("uniform float u;\nvoid main() { gl_Position = vec4(u); }"),
+                fragment("uniform int u; void main() { gl_FragColor = vec4(u); }")
+            ]),
+            "error: uniform `u' declared as type `int' and type `float'\n"
+        );
+        assert_eq!(
+            error(&[
+                vertex("void main() { gl_Position = vec4(0.0); }"),
+                fragment("varying vec2 c; void main() { gl_FragColor = c.xyxy; }")
+            ]),
+            "error: fragment shader varying c not written by vertex shader\n.".repeat(2)
+        );
+        assert_eq!(
+            error(&[vertex("void g(); void f() { g(); } void main() { f(); }"), vertex("void f(); void g() { f(); }")]),
+            "error: function `void g()' has static recursion.\nerror: function `void f()' has static recursion.\n"
+        );
+        // Prototype resolved in another shader of the stage; a fragment shader alone links.
+        assert!(link(
+            &[vertex("void f(); void main() { f(); }"), vertex("void f() { gl_Position = vec4(1.0); }")],
+            &[]
+        )
+        .is_ok());
+        assert!(link(&[fragment("void main() { gl_FragColor = gl_Color; }")], &[]).is_ok());
+    }
+
+    #[test]
+    fn recursion_within_one_shader_is_found_in_definition_order() {
+        let v = vertex("float f(float x) { return f(x); } void h() {} void main() { h(); }");
+        assert_eq!(recursive_functions(&v), ["float f(float)"]);
+    }
 }
