@@ -253,25 +253,21 @@ pub unsafe extern "C" fn glGetUniformLocation(program: GLuint, name: *const GLch
     with_context(-1, |ctx| ctx.uniform_location(program, &name))
 }
 
-/// glGetActiveUniform and glGetActiveAttrib: writes entry `index`'s name, size and type.
+/// glGetActiveUniform and glGetActiveAttrib: writes an entry's name, size and type (nothing
+/// for `None`, a refused call).
 ///
 /// # Safety
 /// A non-null `name` must have room for `buffer_size` bytes; `length`, `size` and `kind`
 /// for one value each (or be NULL).
-#[allow(clippy::too_many_arguments)]
-unsafe fn active_variable(
-    program: GLuint,
-    index: GLuint,
+unsafe fn write_active(
+    entry: Option<(String, GLint, GLenum)>,
     buffer_size: GLsizei,
     length: *mut GLsizei,
     size: *mut GLint,
     kind: *mut GLenum,
     name: *mut GLchar,
-    uniform: bool,
 ) {
-    let Some((text, count, ty)) = query(|ctx| ctx.active_variable(program, index, buffer_size, uniform)) else {
-        return;
-    };
+    let Some((text, count, ty)) = entry else { return };
     // SAFETY: as this function's contract.
     unsafe { write_string(&text, buffer_size, length, name) };
     // SAFETY: the caller provides room for one value each (or passes NULL).
@@ -294,8 +290,9 @@ pub unsafe extern "C" fn glGetActiveUniform(
     type_: *mut GLenum,
     name: *mut GLchar,
 ) {
+    let entry = query(|ctx| ctx.active_variable(program, index, bufSize, true));
     // SAFETY: as this function's contract.
-    unsafe { active_variable(program, index, bufSize, length, size, type_, name, true) }
+    unsafe { write_active(entry, bufSize, length, size, type_, name) }
 }
 
 /// # Safety
@@ -311,6 +308,7 @@ pub unsafe extern "C" fn glGetActiveAttrib(
     type_: *mut GLenum,
     name: *mut GLchar,
 ) {
+    let entry = query(|ctx| ctx.active_variable(program, index, bufSize, false));
     // SAFETY: as this function's contract.
-    unsafe { active_variable(program, index, bufSize, length, size, type_, name, false) }
+    unsafe { write_active(entry, bufSize, length, size, type_, name) }
 }

@@ -7,11 +7,6 @@ use super::{query, record_or_run, with_context};
 use crate::context::shader_objects::UniformForm;
 use crate::gl::types::*;
 
-/// Sets `count` elements of `form` at `location` from words already read.
-fn set(location: GLint, count: GLsizei, form: UniformForm, values: Vec<u32>) {
-    record_or_run(move |ctx| ctx.set_uniform(location, count, form, &values))
-}
-
 /// Reads the caller's `count` elements of `form` at `value` as words, no more than the
 /// uniform at `location` can take (a wrong count is refused by the context without them).
 ///
@@ -40,42 +35,48 @@ fn int_bits(i: GLint) -> u32 {
 
 #[no_mangle]
 pub extern "C" fn glUniform1f(location: GLint, v0: GLfloat) {
-    set(location, 1, UniformForm::Float(1), vec![v0.to_bits()])
+    record_or_run(move |ctx| ctx.set_uniform(location, 1, UniformForm::Float(1), &[v0.to_bits()]))
 }
 
 #[no_mangle]
 pub extern "C" fn glUniform1i(location: GLint, v0: GLint) {
-    set(location, 1, UniformForm::Int(1), vec![v0 as u32])
+    record_or_run(move |ctx| ctx.set_uniform(location, 1, UniformForm::Int(1), &[v0 as u32]))
 }
 
 #[no_mangle]
 pub extern "C" fn glUniform2f(location: GLint, v0: GLfloat, v1: GLfloat) {
-    set(location, 1, UniformForm::Float(2), vec![v0.to_bits(), v1.to_bits()])
+    record_or_run(move |ctx| ctx.set_uniform(location, 1, UniformForm::Float(2), &[v0.to_bits(), v1.to_bits()]))
 }
 
 #[no_mangle]
 pub extern "C" fn glUniform2i(location: GLint, v0: GLint, v1: GLint) {
-    set(location, 1, UniformForm::Int(2), vec![v0 as u32, v1 as u32])
+    record_or_run(move |ctx| ctx.set_uniform(location, 1, UniformForm::Int(2), &[v0 as u32, v1 as u32]))
 }
 
 #[no_mangle]
 pub extern "C" fn glUniform3f(location: GLint, v0: GLfloat, v1: GLfloat, v2: GLfloat) {
-    set(location, 1, UniformForm::Float(3), vec![v0.to_bits(), v1.to_bits(), v2.to_bits()])
+    record_or_run(move |ctx| {
+        ctx.set_uniform(location, 1, UniformForm::Float(3), &[v0.to_bits(), v1.to_bits(), v2.to_bits()])
+    })
 }
 
 #[no_mangle]
 pub extern "C" fn glUniform3i(location: GLint, v0: GLint, v1: GLint, v2: GLint) {
-    set(location, 1, UniformForm::Int(3), vec![v0 as u32, v1 as u32, v2 as u32])
+    record_or_run(move |ctx| ctx.set_uniform(location, 1, UniformForm::Int(3), &[v0 as u32, v1 as u32, v2 as u32]))
 }
 
 #[no_mangle]
 pub extern "C" fn glUniform4f(location: GLint, v0: GLfloat, v1: GLfloat, v2: GLfloat, v3: GLfloat) {
-    set(location, 1, UniformForm::Float(4), vec![v0.to_bits(), v1.to_bits(), v2.to_bits(), v3.to_bits()])
+    record_or_run(move |ctx| {
+        ctx.set_uniform(location, 1, UniformForm::Float(4), &[v0.to_bits(), v1.to_bits(), v2.to_bits(), v3.to_bits()])
+    })
 }
 
 #[no_mangle]
 pub extern "C" fn glUniform4i(location: GLint, v0: GLint, v1: GLint, v2: GLint, v3: GLint) {
-    set(location, 1, UniformForm::Int(4), vec![v0 as u32, v1 as u32, v2 as u32, v3 as u32])
+    record_or_run(move |ctx| {
+        ctx.set_uniform(location, 1, UniformForm::Int(4), &[v0 as u32, v1 as u32, v2 as u32, v3 as u32])
+    })
 }
 
 /// # Safety
@@ -85,7 +86,7 @@ pub unsafe extern "C" fn glUniform1fv(location: GLint, count: GLsizei, value: *c
     let form = UniformForm::Float(1);
     // SAFETY: as this function's contract.
     let values = unsafe { read_words(location, count, form, value, float_bits) };
-    set(location, count, form, values)
+    record_or_run(move |ctx| ctx.set_uniform(location, count, form, &values))
 }
 
 /// # Safety
@@ -95,7 +96,7 @@ pub unsafe extern "C" fn glUniform1iv(location: GLint, count: GLsizei, value: *c
     let form = UniformForm::Int(1);
     // SAFETY: as this function's contract.
     let values = unsafe { read_words(location, count, form, value, int_bits) };
-    set(location, count, form, values)
+    record_or_run(move |ctx| ctx.set_uniform(location, count, form, &values))
 }
 
 /// # Safety
@@ -105,7 +106,7 @@ pub unsafe extern "C" fn glUniform2fv(location: GLint, count: GLsizei, value: *c
     let form = UniformForm::Float(2);
     // SAFETY: as this function's contract.
     let values = unsafe { read_words(location, count, form, value, float_bits) };
-    set(location, count, form, values)
+    record_or_run(move |ctx| ctx.set_uniform(location, count, form, &values))
 }
 
 /// # Safety
@@ -115,7 +116,7 @@ pub unsafe extern "C" fn glUniform2iv(location: GLint, count: GLsizei, value: *c
     let form = UniformForm::Int(2);
     // SAFETY: as this function's contract.
     let values = unsafe { read_words(location, count, form, value, int_bits) };
-    set(location, count, form, values)
+    record_or_run(move |ctx| ctx.set_uniform(location, count, form, &values))
 }
 
 /// # Safety
@@ -125,7 +126,7 @@ pub unsafe extern "C" fn glUniform3fv(location: GLint, count: GLsizei, value: *c
     let form = UniformForm::Float(3);
     // SAFETY: as this function's contract.
     let values = unsafe { read_words(location, count, form, value, float_bits) };
-    set(location, count, form, values)
+    record_or_run(move |ctx| ctx.set_uniform(location, count, form, &values))
 }
 
 /// # Safety
@@ -135,7 +136,7 @@ pub unsafe extern "C" fn glUniform3iv(location: GLint, count: GLsizei, value: *c
     let form = UniformForm::Int(3);
     // SAFETY: as this function's contract.
     let values = unsafe { read_words(location, count, form, value, int_bits) };
-    set(location, count, form, values)
+    record_or_run(move |ctx| ctx.set_uniform(location, count, form, &values))
 }
 
 /// # Safety
@@ -145,7 +146,7 @@ pub unsafe extern "C" fn glUniform4fv(location: GLint, count: GLsizei, value: *c
     let form = UniformForm::Float(4);
     // SAFETY: as this function's contract.
     let values = unsafe { read_words(location, count, form, value, float_bits) };
-    set(location, count, form, values)
+    record_or_run(move |ctx| ctx.set_uniform(location, count, form, &values))
 }
 
 /// # Safety
@@ -155,7 +156,7 @@ pub unsafe extern "C" fn glUniform4iv(location: GLint, count: GLsizei, value: *c
     let form = UniformForm::Int(4);
     // SAFETY: as this function's contract.
     let values = unsafe { read_words(location, count, form, value, int_bits) };
-    set(location, count, form, values)
+    record_or_run(move |ctx| ctx.set_uniform(location, count, form, &values))
 }
 
 /// # Safety
@@ -170,7 +171,7 @@ pub unsafe extern "C" fn glUniformMatrix2fv(
     let form = UniformForm::Matrix(2, 2, transpose != 0);
     // SAFETY: as this function's contract.
     let values = unsafe { read_words(location, count, form, value, float_bits) };
-    set(location, count, form, values)
+    record_or_run(move |ctx| ctx.set_uniform(location, count, form, &values))
 }
 
 /// # Safety
@@ -185,7 +186,7 @@ pub unsafe extern "C" fn glUniformMatrix3fv(
     let form = UniformForm::Matrix(3, 3, transpose != 0);
     // SAFETY: as this function's contract.
     let values = unsafe { read_words(location, count, form, value, float_bits) };
-    set(location, count, form, values)
+    record_or_run(move |ctx| ctx.set_uniform(location, count, form, &values))
 }
 
 /// # Safety
@@ -200,7 +201,7 @@ pub unsafe extern "C" fn glUniformMatrix4fv(
     let form = UniformForm::Matrix(4, 4, transpose != 0);
     // SAFETY: as this function's contract.
     let values = unsafe { read_words(location, count, form, value, float_bits) };
-    set(location, count, form, values)
+    record_or_run(move |ctx| ctx.set_uniform(location, count, form, &values))
 }
 
 /// # Safety
@@ -215,7 +216,7 @@ pub unsafe extern "C" fn glUniformMatrix2x3fv(
     let form = UniformForm::Matrix(2, 3, transpose != 0);
     // SAFETY: as this function's contract.
     let values = unsafe { read_words(location, count, form, value, float_bits) };
-    set(location, count, form, values)
+    record_or_run(move |ctx| ctx.set_uniform(location, count, form, &values))
 }
 
 /// # Safety
@@ -230,7 +231,7 @@ pub unsafe extern "C" fn glUniformMatrix3x2fv(
     let form = UniformForm::Matrix(3, 2, transpose != 0);
     // SAFETY: as this function's contract.
     let values = unsafe { read_words(location, count, form, value, float_bits) };
-    set(location, count, form, values)
+    record_or_run(move |ctx| ctx.set_uniform(location, count, form, &values))
 }
 
 /// # Safety
@@ -245,7 +246,7 @@ pub unsafe extern "C" fn glUniformMatrix2x4fv(
     let form = UniformForm::Matrix(2, 4, transpose != 0);
     // SAFETY: as this function's contract.
     let values = unsafe { read_words(location, count, form, value, float_bits) };
-    set(location, count, form, values)
+    record_or_run(move |ctx| ctx.set_uniform(location, count, form, &values))
 }
 
 /// # Safety
@@ -260,7 +261,7 @@ pub unsafe extern "C" fn glUniformMatrix4x2fv(
     let form = UniformForm::Matrix(4, 2, transpose != 0);
     // SAFETY: as this function's contract.
     let values = unsafe { read_words(location, count, form, value, float_bits) };
-    set(location, count, form, values)
+    record_or_run(move |ctx| ctx.set_uniform(location, count, form, &values))
 }
 
 /// # Safety
@@ -275,7 +276,7 @@ pub unsafe extern "C" fn glUniformMatrix3x4fv(
     let form = UniformForm::Matrix(3, 4, transpose != 0);
     // SAFETY: as this function's contract.
     let values = unsafe { read_words(location, count, form, value, float_bits) };
-    set(location, count, form, values)
+    record_or_run(move |ctx| ctx.set_uniform(location, count, form, &values))
 }
 
 /// # Safety
@@ -290,7 +291,7 @@ pub unsafe extern "C" fn glUniformMatrix4x3fv(
     let form = UniformForm::Matrix(4, 3, transpose != 0);
     // SAFETY: as this function's contract.
     let values = unsafe { read_words(location, count, form, value, float_bits) };
-    set(location, count, form, values)
+    record_or_run(move |ctx| ctx.set_uniform(location, count, form, &values))
 }
 
 /// # Safety
@@ -299,7 +300,7 @@ pub unsafe extern "C" fn glUniformMatrix4x3fv(
 pub unsafe extern "C" fn glGetUniformfv(program: GLuint, location: GLint, params: *mut GLfloat) {
     let Some(words) = query(|ctx| ctx.get_uniform(program, location, true)) else { return };
     // SAFETY: the caller provides room for the element's components (or passes NULL).
-    unsafe { caller_memory::write_all(params, words.into_iter().map(|w| f32::from_bits(w))) }
+    unsafe { caller_memory::write_all(params, words.into_iter().map(f32::from_bits)) }
 }
 
 /// # Safety

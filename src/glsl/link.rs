@@ -753,7 +753,7 @@ fn add_leaves(linked: &mut Linked, name: String, ty: &Type, builtin: bool, value
         t => (t.clone(), 1, false),
     };
     let words = element_words(&element) * size as usize;
-    let location = (!builtin).then(|| linked.locations.len() as u32);
+    let location = (!builtin).then_some(linked.locations.len() as u32);
     let offset = linked.initial_values.len();
     let index = linked.uniforms.len();
     if !builtin {
@@ -931,7 +931,7 @@ mod tests {
             "attribute vec4 a; attribute mat3 m; attribute vec2 b; attribute float unused;\n\
              void main() { gl_Position = gl_Vertex + a + vec4(m[0], b.x); }",
         );
-        let linked = link(&[v.clone()], &[]).unwrap();
+        let linked = link(std::slice::from_ref(&v), &[]).unwrap();
         let at = |l: &Linked, n: &str| l.attribute_location(n);
         assert_eq!((at(&linked, "m"), at(&linked, "a"), at(&linked, "b")), (Some(1), Some(4), Some(5)));
         assert_eq!(at(&linked, "gl_Vertex"), None);
