@@ -14,8 +14,10 @@
 //! the last good one in use) and lets go of the program when the context is destroyed.
 //!
 //! Compiling runs the GLSL front end (`crate::glsl`) over the source; its info log is worded
-//! like Mesa's. Linking checks what the front end knows today (every attached shader
-//! compiled); executing GLSL programs comes with the lowering onto the shading IR (issue #20).
+//! like Mesa's (recursion within a shader included). Linking (`crate::glsl::link`) makes the
+//! program interface: active uniforms and attributes, locations, and the layout of the
+//! uniform values each program keeps (reset by each link; set by glUniform*). Executing GLSL
+//! programs comes with the lowering onto the shading IR (issue #20).
 use super::share::Shared;
 use crate::gl::enums::*;
 use crate::gl::names::NameTable;
