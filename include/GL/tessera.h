@@ -7986,6 +7986,10 @@ GLint glGetAttribLocation(GLuint program, const GLchar *name);
 
 GLint glGetUniformLocation(GLuint program, const GLchar *name);
 
+void glGetActiveUniform(GLuint program, GLuint index, GLsizei bufSize, GLsizei *length, GLint *size, GLenum *type_, GLchar *name);
+
+void glGetActiveAttrib(GLuint program, GLuint index, GLsizei bufSize, GLsizei *length, GLint *size, GLenum *type_, GLchar *name);
+
 void glEnable(GLenum cap);
 
 void glDisable(GLenum cap);
@@ -8191,6 +8195,60 @@ void glClipControl(GLenum origin, GLenum depth);
 void glClipPlane(GLenum plane, const GLdouble *equation);
 
 void glGetClipPlane(GLenum plane, GLdouble *equation);
+
+void glUniform1f(GLint location, GLfloat v0);
+
+void glUniform1i(GLint location, GLint v0);
+
+void glUniform2f(GLint location, GLfloat v0, GLfloat v1);
+
+void glUniform2i(GLint location, GLint v0, GLint v1);
+
+void glUniform3f(GLint location, GLfloat v0, GLfloat v1, GLfloat v2);
+
+void glUniform3i(GLint location, GLint v0, GLint v1, GLint v2);
+
+void glUniform4f(GLint location, GLfloat v0, GLfloat v1, GLfloat v2, GLfloat v3);
+
+void glUniform4i(GLint location, GLint v0, GLint v1, GLint v2, GLint v3);
+
+void glUniform1fv(GLint location, GLsizei count, const GLfloat *value);
+
+void glUniform1iv(GLint location, GLsizei count, const GLint *value);
+
+void glUniform2fv(GLint location, GLsizei count, const GLfloat *value);
+
+void glUniform2iv(GLint location, GLsizei count, const GLint *value);
+
+void glUniform3fv(GLint location, GLsizei count, const GLfloat *value);
+
+void glUniform3iv(GLint location, GLsizei count, const GLint *value);
+
+void glUniform4fv(GLint location, GLsizei count, const GLfloat *value);
+
+void glUniform4iv(GLint location, GLsizei count, const GLint *value);
+
+void glUniformMatrix2fv(GLint location, GLsizei count, GLboolean transpose, const GLfloat *value);
+
+void glUniformMatrix3fv(GLint location, GLsizei count, GLboolean transpose, const GLfloat *value);
+
+void glUniformMatrix4fv(GLint location, GLsizei count, GLboolean transpose, const GLfloat *value);
+
+void glUniformMatrix2x3fv(GLint location, GLsizei count, GLboolean transpose, const GLfloat *value);
+
+void glUniformMatrix3x2fv(GLint location, GLsizei count, GLboolean transpose, const GLfloat *value);
+
+void glUniformMatrix2x4fv(GLint location, GLsizei count, GLboolean transpose, const GLfloat *value);
+
+void glUniformMatrix4x2fv(GLint location, GLsizei count, GLboolean transpose, const GLfloat *value);
+
+void glUniformMatrix3x4fv(GLint location, GLsizei count, GLboolean transpose, const GLfloat *value);
+
+void glUniformMatrix4x3fv(GLint location, GLsizei count, GLboolean transpose, const GLfloat *value);
+
+void glGetUniformfv(GLuint program, GLint location, GLfloat *params);
+
+void glGetUniformiv(GLuint program, GLint location, GLint *params);
 
 void glBegin(GLenum mode);
 

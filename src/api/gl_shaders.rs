@@ -226,18 +226,89 @@ pub unsafe extern "C" fn glBindAttribLocation(program: GLuint, index: GLuint, na
     with_context((), |ctx| ctx.bind_attrib_location(program, index, &name))
 }
 
+/// The caller's NUL-terminated name (`None` for NULL).
+///
+/// # Safety
+/// A non-null `name` must be a NUL-terminated string.
+unsafe fn name_of(name: *const GLchar) -> Option<String> {
+    // SAFETY: NUL-terminated by the contract.
+    unsafe { caller_memory::c_str(name) }.map(|s| s.to_string_lossy().into_owned())
+}
+
 /// # Safety
 /// `name` must be a NUL-terminated string.
 #[no_mangle]
 pub unsafe extern "C" fn glGetAttribLocation(program: GLuint, name: *const GLchar) -> GLint {
-    let _ = name;
-    with_context(-1, |ctx| ctx.interface_location(program))
+    // SAFETY: as this function's contract.
+    let name = unsafe { name_of(name) }.unwrap_or_default();
+    with_context(-1, |ctx| ctx.attrib_location(program, &name))
 }
 
 /// # Safety
 /// `name` must be a NUL-terminated string.
 #[no_mangle]
 pub unsafe extern "C" fn glGetUniformLocation(program: GLuint, name: *const GLchar) -> GLint {
-    let _ = name;
-    with_context(-1, |ctx| ctx.interface_location(program))
+    // SAFETY: as this function's contract.
+    let name = unsafe { name_of(name) }.unwrap_or_default();
+    with_context(-1, |ctx| ctx.uniform_location(program, &name))
+}
+
+/// glGetActiveUniform and glGetActiveAttrib: writes an entry's name, size and type (nothing
+/// for `None`, a refused call).
+///
+/// # Safety
+/// A non-null `name` must have room for `buffer_size` bytes; `length`, `size` and `kind`
+/// for one value each (or be NULL).
+unsafe fn write_active(
+    entry: Option<(String, GLint, GLenum)>,
+    buffer_size: GLsizei,
+    length: *mut GLsizei,
+    size: *mut GLint,
+    kind: *mut GLenum,
+    name: *mut GLchar,
+) {
+    let Some((text, count, ty)) = entry else { return };
+    // SAFETY: as this function's contract.
+    unsafe { write_string(&text, buffer_size, length, name) };
+    // SAFETY: the caller provides room for one value each (or passes NULL).
+    unsafe {
+        caller_memory::write(size, count);
+        caller_memory::write(kind, ty);
+    }
+}
+
+/// # Safety
+/// A non-null `name` must have room for `bufSize` bytes; `length`, `size` and `type_` for
+/// one value each (or be NULL).
+#[no_mangle]
+pub unsafe extern "C" fn glGetActiveUniform(
+    program: GLuint,
+    index: GLuint,
+    bufSize: GLsizei,
+    length: *mut GLsizei,
+    size: *mut GLint,
+    type_: *mut GLenum,
+    name: *mut GLchar,
+) {
+    let entry = query(|ctx| ctx.active_variable(program, index, bufSize, true));
+    // SAFETY: as this function's contract.
+    unsafe { write_active(entry, bufSize, length, size, type_, name) }
+}
+
+/// # Safety
+/// A non-null `name` must have room for `bufSize` bytes; `length`, `size` and `type_` for
+/// one value each (or be NULL).
+#[no_mangle]
+pub unsafe extern "C" fn glGetActiveAttrib(
+    program: GLuint,
+    index: GLuint,
+    bufSize: GLsizei,
+    length: *mut GLsizei,
+    size: *mut GLint,
+    type_: *mut GLenum,
+    name: *mut GLchar,
+) {
+    let entry = query(|ctx| ctx.active_variable(program, index, bufSize, false));
+    // SAFETY: as this function's contract.
+    unsafe { write_active(entry, bufSize, length, size, type_, name) }
 }

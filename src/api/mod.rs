@@ -30,6 +30,7 @@ pub mod gl_shaders;
 pub mod gl_state;
 pub mod gl_texture;
 pub mod gl_transform;
+pub mod gl_uniforms;
 pub mod gl_vertex;
 pub mod gl_vertex_attribs;
 /// GLX needs the X types of <GL/glx.h>: kept out of tessera.h.

@@ -14,13 +14,16 @@
 //! the last good one in use) and lets go of the program when the context is destroyed.
 //!
 //! Compiling runs the GLSL front end (`crate::glsl`) over the source; its info log is worded
-//! like Mesa's. Linking checks what the front end knows today (every attached shader
-//! compiled); executing GLSL programs comes with the lowering onto the shading IR (issue #20).
+//! like Mesa's (recursion within a shader included). Linking (`crate::glsl::link`) makes the
+//! program interface: active uniforms and attributes, locations, and the layout of the
+//! uniform values each program keeps (reset by each link; set by glUniform*). Executing GLSL
+//! programs comes with the lowering onto the shading IR (issue #20).
 use super::share::Shared;
 use crate::gl::enums::*;
 use crate::gl::names::NameTable;
 use crate::gl::types::*;
-use crate::glsl::Stage;
+use crate::glsl::link::{self, Linked};
+use crate::glsl::{Checked, Stage};
 use std::sync::Arc;
 
 /// The largest generic vertex attribute index plus one (GL_MAX_VERTEX_ATTRIBS, as Mesa's 16).
@@ -50,6 +53,8 @@ pub struct Shader {
     /// The source of the last glShaderSource, its pieces joined (`None`: never given).
     source: Option<String>,
     compiled: bool,
+    /// The checked program of the last successful compile (what glLinkProgram links).
+    checked: Option<Arc<Checked>>,
     info_log: String,
     /// glDeleteShader while attached: deleted when the last program detaches it.
     delete_pending: bool,
@@ -63,6 +68,9 @@ pub struct Executable {
     /// The stages the program replaces (a missing one stays fixed-function, as GL 2.1 says).
     pub vertex: bool,
     pub fragment: bool,
+    /// The program interface: the linked shaders, active uniforms (their locations and the
+    /// layout of their values in [`Program`]'s value words) and attributes.
+    pub interface: Arc<Linked>,
 }
 
 /// A program object.
@@ -75,6 +83,9 @@ pub struct Program {
     info_log: String,
     /// The executable of the last successful link.
     executable: Option<Arc<Executable>>,
+    /// The uniform values of that executable, one word per component as
+    /// [`Linked::at_location`] lays them out; reset by each successful link.
+    uniform_values: Vec<u32>,
     /// glBindAttribLocation's bindings, used by the next link.
     attribute_bindings: Vec<(String, u32)>,
     /// glDeleteProgram while in use: deleted when no context uses it.
@@ -244,6 +255,7 @@ impl super::Context {
             stage,
             source: None,
             compiled: false,
+            checked: None,
             info_log: String::new(),
             delete_pending: false,
             attachments: 0,
@@ -293,14 +305,15 @@ impl super::Context {
             return;
         };
         // Compile without the table locked: a long compile must not stall other contexts.
-        let (compiled, info_log) = match source {
-            None => (false, String::new()),
+        let (checked, info_log) = match source {
+            None => (None, String::new()),
             Some(source) => compile(stage, &source),
         };
         self.with_shader_objects(|objects| {
             // The shader may have been deleted meanwhile by another context: then nothing.
             if let Ok(shader) = objects.shader(shader) {
-                shader.compiled = compiled;
+                shader.compiled = checked.is_some();
+                shader.checked = checked;
                 shader.info_log = info_log;
             }
             Ok(())
@@ -405,11 +418,22 @@ impl super::Context {
                 GL_VALIDATE_STATUS => program.validate_status as GLint,
                 GL_INFO_LOG_LENGTH => length_with_nul(&program.info_log),
                 GL_ATTACHED_SHADERS => program.shaders.len() as GLint,
-                // Reflection comes with the front end's interface analysis: none yet.
+                // A program that did not link lists nothing (Mesa clears its interface).
                 GL_ACTIVE_ATTRIBUTES
                 | GL_ACTIVE_ATTRIBUTE_MAX_LENGTH
                 | GL_ACTIVE_UNIFORMS
-                | GL_ACTIVE_UNIFORM_MAX_LENGTH => 0,
+                | GL_ACTIVE_UNIFORM_MAX_LENGTH => {
+                    let Some(linked) = program.linked() else { return Ok(0) };
+                    let longest = |names: &mut dyn Iterator<Item = &String>| {
+                        names.map(|n| n.len() as GLint + 1).max().unwrap_or(0)
+                    };
+                    match pname {
+                        GL_ACTIVE_ATTRIBUTES => linked.attributes.len() as GLint,
+                        GL_ACTIVE_ATTRIBUTE_MAX_LENGTH => longest(&mut linked.attributes.iter().map(|a| &a.name)),
+                        GL_ACTIVE_UNIFORMS => linked.uniforms.len() as GLint,
+                        _ => longest(&mut linked.uniforms.iter().map(|u| &u.name)),
+                    }
+                }
                 _ => return Err(GL_INVALID_ENUM),
             })
         })
@@ -436,26 +460,37 @@ impl super::Context {
     pub fn link_program(&mut self, program: u32) {
         let Some(executable) = self.with_shader_objects(|objects| {
             let shaders = objects.program(program)?.shaders.clone();
-            let mut log = String::new();
-            let mut executable = Executable::default();
+            let mut checked = Vec::with_capacity(shaders.len());
+            let mut uncompiled = false;
             for &name in &shaders {
-                let shader = objects.shader(name)?;
-                if !shader.compiled {
-                    log.push_str("error: linking with uncompiled/unspecialized shader\n");
-                    break;
-                }
-                match shader.stage {
-                    Stage::Vertex => executable.vertex = true,
-                    Stage::Fragment => executable.fragment = true,
+                match &objects.shader(name)?.checked {
+                    Some(c) if !uncompiled => checked.push(c.clone()),
+                    _ => uncompiled = true,
                 }
             }
+            let bindings = objects.program(program)?.attribute_bindings.clone();
+            let result = if uncompiled {
+                Err("error: linking with uncompiled/unspecialized shader".to_string())
+            } else {
+                link::link(&checked, &bindings)
+            };
             let program = objects.program(program)?;
-            program.link_status = log.is_empty();
-            program.info_log = log;
-            if program.link_status {
-                program.executable = Some(Arc::new(executable));
+            match result {
+                Ok(linked) => {
+                    program.link_status = true;
+                    program.info_log = String::new();
+                    program.uniform_values = linked.initial_values.clone();
+                    let executable =
+                        Executable { vertex: linked.vertex, fragment: linked.fragment, interface: Arc::new(linked) };
+                    program.executable = Some(Arc::new(executable));
+                    Ok(program.executable.clone())
+                }
+                Err(log) => {
+                    program.link_status = false;
+                    program.info_log = log;
+                    Ok(None)
+                }
             }
-            Ok(program.executable.clone().filter(|_| program.link_status))
         }) else {
             return;
         };
@@ -529,27 +564,225 @@ impl super::Context {
         });
     }
 
-    /// glGetAttribLocation and glGetUniformLocation: -1, since a linked program has no active
-    /// attributes or uniforms until the front end analyses interfaces; GL_INVALID_OPERATION
-    /// for a program that did not link.
-    pub fn interface_location(&mut self, program: u32) -> GLint {
+    /// The interface of a linked program, GL_INVALID_OPERATION if it did not link.
+    fn linked_interface(&mut self, program: u32) -> Option<Arc<Linked>> {
+        self.with_shader_objects(|objects| objects.program(program)?.linked().cloned().ok_or(GL_INVALID_OPERATION))
+    }
+
+    /// glGetAttribLocation: -1 for built-ins and names that are not active attributes.
+    pub fn attrib_location(&mut self, program: u32, name: &str) -> GLint {
+        self.linked_interface(program).map_or(-1, |l| l.attribute_location(name).map_or(-1, |i| i as GLint))
+    }
+
+    /// glGetUniformLocation: -1 for built-in state and names that are no active element.
+    pub fn uniform_location(&mut self, program: u32, name: &str) -> GLint {
+        self.linked_interface(program).map_or(-1, |l| l.uniform_location(name).map_or(-1, |i| i as GLint))
+    }
+
+    /// glGetActiveUniform and glGetActiveAttrib: the name, size and type of entry `index`
+    /// (GL_INVALID_VALUE past the end or for a negative buffer size).
+    pub fn active_variable(
+        &mut self,
+        program: u32,
+        index: u32,
+        buffer_size: GLsizei,
+        uniform: bool,
+    ) -> Option<(String, GLint, GLenum)> {
         self.with_shader_objects(|objects| {
             let program = objects.program(program)?;
-            if !program.link_status {
-                return Err(GL_INVALID_OPERATION);
+            if buffer_size < 0 {
+                return Err(GL_INVALID_VALUE);
             }
-            Ok(-1)
+            let linked = program.linked().ok_or(GL_INVALID_VALUE)?;
+            let index = index as usize;
+            if uniform {
+                let u = linked.uniforms.get(index).ok_or(GL_INVALID_VALUE)?;
+                Ok((u.name.clone(), u.size as GLint, u.gl_type()))
+            } else {
+                let a = linked.attributes.get(index).ok_or(GL_INVALID_VALUE)?;
+                Ok((a.name.clone(), 1, a.gl_type()))
+            }
         })
-        .unwrap_or(-1)
+    }
+
+    /// glUniform* and glUniformMatrix* on the current program: `values` holds `count`
+    /// elements of `form`'s shape, as the caller gave them. Location -1 does nothing.
+    pub fn set_uniform(&mut self, location: GLint, count: GLsizei, form: UniformForm, values: &[u32]) {
+        if !self.check_outside_begin_end() {
+            return;
+        }
+        if count < 0 {
+            self.error(GL_INVALID_VALUE);
+            return;
+        }
+        let current = self.program_in_use.name;
+        let units = crate::glsl::Limits::default().max_combined_texture_image_units;
+        let result = (|| {
+            let mut objects = self.shader_objects.lock();
+            let program = objects.program(current).map_err(|_| GL_INVALID_OPERATION)?;
+            if location == -1 {
+                return Ok(());
+            }
+            let linked = program.linked().ok_or(GL_INVALID_OPERATION)?.clone();
+            let (u, first) =
+                u32::try_from(location).ok().and_then(|l| linked.at_location(l)).ok_or(GL_INVALID_OPERATION)?;
+            let element = linked.locations[location as usize].1;
+            store_uniform(u, element, first, count as usize, form, values, units, &mut program.uniform_values)
+        })();
+        if let Err(error) = result {
+            self.error(error);
+        }
+    }
+
+    /// How many elements a glUniform*v call at `location` can set on the current program (0
+    /// when it sets none): the array's remaining elements, 1 for a non-array.
+    pub fn uniform_room(&mut self, location: GLint) -> usize {
+        let current = self.program_in_use.name;
+        let mut objects = self.shader_objects.lock();
+        let Ok(program) = objects.program(current) else { return 0 };
+        let Some(linked) = program.linked() else { return 0 };
+        let Some(&(index, element)) = usize::try_from(location).ok().and_then(|l| linked.locations.get(l)) else {
+            return 0;
+        };
+        (linked.uniforms[index].size - element) as usize
+    }
+
+    /// glGetUniformfv and glGetUniformiv: the element's components, converted to `float`.
+    pub fn get_uniform(&mut self, program: u32, location: GLint, float: bool) -> Option<Vec<u32>> {
+        self.with_shader_objects(|objects| {
+            let program = objects.program(program)?;
+            let linked = program.linked().ok_or(GL_INVALID_OPERATION)?;
+            let (u, first) =
+                u32::try_from(location).ok().and_then(|l| linked.at_location(l)).ok_or(GL_INVALID_OPERATION)?;
+            let words = &program.uniform_values[first..first + u.words()];
+            let base = u.ty.base().unwrap_or(crate::glsl::hir::Scalar::Int);
+            Ok(words.iter().map(|&w| convert_word(w, base, float)).collect())
+        })
     }
 }
 
-/// Compiles `source` for `stage` with the GLSL front end: whether it compiled, and the info
-/// log (empty on success without warnings, as Mesa's).
-fn compile(stage: Stage, source: &str) -> (bool, String) {
+/// The shape of a glUniform* call: its element type and whether it sets a matrix transposed.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum UniformForm {
+    /// glUniform{1,2,3,4}f[v]: components.
+    Float(u8),
+    /// glUniform{1,2,3,4}i[v].
+    Int(u8),
+    /// glUniformMatrix{C}x{R}fv: columns, rows, transpose.
+    Matrix(u8, u8, bool),
+}
+
+impl UniformForm {
+    /// Values per element.
+    pub fn components(self) -> usize {
+        match self {
+            UniformForm::Float(n) | UniformForm::Int(n) => n as usize,
+            UniformForm::Matrix(c, r, _) => (c * r) as usize,
+        }
+    }
+}
+
+/// A stored word as glGetUniformfv (`float`) or glGetUniformiv returns it (floats rounded to
+/// the nearest integer, as Mesa does).
+fn convert_word(w: u32, base: crate::glsl::hir::Scalar, float: bool) -> u32 {
+    use crate::glsl::hir::Scalar;
+    match (base, float) {
+        (Scalar::Float, true) => w,
+        (Scalar::Float, false) => (f32::from_bits(w).round() as i32) as u32,
+        (_, true) => (w as i32 as f32).to_bits(),
+        (_, false) => w,
+    }
+}
+
+/// Checks a glUniform* call against the element it names, as Mesa does, and stores the
+/// values: a matching component count and kind (bools take either; samplers only
+/// glUniform1i with a unit below `units`), one element for a non-array, elements past the
+/// array's end dropped.
+#[allow(clippy::too_many_arguments)]
+fn store_uniform(
+    u: &link::ActiveUniform,
+    element: u32,
+    first: usize,
+    count: usize,
+    form: UniformForm,
+    values: &[u32],
+    units: i32,
+    storage: &mut [u32],
+) -> Result<(), Refused> {
+    use crate::glsl::hir::{Scalar, Type};
+    let fits = match (&u.ty, form) {
+        (Type::Sampler(_), f) => f == UniformForm::Int(1),
+        (Type::Matrix(c, r), UniformForm::Matrix(fc, fr, _)) => (*c, *r) == (fc, fr),
+        (Type::Matrix(..), _) | (_, UniformForm::Matrix(..)) => false,
+        (t, UniformForm::Float(n)) => t.vector_size() == n && t.base() != Some(Scalar::Int),
+        (t, UniformForm::Int(n)) => t.vector_size() == n && t.base() != Some(Scalar::Float),
+    };
+    if !fits {
+        return Err(GL_INVALID_OPERATION);
+    }
+    if !u.is_array && count > 1 {
+        return Err(GL_INVALID_OPERATION);
+    }
+    let n = form.components();
+    let count = count.min((u.size - element) as usize).min(values.len() / n.max(1));
+    if let Type::Sampler(_) = u.ty {
+        if values[..count].iter().any(|&v| v as i32 >= units || (v as i32) < 0) {
+            return Err(GL_INVALID_VALUE);
+        }
+    }
+    let base = u.ty.base();
+    for e in 0..count {
+        let src = &values[e * n..(e + 1) * n];
+        let dst = &mut storage[first + e * n..first + (e + 1) * n];
+        for (i, d) in dst.iter_mut().enumerate() {
+            let v = match form {
+                // Transposed: the caller's rows are the stored columns.
+                UniformForm::Matrix(c, r, true) => src[(i % r as usize) * c as usize + i / r as usize],
+                _ => src[i],
+            };
+            *d = match (base, form) {
+                (Some(Scalar::Bool), UniformForm::Float(_)) => (f32::from_bits(v) != 0.0) as u32,
+                (Some(Scalar::Bool), _) => (v != 0) as u32,
+                _ => v,
+            };
+        }
+    }
+    Ok(())
+}
+
+impl Program {
+    /// The interface of the last link, if it succeeded.
+    fn linked(&self) -> Option<&Arc<Linked>> {
+        self.executable.as_ref().filter(|_| self.link_status).map(|e| &e.interface)
+    }
+}
+
+impl ProgramInUse {
+    /// The uniform values of the program in use, for the draw path (a copy taken under the
+    /// share group's lock).
+    pub fn uniform_values(&self) -> Option<Vec<u32>> {
+        let objects = self.objects.as_ref()?;
+        let mut table = objects.lock();
+        table.program(self.name).ok().map(|p| p.uniform_values.clone())
+    }
+}
+
+/// Compiles `source` for `stage` with the GLSL front end: the checked shader if it compiled,
+/// and the info log (empty on success without warnings, as Mesa's).
+fn compile(stage: Stage, source: &str) -> (Option<Arc<Checked>>, String) {
     let mut log = crate::glsl::InfoLog::default();
     let checked = crate::glsl::compile_shader(source, stage, &crate::glsl::Options::default(), &mut log);
-    (checked.is_some() && !log.has_errors(), log.text())
+    let Some(checked) = checked.filter(|_| !log.has_errors()).map(Arc::new) else { return (None, log.text()) };
+    // Recursion within the shader is a compile error, as Mesa reports it.
+    let recursive = link::recursive_functions(&checked);
+    if recursive.is_empty() {
+        return (Some(checked), log.text());
+    }
+    let mut text = log.text();
+    for signature in recursive {
+        text.push_str(&format!("0:0(0): error: function `{signature}' has static recursion\n"));
+    }
+    (None, text)
 }
 
 #[cfg(test)]

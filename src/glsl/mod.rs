@@ -11,6 +11,8 @@
 //! - [`diagnostics`]: positions and the info log (`0:12(5): error: ...`).
 //! - [`lower`]: the checked units of one stage → a shading IR program, with its uniform,
 //!   input, output and sampler interface by GL names.
+//! - [`link`]: the shaders of a program → one interface (Mesa's link errors), the active
+//!   uniforms and attributes with their locations, and the uniform values' storage.
 //!
 //! As in Mesa, preprocessor errors end the compile before parsing, and the first syntax
 //! error ends the parse; semantic errors are all reported. Nothing here is tied to a GL
@@ -24,6 +26,7 @@ pub mod diagnostics;
 pub mod fold;
 pub mod hir;
 pub mod lex;
+pub mod link;
 pub mod lower;
 pub mod parse;
 pub mod preprocess;
