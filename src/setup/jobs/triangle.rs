@@ -27,7 +27,7 @@ use crate::framebuffer::band::Band;
 use crate::framebuffer::multisample::MAX_SAMPLES;
 use crate::framebuffer::Rect;
 use crate::gl::limits::MAX_TEXTURE_UNITS;
-use crate::raster::blocks::{walk_blocks, PixelEdge};
+use crate::raster::blocks::{walk_blocks, walk_blocks_filling, PixelEdge};
 use crate::raster::samples::SampleEdges;
 use crate::raster::walk::{stipple_mask, walk_sample_spans, walk_spans};
 use crate::setup::accuracy::Accuracy;
@@ -251,6 +251,27 @@ impl TriangleJob {
             return;
         }
         let edges = self.setup.pixel_edges().map(PixelEdge::from_array);
+        // A flat triangle whose fragments all store one value (`BlockPipeline::constant_fill`)
+        // is written as that value: the rectangles it covers whole as rows, its edge blocks
+        // through their masks, with no per-block pipeline work.
+        let fill = self.uniform_color().and_then(|c| pipeline.constant_fill(state, c));
+        if let (Some((target, pixel)), None) = (fill, state.polygon_stipple.as_ref()) {
+            let band = std::cell::RefCell::new(band);
+            return crate::simd::per_level!(|level| {
+                walk_blocks_filling(
+                    level,
+                    area,
+                    &edges,
+                    None,
+                    #[inline(always)]
+                    |x, y, mask| band.borrow_mut().fill_block_unorm8(target, x, y, mask, pixel),
+                    Some(
+                        #[inline(always)]
+                        |rect| band.borrow_mut().fill_unorm8(target, rect, pixel),
+                    ),
+                )
+            });
+        }
         // The walk compiled once per SIMD level (one dispatch per triangle and tile); its
         // blocks collected in batches, each batch's stages one direct call per stage into
         // their copies for the level (`BlockPipeline::render`).
