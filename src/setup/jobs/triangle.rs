@@ -255,22 +255,19 @@ impl TriangleJob {
         // is written as that value: the rectangles it covers whole as rows, its edge blocks
         // through their masks, with no per-block pipeline work.
         let fill = self.uniform_color().and_then(|c| pipeline.constant_fill(state, c));
+        // One copy of this walk, not one per SIMD level: its work is the stores of the fill
+        // (a copy per level made the libraries 146 KB larger), and the lanes' signs are the
+        // same at every level.
         if let (Some((target, pixel)), None) = (fill, state.polygon_stipple.as_ref()) {
             let band = std::cell::RefCell::new(band);
-            return crate::simd::per_level!(|level| {
-                walk_blocks_filling(
-                    level,
-                    area,
-                    &edges,
-                    None,
-                    #[inline(always)]
-                    |x, y, mask| band.borrow_mut().fill_block_unorm8(target, x, y, mask, pixel),
-                    Some(
-                        #[inline(always)]
-                        |rect| band.borrow_mut().fill_unorm8(target, rect, pixel),
-                    ),
-                )
-            });
+            return walk_blocks_filling(
+                crate::simd::current(),
+                area,
+                &edges,
+                None,
+                |x, y, mask| band.borrow_mut().fill_block_unorm8(target, x, y, mask, pixel),
+                Some(|rect| band.borrow_mut().fill_unorm8(target, rect, pixel)),
+            );
         }
         // The walk compiled once per SIMD level (one dispatch per triangle and tile); its
         // blocks collected in batches, each batch's stages one direct call per stage into
