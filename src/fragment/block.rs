@@ -434,6 +434,28 @@ impl BlockPipeline {
     }
 }
 
+impl BlockPipeline {
+    /// The constant fill of a primitive whose every fragment has colour `color` (flat
+    /// shading), drawn with `state`: the index of the one colour target and the pixel value
+    /// to store at each covered pixel, when the pipeline writes that value there
+    /// unconditionally. That holds when nothing can drop or change a fragment (no alpha,
+    /// stencil or depth test and no depth write, no fragment program: texturing, colour sum
+    /// and fog are one, no occlusion count) and the target's kernel stores a constant colour
+    /// ([`TargetKernel::constant_pixel`]: no blend, logic op, channel mask or dither that
+    /// changes the value). The primitive's covered pixels may then be written as whole
+    /// rectangles (`setup::jobs::triangle`) with the bytes [`Self::render`] writes.
+    pub fn constant_fill(&self, state: &DrawState, color: [f32; 4]) -> Option<(usize, [u8; 4])> {
+        let unconditional = self.alpha.is_none()
+            && self.depth_stencil.is_none()
+            && state.samples_passed.is_none()
+            && state.fragment.shading.is_none();
+        match self.targets.as_slice() {
+            [target] if unconditional => Some((target.index, target.constant_pixel(color)?)),
+            _ => None,
+        }
+    }
+}
+
 /// A block the walk found: window position (multiples of 4) and covered lanes.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct BlockEntry {

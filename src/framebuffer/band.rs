@@ -6,7 +6,7 @@
 //! locking and no unsafe code; each pixel belongs to exactly one band, which is what makes
 //! results identical for any number of threads.
 use super::surface::{ColorPixels, DepthStencilPixels};
-use super::{ColorFormat, ColorSlot, DepthStencilFormat, Framebuffer};
+use super::{ColorFormat, ColorSlot, DepthStencilFormat, Framebuffer, Rect};
 
 /// The pixels of one color buffer inside a band (rows bottom-up, `width` pixels each).
 pub enum ColorBand<'a> {
@@ -52,6 +52,55 @@ impl Band<'_> {
     #[inline]
     pub fn sample_index(&self, y: i32, x: i32, sample: usize) -> usize {
         ((y - self.y0) as usize * self.samples + sample) * self.width + x as usize
+    }
+}
+
+/// Constant fills of a unorm8 colour target of a single-sampled band: the pixels a flat,
+/// unconditionally stored primitive covers (`setup::jobs::triangle`), written as rows of
+/// one value instead of through the block pipeline's lanes.
+impl Band<'_> {
+    /// Writes `pixel` to every pixel of `rect` (inside the band) of colour target `target`;
+    /// nothing unless that target is unorm8.
+    #[inline(always)]
+    pub fn fill_unorm8(&mut self, target: usize, rect: Rect, pixel: [u8; 4]) {
+        let (width, y0) = (self.width, self.y0);
+        let ColorBand::Unorm8(px) = &mut self.colors[target].pixels else { return };
+        let (x0, x1) = (rect.x0 as usize, rect.x1 as usize);
+        // Eight pixels (32 bytes) per copy, which the compiler makes whole-register stores.
+        let wide = [pixel; 8];
+        for y in rect.y0..rect.y1 {
+            let row = (y - y0) as usize * width;
+            let (chunks, rest) = px[row + x0..row + x1].as_chunks_mut::<8>();
+            for chunk in chunks {
+                *chunk = wide;
+            }
+            for p in rest {
+                *p = pixel;
+            }
+        }
+    }
+
+    /// Writes `pixel` to the pixels `mask` of the 4×4 block at `(x, y)` (bit `i`: pixel
+    /// `(x + i % 4, y + i / 4)`, each inside the band) of colour target `target`; nothing
+    /// unless that target is unorm8.
+    #[inline(always)]
+    pub fn fill_block_unorm8(&mut self, target: usize, x: i32, y: i32, mask: u16, pixel: [u8; 4]) {
+        let (width, y0) = (self.width, self.y0);
+        let ColorBand::Unorm8(px) = &mut self.colors[target].pixels else { return };
+        let base = (y - y0) as usize * width + x as usize;
+        for row in 0..4 {
+            let bits = (mask >> (4 * row)) & 0xf;
+            if bits == 0xf {
+                let (quad, _) = px[base + row * width..base + row * width + 4].as_chunks_mut::<4>();
+                quad[0] = [pixel; 4];
+            } else {
+                for c in 0..4 {
+                    if bits & (1 << c) != 0 {
+                        px[base + row * width + c] = pixel;
+                    }
+                }
+            }
+        }
     }
 }
 

@@ -94,14 +94,32 @@ pub fn walk_blocks(
     stipple: Option<&[u32; 32]>,
     emit: impl FnMut(i32, i32, u16),
 ) {
+    walk_blocks_filling(level, area, edges, stipple, emit, None::<fn(Rect)>);
+}
+
+/// [`walk_blocks`], but where `fill` is given and there is no stipple, the parts of `area`
+/// the triangle covers whole (a tile, a 16×16 block or a 4×4 block all of whose pixels are
+/// inside every edge, cut to `area`) go to `fill` as rectangles instead of to `emit` as
+/// blocks: a primitive whose fragments all store one value (a constant fill) writes them
+/// as rows, with no per-block work. Every covered pixel goes to exactly one of the two.
+#[inline(always)]
+pub fn walk_blocks_filling(
+    level: Supported,
+    area: Rect,
+    edges: &[PixelEdge; 3],
+    stipple: Option<&[u32; 32]>,
+    emit: impl FnMut(i32, i32, u16),
+    fill: Option<impl FnMut(Rect)>,
+) {
     if area.is_empty() {
         return;
     }
+    let fill = fill.filter(|_| stipple.is_none());
     let reduced = map3(*edges, |e| Reduced::new(&e));
     if reduced.iter().all(|e| e.a.unsigned_abs() + e.b.unsigned_abs() <= 1 << 24) {
-        Walker::<i32, _>::new(level, area, reduced, stipple, emit).run();
+        Walker::<i32, _, _>::new(level, area, reduced, stipple, emit, fill).run();
     } else {
-        Walker::<i64, _>::new(level, area, reduced, stipple, emit).run();
+        Walker::<i64, _, _>::new(level, area, reduced, stipple, emit, fill).run();
     }
 }
 
@@ -300,7 +318,7 @@ fn area_mask(area: Rect, x: i32, y: i32, size: i32) -> u16 {
     mask
 }
 
-struct Walker<'a, T, F> {
+struct Walker<'a, T, F, G> {
     level: Supported,
     area: Rect,
     edges: [Reduced; 3],
@@ -314,11 +332,20 @@ struct Walker<'a, T, F> {
     /// Each edge's `a` and `b` as lanes.
     ab: [(T, T); 3],
     emit: F,
+    /// Where whole covered rectangles go ([`walk_blocks_filling`]); never with a stipple.
+    fill: Option<G>,
 }
 
-impl<'a, T: Lane, F: FnMut(i32, i32, u16)> Walker<'a, T, F> {
+impl<'a, T: Lane, F: FnMut(i32, i32, u16), G: FnMut(Rect)> Walker<'a, T, F, G> {
     #[inline(always)]
-    fn new(level: Supported, area: Rect, edges: [Reduced; 3], stipple: Option<&'a [u32; 32]>, emit: F) -> Self {
+    fn new(
+        level: Supported,
+        area: Rect,
+        edges: [Reduced; 3],
+        stipple: Option<&'a [u32; 32]>,
+        emit: F,
+        fill: Option<G>,
+    ) -> Self {
         let (x4, y4) = (area.x0 & !3, area.y0 & !3);
         let start = if area.x1 - x4 <= 4 && area.y1 - y4 <= 4 {
             3
@@ -338,6 +365,7 @@ impl<'a, T: Lane, F: FnMut(i32, i32, u16)> Walker<'a, T, F> {
             start,
             ab: map3(edges, |e| (T::exact(e.a), T::exact(e.b))),
             emit,
+            fill,
         }
     }
 
@@ -453,6 +481,11 @@ impl<'a, T: Lane, F: FnMut(i32, i32, u16)> Walker<'a, T, F> {
                 }
                 all_inside &= v + lo >= 0;
             }
+            if all_inside {
+                if let Some(fill) = self.fill.as_mut() {
+                    return fill(Rect::from_xywh(x, y, 64, 64).intersect(area));
+                }
+            }
             let mask = area_mask(area, x, y, 16);
             let corner = self.corner(x, y);
             if all_inside {
@@ -483,6 +516,11 @@ impl<'a, T: Lane, F: FnMut(i32, i32, u16)> Walker<'a, T, F> {
     #[inline(always)]
     fn block16(&mut self, x: i32, y: i32, corner: &[T; 3], inside: bool) {
         let area = self.area;
+        if inside {
+            if let Some(fill) = self.fill.as_mut() {
+                return fill(Rect::from_xywh(x, y, 16, 16).intersect(area));
+            }
+        }
         let mask = area_mask(area, x, y, 4);
         let ab4 = self.ab_shl(2);
         let (visit, inside) = if inside {
@@ -501,6 +539,10 @@ impl<'a, T: Lane, F: FnMut(i32, i32, u16)> Walker<'a, T, F> {
             let (c, r) = (COLUMN[i], ROW[i]);
             let (bx, by) = (x + 4 * c, y + 4 * r);
             let mut mask = if inside & (1 << i) != 0 {
+                if let Some(fill) = self.fill.as_mut() {
+                    fill(Rect::from_xywh(bx, by, 4, 4).intersect(area));
+                    continue;
+                }
                 0xffff
             } else {
                 let base: [T; 3] = index3(|k| corner[k] + ab4[k].0.times(c) + ab4[k].1.times(r));
@@ -529,10 +571,9 @@ mod tests {
     /// The blocks `Walker<T>` emits for `area`.
     fn walked<T: Lane>(area: Rect, edges: &[PixelEdge; 3]) -> Vec<(i32, i32, u16)> {
         let mut seen = Vec::new();
-        Walker::<T, _>::new(crate::simd::current(), area, edges.map(|e| Reduced::new(&e)), None, |x, y, m| {
-            seen.push((x, y, m))
-        })
-        .run();
+        let emit = |x, y, m| seen.push((x, y, m));
+        Walker::<T, _, fn(Rect)>::new(crate::simd::current(), area, edges.map(|e| Reduced::new(&e)), None, emit, None)
+            .run();
         seen
     }
 
@@ -637,7 +678,8 @@ mod tests {
             assert_eq!(seen, expected, "round {round}");
             let reduced = edges.map(|e| Reduced::new(&e));
             let mut wide = Vec::new();
-            Walker::<i64, _>::new(crate::simd::current(), area, reduced, stipple, |x, y, m| wide.push((x, y, m))).run();
+            let emit = |x, y, m| wide.push((x, y, m));
+            Walker::<i64, _, fn(Rect)>::new(crate::simd::current(), area, reduced, stipple, emit, None).run();
             assert_eq!(wide, expected, "round {round}, i64 lanes");
         }
         assert!(covered > 200, "{covered}");
@@ -703,7 +745,14 @@ mod tests {
                     }
                     let reduced = edges.map(|e| Reduced::new(&e));
                     let mut tiled = Vec::new();
-                    let mut walker = Walker::<i32, _>::new(level, area, reduced, None, |x, y, m| tiled.push((x, y, m)));
+                    let mut walker = Walker::<i32, _, fn(Rect)>::new(
+                        level,
+                        area,
+                        reduced,
+                        None,
+                        |x, y, m| tiled.push((x, y, m)),
+                        None,
+                    );
                     direct += (walker.start >= 2) as usize;
                     walker.start = 0;
                     walker.run();
@@ -751,5 +800,71 @@ mod tests {
             count += m.count_ones();
         });
         assert_eq!(count, 60 * 3);
+    }
+
+    #[test]
+    fn a_filling_walk_covers_each_covered_pixel_once() {
+        // Large triangles over several tiles and a scissor-like area: the rectangles given
+        // to `fill` and the blocks given to `emit` are disjoint and together exactly the
+        // pixels the plain walk emits (which the other tests check pixel by pixel), and the
+        // fill takes most of them (the inside is not walked block by block).
+        let mut seed = 0x1234_5678_9abc_def1u64;
+        let mut next = |range: i64| {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed % (2 * range as u64)) as i64 - range
+        };
+        let (mut filled_total, mut covered_total) = (0, 0);
+        for round in 0..200 {
+            let p: [[i64; 2]; 3] = std::array::from_fn(|_| [next(160) + 100, next(160) + 100]);
+            let cross = (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0]);
+            // Counter-clockwise (E ≥ 0 inside), in 1/256 pixel units, through pixel centres.
+            let p = if cross >= 0 { p } else { [p[0], p[2], p[1]] };
+            let edges: [PixelEdge; 3] = std::array::from_fn(|k| {
+                let (a0, a1) = (p[k], p[(k + 1) % 3]);
+                let (a, b) = ((a0[1] - a1[1]) * 256, (a1[0] - a0[0]) * 256);
+                PixelEdge { c: -(a * a0[0] + b * a0[1]) + a / 2 + b / 2 + next(64), a, b }
+            });
+            let mut at = |base: i64| (base + next(20)) as i32;
+            let area = Rect { x0: at(20), y0: at(20), x1: at(200), y1: at(210) };
+            let mut plain = vec![false; 256 * 256];
+            walk_blocks(crate::simd::current(), area, &edges, None, |x, y, m| {
+                for i in 0..16 {
+                    if m & (1 << i) != 0 {
+                        plain[(y + i / 4) as usize * 256 + (x + i % 4) as usize] = true;
+                    }
+                }
+            });
+            let seen = std::cell::RefCell::new(vec![0u8; 256 * 256]);
+            let mut filled = 0;
+            walk_blocks_filling(
+                crate::simd::current(),
+                area,
+                &edges,
+                None,
+                |x, y, m| {
+                    for i in 0..16 {
+                        if m & (1 << i) != 0 {
+                            seen.borrow_mut()[(y + i / 4) as usize * 256 + (x + i % 4) as usize] += 1;
+                        }
+                    }
+                },
+                Some(|r: Rect| {
+                    assert!(!r.is_empty() && r.intersect(area) == r, "round {round}: {r:?}");
+                    for y in r.y0..r.y1 {
+                        for x in r.x0..r.x1 {
+                            seen.borrow_mut()[y as usize * 256 + x as usize] += 1;
+                            filled += 1;
+                        }
+                    }
+                }),
+            );
+            let seen = seen.into_inner();
+            assert!(seen.iter().zip(&plain).all(|(&n, &p)| n == u8::from(p)), "round {round}");
+            filled_total += filled;
+            covered_total += plain.iter().filter(|&&p| p).count();
+        }
+        assert!(filled_total * 2 > covered_total, "{filled_total} of {covered_total}");
     }
 }

@@ -127,6 +127,19 @@ impl TargetKernel {
     }
 }
 
+impl TargetKernel {
+    /// The one pixel value this kernel stores for every fragment of colour `color`, when it
+    /// stores it unconditionally: a unorm8 target with every channel written and no blend or
+    /// logic op (dither changes nothing on unorm8 targets). The word is [`src_words`]'s, so a
+    /// constant fill of it writes the bytes this kernel writes. `None` for any other kernel.
+    pub fn constant_pixel(&self, color: [f32; 4]) -> Option<[u8; 4]> {
+        match (self.kind, self.params.keep8) {
+            (Kind::Unorm8Store, 0) => Some(src_words(&BlockColors::Uniform(color))[0].to_le_bytes()),
+            _ => None,
+        }
+    }
+}
+
 /// `float_to_unorm(x, 8)` on lanes, branch-free so that it vectorises: the clamp as two
 /// selects (NaN and −0 give 0, +∞ gives 1, as there), then the same single-precision
 /// product and round-to-nearest-even by adding 2²³.

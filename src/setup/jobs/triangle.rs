@@ -27,7 +27,7 @@ use crate::framebuffer::band::Band;
 use crate::framebuffer::multisample::MAX_SAMPLES;
 use crate::framebuffer::Rect;
 use crate::gl::limits::MAX_TEXTURE_UNITS;
-use crate::raster::blocks::{walk_blocks, PixelEdge};
+use crate::raster::blocks::{walk_blocks, walk_blocks_filling, PixelEdge};
 use crate::raster::samples::SampleEdges;
 use crate::raster::walk::{stipple_mask, walk_sample_spans, walk_spans};
 use crate::setup::accuracy::Accuracy;
@@ -251,6 +251,24 @@ impl TriangleJob {
             return;
         }
         let edges = self.setup.pixel_edges().map(PixelEdge::from_array);
+        // A flat triangle whose fragments all store one value (`BlockPipeline::constant_fill`)
+        // is written as that value: the rectangles it covers whole as rows, its edge blocks
+        // through their masks, with no per-block pipeline work.
+        let fill = self.uniform_color().and_then(|c| pipeline.constant_fill(state, c));
+        // One copy of this walk, not one per SIMD level: its work is the stores of the fill
+        // (a copy per level made the libraries 146 KB larger), and the lanes' signs are the
+        // same at every level.
+        if let (Some((target, pixel)), None) = (fill, state.polygon_stipple.as_ref()) {
+            let band = std::cell::RefCell::new(band);
+            return walk_blocks_filling(
+                crate::simd::current(),
+                area,
+                &edges,
+                None,
+                |x, y, mask| band.borrow_mut().fill_block_unorm8(target, x, y, mask, pixel),
+                Some(|rect| band.borrow_mut().fill_unorm8(target, rect, pixel)),
+            );
+        }
         // The walk compiled once per SIMD level (one dispatch per triangle and tile); its
         // blocks collected in batches, each batch's stages one direct call per stage into
         // their copies for the level (`BlockPipeline::render`).
@@ -938,6 +956,92 @@ mod sample_block_tests {
             samples_passed: Some(Arc::new(AtomicU64::new(0))),
             multisample: Some(multisample),
         }
+    }
+
+    #[test]
+    fn flat_triangles_write_through_constant_fills_what_spans_write() {
+        // Flat triangles over two tiles' areas, single-sampled, under states of which some
+        // take the constant fill (no test, mask or blend; scissored or not, stippled or not)
+        // and some must not (a channel mask, blending, a depth test, an alpha test, an
+        // occlusion count): the block path writes the span path's bytes either way, and
+        // the fill is taken where it may be.
+        let size = 150i32;
+        let mut rng = Rng(0x9e37_79b9_7f4a_7c15);
+        let mut filled = 0;
+        for round in 0..300 {
+            let n = (size * size) as usize;
+            let mut colors = [vec![[7u8, 9, 11, 13]; n], vec![[7u8, 9, 11, 13]; n]];
+            let mut depth = [vec![0x0080_0000u32; n], vec![0x0080_0000u32; n]];
+            let [c0, c1] = &mut colors;
+            let [d0, d1] = &mut depth;
+            let mut bands: Vec<Band<'_>> = [(c0, d0), (c1, d1)]
+                .into_iter()
+                .map(|(c, d)| Band {
+                    y0: 0,
+                    rows: size as usize,
+                    width: size as usize,
+                    samples: 1,
+                    colors: vec![ColorTarget {
+                        slot: ColorSlot::FrontLeft,
+                        format: ColorFormat::Unorm8 { alpha: true },
+                        pixels: ColorBand::Unorm8(c),
+                    }],
+                    depth: DepthBand::Packed24(d),
+                    depth_format: DepthStencilFormat::Packed24 { depth: true, stencil: true },
+                })
+                .collect();
+            let kind = round % 8;
+            let mask = if kind == 5 { [true, true, false, true] } else { [true; 4] };
+            let depth_test = (kind == 6).then_some(DepthTest { func: CompareFunc::Less, write: true });
+            let mut fragment = FragmentState::plain(depth_test, vec![Some(mask)], false);
+            if kind == 7 {
+                let func = BlendFunc {
+                    src: BlendFactor::SrcAlpha,
+                    dst: BlendFactor::OneMinusSrcAlpha,
+                    equation: BlendEquation::ALL[0],
+                };
+                fragment.blend = vec![Some(Blend { rgb: func, alpha: func })];
+            }
+            if kind == 4 {
+                fragment.alpha = Some(AlphaTest { func: CompareFunc::Greater, reference: 0.5, unorm8: false });
+            }
+            let clip = if kind == 1 {
+                Rect::from_xywh(13, 7, size - 31, size - 20)
+            } else {
+                Rect::from_xywh(0, 0, size, size)
+            };
+            let state = DrawState {
+                fragment,
+                clip,
+                fill_clip: clip,
+                polygon_stipple: (kind == 2).then(|| std::array::from_fn(|i| 0x5a5a_f00f_u32.rotate_left(i as u32))),
+                samples_passed: (kind == 3).then(|| Arc::new(AtomicU64::new(0))),
+                multisample: None,
+            };
+            let format = DepthStencilFormat::Packed24 { depth: true, stencil: true };
+            let pipeline = BlockPipeline::compile(&state.fragment, &[ColorFormat::Unorm8 { alpha: true }], format);
+            let may_fill = kind <= 2;
+            let mut scratch = Scratch::default();
+            let mut batch = Batch::default();
+            for _ in 0..4 {
+                let v = [0, 1, 2].map(|_| vertex(&mut rng, size as f32));
+                let c = [rng.unit(), rng.unit() * 1.2 - 0.1, rng.unit(), rng.unit()];
+                let Some(job) = TriangleJob::new(v, Some(c), 0.0, &[]) else { continue };
+                let fills = pipeline.constant_fill(&state, c).is_some();
+                // (The stippled state's pipeline fills; its triangle does not take the fill.)
+                assert_eq!(fills, may_fill, "round {round}: kind {kind}");
+                filled += usize::from(fills && kind != 2);
+                for area in [Rect::from_xywh(0, 0, size, 64), Rect::from_xywh(0, 64, size, size - 64)] {
+                    let area = area.intersect(state.fill_clip);
+                    job.render_blocks(&state, &pipeline, area, &mut bands[0], &mut scratch, &mut batch);
+                    job.render(&state, area, &mut bands[1], &mut scratch);
+                }
+            }
+            drop(bands);
+            assert!(colors[0] == colors[1], "round {round}: colours differ (kind {kind})");
+            assert!(depth[0] == depth[1], "round {round}: depth differs (kind {kind})");
+        }
+        assert!(filled > 100, "{filled}");
     }
 
     #[test]
