@@ -294,45 +294,55 @@ impl<'a> Reach<'a> {
     }
 
     /// Walks `main` and everything it calls, recording uses and the functions on cycles of
-    /// the call graph.
+    /// the call graph. The depth-first walk keeps its own stack rather than the machine's:
+    /// a shader may chain thousands of functions, one calling the next, and the caller's
+    /// thread may have a small stack.
     fn walk_from(&mut self, main: Func) {
         let mut done: HashSet<Func> = HashSet::new();
-        let mut stack: Vec<Func> = Vec::new();
+        // The functions on the current call path, with their position on it.
+        let mut path: Vec<Func> = Vec::new();
+        let mut on_path: HashMap<Func, usize> = HashMap::new();
+        // Per function on the path: the calls its body makes, and the next one to follow.
+        let mut pending: Vec<(Vec<FunctionId>, usize)> = Vec::new();
         let mut recursive: Vec<Func> = Vec::new();
-        self.visit(main, &mut done, &mut stack, &mut recursive);
+        let mut next = Some(main);
+        loop {
+            if let Some(f) = next.take() {
+                if let Some(&at) = on_path.get(&f) {
+                    for &g in &path[at..] {
+                        if !recursive.contains(&g) {
+                            recursive.push(g);
+                        }
+                    }
+                } else if !done.contains(&f) {
+                    on_path.insert(f, path.len());
+                    path.push(f);
+                    self.functions.insert(f);
+                    let shaders = self.shaders;
+                    let mut calls = Vec::new();
+                    if let Some(body) = &shaders[f.0].functions[f.1].body {
+                        for stmt in body {
+                            self.stmt(f.0, stmt, &mut calls);
+                        }
+                    }
+                    pending.push((calls, 0));
+                }
+            }
+            let Some((calls, index)) = pending.last_mut() else { break };
+            let caller = *path.last().expect("a path entry per pending list");
+            if let Some(&call) = calls.get(*index) {
+                *index += 1;
+                next = self.resolve((caller.0, call));
+            } else {
+                pending.pop();
+                path.pop();
+                on_path.remove(&caller);
+                done.insert(caller);
+            }
+        }
         for f in recursive.iter().rev() {
             self.errors.push(format!("function `{}' has static recursion.\n", signature(&self.shaders[f.0], f.1)));
         }
-    }
-
-    fn visit(&mut self, f: Func, done: &mut HashSet<Func>, stack: &mut Vec<Func>, recursive: &mut Vec<Func>) {
-        if let Some(at) = stack.iter().position(|&g| g == f) {
-            for &g in &stack[at..] {
-                if !recursive.contains(&g) {
-                    recursive.push(g);
-                }
-            }
-            return;
-        }
-        if done.contains(&f) {
-            return;
-        }
-        stack.push(f);
-        self.functions.insert(f);
-        let shaders = self.shaders;
-        let mut calls = Vec::new();
-        if let Some(body) = &shaders[f.0].functions[f.1].body {
-            for stmt in body {
-                self.stmt(f.0, stmt, &mut calls);
-            }
-        }
-        for call in calls {
-            if let Some(target) = self.resolve((f.0, call)) {
-                self.visit(target, done, stack, recursive);
-            }
-        }
-        stack.pop();
-        done.insert(f);
     }
 
     fn stmt(&mut self, s: usize, stmt: &Stmt, calls: &mut Vec<FunctionId>) {
@@ -460,22 +470,72 @@ pub fn recursive_functions(shader: &Arc<Checked>) -> Vec<String> {
             calls
         })
         .collect();
-    (0..shader.functions.len())
-        .filter(|&f| {
-            let mut seen = vec![false; callees.len()];
-            let mut stack = callees[f].clone();
-            while let Some(g) = stack.pop() {
+    let on_cycle = functions_on_cycles(&callees);
+    (0..shader.functions.len()).filter(|&f| on_cycle[f]).map(|f| signature(shader, f)).collect()
+}
+
+/// Per function of a call graph (`callees[f]`: the functions `f` calls), whether it lies on
+/// a cycle: it calls itself, or shares a strongly connected component with another
+/// function. Tarjan's algorithm with its own stack, so linear in the graph and safe on
+/// chains of any length.
+fn functions_on_cycles(callees: &[Vec<FunctionId>]) -> Vec<bool> {
+    const UNSEEN: usize = usize::MAX;
+    let n = callees.len();
+    let mut index = vec![UNSEEN; n];
+    let mut low = vec![0; n];
+    let mut on_stack = vec![false; n];
+    let mut stack: Vec<FunctionId> = Vec::new();
+    let mut on_cycle = vec![false; n];
+    let mut counter = 0;
+    for root in 0..n {
+        if index[root] != UNSEEN {
+            continue;
+        }
+        // The depth-first path: a function and the next of its callees to look at.
+        let mut walk: Vec<(FunctionId, usize)> = vec![(root, 0)];
+        index[root] = counter;
+        low[root] = counter;
+        counter += 1;
+        stack.push(root);
+        on_stack[root] = true;
+        while let Some(&mut (f, ref mut next)) = walk.last_mut() {
+            if let Some(&g) = callees[f].get(*next) {
+                *next += 1;
                 if g == f {
-                    return true;
+                    on_cycle[f] = true;
+                } else if index[g] == UNSEEN {
+                    index[g] = counter;
+                    low[g] = counter;
+                    counter += 1;
+                    stack.push(g);
+                    on_stack[g] = true;
+                    walk.push((g, 0));
+                } else if on_stack[g] {
+                    low[f] = low[f].min(index[g]);
                 }
-                if !std::mem::replace(&mut seen[g], true) {
-                    stack.extend_from_slice(&callees[g]);
+                continue;
+            }
+            walk.pop();
+            if let Some(&(caller, _)) = walk.last() {
+                low[caller] = low[caller].min(low[f]);
+            }
+            if low[f] == index[f] {
+                let mut component = Vec::new();
+                loop {
+                    let g = stack.pop().expect("the component's functions are on the stack");
+                    on_stack[g] = false;
+                    component.push(g);
+                    if g == f {
+                        break;
+                    }
+                }
+                if component.len() > 1 {
+                    component.iter().for_each(|&g| on_cycle[g] = true);
                 }
             }
-            false
-        })
-        .map(|f| signature(shader, f))
-        .collect()
+        }
+    }
+    on_cycle
 }
 
 /// One global of the program, merged over the shaders that declare it.
@@ -978,5 +1038,34 @@ mod tests {
     fn recursion_within_one_shader_is_found_in_definition_order() {
         let v = vertex("float f(float x) { return f(x); } void h() {} void main() { h(); }");
         assert_eq!(recursive_functions(&v), ["float f(float)"]);
+    }
+
+    /// A chain of functions, each calling the one before: the walks keep their own stacks,
+    /// so a long chain links on a thread with a small stack (the caller's thread may have
+    /// one), and a cycle at the far end of the chain is still found.
+    #[test]
+    fn long_call_chains_link_on_a_small_stack() {
+        const LENGTH: usize = 4000;
+        let chain = |closing: &str| {
+            let mut source = format!("float f0(float x) {{ {closing} }}\n");
+            for i in 1..LENGTH {
+                source += &format!("float f{i}(float x) {{ return f{}(x) + 1.0; }}\n", i - 1);
+            }
+            source + &format!("void main() {{ gl_FragColor = vec4(f{}(1.0)); }}\n", LENGTH - 1)
+        };
+        let plain = fragment(&chain("return x;"));
+        let prototype = format!("float f{}(float x);\n", LENGTH - 1);
+        let cyclic = fragment(&(prototype + &chain(&format!("return f{}(x);", LENGTH - 1))));
+        let outcome = std::thread::Builder::new()
+            .stack_size(64 * 1024)
+            .spawn(move || {
+                let linked = link(&[plain], &[]).is_ok();
+                let recursive = recursive_functions(&cyclic).len();
+                (linked, recursive)
+            })
+            .expect("thread")
+            .join()
+            .expect("no stack overflow");
+        assert_eq!(outcome, (true, LENGTH));
     }
 }
