@@ -29,6 +29,7 @@ use crate::vertex::attribute::Attribute;
 use crate::vertex::geometry::Geometry;
 use crate::vertex::line::LineStipple;
 use crate::vertex::pipeline;
+use crate::vertex::transform::StageCache;
 use crate::vertex::Vertex;
 
 /// The fewest vertices a draw splits between two threads (see [`split_point`]): below
@@ -103,8 +104,11 @@ impl Context {
             eprintln!("tessera pipeline: {name} ({} vertices), state {state_index} {how}: {stages}", vertices.len());
         }
         let units = self.tex_coord_units();
+        let previous = self.stage_cache.take();
         let input = self.transform_input(float_color, &units);
-        let vertex_stage = self.vertex_stage(&input, vertices.len());
+        let programs = &self.programs;
+        let stage = StageCache::reuse_or_new(previous, &input, vertices.len(), |key| programs.lock().vertex(key));
+        let vertex_stage = stage.stage();
         let geometry = Geometry { per_sample, ..self.geometry(depth_bits, height) };
         let mut stipple = self.active_line_stipple();
         if let (false, Some(s)) = (part.first, stipple.as_mut()) {
@@ -137,6 +141,7 @@ impl Context {
                 pipeline::draw(&mut scene, state_index, &geometry, mode, clip_vertices, part, stipple)
             }),
         };
+        self.stage_cache = Some(stage);
         self.end_part(scene, stipple, part);
     }
 

@@ -116,6 +116,9 @@ pub struct Context {
     /// The per-vertex stage's buffers, kept between draws: the recording thread's and the
     /// helper's of a draw split in two (`draw::Context::draw_part`).
     vertex_scratch: [crate::vertex::transform::VertexScratch; 2],
+    /// The last draw's per-vertex stage, reused by the next draw with the same unlit
+    /// transform state (`draw::Context::draw_part`).
+    stage_cache: Option<Box<crate::vertex::transform::StageCache>>,
 }
 
 impl Context {
@@ -150,6 +153,7 @@ impl Context {
             shader_objects: Default::default(),
             program_in_use: Default::default(),
             vertex_scratch: Default::default(),
+            stage_cache: None,
         }
     }
 

@@ -7,7 +7,8 @@
 //! glMaterial marks by reference, so nothing per light or per vertex is copied.
 //! [`VertexStage::new`] makes the state's key, has the caller look its compiled program up
 //! (the share group's cache) and fills the uniform words, once per draw (once per run of
-//! vertices between glMaterial calls inside glBegin/glEnd, whose materials are uniforms);
+//! vertices between glMaterial calls inside glBegin/glEnd, whose materials are uniforms),
+//! or [`StageCache`] keeps the last draw's for the next unlit draw with the same state;
 //! [`VertexStage::run`] gathers 16 vertices at a time into the program's input words
 //! (structure of arrays), runs the compiled program on the live lanes and scatters its
 //! outputs into [`ClipVertex`]es.
@@ -18,7 +19,7 @@
 use super::clip::ClipVertex;
 use super::lighting::{Lighting, LightingState, Material, NormalScaling};
 use super::program::{CompiledVertex, VertexInput, VertexKey, VertexOutput, VertexProgram};
-use super::texgen::TexGen;
+use super::texgen::{Gen, TexCoordUnit, TexGen};
 use super::Vertex;
 use crate::shader::exec::{Io, NoTextures, Word, ALL_LANES, LANES};
 use crate::shader::fast::{BoundRun, Compiled, Registers};
@@ -198,6 +199,116 @@ impl VertexStage {
             }
         }
         then(&scratch.clip)
+    }
+}
+
+/// Whether two matrices are the same bit for bit: what decides a uniform's value (a
+/// comparison of floats would take -0.0 for 0.0, whose products may differ in sign). A
+/// plain loop: it runs at every draw, and iterator adapters stay calls in builds without LTO.
+fn same_bits(a: &Mat4, b: &Mat4) -> bool {
+    let (a, b) = (a.to_cols_array(), b.to_cols_array());
+    let mut difference = 0;
+    for i in 0..16 {
+        difference |= a[i].to_bits() ^ b[i].to_bits();
+    }
+    difference == 0
+}
+
+/// Whether two units' texture-coordinate work is the same, bit for bit.
+fn same_unit(a: &TexCoordUnit, b: &TexCoordUnit) -> bool {
+    let same_plane = |p: &[f32; 4], q: &[f32; 4]| p.iter().zip(q).all(|(x, y)| x.to_bits() == y.to_bits());
+    let mut same = a.unit == b.unit && a.needs_normal == b.needs_normal;
+    for c in 0..4 {
+        same &= match (&a.gen[c], &b.gen[c]) {
+            (Some(Gen::Object(p)), Some(Gen::Object(q))) | (Some(Gen::Eye(p)), Some(Gen::Eye(q))) => same_plane(p, q),
+            (Some(Gen::Sphere), Some(Gen::Sphere))
+            | (Some(Gen::Reflection), Some(Gen::Reflection))
+            | (Some(Gen::Normal), Some(Gen::Normal))
+            | (None, None) => true,
+            _ => false,
+        };
+    }
+    same && match (&a.matrix, &b.matrix) {
+        (Some(m), Some(n)) => same_bits(m, n),
+        (None, None) => true,
+        _ => false,
+    }
+}
+
+/// Everything an unlit draw's per-vertex stage is made from (its program's key and its
+/// uniform values read nothing else), kept bit for bit.
+struct UnlitInputs {
+    modelview: Mat4,
+    model_project: Mat4,
+    clamp_color: bool,
+    fog: Option<FogSource>,
+    units: Vec<TexCoordUnit>,
+    texgen_inverse: Mat4,
+    normalize: bool,
+    rescale_normal: bool,
+}
+
+impl UnlitInputs {
+    fn of(t: &Transform) -> UnlitInputs {
+        UnlitInputs {
+            modelview: t.modelview,
+            model_project: t.model_project,
+            clamp_color: t.clamp_color,
+            fog: t.fog,
+            units: t.texgen.units.to_vec(),
+            texgen_inverse: t.texgen.modelview_inverse,
+            normalize: t.texgen.normalize,
+            rescale_normal: t.texgen.rescale_normal,
+        }
+    }
+
+    fn matches(&self, t: &Transform) -> bool {
+        t.lighting.is_none()
+            && self.clamp_color == t.clamp_color
+            && self.fog == t.fog
+            && self.normalize == t.texgen.normalize
+            && self.rescale_normal == t.texgen.rescale_normal
+            && same_bits(&self.model_project, &t.model_project)
+            && same_bits(&self.modelview, &t.modelview)
+            && same_bits(&self.texgen_inverse, &t.texgen.modelview_inverse)
+            && self.units.len() == t.texgen.units.len()
+            && self.units.iter().zip(t.texgen.units).all(|(a, b)| same_unit(a, b))
+    }
+}
+
+/// The per-vertex stage of the last draw, kept by its owner (a context) for the next: an
+/// unlit draw whose transform state is the same, bit for bit, reuses its program and
+/// uniform values instead of making its key, looking the program up in the share group's
+/// cache (under its lock) and filling the uniforms again: most of a small draw's fixed
+/// cost (a glBegin/glEnd pair of a few vertices). Lit draws are made afresh each time
+/// (their uniforms come from the whole lighting state and the glMaterial calls between
+/// glBegin and glEnd).
+pub struct StageCache {
+    /// `None` for a lit stage, which is never reused.
+    inputs: Option<UnlitInputs>,
+    stage: VertexStage,
+}
+
+impl StageCache {
+    /// The stage of a draw of `vertex_count` vertices with the state `t`: `previous`'s when
+    /// it was made from the same unlit state, otherwise a new one ([`VertexStage::new`]).
+    /// Boxed, so that it moves in and out of its owner as a pointer.
+    pub fn reuse_or_new(
+        previous: Option<Box<StageCache>>,
+        t: &Transform,
+        vertex_count: usize,
+        program: impl FnMut(&VertexKey) -> Arc<CompiledVertex>,
+    ) -> Box<StageCache> {
+        if let Some(previous) = previous.filter(|p| p.inputs.as_ref().is_some_and(|i| i.matches(t))) {
+            return previous;
+        }
+        let stage = VertexStage::new(t, vertex_count, program);
+        Box::new(StageCache { inputs: t.lighting.is_none().then(|| UnlitInputs::of(t)), stage })
+    }
+
+    /// The stage, ready to run.
+    pub fn stage(&self) -> &VertexStage {
+        &self.stage
     }
 }
 

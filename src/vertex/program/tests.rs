@@ -429,3 +429,83 @@ fn the_transforms_run_as_fused_matrix_rows_and_the_program_binds() {
     assert_eq!(rows, 8, "{:#?}", compiled.compiled.code());
     assert!(compiled.binding.is_some());
 }
+
+#[test]
+fn a_draw_reuses_the_last_stage_only_when_its_unlit_state_is_the_same_bit_for_bit() {
+    // StageCache: the stage of the draw before is reused only when the program's key and
+    // every uniform value would be the same; any change (a matrix, even 0.0 to -0.0, a
+    // texgen plane, the clamp) makes a new one, and a lit stage is never reused.
+    use crate::vertex::texgen::{Gen, TexGen};
+    use crate::vertex::transform::{LightingInput as Lit, StageCache, VertexStage};
+    use crate::vertex::Vertex;
+    use glam::Mat4;
+    use std::sync::Arc;
+    let plain = [TexCoordUnit {
+        unit: 0,
+        gen: [Some(Gen::Object([1.0, 0.0, 0.0, 0.0])), None, None, None],
+        needs_normal: false,
+        matrix: None,
+    }];
+    let moved_plane =
+        [TexCoordUnit { gen: [Some(Gen::Object([0.0, 1.0, 0.0, 0.0])), None, None, None], ..plain[0].clone() }];
+    let lighting_state = LightingState::default();
+    let state = |modelview: Mat4, clamp_color: bool, units: &'static [TexCoordUnit]| (modelview, clamp_color, units);
+    let transform = |(modelview, clamp_color, units): (Mat4, bool, &'static [TexCoordUnit]), lit: bool| Transform {
+        modelview,
+        model_project: modelview,
+        clamp_color,
+        fog: None,
+        texgen: TexGen { units, modelview_inverse: Mat4::IDENTITY, normalize: false, rescale_normal: false },
+        lighting: lit.then(|| Lit {
+            state: &lighting_state,
+            modelview_inverse: Mat4::IDENTITY.to_cols_array(),
+            normals: NormalScaling::None,
+            material_marks: &[],
+        }),
+    };
+    let plain: &'static [TexCoordUnit] = Box::leak(Box::new(plain));
+    let moved_plane: &'static [TexCoordUnit] = Box::leak(Box::new(moved_plane));
+    let vertex = Vertex {
+        position: [0.25, -0.5, 0.75, 1.0],
+        color: [2.0, 0.5, 0.25, 1.0],
+        secondary_color: [0.0; 4],
+        tex_coords: [[0.5, 0.25, 0.0, 1.0]; crate::gl::limits::MAX_TEXTURE_UNITS],
+        normal: [0.0, 0.0, 1.0],
+        fog_coord: 0.0,
+        edge_flag: true,
+    };
+    let negative_zero =
+        Mat4::from_cols_array(&[1.0, -0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0]);
+    let translated = Mat4::from_translation(glam::Vec3::new(0.5, 0.0, 0.0));
+    let base = state(Mat4::IDENTITY, true, plain);
+    // (state, lit, reused)
+    let draws = [
+        (base, false, false),
+        (base, false, true),
+        (state(translated, true, plain), false, false),
+        (state(translated, true, plain), false, true),
+        (state(negative_zero, true, plain), false, false),
+        (base, false, false),
+        (state(Mat4::IDENTITY, false, plain), false, false),
+        (state(Mat4::IDENTITY, false, moved_plane), false, false),
+        (state(Mat4::IDENTITY, false, moved_plane), false, true),
+        (state(Mat4::IDENTITY, false, moved_plane), true, false),
+        (state(Mat4::IDENTITY, false, moved_plane), true, false),
+        (state(Mat4::IDENTITY, false, moved_plane), false, false),
+    ];
+    let mut cache: Option<Box<StageCache>> = None;
+    for (i, &(s, lit, reused)) in draws.iter().enumerate() {
+        let t = transform(s, lit);
+        let mut lookups = 0;
+        let stage = StageCache::reuse_or_new(cache.take(), &t, 1, |key| {
+            lookups += 1;
+            Arc::new(CompiledVertex::generate(key))
+        });
+        assert_eq!(lookups == 0, reused, "draw {i}: reused");
+        let got: Vec<Vec<u32>> = stage.stage().run(&[vertex], 0, |c| c.iter().map(clip_bits).collect());
+        let fresh = VertexStage::new(&t, 1, |key| Arc::new(CompiledVertex::generate(key)));
+        let want: Vec<Vec<u32>> = fresh.run(&[vertex], 0, |c| c.iter().map(clip_bits).collect());
+        assert_eq!(got, want, "draw {i}: the same vertex as a stage made afresh");
+        cache = Some(stage);
+    }
+}
