@@ -635,13 +635,14 @@ fn list_refused() {
     }
 }
 
-/// The vertex and fragment shaders of piglit's GLSL 1.10 and 1.20 execution tests
-/// (`.shader_test`): valid programs that Mesa runs, so every one must compile for its stage
-/// (shaders that enable an extension are left out: tessera's front end knows none yet).
-/// Skips without piglit, except under CI.
-#[test]
-fn piglit_glsl_110_120_execution_shaders_parse() {
-    let root = std::path::Path::new("/usr/lib/x86_64-linux-gnu/piglit/tests/spec");
+/// Where Debian's piglit package keeps its tests.
+pub(in crate::glsl) const PIGLIT_SPEC: &str = "/usr/lib/x86_64-linux-gnu/piglit/tests/spec";
+
+/// The `.shader_test` files under piglit's `tests/spec/<dir>` for each of `dirs`, sorted;
+/// `None` (the test skips, saying so) when piglit is not installed, except under CI, where
+/// a missing reference is a failure.
+pub(in crate::glsl) fn piglit_shader_tests(dirs: &[&str]) -> Option<Vec<std::path::PathBuf>> {
+    let root = std::path::Path::new(PIGLIT_SPEC);
     if !root.join("glsl-1.10").is_dir() {
         assert!(
             std::env::var("CI").as_deref() != Ok("true"),
@@ -649,7 +650,7 @@ fn piglit_glsl_110_120_execution_shaders_parse() {
             root.display()
         );
         println!("skipped: piglit's GLSL tests are not installed at {}", root.display());
-        return;
+        return None;
     }
     fn walk(dir: &std::path::Path, out: &mut Vec<std::path::PathBuf>) {
         let Ok(entries) = std::fs::read_dir(dir) else { return };
@@ -663,9 +664,21 @@ fn piglit_glsl_110_120_execution_shaders_parse() {
         }
     }
     let mut files = Vec::new();
-    walk(&root.join("glsl-1.10"), &mut files);
-    walk(&root.join("glsl-1.20"), &mut files);
+    for dir in dirs {
+        walk(&root.join(dir), &mut files);
+    }
     files.sort();
+    Some(files)
+}
+
+/// The vertex and fragment shaders of piglit's GLSL 1.10 and 1.20 execution tests
+/// (`.shader_test`): valid programs that Mesa runs, so every one must compile for its stage
+/// (shaders that enable an extension are left out: tessera's front end knows none yet).
+/// Skips without piglit, except under CI.
+#[test]
+fn piglit_glsl_110_120_execution_shaders_parse() {
+    let Some(files) = piglit_shader_tests(&["glsl-1.10", "glsl-1.20"]) else { return };
+    let root = std::path::Path::new(PIGLIT_SPEC);
     let (mut parsed, mut failures) = (0, Vec::new());
     let (mut lowered, mut not_lowered) = (0, Vec::<String>::new());
     for f in &files {

@@ -88,13 +88,19 @@ impl Lowerer<'_> {
         self.bin(B::FMul, x, kc)
     }
 
-    fn acos1(&mut self, x: Reg) -> Reg {
+    /// acos |x| by Abramowitz and Stegun 4.4.46: √(1 − |x|)·p(|x|), the part acos and asin
+    /// share.
+    fn acos_of_magnitude(&mut self, x: Reg) -> Reg {
         let ax = self.un(U::FAbs, x);
         let one = self.f(1.0);
         let d = self.bin(B::FSub, one, ax);
         let s = self.un(U::Sqrt, d);
         let p = self.poly(ax, &ACOS);
-        let r = self.bin(B::FMul, s, p);
+        self.bin(B::FMul, s, p)
+    }
+
+    fn acos1(&mut self, x: Reg) -> Reg {
+        let r = self.acos_of_magnitude(x);
         let pi = self.f(PI);
         let flipped = self.bin(B::FSub, pi, r);
         let zero = self.f(0.0);
@@ -103,12 +109,7 @@ impl Lowerer<'_> {
     }
 
     fn asin1(&mut self, x: Reg) -> Reg {
-        let ax = self.un(U::FAbs, x);
-        let one = self.f(1.0);
-        let d = self.bin(B::FSub, one, ax);
-        let s = self.un(U::Sqrt, d);
-        let p = self.poly(ax, &ACOS);
-        let r = self.bin(B::FMul, s, p);
+        let r = self.acos_of_magnitude(x);
         let hp = self.f(HALF_PI);
         let a = self.bin(B::FSub, hp, r);
         let zero = self.f(0.0);

@@ -1085,29 +1085,13 @@ mod runner {
 }
 
 /// piglit's GLSL 1.10/1.20 execution tests that the mini runner can run (see [`runner`]).
-/// Skips without piglit.
+/// Skips without piglit, except under CI.
 #[test]
 fn piglit_shader_runner_subset() {
-    let root = std::path::Path::new("/usr/lib/x86_64-linux-gnu/piglit/tests/spec");
-    if !root.join("glsl-1.10").is_dir() {
-        println!("skipped: piglit's GLSL tests are not installed");
+    let Some(files) = crate::glsl::tests::piglit_shader_tests(&["glsl-1.10/execution", "glsl-1.20/execution"]) else {
         return;
-    }
-    fn walk(dir: &std::path::Path, out: &mut Vec<std::path::PathBuf>) {
-        let Ok(entries) = std::fs::read_dir(dir) else { return };
-        for e in entries.flatten() {
-            let p = e.path();
-            if p.is_dir() {
-                walk(&p, out);
-            } else if p.extension().is_some_and(|x| x == "shader_test") {
-                out.push(p);
-            }
-        }
-    }
-    let mut files = Vec::new();
-    walk(&root.join("glsl-1.10/execution"), &mut files);
-    walk(&root.join("glsl-1.20/execution"), &mut files);
-    files.sort();
+    };
+    let root = std::path::Path::new(crate::glsl::tests::PIGLIT_SPEC);
     let (mut pass, mut fail, mut skip) = (0, Vec::new(), 0);
     for f in &files {
         let Ok(text) = std::fs::read_to_string(f) else { continue };
