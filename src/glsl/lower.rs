@@ -339,6 +339,20 @@ impl<'a> Lowerer<'a> {
         self.program.register(ty)
     }
 
+    /// New registers for every scalar leaf of `ty`; `sampler_error` when it holds a sampler
+    /// (samplers are not values a register can hold).
+    fn fresh_registers(&mut self, ty: &Type, sampler_error: &str) -> R<Vec<Reg>> {
+        let mut kinds = Vec::new();
+        leaves(ty, &mut kinds);
+        kinds
+            .iter()
+            .map(|k| match k {
+                Leaf::Scalar(t) => Ok(self.reg(*t)),
+                Leaf::Sampler => Err(sampler_error.to_string()),
+            })
+            .collect()
+    }
+
     fn ty_of(&self, r: Reg) -> ir::Type {
         self.program.registers[r.0 as usize]
     }
@@ -828,15 +842,7 @@ impl<'a> Lowerer<'a> {
         }
         let func = &self.units[unit].functions[f];
         let body = func.body.as_ref().expect("definition");
-        let mut kinds = Vec::new();
-        leaves(&func.return_type, &mut kinds);
-        let ret: Vec<Reg> = kinds
-            .iter()
-            .map(|k| match k {
-                Leaf::Scalar(t) => Ok(self.reg(*t)),
-                Leaf::Sampler => Err("a function returning a sampler".to_string()),
-            })
-            .collect::<R<_>>()?;
+        let ret = self.fresh_registers(&func.return_type, "a function returning a sampler")?;
         // Parameters.
         let params = func.parameters.clone();
         let mut writeback = Vec::new();
@@ -1083,15 +1089,7 @@ impl<'a> Lowerer<'a> {
                     }
                     return Ok(va.iter().zip(&vb).map(|(&x, &y)| self.select(c, x, y)).collect());
                 }
-                let mut kinds = Vec::new();
-                leaves(&e.ty, &mut kinds);
-                let result: Vec<Reg> = kinds
-                    .iter()
-                    .map(|k| match k {
-                        Leaf::Scalar(t) => Ok(self.reg(*t)),
-                        Leaf::Sampler => Err("a conditional choosing a sampler".to_string()),
-                    })
-                    .collect::<R<_>>()?;
+                let result = self.fresh_registers(&e.ty, "a conditional choosing a sampler")?;
                 let branch = |l: &mut Self, x: &Expr| -> R<Vec<Stmt>> {
                     l.nested(|l| {
                         let v = l.expr(x)?;

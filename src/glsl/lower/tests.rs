@@ -937,20 +937,7 @@ mod runner {
                 }
             }
             Some(vs) => {
-                let mut missing = None;
-                let uv: Vec<f32> = vs
-                    .uniforms
-                    .iter()
-                    .map(|w| {
-                        uniform_value(uniforms, w).unwrap_or_else(|e| {
-                            missing = Some(e);
-                            0.0
-                        })
-                    })
-                    .collect();
-                if let Some(e) = missing {
-                    return Err(e);
-                }
+                let uv: Vec<f32> = vs.uniforms.iter().map(|w| uniform_value(uniforms, w)).collect::<Result<_, _>>()?;
                 for w in &vs.inputs {
                     if w.name != "gl_Vertex" {
                         return Err(format!("attribute {}", w.name));
@@ -979,20 +966,7 @@ mod runner {
             }
         }
         let fs = &p.fs;
-        let mut missing = None;
-        let fu: Vec<f32> = fs
-            .uniforms
-            .iter()
-            .map(|w| {
-                uniform_value(uniforms, w).unwrap_or_else(|e| {
-                    missing = Some(e);
-                    0.0
-                })
-            })
-            .collect();
-        if let Some(e) = missing {
-            return Err(e);
-        }
+        let fu: Vec<f32> = fs.uniforms.iter().map(|w| uniform_value(uniforms, w)).collect::<Result<_, _>>()?;
         // Each fragment input: the vertex output it reads.
         let mut sources = Vec::new();
         for w in &fs.inputs {
