@@ -16,6 +16,7 @@
 pub mod accum;
 pub mod attrib;
 pub mod buffers;
+pub mod builtin_uniforms;
 pub mod capabilities;
 pub mod current;
 pub mod debug;

@@ -16,14 +16,19 @@
 //! Compiling runs the GLSL front end (`crate::glsl`) over the source; its info log is worded
 //! like Mesa's (recursion within a shader included). Linking (`crate::glsl::link`) makes the
 //! program interface: active uniforms and attributes, locations, and the layout of the
-//! uniform values each program keeps (reset by each link; set by glUniform*). Executing GLSL
-//! programs comes with the lowering onto the shading IR (issue #20).
+//! uniform values each program keeps (reset by each link; set by glUniform*), then lowers
+//! each stage onto the shading IR ([`crate::glsl::lower`]) and places the varyings
+//! ([`crate::glsl::varyings`]): the [`Executable`] the draws run.
 use super::share::Shared;
 use crate::gl::enums::*;
 use crate::gl::names::NameTable;
 use crate::gl::types::*;
 use crate::glsl::link::{self, Linked};
+use crate::glsl::lower::{lower, Lowered};
+use crate::glsl::varyings::{self, VaryingLayout};
 use crate::glsl::{Checked, Stage};
+use crate::shader::fast::Compiled;
+use crate::shader::validate::validate;
 use std::sync::Arc;
 
 /// The largest generic vertex attribute index plus one (GL_MAX_VERTEX_ATTRIBS, as Mesa's 16).
@@ -71,6 +76,51 @@ pub struct Executable {
     /// The program interface: the linked shaders, active uniforms (their locations and the
     /// layout of their values in [`Program`]'s value words) and attributes.
     pub interface: Arc<Linked>,
+    /// The vertex and fragment stages lowered onto the shading IR and compiled (`None` for a
+    /// fixed-function stage).
+    pub vertex_program: Option<Arc<StageProgram>>,
+    pub fragment_program: Option<Arc<StageProgram>>,
+    /// Where the varyings travel between the stages.
+    pub varyings: VaryingLayout,
+}
+
+/// One stage of a linked program: its lowering (the program and what its uniform, input,
+/// output and sampler slots are, by GL name) and the compiled form the draws run.
+#[derive(Debug)]
+pub struct StageProgram {
+    pub lowered: Lowered,
+    pub compiled: Compiled,
+}
+
+impl Executable {
+    /// Lowers and compiles the stages of a successful link and places its varyings; an
+    /// error is the link's info log.
+    fn new(linked: Linked) -> Result<Executable, String> {
+        let stage = |stage: Stage| -> Result<Option<Arc<StageProgram>>, String> {
+            let units: Vec<&Checked> = linked.shaders.iter().filter(|s| s.stage == stage).map(|s| s.as_ref()).collect();
+            if units.is_empty() {
+                return Ok(None);
+            }
+            let lowered = lower(&units).map_err(|e| format!("error: {e}\n"))?;
+            validate(&lowered.program).map_err(|e| format!("error: internal: invalid program: {e:?}\n"))?;
+            let compiled = Compiled::new(&lowered.program);
+            Ok(Some(Arc::new(StageProgram { lowered, compiled })))
+        };
+        let vertex_program = stage(Stage::Vertex)?;
+        let fragment_program = stage(Stage::Fragment)?;
+        let varyings = varyings::layout(
+            vertex_program.as_ref().map(|p| &p.lowered),
+            fragment_program.as_ref().map(|p| &p.lowered),
+        )?;
+        Ok(Executable {
+            vertex: linked.vertex,
+            fragment: linked.fragment,
+            interface: Arc::new(linked),
+            vertex_program,
+            fragment_program,
+            varyings,
+        })
+    }
 }
 
 /// A program object.
@@ -472,16 +522,14 @@ impl super::Context {
             let result = if uncompiled {
                 Err("error: linking with uncompiled/unspecialized shader".to_string())
             } else {
-                link::link(&checked, &bindings)
+                link::link(&checked, &bindings).and_then(Executable::new)
             };
             let program = objects.program(program)?;
             match result {
-                Ok(linked) => {
+                Ok(executable) => {
                     program.link_status = true;
                     program.info_log = String::new();
-                    program.uniform_values = linked.initial_values.clone();
-                    let executable =
-                        Executable { vertex: linked.vertex, fragment: linked.fragment, interface: Arc::new(linked) };
+                    program.uniform_values = executable.interface.initial_values.clone();
                     program.executable = Some(Arc::new(executable));
                     Ok(program.executable.clone())
                 }

@@ -252,8 +252,9 @@ impl Default for Limits {
     /// What tessera's GL reports (`crate::gl::limits`): 4 texture units, 6 clip planes. No
     /// texture image units for vertex shaders (GL 2.0 allows 0). Shaders see 8 texture
     /// coordinate sets, as on Mesa (piglit's shaders index `gl_TexCoord[7]` without asking),
-    /// which GL_MAX_TEXTURE_COORDS must report once programs run; the uniform and varying
-    /// budgets are Mesa's llvmpipe values.
+    /// which GL_MAX_TEXTURE_COORDS must report once programs run; the uniform budgets are
+    /// Mesa's llvmpipe values, the varying budget what the vertex record carries
+    /// ([`super::varyings`]; Mesa's is 128).
     fn default() -> Self {
         use crate::gl::limits::{MAX_CLIP_PLANES, MAX_DRAW_BUFFERS, MAX_LIGHTS, MAX_TEXTURE_UNITS, MAX_VERTEX_ATTRIBS};
         Limits {
@@ -263,7 +264,7 @@ impl Default for Limits {
             max_texture_coords: 8,
             max_vertex_attribs: MAX_VERTEX_ATTRIBS as i32,
             max_vertex_uniform_components: 4096,
-            max_varying_floats: 128,
+            max_varying_floats: super::varyings::MAX_VARYING_FLOATS as i32,
             max_vertex_texture_image_units: 0,
             max_combined_texture_image_units: MAX_TEXTURE_UNITS as i32,
             max_texture_image_units: MAX_TEXTURE_UNITS as i32,

@@ -34,8 +34,9 @@ use std::sync::Arc;
 pub const MAX_VERTEX_ATTRIBS: u32 = 16;
 /// Uniform components per stage (GL_MAX_{VERTEX,FRAGMENT}_UNIFORM_COMPONENTS on llvmpipe).
 pub const MAX_UNIFORM_COMPONENTS: usize = 16384;
-/// Varying components the fragment shader may read (GL_MAX_VARYING_FLOATS).
-pub const MAX_VARYING_FLOATS: usize = 128;
+/// Varying components the fragment shader may read (GL_MAX_VARYING_FLOATS): what the vertex
+/// record's slots carry ([`super::varyings`]).
+pub const MAX_VARYING_FLOATS: usize = super::varyings::MAX_VARYING_FLOATS;
 
 /// One active uniform as glGetActiveUniform lists it: a scalar, vector, matrix or sampler,
 /// or an array of one.

@@ -30,6 +30,7 @@ pub mod link;
 pub mod lower;
 pub mod parse;
 pub mod preprocess;
+pub mod varyings;
 
 #[cfg(test)]
 mod check_tests;
