@@ -95,7 +95,7 @@ pub struct StageProgram {
 impl Executable {
     /// Lowers and compiles the stages of a successful link and places its varyings; an
     /// error is the link's info log.
-    fn new(linked: Linked) -> Result<Executable, String> {
+    pub fn new(linked: Linked) -> Result<Executable, String> {
         let stage = |stage: Stage| -> Result<Option<Arc<StageProgram>>, String> {
             let units: Vec<&Checked> = linked.shaders.iter().filter(|s| s.stage == stage).map(|s| s.as_ref()).collect();
             if units.is_empty() {
@@ -817,7 +817,7 @@ impl ProgramInUse {
 
 /// Compiles `source` for `stage` with the GLSL front end: the checked shader if it compiled,
 /// and the info log (empty on success without warnings, as Mesa's).
-fn compile(stage: Stage, source: &str) -> (Option<Arc<Checked>>, String) {
+pub fn compile(stage: Stage, source: &str) -> (Option<Arc<Checked>>, String) {
     let mut log = crate::glsl::InfoLog::default();
     let checked = crate::glsl::compile_shader(source, stage, &crate::glsl::Options::default(), &mut log);
     let Some(checked) = checked.filter(|_| !log.has_errors()).map(Arc::new) else { return (None, log.text()) };

@@ -13,6 +13,24 @@ pub const RENDERER: &str = concat!("tessera ", env!("CARGO_PKG_VERSION"), " (sof
 /// GL 2.0 needs GLSL.
 pub const VERSION: &str = concat!("1.5 tessera ", env!("CARGO_PKG_VERSION"), "\0");
 
+/// GL_VERSION under `TESSERA_PREVIEW=gl21` ([`preview_gl21`]).
+pub const PREVIEW_VERSION: &str = concat!("2.1 tessera ", env!("CARGO_PKG_VERSION"), " (preview)\0");
+
+/// GL_SHADING_LANGUAGE_VERSION under the preview.
+pub const SHADING_LANGUAGE_VERSION: &str = "1.20\0";
+
+/// Whether `TESSERA_PREVIEW` names `gl21` (read once per process): the version string, the
+/// shading language version and context creation then say GL 2.1, before every GL 2.1
+/// feature works, so that conformance suites (piglit's GLSL tests, tools/piglit-glsl.sh)
+/// can measure the GLSL work in progress. Not for applications: what does not work yet is
+/// listed in tests/piglit/glsl-expected.txt and issue #20.
+pub fn preview_gl21() -> bool {
+    static PREVIEW: std::sync::OnceLock<bool> = std::sync::OnceLock::new();
+    *PREVIEW.get_or_init(|| {
+        std::env::var("TESSERA_PREVIEW").is_ok_and(|v| v.split(',').any(|topic| topic.trim() == "gl21"))
+    })
+}
+
 // The version audit: each feature of the GL 1.2–1.5 core feature lists (GL 2.1 spec,
 // appendices C–F) checked against the code and its tests. GL 1.0/1.1 are complete now that
 // evaluators and smoothing exist; GL 2.0 needs GLSL.
@@ -160,14 +178,24 @@ pub const PROVIDED_VERSION: (i32, i32) = {
     (major, minor)
 };
 
+/// The version contexts are created with: [`PROVIDED_VERSION`], or 2.1 under the preview.
+fn offered_version() -> (i32, i32) {
+    if preview_gl21() {
+        (2, 1)
+    } else {
+        PROVIDED_VERSION
+    }
+}
+
 /// Whether a context of GL version `major.minor` (compatibility profile) can be created.
 pub fn supports_version(major: i32, minor: i32) -> bool {
-    (major, minor) <= PROVIDED_VERSION && major >= 1 && minor >= 0
+    (major, minor) <= offered_version() && major >= 1 && minor >= 0
 }
 
 /// What tessera provides, for messages: e.g. "OpenGL 1.5 (compatibility)".
 pub fn provided_description() -> String {
-    format!("OpenGL {}.{} (compatibility)", PROVIDED_VERSION.0, PROVIDED_VERSION.1)
+    let (major, minor) = offered_version();
+    format!("OpenGL {major}.{minor} (compatibility)")
 }
 
 fn extensions_string() -> &'static str {
@@ -188,7 +216,9 @@ impl Context {
         match name {
             GL_VENDOR => Some(VENDOR),
             GL_RENDERER => Some(RENDERER),
+            GL_VERSION if preview_gl21() => Some(PREVIEW_VERSION),
             GL_VERSION => Some(VERSION),
+            GL_SHADING_LANGUAGE_VERSION if preview_gl21() => Some(SHADING_LANGUAGE_VERSION),
             GL_EXTENSIONS => Some(extensions_string()),
             _ => {
                 self.error(GL_INVALID_ENUM);

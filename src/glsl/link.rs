@@ -585,11 +585,13 @@ pub fn link(shaders: &[Arc<Checked>], bindings: &[(String, u32)]) -> Result<Link
         reach.walk_from(mains[0]);
         // As Mesa, a prototype called by a function that main never reaches must be
         // defined too.
+        // One walker for all of them (what it records is ignored): a new one per function
+        // would index every definition again, quadratic in the number of functions.
+        let mut ignored = Reach::new(shaders, stage);
         for &sh in &reach.stage_shaders.clone() {
             for f in 0..shaders[sh].functions.len() {
                 if shaders[sh].functions[f].body.is_some() && !reach.functions.contains(&(sh, f)) {
                     let mut calls = Vec::new();
-                    let mut ignored = Reach::new(shaders, stage);
                     for stmt in shaders[sh].functions[f].body.iter().flatten() {
                         ignored.stmt(sh, stmt, &mut calls);
                     }
