@@ -45,7 +45,9 @@ pub mod buffer_objects;
 pub mod clip;
 pub mod components;
 pub mod cull;
+pub mod generic;
 pub mod geometry;
+pub mod glsl;
 pub mod immediate;
 pub mod lighting;
 pub mod line;
@@ -80,4 +82,11 @@ pub struct Vertex {
     pub fog_coord: f32,
     /// Whether edges starting at this vertex are boundary edges (glEdgeFlag).
     pub edge_flag: bool,
+    /// Where the vertex's generic attributes are, for GLSL vertex programs that read them:
+    /// a row of the draw's [`generic::GenericRows`], or [`generic::CURRENT`] (the current
+    /// values at the draw). It fills the record's padding: fixed-function draws pay nothing.
+    pub generic: u32,
 }
+
+// The generic row index lives in the padding after the edge flag.
+const _: () = assert!(std::mem::size_of::<Vertex>() == 144);

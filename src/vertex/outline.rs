@@ -132,7 +132,7 @@ impl Outline<'_> {
                 self.g.viewport.window_down(c, fused),
                 self.g.viewport.window(c),
                 c.back_colors,
-                self.g.point_size_at(c.eye),
+                self.g.point_size_of(c),
             )
         };
         if codes[0] | codes[1] | codes[2] == 0 {
