@@ -17,9 +17,9 @@ mod snapshot;
 #[cfg(test)]
 pub(super) mod tests;
 
+use super::shader_objects::Executable;
 use super::{debug, Context};
 use crate::framebuffer::ColorFormat;
-use super::shader_objects::Executable;
 use crate::gl::enums::{GL_FIXED_ONLY, GL_INVALID_OPERATION, GL_TRUE};
 use crate::gl::types::GLenum;
 use crate::raster::thread_count;
@@ -185,8 +185,11 @@ impl Context {
             Some(AttributePlace { location: a.location?, column_rows })
         };
         let inputs = lowered.inputs.iter().map(|w| Input::of(w, attribute)).collect();
-        let outputs =
-            lowered.outputs.iter().map(|w| Output::of(w, |name, index| executable.varyings.index_of(name, index))).collect();
+        let outputs = lowered
+            .outputs
+            .iter()
+            .map(|w| Output::of(w, |name, index| executable.varyings.index_of(name, index)))
+            .collect();
         let values = if lowered.uniforms.iter().any(|w| !w.name.starts_with("gl_")) {
             self.program_in_use.uniform_values().unwrap_or_default()
         } else {

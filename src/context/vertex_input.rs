@@ -24,6 +24,8 @@ mod buffers;
 mod compiled;
 mod draws;
 mod generic;
+#[cfg(test)]
+mod glsl_tests;
 mod immediate;
 
 use super::get::Value;

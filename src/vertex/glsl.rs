@@ -30,10 +30,16 @@ pub enum Input {
     Normal(u8),
     Color(u8),
     SecondaryColor(u8),
-    TexCoord { unit: u8, k: u8 },
+    TexCoord {
+        unit: u8,
+        k: u8,
+    },
     FogCoord,
     /// Generic attribute `attribute` (1 and up: 0 is the position).
-    Generic { attribute: u8, k: u8 },
+    Generic {
+        attribute: u8,
+        k: u8,
+    },
     /// A value no vertex carries (`gl_MultiTexCoord` of a unit beyond the fixed-function
     /// ones reads (0, 0, 0, 1)).
     Constant(f32),
@@ -278,3 +284,57 @@ const ZERO: ClipVertex = ClipVertex {
     point_size: 0.0,
     edge_flag: true,
 };
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn word(name: &str, index: u32) -> InterfaceWord {
+        InterfaceWord { name: name.to_string(), index }
+    }
+
+    #[test]
+    fn inputs_name_built_in_attributes_and_generic_locations() {
+        let places = |name: &str| match name {
+            "v" => Some(AttributePlace { location: 3, column_rows: 4 }),
+            "m" => Some(AttributePlace { location: 5, column_rows: 3 }),
+            "p" => Some(AttributePlace { location: 0, column_rows: 4 }),
+            _ => None,
+        };
+        let input = |name: &str, index: u32| Input::of(&word(name, index), places);
+        assert_eq!(input("gl_Vertex", 3), Input::Position(3));
+        assert_eq!(input("gl_Normal", 2), Input::Normal(2));
+        assert_eq!(input("gl_SecondaryColor", 1), Input::SecondaryColor(1));
+        assert_eq!(input("gl_FogCoord", 0), Input::FogCoord);
+        assert_eq!(input("gl_MultiTexCoord3", 1), Input::TexCoord { unit: 3, k: 1 });
+        // Units beyond the fixed-function ones read (0, 0, 0, 1).
+        assert_eq!(input("gl_MultiTexCoord6", 2), Input::Constant(0.0));
+        assert_eq!(input("gl_MultiTexCoord7", 3), Input::Constant(1.0));
+        assert_eq!(input("v", 2), Input::Generic { attribute: 3, k: 2 });
+        // A mat3 takes three locations, one per column of three words.
+        assert_eq!(input("m", 0), Input::Generic { attribute: 5, k: 0 });
+        assert_eq!(input("m", 4), Input::Generic { attribute: 6, k: 1 });
+        assert_eq!(input("m", 8), Input::Generic { attribute: 7, k: 2 });
+        // Generic attribute 0 is the position.
+        assert_eq!(input("p", 1), Input::Position(1));
+    }
+
+    #[test]
+    fn outputs_name_record_fields_and_varying_slots() {
+        let varying = |name: &str, index: u32| match name {
+            "gl_TexCoord[1]" => Some(4 + index as u16),
+            "far" => Some(40),
+            _ => None,
+        };
+        let output = |name: &str, index: u32| Output::of(&word(name, index), varying);
+        assert_eq!(output("gl_Position", 2), Output::Position(2));
+        assert_eq!(output("gl_ClipVertex", 0), Output::ClipVertex(0));
+        assert_eq!(output("gl_BackSecondaryColor", 3), Output::Color(ColorOutput::BackSecondary, 3));
+        assert_eq!(output("gl_FogFragCoord", 0), Output::FogFragCoord);
+        assert_eq!(output("gl_PointSize", 0), Output::PointSize);
+        assert_eq!(output("gl_TexCoord[1]", 3), Output::Varying(7));
+        // Beyond the record's slots, or read by no later stage: not stored.
+        assert_eq!(output("far", 0), Output::None);
+        assert_eq!(output("unread", 0), Output::None);
+    }
+}

@@ -20,7 +20,7 @@
 use super::{independent_primitive_size, Context, BATCH_VERTICES};
 use crate::context::state::CurrentState;
 use crate::gl::enums::*;
-use crate::gl::limits::MAX_TEXTURE_UNITS;
+use crate::gl::limits::{MAX_TEXTURE_UNITS, MAX_VERTEX_ATTRIBS};
 use crate::gl::types::GLenum;
 use crate::vertex::arrays::{
     byte_extent, index_range, ArrayId, ArrayState, BoundArray, ClientArrays, ClientMemory, IndexType,
@@ -34,8 +34,13 @@ use crate::vertex::Vertex;
 /// How many arrays there are (`ClientArrays::all`).
 const ARRAY_COUNT: usize = 7 + MAX_TEXTURE_UNITS;
 
-/// The values of one glArrayElement, per enabled array.
-pub(crate) type FetchedElement = [Option<(ArrayId, [f32; 4])>; ARRAY_COUNT];
+/// The values of one glArrayElement, per enabled array: the fixed-function ones (with the
+/// position), then the generic attributes past 0.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct FetchedElement {
+    arrays: [Option<(ArrayId, [f32; 4])>; ARRAY_COUNT],
+    generic: [Option<[f32; 4]>; MAX_VERTEX_ATTRIBS],
+}
 
 /// A draw's batch vector keeps at most this many vertices of capacity between draws (the
 /// connected modes are delivered whole when a display list captures them, and may be long).
@@ -239,8 +244,7 @@ impl Context {
     /// current ones when the list runs).
     fn array_draw_needs_generic_rows(&self) -> bool {
         let reads_generic = self.program_in_use.executable().is_some_and(|e| {
-            e.vertex_program.is_some()
-                && e.interface.attributes.iter().any(|a| a.location.is_some_and(|l| l > 0))
+            e.vertex_program.is_some() && e.interface.attributes.iter().any(|a| a.location.is_some_and(|l| l > 0))
         });
         reads_generic
             && self.vertex_input.capture.is_none()
@@ -391,13 +395,22 @@ impl Context {
             return Ok(None);
         };
         let buffers = self.buffers.lock();
-        let mut fetched: FetchedElement = [None; ARRAY_COUNT];
-        for (slot, (id, array)) in fetched.iter_mut().zip(self.vertex_input.arrays.all()) {
+        let mut fetched = FetchedElement { arrays: [None; ARRAY_COUNT], generic: [None; MAX_VERTEX_ATTRIBS] };
+        for (slot, (id, array)) in fetched.arrays.iter_mut().zip(self.vertex_input.arrays.all()) {
             if array.enabled {
                 let Ok(bytes) = array_bytes(array, &buffers, memory, index, index) else {
                     return Ok(None);
                 };
                 *slot = Some((id, BoundArray::new(id, array, bytes, index).fetch(index)));
+            }
+        }
+        let generic = self.vertex_input.arrays.generic.iter().enumerate().skip(1);
+        for ((_, array), slot) in generic.zip(fetched.generic.iter_mut().skip(1)) {
+            if array.enabled {
+                let Ok(bytes) = array_bytes(array, &buffers, memory, index, index) else {
+                    return Ok(None);
+                };
+                *slot = Some(BoundArray::new(ArrayId::Vertex, array, bytes, index).fetch(index));
             }
         }
         Ok(Some(fetched))
@@ -406,7 +419,12 @@ impl Context {
     /// The second half of glArrayElement: the attribute commands, then glVertex.
     pub(crate) fn apply_array_element(&mut self, fetched: &FetchedElement) {
         let mut position = None;
-        for &(id, value) in fetched.iter().flatten() {
+        for (index, value) in fetched.generic.iter().enumerate() {
+            if let Some(value) = *value {
+                self.set_generic(index, value);
+            }
+        }
+        for &(id, value) in fetched.arrays.iter().flatten() {
             let current = &mut self.state.current;
             match id {
                 ArrayId::Vertex => position = Some(value),

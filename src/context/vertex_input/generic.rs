@@ -76,7 +76,7 @@ impl Context {
     /// vertices keep the values they were made with: the first change there puts the values
     /// before it in a row (which the open vertices then name), and each change after a
     /// glVertex starts a new row for the vertices to come ([`crate::vertex::generic`]).
-    fn set_generic(&mut self, index: usize, value: [f32; 4]) {
+    pub(super) fn set_generic(&mut self, index: usize, value: [f32; 4]) {
         let current = &mut self.state.current;
         let before = current.generic;
         current.generic[index] = value;
