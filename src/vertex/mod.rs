@@ -13,8 +13,10 @@
 //! draw; everything else the snapshot holds is a handful of words computed once per draw.
 //! Nothing here imports `context`, `api` or `winsys`.
 //!
-//! Every source of vertices produces the same [`Vertex`] records, so everything after
-//! vertex input has one path: [`transform::transform`] makes clip-space vertices, and
+//! Every source of vertices produces the same [`Vertex`] records (generic attributes, which
+//! only GLSL vertex shaders read, beside them: [`generic`]), so everything after vertex
+//! input has one path: [`transform`] (or a GLSL vertex shader, [`glsl`]) makes clip-space
+//! vertices, and
 //! [`pipeline::draw`] assembles and clips them ([`assembly`], [`clip`]) and hands each
 //! primitive to its setup: [`triangle`] (with [`cull`] and [`offset`]), [`line`], [`point`]
 //! or, in the point and line polygon modes, [`outline`]; all of them map to window space
