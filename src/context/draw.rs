@@ -17,9 +17,10 @@ mod snapshot;
 #[cfg(test)]
 pub(super) mod tests;
 
+use super::shader_objects::Executable;
 use super::{debug, Context};
 use crate::framebuffer::ColorFormat;
-use crate::gl::enums::GL_INVALID_OPERATION;
+use crate::gl::enums::{GL_FIXED_ONLY, GL_INVALID_OPERATION, GL_TRUE};
 use crate::gl::types::GLenum;
 use crate::raster::thread_count;
 use crate::setup::jobs::clear::ClearJob;
@@ -27,6 +28,7 @@ use crate::setup::{Primitive as RasterPrimitive, Scene};
 use crate::vertex::assembly::DrawPart;
 use crate::vertex::attribute::Attribute;
 use crate::vertex::geometry::Geometry;
+use crate::vertex::glsl::{AttributePlace, GlslStage, Input, Output};
 use crate::vertex::line::LineStipple;
 use crate::vertex::pipeline;
 use crate::vertex::transform::StageCache;
@@ -68,10 +70,11 @@ impl Context {
     /// and last parts of a polygon draw its first and closing outline edges. Parts are
     /// delivered only while rendering (selection and feedback take primitives whole).
     pub fn draw_part(&mut self, mode: GLenum, vertices: &[Vertex], part: DrawPart) {
-        if self.program_in_use.executable().is_some() {
-            // GLSL programs do not run yet (their lowering onto the shading IR is the rest of
-            // issue #20; GL_VERSION stays 1.5 until it lands): refuse the draw rather than
-            // draw it with fixed-function processing.
+        let executable = self.program_in_use.executable().cloned();
+        if executable.as_ref().is_some_and(|e| e.fragment_program.is_some()) {
+            // GLSL fragment shaders do not run yet (the fragment side of issue #20; GL_VERSION
+            // stays 1.5 until it lands): refuse the draw rather than draw it with
+            // fixed-function fragment processing.
             return self.error(GL_INVALID_OPERATION);
         }
         if !self.rendering() {
@@ -102,6 +105,26 @@ impl Context {
             let how = if cached { "cached" } else { "compiled" };
             let name = debug::mode_name(mode);
             eprintln!("tessera pipeline: {name} ({} vertices), state {state_index} {how}: {stages}", vertices.len());
+        }
+        if let Some(executable) = executable.filter(|e| e.vertex_program.is_some()) {
+            // A GLSL vertex shader replaces the fixed-function per-vertex stage.
+            let mut geometry = Geometry { per_sample, ..self.geometry(depth_bits, height) };
+            let lp = &self.state.line_point;
+            geometry.two_side = lp.vertex_program_two_side;
+            geometry.point_attenuation = None;
+            geometry.program_point_size =
+                lp.vertex_program_point_size.then_some([lp.point_size_min, lp.point_size_max]);
+            let stage = self.vertex_shader_stage(&executable, float_color);
+            let mut stipple = self.active_line_stipple();
+            if let (false, Some(s)) = (part.first, stipple.as_mut()) {
+                s.counter = self.vertex_input.stipple_counter;
+            }
+            let rows = std::mem::take(&mut self.vertex_input.generic_rows);
+            let stipple = stage.run(vertices, &rows, &self.state.current.generic, |clip_vertices| {
+                pipeline::draw(&mut scene, state_index, &geometry, mode, clip_vertices, part, stipple)
+            });
+            self.vertex_input.generic_rows = rows;
+            return self.end_part(scene, stipple, part);
         }
         let units = self.tex_coord_units();
         let previous = self.stage_cache.take();
@@ -143,6 +166,52 @@ impl Context {
         };
         self.stage_cache = Some(stage);
         self.end_part(scene, stipple, part);
+    }
+
+    /// The GLSL vertex stage of a draw with `executable` (which has a vertex shader) into a
+    /// float (`float_color`) or fixed-point colour buffer: its interface wired, its uniform
+    /// words filled (user uniforms from the program's values, built-in state from
+    /// [`Context::builtin_uniform_word`], 0 where it has none), once per draw.
+    pub(crate) fn vertex_shader_stage<'e>(&self, executable: &'e Executable, float_color: bool) -> GlslStage<'e> {
+        let program = executable.vertex_program.as_ref().expect("a vertex shader");
+        let lowered = &program.lowered;
+        let interface = &executable.interface;
+        let attribute = |name: &str| {
+            let a = interface.attributes.iter().find(|a| a.name == name)?;
+            let column_rows = match a.ty {
+                crate::glsl::hir::Type::Matrix(_, rows) => u32::from(rows),
+                _ => 4,
+            };
+            Some(AttributePlace { location: a.location?, column_rows })
+        };
+        let inputs = lowered.inputs.iter().map(|w| Input::of(w, attribute)).collect();
+        let outputs = lowered
+            .outputs
+            .iter()
+            .map(|w| Output::of(w, |name, index| executable.varyings.index_of(name, index)))
+            .collect();
+        let values = if lowered.uniforms.iter().any(|w| !w.name.starts_with("gl_")) {
+            self.program_in_use.uniform_values().unwrap_or_default()
+        } else {
+            Vec::new()
+        };
+        let uniforms = lowered
+            .uniforms
+            .iter()
+            .map(|w| {
+                if w.name.starts_with("gl_") {
+                    return self.builtin_uniform_word(&w.name, w.index).unwrap_or(0);
+                }
+                let first = interface.element(&w.name).map(|(_, first)| first);
+                first.and_then(|first| values.get(first + w.index as usize)).copied().unwrap_or(0)
+            })
+            .collect();
+        let clamp_color = match self.state.lighting.clamp_vertex_color {
+            GL_FIXED_ONLY => !float_color,
+            c => c == GL_TRUE as GLenum,
+        };
+        let two_side = self.state.line_point.vertex_program_two_side;
+        GlslStage::new(&program.compiled, inputs, outputs, uniforms, clamp_color, two_side)
     }
 
     /// After a draw (or a part of one): keeps the line stipple counter for the next part, and

@@ -30,6 +30,7 @@ fn vertex(position: [f32; 4], color: [f32; 4]) -> Vertex {
         tex_coords: [[0.0; 4]; 4],
         fog_coord: 0.0,
         edge_flag: true,
+        generic: crate::vertex::generic::CURRENT,
     }
 }
 

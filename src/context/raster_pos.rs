@@ -76,6 +76,7 @@ impl Context {
             tex_coords: current.tex_coords,
             fog_coord: current.fog_coord,
             edge_flag: true,
+            generic: crate::vertex::generic::CURRENT,
         };
         let units = self.tex_coord_units_of(0..MAX_TEXTURE_UNITS);
         // glMaterial marks belong to a glBegin/glEnd pair, never to the raster position.

@@ -889,9 +889,15 @@ mod tests {
     }
 
     #[test]
-    fn draws_with_a_program_in_use_are_refused_until_programs_run() {
+    fn draws_with_a_fragment_shader_are_refused_until_fragment_programs_run() {
         let mut ctx = context();
-        let (program, _) = linked_program(&mut ctx);
+        let shader = ctx.create_shader(GL_FRAGMENT_SHADER);
+        ctx.shader_source(shader, Ok(vec![b"void main() { gl_FragColor = vec4(1.0); }".to_vec()]));
+        ctx.compile_shader(shader);
+        let program = ctx.create_program();
+        ctx.attach_shader(program, shader);
+        ctx.link_program(program);
+        assert_eq!(ctx.get_program(program, GL_LINK_STATUS), Some(1));
         ctx.use_program(program);
         ctx.draw_vertices(
             crate::gl::enums::GL_POINTS,

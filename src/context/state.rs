@@ -550,6 +550,10 @@ pub struct CurrentState {
     /// The current generic attributes (glVertexAttrib); attribute 0 is the vertex itself and
     /// has none.
     pub generic: [[f32; 4]; crate::gl::limits::MAX_VERTEX_ATTRIBS],
+    /// The row of the open glBegin/glEnd's generic attribute rows that holds `generic`, once
+    /// glVertexAttrib changed them there (see [`crate::vertex::generic`]); else
+    /// [`crate::vertex::generic::CURRENT`].
+    pub generic_row: u32,
 }
 
 impl CurrentState {
@@ -564,6 +568,7 @@ impl CurrentState {
             tex_coords: self.tex_coords,
             fog_coord: self.fog_coord,
             edge_flag: self.edge_flag,
+            generic: self.generic_row,
         }
     }
 }
@@ -580,6 +585,7 @@ impl Default for CurrentState {
             index: 1.0,
             raster: Default::default(),
             generic: [[0.0, 0.0, 0.0, 1.0]; crate::gl::limits::MAX_VERTEX_ATTRIBS],
+            generic_row: crate::vertex::generic::CURRENT,
         }
     }
 }

@@ -24,6 +24,8 @@ mod buffers;
 mod compiled;
 mod draws;
 mod generic;
+#[cfg(test)]
+mod glsl_tests;
 mod immediate;
 
 use super::get::Value;
@@ -33,6 +35,7 @@ use crate::gl::enums::*;
 use crate::gl::types::GLenum;
 use crate::vertex::arrays::{ArrayId, ClientArrays};
 use crate::vertex::assembly::{continued_vertices, DrawPart};
+use crate::vertex::generic::GenericRows;
 use crate::vertex::Vertex;
 pub use generic::AttribValue;
 
@@ -70,6 +73,9 @@ pub struct VertexInput {
     vertices: Vec<Vertex>,
     /// The vertices of an array draw under construction.
     batch: Vec<Vertex>,
+    /// The generic attribute rows the open glBegin/glEnd's vertices, or an array draw's,
+    /// name ([`crate::vertex::generic`]).
+    pub(crate) generic_rows: GenericRows,
     /// glMaterial between glBegin and glEnd: from which open vertex on each front and back
     /// material applies (empty when glMaterial was not called since glBegin).
     pub material_marks: Vec<(usize, [Material; 2])>,

@@ -17,6 +17,7 @@ fn vertex(x: f32, y: f32, color: [f32; 4]) -> Vertex {
         tex_coords: [[0.0; 4]; 4],
         fog_coord: 0.0,
         edge_flag: true,
+        generic: crate::vertex::generic::CURRENT,
     }
 }
 

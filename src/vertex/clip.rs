@@ -25,6 +25,9 @@ pub struct ClipVertex {
     pub back_colors: [[f32; 4]; 2],
     pub tex_coords: [[f32; 4]; MAX_TEXTURE_UNITS],
     pub fog_coord: f32,
+    /// gl_PointSize of a GLSL vertex program (read with GL_VERTEX_PROGRAM_POINT_SIZE; 0 from
+    /// fixed-function processing, which never sets it).
+    pub point_size: f32,
     /// Whether the edge from this vertex to the next one of its polygon is a boundary edge.
     pub edge_flag: bool,
 }
@@ -46,6 +49,7 @@ impl ClipVertex {
             back_colors: [0, 1].map(|k| mix4(self.back_colors[k], other.back_colors[k])),
             tex_coords,
             fog_coord: mix(self.fog_coord, other.fog_coord),
+            point_size: mix(self.point_size, other.point_size),
             edge_flag: self.edge_flag,
         }
     }
@@ -241,6 +245,7 @@ mod tests {
             back_colors: [[0.0; 4]; 2],
             tex_coords: [[0.0; 4]; MAX_TEXTURE_UNITS],
             fog_coord: 0.0,
+            point_size: 0.0,
             edge_flag: true,
         }
     }

@@ -38,6 +38,9 @@ pub struct Geometry {
     /// GL_POINT_DISTANCE_ATTENUATION's coefficients with GL_POINT_SIZE_MIN/MAX, when they
     /// attenuate (not (1, 0, 0)); `point_size` is used unchanged otherwise.
     pub point_attenuation: Option<PointAttenuation>,
+    /// GL_VERTEX_PROGRAM_POINT_SIZE with a GLSL vertex program: points take their vertex's
+    /// gl_PointSize, clamped to these GL_POINT_SIZE_MIN and MAX.
+    pub program_point_size: Option<[f32; 2]>,
     /// glPolygonMode of front and back faces.
     pub mode_front: GLenum,
     pub mode_back: GLenum,

@@ -13,8 +13,10 @@
 //! draw; everything else the snapshot holds is a handful of words computed once per draw.
 //! Nothing here imports `context`, `api` or `winsys`.
 //!
-//! Every source of vertices produces the same [`Vertex`] records, so everything after
-//! vertex input has one path: [`transform::transform`] makes clip-space vertices, and
+//! Every source of vertices produces the same [`Vertex`] records (generic attributes, which
+//! only GLSL vertex shaders read, beside them: [`generic`]), so everything after vertex
+//! input has one path: [`transform`] (or a GLSL vertex shader, [`glsl`]) makes clip-space
+//! vertices, and
 //! [`pipeline::draw`] assembles and clips them ([`assembly`], [`clip`]) and hands each
 //! primitive to its setup: [`triangle`] (with [`cull`] and [`offset`]), [`line`], [`point`]
 //! or, in the point and line polygon modes, [`outline`]; all of them map to window space
@@ -45,7 +47,9 @@ pub mod buffer_objects;
 pub mod clip;
 pub mod components;
 pub mod cull;
+pub mod generic;
 pub mod geometry;
+pub mod glsl;
 pub mod immediate;
 pub mod lighting;
 pub mod line;
@@ -80,4 +84,11 @@ pub struct Vertex {
     pub fog_coord: f32,
     /// Whether edges starting at this vertex are boundary edges (glEdgeFlag).
     pub edge_flag: bool,
+    /// Where the vertex's generic attributes are, for GLSL vertex programs that read them:
+    /// a row of the draw's [`generic::GenericRows`], or [`generic::CURRENT`] (the current
+    /// values at the draw). It fills the record's padding: fixed-function draws pay nothing.
+    pub generic: u32,
 }
+
+// The generic row index lives in the padding after the edge flag.
+const _: () = assert!(std::mem::size_of::<Vertex>() == 144);

@@ -128,12 +128,7 @@ impl Outline<'_> {
         let edges = std::array::from_fn(|i| t.edges[i] && v[i].edge_flag);
         let flat = self.g.flat.then(|| FlatColors::of(v[if self.g.first_vertex { 0 } else { 2 }]));
         let corner = |c: &ClipVertex, fused: bool| {
-            (
-                self.g.viewport.window_down(c, fused),
-                self.g.viewport.window(c),
-                c.back_colors,
-                self.g.point_size_at(c.eye),
-            )
+            (self.g.viewport.window_down(c, fused), self.g.viewport.window(c), c.back_colors, self.g.point_size_of(c))
         };
         if codes[0] | codes[1] | codes[2] == 0 {
             let w = v.map(|c| corner(c, true));

@@ -84,16 +84,21 @@ impl PointSprites {
 }
 
 impl Geometry {
-    /// The width of a point whose vertex has eye coordinates `eye`.
-    pub fn point_size_at(&self, eye: [f32; 4]) -> f32 {
-        self.point_attenuation.map_or(self.point_size, |a| a.size_at(eye))
+    /// The width of the point of vertex `v`: its program's gl_PointSize
+    /// (GL_VERTEX_PROGRAM_POINT_SIZE, clamped as glPointSize's), else glPointSize's, attenuated
+    /// by the eye distance when GL_POINT_DISTANCE_ATTENUATION says so.
+    pub fn point_size_of(&self, v: &ClipVertex) -> f32 {
+        if let Some(limits) = self.program_point_size {
+            return clamp_point_size(v.point_size, limits[0], limits[1]);
+        }
+        self.point_attenuation.map_or(self.point_size, |a| a.size_at(v.eye))
     }
 }
 
 /// Emits a point whose vertex is inside the view volume.
 pub fn emit_point(scene: &mut Scene, state: u32, g: &Geometry, v: &ClipVertex) {
     let w = g.viewport.window_down(v, true);
-    emit_window_point(scene, state, g, &w, g.point_size_at(v.eye));
+    emit_window_point(scene, state, g, &w, g.point_size_of(v));
 }
 
 pub fn emit_window_point(scene: &mut Scene, state: u32, g: &Geometry, w: &LineVertex, size: f32) {

@@ -411,6 +411,7 @@ impl Run {
                 back_colors: [[0.0; 4]; 2],
                 tex_coords: v.tex_coords,
                 fog_coord: 0.0,
+                point_size: 0.0,
                 edge_flag: v.edge_flag,
             }));
             let out = &mut scratch.clip[base..];
@@ -564,6 +565,7 @@ const EMPTY: ClipVertex = ClipVertex {
     back_colors: [[0.0; 4]; 2],
     tex_coords: [[0.0; 4]; crate::gl::limits::MAX_TEXTURE_UNITS],
     fog_coord: 0.0,
+    point_size: 0.0,
     edge_flag: false,
 };
 

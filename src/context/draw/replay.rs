@@ -33,6 +33,7 @@ pub(crate) fn vertex(x: f32, y: f32, z: f32, color: [f32; 4]) -> Vertex {
         tex_coords: [[0.0; 4]; 4],
         fog_coord: 0.0,
         edge_flag: true,
+        generic: crate::vertex::generic::CURRENT,
     }
 }
 

@@ -135,6 +135,7 @@ impl Context {
             height: height as i32,
             line_width: lp.line_width.min(MAX_LINE_WIDTH),
             point_size: point_size(lp.point_size, lp.point_size_min, lp.point_size_max),
+            program_point_size: None,
             point_attenuation: (lp.point_distance_attenuation != [1.0, 0.0, 0.0]).then_some(PointAttenuation {
                 size: lp.point_size,
                 coefficients: lp.point_distance_attenuation,

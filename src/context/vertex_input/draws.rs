@@ -20,21 +20,27 @@
 use super::{independent_primitive_size, Context, BATCH_VERTICES};
 use crate::context::state::CurrentState;
 use crate::gl::enums::*;
-use crate::gl::limits::MAX_TEXTURE_UNITS;
+use crate::gl::limits::{MAX_TEXTURE_UNITS, MAX_VERTEX_ATTRIBS};
 use crate::gl::types::GLenum;
 use crate::vertex::arrays::{
     byte_extent, index_range, ArrayId, ArrayState, BoundArray, ClientArrays, ClientMemory, IndexType,
 };
 use crate::vertex::assembly::{continued_vertices, DrawPart};
 use crate::vertex::buffer_objects::BufferTable;
+use crate::vertex::generic::GenericRows;
 use crate::vertex::immediate::is_primitive_mode;
 use crate::vertex::Vertex;
 
 /// How many arrays there are (`ClientArrays::all`).
 const ARRAY_COUNT: usize = 7 + MAX_TEXTURE_UNITS;
 
-/// The values of one glArrayElement, per enabled array.
-pub(crate) type FetchedElement = [Option<(ArrayId, [f32; 4])>; ARRAY_COUNT];
+/// The values of one glArrayElement, per enabled array: the fixed-function ones (with the
+/// position), then the generic attributes past 0.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct FetchedElement {
+    arrays: [Option<(ArrayId, [f32; 4])>; ARRAY_COUNT],
+    generic: [Option<[f32; 4]>; MAX_VERTEX_ATTRIBS],
+}
 
 /// A draw's batch vector keeps at most this many vertices of capacity between draws (the
 /// connected modes are delivered whole when a display list captures them, and may be long).
@@ -130,7 +136,7 @@ fn array_bytes<'a>(
 /// Fetches element `index` of `array` for each vertex of `batch`, in order, and stores it
 /// with `store`. One loop per array, monomorphized per attribute, so the per-vertex work is
 /// the fetch and a plain store.
-fn fill(batch: &mut [Vertex], elements: Elements, array: &BoundArray, store: impl Fn(&mut Vertex, [f32; 4])) {
+fn fill<T>(batch: &mut [T], elements: Elements, array: &BoundArray, store: impl Fn(&mut T, [f32; 4])) {
     // One loop per kind of element source (not a chain of both): the loop is simpler, and
     // valgrind does not see the optimizer's reads of the unused variant as uninitialised.
     match elements {
@@ -199,7 +205,52 @@ fn assemble(
     Ok(())
 }
 
+/// Gives each of `vertices` (the vertices of `elements`) a row of generic attributes in
+/// `rows`: the current values, then what the enabled generic arrays 1 and up hold (array 0
+/// is the position, which [`assemble`] fetched).
+fn assemble_generic(
+    arrays: &ClientArrays,
+    buffers: &BufferTable,
+    current: &CurrentState,
+    elements: Elements,
+    memory: &dyn ClientMemory,
+    rows: &mut GenericRows,
+    vertices: &mut [Vertex],
+) -> Result<(), NoDraw> {
+    let Some((first, last)) = elements.range() else {
+        return Ok(());
+    };
+    rows.rows.try_reserve(vertices.len()).map_err(|_| NoDraw::OutOfMemory)?;
+    let start = rows.rows.len();
+    for v in vertices.iter_mut() {
+        v.generic = rows.push(current.generic);
+    }
+    let new_rows = &mut rows.rows[start..];
+    for (attribute, array) in arrays.generic.iter().enumerate().skip(1) {
+        if array.enabled {
+            let bytes = array_bytes(array, buffers, memory, first, last)?;
+            // ArrayId::Vertex: no normalization of its own (the array's flag decides).
+            let bound = BoundArray::new(ArrayId::Vertex, array, bytes, first);
+            fill(new_rows, elements, &bound, |row, x| row[attribute] = x);
+        }
+    }
+    Ok(())
+}
+
 impl Context {
+    /// Whether an array draw makes generic attribute rows: a GLSL vertex shader in use reads
+    /// generic attributes, some generic array past 0 is enabled, and the draw is not
+    /// captured by a display list (whose vertices cannot keep rows: the values are the
+    /// current ones when the list runs).
+    fn array_draw_needs_generic_rows(&self) -> bool {
+        let reads_generic = self.program_in_use.executable().is_some_and(|e| {
+            e.vertex_program.is_some() && e.interface.attributes.iter().any(|a| a.location.is_some_and(|l| l > 0))
+        });
+        reads_generic
+            && self.vertex_input.capture.is_none()
+            && self.vertex_input.arrays.generic[1..].iter().any(|a| a.enabled)
+    }
+
     /// Whether the draw would source data from a mapped buffer: an enabled array's, or the
     /// element array buffer when `with_indices`.
     fn sources_mapped_buffer(&self, with_indices: bool) -> bool {
@@ -272,6 +323,9 @@ impl Context {
     fn draw_batch(&mut self, mode: GLenum, sources: &[IndexSource], memory: &dyn ClientMemory, part: DrawPart) {
         let mut batch = std::mem::take(&mut self.vertex_input.batch);
         batch.clear();
+        let generic = self.array_draw_needs_generic_rows();
+        let mut rows = std::mem::take(&mut self.vertex_input.generic_rows);
+        rows.clear();
         let mut outcome = Ok(());
         let buffers = self.buffers.lock();
         for &source in sources {
@@ -288,7 +342,15 @@ impl Context {
             };
             outcome = match elements {
                 Some(elements) => {
-                    assemble(&self.vertex_input.arrays, &buffers, &self.state.current, elements, memory, &mut batch)
+                    let arrays = &self.vertex_input.arrays;
+                    let start = batch.len();
+                    assemble(arrays, &buffers, &self.state.current, elements, memory, &mut batch).and_then(|()| {
+                        if !generic {
+                            return Ok(());
+                        }
+                        let vertices = &mut batch[start..];
+                        assemble_generic(arrays, &buffers, &self.state.current, elements, memory, &mut rows, vertices)
+                    })
                 }
                 None => Err(NoDraw::Undefined),
             };
@@ -297,6 +359,7 @@ impl Context {
             }
         }
         drop(buffers);
+        self.vertex_input.generic_rows = rows;
         match outcome {
             Ok(()) if !batch.is_empty() => self.deliver_part(mode, &batch, part),
             Err(NoDraw::OutOfMemory) => self.error(GL_OUT_OF_MEMORY),
@@ -305,6 +368,7 @@ impl Context {
         batch.clear();
         batch.shrink_to(KEPT_BATCH_CAPACITY);
         self.vertex_input.batch = batch;
+        self.vertex_input.generic_rows.clear();
     }
 
     /// glArrayElement: as the attribute commands with element `index` of every enabled array,
@@ -331,13 +395,22 @@ impl Context {
             return Ok(None);
         };
         let buffers = self.buffers.lock();
-        let mut fetched: FetchedElement = [None; ARRAY_COUNT];
-        for (slot, (id, array)) in fetched.iter_mut().zip(self.vertex_input.arrays.all()) {
+        let mut fetched = FetchedElement { arrays: [None; ARRAY_COUNT], generic: [None; MAX_VERTEX_ATTRIBS] };
+        for (slot, (id, array)) in fetched.arrays.iter_mut().zip(self.vertex_input.arrays.all()) {
             if array.enabled {
                 let Ok(bytes) = array_bytes(array, &buffers, memory, index, index) else {
                     return Ok(None);
                 };
                 *slot = Some((id, BoundArray::new(id, array, bytes, index).fetch(index)));
+            }
+        }
+        let generic = self.vertex_input.arrays.generic.iter().enumerate().skip(1);
+        for ((_, array), slot) in generic.zip(fetched.generic.iter_mut().skip(1)) {
+            if array.enabled {
+                let Ok(bytes) = array_bytes(array, &buffers, memory, index, index) else {
+                    return Ok(None);
+                };
+                *slot = Some(BoundArray::new(ArrayId::Vertex, array, bytes, index).fetch(index));
             }
         }
         Ok(Some(fetched))
@@ -346,7 +419,12 @@ impl Context {
     /// The second half of glArrayElement: the attribute commands, then glVertex.
     pub(crate) fn apply_array_element(&mut self, fetched: &FetchedElement) {
         let mut position = None;
-        for &(id, value) in fetched.iter().flatten() {
+        for (index, value) in fetched.generic.iter().enumerate() {
+            if let Some(value) = *value {
+                self.set_generic(index, value);
+            }
+        }
+        for &(id, value) in fetched.arrays.iter().flatten() {
             let current = &mut self.state.current;
             match id {
                 ArrayId::Vertex => position = Some(value),

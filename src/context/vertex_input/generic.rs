@@ -15,6 +15,7 @@ use crate::gl::enums::*;
 use crate::gl::limits::MAX_VERTEX_ATTRIBS;
 use crate::gl::types::GLenum;
 use crate::vertex::components::ComponentType;
+use crate::vertex::generic::CURRENT;
 
 /// A glGetVertexAttrib* answer: four values for GL_CURRENT_VERTEX_ATTRIB, else one.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -66,8 +67,45 @@ impl Context {
     pub fn vertex_attrib(&mut self, index: u32, value: [f32; 4]) {
         match self.generic_index(index) {
             Some(0) => self.vertex_xyzw(value[0], value[1], value[2], value[3]),
-            Some(index) => self.state.current.generic[index] = value,
+            Some(index) => self.set_generic(index, value),
             None => {}
+        }
+    }
+
+    /// Sets generic attribute `index`'s current value. Between glBegin and glEnd the open
+    /// vertices keep the values they were made with: the first change there puts the values
+    /// before it in a row (which the open vertices then name), and each change after a
+    /// glVertex starts a new row for the vertices to come ([`crate::vertex::generic`]).
+    pub(super) fn set_generic(&mut self, index: usize, value: [f32; 4]) {
+        let current = &mut self.state.current;
+        let before = current.generic;
+        current.generic[index] = value;
+        if !self.inside_begin_end {
+            return;
+        }
+        let input = &mut self.vertex_input;
+        if current.generic_row == CURRENT {
+            let row = input.generic_rows.push(before);
+            for v in input.vertices.iter_mut() {
+                v.generic = row;
+            }
+            current.generic_row = row;
+        }
+        let row = current.generic_row;
+        if input.vertices.last().is_some_and(|v| v.generic == row) {
+            current.generic_row = input.generic_rows.push(current.generic);
+        } else {
+            input.generic_rows.rows[row as usize] = current.generic;
+        }
+    }
+
+    /// Drops the generic attribute rows of glBegin/glEnd (at glBegin and after glEnd's
+    /// delivery): vertices made afterwards read the current values until glVertexAttrib
+    /// changes them inside glBegin/glEnd again.
+    pub(super) fn forget_generic_rows(&mut self) {
+        if self.state.current.generic_row != CURRENT || !self.vertex_input.generic_rows.rows.is_empty() {
+            self.vertex_input.generic_rows.clear();
+            self.state.current.generic_row = CURRENT;
         }
     }
 

@@ -29,6 +29,7 @@ impl Context {
         }
         self.vertex_input.begin_mode = mode;
         self.vertex_input.vertices.clear();
+        self.forget_generic_rows();
         self.vertex_input.material_marks.clear();
         self.vertex_input.parts_delivered = false;
         self.inside_begin_end = true;
@@ -41,6 +42,7 @@ impl Context {
         }
         self.inside_begin_end = false;
         self.deliver_open_vertices();
+        self.forget_generic_rows();
         self.vertex_input.material_marks.clear();
         // Mesa updates tracked materials when it flushes the current attributes.
         self.update_color_material();

@@ -56,6 +56,7 @@ pub fn transform(t: &Transform, vertices: &[Vertex]) -> Vec<ClipVertex> {
                 back_colors: [[0.0; 4]; 2],
                 tex_coords: if texgen.units.is_empty() { v.tex_coords } else { tex_coords(texgen, v, eye) },
                 fog_coord: fog_coord(v, eye),
+                point_size: 0.0,
                 edge_flag: v.edge_flag,
             }
         })

@@ -255,6 +255,7 @@ fn generated_vertex_programs_give_the_bits_of_transform() {
                     normal: if rng.below(16) == 0 { [0.0; 3] } else { rng.vec3(1.0) },
                     fog_coord: rng.range(-1.0, 4.0),
                     edge_flag: true,
+                    generic: crate::vertex::generic::CURRENT,
                 }
             })
             .collect();
@@ -369,6 +370,7 @@ fn the_vertex_stage_gives_the_reference_s_vertices_across_batches_and_material_r
                     normal: rng.vec3(1.0),
                     fog_coord: rng.range(-1.0, 4.0),
                     edge_flag: rng.below(2) == 0,
+                    generic: crate::vertex::generic::CURRENT,
                 }
             })
             .collect();
@@ -473,6 +475,7 @@ fn a_draw_reuses_the_last_stage_only_when_its_unlit_state_is_the_same_bit_for_bi
         normal: [0.0, 0.0, 1.0],
         fog_coord: 0.0,
         edge_flag: true,
+        generic: crate::vertex::generic::CURRENT,
     };
     let negative_zero =
         Mat4::from_cols_array(&[1.0, -0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0]);
