@@ -129,7 +129,7 @@ impl Context {
             distance,
             color: transformed.color,
             secondary_color: transformed.secondary_color,
-            tex_coords: transformed.tex_coords,
+            tex_coords: std::array::from_fn(|unit| transformed.tex_coords[unit]),
             index: self.state.current.index,
         };
     }

@@ -13,15 +13,16 @@
 //! reads its planes next to its edges with no scene at hand. Up to [`INLINE_VARYINGS`]
 //! planes (one texture unit's coordinates, or the fog coordinate and the secondary color)
 //! are held inline, so setting up and binning such a primitive allocates nothing; a draw
-//! with more puts each primitive's planes in one allocation of [`MAX_VARYINGS`]. Holding
+//! with more puts each primitive's planes in one allocation of their own count. Holding
 //! all `MAX_VARYINGS` inline made every triangle job 544 bytes, used or not, which every
 //! triangle's setup, binning and rendering moved through memory (small_triangles has none).
 use crate::fragment::block::{lanes, F32s, LANES};
-use crate::gl::limits::MAX_TEXTURE_UNITS;
+use crate::glsl::varyings::VARYING_SLOTS;
 
-/// The most scalar varyings a draw interpolates: the secondary color's RGB (GL_COLOR_SUM),
-/// the fog coordinate and the four texture coordinates of every texture unit.
-pub const MAX_VARYINGS: usize = 3 + 1 + 4 * MAX_TEXTURE_UNITS;
+/// The most scalar varyings a draw interpolates: the secondary color (RGB for GL_COLOR_SUM,
+/// RGBA for a GLSL `gl_SecondaryColor`), the fog coordinate and the four components of
+/// every varying slot (texture units' coordinates, GLSL varyings).
+pub const MAX_VARYINGS: usize = 4 + 1 + 4 * VARYING_SLOTS;
 
 /// A linear function of pixel position.
 pub trait Interpolant {
@@ -100,7 +101,7 @@ pub struct Varyings<P> {
 #[derive(Clone, Debug, PartialEq)]
 enum Planes<P> {
     Inline { planes: [P; INLINE_VARYINGS], len: u8 },
-    Heap { planes: Box<[P; MAX_VARYINGS]>, len: u8 },
+    Heap { planes: Box<[P]> },
 }
 
 impl<P: Default + Copy> Default for Varyings<P> {
@@ -136,14 +137,10 @@ impl<P: Interpolant + Copy + Default> Varyings<P> {
         let over_w = match planes_in.next() {
             None => Planes::Inline { planes, len },
             Some(next) => {
-                let mut all = Box::new([P::default(); MAX_VARYINGS]);
-                all[..INLINE_VARYINGS].copy_from_slice(&planes);
-                let mut len = INLINE_VARYINGS;
-                for (slot, p) in all[INLINE_VARYINGS..].iter_mut().zip(std::iter::once(next).chain(planes_in)) {
-                    *slot = p;
-                    len += 1;
-                }
-                Planes::Heap { planes: all, len: len as u8 }
+                let mut all = Vec::with_capacity(2 * INLINE_VARYINGS);
+                all.extend_from_slice(&planes);
+                all.extend(std::iter::once(next).chain(planes_in).take(MAX_VARYINGS - INLINE_VARYINGS));
+                Planes::Heap { planes: all.into_boxed_slice() }
             }
         };
         Varyings { over_w, inv_w }
@@ -172,7 +169,7 @@ impl<P: Interpolant> Varyings<P> {
     pub fn planes(&self) -> &[P] {
         match &self.over_w {
             Planes::Inline { planes, len } => &planes[..*len as usize],
-            Planes::Heap { planes, len } => &planes[..*len as usize],
+            Planes::Heap { planes } => planes,
         }
     }
 

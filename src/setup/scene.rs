@@ -851,7 +851,6 @@ mod tests {
 
     /// A triangle job through three window points, one color.
     fn triangle(points: [[f32; 2]; 3]) -> Primitive {
-        use crate::gl::limits::MAX_TEXTURE_UNITS;
         use crate::setup::jobs::triangle::WindowVertex;
         let v = points.map(|[x, y]| WindowVertex {
             x,
@@ -860,7 +859,7 @@ mod tests {
             inv_w: 1.0,
             color: [1.0, 0.5, 0.25, 1.0],
             secondary_color: [0.0; 4],
-            tex_coords: [[0.0; 4]; MAX_TEXTURE_UNITS],
+            tex_coords: [[0.0; 4]; crate::glsl::varyings::VARYING_SLOTS],
             fog_coord: 0.0,
         });
         Primitive::Triangle(TriangleJob::new(v, None, 0.0, &[]).expect("not degenerate"))
@@ -1008,7 +1007,6 @@ mod tests {
 
     /// A triangle covering the whole window of side `size` (bounds: the window).
     fn cover(size: f32) -> TriangleJob {
-        use crate::gl::limits::MAX_TEXTURE_UNITS;
         use crate::setup::jobs::triangle::WindowVertex;
         let v = |x: f32, y: f32| WindowVertex {
             x,
@@ -1017,7 +1015,7 @@ mod tests {
             inv_w: 1.0,
             color: [1.0; 4],
             secondary_color: [0.0; 4],
-            tex_coords: [[0.0; 4]; MAX_TEXTURE_UNITS],
+            tex_coords: [[0.0; 4]; crate::glsl::varyings::VARYING_SLOTS],
             fog_coord: 0.0,
         };
         TriangleJob::new([v(-1.0, -1.0), v(3.0 * size, -1.0), v(-1.0, 3.0 * size)], None, 0.0, &[]).unwrap()

@@ -11,7 +11,7 @@
 //! vertex towards the inside one, so an edge shared by two primitives is cut at exactly
 //! the same point whichever primitive it belongs to.
 
-use crate::gl::limits::MAX_TEXTURE_UNITS;
+use crate::glsl::varyings::VARYING_SLOTS;
 
 /// A vertex after transformation: clip coordinates, eye coordinates (for user clip planes
 /// and fog) and the attributes the rasterizer interpolates.
@@ -23,7 +23,10 @@ pub struct ClipVertex {
     pub secondary_color: [f32; 4],
     /// The back-face primary and secondary colors (two-sided lighting; else unused).
     pub back_colors: [[f32; 4]; 2],
-    pub tex_coords: [[f32; 4]; MAX_TEXTURE_UNITS],
+    /// The varying slots: fixed-function texture coordinates in the first
+    /// `gl::limits::MAX_TEXTURE_UNITS`, a GLSL program's `gl_TexCoord` and varyings in any
+    /// ([`crate::glsl::varyings`]).
+    pub tex_coords: [[f32; 4]; VARYING_SLOTS],
     pub fog_coord: f32,
     /// gl_PointSize of a GLSL vertex program (read with GL_VERTEX_PROGRAM_POINT_SIZE; 0 from
     /// fixed-function processing, which never sets it).
@@ -243,7 +246,7 @@ mod tests {
             color: [x, y, z, 1.0],
             secondary_color: [0.0; 4],
             back_colors: [[0.0; 4]; 2],
-            tex_coords: [[0.0; 4]; MAX_TEXTURE_UNITS],
+            tex_coords: [[0.0; 4]; VARYING_SLOTS],
             fog_coord: 0.0,
             point_size: 0.0,
             edge_flag: true,

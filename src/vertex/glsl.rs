@@ -126,7 +126,7 @@ impl Output {
             "gl_FogFragCoord" => Output::FogFragCoord,
             "gl_PointSize" => Output::PointSize,
             name => match varying(name, word.index) {
-                Some(index) if (index as usize) < 4 * MAX_TEXTURE_UNITS => Output::Varying(index),
+                Some(index) if (index as usize) < 4 * crate::glsl::varyings::VARYING_SLOTS => Output::Varying(index),
                 _ => Output::None,
             },
         }
@@ -279,7 +279,7 @@ const ZERO: ClipVertex = ClipVertex {
     color: [0.0; 4],
     secondary_color: [0.0; 4],
     back_colors: [[0.0; 4]; 2],
-    tex_coords: [[0.0; 4]; MAX_TEXTURE_UNITS],
+    tex_coords: [[0.0; 4]; crate::glsl::varyings::VARYING_SLOTS],
     fog_coord: 0.0,
     point_size: 0.0,
     edge_flag: true,

@@ -21,6 +21,8 @@ use super::lighting::{Lighting, LightingState, Material, NormalScaling};
 use super::program::{CompiledVertex, VertexInput, VertexKey, VertexOutput, VertexProgram};
 use super::texgen::{Gen, TexCoordUnit, TexGen};
 use super::Vertex;
+use crate::gl::limits::MAX_TEXTURE_UNITS;
+use crate::glsl::varyings::VARYING_SLOTS;
 use crate::shader::exec::{Io, NoTextures, Word, ALL_LANES, LANES};
 use crate::shader::fast::{BoundRun, Compiled, Registers};
 use crate::shader::lower::R;
@@ -370,7 +372,9 @@ impl Run {
             for lane in 0..n {
                 let (v, c) = (&batch[lane], &mut records[lane]);
                 c.back_colors = if self.lit_one_sided { [c.color, c.secondary_color] } else { [[0.0; 4]; 2] };
-                c.tex_coords = v.tex_coords;
+                // The fixed-function units' slots; the others stay zero (the batch's records
+                // start zeroed and no fixed-function program writes them).
+                c.tex_coords[..MAX_TEXTURE_UNITS].copy_from_slice(&v.tex_coords);
                 c.fog_coord = f32::from_bits(fog[lane]);
                 c.edge_flag = v.edge_flag;
             }
@@ -409,7 +413,7 @@ impl Run {
                 color: [0.0; 4],
                 secondary_color: [0.0; 4],
                 back_colors: [[0.0; 4]; 2],
-                tex_coords: v.tex_coords,
+                tex_coords: unit_slots(&v.tex_coords),
                 fog_coord: 0.0,
                 point_size: 0.0,
                 edge_flag: v.edge_flag,
@@ -563,7 +567,7 @@ const EMPTY: ClipVertex = ClipVertex {
     color: [0.0; 4],
     secondary_color: [0.0; 4],
     back_colors: [[0.0; 4]; 2],
-    tex_coords: [[0.0; 4]; crate::gl::limits::MAX_TEXTURE_UNITS],
+    tex_coords: [[0.0; 4]; VARYING_SLOTS],
     fog_coord: 0.0,
     point_size: 0.0,
     edge_flag: false,
@@ -628,4 +632,12 @@ fn scatter(what: VertexOutput, word: &Word, out: &mut [ClipVertex]) {
         VertexOutput::TexCoord { unit, k } => put(word, out, |c, x| c.tex_coords[unit as usize][k as usize & 3] = x),
         VertexOutput::FogCoord => put(word, out, |c, x| c.fog_coord = x),
     }
+}
+
+/// A vertex's texture coordinates as the varying slots of its record (the slots beyond the
+/// units zero).
+pub fn unit_slots(units: &[[f32; 4]; MAX_TEXTURE_UNITS]) -> [[f32; 4]; VARYING_SLOTS] {
+    let mut slots = [[0.0; 4]; VARYING_SLOTS];
+    slots[..MAX_TEXTURE_UNITS].copy_from_slice(units);
+    slots
 }

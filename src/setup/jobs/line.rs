@@ -31,7 +31,7 @@ pub struct LineVertex {
     pub color: [f32; 4],
     /// Read for the varyings a draw needs.
     pub secondary_color: [f32; 4],
-    pub tex_coords: [[f32; 4]; crate::gl::limits::MAX_TEXTURE_UNITS],
+    pub tex_coords: [[f32; 4]; crate::glsl::varyings::VARYING_SLOTS],
     pub fog_coord: f32,
 }
 

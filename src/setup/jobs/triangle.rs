@@ -26,7 +26,7 @@ use crate::fragment::{multisample::SampleMasks, span_mask};
 use crate::framebuffer::band::Band;
 use crate::framebuffer::multisample::MAX_SAMPLES;
 use crate::framebuffer::Rect;
-use crate::gl::limits::MAX_TEXTURE_UNITS;
+use crate::glsl::varyings::VARYING_SLOTS;
 use crate::raster::blocks::{walk_blocks, walk_blocks_filling, PixelEdge};
 use crate::raster::samples::SampleEdges;
 use crate::raster::walk::{stipple_mask, walk_sample_spans, walk_spans};
@@ -98,7 +98,7 @@ pub struct WindowVertex {
     /// The attributes later stages may read; [`TriangleJob::new`] interpolates the ones a
     /// draw asks for.
     pub secondary_color: [f32; 4],
-    pub tex_coords: [[f32; 4]; MAX_TEXTURE_UNITS],
+    pub tex_coords: [[f32; 4]; VARYING_SLOTS],
     pub fog_coord: f32,
 }
 
@@ -655,7 +655,7 @@ mod varying_tests {
             inv_w: 1.0 / w,
             color: [1.0; 4],
             secondary_color: [0.0; 4],
-            tex_coords: [[0.0; 4]; MAX_TEXTURE_UNITS],
+            tex_coords: [[0.0; 4]; VARYING_SLOTS],
             fog_coord: 0.0,
         }
     }
@@ -805,8 +805,8 @@ mod sample_block_tests {
     use crate::fragment::{AlphaTest, DepthTest, FragmentState, StencilTest};
     use crate::framebuffer::band::{ColorBand, ColorTarget, DepthBand};
     use crate::framebuffer::{ColorFormat, ColorSlot, DepthStencilFormat};
-    use crate::gl::limits::MAX_TEXTURE_UNITS;
     use crate::gl::CompareFunc;
+    use crate::glsl::varyings::VARYING_SLOTS;
     use crate::raster::blocks::walk_blocks;
     use crate::setup::triangle::TriangleSetup;
     use std::sync::atomic::{AtomicU64, Ordering};
@@ -889,7 +889,7 @@ mod sample_block_tests {
             inv_w: 0.3 + rng.unit() * 2.0,
             color: [rng.unit(), rng.unit(), rng.unit(), rng.unit()],
             secondary_color: [0.0; 4],
-            tex_coords: [[0.0; 4]; MAX_TEXTURE_UNITS],
+            tex_coords: [[0.0; 4]; VARYING_SLOTS],
             fog_coord: 0.0,
         }
     }

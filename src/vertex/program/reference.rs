@@ -54,7 +54,11 @@ pub fn transform(t: &Transform, vertices: &[Vertex]) -> Vec<ClipVertex> {
                 color: clamp4(v.color),
                 secondary_color: clamp4(v.secondary_color),
                 back_colors: [[0.0; 4]; 2],
-                tex_coords: if texgen.units.is_empty() { v.tex_coords } else { tex_coords(texgen, v, eye) },
+                tex_coords: crate::vertex::transform::unit_slots(&if texgen.units.is_empty() {
+                    v.tex_coords
+                } else {
+                    tex_coords(texgen, v, eye)
+                }),
                 fog_coord: fog_coord(v, eye),
                 point_size: 0.0,
                 edge_flag: v.edge_flag,
