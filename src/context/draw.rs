@@ -68,10 +68,10 @@ impl Context {
     /// and last parts of a polygon draw its first and closing outline edges. Parts are
     /// delivered only while rendering (selection and feedback take primitives whole).
     pub fn draw_part(&mut self, mode: GLenum, vertices: &[Vertex], part: DrawPart) {
-        if self.program_in_use.executable().is_some() {
-            // GLSL programs do not run yet (their lowering onto the shading IR is the rest of
-            // issue #20; GL_VERSION stays 1.5 until it lands): refuse the draw rather than
-            // draw it with fixed-function processing.
+        if self.program_in_use.executable().is_some_and(|e| e.vertex_program.is_some()) {
+            // GLSL vertex shaders do not run yet (their lowering onto the shading IR is the
+            // rest of issue #20; GL_VERSION stays 1.5 until it lands): refuse the draw rather
+            // than draw it with fixed-function processing. Fragment shaders run (gfrag).
             return self.error(GL_INVALID_OPERATION);
         }
         if !self.rendering() {
