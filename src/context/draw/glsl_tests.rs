@@ -2,7 +2,7 @@
 //! `gl_TexCoord`, `gl_FragCoord`, `gl_FrontFacing`), the varyings the draw interpolates for
 //! it, uniforms and sampler units, and its outputs (colour, `discard`, `gl_FragDepth`), on
 //! the block path (filled triangles) and the span path (lines, points, pixel rectangles).
-use super::replay::{context, pixels, vertex};
+use crate::context::draw::replay::{context, pixels, vertex};
 use crate::context::shader_objects::UniformForm;
 use crate::context::texture::ImageArgs;
 use crate::context::Context;
