@@ -283,6 +283,8 @@ static void varyings(void)
     GLuint p = program("varyings", "void main() {\n"
                                    "  gl_FragColor = vec4(gl_SecondaryColor.rg, gl_TexCoord[2].x, gl_FogFragCoord);\n"
                                    "}\n");
+    /* The fog coordinates as given (fog itself stays off: the shader reads them). */
+    glFogi(GL_FOG_COORD_SRC, GL_FOG_COORD);
     glBegin(GL_TRIANGLES);
     glSecondaryColor3f(1, 0, 0);
     glMultiTexCoord2f(GL_TEXTURE2, 0, 0);
@@ -297,6 +299,7 @@ static void varyings(void)
     glFogCoordf(1.0f);
     glVertex2f(-1, 1);
     glEnd();
+    glFogi(GL_FOG_COORD_SRC, GL_FRAGMENT_DEPTH);
     finish("varyings", p);
 }
 

@@ -693,13 +693,20 @@ fn alpha_blocks<I: BlockInputs>(
         }
         if let Some(kernel) = &pipeline.depth_stencil {
             let depth = scratch.block_depth;
-            live = kernel.run(&mut band.depth, &at, live, front_facing, || {
-                if shader_depth {
-                    depth
-                } else {
-                    inputs.z(x, y)
-                }
-            });
+            live =
+                kernel.run(
+                    &mut band.depth,
+                    &at,
+                    live,
+                    front_facing,
+                    || {
+                        if shader_depth {
+                            depth
+                        } else {
+                            inputs.z(x, y)
+                        }
+                    },
+                );
             if live == 0 {
                 continue;
             }

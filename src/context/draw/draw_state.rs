@@ -9,11 +9,6 @@
 use super::super::shader_objects::{Executable, StageProgram};
 use super::super::Context;
 use crate::fragment::glsl_shading::{GlslShading, ShaderCode, ShaderInput, ShaderOutput};
-use crate::glsl::lex::Sampler as SamplerKind;
-use crate::setup::jobs::triangle::WindowVertex;
-use crate::shader::fast::Compiled;
-use crate::texture::Texturing;
-use std::sync::Arc;
 use crate::fragment::pipeline::DrawState;
 use crate::fragment::program::FragmentKey;
 use crate::fragment::shading::{is_identity, Shading};
@@ -21,9 +16,14 @@ use crate::fragment::{DepthTest, FragmentState};
 use crate::framebuffer::{ColorFormat, Rect};
 use crate::gl::enums::*;
 use crate::gl::types::GLenum;
+use crate::glsl::lex::Sampler as SamplerKind;
 use crate::setup::accuracy::Accuracy;
+use crate::setup::jobs::triangle::WindowVertex;
 use crate::setup::Scene;
+use crate::shader::fast::Compiled;
+use crate::texture::Texturing;
 use crate::vertex::attribute::Attribute;
+use std::sync::Arc;
 
 impl Context {
     /// The attributes beyond color that the enabled per-fragment stages read: the secondary

@@ -90,8 +90,15 @@ fn a_sampler_uniform_names_the_unit_whose_texture_it_reads() {
     ctx.active_texture(GL_TEXTURE1);
     let tex = ctx.gen_textures(1).unwrap()[0];
     ctx.bind_texture(GL_TEXTURE_2D, tex);
-    let args =
-        ImageArgs { target: GL_TEXTURE_2D, level: 0, internal_format: GL_RGBA as i32, width: 2, height: 1, depth: 1, border: 0 };
+    let args = ImageArgs {
+        target: GL_TEXTURE_2D,
+        level: 0,
+        internal_format: GL_RGBA as i32,
+        width: 2,
+        height: 1,
+        depth: 1,
+        border: 0,
+    };
     let texels: [u8; 8] = [255, 0, 0, 255, 0, 0, 255, 128];
     ctx.tex_image(2, args, GL_RGBA, GL_UNSIGNED_BYTE, |_| Ok(Some(&texels[..])));
     ctx.tex_parameter(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, &[GL_NEAREST as f32], true);

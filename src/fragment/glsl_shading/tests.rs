@@ -129,10 +129,8 @@ fn blocks_shade_as_spans_do() {
 
 #[test]
 fn the_fragments_own_inputs_reach_the_shader() {
-    let s = shading(
-        "void main() { gl_FragColor = vec4(gl_FragCoord.xy, gl_FragCoord.w, gl_FrontFacing ? 1.0 : 0.0); }",
-        8,
-    );
+    let s =
+        shading("void main() { gl_FragColor = vec4(gl_FragCoord.xy, gl_FragCoord.w, gl_FrontFacing ? 1.0 : 0.0); }", 8);
     assert!(!s.late_tests());
     for front in [true, false] {
         let mut scratch = GlslScratch::default();
