@@ -71,12 +71,6 @@ impl Context {
     /// delivered only while rendering (selection and feedback take primitives whole).
     pub fn draw_part(&mut self, mode: GLenum, vertices: &[Vertex], part: DrawPart) {
         let executable = self.program_in_use.executable().cloned();
-        if executable.as_ref().is_some_and(|e| e.fragment_program.is_some()) {
-            // GLSL fragment shaders do not run yet (the fragment side of issue #20; GL_VERSION
-            // stays 1.5 until it lands): refuse the draw rather than draw it with
-            // fixed-function fragment processing.
-            return self.error(GL_INVALID_OPERATION);
-        }
         if !self.rendering() {
             return self.select_vertices(mode, vertices);
         }

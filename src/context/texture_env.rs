@@ -354,8 +354,32 @@ impl Context {
     }
 
     /// What texgen ([`crate::vertex::texgen`]) needs per enabled unit, decided once per draw.
+    /// With a GLSL fragment shader, the units whose coordinates it reads (`gl_TexCoord[i]`
+    /// among the texture units).
     pub(super) fn tex_coord_units(&self) -> Vec<TexCoordUnit> {
+        if self.fragment_shader().is_some() {
+            let mut units: Vec<usize> = (self.varyings_needed().iter())
+                .filter_map(|a| a.texture_coordinate().map(|(unit, _)| unit))
+                .filter(|&unit| unit < MAX_TEXTURE_UNITS)
+                .collect();
+            units.sort_unstable();
+            units.dedup();
+            return self.tex_coord_units_of(units.into_iter());
+        }
         self.tex_coord_units_of(self.enabled_texture_units().into_iter().map(|(unit, _)| unit))
+    }
+
+    /// The lookup stage of a GLSL program's sampler `index` reading texture unit `unit`'s
+    /// binding for target index `t` (1D, 2D, 3D, cube map): that texture's parameters and the
+    /// unit's level-of-detail bias, whatever the unit's enables; `None` when the unit does
+    /// not exist or its texture is incomplete (the lookups then read (0, 0, 0, 1)).
+    pub(super) fn shader_texture_stage(&self, index: usize, unit: usize, t: usize) -> Option<TextureStage> {
+        let st = self.state.texture.unit_state.get(unit)?;
+        let textures = self.textures.lock();
+        let obj = textures.get(st.bindings[t], t)?;
+        let sampler = compile_sampler(obj, t, st.env.lod_bias)?;
+        let env = compile_env(&st.env, sampler.base);
+        Some(TextureStage::new(index, sampler, env, 0))
     }
 
     /// The texture coordinate work of the given units (every unit for the raster position,

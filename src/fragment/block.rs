@@ -338,6 +338,9 @@ pub trait BlockInputs {
 /// kernel and each colour target's write kernel, chosen once (see [`kernels`]).
 pub struct BlockPipeline {
     alpha: Option<AlphaKernel>,
+    /// A GLSL shader that may discard or writes the depth: the colours come before the
+    /// tests, as with the alpha test.
+    late: bool,
     depth_stencil: Option<DepthStencilKernel>,
     targets: Vec<TargetKernel>,
 }
@@ -428,6 +431,7 @@ impl BlockPipeline {
             .collect();
         BlockPipeline {
             alpha: fragment.alpha.as_ref().map(AlphaKernel::new),
+            late: fragment.late_tests(),
             depth_stencil: DepthStencilKernel::new(fragment, depth_format),
             targets,
         }
@@ -448,7 +452,8 @@ impl BlockPipeline {
         let unconditional = self.alpha.is_none()
             && self.depth_stencil.is_none()
             && state.samples_passed.is_none()
-            && state.fragment.shading.is_none();
+            && state.fragment.shading.is_none()
+            && state.fragment.glsl.is_none();
         match self.targets.as_slice() {
             [target] if unconditional => Some((target.index, target.constant_pixel(color)?)),
             _ => None,
@@ -523,7 +528,7 @@ impl BlockPipeline {
             return;
         }
         let grid = Grid::new(band, level);
-        if self.alpha.is_some() {
+        if self.alpha.is_some() || self.late {
             // Colours first: kept per block for the target writes (the enum's flat variant
             // makes the buffer cheap to set up).
             let mut shaded = [BlockColors::Uniform([0.0; 4]); BATCH];
@@ -537,7 +542,7 @@ impl BlockPipeline {
             );
             if survivors > 0 && !self.targets.is_empty() {
                 let (blocks, shaded) = (&blocks[..survivors], Some(&shaded[..survivors]));
-                self.color_stage(level, state, band, scratch, grid, inputs, blocks, shaded);
+                self.color_stage(level, state, band, scratch, grid, inputs, blocks, shaded, front_facing);
             }
             return;
         }
@@ -575,7 +580,7 @@ impl BlockPipeline {
                 #[inline(always)]
                 |level| {
                     let grid = Grid { level, ..grid };
-                    color_blocks(self, &state.fragment, band, scratch, grid, inputs, blocks, None)
+                    color_blocks(self, &state.fragment, band, scratch, grid, inputs, blocks, None, front_facing)
                 },
             );
         }
@@ -597,13 +602,14 @@ impl BlockPipeline {
         inputs: &I,
         blocks: &[BlockEntry],
         shaded: Option<&[BlockColors]>,
+        front_facing: bool,
     ) {
         outlined(
             level,
             #[inline(always)]
             |level| {
                 let grid = Grid { level, ..grid };
-                color_blocks(self, &state.fragment, band, scratch, grid, inputs, blocks, shaded)
+                color_blocks(self, &state.fragment, band, scratch, grid, inputs, blocks, shaded, front_facing)
             },
         );
     }
@@ -623,6 +629,7 @@ fn color_blocks<I: BlockInputs>(
     inputs: &I,
     blocks: &[BlockEntry],
     shaded: Option<&[BlockColors]>,
+    front_facing: bool,
 ) {
     let mut local = BlockColors::Uniform([0.0; 4]);
     for (i, b) in blocks.iter().enumerate() {
@@ -630,7 +637,8 @@ fn color_blocks<I: BlockInputs>(
         let colors = match shaded {
             Some(shaded) => &shaded[i],
             None => {
-                block_colors(fragment, scratch, &at, b.mask, inputs, &mut local);
+                // Nothing discards here (a shader that may runs before the tests).
+                block_colors(fragment, scratch, &at, b.mask, front_facing, inputs, &mut local);
                 &local
             }
         };
@@ -656,8 +664,9 @@ fn alpha_blocks<I: BlockInputs>(
     blocks: &mut [BlockEntry],
     shaded: &mut [BlockColors; BATCH],
 ) -> usize {
-    let Some(alpha) = &pipeline.alpha else { return 0 };
     let fragment = &state.fragment;
+    // A shader's own depths: then no test can run before it.
+    let shader_depth = fragment.glsl.as_ref().filter(|g| g.writes_depth()).is_some();
     let mut kept = 0;
     for i in 0..blocks.len() {
         let b = blocks[i];
@@ -666,22 +675,38 @@ fn alpha_blocks<I: BlockInputs>(
         let mut live = b.mask;
         // A block none of whose lanes can pass changes nothing whatever its alpha, so it
         // needs no colours.
-        if let Some(kernel) = pipeline.depth_stencil.as_ref().filter(|k| k.culls_before_alpha()) {
+        if let Some(kernel) = pipeline.depth_stencil.as_ref().filter(|k| k.culls_before_alpha() && !shader_depth) {
             if kernel.test(&mut band.depth, &at, live, front_facing, || inputs.z(x, y)) == 0 {
                 continue;
             }
         }
         let colors = &mut shaded[kept.min(BATCH - 1)];
-        block_colors(fragment, scratch, &at, live, inputs, colors);
-        live = match colors {
-            BlockColors::Uniform(c) => alpha.test(grid.level, &[c[3]; LANES], live),
-            BlockColors::Lanes(l) => alpha.test(grid.level, &l[3], live),
-        };
+        live = block_colors(fragment, scratch, &at, live, front_facing, inputs, colors);
+        if let Some(alpha) = &pipeline.alpha {
+            live = match colors {
+                BlockColors::Uniform(c) => alpha.test(grid.level, &[c[3]; LANES], live),
+                BlockColors::Lanes(l) => alpha.test(grid.level, &l[3], live),
+            };
+        }
         if live == 0 {
             continue;
         }
         if let Some(kernel) = &pipeline.depth_stencil {
-            live = kernel.run(&mut band.depth, &at, live, front_facing, || inputs.z(x, y));
+            let depth = scratch.block_depth;
+            live =
+                kernel.run(
+                    &mut band.depth,
+                    &at,
+                    live,
+                    front_facing,
+                    || {
+                        if shader_depth {
+                            depth
+                        } else {
+                            inputs.z(x, y)
+                        }
+                    },
+                );
             if live == 0 {
                 continue;
             }
@@ -714,29 +739,34 @@ fn write_targets(pipeline: &BlockPipeline, band: &mut Band<'_>, at: &BlockAt, co
 /// primitive's interpolated (or flat) colours, then the draw's fragment program (texturing,
 /// colour sum, fog: [`crate::fragment::shading`]) over the block's lanes when it has one.
 /// The one place the block path computes colours: its inputs are the block's position and
-/// live lanes and the primitive's planes, its output the 16 colour lanes.
+/// live lanes and the primitive's planes, its output the 16 colour lanes. Returns the lanes
+/// of `live` that survive: a GLSL shader ([`glsl_block_colors`]) may discard.
 #[inline(always)]
 fn block_colors(
     fragment: &FragmentState,
     scratch: &mut Scratch,
     at: &BlockAt,
     live: u16,
+    front_facing: bool,
     inputs: &impl BlockInputs,
     colors: &mut BlockColors,
-) {
+) -> u16 {
+    if let Some(glsl) = &fragment.glsl {
+        return glsl_block_colors(glsl, scratch, at, live, front_facing, inputs, colors);
+    }
     match inputs.uniform_color() {
         Some(c) => *colors = BlockColors::Uniform(c),
         None => inputs.colors(at.x, at.y, colors),
     }
     let Some(shading) = &fragment.shading else {
-        return;
+        return live;
     };
     // The program writes its colours in place: the interpolated lanes are not copied out
     // and back (a flat colour becomes lanes first).
     if let BlockColors::Uniform(_) = colors {
         *colors = BlockColors::Lanes(colors.lanes());
     }
-    let BlockColors::Lanes(lanes) = colors else { return };
+    let BlockColors::Lanes(lanes) = colors else { return live };
     let texturing = fragment.texturing.as_deref();
     // The closure inlined (LLVM left it a call per varying run and pass, with the planes'
     // setup behind it, in each per-level body).
@@ -749,6 +779,48 @@ fn block_colors(
         #[inline(always)]
         |y, first, out| inputs.varying_lanes(at.x, y, first, out),
     );
+    live
+}
+
+/// [`block_colors`] with a GLSL fragment shader: its colours, its depths in
+/// `scratch.block_depth`; returns the lanes of `live` that did not discard. Not inlined:
+/// one copy serves every SIMD level's block body (the shader's interpreter has its own).
+#[inline(never)]
+fn glsl_block_colors(
+    glsl: &super::glsl_shading::GlslShading,
+    scratch: &mut Scratch,
+    at: &BlockAt,
+    live: u16,
+    front_facing: bool,
+    inputs: &impl BlockInputs,
+    colors: &mut BlockColors,
+) -> u16 {
+    let mut lanes = [[0.0; LANES]; 4];
+    let mut depth = [0.0; LANES];
+    let kept = glsl.run_block(
+        &mut scratch.glsl,
+        at.x,
+        at.y,
+        live,
+        front_facing,
+        &mut lanes,
+        &mut depth,
+        |y0, primary, z, varyings| {
+            let mut c = BlockColors::Uniform([0.0; 4]);
+            match inputs.uniform_color() {
+                Some(u) => c = BlockColors::Uniform(u),
+                None => inputs.colors(at.x, y0, &mut c),
+            }
+            *primary = c.lanes();
+            *z = inputs.z(at.x, y0);
+            if !varyings.is_empty() {
+                inputs.varying_lanes(at.x, y0, 0, varyings);
+            }
+        },
+    );
+    *colors = BlockColors::Lanes(lanes);
+    scratch.block_depth = depth;
+    kept
 }
 
 #[cfg(test)]

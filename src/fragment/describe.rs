@@ -4,7 +4,8 @@
 //! see that a disabled test is absent from the pipeline rather than skipped per pixel, and
 //! where the depth and stencil tests run: *early* (before the fragment colors are computed,
 //! which are then computed only for the survivors) whenever no stage before them can
-//! discard a fragment, i.e. without the alpha test; *late* (after the colors) otherwise.
+//! discard a fragment, i.e. without the alpha test or a GLSL shader that may discard or
+//! writes the depth; *late* (after the colors) otherwise.
 
 use super::blend::{Blend, BlendFunc};
 use super::stencil::StencilFace;
@@ -13,7 +14,7 @@ use std::fmt::{self, Display, Formatter, Write};
 
 /// Whether the depth/stencil tests of `state` run before the colors are computed.
 pub fn early_depth_stencil(state: &FragmentState) -> bool {
-    state.alpha.is_none()
+    state.alpha.is_none() && !state.late_tests()
 }
 
 impl Display for FragmentState {
@@ -24,7 +25,7 @@ impl Display for FragmentState {
         if early {
             stages.push(self.tests_stage("early "));
         }
-        stages.push("shade".to_string());
+        stages.push(if self.glsl.is_some() { "shade (GLSL)" } else { "shade" }.to_string());
         if let Some(alpha) = &self.alpha {
             let precision = if alpha.unorm8 { "8-bit" } else { "float" };
             stages.push(format!("alpha {:?} {} ({precision})", alpha.func, alpha.reference));

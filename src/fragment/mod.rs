@@ -5,7 +5,8 @@
 //! multisample operations). A draw's state is compiled into a [`FragmentState`] once;
 //! disabled operations are absent from it rather than tested per pixel. The stages:
 //! fragment shading (texturing, the texture environments, the color sum and fog: the
-//! draw's fragment program, [`shading`]), the alpha test ([`alpha`]), the stencil and depth
+//! draw's fragment program, [`shading`]; or the program in use's GLSL fragment shader,
+//! [`glsl_shading`]), the alpha test ([`alpha`]), the stencil and depth
 //! tests with the stencil operations ([`stencil_depth_test`]), then per color target blending ([`blend`]) or the logic op ([`logic_op`]), dither
 //! ([`dither`]) and the masked write ([`output`]).
 //!
@@ -22,6 +23,7 @@ pub mod block;
 pub mod describe;
 pub mod dither;
 pub mod fog;
+pub mod glsl_shading;
 pub mod logic_op;
 pub mod multisample;
 pub mod output;
@@ -94,6 +96,9 @@ pub struct FragmentState {
     /// The fragment program of the texturing, colour sum and fog above, with its values
     /// ([`shading`]); `None` when it would pass the colour through.
     pub shading: Option<std::sync::Arc<shading::Shading>>,
+    /// The program in use's GLSL fragment stage with its values ([`glsl_shading`]): it
+    /// replaces `shading` (then `None`), texturing, the colour sum and fog.
+    pub glsl: Option<std::sync::Arc<glsl_shading::GlslShading>>,
 }
 
 impl FragmentState {
@@ -115,7 +120,15 @@ impl FragmentState {
             fog: None,
             texturing: None,
             shading: None,
+            glsl: None,
         }
+    }
+
+    /// Whether the draw's GLSL shader must run before the alpha, stencil and depth tests
+    /// (it may discard or writes the depth).
+    #[inline]
+    pub fn late_tests(&self) -> bool {
+        self.glsl.as_ref().is_some_and(|g| g.late_tests())
     }
 
     /// Whether target `index` needs more than a plain masked write (blend, logic op, dither).

@@ -75,6 +75,11 @@ pub struct Scratch {
     pub colors: Vec<[f32; 4]>,
     /// The fragment program's registers and lanes.
     pub shading: super::shading::ShadingScratch,
+    /// A GLSL fragment shader's registers and lanes, and the depths it gives a span.
+    pub glsl: super::glsl_shading::GlslScratch,
+    pub depth: Vec<f32>,
+    /// The depths a GLSL shader gave the block shaded last.
+    pub block_depth: super::block::F32s,
 }
 
 /// Where a span lies: window row `y`, columns `x0..x0 + n`, starting at pixel `row_start`
@@ -298,10 +303,21 @@ pub fn shade<F: Footprint>(
     let mut colors = Some(colors);
     let mut uniform = None;
     let alpha_to_coverage = footprint.alpha_to_coverage();
-    if fragment.alpha.is_some() || alpha_to_coverage {
+    // A GLSL shader that may discard or writes the depth runs before the tests.
+    let late = fragment.late_tests();
+    let shader_depth = late && fragment.glsl.as_ref().is_some_and(|g| g.writes_depth());
+    if fragment.alpha.is_some() || alpha_to_coverage || late {
         if let Some(c) = colors.take() {
-            uniform = shade_colors(fragment, &span, scratch, live, c, &varyings);
+            let kept;
+            (uniform, kept) = shade_colors(fragment, &span, scratch, live, c, &varyings, &z_at);
             uniform = coverage.apply(&mut scratch.colors, uniform, span.n);
+            if kept != live {
+                live = kept;
+                footprint.keep(live);
+                if live == 0 {
+                    return;
+                }
+            }
         }
         if alpha_to_coverage {
             let colors = &scratch.colors;
@@ -327,7 +343,9 @@ pub fn shade<F: Footprint>(
         let face = fragment.stencil.as_ref().map(|s| if span.front_facing { &s.front } else { &s.back });
         footprint.each_sample(band, &span, |band, s, at, mask| {
             scratch.z.clear();
-            if fragment.depth.is_some() {
+            if fragment.depth.is_some() && shader_depth {
+                scratch.z.extend_from_slice(&scratch.depth[..span.n]);
+            } else if fragment.depth.is_some() {
                 scratch.z.extend((0..span.n).map(|i| z_at(i, s)));
                 // The multisampled path has never clamped (kept as it was; see the report
                 // of the stages restructuring).
@@ -357,7 +375,7 @@ pub fn shade<F: Footprint>(
         counter.fetch_add(footprint.passed(live), Ordering::Relaxed);
     }
     if let Some(c) = colors {
-        uniform = shade_colors(fragment, &span, scratch, live, c, &varyings);
+        (uniform, _) = shade_colors(fragment, &span, scratch, live, c, &varyings, &z_at);
         uniform = coverage.apply(&mut scratch.colors, uniform, span.n);
     }
     if footprint.alpha_to_one() {
@@ -375,7 +393,10 @@ pub fn shade<F: Footprint>(
 
 /// The colors of a span's fragments: the interpolated (or flat) colors, then the draw's
 /// fragment program (texturing, color sum, fog: [`super::shading::Shading::run_span`]) when
-/// it has one (then never uniform). Always inlined, as [`write_span_colors`].
+/// it has one (then never uniform), or the GLSL fragment shader in use
+/// ([`super::glsl_shading::GlslShading::run_span`]: its depths then in `scratch.depth`).
+/// Returns the colours' uniform colour and the fragments of `live` that survive (a shader
+/// may discard). Always inlined, as [`write_span_colors`].
 #[inline(always)]
 fn shade_colors(
     fragment: &FragmentState,
@@ -384,18 +405,43 @@ fn shade_colors(
     live: u64,
     colors: impl FnOnce(&mut Vec<[f32; 4]>) -> Option<[f32; 4]>,
     varyings: &impl Fn(i32, i32, &mut [f32]),
-) -> Option<[f32; 4]> {
+    z_at: &impl Fn(usize, usize) -> f32,
+) -> (Option<[f32; 4]>, u64) {
     scratch.colors.clear();
     let uniform = colors(&mut scratch.colors);
+    if let Some(glsl) = &fragment.glsl {
+        return (None, shade_glsl(glsl, span, scratch, live, uniform, varyings, z_at));
+    }
     let Some(shading) = &fragment.shading else {
-        return uniform;
+        return (uniform, live);
     };
     if let Some(color) = uniform {
         scratch.colors.resize(span.n, color);
     }
     let texturing = fragment.texturing.as_deref();
     shading.run_span(&mut scratch.shading, texturing, span.x0, span.y, live, &mut scratch.colors, varyings);
-    None
+    (None, live)
+}
+
+/// [`shade_colors`] with a GLSL fragment shader: its colours in `scratch.colors`, its
+/// depths in `scratch.depth`; returns the fragments of `live` that did not discard.
+#[inline(never)]
+fn shade_glsl(
+    glsl: &super::glsl_shading::GlslShading,
+    span: &Span,
+    scratch: &mut Scratch,
+    live: u64,
+    uniform: Option<[f32; 4]>,
+    varyings: &impl Fn(i32, i32, &mut [f32]),
+    z_at: &impl Fn(usize, usize) -> f32,
+) -> u64 {
+    if let Some(color) = uniform {
+        scratch.colors.resize(span.n, color);
+    }
+    scratch.depth.clear();
+    scratch.depth.extend((0..span.n).map(|i| z_at(i, 0)));
+    let Scratch { glsl: glsl_scratch, colors, depth, .. } = scratch;
+    glsl.run_span(glsl_scratch, span.x0, span.y, live, span.front_facing, colors, depth, varyings)
 }
 
 /// Writes a shaded span (`colors[i]` for every bit `i` of `live`) to every color target the

@@ -1,7 +1,14 @@
 //! Draw-state assembly: the fragment state, clip rectangles, polygon stipple, query counter
 //! and multisample state a draw records into the scene, and the varyings (attributes beyond
 //! color) that its enabled per-fragment stages read.
+//!
+//! With a GLSL program whose fragment stage is a shader in use, that shader replaces the
+//! fixed-function fragment program ([`crate::fragment::glsl_shading`]): its inputs, outputs,
+//! uniform words and samplers are wired here once per draw state ([`ShaderWiring`]), and
+//! the varyings are exactly the ones it reads.
+use super::super::shader_objects::{Executable, StageProgram};
 use super::super::Context;
+use crate::fragment::glsl_shading::{GlslShading, ShaderCode, ShaderInput, ShaderOutput};
 use crate::fragment::pipeline::DrawState;
 use crate::fragment::program::FragmentKey;
 use crate::fragment::shading::{is_identity, Shading};
@@ -9,15 +16,23 @@ use crate::fragment::{DepthTest, FragmentState};
 use crate::framebuffer::{ColorFormat, Rect};
 use crate::gl::enums::*;
 use crate::gl::types::GLenum;
+use crate::glsl::lex::Sampler as SamplerKind;
 use crate::setup::accuracy::Accuracy;
+use crate::setup::jobs::triangle::WindowVertex;
 use crate::setup::Scene;
+use crate::shader::fast::Compiled;
+use crate::texture::Texturing;
 use crate::vertex::attribute::Attribute;
+use std::sync::Arc;
 
 impl Context {
     /// The attributes beyond color that the enabled per-fragment stages read: the secondary
     /// color for the color sum, the fog coordinate for fog, and the texture coordinates of
     /// every unit with a texture target enabled. Nothing else is interpolated.
     pub(in crate::context) fn varyings_needed(&self) -> Vec<Attribute> {
+        if let Some((executable, stage)) = self.fragment_shader() {
+            return ShaderWiring::inputs(executable, stage).varyings;
+        }
         let mut needed = Vec::new();
         if self.color_sum_active() {
             needed.extend((0..3).map(Attribute::secondary_color));
@@ -85,6 +100,15 @@ impl Context {
         if self.accuracy == Accuracy::Fast {
             fragment.dither = false;
         }
+        if let Some((executable, stage)) = self.fragment_shader() {
+            // The shader replaces texturing, the colour sum and fog.
+            fragment.color_sum = false;
+            fragment.fog = None;
+            fragment.glsl = Some(Arc::new(self.glsl_shading(executable, stage, height as i32)));
+            let samples_passed = self.queries.active_counter();
+            let multisample = self.multisample_state(self.framebuffer_samples());
+            return DrawState { fragment, clip, fill_clip, polygon_stipple, samples_passed, multisample };
+        }
         // Texture coordinates follow the secondary color and the fog coordinate among the
         // varyings (`varyings_needed`).
         let first_slot = 3 * usize::from(self.color_sum_active()) + usize::from(self.state.fog.enabled);
@@ -101,3 +125,142 @@ impl Context {
         DrawState { fragment, clip, fill_clip, polygon_stipple, samples_passed, multisample }
     }
 }
+
+/// How many varying slots the vertex records carry (the length of their texture coordinate
+/// array, whatever it grows to).
+fn record_slots() -> usize {
+    fn length<const N: usize>(_: fn(&WindowVertex) -> &[[f32; 4]; N]) -> usize {
+        N
+    }
+    length(|v: &WindowVertex| &v.tex_coords)
+}
+
+impl ShaderCode for StageProgram {
+    fn compiled(&self) -> &Compiled {
+        &self.compiled
+    }
+}
+
+/// What a fragment shader's input slots read, and the varyings the draw interpolates for
+/// them.
+pub(in crate::context) struct ShaderWiring {
+    pub inputs: Vec<ShaderInput>,
+    pub varyings: Vec<Attribute>,
+}
+
+impl ShaderWiring {
+    /// The wiring of `stage`'s inputs: `gl_Color` the primary colour, `gl_SecondaryColor`
+    /// the secondary colour, `gl_FogFragCoord` the fog coordinate, `gl_TexCoord[i]` and user
+    /// varyings their vertex-record slot component (`executable.varyings`), `gl_FragCoord`
+    /// and `gl_FrontFacing` the fragment's own; anything else (`gl_PointCoord`, a slot the
+    /// records lack) reads 0.
+    pub fn inputs(executable: &Executable, stage: &StageProgram) -> ShaderWiring {
+        let slots = record_slots();
+        let mut varyings: Vec<Attribute> = Vec::new();
+        let mut varying = |a: Attribute| {
+            let index = varyings.iter().position(|&v| v == a).unwrap_or_else(|| {
+                varyings.push(a);
+                varyings.len() - 1
+            });
+            ShaderInput::Varying(index as u16)
+        };
+        let inputs = stage
+            .lowered
+            .inputs
+            .iter()
+            .map(|w| match w.name.as_str() {
+                "gl_Color" => ShaderInput::Primary(w.index as u8),
+                "gl_SecondaryColor" => varying(Attribute::secondary_color(w.index as usize & 3)),
+                "gl_FogFragCoord" => varying(Attribute::FOG_COORD),
+                "gl_FragCoord" => ShaderInput::FragCoord(w.index as u8),
+                "gl_FrontFacing" => ShaderInput::FrontFacing,
+                name => match executable.varyings.index_of(name, w.index).map(usize::from) {
+                    Some(k) if k / 4 < slots => varying(Attribute::tex_coord(k / 4, k % 4)),
+                    _ => ShaderInput::Zero,
+                },
+            })
+            .collect();
+        ShaderWiring { inputs, varyings }
+    }
+}
+
+/// Where a fragment shader's output word goes.
+fn shader_output(name: &str, index: u32) -> ShaderOutput {
+    let channel = (index & 3) as u8;
+    match name {
+        "gl_FragColor" => ShaderOutput::Color { buffer: 0, channel },
+        "gl_FragDepth" => ShaderOutput::Depth,
+        _ => match name.strip_prefix("gl_FragData[").and_then(|n| n.strip_suffix(']')?.parse::<u8>().ok()) {
+            Some(buffer) => ShaderOutput::Color { buffer, channel },
+            None => ShaderOutput::Unused,
+        },
+    }
+}
+
+/// The texture target index (1D, 2D, 3D, cube map) a sampler type reads.
+fn sampler_target(kind: SamplerKind) -> usize {
+    match kind {
+        SamplerKind::S1D | SamplerKind::S1DShadow => 0,
+        SamplerKind::S2D | SamplerKind::S2DShadow => 1,
+        SamplerKind::S3D => 2,
+        SamplerKind::Cube => 3,
+    }
+}
+
+impl Context {
+    /// The program in use and its fragment stage, when that is a shader.
+    pub(in crate::context) fn fragment_shader(&self) -> Option<(&Arc<Executable>, &Arc<StageProgram>)> {
+        let executable = self.program_in_use.executable()?;
+        Some((executable, executable.fragment_program.as_ref()?))
+    }
+
+    /// The GLSL fragment shading of a draw on a framebuffer `fb_height` rows high: the
+    /// program's wiring, its uniform words (user uniforms from the program's values,
+    /// built-in state from [`Context::builtin_uniform_word`], 0 where it has none) and each
+    /// sampler's texture: the texture its unit has bound for the sampler's target, with
+    /// that texture's parameters, whatever the unit's enables (none when incomplete).
+    fn glsl_shading(&self, executable: &Executable, stage: &Arc<StageProgram>, fb_height: i32) -> GlslShading {
+        let lowered = &stage.lowered;
+        let values = self.program_in_use.uniform_values().unwrap_or_default();
+        let user_word = |name: &str, index: u32| -> u32 {
+            let Some((_, first)) = executable.interface.element(name) else { return 0 };
+            values.get(first + index as usize).copied().unwrap_or(0)
+        };
+        let uniforms = lowered
+            .uniforms
+            .iter()
+            .map(|w| {
+                if w.name.starts_with("gl_") {
+                    self.builtin_uniform_word(&w.name, w.index).unwrap_or(0)
+                } else {
+                    user_word(&w.name, w.index)
+                }
+            })
+            .collect();
+        let stages = lowered
+            .samplers
+            .iter()
+            .enumerate()
+            .filter_map(|(i, s)| {
+                let unit = user_word(&s.name, 0) as i32;
+                self.shader_texture_stage(i, usize::try_from(unit).ok()?, sampler_target(s.kind))
+            })
+            .collect();
+        let wiring = ShaderWiring::inputs(executable, stage);
+        let outputs = lowered.outputs.iter().map(|w| shader_output(&w.name, w.index)).collect();
+        let code: Arc<dyn ShaderCode> = stage.clone();
+        GlslShading::new(
+            code,
+            &lowered.program,
+            wiring.inputs,
+            outputs,
+            uniforms,
+            wiring.varyings.len(),
+            Texturing { stages, fb_height },
+        )
+    }
+}
+
+#[cfg(test)]
+#[path = "glsl_tests.rs"]
+mod glsl_tests;

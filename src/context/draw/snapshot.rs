@@ -6,6 +6,7 @@ use crate::framebuffer::format::DepthEncoding;
 use crate::gl::enums::*;
 use crate::gl::limits::MAX_LINE_WIDTH;
 use crate::gl::types::GLenum;
+use crate::vertex::attribute::Attribute;
 use crate::vertex::clip::{ClipPlanes, ClipVertex};
 use crate::vertex::geometry::Geometry;
 use crate::vertex::lighting::NormalScaling;
@@ -40,11 +41,16 @@ impl Context {
             c => c == GL_TRUE as GLenum,
         };
         let needs_normal = tex_units.iter().any(|u| u.needs_normal);
+        // The fog coordinate is computed for fog, and for a GLSL fragment shader reading
+        // gl_FogFragCoord (as Mesa's fixed-function vertex program does for what the
+        // fragment program reads).
+        let fog_coord =
+            fog.enabled || (self.fragment_shader().is_some() && self.varyings_needed().contains(&Attribute::FOG_COORD));
         Transform {
             modelview: self.matrices.modelview(),
             model_project: self.matrices.model_project(),
             clamp_color,
-            fog: fog.enabled.then_some(match (fog.coord_src, fog.distance_mode) {
+            fog: fog_coord.then_some(match (fog.coord_src, fog.distance_mode) {
                 (GL_FOG_COORD, _) => FogSource::Attribute,
                 (_, GL_EYE_RADIAL_NV) => FogSource::Radial,
                 (_, GL_EYE_PLANE) => FogSource::Plane,

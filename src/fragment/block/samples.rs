@@ -95,7 +95,11 @@ impl BlockPipeline {
     /// Whether a draw state runs on the multisampled block path (see the module): without
     /// alpha-to-coverage and depth clamping.
     pub fn takes_samples(state: &DrawState) -> bool {
-        state.fragment.depth_clamp.is_none() && !state.multisample.is_some_and(|m| m.enabled && m.alpha_to_coverage)
+        // GLSL shaders take the span path there (it has the facing and runs a shader
+        // that discards or writes the depth before the tests).
+        state.fragment.depth_clamp.is_none()
+            && state.fragment.glsl.is_none()
+            && !state.multisample.is_some_and(|m| m.enabled && m.alpha_to_coverage)
     }
 
     /// Runs the multisampled pipeline (see the module) on the blocks of `batch` of a
@@ -270,7 +274,7 @@ impl BlockPipeline {
                 |level| {
                     let grid = Grid { level, ..grid };
                     for (b, colors) in blocks.iter().zip(shaded.iter_mut()) {
-                        block_colors(fragment, scratch, &grid.at(b.x, b.y), b.mask, pixels, colors);
+                        block_colors(fragment, scratch, &grid.at(b.x, b.y), b.mask, true, pixels, colors);
                     }
                 },
             );
@@ -296,7 +300,7 @@ impl BlockPipeline {
             }
             let grid = grid.sample(s);
             if m == n {
-                self.color_stage(level, state, band, scratch, grid, pixels, &plane[..m], Some(&shaded[..m]));
+                self.color_stage(level, state, band, scratch, grid, pixels, &plane[..m], Some(&shaded[..m]), true);
             } else {
                 // Some blocks lack sample s (edge blocks): the others' colours, in order.
                 let mut colors = [BlockColors::Uniform([0.0; 4]); BATCH];
@@ -307,7 +311,7 @@ impl BlockPipeline {
                         j += 1;
                     }
                 }
-                self.color_stage(level, state, band, scratch, grid, pixels, &plane[..m], Some(&colors[..m]));
+                self.color_stage(level, state, band, scratch, grid, pixels, &plane[..m], Some(&colors[..m]), true);
             }
         }
     }
@@ -356,7 +360,7 @@ fn alpha_sample_blocks<I: SampleInputs>(
         }
         let at = grid.at(x, y);
         let colors = &mut shaded[kept.min(BATCH - 1)];
-        block_colors(fragment, scratch, &at, b.mask, inputs, colors);
+        block_colors(fragment, scratch, &at, b.mask, true, inputs, colors);
         let live = match colors {
             BlockColors::Uniform(c) => alpha.test(grid.level, &[c[3]; super::LANES], b.mask),
             BlockColors::Lanes(l) => alpha.test(grid.level, &l[3], b.mask),

@@ -1,0 +1,146 @@
+//! GLSL fragment shading runs: a block's lanes against the span runs of its rows (the same
+//! bits, with derivatives, discards and depths, on framebuffers of both row parities), and
+//! the wiring of the fragment's own inputs.
+use super::*;
+use crate::glsl::{compile_shader, InfoLog, Options, Stage};
+
+#[derive(Debug)]
+struct Code(Compiled);
+
+impl ShaderCode for Code {
+    fn compiled(&self) -> &Compiled {
+        &self.0
+    }
+}
+
+/// The shading of the fragment shader `source` on a framebuffer `fb_height` rows high:
+/// `gl_Color`, `gl_FragCoord` and `gl_FrontFacing` wired to the fragment's own,
+/// `gl_TexCoord[0]` to varyings 0..4.
+fn shading(source: &str, fb_height: i32) -> GlslShading {
+    let mut log = InfoLog::default();
+    let checked = compile_shader(source, Stage::Fragment, &Options::default(), &mut log)
+        .unwrap_or_else(|| panic!("{}\n{source}", log.text()));
+    let lowered = crate::glsl::lower::lower(&[&checked]).unwrap();
+    let inputs = lowered
+        .inputs
+        .iter()
+        .map(|w| match w.name.as_str() {
+            "gl_Color" => ShaderInput::Primary(w.index as u8),
+            "gl_FragCoord" => ShaderInput::FragCoord(w.index as u8),
+            "gl_FrontFacing" => ShaderInput::FrontFacing,
+            "gl_TexCoord[0]" => ShaderInput::Varying(w.index as u16),
+            _ => ShaderInput::Zero,
+        })
+        .collect();
+    let outputs = lowered
+        .outputs
+        .iter()
+        .map(|w| match w.name.as_str() {
+            "gl_FragColor" => ShaderOutput::Color { buffer: 0, channel: w.index as u8 },
+            "gl_FragDepth" => ShaderOutput::Depth,
+            _ => ShaderOutput::Unused,
+        })
+        .collect();
+    let code = Arc::new(Code(Compiled::new(&lowered.program)));
+    let textures = Texturing { stages: Vec::new(), fb_height };
+    GlslShading::new(code, &lowered.program, inputs, outputs, Vec::new(), 4, textures)
+}
+
+/// A varying that is no plane (so that the quads a derivative takes show).
+fn varying(x: f32, y: f32, k: usize) -> f32 {
+    x * x * 0.01 + y * 0.3 * k as f32 + (x * y) * 0.001
+}
+
+/// The primary colour of a pixel centre.
+fn primary(x: f32, y: f32) -> [f32; 4] {
+    [x / 16.0, y / 16.0, 0.5, 1.0]
+}
+
+const SHADER: &str = "void main() {\n\
+    vec4 t = gl_TexCoord[0];\n\
+    if (fract(t.x * 3.0) < 0.2) discard;\n\
+    gl_FragColor = vec4(dFdx(t.x), dFdy(t.y), gl_Color.r + t.z, gl_FrontFacing ? 1.0 : 0.5);\n\
+    gl_FragDepth = gl_FragCoord.z * 0.5 + gl_FragCoord.x / 64.0;\n\
+}\n";
+
+#[test]
+fn blocks_shade_as_spans_do() {
+    let mut discarded = 0u16;
+    for fb_height in [16, 15] {
+        let s = shading(SHADER, fb_height);
+        assert!(s.late_tests() && s.writes_depth());
+        for (bx, by) in [(0, 0), (4, 4), (8, 8)] {
+            for live in [0xffffu16, 0x8421, 0x0660] {
+                let mut scratch = GlslScratch::default();
+                let mut colors = [[0.0; LANES]; 4];
+                let mut depth = [0.0; LANES];
+                let z_of = |x: f32, y: f32| (x + y) / 64.0;
+                let kept = s.run_block(&mut scratch, bx, by, live, true, &mut colors, &mut depth, |y0, c, z, v| {
+                    for i in 0..LANES {
+                        let (x, y) = ((bx + (i & 3) as i32) as f32 + 0.5, (y0 + (i >> 2) as i32) as f32 + 0.5);
+                        let p = primary(x, y);
+                        for k in 0..4 {
+                            c[k][i] = p[k];
+                            v[k][i] = varying(x, y, k);
+                        }
+                        z[i] = z_of(x, y);
+                    }
+                });
+                discarded |= live & !kept;
+                assert_eq!(kept & !live, 0);
+                for row in 0..4 {
+                    let y = by + row;
+                    let mut span_colors: Vec<[f32; 4]> =
+                        (0..4).map(|c| primary((bx + c) as f32 + 0.5, y as f32 + 0.5)).collect();
+                    let mut span_depth: Vec<f32> =
+                        (0..4).map(|c| z_of((bx + c) as f32 + 0.5, y as f32 + 0.5)).collect();
+                    let span_live = u64::from((live >> (4 * row)) & 0xf);
+                    let span_kept = s.run_span(
+                        &mut scratch,
+                        bx,
+                        y,
+                        span_live,
+                        true,
+                        &mut span_colors,
+                        &mut span_depth,
+                        |dx, dy, out| {
+                            let (x, y) = ((bx + dx) as f32 + 0.5, (y + dy) as f32 + 0.5);
+                            for (k, o) in out.iter_mut().enumerate() {
+                                *o = varying(x, y, k);
+                            }
+                        },
+                    );
+                    assert_eq!(span_kept, u64::from((kept >> (4 * row)) & 0xf), "{fb_height} ({bx}, {y})");
+                    for c in (0..4).filter(|c| span_kept & (1 << c) != 0) {
+                        let lane = 4 * row as usize + c;
+                        let block: [f32; 4] = std::array::from_fn(|k| colors[k][lane]);
+                        assert_eq!(block.map(f32::to_bits), span_colors[c].map(f32::to_bits), "lane {lane}");
+                        assert_eq!(depth[lane].to_bits(), span_depth[c].to_bits());
+                        // dFdx of x²·0.01 over a quad of columns (2m, 2m + 1) is 0.01·(2x₀ + 1).
+                        let x0 = ((bx as usize + c) & !1) as f32 + 0.5;
+                        assert!((block[0] - (0.01 * (2.0 * x0 + 1.0) + 0.001 * (y as f32 + 0.5))).abs() < 1e-4);
+                    }
+                }
+            }
+        }
+    }
+    assert_ne!(discarded, 0, "some lanes discard");
+}
+
+#[test]
+fn the_fragments_own_inputs_reach_the_shader() {
+    let s =
+        shading("void main() { gl_FragColor = vec4(gl_FragCoord.xy, gl_FragCoord.w, gl_FrontFacing ? 1.0 : 0.0); }", 8);
+    assert!(!s.late_tests());
+    for front in [true, false] {
+        let mut scratch = GlslScratch::default();
+        let mut colors = [[0.0; LANES]; 4];
+        let mut depth = [0.0; LANES];
+        let kept = s.run_block(&mut scratch, 4, 0, 0xffff, front, &mut colors, &mut depth, |_, _, _, _| {});
+        assert_eq!(kept, 0xffff);
+        assert_eq!(colors[0][6], 6.5, "x of lane 6 (column 2)");
+        assert_eq!(colors[1][6], 1.5, "y of lane 6 (row 1)");
+        assert_eq!(colors[2][0], 1.0);
+        assert_eq!(colors[3][9], if front { 1.0 } else { 0.0 });
+    }
+}
