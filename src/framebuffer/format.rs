@@ -94,6 +94,7 @@ impl DepthStencilFormat {
     }
 
     /// How depth values are stored (unorm of `depth_bits()` bits, or float).
+    #[inline]
     pub fn depth_encoding(self) -> DepthEncoding {
         match self {
             DepthStencilFormat::Float32 { .. } => DepthEncoding::Float,

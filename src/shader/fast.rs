@@ -132,12 +132,28 @@ impl Registers {
         }
     }
 
+    /// A texture lookup of the running lanes: out of line, so that the interpreter's
+    /// `match` stays small in its per-level copies, but compiled once per SIMD level itself
+    /// (one more dispatch per lookup), so that its copies of coordinates and masked stores of
+    /// results, a few 16-lane words each, run at the machine's level and not at SSE2's.
     #[inline(never)]
     fn texture(&mut self, io: &mut Io<'_>, wide: &Wide) {
+        crate::simd::per_level!(self.texture_body(io, wide))
+    }
+
+    /// [`Registers::texture`]'s body. Plain loops over the words, not `array::map` or
+    /// iterator zips: without LTO those stayed calls, and cost more than the copies.
+    #[inline(always)]
+    // The lookup's words and its destinations are indexed alike.
+    #[allow(clippy::needless_range_loop)]
+    fn texture_body(&mut self, io: &mut Io<'_>, wide: &Wide) {
         let exec = self.exec;
         match *wide {
             Wide::Sample { dst, unit, n, coords, projective, lod, compare } => {
-                let words = coords.map(|r| *self.get(r));
+                let mut words = [[0; LANES]; 4];
+                for k in 0..4 {
+                    words[k] = *self.get(coords[k]);
+                }
                 let lod = match lod {
                     WideLod::Implicit => LodLanes::Implicit,
                     WideLod::Bias(r) => LodLanes::Bias(self.get(r)),
@@ -147,23 +163,26 @@ impl Registers {
                 let request = SampleRequest { unit, n, coords: &words, projective, lod, compare, lanes: exec };
                 let mut out = [[0; LANES]; 4];
                 io.textures.sample(&request, &mut out);
-                for (r, value) in dst.into_iter().zip(&out) {
-                    self.put_masked(r, value);
+                for k in 0..4 {
+                    self.put_masked(dst[k], &out[k]);
                 }
             }
             Wide::Fetch { dst, unit, n, coords, lod } => {
-                let words = coords.map(|r| *self.get(r));
+                let mut words = [[0; LANES]; 3];
+                for k in 0..3 {
+                    words[k] = *self.get(coords[k]);
+                }
                 let mut out = [[0; LANES]; 4];
                 io.textures.fetch(unit, n, &words, self.get(lod), exec, &mut out);
-                for (r, value) in dst.into_iter().zip(&out) {
-                    self.put_masked(r, value);
+                for k in 0..4 {
+                    self.put_masked(dst[k], &out[k]);
                 }
             }
             Wide::Size { dst, unit, lod } => {
                 let mut out = [[0; LANES]; 3];
                 io.textures.size(unit, self.get(lod), exec, &mut out);
-                for (r, value) in dst.into_iter().zip(&out) {
-                    self.put_masked(r, value);
+                for k in 0..3 {
+                    self.put_masked(dst[k], &out[k]);
                 }
             }
             Wide::MatVec { .. } => unreachable!("not a texture lookup"),
