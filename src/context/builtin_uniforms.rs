@@ -22,8 +22,8 @@
 //!   length-preserving modelview);
 //! - a light's position and spot direction are the eye-space values glLight stored; its
 //!   half vector is normalize(normalize(position.xyz) + (0, 0, 1)) with w = 1 (for every
-//!   light, as Mesa computes it when the position is set), spotCosCutoff is
-//!   cos(spotCutoff · π/180) in double precision, 0 for 180;
+//!   light whose position was set, as Mesa computes it then; zero before), spotCosCutoff
+//!   is Mesa's single-precision cosf of spotCutoff · π/180, 0 for 90 and 180;
 //! - a light product is light color × material color with the material's alpha;
 //!   sceneColor is emission + ambient × the light model's ambient, with the diffuse alpha;
 //! - `gl_Fog.scale` is 1/(end − start) (infinite when they are equal, as on Mesa 22), the fog
@@ -129,21 +129,59 @@ pub enum DepthRangeMember {
 /// component); faces are 0 (front) and 1 (back).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum BuiltinUniform {
-    Matrix { source: MatrixSource, form: MatrixForm, word: u8 },
-    NormalMatrix { word: u8 },
+    Matrix {
+        source: MatrixSource,
+        form: MatrixForm,
+        word: u8,
+    },
+    NormalMatrix {
+        word: u8,
+    },
     NormalScale,
     DepthRange(DepthRangeMember),
-    ClipPlane { plane: u8, word: u8 },
+    ClipPlane {
+        plane: u8,
+        word: u8,
+    },
     Point(PointMember),
-    Material { face: u8, member: MaterialMember, word: u8 },
-    Light { light: u8, member: LightMember, word: u8 },
-    LightModelAmbient { word: u8 },
-    SceneColor { face: u8, word: u8 },
-    LightProduct { face: u8, light: u8, member: ProductMember, word: u8 },
-    TextureEnvColor { unit: u8, word: u8 },
+    Material {
+        face: u8,
+        member: MaterialMember,
+        word: u8,
+    },
+    Light {
+        light: u8,
+        member: LightMember,
+        word: u8,
+    },
+    LightModelAmbient {
+        word: u8,
+    },
+    SceneColor {
+        face: u8,
+        word: u8,
+    },
+    LightProduct {
+        face: u8,
+        light: u8,
+        member: ProductMember,
+        word: u8,
+    },
+    TextureEnvColor {
+        unit: u8,
+        word: u8,
+    },
     /// gl_EyePlaneS..Q (`eye`) or gl_ObjectPlaneS..Q; `coord` 0..4 is S, T, R, Q.
-    TexGenPlane { eye: bool, coord: u8, unit: u8, word: u8 },
-    Fog { member: FogMember, word: u8 },
+    TexGenPlane {
+        eye: bool,
+        coord: u8,
+        unit: u8,
+        word: u8,
+    },
+    Fog {
+        member: FogMember,
+        word: u8,
+    },
 }
 
 /// A GL element name split into its variable, array index and member:
@@ -357,17 +395,26 @@ fn normalize3(v: [f32; 3]) -> [f32; 3] {
 }
 
 /// A light's half vector for an infinite viewer, as Mesa computes it at glLight(GL_POSITION):
-/// normalize(normalize(position.xyz) + (0, 0, 1)), w = 1.
+/// normalize(normalize(position.xyz) + (0, 0, 1)), w = 1. Mesa computes it only when a
+/// glLight changes the position, so a light still at its initial position (0, 0, 1, 0) has
+/// the initial (0, 0, 0, 0). (A position changed and then set back to the initial one has
+/// the computed vector on Mesa; tessera keeps no history and answers zero then too.)
 fn half_vector(position: [f32; 4]) -> [f32; 4] {
+    const INITIAL_POSITION: [f32; 4] = [0.0, 0.0, 1.0, 0.0];
+    if position.map(f32::to_bits) == INITIAL_POSITION.map(f32::to_bits) {
+        return [0.0; 4];
+    }
     let p = normalize3([position[0], position[1], position[2]]);
     let h = normalize3([p[0], p[1], p[2] + 1.0]);
     [h[0], h[1], h[2], 1.0]
 }
 
-/// cos(cutoff · π/180) in double precision, negative results (180°) as 0, as Mesa's glLight.
+/// Mesa's `cosf(cutoff · π/180)`: the angle in double precision rounded to a float, its
+/// single-precision cosine, negative results (90° and 180°) as 0. (llvmpipe reads 0.49999997
+/// for 60°.)
 fn spot_cos_cutoff(cutoff: f32) -> f32 {
-    let c = (cutoff as f64 * std::f64::consts::PI / 180.0).cos() as f32;
-    c.max(0.0)
+    let angle = (cutoff as f64 * std::f64::consts::PI / 180.0) as f32;
+    angle.cos().max(0.0)
 }
 
 /// The built-in state of one draw, read word by word: what several words share is computed
@@ -771,7 +818,8 @@ mod tests {
         let ctx = matrices_context();
         let m = ctx.matrix_elements(StackId::Modelview);
         // transpose(inverse(upper 3×3)), independently in double precision.
-        let upper = glam::DMat3::from_cols_array(&[m[0], m[1], m[2], m[4], m[5], m[6], m[8], m[9], m[10]].map(f64::from));
+        let upper =
+            glam::DMat3::from_cols_array(&[m[0], m[1], m[2], m[4], m[5], m[6], m[8], m[9], m[10]].map(f64::from));
         let want = upper.inverse().transpose().to_cols_array();
         let normal: [f32; 9] = words(&ctx, "gl_NormalMatrix");
         assert_close(&normal, &want, 1e-5, "gl_NormalMatrix");
@@ -823,15 +871,24 @@ mod tests {
         assert_close(&words::<4>(&ctx, &light("halfVector")), &[1.0 / s6, 2.0 / s6, 1.0 / s6, 1.0], 1e-6, "half");
         assert_eq!(word(&ctx, &light("spotExponent"), 0), 7.0);
         assert_eq!(word(&ctx, &light("spotCutoff"), 0), 60.0);
-        assert_close(&[word(&ctx, &light("spotCosCutoff"), 0)], &[0.5], 1e-7, "cos 60°");
+        assert_eq!(word(&ctx, &light("spotCosCutoff"), 0), 0.49999997, "cos 60° as llvmpipe has it");
         assert_eq!(
             [light("constantAttenuation"), light("linearAttenuation"), light("quadraticAttenuation")]
                 .map(|n| word(&ctx, &n, 0)),
             [2.0, 0.5, 0.25]
         );
-        // An untouched light: cutoff 180 has cosine 0 (Mesa clamps the −1); light 1 is black.
+        // An untouched light: cutoff 180 has cosine 0 (Mesa clamps the −1), its half
+        // vector was never computed; light 1 is black.
         assert_eq!(word(&ctx, "gl_LightSource[1].spotCutoff", 0), 180.0);
         assert_eq!(word(&ctx, "gl_LightSource[1].spotCosCutoff", 0), 0.0);
+        assert_eq!(words::<4>(&ctx, "gl_LightSource[1].halfVector"), [0.0; 4]);
+        // Single precision as on llvmpipe: cos 60° is 0.49999997, cos 90° (−4.4e-8) is 0.
+        ctx.light(GL_LIGHT1, GL_SPOT_CUTOFF, &[90.0]);
+        assert_eq!(word(&ctx, "gl_LightSource[1].spotCosCutoff", 0), 0.0);
+        ctx.light(GL_LIGHT1, GL_SPOT_CUTOFF, &[89.9]);
+        assert_eq!(word(&ctx, "gl_LightSource[1].spotCosCutoff", 0).to_bits(), 0x3ae4c281, "llvmpipe's value");
+        ctx.light(GL_LIGHT1, GL_POSITION, &[0.0, 0.0, 3.0, 0.0]);
+        assert_eq!(words::<4>(&ctx, "gl_LightSource[1].halfVector"), [0.0, 0.0, 1.0, 1.0]);
         assert_eq!(words::<4>(&ctx, "gl_LightSource[1].diffuse"), [0.0, 0.0, 0.0, 1.0]);
         assert_eq!(words::<4>(&ctx, "gl_LightSource[0].diffuse"), [1.0; 4]);
 
@@ -843,14 +900,8 @@ mod tests {
         let scene = [0.01f32 + 0.3 * 0.5, 0.02 + 0.4 * 0.25, 0.03 + 0.5 * 0.125, 0.125];
         assert_eq!(words::<4>(&ctx, "gl_BackLightModelProduct.sceneColor"), scene);
         // Light × material; alpha the material's.
-        assert_eq!(
-            words::<4>(&ctx, "gl_BackLightProduct[3].diffuse"),
-            [0.5f32 * 0.25, 0.6 * 0.5, 0.7 * 0.75, 0.125]
-        );
-        assert_eq!(
-            words::<4>(&ctx, "gl_BackLightProduct[3].specular"),
-            [0.9f32 * 1.0, 1.0 * 0.5, 1.5 * 0.25, 0.375]
-        );
+        assert_eq!(words::<4>(&ctx, "gl_BackLightProduct[3].diffuse"), [0.5f32 * 0.25, 0.6 * 0.5, 0.7 * 0.75, 0.125]);
+        assert_eq!(words::<4>(&ctx, "gl_BackLightProduct[3].specular"), [0.9f32 * 1.0, 1.0 * 0.5, 1.5 * 0.25, 0.375]);
         assert_eq!(words::<4>(&ctx, "gl_BackLightProduct[3].ambient"), [0.1f32 * 0.3, 0.2 * 0.4, 0.3 * 0.5, 0.6]);
         assert_eq!(words::<4>(&ctx, "gl_FrontLightProduct[0].ambient"), [0.0, 0.0, 0.0, 1.0]);
     }

@@ -34,9 +34,7 @@ use super::raster_state::{LINE_WIDTH_GRANULARITY, LINE_WIDTH_RANGE, POINT_SIZE_G
 use super::state::StencilFace;
 use super::Context;
 use crate::gl::enums::*;
-use crate::gl::limits::{
-    MAX_ATTRIB_STACK_DEPTH, MAX_CLIP_PLANES, MAX_LIGHTS, MAX_TEXTURE_UNITS, MAX_VIEWPORT_DIM,
-};
+use crate::gl::limits::{MAX_ATTRIB_STACK_DEPTH, MAX_CLIP_PLANES, MAX_LIGHTS, MAX_TEXTURE_UNITS, MAX_VIEWPORT_DIM};
 use crate::gl::types::*;
 
 /// The implementation limits GLSL programs see, which glGet reports.

@@ -22,8 +22,8 @@
 //! is active here and not on Mesa. Like Mesa, a top-level array indexed only by constants
 //! is active up to its largest index (`gl_LightSource[1]` lists entries 0 and 1).
 use super::ast::Storage;
-use super::hir::{Checked, Constant, Expr, ExprKind, FunctionId, Scalar, Stage, Stmt, Type, Value, VarId, VarKind};
 use super::builtins::Limits;
+use super::hir::{Checked, Constant, Expr, ExprKind, FunctionId, Scalar, Stage, Stmt, Type, Value, VarId, VarKind};
 use super::lex::Sampler;
 use crate::gl::enums::*;
 use crate::gl::types::GLenum;
