@@ -489,7 +489,7 @@ impl BuiltinValues<'_> {
                 let transposed = (word % 4) * 4 + word / 4;
                 let Some(m) = self.matrix(source) else {
                     // The identity (a unit tessera does not have), in every form.
-                    return if word % 5 == 0 { 1.0 } else { 0.0 };
+                    return if word.is_multiple_of(5) { 1.0 } else { 0.0 };
                 };
                 match form {
                     MatrixForm::Plain => m.elements()[word],
