@@ -34,10 +34,11 @@ use super::raster_state::{LINE_WIDTH_GRANULARITY, LINE_WIDTH_RANGE, POINT_SIZE_G
 use super::state::StencilFace;
 use super::Context;
 use crate::gl::enums::*;
-use crate::gl::limits::{
-    MAX_ATTRIB_STACK_DEPTH, MAX_CLIP_PLANES, MAX_DRAW_BUFFERS, MAX_LIGHTS, MAX_TEXTURE_UNITS, MAX_VIEWPORT_DIM,
-};
+use crate::gl::limits::{MAX_ATTRIB_STACK_DEPTH, MAX_CLIP_PLANES, MAX_LIGHTS, MAX_TEXTURE_UNITS, MAX_VIEWPORT_DIM};
 use crate::gl::types::*;
+
+/// The implementation limits GLSL programs see, which glGet reports.
+const GLSL_LIMITS: crate::glsl::Limits = crate::glsl::Limits::TESSERA;
 
 /// Bits of subpixel precision of the rasterizer (GL_SUBPIXEL_BITS).
 pub const SUBPIXEL_BITS: i32 = 8;
@@ -228,13 +229,20 @@ impl Context {
             // Implementation limits.
             GL_MAX_VIEWPORT_DIMS => ints([MAX_VIEWPORT_DIM, MAX_VIEWPORT_DIM]),
             GL_MAX_ATTRIB_STACK_DEPTH | GL_MAX_CLIENT_ATTRIB_STACK_DEPTH => one(Int(MAX_ATTRIB_STACK_DEPTH as i32)),
-            GL_MAX_DRAW_BUFFERS => one(Int(MAX_DRAW_BUFFERS as i32)),
+            GL_MAX_DRAW_BUFFERS => one(Int(GLSL_LIMITS.max_draw_buffers)),
             // Framebuffer objects (`framebuffer_object`).
             GL_DRAW_FRAMEBUFFER_BINDING => one(Int(self.fbo.draw as i32)),
             GL_READ_FRAMEBUFFER_BINDING => one(Int(self.fbo.read as i32)),
             GL_RENDERBUFFER_BINDING => one(Int(self.fbo.renderbuffer as i32)),
             GL_CURRENT_PROGRAM => one(Int(self.program_in_use.name() as i32)),
-            GL_MAX_VERTEX_ATTRIBS => one(Int(crate::gl::limits::MAX_VERTEX_ATTRIBS as i32)),
+            // GLSL's limits: what the shaders' built-in constants say (`glsl::Limits`).
+            GL_MAX_VERTEX_ATTRIBS => one(Int(GLSL_LIMITS.max_vertex_attribs)),
+            GL_MAX_VARYING_FLOATS => one(Int(GLSL_LIMITS.max_varying_floats)),
+            GL_MAX_VERTEX_UNIFORM_COMPONENTS => one(Int(GLSL_LIMITS.max_vertex_uniform_components)),
+            GL_MAX_FRAGMENT_UNIFORM_COMPONENTS => one(Int(GLSL_LIMITS.max_fragment_uniform_components)),
+            GL_MAX_VERTEX_TEXTURE_IMAGE_UNITS => one(Int(GLSL_LIMITS.max_vertex_texture_image_units)),
+            GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS => one(Int(GLSL_LIMITS.max_combined_texture_image_units)),
+            GL_MAX_TEXTURE_IMAGE_UNITS => one(Int(GLSL_LIMITS.max_texture_image_units)),
             GL_MAX_COLOR_ATTACHMENTS => one(Int(super::framebuffer_object::MAX_COLOR_ATTACHMENTS as i32)),
             GL_MAX_RENDERBUFFER_SIZE => one(Int(super::framebuffer_object::MAX_RENDERBUFFER_SIZE)),
             GL_MAX_SAMPLES => one(Int(super::framebuffer_object::MAX_SAMPLES)),
@@ -247,7 +255,9 @@ impl Context {
             GL_MAX_CUBE_MAP_TEXTURE_SIZE => one(Int(super::texture::MAX_CUBE_MAP_TEXTURE_SIZE as i32)),
             GL_MAX_TEXTURE_LOD_BIAS => one(Float(super::texture::MAX_TEXTURE_LOD_BIAS)),
             GL_NUM_COMPRESSED_TEXTURE_FORMATS => one(Int(0)),
-            GL_MAX_TEXTURE_COORDS | GL_MAX_TEXTURE_IMAGE_UNITS => one(Int(MAX_TEXTURE_UNITS as i32)),
+            // The fixed-function coordinate sets; GLSL's gl_MaxTextureCoords says 8 (see
+            // `glsl::Limits::TESSERA`).
+            GL_MAX_TEXTURE_COORDS => one(Int(MAX_TEXTURE_UNITS as i32)),
             GL_COMPRESSED_TEXTURE_FORMATS => Vec::new(),
             GL_TEXTURE_BINDING_1D | GL_TEXTURE_BINDING_2D | GL_TEXTURE_BINDING_3D | GL_TEXTURE_BINDING_CUBE_MAP => {
                 let t = match pname {

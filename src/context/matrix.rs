@@ -130,6 +130,18 @@ impl Matrix {
         &self.inv
     }
 
+    /// GL_RESCALE_NORMAL's factor (and GLSL's gl_NormalScale) for this matrix as the
+    /// modelview: see [`MatrixStacks::normal_rescale`]. Call on an analysed matrix.
+    pub fn normal_rescale(&self) -> f32 {
+        if self.flags_within(flag::ROTATION | flag::TRANSLATION) {
+            return 1.0;
+        }
+        let inv = self.inverse();
+        let f = inv[2] * inv[2] + inv[6] * inv[6] + inv[10] * inv[10];
+        let f = if f < 1e-12 { 1.0 } else { f };
+        1.0 / f.sqrt()
+    }
+
     /// Whether every geometry flag of the matrix is among `allowed` (Mesa's `TEST_MAT_FLAGS`).
     fn flags_within(&self, allowed: u32) -> bool {
         flag::GEOMETRY & !allowed & self.flags == 0
@@ -771,24 +783,26 @@ impl MatrixStacks {
     /// (rotations and translations by its flags), else 1/√(f) with f the squared length of
     /// the inverse's third row (1 when f < 10⁻¹²). Call after [`MatrixStacks::validate`].
     pub fn normal_rescale(&self) -> f32 {
-        let m = top(&self.modelview);
-        if m.flags_within(flag::ROTATION | flag::TRANSLATION) {
-            return 1.0;
-        }
-        let inv = m.inverse();
-        let f = inv[2] * inv[2] + inv[6] * inv[6] + inv[10] * inv[10];
-        let f = if f < 1e-12 { 1.0 } else { f };
-        1.0 / f.sqrt()
+        top(&self.modelview).normal_rescale()
     }
 
     /// Projection × modelview as Mesa computes its combined matrix (`_ModelProjectMatrix`):
     /// the 3×4 product when both are affine by their flags. Call after
     /// [`MatrixStacks::validate`].
     pub fn model_project(&self) -> Mat4 {
+        Mat4::from_cols_array(&self.model_project_matrix().m)
+    }
+
+    /// [`MatrixStacks::model_project`] as a matrix of its own with the flags Mesa gives the
+    /// product (`_math_matrix_mul_matrix`: the union of both, type and inverse dirty), not yet
+    /// analysed. Mesa's combined matrix keeps its previous inverse between products (which
+    /// the 3-D inversions partly leave in place); this one starts from the identity.
+    pub fn model_project_matrix(&self) -> Matrix {
         let (p, m) = (top(&self.projection), top(&self.modelview));
-        let combined = Matrix { flags: p.flags | m.flags, ..p };
+        let flags = p.flags | m.flags | flag::DIRTY_TYPE | flag::DIRTY_INVERSE;
+        let combined = Matrix { flags, ..Matrix::default() };
         let product = if combined.flags_within(flag::THREE_D) { matmul34(&p.m, &m.m) } else { matmul4(&p.m, &m.m) };
-        Mat4::from_cols_array(&product)
+        Matrix { m: product, ..combined }
     }
 
     /// What a draw (or any command that validates state in Mesa: glBegin, glDrawArrays,

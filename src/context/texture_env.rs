@@ -301,10 +301,10 @@ impl Context {
                     self.state.texture.unit_state[unit].gen[c].object_plane = p;
                 } else {
                     self.matrices.validate();
-                    let inv = self.matrices.modelview_inverse().as_dmat4();
-                    // p_eye = p · M⁻¹ (a row vector).
-                    let e: [f64; 4] = std::array::from_fn(|j| (0..4).map(|i| p[i] * inv.col(j)[i]).sum());
-                    self.state.texture.unit_state[unit].gen[c].eye_plane = e;
+                    let inv = self.matrices.modelview_inverse().to_cols_array();
+                    // p_eye = p · M⁻¹ (a row vector), in single precision as Mesa.
+                    let e = crate::context::matrix::transform_row_vector(p.map(|x| x as f32), &inv);
+                    self.state.texture.unit_state[unit].gen[c].eye_plane = e.map(f64::from);
                 }
             }
             _ => self.error(GL_INVALID_ENUM),

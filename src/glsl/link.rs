@@ -22,6 +22,7 @@
 //! is active here and not on Mesa. Like Mesa, a top-level array indexed only by constants
 //! is active up to its largest index (`gl_LightSource[1]` lists entries 0 and 1).
 use super::ast::Storage;
+use super::builtins::Limits;
 use super::hir::{Checked, Constant, Expr, ExprKind, FunctionId, Scalar, Stage, Stmt, Type, Value, VarId, VarKind};
 use super::lex::Sampler;
 use crate::gl::enums::*;
@@ -31,9 +32,11 @@ use std::fmt::Write as _;
 use std::sync::Arc;
 
 /// Generic vertex attribute slots (GL_MAX_VERTEX_ATTRIBS).
-pub const MAX_VERTEX_ATTRIBS: u32 = 16;
-/// Uniform components per stage (GL_MAX_{VERTEX,FRAGMENT}_UNIFORM_COMPONENTS on llvmpipe).
-pub const MAX_UNIFORM_COMPONENTS: usize = 16384;
+pub const MAX_VERTEX_ATTRIBS: u32 = Limits::TESSERA.max_vertex_attribs as u32;
+/// Uniform components of the vertex and of the fragment stage
+/// (GL_MAX_{VERTEX,FRAGMENT}_UNIFORM_COMPONENTS, llvmpipe's values).
+pub const MAX_VERTEX_UNIFORM_COMPONENTS: usize = Limits::TESSERA.max_vertex_uniform_components as usize;
+pub const MAX_FRAGMENT_UNIFORM_COMPONENTS: usize = Limits::TESSERA.max_fragment_uniform_components as usize;
 /// Varying components the fragment shader may read (GL_MAX_VARYING_FLOATS): what the vertex
 /// record's slots carry ([`super::varyings`]).
 pub const MAX_VARYING_FLOATS: usize = super::varyings::MAX_VARYING_FLOATS;
@@ -740,8 +743,11 @@ pub fn link(shaders: &[Arc<Checked>], bindings: &[(String, u32)]) -> Result<Link
                 initializer,
             });
         }
-        if stage_components > MAX_UNIFORM_COMPONENTS {
-            let name = if *stage == Stage::Vertex { "vertex" } else { "fragment" };
+        let (name, budget) = match stage {
+            Stage::Vertex => ("vertex", MAX_VERTEX_UNIFORM_COMPONENTS),
+            Stage::Fragment => ("fragment", MAX_FRAGMENT_UNIFORM_COMPONENTS),
+        };
+        if stage_components > budget {
             error(&mut log, &format!("Too many {name} shader default uniform block components\n"));
             return Err(log);
         }
