@@ -20,7 +20,7 @@ pub(super) mod tests;
 use super::shader_objects::Executable;
 use super::{debug, Context};
 use crate::framebuffer::ColorFormat;
-use crate::gl::enums::{GL_FIXED_ONLY, GL_INVALID_OPERATION, GL_TRUE};
+use crate::gl::enums::{GL_FIXED_ONLY, GL_TRUE};
 use crate::gl::types::GLenum;
 use crate::raster::thread_count;
 use crate::setup::jobs::clear::ClearJob;
@@ -165,7 +165,7 @@ impl Context {
     /// The GLSL vertex stage of a draw with `executable` (which has a vertex shader) into a
     /// float (`float_color`) or fixed-point colour buffer: its interface wired, its uniform
     /// words filled (user uniforms from the program's values, built-in state from
-    /// [`Context::builtin_uniform_word`], 0 where it has none), once per draw.
+    /// [`Context::stage_uniforms`]), once per draw.
     pub(crate) fn vertex_shader_stage<'e>(&self, executable: &'e Executable, float_color: bool) -> GlslStage<'e> {
         let program = executable.vertex_program.as_ref().expect("a vertex shader");
         let lowered = &program.lowered;
@@ -184,22 +184,7 @@ impl Context {
             .iter()
             .map(|w| Output::of(w, |name, index| executable.varyings.index_of(name, index)))
             .collect();
-        let values = if lowered.uniforms.iter().any(|w| !w.name.starts_with("gl_")) {
-            self.program_in_use.uniform_values().unwrap_or_default()
-        } else {
-            Vec::new()
-        };
-        let uniforms = lowered
-            .uniforms
-            .iter()
-            .map(|w| {
-                if w.name.starts_with("gl_") {
-                    return self.builtin_uniform_word(&w.name, w.index).unwrap_or(0);
-                }
-                let first = interface.element(&w.name).map(|(_, first)| first);
-                first.and_then(|first| values.get(first + w.index as usize)).copied().unwrap_or(0)
-            })
-            .collect();
+        let uniforms = self.stage_uniforms(program);
         let clamp_color = match self.state.lighting.clamp_vertex_color {
             GL_FIXED_ONLY => !float_color,
             c => c == GL_TRUE as GLenum,

@@ -19,7 +19,9 @@
 //! uniform values each program keeps (reset by each link; set by glUniform*), then lowers
 //! each stage onto the shading IR ([`crate::glsl::lower`]) and places the varyings
 //! ([`crate::glsl::varyings`]): the [`Executable`] the draws run.
+use super::builtin_uniforms::BuiltinUniform;
 use super::share::Shared;
+use super::Context;
 use crate::gl::enums::*;
 use crate::gl::names::NameTable;
 use crate::gl::types::*;
@@ -85,11 +87,44 @@ pub struct Executable {
 }
 
 /// One stage of a linked program: its lowering (the program and what its uniform, input,
-/// output and sampler slots are, by GL name) and the compiled form the draws run.
+/// output and sampler slots are, by GL name), the compiled form the draws run, and where
+/// each uniform word's value comes from (resolved once, at link).
 #[derive(Debug)]
 pub struct StageProgram {
     pub lowered: Lowered,
     pub compiled: Compiled,
+    pub uniform_sources: Vec<UniformSource>,
+}
+
+/// Where a program's uniform word comes from at a draw.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum UniformSource {
+    /// Built-in state (GLSL 1.20 section 7.5).
+    Builtin(BuiltinUniform),
+    /// The program's uniform values, at this word.
+    Value(usize),
+    /// Nothing GL names (0).
+    Zero,
+}
+
+impl Context {
+    /// The uniform words of `stage` at a draw in the current state: built-in state through
+    /// one [`BuiltinValues`](super::builtin_uniforms::BuiltinValues) (shared matrices
+    /// computed once), the program's own values from its uniform storage.
+    pub fn stage_uniforms(&self, stage: &StageProgram) -> Vec<u32> {
+        let builtins = self.builtin_values();
+        let needs_values = stage.uniform_sources.iter().any(|s| matches!(s, UniformSource::Value(_)));
+        let values = if needs_values { self.program_in_use.uniform_values().unwrap_or_default() } else { Vec::new() };
+        stage
+            .uniform_sources
+            .iter()
+            .map(|source| match source {
+                UniformSource::Builtin(b) => builtins.word(b),
+                UniformSource::Value(i) => values.get(*i).copied().unwrap_or(0),
+                UniformSource::Zero => 0,
+            })
+            .collect()
+    }
 }
 
 impl Executable {
@@ -104,7 +139,20 @@ impl Executable {
             let lowered = lower(&units).map_err(|e| format!("error: {e}\n"))?;
             validate(&lowered.program).map_err(|e| format!("error: internal: invalid program: {e:?}\n"))?;
             let compiled = Compiled::new(&lowered.program);
-            Ok(Some(Arc::new(StageProgram { lowered, compiled })))
+            let uniform_sources = lowered
+                .uniforms
+                .iter()
+                .map(|w| {
+                    if let Some(b) = BuiltinUniform::resolve(&w.name, w.index) {
+                        UniformSource::Builtin(b)
+                    } else if let Some((_, first)) = linked.element(&w.name) {
+                        UniformSource::Value(first + w.index as usize)
+                    } else {
+                        UniformSource::Zero
+                    }
+                })
+                .collect();
+            Ok(Some(Arc::new(StageProgram { lowered, compiled, uniform_sources })))
         };
         let vertex_program = stage(Stage::Vertex)?;
         let fragment_program = stage(Stage::Fragment)?;

@@ -323,7 +323,8 @@ mod tests {
     fn outputs_name_record_fields_and_varying_slots() {
         let varying = |name: &str, index: u32| match name {
             "gl_TexCoord[1]" => Some(4 + index as u16),
-            "far" => Some(40),
+            "far" => Some(4 * crate::glsl::varyings::VARYING_SLOTS as u16),
+            "last" => Some(4 * crate::glsl::varyings::VARYING_SLOTS as u16 - 1),
             _ => None,
         };
         let output = |name: &str, index: u32| Output::of(&word(name, index), varying);
@@ -333,6 +334,7 @@ mod tests {
         assert_eq!(output("gl_FogFragCoord", 0), Output::FogFragCoord);
         assert_eq!(output("gl_PointSize", 0), Output::PointSize);
         assert_eq!(output("gl_TexCoord[1]", 3), Output::Varying(7));
+        assert_eq!(output("last", 0), Output::Varying(4 * crate::glsl::varyings::VARYING_SLOTS as u16 - 1));
         // Beyond the record's slots, or read by no later stage: not stored.
         assert_eq!(output("far", 0), Output::None);
         assert_eq!(output("unread", 0), Output::None);

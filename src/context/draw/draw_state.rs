@@ -216,7 +216,7 @@ impl Context {
 
     /// The GLSL fragment shading of a draw on a framebuffer `fb_height` rows high: the
     /// program's wiring, its uniform words (user uniforms from the program's values,
-    /// built-in state from [`Context::builtin_uniform_word`], 0 where it has none) and each
+    /// built-in state, 0 where it has none: [`Context::stage_uniforms`]) and each
     /// sampler's texture: the texture its unit has bound for the sampler's target, with
     /// that texture's parameters, whatever the unit's enables (none when incomplete).
     fn glsl_shading(&self, executable: &Executable, stage: &Arc<StageProgram>, fb_height: i32) -> GlslShading {
@@ -226,17 +226,7 @@ impl Context {
             let Some((_, first)) = executable.interface.element(name) else { return 0 };
             values.get(first + index as usize).copied().unwrap_or(0)
         };
-        let uniforms = lowered
-            .uniforms
-            .iter()
-            .map(|w| {
-                if w.name.starts_with("gl_") {
-                    self.builtin_uniform_word(&w.name, w.index).unwrap_or(0)
-                } else {
-                    user_word(&w.name, w.index)
-                }
-            })
-            .collect();
+        let uniforms = self.stage_uniforms(stage);
         let stages = lowered
             .samplers
             .iter()
