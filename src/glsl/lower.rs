@@ -163,6 +163,34 @@ fn elements(ty: &Type, name: String, base: usize, out: &mut Vec<(String, usize, 
     }
 }
 
+/// The basic-type element holding leaf `i` of a value of type `ty` named `name`: its GL
+/// name, its first leaf, and the leaf's kind (what [`elements`] and [`leaves`] list, for
+/// one leaf).
+fn element_of(ty: &Type, name: String, i: usize) -> (String, usize, Leaf) {
+    match ty {
+        Type::Struct(s) => {
+            let mut at = 0;
+            for (m, t) in &s.members {
+                let n = leaf_count(t);
+                if i < at + n {
+                    let (name, base, kind) = element_of(t, format!("{name}.{m}"), i - at);
+                    return (name, at + base, kind);
+                }
+                at += n;
+            }
+            unreachable!("leaf {i} beyond the struct's {at} leaves")
+        }
+        Type::Array(e, _) => {
+            let size = leaf_count(e).max(1);
+            let k = i / size;
+            let (name, base, kind) = element_of(e, format!("{name}[{k}]"), i % size);
+            (name, k * size + base, kind)
+        }
+        Type::Sampler(_) => (name, 0, Leaf::Sampler),
+        t => (name, 0, Leaf::Scalar(ir_type(t.base().expect("basic")))),
+    }
+}
+
 /// Where a variable's words come from.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Class {
@@ -516,8 +544,6 @@ impl<'a> Lowerer<'a> {
         if let Some(r) = state.regs[i] {
             return Ok(r);
         }
-        let mut kinds = Vec::new();
-        leaves(&state.ty, &mut kinds);
         let class = state.class;
         let ty = state.ty.clone();
         let constant = state.constant.clone();
@@ -525,11 +551,10 @@ impl<'a> Lowerer<'a> {
             Key::Global(n) => n.clone(),
             Key::Local(..) => String::new(),
         };
-        let mut elems = Vec::new();
-        elements(&ty, name, 0, &mut elems);
-        let (elem_name, elem_base) =
-            elems.into_iter().find(|e| e.1 <= i && i < e.1 + e.2).map(|e| (e.0, e.1)).expect("leaf in an element");
-        let r = match kinds[i] {
+        // Straight to the leaf's element, not through a list of all of them: a dynamically
+        // indexed array names every leaf, and a list per leaf would be quadratic.
+        let (elem_name, elem_base, leaf_kind) = element_of(&ty, name, i);
+        let r = match leaf_kind {
             Leaf::Sampler => {
                 if class != Class::Uniform {
                     return Err("a sampler that is not a uniform".into());
