@@ -715,19 +715,24 @@ pub fn link(shaders: &[Arc<Checked>], bindings: &[(String, u32)]) -> Result<Link
                 _ => {}
             }
         }
+        // As Mesa, a uniform declared with an initializer is active even where no code
+        // reads it (its value may matter to the other stage or to the application).
+        for &s in &reach.stage_shaders {
+            for (v, init) in &shaders[s].globals {
+                let var = &shaders[s].variables[*v];
+                if init.is_some() && var.storage == Some(Storage::Uniform) && !own.contains(&(s, *v)) {
+                    own.push((s, *v));
+                }
+            }
+        }
         // Declaration order for the shader's own uniforms.
         own.sort_by_key(|&(s, v)| (s, shaders[s].globals.iter().position(|g| g.0 == v)));
         builtins.sort();
         for (s, v) in builtins.into_iter().chain(own) {
             let var = &shaders[s].variables[v];
-            let usage = reach.uses[&(s, v)];
+            let usage = reach.uses.get(&(s, v)).copied().unwrap_or(Use { whole: true, ..Use::default() });
             if var.kind == VarKind::Global {
                 stage_components += leaf_components(&var.ty);
-            }
-            if let Some(g) = globals.iter_mut().find(|g| g.name == var.name) {
-                g.usage.whole |= usage.whole;
-                g.usage.max_index = g.usage.max_index.max(usage.max_index);
-                continue;
             }
             let initializer = shaders[s]
                 .globals
@@ -735,6 +740,15 @@ pub fn link(shaders: &[Arc<Checked>], bindings: &[(String, u32)]) -> Result<Link
                 .find(|g| g.0 == v)
                 .and_then(|g| g.1.as_ref())
                 .and_then(|e| e.constant().cloned());
+            if let Some(g) = globals.iter_mut().find(|g| g.name == var.name) {
+                g.usage.whole |= usage.whole;
+                g.usage.max_index = g.usage.max_index.max(usage.max_index);
+                // The initializer may be in the other stage's declaration only.
+                if g.initializer.is_none() {
+                    g.initializer = initializer;
+                }
+                continue;
+            }
             globals.push(Global {
                 name: var.name.clone(),
                 ty: var.ty.clone(),
