@@ -5,7 +5,7 @@
 # every TESSERA_SIMD level the CPU has on 1 and 2 threads and compares the bytes (about a
 # minute on 2 cores); compare/tests/examples.rs, which runs tessera-compare on examples-c/
 # against Mesa and opens its HTML report in headless chromium), the GLX checks under Xvfb
-# (tools/xvfb-tests.sh, piglit included), real Python clients (tools/clients.sh), the fuzz target (tools/fuzz.sh), formatting and clippy.
+# (tools/xvfb-tests.sh, piglit included), a sample of piglit's GLSL tests (tools/piglit-glsl.py), real Python clients (tools/clients.sh), the fuzz targets (tools/fuzz.sh), formatting and clippy.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -17,7 +17,11 @@ bash tools/memcheck.sh
 bash tools/xvfb-tests.sh   # GLX under a private Xvfb: glxinfo, glxgears, freeglut, two threads, piglit
 # Real clients from PyPI (PyOpenGL, MuJoCo, dm_control, glfw) in a cached venv, on tessera.
 bash tools/clients.sh
-# Command-stream fuzzing (fuzz/): past findings replayed, then 90 s of libFuzzer.
+# piglit's GLSL 1.10/1.20 tests: a fixed sample of 150 against tests/piglit/glsl-expected.txt
+# (the full sets: python3 tools/piglit-glsl.py; README, "GLSL conformance").
+python3 tools/piglit-glsl.py --sample 150
+# Fuzzing (fuzz/): past findings replayed, then 90 s of command streams and 45 s of GLSL
+# shaders (libFuzzer).
 bash tools/fuzz.sh 90
 # A smoke run of the benchmark (64x64, one frame per scene: seconds; writes target/bench/quick).
 bash tools/bench.sh --quick
