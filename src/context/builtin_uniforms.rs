@@ -9,7 +9,8 @@
 //! ([`BuiltinUniform::resolve`]: the GL name parsed into what it reads), and read at each
 //! draw through a [`BuiltinValues`], which computes what several words share (the analysed
 //! matrices, the modelview-projection product and its inverse) once per draw on first use.
-//! [`Context::builtin_uniform_word`] is the one-word convenience over both.
+//! The draws read them through `Context::stage_uniforms` (`super::shader_objects`); the
+//! tests read single words through `Context::builtin_uniform_word`.
 //!
 //! The values are Mesa 22's (`prog_statevars.c` and the built-in uniform table of its GLSL
 //! front end), checked against llvmpipe by `capi-tests/glsl_builtin_state.c`:
@@ -439,7 +440,8 @@ impl Context {
     /// `gl_LightSource[0].diffuse`; matrices column-major) as the current state gives it;
     /// `None` for a name that is no built-in state uniform. Resolves the name and computes
     /// shared values each call: for many words, resolve once ([`BuiltinUniform::resolve`])
-    /// and read through one [`BuiltinValues`] per draw.
+    /// and read through one [`BuiltinValues`] per draw (as the draws do). For the tests.
+    #[cfg(test)]
     pub fn builtin_uniform_word(&self, name: &str, index: u32) -> Option<u32> {
         let uniform = BuiltinUniform::resolve(name, index)?;
         Some(self.builtin_values().word(&uniform))
