@@ -38,13 +38,10 @@ pub fn write_target(
     live: u64,
     ops: &TargetOps<'_>,
 ) {
-    // One copy per SIMD level (`crate::simd`): the conversion and blend loops inlined into
-    // the body run with the CPU's instructions. Two copies, not three: SSE4.1 runs SSE2's
-    // (this span path is the rare one, lines, points and float targets, and SSE4.1's copy
-    // was 120 KB of the libraries, SSE2's 50 KB).
-    let level = crate::simd::current();
-    crate::simd::dispatch::run_with_sse2_for_sse41(
-        level,
+    // One copy, SSE2's, at every level (`crate::simd::dispatch::baseline`): this span path
+    // is the rare one (lines, points, pixel rectangles and float targets), its spans are
+    // short, and its SSE4.1 and AVX2 copies were 120 KB and 96 KB of each library.
+    crate::simd::dispatch::baseline(
         #[inline(always)]
         |_| {
             let n = colors.len().min(MAX_SPAN);

@@ -150,6 +150,25 @@ pub fn outlined_sse2_for_sse41<R>(level: Supported, f: impl FnOnce(Supported) ->
     call_at_level_sse2_for_sse41!(level, f, avx2_outlined, sse2)
 }
 
+/// Runs `f(level)` in one out-of-line copy compiled for the SSE2 baseline, whatever the
+/// level (given `Supported(Sse2)`): for a body whose wider copies are not worth their size
+/// (the span path's conversions and blends: lines, points and pixel rectangles, whose spans
+/// are short; its AVX2 copy alone was 96 KB of each library, issue #18's 5 MB limit).
+#[inline(always)]
+pub fn baseline<R>(f: impl FnOnce(Supported) -> R) -> R {
+    #[cfg(target_arch = "x86_64")]
+    {
+        sse2(
+            #[inline(always)]
+            move || f(Supported(Level::Sse2)),
+        )
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        f(Supported(Level::Portable))
+    }
+}
+
 /// `f` compiled with AVX2 (256-bit integer and float vectors, VEX encodings). Not FMA:
 /// results must not depend on the level (see the room's doc).
 #[cfg(target_arch = "x86_64")]

@@ -17,12 +17,21 @@
 //! - around a kernel called out of line: a thin function whose body is
 //!   `per_level!(kernel_body(args))` with `kernel_body` `#[inline(always)]` and its loops
 //!   written as plain loops (an iterator adaptor such as `Vec::extend` may stay a call out of
-//!   the copy). Today: `fragment::output::write_target` (conversion, blending),
-//!   `fragment::write_colors` (conversion) and `setup::plane::Shading::span_colors` (color
-//!   planes). A dispatch costs a call and a few loads per use (measured: 20–40
+//!   the copy). Today: `fragment::write_colors` (conversion) and
+//!   `setup::plane::Shading::span_colors` (color planes). A dispatch costs a call and a few loads per use (measured: 20–40
 //!   instructions, +3–8 % on the benchmark's small and thin triangles, whose spans are a few
 //!   pixels long), so a kernel should do a block's or a long span's work per call; the
 //!   per-band copy costs nothing per span, which is where the 4×4 block kernels belong.
+//!
+//! **What each copy costs.** Every copy is code in both shipped libraries, which issue #18
+//! holds to 5 MB each, so a body gets a level's copy only where it pays:
+//! `dispatch::run_with_sse2_for_sse41`/`per_level!(sse2_for_sse41, ..)` compile no SSE4.1
+//! copy and `dispatch::baseline` only SSE2's. The triangle walk and its block stages have
+//! AVX2 and SSE2 copies (an SSE4.1 copy ran blends about 12 % fewer instructions on CPUs
+//! with SSE4.1 and no AVX2, and cost 230 KB); the span path's writes
+//! (`fragment::output::write_target`: lines, points, pixel rectangles, short spans) only
+//! SSE2's (its AVX2 copy was 96 KB); texture sampling, fragment shading and the shader
+//! executor all three.
 //!
 //! **Same bytes at every level.** The levels differ only in how many lanes an instruction
 //! carries and in encodings, never in the value of an operation: IEEE 754 add, subtract,

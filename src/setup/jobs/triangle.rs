@@ -271,8 +271,9 @@ impl TriangleJob {
         }
         // The walk compiled once per SIMD level (one dispatch per triangle and tile); its
         // blocks collected in batches, each batch's stages one direct call per stage into
-        // their copies for the level (`BlockPipeline::render`).
-        crate::simd::per_level!(|level| {
+        // their copies for the level (`BlockPipeline::render`). No SSE4.1 copy of the walk
+        // (that level runs SSE2's: issue #18's 5 MB limit).
+        crate::simd::per_level!(sse2_for_sse41, |level| {
             let front_facing = self.front_facing;
             walk_blocks(
                 level,
