@@ -440,6 +440,257 @@ static double scene_stage(void)
     return (double)LAYERS * W * H;
 }
 
+/* GLSL scenes (issue #20's performance checks). The GL 2.0 entry points are looked up with
+ * OSMesaGetProcAddress, as a client of a 1.5 context would (tessera reports 2.1 only once
+ * every GL 2.1 feature works; its entry points exist either way). */
+static PFNGLCREATESHADERPROC pCreateShader;
+static PFNGLSHADERSOURCEPROC pShaderSource;
+static PFNGLCOMPILESHADERPROC pCompileShader;
+static PFNGLGETSHADERIVPROC pGetShaderiv;
+static PFNGLGETSHADERINFOLOGPROC pGetShaderInfoLog;
+static PFNGLCREATEPROGRAMPROC pCreateProgram;
+static PFNGLATTACHSHADERPROC pAttachShader;
+static PFNGLLINKPROGRAMPROC pLinkProgram;
+static PFNGLGETPROGRAMIVPROC pGetProgramiv;
+static PFNGLGETPROGRAMINFOLOGPROC pGetProgramInfoLog;
+static PFNGLUSEPROGRAMPROC pUseProgram;
+static PFNGLDELETESHADERPROC pDeleteShader;
+static PFNGLDELETEPROGRAMPROC pDeleteProgram;
+static PFNGLGETUNIFORMLOCATIONPROC pGetUniformLocation;
+static PFNGLUNIFORM1IPROC pUniform1i;
+
+static int load_glsl_entry_points(void)
+{
+#define LOAD(p, name) (p = (void *)OSMesaGetProcAddress(name)) != NULL
+    return LOAD(pCreateShader, "glCreateShader") && LOAD(pShaderSource, "glShaderSource") &&
+           LOAD(pCompileShader, "glCompileShader") && LOAD(pGetShaderiv, "glGetShaderiv") &&
+           LOAD(pGetShaderInfoLog, "glGetShaderInfoLog") && LOAD(pCreateProgram, "glCreateProgram") &&
+           LOAD(pAttachShader, "glAttachShader") && LOAD(pLinkProgram, "glLinkProgram") &&
+           LOAD(pGetProgramiv, "glGetProgramiv") && LOAD(pGetProgramInfoLog, "glGetProgramInfoLog") &&
+           LOAD(pUseProgram, "glUseProgram") && LOAD(pDeleteShader, "glDeleteShader") &&
+           LOAD(pDeleteProgram, "glDeleteProgram") && LOAD(pGetUniformLocation, "glGetUniformLocation") &&
+           LOAD(pUniform1i, "glUniform1i");
+#undef LOAD
+}
+
+/* Compiles and links a program; exits with the info log on failure (a benchmark of a
+ * program that does not link would time nothing). */
+static GLuint build_program(const char *vertex, const char *fragment)
+{
+    const char *sources[2] = {vertex, fragment};
+    const GLenum kinds[2] = {GL_VERTEX_SHADER, GL_FRAGMENT_SHADER};
+    GLuint program = pCreateProgram();
+    char log[4096];
+    for (int i = 0; i < 2; i++) {
+        GLuint shader = pCreateShader(kinds[i]);
+        GLint ok = 0;
+        pShaderSource(shader, 1, &sources[i], NULL);
+        pCompileShader(shader);
+        pGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+        if (!ok) {
+            pGetShaderInfoLog(shader, sizeof log, NULL, log);
+            fprintf(stderr, "bench: shader does not compile:\n%s\n", log);
+            exit(1);
+        }
+        pAttachShader(program, shader);
+        pDeleteShader(shader); /* freed with the program */
+    }
+    GLint linked = 0;
+    pLinkProgram(program);
+    pGetProgramiv(program, GL_LINK_STATUS, &linked);
+    if (!linked) {
+        pGetProgramInfoLog(program, sizeof log, NULL, log);
+        fprintf(stderr, "bench: program does not link:\n%s\n", log);
+        exit(1);
+    }
+    return program;
+}
+
+/* Per-pixel Blinn-Phong: the lit mesh of scene_lit_mesh (same lights and material), lit in
+ * the fragment shader from the built-in light and material state. */
+static double scene_phong_shader(void)
+{
+    static GLuint program;
+    if (!program)
+        program = build_program(
+            "varying vec3 normal, position;\n"
+            "void main() {\n"
+            "    position = vec3(gl_ModelViewMatrix * gl_Vertex);\n"
+            "    normal = gl_NormalMatrix * gl_Normal;\n"
+            "    gl_Position = ftransform();\n"
+            "}\n",
+            "varying vec3 normal, position;\n"
+            "void main() {\n"
+            "    vec3 n = normalize(normal);\n"
+            "    vec3 eye = -normalize(position);\n"
+            "    vec4 color = gl_FrontLightModelProduct.sceneColor;\n"
+            "    for (int i = 0; i < 2; i++) {\n"
+            "        vec4 p = gl_LightSource[i].position;\n"
+            "        vec3 l = p.w == 0.0 ? normalize(p.xyz) : normalize(p.xyz - position);\n"
+            "        float attenuation = p.w == 0.0 ? 1.0\n"
+            "            : 1.0 / (gl_LightSource[i].constantAttenuation\n"
+            "                     + gl_LightSource[i].linearAttenuation * length(p.xyz - position));\n"
+            "        float diffuse = max(dot(n, l), 0.0);\n"
+            "        color += attenuation * (gl_FrontLightProduct[i].ambient + gl_FrontLightProduct[i].diffuse * diffuse);\n"
+            "        if (diffuse > 0.0) {\n"
+            "            float h = max(dot(n, normalize(l + eye)), 0.0);\n"
+            "            color += attenuation * gl_FrontLightProduct[i].specular * pow(h, gl_FrontMaterial.shininess);\n"
+            "        }\n"
+            "    }\n"
+            "    gl_FragColor = clamp(color, 0.0, 1.0);\n"
+            "}\n");
+    pUseProgram(program);
+    double fragments = scene_lit_mesh();
+    pUseProgram(0);
+    return fragments;
+}
+
+/* scene_textured through a program: the texture sampled in the fragment shader and
+ * modulated by the interpolated colour, as GL_MODULATE does. */
+static double scene_textured_shader(void)
+{
+    static GLuint program;
+    if (!program) {
+        program = build_program("void main() {\n"
+                                "    gl_Position = ftransform();\n"
+                                "    gl_TexCoord[0] = gl_MultiTexCoord0;\n"
+                                "    gl_FrontColor = gl_Color;\n"
+                                "}\n",
+                                "uniform sampler2D image;\n"
+                                "void main() {\n"
+                                "    gl_FragColor = texture2D(image, gl_TexCoord[0].xy) * gl_Color;\n"
+                                "}\n");
+        pUseProgram(program);
+        pUniform1i(pGetUniformLocation(program, "image"), 0);
+    }
+    pUseProgram(program);
+    double fragments = scene_textured();
+    glDisable(GL_TEXTURE_2D);
+    pUseProgram(0);
+    return fragments;
+}
+
+/* The first draw with a new program: a 200-line shader pair (lighting, texturing, fog and
+ * helper functions) compiled, linked and drawn over 64 x 64 pixels. Each repetition's source
+ * differs by one constant, so no implementation can reuse an earlier compile. */
+static double scene_shader_first_draw(void)
+{
+    static int generation;
+    static char vertex[8192], fragment[16384];
+    int n = snprintf(vertex, sizeof vertex,
+                     "// first-draw benchmark, generation %d\n"
+                     "varying vec3 normal, position;\n"
+                     "varying vec2 uv;\n"
+                     "varying float fog;\n"
+                     "uniform float time;\n"
+                     "const float wobble = %d.0 / 1000.0;\n"
+                     "vec4 displaced(vec4 v) {\n"
+                     "    float s = sin(v.x * 3.0 + time) * wobble;\n"
+                     "    float c = cos(v.y * 2.0 - time) * wobble;\n"
+                     "    return vec4(v.xyz + vec3(s, c, s * c), v.w);\n"
+                     "}\n"
+                     "float fog_factor(vec3 eye) {\n"
+                     "    float d = length(eye);\n"
+                     "    return clamp((gl_Fog.end - d) * gl_Fog.scale, 0.0, 1.0);\n"
+                     "}\n"
+                     "void main() {\n"
+                     "    vec4 v = displaced(gl_Vertex);\n"
+                     "    position = vec3(gl_ModelViewMatrix * v);\n"
+                     "    normal = normalize(gl_NormalMatrix * gl_Normal);\n"
+                     "    uv = gl_MultiTexCoord0.xy * 2.0;\n"
+                     "    fog = fog_factor(position);\n"
+                     "    gl_FrontColor = gl_Color;\n"
+                     "    gl_Position = gl_ModelViewProjectionMatrix * v;\n"
+                     "}\n",
+                     generation, generation % 7);
+    int m = snprintf(fragment, sizeof fragment,
+                     "// first-draw benchmark, generation %d\n"
+                     "varying vec3 normal, position;\n"
+                     "varying vec2 uv;\n"
+                     "varying float fog;\n"
+                     "uniform sampler2D albedo;\n"
+                     "uniform sampler2D detail;\n"
+                     "uniform float exposure;\n"
+                     "const int LIGHTS = 2;\n"
+                     "const float seed = %d.0;\n"
+                     "struct Surface {\n"
+                     "    vec3 normal;\n"
+                     "    vec3 view;\n"
+                     "    vec4 base;\n"
+                     "    float roughness;\n"
+                     "};\n",
+                     generation, generation);
+    /* Helper functions: each a few lines of the arithmetic real shaders do. */
+    for (int f = 0; f < 12; f++)
+        m += snprintf(fragment + m, sizeof fragment - m,
+                      "float hash%d(vec2 p) {\n"
+                      "    p = fract(p * vec2(%d.13, %d.71) + seed);\n"
+                      "    p += dot(p, p.yx + 19.19);\n"
+                      "    return fract((p.x + p.y) * p.x);\n"
+                      "}\n"
+                      "vec3 tone%d(vec3 c) {\n"
+                      "    vec3 x = max(vec3(0.0), c * exposure - 0.004 * float(%d));\n"
+                      "    return (x * (6.2 * x + 0.5)) / (x * (6.2 * x + 1.7) + 0.06);\n"
+                      "}\n",
+                      f, f + 3, f + 5, f, f);
+    m += snprintf(fragment + m, sizeof fragment - m,
+                  "float specular(Surface s, vec3 l) {\n"
+                  "    vec3 h = normalize(l + s.view);\n"
+                  "    float shininess = mix(8.0, 64.0, 1.0 - s.roughness);\n"
+                  "    return pow(max(dot(s.normal, h), 0.0), shininess);\n"
+                  "}\n"
+                  "vec3 light(Surface s, int i) {\n"
+                  "    vec4 p = gl_LightSource[i].position;\n"
+                  "    vec3 l = p.w == 0.0 ? normalize(p.xyz) : normalize(p.xyz - s.view);\n"
+                  "    float d = max(dot(s.normal, l), 0.0);\n"
+                  "    vec3 c = gl_LightSource[i].diffuse.rgb * d * s.base.rgb;\n"
+                  "    if (d > 0.0)\n"
+                  "        c += gl_LightSource[i].specular.rgb * specular(s, l);\n"
+                  "    return c;\n"
+                  "}\n"
+                  "void main() {\n"
+                  "    Surface s;\n"
+                  "    s.normal = normalize(normal);\n"
+                  "    s.view = -normalize(position);\n"
+                  "    s.base = texture2D(albedo, uv) * gl_Color;\n"
+                  "    s.roughness = texture2D(detail, uv * 4.0).r;\n"
+                  "    vec3 color = gl_LightModel.ambient.rgb * s.base.rgb;\n"
+                  "    for (int i = 0; i < LIGHTS; i++)\n"
+                  "        color += light(s, i);\n"
+                  "    float grain = 0.0;\n");
+    for (int f = 0; f < 12; f++)
+        m += snprintf(fragment + m, sizeof fragment - m, "    grain += hash%d(gl_FragCoord.xy) * %d.0;\n", f, f + 1);
+    m += snprintf(fragment + m, sizeof fragment - m,
+                  "    color += (grain / 78.0 - 0.5) / 64.0;\n"
+                  "    if (exposure > 1.5)\n"
+                  "        color = tone%d(color);\n"
+                  "    else\n"
+                  "        color = tone%d(color);\n"
+                  "    gl_FragColor = vec4(mix(gl_Fog.color.rgb, color, fog), s.base.a);\n"
+                  "}\n",
+                  generation % 12, (generation + 5) % 12);
+    (void)n;
+    generation++;
+    GLuint program = build_program(vertex, fragment);
+    pUseProgram(program);
+    glBegin(GL_QUADS);
+    const float h = 64.0f / (float)W;
+    glColor3f(0.9f, 0.8f, 0.7f);
+    glNormal3f(0, 0, 1);
+    glTexCoord2f(0, 0);
+    glVertex2f(-h, -h);
+    glTexCoord2f(1, 0);
+    glVertex2f(h, -h);
+    glTexCoord2f(1, 1);
+    glVertex2f(h, h);
+    glTexCoord2f(0, 1);
+    glVertex2f(-h, h);
+    glEnd();
+    pUseProgram(0);
+    pDeleteProgram(program);
+    return 64.0 * 64.0;
+}
+
 static void save(const char *dir, const char *name)
 {
     char path[1024];
@@ -576,6 +827,13 @@ int main(int argc, char **argv)
     run(dir, "lit_mesh", scene_lit_mesh, reps);
     run(dir, "textured_fill", scene_textured, reps);
     run(dir, "fbo_shadow_map", scene_fbo_shadow_map, reps);
+    if (load_glsl_entry_points()) {
+        run(dir, "phong_shader", scene_phong_shader, reps);
+        run(dir, "textured_shader", scene_textured_shader, reps);
+        run(dir, "shader_first_draw", scene_shader_first_draw, reps);
+    } else {
+        fprintf(stderr, "bench: no GL 2.0 entry points: GLSL scenes skipped\n");
+    }
     const char *stages[] = {"none", "scissor", "alpha", "stencil", "depth", "blend", "logic_op", "fog", "dither"};
     for (unsigned s = 0; s < sizeof stages / sizeof *stages; s++) {
         char name[64];

@@ -29,10 +29,17 @@ SCENES = [
     ("lit_mesh", "Lit mesh (128×128 quads, 2 lights, specular)"),
     ("textured_fill", "Textured fill, trilinear (8 layers)"),
     ("fbo_shadow_map", "Render to texture: 2048² depth texture in an FBO (8 quads), then sampled with depth compare"),
+    ("phong_shader", "Per-pixel Blinn-Phong GLSL program on the lit mesh (2 lights)"),
+    ("textured_shader", "Textured fill through a GLSL program (8 layers, trilinear)"),
+    ("shader_first_draw", "First draw with a new program: compile + link a 200-line shader pair, draw 64²"),
 ]
 STAGES = ["none", "scissor", "alpha", "stencil", "depth", "blend", "logic_op", "fog", "dither"]
 LIBRARY_LIMIT_MB = 5.0
 GOAL_FILL = {"flat_fill", "smooth_fill", "blend_fill", "depth_overdraw", "stencil_shadow", "fog_blend"}
+# Issue #20's checks: the GLSL scenes at least as fast as llvmpipe (goal 2×), and a new
+# program's first draw under an absolute time.
+GOAL_SHADER = {"phong_shader", "textured_shader"}
+FIRST_DRAW_LIMIT_MS = 5.0
 
 
 def parse(path):
@@ -261,7 +268,14 @@ def main():
             if not a or not b:
                 continue
             ratio = b["median"] / a["median"]
-            goal = 3.0 if scene in GOAL_FILL else 1.5 if scene == "small_triangles" else None
+            if scene == "shader_first_draw":
+                met = "yes" if a["median"] < FIRST_DRAW_LIMIT_MS else "no"
+                md.append(
+                    f"| {title} | {fmt_ms(a['median'])} ms | {fmt_ms(b['median'])} ms | {ratio:.2f}× | "
+                    f"< {FIRST_DRAW_LIMIT_MS:g} ms | {met} |"
+                )
+                continue
+            goal = 3.0 if scene in GOAL_FILL else 1.5 if scene == "small_triangles" else 1.0 if scene in GOAL_SHADER else None
             met = "" if goal is None else ("yes" if ratio >= goal else "no")
             md.append(
                 f"| {title} | {fmt_ms(a['median'])} ms | {fmt_ms(b['median'])} ms | {ratio:.2f}× | "
