@@ -22,13 +22,13 @@
 //! negates y in the viewport transform. glWindowPos and glBitmap's moves are in window
 //! coordinates and unaffected.
 use super::get::Value;
+use super::shader_objects::Executable;
 use super::Context;
 use crate::gl::enums::*;
 use crate::gl::limits::MAX_TEXTURE_UNITS;
 use crate::gl::types::GLenum;
 use crate::vertex::Vertex;
 use glam::Vec4;
-use super::shader_objects::Executable;
 
 /// Which of the outputs a raster position or feedback vertex reports a GLSL vertex shader
 /// writes: Mesa 22 takes the current value of the attribute for one it does not write.

@@ -112,7 +112,13 @@ pub fn format_info(internal_format: i32) -> Option<FormatInfo> {
         GL_LUMINANCE4_ALPHA4 => lum(4, 4),
         GL_ALPHA | GL_ALPHA4 | GL_ALPHA8 | GL_ALPHA12 | GL_ALPHA16 | GL_COMPRESSED_ALPHA => rgba(Alpha, 0, 0, 0, 8),
         GL_INTENSITY | GL_INTENSITY4 | GL_INTENSITY8 | GL_INTENSITY12 | GL_INTENSITY16 | GL_COMPRESSED_INTENSITY => {
-            FormatInfo { base: Intensity, bits: [8; 4], sizes: [0, 0, 0, 0, 0, 8, 0, 0], float_depth: false, srgb: false }
+            FormatInfo {
+                base: Intensity,
+                bits: [8; 4],
+                sizes: [0, 0, 0, 0, 0, 8, 0, 0],
+                float_depth: false,
+                srgb: false,
+            }
         }
         3 | GL_RGB | GL_RGB8 | GL_RGB10 | GL_RGB12 | GL_RGB16 | GL_COMPRESSED_RGB => rgba(Rgb, 8, 8, 8, 0),
         GL_R3_G3_B2 => rgba(Rgb, 3, 3, 2, 0),

@@ -45,9 +45,8 @@ impl Kernel {
     pub(super) fn choose(sampler: &Sampler) -> Kernel {
         let inside = |w: Wrap| matches!(w, Wrap::Repeat | Wrap::ClampToEdge | Wrap::MirroredRepeat);
         // sRGB images filter their decoded texels in float: the reference path.
-        let rgba_borderless = |img: &TexImage| {
-            img.border == 0 && matches!(img.texels, Texels::Rgba8(_)) && img.depth == 1 && !img.srgb
-        };
+        let rgba_borderless =
+            |img: &TexImage| img.border == 0 && matches!(img.texels, Texels::Rgba8(_)) && img.depth == 1 && !img.srgb;
         let depth_borderless =
             |img: &TexImage| img.border == 0 && matches!(img.texels, Texels::Depth(_)) && img.depth == 1;
         let plain_2d = sampler.dim == Dim::D2

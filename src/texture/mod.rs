@@ -182,7 +182,15 @@ impl TexImage {
     ) -> Result<TexImage, OutOfMemory> {
         let rows = height.checked_mul(depth).ok_or(OutOfMemory)?;
         let buffer = crate::framebuffer::layers::depth_stencil_buffer(format, width, rows).map_err(|_| OutOfMemory)?;
-        Ok(TexImage { width, height, depth, border, base: BaseFormat::Depth, texels: Texels::Depth(buffer), srgb: false })
+        Ok(TexImage {
+            width,
+            height,
+            depth,
+            border,
+            base: BaseFormat::Depth,
+            texels: Texels::Depth(buffer),
+            srgb: false,
+        })
     }
 
     /// Index of texel (x, y, z) (border included).

@@ -473,7 +473,8 @@ impl Sampler {
                 // Each texel decoded to linear (alpha as unorm), then filtered in float as
                 // llvmpipe's SoA path filters formats that do not fit 8-bit unorm: weights
                 // the float fractions of the texel positions, not 8-bit ones.
-                let float_axis = |k: usize, a: Axis| if k < dims { float_axis(c[k], size[k], wrap(k), filter) } else { a };
+                let float_axis =
+                    |k: usize, a: Axis| if k < dims { float_axis(c[k], size[k], wrap(k), filter) } else { a };
                 let (ax, ay, az) = (float_axis(0, ax), float_axis(1, ay), float_axis(2, az));
                 let lookup = FloatLookup { at: &at, ax, ay, az, dims, filter };
                 let decode = |p: [u8; 4]| {
