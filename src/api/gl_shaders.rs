@@ -40,6 +40,11 @@ pub unsafe extern "C" fn glShaderSource(
     string: *const *const GLchar,
     length: *const GLint,
 ) {
+    // The name first, as Mesa checks it: a call on a name that is no shader raises its
+    // error without reading the strings (piglit's shadersource-errors passes garbage there).
+    if !with_context(false, |ctx| ctx.shader_source_text(shader).is_some()) {
+        return;
+    }
     if count < 0 || string.is_null() {
         return with_context((), |ctx| ctx.shader_source(shader, Err(GL_INVALID_VALUE)));
     }

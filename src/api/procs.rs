@@ -147,7 +147,8 @@ mod tests {
             | "GL_EXT_texture_lod_bias"
             | "GL_SGIS_generate_mipmap"
             | "GL_SGIS_texture_edge_clamp"
-            | "GL_SGIS_texture_lod" => vec![],
+            | "GL_SGIS_texture_lod"
+            | "GL_EXT_texture_sRGB" => vec![],
             "GL_EXT_stencil_wrap"
             | "GL_NV_fog_distance"
             | "GL_NV_blend_square"

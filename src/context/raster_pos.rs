@@ -9,17 +9,46 @@
 //! clamped as vertex colors are); glWindowPos takes the current ones. The raster distance is the fog coordinate under GL_FOG_COORD, else the eye
 //! distance. glWindowPos sets window coordinates directly and is always valid.
 //!
+//! With a GLSL vertex shader in use (GL 2.1 §2.13: "the raster position is transformed as a
+//! vertex would be"), the shader runs on the point, as Mesa 22 runs it through its draw
+//! module: the window position comes from gl_Position (its fourth value is 1/w_c there, as
+//! Mesa reports it), user clip planes test gl_ClipVertex (else gl_Position), the raster
+//! colors and texture coordinates are the shader's outputs, each one the shader does not
+//! write keeping the current value of the attribute, and the raster distance is left
+//! unchanged ([`ShaderOutputs`]).
+//!
 //! glClipControl (ARB_clip_control) applies to glRasterPos as to any vertex: GL_ZERO_TO_ONE
 //! moves the near plane to z_c = 0 and maps depth as n + (f − n)·z_ndc, GL_UPPER_LEFT
 //! negates y in the viewport transform. glWindowPos and glBitmap's moves are in window
 //! coordinates and unaffected.
 use super::get::Value;
+use super::shader_objects::Executable;
 use super::Context;
 use crate::gl::enums::*;
 use crate::gl::limits::MAX_TEXTURE_UNITS;
 use crate::gl::types::GLenum;
 use crate::vertex::Vertex;
 use glam::Vec4;
+
+/// Which of the outputs a raster position or feedback vertex reports a GLSL vertex shader
+/// writes: Mesa 22 takes the current value of the attribute for one it does not write.
+pub(super) struct ShaderOutputs {
+    pub color: bool,
+    pub secondary_color: bool,
+    pub tex_coords: [bool; MAX_TEXTURE_UNITS],
+}
+
+impl ShaderOutputs {
+    pub(super) fn of(executable: &Executable) -> ShaderOutputs {
+        let words = executable.vertex_program.as_ref().map_or(&[][..], |p| &p.lowered.outputs[..]);
+        let writes = |name: &str| words.iter().any(|w| w.name == name);
+        ShaderOutputs {
+            color: writes("gl_FrontColor"),
+            secondary_color: writes("gl_FrontSecondaryColor"),
+            tex_coords: std::array::from_fn(|unit| writes(&format!("gl_TexCoord[{unit}]"))),
+        }
+    }
+}
 
 /// The raster position and the attributes it carries (part of GL_CURRENT_BIT).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -65,19 +94,12 @@ impl Context {
             return;
         }
         self.matrices.validate();
+        if let Some(executable) = self.program_in_use.executable().cloned().filter(|e| e.vertex_program.is_some()) {
+            return self.raster_pos_through_shader(&executable, position);
+        }
         // The point goes through the per-vertex stage of draws (lighting, texgen and the
         // texture matrices, color clamping), its texture coordinates on every unit.
-        let current = &self.state.current;
-        let vertex = Vertex {
-            position,
-            color: current.color,
-            secondary_color: current.secondary_color,
-            normal: current.normal,
-            tex_coords: current.tex_coords,
-            fog_coord: current.fog_coord,
-            edge_flag: true,
-            generic: crate::vertex::generic::CURRENT,
-        };
+        let vertex = Vertex { position, ..self.current_vertex() };
         let units = self.tex_coord_units_of(0..MAX_TEXTURE_UNITS);
         // glMaterial marks belong to a glBegin/glEnd pair, never to the raster position.
         let marks = std::mem::take(&mut self.vertex_input.material_marks);
@@ -86,35 +108,11 @@ impl Context {
         self.vertex_input.material_marks = marks;
         let eye = Vec4::from_array(transformed.eye);
         let clip = Vec4::from_array(transformed.clip);
-        let transform = &self.state.transform;
-        // The near plane is z = 0 under GL_ZERO_TO_ONE (ARB_clip_control).
-        let near_z = if self.clip_zero_to_one() { 0.0 } else { -clip.w };
-        let mut inside = [clip.x, clip.y].iter().all(|&c| -clip.w <= c && c <= clip.w)
-            && (transform.depth_clamp || (near_z <= clip.z && clip.z <= clip.w));
-        for (plane, &on) in transform.clip_plane_equations.iter().zip(&transform.clip_planes) {
-            if on {
-                let p = plane.map(|c| c as f32);
-                inside &= p[0] * eye.x + p[1] * eye.y + p[2] * eye.z + p[3] * eye.w >= 0.0;
-            }
-        }
-        let raster = &mut self.state.current.raster;
-        if !inside {
-            raster.valid = false;
+        if !self.point_inside(clip, eye) {
+            self.state.current.raster.valid = false;
             return;
         }
-        let [vx, vy, vw, vh] = self.state.viewport.rect;
-        let [near, far] = self.state.viewport.depth_range.map(|d| d as f32);
-        let inv_w = 1.0 / clip.w;
-        let ndc = [clip.x * inv_w, clip.y * inv_w, clip.z * inv_w];
-        let (half_w, half_h) = (vw as f32 * 0.5, vh as f32 * 0.5);
-        // The viewport transform of draws, with glClipControl's depth mapping and y sign.
-        let (depth_scale, depth_offset) = self.depth_transform();
-        let mut z = ndc[2] * depth_scale as f32 + depth_offset as f32;
-        if transform.depth_clamp {
-            z = z.clamp(near.min(far), near.max(far));
-        }
-        let y_scale = half_h * self.viewport_y_sign();
-        let window = [ndc[0] * half_w + (vx as f32 + half_w), ndc[1] * y_scale + (vy as f32 + half_h), z, clip.w];
+        let window = self.raster_window(clip);
         let distance = if self.state.fog.coord_src == GL_FOG_COORD {
             self.state.current.fog_coord
         } else {
@@ -132,6 +130,92 @@ impl Context {
             tex_coords: std::array::from_fn(|unit| transformed.tex_coords[unit]),
             index: self.state.current.index,
         };
+    }
+
+    /// glRasterPos with a GLSL vertex shader in use (see the module docs).
+    fn raster_pos_through_shader(&mut self, executable: &Executable, position: [f32; 4]) {
+        let vertex = Vertex { position, ..self.current_vertex() };
+        let float_color = self.config.visual.color.is_float();
+        let stage = self.vertex_shader_stage(executable, float_color);
+        let rows = &self.vertex_input.generic_rows;
+        let out = stage.run(&[vertex], rows, &self.state.current.generic, |v| v[0]);
+        let clip = Vec4::from_array(out.clip);
+        if !self.point_inside(clip, Vec4::from_array(out.eye)) {
+            self.state.current.raster.valid = false;
+            return;
+        }
+        let mut window = self.raster_window(clip);
+        window[3] = 1.0 / clip.w;
+        if self.selection.mode == GL_SELECT {
+            self.selection.hit(window[2]);
+        }
+        let written = ShaderOutputs::of(executable);
+        let current = &self.state.current;
+        let raster = RasterPos {
+            valid: true,
+            window,
+            distance: current.raster.distance,
+            color: if written.color { out.color } else { current.color },
+            secondary_color: if written.secondary_color { out.secondary_color } else { current.secondary_color },
+            tex_coords: std::array::from_fn(|unit| {
+                if written.tex_coords[unit] {
+                    out.tex_coords[unit]
+                } else {
+                    current.tex_coords[unit]
+                }
+            }),
+            index: current.index,
+        };
+        self.state.current.raster = raster;
+    }
+
+    /// The current vertex attributes as a vertex (position from the caller).
+    fn current_vertex(&self) -> Vertex {
+        let current = &self.state.current;
+        Vertex {
+            position: [0.0, 0.0, 0.0, 1.0],
+            color: current.color,
+            secondary_color: current.secondary_color,
+            normal: current.normal,
+            tex_coords: current.tex_coords,
+            fog_coord: current.fog_coord,
+            edge_flag: true,
+            generic: crate::vertex::generic::CURRENT,
+        }
+    }
+
+    /// Whether a point at clip coordinates `clip` is inside the view volume and on the
+    /// kept side of every enabled user clip plane (tested with `eye`).
+    fn point_inside(&self, clip: Vec4, eye: Vec4) -> bool {
+        let transform = &self.state.transform;
+        // The near plane is z = 0 under GL_ZERO_TO_ONE (ARB_clip_control).
+        let near_z = if self.clip_zero_to_one() { 0.0 } else { -clip.w };
+        let mut inside = [clip.x, clip.y].iter().all(|&c| -clip.w <= c && c <= clip.w)
+            && (transform.depth_clamp || (near_z <= clip.z && clip.z <= clip.w));
+        for (plane, &on) in transform.clip_plane_equations.iter().zip(&transform.clip_planes) {
+            if on {
+                let p = plane.map(|c| c as f32);
+                inside &= p[0] * eye.x + p[1] * eye.y + p[2] * eye.z + p[3] * eye.w >= 0.0;
+            }
+        }
+        inside
+    }
+
+    /// The window coordinates of a point inside the view volume, and its clip w.
+    fn raster_window(&self, clip: Vec4) -> [f32; 4] {
+        let [vx, vy, vw, vh] = self.state.viewport.rect;
+        let [near, far] = self.state.viewport.depth_range.map(|d| d as f32);
+        let inv_w = 1.0 / clip.w;
+        let ndc = [clip.x * inv_w, clip.y * inv_w, clip.z * inv_w];
+        let (half_w, half_h) = (vw as f32 * 0.5, vh as f32 * 0.5);
+        // The viewport transform of draws, with glClipControl's depth mapping and y sign.
+        let (depth_scale, depth_offset) = self.depth_transform();
+        let mut z = ndc[2] * depth_scale as f32 + depth_offset as f32;
+        if self.state.transform.depth_clamp {
+            z = z.clamp(near.min(far), near.max(far));
+        }
+        let y_scale = half_h * self.viewport_y_sign();
+        [ndc[0] * half_w + (vx as f32 + half_w), ndc[1] * y_scale + (vy as f32 + half_h), z, clip.w]
     }
 
     /// glWindowPos with window coordinates (x, y, z): z in [0, 1] maps onto the depth range.

@@ -83,6 +83,7 @@ pub fn preview_gl21() -> bool {
 // |                      | glBlitFramebuffer float ↔ fixed depth: GL_INVALID_OPERATION (formats differ, as Mesa) | works | capi depth_buffer_float |
 // |                      | GL_FLOAT_32_UNSIGNED_INT_24_8_REV pixel type  | see below | |
 // | GL_ARB_point_sprite (GL 2.0) | GL_POINT_SPRITE: squares of the unrounded size whatever GL_POINT_SMOOTH says, GL_COORD_REPLACE per unit (s, t across the square, r = 0, q = 1), GL_POINT_SPRITE_COORD_ORIGIN; llvmpipe's coordinate planes | works | setup/jobs/point.rs Sprite; capi point_sprites |
+// | GL_EXT_texture_sRGB (GL 2.1) | GL_SRGB*, GL_SLUMINANCE*, the generic GL_COMPRESSED_S* (stored uncompressed); texels decoded with llvmpipe's curve before filtering, fixed function and GLSL; glGetTexImage of the stored values; colour attachments (writes not encoded) | works | texture/mod.rs srgb_to_linear, texture/sampler.rs; capi texture_srgb |
 // | GL_ARB_pixel_buffer_object | pack and unpack buffer targets (GL 2.1): glReadPixels, glGetTexImage, glGetPolygonStipple, glGetPixelMap into a buffer; glTexImage*, glTexSubImage*, glDrawPixels, glBitmap, glPolygonStipple, glPixelMap from one (also while compiling a list); range, alignment and mapping errors | works | context/pixel_buffers.rs; capi pixel_buffer_objects |
 //
 // Outside these lists but needed by every version: GL 1.0's evaluators (capi evaluators),
@@ -153,6 +154,7 @@ pub const EXTENSIONS: &[&str] = &[
     "GL_EXT_texture_env_add",
     "GL_EXT_texture_env_combine",
     "GL_EXT_texture_lod_bias",
+    "GL_EXT_texture_sRGB",
     "GL_EXT_vertex_array",
     "GL_NV_blend_square",
     "GL_NV_fog_distance",

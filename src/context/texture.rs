@@ -11,8 +11,8 @@
 //! internal format, format/type, sizes, border, format compatibility). Deliberate
 //! differences from Mesa 22: the generic compressed internal formats are stored uncompressed
 //! (GL_TEXTURE_COMPRESSED false; Mesa picks S3TC for GL_COMPRESSED_RGB), formats of more than
-//! 8 bits per color channel are stored with 8 (their sizes read back as 8), sRGB internal
-//! formats are refused (GL_INVALID_VALUE), and no compressed format is supported
+//! 8 bits per color channel are stored with 8 (their sizes read back as 8), the generic
+//! compressed sRGB formats are stored uncompressed as well, and no compressed format is supported
 //! (glCompressedTexImage* is GL_INVALID_ENUM). GL_COLOR_INDEX image data (every index type,
 //! GL_BITMAP included) becomes RGBA through GL_INDEX_SHIFT/OFFSET and the GL_PIXEL_MAP_I_TO_*
 //! tables (GL 2.1 §3.6.5, "Color Index Lookup"); glGetTexImage cannot return indices.
@@ -55,6 +55,9 @@ pub struct FormatInfo {
     /// Depth kept as floats, only clamped to [0, 1] (ARB_depth_buffer_float's
     /// GL_DEPTH_COMPONENT32F and GL_DEPTH32F_STENCIL8), instead of quantized to `bits[0]`.
     pub float_depth: bool,
+    /// Red, green and blue are sRGB-encoded (EXT_texture_sRGB, GL 2.1): sampling decodes
+    /// them (`crate::texture::srgb_to_linear`).
+    pub srgb: bool,
 }
 
 impl FormatInfo {
@@ -78,19 +81,23 @@ pub fn format_info(internal_format: i32) -> Option<FormatInfo> {
         bits: [r, g, b, a],
         sizes: [r as i32, g as i32, b as i32, a as i32, 0, 0, 0, 0],
         float_depth: false,
+        srgb: false,
     };
     let lum = |l: u32, a: u32| FormatInfo {
         base: if a > 0 { LuminanceAlpha } else { Luminance },
         bits: [l, l, l, a],
         sizes: [0, 0, 0, a as i32, l as i32, 0, 0, 0],
         float_depth: false,
+        srgb: false,
     };
     let depth = |bits: u32, stencil: i32, float_depth: bool| FormatInfo {
         base: Depth,
         bits: [bits, 0, 0, 0],
         sizes: [0, 0, 0, 0, 0, 0, bits as i32, stencil],
         float_depth,
+        srgb: false,
     };
+    let srgb = |info: FormatInfo| FormatInfo { srgb: true, ..info };
     Some(match f {
         1 | GL_LUMINANCE | GL_LUMINANCE8 | GL_LUMINANCE12 | GL_LUMINANCE16 | GL_COMPRESSED_LUMINANCE => lum(8, 0),
         GL_LUMINANCE4 => lum(8, 0),
@@ -105,7 +112,13 @@ pub fn format_info(internal_format: i32) -> Option<FormatInfo> {
         GL_LUMINANCE4_ALPHA4 => lum(4, 4),
         GL_ALPHA | GL_ALPHA4 | GL_ALPHA8 | GL_ALPHA12 | GL_ALPHA16 | GL_COMPRESSED_ALPHA => rgba(Alpha, 0, 0, 0, 8),
         GL_INTENSITY | GL_INTENSITY4 | GL_INTENSITY8 | GL_INTENSITY12 | GL_INTENSITY16 | GL_COMPRESSED_INTENSITY => {
-            FormatInfo { base: Intensity, bits: [8; 4], sizes: [0, 0, 0, 0, 0, 8, 0, 0], float_depth: false }
+            FormatInfo {
+                base: Intensity,
+                bits: [8; 4],
+                sizes: [0, 0, 0, 0, 0, 8, 0, 0],
+                float_depth: false,
+                srgb: false,
+            }
         }
         3 | GL_RGB | GL_RGB8 | GL_RGB10 | GL_RGB12 | GL_RGB16 | GL_COMPRESSED_RGB => rgba(Rgb, 8, 8, 8, 0),
         GL_R3_G3_B2 => rgba(Rgb, 3, 3, 2, 0),
@@ -123,6 +136,13 @@ pub fn format_info(internal_format: i32) -> Option<FormatInfo> {
         // ARB_depth_buffer_float (Mesa's Z32_FLOAT and Z32_FLOAT_S8X24_UINT).
         GL_DEPTH_COMPONENT32F => depth(32, 0, true),
         GL_DEPTH32F_STENCIL8 => depth(32, 8, true),
+        // EXT_texture_sRGB (core in GL 2.1): 8 bits per channel, as Mesa 22 stores them; the
+        // generic compressed ones are stored uncompressed, as the other generic compressed
+        // formats are.
+        GL_SRGB | GL_SRGB8 | GL_COMPRESSED_SRGB => srgb(rgba(Rgb, 8, 8, 8, 0)),
+        GL_SRGB_ALPHA | GL_SRGB8_ALPHA8 | GL_COMPRESSED_SRGB_ALPHA => srgb(rgba(Rgba, 8, 8, 8, 8)),
+        GL_SLUMINANCE | GL_SLUMINANCE8 | GL_COMPRESSED_SLUMINANCE => srgb(lum(8, 0)),
+        GL_SLUMINANCE_ALPHA | GL_SLUMINANCE8_ALPHA8 | GL_COMPRESSED_SLUMINANCE_ALPHA => srgb(lum(8, 8)),
         _ => return None,
     })
 }
@@ -1245,7 +1265,7 @@ impl Context {
             }
             GL_TEXTURE_DEPTH => lv.as_ref().map_or(0, |l| (l.depth + if dims >= 3 { 2 * l.border } else { 0 }) as i32),
             GL_TEXTURE_BORDER => lv.as_ref().map_or(0, |l| l.border as i32),
-            GL_TEXTURE_INTERNAL_FORMAT => lv.as_ref().map_or(1, |l| l.internal_format),
+            GL_TEXTURE_INTERNAL_FORMAT => lv.as_ref().map_or(1, |l| reported_internal_format(l.internal_format)),
             GL_TEXTURE_RED_SIZE => size(0),
             GL_TEXTURE_GREEN_SIZE => size(1),
             GL_TEXTURE_BLUE_SIZE => size(2),
@@ -1399,7 +1419,23 @@ fn new_image(
     if info.base == BaseFormat::Depth {
         TexImage::new_depth(w, h, d, border, info.depth_format())
     } else {
-        TexImage::new(w, h, d, border, info.base)
+        let mut image = TexImage::new(w, h, d, border, info.base)?;
+        image.srgb = info.srgb;
+        Ok(image)
+    }
+}
+
+/// GL_TEXTURE_INTERNAL_FORMAT of a level specified with `internal_format`. A generic
+/// compressed format stored uncompressed is "replaced by the corresponding base internal
+/// format" (GL 1.3 §3.8.1, as Mesa 22 reports it) — for the sRGB ones, which Mesa 22 stores
+/// uncompressed too when no compressed sRGB format of that base exists (luminance, luminance
+/// alpha). tessera keeps reporting the other generic compressed formats as given (GL_RGB and
+/// GL_RGBA sRGB included), where Mesa reports the S3TC format it chose.
+fn reported_internal_format(internal_format: i32) -> i32 {
+    match internal_format as GLenum {
+        GL_COMPRESSED_SLUMINANCE => GL_LUMINANCE as i32,
+        GL_COMPRESSED_SLUMINANCE_ALPHA => GL_LUMINANCE_ALPHA as i32,
+        _ => internal_format,
     }
 }
 

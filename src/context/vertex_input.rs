@@ -35,8 +35,17 @@ use crate::gl::enums::*;
 use crate::gl::types::GLenum;
 use crate::vertex::arrays::{ArrayId, ClientArrays};
 use crate::vertex::assembly::{continued_vertices, DrawPart};
-use crate::vertex::generic::GenericRows;
+use crate::vertex::generic::{GenericRows, GenericValues};
 use crate::vertex::Vertex;
+
+/// One batch of an array draw a display list captured: its mode, its vertices and, when
+/// generic arrays were enabled, each vertex's generic attributes (else empty).
+#[derive(Clone, Debug)]
+struct CapturedBatch {
+    mode: GLenum,
+    vertices: Vec<Vertex>,
+    generic: Vec<GenericValues>,
+}
 pub use generic::AttribValue;
 
 /// GL_MAX_ELEMENTS_VERTICES / GL_MAX_ELEMENTS_INDICES: a recommendation only (any count
@@ -80,7 +89,7 @@ pub struct VertexInput {
     /// material applies (empty when glMaterial was not called since glBegin).
     pub material_marks: Vec<(usize, [Material; 2])>,
     /// While an array draw is compiled into a display list: the batches it delivers.
-    capture: Option<Vec<(GLenum, Vec<Vertex>)>>,
+    capture: Option<Vec<CapturedBatch>>,
     /// Whether a part of the open connected primitive has been delivered.
     parts_delivered: bool,
     /// The line stipple counter where the last delivered part of a connected primitive ended.
@@ -146,11 +155,23 @@ impl Context {
     /// [`DrawPart::WHOLE`]; parts are never captured).
     fn deliver_part(&mut self, mode: GLenum, vertices: &[Vertex], part: DrawPart) {
         if let Some(capture) = &mut self.vertex_input.capture {
-            return capture.push((mode, vertices.to_vec()));
+            // Each vertex's generic attributes by value: its row, when the draw made rows.
+            let rows = &self.vertex_input.generic_rows;
+            let generic = if rows.rows.is_empty() {
+                Vec::new()
+            } else {
+                vertices.iter().map(|v| *rows.of(v, &self.state.current.generic)).collect()
+            };
+            return capture.push(CapturedBatch { mode, vertices: vertices.to_vec(), generic });
         }
         #[cfg(test)]
         self.vertex_input.delivered.push((mode, vertices.to_vec()));
         self.draw_part(mode, vertices, part);
+    }
+
+    /// Whether a display list is capturing an array draw now.
+    fn capturing(&self) -> bool {
+        self.vertex_input.capture.is_some()
     }
 
     /// Whether a connected primitive may be delivered in parts now (see the module docs).

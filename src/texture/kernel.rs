@@ -44,8 +44,9 @@ impl Kernel {
     /// The kernel for `sampler`.
     pub(super) fn choose(sampler: &Sampler) -> Kernel {
         let inside = |w: Wrap| matches!(w, Wrap::Repeat | Wrap::ClampToEdge | Wrap::MirroredRepeat);
+        // sRGB images filter their decoded texels in float: the reference path.
         let rgba_borderless =
-            |img: &TexImage| img.border == 0 && matches!(img.texels, Texels::Rgba8(_)) && img.depth == 1;
+            |img: &TexImage| img.border == 0 && matches!(img.texels, Texels::Rgba8(_)) && img.depth == 1 && !img.srgb;
         let depth_borderless =
             |img: &TexImage| img.border == 0 && matches!(img.texels, Texels::Depth(_)) && img.depth == 1;
         let plain_2d = sampler.dim == Dim::D2
@@ -602,6 +603,7 @@ mod tests {
                 border: 0,
                 base: BaseFormat::Rgba,
                 texels: Texels::Rgba8(texels),
+                srgb: false,
             }));
             if w == 1 && h == 1 {
                 return levels;

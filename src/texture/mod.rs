@@ -91,6 +91,11 @@ pub struct TexImage {
     pub border: usize,
     pub base: BaseFormat,
     pub texels: Texels,
+    /// Whether the color channels are sRGB-encoded (EXT_texture_sRGB formats): sampling
+    /// decodes red, green and blue to linear per texel, before filtering
+    /// ([`srgb_to_linear`]); alpha, storage, rendering into the image and glGetTexImage
+    /// keep the stored values.
+    pub srgb: bool,
 }
 
 /// Why an image could not be made.
@@ -163,7 +168,7 @@ impl TexImage {
         let mut v = Vec::new();
         v.try_reserve_exact(count).map_err(|_| OutOfMemory)?;
         v.resize(count, base_texel(base));
-        Ok(TexImage { width, height, depth, border, base, texels: Texels::Rgba8(v) })
+        Ok(TexImage { width, height, depth, border, base, texels: Texels::Rgba8(v), srgb: false })
     }
 
     /// A `width` × `height` × `depth` depth image (border included) of `format`, depth and
@@ -177,7 +182,15 @@ impl TexImage {
     ) -> Result<TexImage, OutOfMemory> {
         let rows = height.checked_mul(depth).ok_or(OutOfMemory)?;
         let buffer = crate::framebuffer::layers::depth_stencil_buffer(format, width, rows).map_err(|_| OutOfMemory)?;
-        Ok(TexImage { width, height, depth, border, base: BaseFormat::Depth, texels: Texels::Depth(buffer) })
+        Ok(TexImage {
+            width,
+            height,
+            depth,
+            border,
+            base: BaseFormat::Depth,
+            texels: Texels::Depth(buffer),
+            srgb: false,
+        })
     }
 
     /// Index of texel (x, y, z) (border included).
@@ -244,6 +257,37 @@ impl TexImage {
     }
 }
 
+/// An 8-bit sRGB-encoded channel value as llvmpipe's texture fetch decodes it to linear
+/// (Mesa 22's `lp_build_srgb_to_linear`): values up to 15 on a line, `v / (12.6 · 255)`, the
+/// others through the cubic `0.3012 x³ + 0.6935 x² + 0.0030 x + 0.0023` (x = v / 255, the
+/// 1/255 folded into the coefficients), evaluated as llvmpipe evaluates it: even and odd
+/// terms in x², each step one fused multiply-add (LLVM fuses `fmuladd` on machines with
+/// FMA, as Mesa's reference runs). It differs from the exact sRGB curve by up to 0.4 of a
+/// step, so the pictures match Mesa's only with llvmpipe's curve. The 256 values are
+/// computed once (`f32::mul_add` is exact on every machine: the same bits everywhere).
+#[inline]
+pub fn srgb_to_linear(v: u8) -> f32 {
+    static TABLE: std::sync::OnceLock<[f32; 256]> = std::sync::OnceLock::new();
+    TABLE.get_or_init(|| std::array::from_fn(|i| srgb_curve(i as u8)))[v as usize]
+}
+
+/// One value of [`srgb_to_linear`]'s table.
+fn srgb_curve(v: u8) -> f32 {
+    let x = v as f32;
+    if v <= 15 {
+        // llvmpipe's constants are float expressions rounded once more to float.
+        return x * (1.0f32 / (12.6f32 * 255.0f32));
+    }
+    let c0 = 0.0023f32;
+    let c1 = 0.0030f32 / 255.0f32;
+    let c2 = 0.6935f32 / (255.0f32 * 255.0f32);
+    let c3 = 0.3012f32 / (255.0f32 * 255.0f32 * 255.0f32);
+    let x2 = x * x;
+    let even = c2.mul_add(x2, c0);
+    let odd = c3.mul_add(x2, c1);
+    odd.mul_add(x, even)
+}
+
 /// The stored value of a texel no data has been given for: zero in the format's channels.
 fn base_texel(base: BaseFormat) -> [u8; 4] {
     match base {
@@ -275,6 +319,7 @@ pub fn downsample(src: &TexImage, dims: usize) -> Result<TexImage, OutOfMemory> 
         Some(format) => TexImage::new_depth(nw, nh, nd, 0, format)?,
         None => TexImage::new(nw, nh, nd, 0, src.base)?,
     };
+    out.srgb = src.srgb;
     let (fx, fy, fz) = (if w > 1 { 2 } else { 1 }, if h > 1 { 2 } else { 1 }, if d > 1 { 2 } else { 1 });
     let by = if dims >= 2 { b } else { 0 };
     let bz = if dims >= 3 { b } else { 0 };
@@ -477,6 +522,21 @@ mod tests {
         assert_eq!(quantize_to_u8(0.75, 1), 255);
         assert_eq!(quantize_to_u8(0.2, 8), 51);
         assert_eq!(quantize_to_u8(-1.0, 8), 0);
+    }
+
+    #[test]
+    fn srgb_decoding_is_llvmpipes_curve() {
+        // Bits read back from Mesa 22.3.6's llvmpipe (a 256×1 GL_SRGB8_ALPHA8 texture
+        // drawn with GL_REPLACE into an OSMesa GL_FLOAT buffer): the line below 16, the
+        // cubic above, and not the exact sRGB curve (0.000303527 for 1).
+        let bits = |v: u8| srgb_to_linear(v).to_bits();
+        assert_eq!(srgb_to_linear(0), 0.0);
+        assert_eq!(srgb_to_linear(1), f32::from_bits(0x39a3_2d56));
+        assert_eq!([bits(16), bits(100), bits(200), bits(254)], [0x3bad_702a, 0x3e03_5f2a, 0x3f13_9a9a, 0x3f7d_b425]);
+        assert_eq!(srgb_to_linear(255), 1.0);
+        // All 256: the sum of their bit patterns (mod 2³²) is that of Mesa's values.
+        let sum = (0..=255u8).fold(0u32, |s, v| s.wrapping_add(bits(v)));
+        assert_eq!(sum, 3_359_847_906);
     }
 
     #[test]

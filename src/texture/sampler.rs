@@ -10,7 +10,7 @@
 //! texel position is taken to 1/256 of a texel and the lerps are integer; depth images (and
 //! depth comparison) filter in float, decoding each texel from the depth-buffer encoding the
 //! image is stored in (`super::depth_texel`).
-use super::{depth_texel, BaseFormat, DepthStencilPixels, TexImage, Texels};
+use super::{depth_texel, srgb_to_linear, BaseFormat, DepthStencilPixels, TexImage, Texels};
 use crate::framebuffer::format::DepthEncoding::Unorm;
 use crate::gl::CompareFunc;
 use std::sync::Arc;
@@ -245,6 +245,36 @@ pub(super) fn axis(s: f32, size: i32, wrap: Wrap, filter: Filter) -> Axis {
     }
 }
 
+/// As [`axis`], with the weight the float fraction of the texel position (llvmpipe's SoA
+/// filtering: `u = s·size − ½`, `i₀ = ⌊u⌋`, weight `u − ⌊u⌋`), for linear filtering.
+pub(super) fn float_axis(s: f32, size: i32, wrap: Wrap, filter: Filter) -> Axis {
+    if filter == Filter::Nearest {
+        return axis(s, size, wrap, filter);
+    }
+    let s = match wrap {
+        Wrap::Clamp => s.clamp(0.0, 1.0),
+        Wrap::MirroredRepeat => mirror(s),
+        _ => s,
+    };
+    let u = if s.is_finite() { s * size as f32 - 0.5 } else { 0.0 };
+    let whole = floor(u);
+    let i0 = whole.clamp(-1.0e9, 1.0e9) as i32;
+    let (i0, i1) = match wrap {
+        Wrap::Repeat => (repeat(i0, size), repeat(i0 + 1, size)),
+        Wrap::ClampToEdge | Wrap::MirroredRepeat => (i0.clamp(0, size - 1), (i0 + 1).clamp(0, size - 1)),
+        Wrap::Clamp | Wrap::ClampToBorder => (i0.clamp(-1, size), (i0 + 1).clamp(-1, size)),
+    };
+    Axis { i0, i1, w: 0, wf: u - whole }
+}
+
+/// `a + w·(b − a)` per channel with one fused multiply-add, as llvmpipe's float lerp
+/// (`lp_build_mad`, fused on machines with FMA as Mesa's reference runs; exact here on every
+/// machine).
+#[inline]
+fn lerp_fused(a: [f32; 4], b: [f32; 4], w: f32) -> [f32; 4] {
+    std::array::from_fn(|k| w.mul_add(b[k] - a[k], a[k]))
+}
+
 /// `i` modulo `size` (> 0), in [0, size): GL_REPEAT's index. Most indices are in range
 /// already, and most sizes are powers of two: no division for either.
 #[inline(always)]
@@ -325,6 +355,8 @@ impl Sampler {
                         let w = (frac * 256.0) as i32;
                         std::array::from_fn(|k| lerp8(a[k], b[k], w) as f32 * (1.0 / 255.0))
                     }
+                    // sRGB levels blend as llvmpipe's float lerp does (fused).
+                    (Err(a), Err(b)) if levels[d1].srgb => lerp_fused(a, b, frac),
                     (Err(a), Err(b)) => std::array::from_fn(|k| a[k] + frac * (b[k] - a[k])),
                     // Every level of a complete texture has the same format.
                     (a, _) => a.map_or_else(|f| f, |v| v.map(|x| x as f32 / 255.0)),
@@ -437,6 +469,19 @@ impl Sampler {
             Some(img.index((x + b) as usize, (y + by) as usize, (z + bz) as usize))
         };
         match (&img.texels, self.compare) {
+            (Texels::Rgba8(t), _) if img.srgb => {
+                // Each texel decoded to linear (alpha as unorm), then filtered in float as
+                // llvmpipe's SoA path filters formats that do not fit 8-bit unorm: weights
+                // the float fractions of the texel positions, not 8-bit ones.
+                let float_axis =
+                    |k: usize, a: Axis| if k < dims { float_axis(c[k], size[k], wrap(k), filter) } else { a };
+                let (ax, ay, az) = (float_axis(0, ax), float_axis(1, ay), float_axis(2, az));
+                let lookup = FloatLookup { at: &at, ax, ay, az, dims, filter };
+                let decode = |p: [u8; 4]| {
+                    [srgb_to_linear(p[0]), srgb_to_linear(p[1]), srgb_to_linear(p[2]), p[3] as f32 * (1.0 / 255.0)]
+                };
+                Err(lookup.filter(self.border, |i| decode(t[i])))
+            }
             (Texels::Rgba8(t), _) => {
                 let border8 = self.border.map(|c| (c.clamp(0.0, 1.0) * 255.0 + 0.5) as i32);
                 // Repeat, edge clamping and mirroring keep every index inside a borderless
@@ -543,6 +588,39 @@ impl<A: Fn(i32, i32, i32) -> Option<usize>> DepthLookup<'_, A> {
     }
 }
 
+/// One filtered lookup of RGBA float texels (decoded sRGB images): where its texels are and
+/// how they combine, as [`DepthLookup`] combines depths.
+struct FloatLookup<'a, A: Fn(i32, i32, i32) -> Option<usize>> {
+    /// The index of a texel, `None` for the border.
+    at: &'a A,
+    ax: Axis,
+    ay: Axis,
+    az: Axis,
+    dims: usize,
+    filter: Filter,
+}
+
+impl<A: Fn(i32, i32, i32) -> Option<usize>> FloatLookup<'_, A> {
+    /// The filtered color, texel `i` being `texel(i)`, the border `border`.
+    #[inline]
+    fn filter(&self, border: [f32; 4], texel: impl Fn(usize) -> [f32; 4]) -> [f32; 4] {
+        let (ax, ay, az) = (self.ax, self.ay, self.az);
+        let fetch = |x, y, z| (self.at)(x, y, z).map_or(border, &texel);
+        let lerp = |a: [f32; 4], b: [f32; 4], w: f32| -> [f32; 4] { lerp_fused(a, b, w) };
+        let row = |y, z| lerp(fetch(ax.i0, y, z), fetch(ax.i1, y, z), ax.wf);
+        let plane = |z| lerp(row(ay.i0, z), row(ay.i1, z), ay.wf);
+        if self.filter == Filter::Nearest {
+            fetch(ax.i0, ay.i0, az.i0)
+        } else if self.dims == 1 {
+            row(0, 0)
+        } else if self.dims == 2 {
+            plane(0)
+        } else {
+            lerp(plane(az.i0), plane(az.i1), az.wf)
+        }
+    }
+}
+
 /// The reference value of a depth comparison: r (the third coordinate) for 1D and 2D
 /// textures, clamped to [0, 1] as fixed-point depth formats require.
 fn c_ref(c: [f32; 3], _dim: Dim) -> f32 {
@@ -576,6 +654,7 @@ mod tests {
             border: 0,
             base: BaseFormat::Rgba,
             texels: Texels::Rgba8(texels),
+            srgb: false,
         })
     }
 

@@ -4,6 +4,7 @@
 //! (`context::selection`). Nothing is rasterized. Transformation, clipping, facing and the
 //! viewport transform are `crate::vertex`'s, on the same snapshot a rendered draw takes.
 use super::super::Context;
+use crate::context::raster_pos::ShaderOutputs;
 use crate::context::selection::FeedbackVertex;
 use crate::gl::enums::*;
 use crate::gl::types::GLenum;
@@ -25,7 +26,28 @@ impl Context {
             .map(|(_, height, config)| (config.depth_stencil.depth_bits(), height))
             .unwrap_or((24, 1));
         self.matrices.validate();
-        let clip_vertices = self.transform_units(vertices, true, &self.tex_coord_units());
+        let executable = self.program_in_use.executable().cloned().filter(|e| e.vertex_program.is_some());
+        let clip_vertices = match &executable {
+            // A GLSL vertex shader's outputs, the current color and texture coordinates for
+            // those it does not write (Mesa 22's feedback stage).
+            Some(executable) => {
+                let stage = self.vertex_shader_stage(executable, self.draw_config().color.is_float());
+                let rows = &self.vertex_input.generic_rows;
+                let mut out = stage.run(vertices, rows, &self.state.current.generic, <[ClipVertex]>::to_vec);
+                let written = ShaderOutputs::of(executable);
+                let current = &self.state.current;
+                for v in &mut out {
+                    if !written.color {
+                        v.color = current.color;
+                    }
+                    if !written.tex_coords[0] {
+                        v.tex_coords[0] = current.tex_coords[0];
+                    }
+                }
+                out
+            }
+            None => self.transform_units(vertices, true, &self.tex_coord_units()),
+        };
         let g = self.geometry(depth_bits, height);
         let planes = &g.line_planes;
         let outcodes: Vec<u32> = clip_vertices.iter().map(|v| planes.outcode(v)).collect();

@@ -5,12 +5,13 @@
 //! any) held back; the recorded command raises that error, or delivers the captured vertices,
 //! when the list runs. Only what the enabled arrays supplied is kept from the captured
 //! vertices: the other attributes are the current values at execution, as for the same draw
-//! executed then. glArrayElement keeps the fetched values and replays the attribute commands
+//! executed then. Enabled generic attribute arrays are captured too (each vertex's values),
+//! and replayed as rows of generic attributes (`crate::vertex::generic`). glArrayElement keeps the fetched values and replays the attribute commands
 //! and glVertex.
 use super::draws::FetchedElement;
-use super::Context;
+use super::{CapturedBatch, Context};
 use crate::gl::enums::*;
-use crate::gl::limits::MAX_TEXTURE_UNITS;
+use crate::gl::limits::{MAX_TEXTURE_UNITS, MAX_VERTEX_ATTRIBS};
 use crate::gl::types::GLenum;
 use crate::vertex::arrays::ArrayId;
 use crate::vertex::Vertex;
@@ -24,6 +25,8 @@ struct ArraySupplied {
     fog_coord: bool,
     edge_flag: bool,
     tex_coords: [bool; MAX_TEXTURE_UNITS],
+    /// Generic attributes 1 and up (0 is the position).
+    generic: [bool; MAX_VERTEX_ATTRIBS],
 }
 
 impl ArraySupplied {
@@ -57,7 +60,7 @@ impl ArraySupplied {
 struct CompiledDraw {
     error: GLenum,
     supplied: ArraySupplied,
-    batches: Vec<(GLenum, Vec<Vertex>)>,
+    batches: Vec<CapturedBatch>,
 }
 
 impl Context {
@@ -75,6 +78,9 @@ impl Context {
         self.inside_begin_end = inside;
         let error = std::mem::replace(&mut self.error, earlier_error);
         let mut supplied = ArraySupplied::default();
+        for (attribute, array) in self.vertex_input.arrays.generic.iter().enumerate().skip(1) {
+            supplied.generic[attribute] = array.enabled;
+        }
         for (id, array) in self.vertex_input.arrays.all() {
             if !array.enabled {
                 continue;
@@ -100,19 +106,39 @@ impl Context {
         if compiled.error != GL_NO_ERROR {
             return self.error(compiled.error);
         }
-        for (mode, captured) in &compiled.batches {
+        for captured in &compiled.batches {
             let mut batch = std::mem::take(&mut self.vertex_input.batch);
             batch.clear();
-            if batch.try_reserve(captured.len()).is_err() {
+            if batch.try_reserve(captured.vertices.len()).is_err() {
                 return self.error(GL_OUT_OF_MEMORY);
             }
             let base = self.state.current.vertex_at([0.0, 0.0, 0.0, 1.0]);
-            batch.extend(captured.iter().map(|c| {
+            batch.extend(captured.vertices.iter().map(|c| {
                 let mut vertex = base;
                 compiled.supplied.merge(&mut vertex, c);
                 vertex
             }));
-            self.deliver_in_parts(*mode, &batch);
+            // The captured generic attributes as rows: the arrays' values over the current
+            // ones at execution.
+            let rows = &mut self.vertex_input.generic_rows;
+            rows.clear();
+            if !captured.generic.is_empty() {
+                if rows.rows.try_reserve(captured.generic.len()).is_err() {
+                    self.vertex_input.batch = batch;
+                    return self.error(GL_OUT_OF_MEMORY);
+                }
+                for (vertex, values) in batch.iter_mut().zip(&captured.generic) {
+                    let mut row = self.state.current.generic;
+                    for (attribute, &on) in compiled.supplied.generic.iter().enumerate() {
+                        if on {
+                            row[attribute] = values[attribute];
+                        }
+                    }
+                    vertex.generic = rows.push(row);
+                }
+            }
+            self.deliver_in_parts(captured.mode, &batch);
+            self.vertex_input.generic_rows.clear();
             batch.clear();
             self.vertex_input.batch = batch;
         }

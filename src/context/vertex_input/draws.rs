@@ -238,17 +238,15 @@ fn assemble_generic(
 }
 
 impl Context {
-    /// Whether an array draw makes generic attribute rows: a GLSL vertex shader in use reads
-    /// generic attributes, some generic array past 0 is enabled, and the draw is not
-    /// captured by a display list (whose vertices cannot keep rows: the values are the
-    /// current ones when the list runs).
+    /// Whether an array draw makes generic attribute rows: some generic array past 0 is
+    /// enabled, and a GLSL vertex shader in use reads generic attributes or a display list
+    /// captures the draw (GL 2.1 §5.4: the arrays are dereferenced when it is compiled,
+    /// whatever program runs the list).
     fn array_draw_needs_generic_rows(&self) -> bool {
         let reads_generic = self.program_in_use.executable().is_some_and(|e| {
             e.vertex_program.is_some() && e.interface.attributes.iter().any(|a| a.location.is_some_and(|l| l > 0))
         });
-        reads_generic
-            && self.vertex_input.capture.is_none()
-            && self.vertex_input.arrays.generic[1..].iter().any(|a| a.enabled)
+        (reads_generic || self.capturing()) && self.vertex_input.arrays.generic[1..].iter().any(|a| a.enabled)
     }
 
     /// Whether the draw would source data from a mapped buffer: an enabled array's, or the
