@@ -40,21 +40,25 @@ impl Attribute {
         (self.kind == AttributeKind::TexCoord).then_some((self.unit as usize, self.component as usize))
     }
 
-    /// This attribute among a vertex's secondary color, fog coordinate and texture coordinates.
+    /// This attribute among a vertex's secondary color, fog coordinate and texture coordinates
+    /// (a slot the record lacks, beyond a fixed-function vertex's units, is zero: see
+    /// [`crate::vertex::clip::ClipVertex`]).
+    #[inline(always)]
     pub fn pick(self, secondary_color: &[f32; 4], fog_coord: f32, tex_coords: &[[f32; 4]]) -> f32 {
         match self.kind {
             AttributeKind::SecondaryColor => secondary_color[self.component as usize],
             AttributeKind::FogCoord => fog_coord,
-            AttributeKind::TexCoord => tex_coords[self.unit as usize][self.component as usize],
+            AttributeKind::TexCoord => tex_coords.get(self.unit as usize).map_or(0.0, |t| t[self.component as usize & 3]),
         }
     }
 
-    pub fn of(self, v: &WindowVertex) -> f32 {
+    #[inline(always)]
+    pub fn of<const N: usize>(self, v: &WindowVertex<N>) -> f32 {
         self.pick(&v.secondary_color, v.fog_coord, &v.tex_coords)
     }
 
     /// The attribute at a line or point vertex.
-    pub fn of_line(self, v: &LineVertex) -> f32 {
+    pub fn of_line<const N: usize>(self, v: &LineVertex<N>) -> f32 {
         self.pick(&v.secondary_color, v.fog_coord, &v.tex_coords)
     }
 }

@@ -23,7 +23,7 @@ pub type LineShading = Shading<LinePlane>;
 
 /// One endpoint of a line in window space (y down, as the line setup wants it).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct LineVertex {
+pub struct LineVertex<const N: usize = { crate::glsl::varyings::VARYING_SLOTS }> {
     pub x: f32,
     pub y_down: f32,
     pub z: f32,
@@ -31,7 +31,7 @@ pub struct LineVertex {
     pub color: [f32; 4],
     /// Read for the varyings a draw needs.
     pub secondary_color: [f32; 4],
-    pub tex_coords: [[f32; 4]; crate::glsl::varyings::VARYING_SLOTS],
+    pub tex_coords: [[f32; 4]; N],
     pub fog_coord: f32,
 }
 
@@ -51,9 +51,9 @@ impl LineJob {
     /// Sets up the line `a`–`b` of GL width `width` in a framebuffer `height` rows high;
     /// `flat` is the flat-shading color if flat shaded; `varyings` the values of the draw's
     /// varyings at `a` and `b`. `None` if it draws nothing.
-    pub fn new(
-        a: &LineVertex,
-        b: &LineVertex,
+    pub fn new<const N: usize>(
+        a: &LineVertex<N>,
+        b: &LineVertex<N>,
         width: f32,
         height: i32,
         flat: Option<[f32; 4]>,
@@ -67,9 +67,9 @@ impl LineJob {
     /// As [`LineJob::new`] for a line covering the samples of `quad` (its rectangle) on a
     /// multisampled target with GL_MULTISAMPLE on, its attributes varying along the line
     /// (llvmpipe's planes for such rectangles).
-    pub fn covering_samples(
-        a: &LineVertex,
-        b: &LineVertex,
+    pub fn covering_samples<const N: usize>(
+        a: &LineVertex<N>,
+        b: &LineVertex<N>,
         height: i32,
         flat: Option<[f32; 4]>,
         varyings: &[[f32; 2]],
@@ -82,11 +82,11 @@ impl LineJob {
         Some(job)
     }
 
-    fn with_planes(
+    fn with_planes<const N: usize>(
         setup: LineSetup,
         g: LineGradient,
-        a: &LineVertex,
-        b: &LineVertex,
+        a: &LineVertex<N>,
+        b: &LineVertex<N>,
         flat: Option<[f32; 4]>,
         varyings: &[[f32; 2]],
     ) -> LineJob {
