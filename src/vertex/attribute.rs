@@ -48,7 +48,9 @@ impl Attribute {
         match self.kind {
             AttributeKind::SecondaryColor => secondary_color[self.component as usize],
             AttributeKind::FogCoord => fog_coord,
-            AttributeKind::TexCoord => tex_coords.get(self.unit as usize).map_or(0.0, |t| t[self.component as usize & 3]),
+            AttributeKind::TexCoord => {
+                tex_coords.get(self.unit as usize).map_or(0.0, |t| t[self.component as usize & 3])
+            }
         }
     }
 

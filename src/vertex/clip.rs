@@ -205,7 +205,12 @@ impl ClipPlanes {
 
     /// Clips the convex polygon `poly` against every plane in `mask`, in place.
     /// `scratch` is reused storage. The result may be empty.
-    pub fn clip_polygon<const N: usize>(&self, poly: &mut Vec<ClipVertex<N>>, scratch: &mut Vec<ClipVertex<N>>, mask: u32) {
+    pub fn clip_polygon<const N: usize>(
+        &self,
+        poly: &mut Vec<ClipVertex<N>>,
+        scratch: &mut Vec<ClipVertex<N>>,
+        mask: u32,
+    ) {
         for plane in 0..self.count() {
             if mask & (1 << plane) == 0 || poly.is_empty() {
                 continue;
@@ -351,6 +356,64 @@ mod tests {
         let mask = poly.iter().fold(0, |m, v| m | p.outcode(v));
         p.clip_polygon(&mut poly, &mut Vec::new(), mask);
         assert!(poly.iter().all(|v| v.clip[3] > 0.0));
+    }
+
+    /// Every varying slot, the last ones too, is interpolated at the cut (a GLSL vertex's
+    /// record), and a fixed-function record clips to the same values in the slots it has,
+    /// its wider copy's others staying zero.
+    #[test]
+    fn clipping_interpolates_every_varying_slot() {
+        let p = planes();
+        let mut tri = [vertex(0.0, 0.0, -3.0, 1.0), vertex(0.5, 0.0, 0.0, 1.0), vertex(0.0, 0.5, 0.0, 1.0)];
+        for (k, v) in tri.iter_mut().enumerate() {
+            for (slot, t) in v.tex_coords.iter_mut().enumerate() {
+                *t = [0, 1, 2, 3].map(|c| (slot * 10 + c) as f32 + 100.0 * k as f32);
+            }
+        }
+        let mask = tri.iter().fold(0, |m, v| m | p.outcode(v));
+        let mut poly = tri.to_vec();
+        p.clip_polygon(&mut poly, &mut Vec::new(), mask);
+        assert_eq!(poly.len(), 4);
+        // The cuts: from vertex 0 (z = −3) towards 1 and towards 2 (z = 0), at t = 2/3.
+        let cuts: Vec<&ClipVertex> = poly.iter().filter(|v| !tri.contains(v)).collect();
+        assert_eq!(cuts.len(), 2);
+        for cut in &cuts {
+            let t = 2.0 / 3.0;
+            let to = if cut.clip[0] > 0.0 { 1 } else { 2 };
+            for slot in [0, 3, 4, 9, VARYING_SLOTS - 1] {
+                for c in 0..4 {
+                    let (a, b) = (tri[0].tex_coords[slot][c], tri[to].tex_coords[slot][c]);
+                    let want = a + t * (b - a);
+                    assert!((cut.tex_coords[slot][c] - want).abs() < 1e-3, "slot {slot}: {cut:?}");
+                }
+            }
+        }
+        let mut fixed: Vec<FixedClipVertex> = tri
+            .iter()
+            .map(|v| {
+                let mut tex_coords = [[0.0; 4]; FIXED_SLOTS];
+                tex_coords.copy_from_slice(&v.tex_coords[..FIXED_SLOTS]);
+                FixedClipVertex {
+                    clip: v.clip,
+                    eye: v.eye,
+                    color: v.color,
+                    secondary_color: v.secondary_color,
+                    back_colors: v.back_colors,
+                    tex_coords,
+                    fog_coord: v.fog_coord,
+                    point_size: v.point_size,
+                    edge_flag: v.edge_flag,
+                }
+            })
+            .collect();
+        p.clip_polygon(&mut fixed, &mut Vec::new(), mask);
+        assert_eq!(fixed.len(), poly.len());
+        for (f, full) in fixed.iter().zip(&poly) {
+            let wide = f.widen();
+            assert_eq!(wide.tex_coords[..FIXED_SLOTS], full.tex_coords[..FIXED_SLOTS]);
+            assert!(wide.tex_coords[FIXED_SLOTS..].iter().all(|t| *t == [0.0; 4]));
+            assert_eq!((wide.clip, wide.color, wide.edge_flag), (full.clip, full.color, full.edge_flag));
+        }
     }
 
     #[test]

@@ -168,13 +168,9 @@ pub fn emit_line_job<const N: usize>(
     b: &LineVertex<N>,
     flat: Option<[f32; 4]>,
 ) {
-    // On the stack: setting up a line allocates nothing.
-    let mut values = [[0.0f32; 2]; MAX_VARYINGS];
-    let n = g.varyings.len().min(MAX_VARYINGS);
-    for (value, v) in values.iter_mut().zip(&g.varyings) {
-        *value = [v.of_line(a), v.of_line(b)];
-    }
-    let varyings = &values[..n];
+    // Each varying's values at the ends, read as the job's planes are made: setting up a
+    // line allocates, fills and zeroes no table of them.
+    let varyings = g.varyings.iter().take(MAX_VARYINGS).map(|v| [v.of_line(a), v.of_line(b)]);
     if g.smooth_lines {
         if let Some(job) = SmoothLine::new(a, b, g.line_width, g.height, flat, varyings) {
             let job = SmoothJob::Line(Box::new(job));

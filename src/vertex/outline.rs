@@ -251,7 +251,12 @@ type Corner<const N: usize> = (LineVertex<N>, WindowVertex<N>, [[f32; 4]; 2], f3
 /// outlines: plane by plane, each new vertex interpolated from the end of the cut edge
 /// nearer to the plane, edges along a view-volume plane not drawn. `false` when a
 /// distance is NaN (the polygon is dropped).
-pub fn clip_outline<const N: usize>(planes: &ClipPlanes, poly: &mut Vec<ClipVertex<N>>, scratch: &mut Vec<ClipVertex<N>>, mask: u32) -> bool {
+pub fn clip_outline<const N: usize>(
+    planes: &ClipPlanes,
+    poly: &mut Vec<ClipVertex<N>>,
+    scratch: &mut Vec<ClipVertex<N>>,
+    mask: u32,
+) -> bool {
     let user_planes = planes.count() - planes.user.len();
     for plane in 0..planes.count() {
         if mask & (1 << plane) == 0 || poly.len() < 3 {

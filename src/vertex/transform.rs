@@ -21,7 +21,6 @@ use super::lighting::{Lighting, LightingState, Material, NormalScaling};
 use super::program::{CompiledVertex, VertexInput, VertexKey, VertexOutput, VertexProgram};
 use super::texgen::{Gen, TexCoordUnit, TexGen};
 use super::Vertex;
-use crate::gl::limits::MAX_TEXTURE_UNITS;
 use crate::shader::exec::{Io, NoTextures, Word, ALL_LANES, LANES};
 use crate::shader::fast::{BoundRun, Compiled, Registers};
 use crate::shader::lower::R;
@@ -371,9 +370,8 @@ impl Run {
             for lane in 0..n {
                 let (v, c) = (&batch[lane], &mut records[lane]);
                 c.back_colors = if self.lit_one_sided { [c.color, c.secondary_color] } else { [[0.0; 4]; 2] };
-                // The fixed-function units' slots; the others stay zero (the batch's records
-                // start zeroed and no fixed-function program writes them).
-                c.tex_coords[..MAX_TEXTURE_UNITS].copy_from_slice(&v.tex_coords);
+                // The units' slots (a fixed-function record has no others).
+                c.tex_coords = v.tex_coords;
                 c.fog_coord = f32::from_bits(fog[lane]);
                 c.edge_flag = v.edge_flag;
             }
@@ -540,7 +538,11 @@ fn gather4(batch: &[Vertex], words: &mut [Word], registers: [Option<R>; 4], get:
 /// Transposes the four words `words` (a group of four standard outputs) into the field
 /// `field` of the records `out` (one per lane).
 #[inline(always)]
-fn transpose_out(words: [&Word; 4], out: &mut [FixedClipVertex], field: impl Fn(&mut FixedClipVertex) -> &mut [f32; 4]) {
+fn transpose_out(
+    words: [&Word; 4],
+    out: &mut [FixedClipVertex],
+    field: impl Fn(&mut FixedClipVertex) -> &mut [f32; 4],
+) {
     for quad in 0..LANES / 4 {
         let column = |j: usize| {
             let w = &words[j];

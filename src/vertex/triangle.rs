@@ -71,7 +71,13 @@ pub fn emit_shaded_triangle_with<const N: usize>(
 }
 
 /// Culls, offsets, sets up and bins one window-space triangle.
-pub fn emit_triangle<const N: usize>(scene: &mut Scene, state: u32, g: &Geometry, w: &[WindowVertex<N>; 3], flat: Option<[f32; 4]>) {
+pub fn emit_triangle<const N: usize>(
+    scene: &mut Scene,
+    state: u32,
+    g: &Geometry,
+    w: &[WindowVertex<N>; 3],
+    flat: Option<[f32; 4]>,
+) {
     let area2 = area2(w);
     if !area2.is_finite() {
         return;

@@ -57,7 +57,7 @@ impl LineJob {
         width: f32,
         height: i32,
         flat: Option<[f32; 4]>,
-        varyings: &[[f32; 2]],
+        varyings: impl IntoIterator<Item = [f32; 2]>,
     ) -> Option<LineJob> {
         let setup = LineSetup::new([a.x, a.y_down], [b.x, b.y_down], width, height)?;
         let g = setup.gradient;
@@ -72,7 +72,7 @@ impl LineJob {
         b: &LineVertex<N>,
         height: i32,
         flat: Option<[f32; 4]>,
-        varyings: &[[f32; 2]],
+        varyings: impl IntoIterator<Item = [f32; 2]>,
         quad: SampleQuad,
     ) -> Option<LineJob> {
         let setup = LineSetup::new([a.x, a.y_down], [b.x, b.y_down], 1.0, height)?;
@@ -88,7 +88,7 @@ impl LineJob {
         a: &LineVertex<N>,
         b: &LineVertex<N>,
         flat: Option<[f32; 4]>,
-        varyings: &[[f32; 2]],
+        varyings: impl IntoIterator<Item = [f32; 2]>,
     ) -> LineJob {
         let z = g.plane(a.z, b.z);
         let shading = match flat {
@@ -100,7 +100,7 @@ impl LineJob {
                 inv_w: g.plane(a.inv_w, b.inv_w),
             },
         };
-        let over_w = varyings.iter().map(|v| g.plane(v[0] * a.inv_w, v[1] * b.inv_w));
+        let over_w = varyings.into_iter().map(|v| g.plane(v[0] * a.inv_w, v[1] * b.inv_w));
         let varyings = Varyings::new(over_w, g.plane(a.inv_w, b.inv_w));
         LineJob { setup, z, shading, varyings, sample_quad: None }
     }

@@ -90,7 +90,7 @@ impl SmoothLine {
         width: f32,
         height: i32,
         flat: Option<[f32; 4]>,
-        varyings: &[[f32; 2]],
+        varyings: impl IntoIterator<Item = [f32; 2]>,
     ) -> Option<SmoothLine> {
         let coverage = SmoothLineCoverage::new([a.x, a.y_down], [b.x, b.y_down], width)?;
         let (lo, hi) = coverage.extent();
@@ -109,7 +109,7 @@ impl SmoothLine {
                 inv_w: plane(a.inv_w, b.inv_w),
             },
         };
-        let over_w = varyings.iter().map(|v| plane(v[0] * a.inv_w, v[1] * b.inv_w));
+        let over_w = varyings.into_iter().map(|v| plane(v[0] * a.inv_w, v[1] * b.inv_w));
         Some(SmoothLine {
             coverage,
             bounds: rect_from_down(lo, hi, height),
