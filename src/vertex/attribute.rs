@@ -64,3 +64,32 @@ impl Attribute {
         self.pick(&v.secondary_color, v.fog_coord, &v.tex_coords)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::glsl::varyings::VARYING_SLOTS;
+
+    /// A slot beyond a fixed-function record's units reads as the zero a full record holds
+    /// there (a GLSL fragment shader may read gl_TexCoord[5] after fixed-function vertex
+    /// processing); the slots the record has read as they are.
+    #[test]
+    fn slots_a_record_lacks_read_as_zero() {
+        let vertex = |tex_coords| WindowVertex::<4> {
+            x: 0.0,
+            y: 0.0,
+            z: 0.0,
+            inv_w: 1.0,
+            color: [0.0; 4],
+            secondary_color: [0.0; 4],
+            tex_coords,
+            fog_coord: 0.0,
+        };
+        let v = vertex([[1.0, 2.0, 3.0, 4.0], [5.0, 6.0, 7.0, 8.0], [0.0; 4], [9.0, 10.0, 11.0, 12.0]]);
+        assert_eq!(Attribute::tex_coord(1, 2).of(&v), 7.0);
+        assert_eq!(Attribute::tex_coord(3, 3).of(&v), 12.0);
+        for unit in 4..VARYING_SLOTS {
+            assert_eq!(Attribute::tex_coord(unit, 0).of(&v), 0.0);
+        }
+    }
+}

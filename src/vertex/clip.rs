@@ -10,6 +10,10 @@
 //! New vertices interpolate every attribute linearly in clip space, always from the outside
 //! vertex towards the inside one, so an edge shared by two primitives is cut at exactly
 //! the same point whichever primitive it belongs to.
+//!
+//! The record is generic over its number of varying slots (see [`ClipVertex`]): a
+//! fixed-function draw's records carry its four texture units, a GLSL draw's all sixteen
+//! slots, and clipping interpolates whatever the record holds.
 
 use crate::gl::limits::MAX_TEXTURE_UNITS;
 use crate::glsl::varyings::VARYING_SLOTS;

@@ -21,7 +21,8 @@ use crate::setup::plane::{Shading, Varyings};
 /// How a line's color varies along it (planes over y-down pixel coordinates).
 pub type LineShading = Shading<LinePlane>;
 
-/// One endpoint of a line in window space (y down, as the line setup wants it).
+/// One endpoint of a line in window space (y down, as the line setup wants it), with the `N`
+/// varying slots of its clip-space record (see `crate::vertex::clip::ClipVertex`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LineVertex<const N: usize = { crate::glsl::varyings::VARYING_SLOTS }> {
     pub x: f32,

@@ -87,7 +87,9 @@ impl ExactAttributes {
     }
 }
 
-/// The window-space inputs of one vertex.
+/// The window-space inputs of one vertex, with the `N` varying slots of the clip-space
+/// record it comes from (`crate::vertex::clip::ClipVertex`: all of them after a GLSL vertex
+/// program, the texture units' after fixed-function processing).
 #[derive(Clone, Copy, Debug)]
 pub struct WindowVertex<const N: usize = VARYING_SLOTS> {
     pub x: f32,
