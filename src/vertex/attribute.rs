@@ -40,21 +40,56 @@ impl Attribute {
         (self.kind == AttributeKind::TexCoord).then_some((self.unit as usize, self.component as usize))
     }
 
-    /// This attribute among a vertex's secondary color, fog coordinate and texture coordinates.
+    /// This attribute among a vertex's secondary color, fog coordinate and texture coordinates
+    /// (a slot the record lacks, beyond a fixed-function vertex's units, is zero: see
+    /// [`crate::vertex::clip::ClipVertex`]).
+    #[inline(always)]
     pub fn pick(self, secondary_color: &[f32; 4], fog_coord: f32, tex_coords: &[[f32; 4]]) -> f32 {
         match self.kind {
             AttributeKind::SecondaryColor => secondary_color[self.component as usize],
             AttributeKind::FogCoord => fog_coord,
-            AttributeKind::TexCoord => tex_coords[self.unit as usize][self.component as usize],
+            AttributeKind::TexCoord => {
+                tex_coords.get(self.unit as usize).map_or(0.0, |t| t[self.component as usize & 3])
+            }
         }
     }
 
-    pub fn of(self, v: &WindowVertex) -> f32 {
+    #[inline(always)]
+    pub fn of<const N: usize>(self, v: &WindowVertex<N>) -> f32 {
         self.pick(&v.secondary_color, v.fog_coord, &v.tex_coords)
     }
 
     /// The attribute at a line or point vertex.
-    pub fn of_line(self, v: &LineVertex) -> f32 {
+    pub fn of_line<const N: usize>(self, v: &LineVertex<N>) -> f32 {
         self.pick(&v.secondary_color, v.fog_coord, &v.tex_coords)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::glsl::varyings::VARYING_SLOTS;
+
+    /// A slot beyond a fixed-function record's units reads as the zero a full record holds
+    /// there (a GLSL fragment shader may read gl_TexCoord[5] after fixed-function vertex
+    /// processing); the slots the record has read as they are.
+    #[test]
+    fn slots_a_record_lacks_read_as_zero() {
+        let vertex = |tex_coords| WindowVertex::<4> {
+            x: 0.0,
+            y: 0.0,
+            z: 0.0,
+            inv_w: 1.0,
+            color: [0.0; 4],
+            secondary_color: [0.0; 4],
+            tex_coords,
+            fog_coord: 0.0,
+        };
+        let v = vertex([[1.0, 2.0, 3.0, 4.0], [5.0, 6.0, 7.0, 8.0], [0.0; 4], [9.0, 10.0, 11.0, 12.0]]);
+        assert_eq!(Attribute::tex_coord(1, 2).of(&v), 7.0);
+        assert_eq!(Attribute::tex_coord(3, 3).of(&v), 12.0);
+        for unit in 4..VARYING_SLOTS {
+            assert_eq!(Attribute::tex_coord(unit, 0).of(&v), 0.0);
+        }
     }
 }

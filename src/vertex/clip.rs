@@ -10,13 +10,27 @@
 //! New vertices interpolate every attribute linearly in clip space, always from the outside
 //! vertex towards the inside one, so an edge shared by two primitives is cut at exactly
 //! the same point whichever primitive it belongs to.
+//!
+//! The record is generic over its number of varying slots (see [`ClipVertex`]): a
+//! fixed-function draw's records carry its four texture units, a GLSL draw's all sixteen
+//! slots, and clipping interpolates whatever the record holds.
 
+use crate::gl::limits::MAX_TEXTURE_UNITS;
 use crate::glsl::varyings::VARYING_SLOTS;
 
 /// A vertex after transformation: clip coordinates, eye coordinates (for user clip planes
 /// and fog) and the attributes the rasterizer interpolates.
+///
+/// `N` is the number of varying slots the record carries: all of them
+/// ([`VARYING_SLOTS`], the default) after a GLSL vertex program, only the texture units'
+/// ([`FIXED_SLOTS`]) after fixed-function processing, which writes no other. Every step
+/// from here to the primitive jobs is generic over it (monomorphised for the two counts),
+/// so a fixed-function draw copies 172-byte records through transformation, clipping and
+/// setup instead of 364-byte ones, most of them zeros: the sixteen slots made the small
+/// triangles benchmark 14 % more instructions, most of them `memcpy`s of records. A slot
+/// beyond a record's `N` reads as zero, the value a full record would hold there.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct ClipVertex {
+pub struct ClipVertex<const N: usize = VARYING_SLOTS> {
     pub clip: [f32; 4],
     pub eye: [f32; 4],
     pub color: [f32; 4],
@@ -26,7 +40,7 @@ pub struct ClipVertex {
     /// The varying slots: fixed-function texture coordinates in the first
     /// `gl::limits::MAX_TEXTURE_UNITS`, a GLSL program's `gl_TexCoord` and varyings in any
     /// ([`crate::glsl::varyings`]).
-    pub tex_coords: [[f32; 4]; VARYING_SLOTS],
+    pub tex_coords: [[f32; 4]; N],
     pub fog_coord: f32,
     /// gl_PointSize of a GLSL vertex program (read with GL_VERTEX_PROGRAM_POINT_SIZE; 0 from
     /// fixed-function processing, which never sets it).
@@ -35,16 +49,41 @@ pub struct ClipVertex {
     pub edge_flag: bool,
 }
 
-impl ClipVertex {
+/// The varying slots of a fixed-function vertex: its texture units' coordinates.
+pub const FIXED_SLOTS: usize = MAX_TEXTURE_UNITS;
+
+/// A vertex of fixed-function processing (see [`ClipVertex`]'s `N`).
+pub type FixedClipVertex = ClipVertex<FIXED_SLOTS>;
+
+impl<const N: usize> ClipVertex<N> {
+    /// The record with all [`VARYING_SLOTS`] slots, the ones beyond `N` zero (for the
+    /// callers that keep vertices of either kind, selection and feedback).
+    pub fn widen(&self) -> ClipVertex {
+        let mut tex_coords = [[0.0; 4]; VARYING_SLOTS];
+        let n = N.min(VARYING_SLOTS);
+        tex_coords[..n].copy_from_slice(&self.tex_coords[..n]);
+        ClipVertex {
+            clip: self.clip,
+            eye: self.eye,
+            color: self.color,
+            secondary_color: self.secondary_color,
+            back_colors: self.back_colors,
+            tex_coords,
+            fog_coord: self.fog_coord,
+            point_size: self.point_size,
+            edge_flag: self.edge_flag,
+        }
+    }
+
     /// `self + t · (other − self)` for every interpolated quantity.
-    fn lerp(&self, other: &ClipVertex, t: f32) -> ClipVertex {
+    fn lerp(&self, other: &Self, t: f32) -> Self {
         let mix = |a: f32, b: f32| a + t * (b - a);
         let mix4 = |a: [f32; 4], b: [f32; 4]| [mix(a[0], b[0]), mix(a[1], b[1]), mix(a[2], b[2]), mix(a[3], b[3])];
         let mut tex_coords = self.tex_coords;
         for (out, (a, b)) in tex_coords.iter_mut().zip(self.tex_coords.iter().zip(&other.tex_coords)) {
             *out = mix4(*a, *b);
         }
-        ClipVertex {
+        Self {
             clip: mix4(self.clip, other.clip),
             eye: mix4(self.eye, other.eye),
             color: mix4(self.color, other.color),
@@ -85,7 +124,7 @@ impl ClipPlanes {
     /// against them) in Mesa's order, right, left, top, bottom, near, far: the order
     /// decides the last bits of vertices cut by several planes.
     #[inline]
-    pub fn distance(&self, i: usize, v: &ClipVertex) -> f32 {
+    pub fn distance<const N: usize>(&self, i: usize, v: &ClipVertex<N>) -> f32 {
         let [x, y, z, w] = v.clip;
         match i {
             0 => self.guard_x * w - x,
@@ -123,7 +162,7 @@ impl ClipPlanes {
     /// The fixed planes' distances are written out (the same expressions as
     /// [`ClipPlanes::distance`], so the same bits) and tested without branches.
     #[inline]
-    pub fn outcode(&self, v: &ClipVertex) -> u32 {
+    pub fn outcode<const N: usize>(&self, v: &ClipVertex<N>) -> u32 {
         let mut code = match (self.clip_z, self.zero_to_one) {
             (false, _) => self.fixed_code(v, |_, _| (0.0, 0.0)),
             (true, true) => self.fixed_code(v, |z, w| (z, w - z)),
@@ -138,7 +177,7 @@ impl ClipPlanes {
     /// [`ClipPlanes::outcode`] of every vertex of `vertices`, in order: this runs for every
     /// vertex of every draw, so the near and far planes' form is chosen once, outside a
     /// loop of plain comparisons, and the user planes have a pass of their own when enabled.
-    pub fn outcodes(&self, vertices: &[ClipVertex]) -> Vec<u32> {
+    pub fn outcodes<const N: usize>(&self, vertices: &[ClipVertex<N>]) -> Vec<u32> {
         let mut codes: Vec<u32> = match (self.clip_z, self.zero_to_one) {
             (false, _) => vertices.iter().map(|v| self.fixed_code(v, |_, _| (0.0, 0.0))).collect(),
             (true, true) => vertices.iter().map(|v| self.fixed_code(v, |z, w| (z, w - z))).collect(),
@@ -156,7 +195,7 @@ impl ClipPlanes {
 
     /// The bits of the fixed planes, the near and far distances given by `near_far(z, w)`.
     #[inline(always)]
-    fn fixed_code(&self, v: &ClipVertex, near_far: impl Fn(f32, f32) -> (f32, f32)) -> u32 {
+    fn fixed_code<const N: usize>(&self, v: &ClipVertex<N>, near_far: impl Fn(f32, f32) -> (f32, f32)) -> u32 {
         let [x, y, z, w] = v.clip;
         let (near, far) = near_far(z, w);
         outside(self.guard_x * w - x)
@@ -170,7 +209,12 @@ impl ClipPlanes {
 
     /// Clips the convex polygon `poly` against every plane in `mask`, in place.
     /// `scratch` is reused storage. The result may be empty.
-    pub fn clip_polygon(&self, poly: &mut Vec<ClipVertex>, scratch: &mut Vec<ClipVertex>, mask: u32) {
+    pub fn clip_polygon<const N: usize>(
+        &self,
+        poly: &mut Vec<ClipVertex<N>>,
+        scratch: &mut Vec<ClipVertex<N>>,
+        mask: u32,
+    ) {
         for plane in 0..self.count() {
             if mask & (1 << plane) == 0 || poly.is_empty() {
                 continue;
@@ -205,7 +249,12 @@ impl ClipPlanes {
 
     /// Clips the segment `a`–`b` plane by plane, exactly as a polygon edge is clipped;
     /// `None` when nothing remains.
-    pub fn clip_line(&self, a: &ClipVertex, b: &ClipVertex, mask: u32) -> Option<(ClipVertex, ClipVertex)> {
+    pub fn clip_line<const N: usize>(
+        &self,
+        a: &ClipVertex<N>,
+        b: &ClipVertex<N>,
+        mask: u32,
+    ) -> Option<(ClipVertex<N>, ClipVertex<N>)> {
         let (mut a, mut b) = (*a, *b);
         for plane in 0..self.count() {
             if mask & (1 << plane) == 0 {
@@ -311,6 +360,64 @@ mod tests {
         let mask = poly.iter().fold(0, |m, v| m | p.outcode(v));
         p.clip_polygon(&mut poly, &mut Vec::new(), mask);
         assert!(poly.iter().all(|v| v.clip[3] > 0.0));
+    }
+
+    /// Every varying slot, the last ones too, is interpolated at the cut (a GLSL vertex's
+    /// record), and a fixed-function record clips to the same values in the slots it has,
+    /// its wider copy's others staying zero.
+    #[test]
+    fn clipping_interpolates_every_varying_slot() {
+        let p = planes();
+        let mut tri = [vertex(0.0, 0.0, -3.0, 1.0), vertex(0.5, 0.0, 0.0, 1.0), vertex(0.0, 0.5, 0.0, 1.0)];
+        for (k, v) in tri.iter_mut().enumerate() {
+            for (slot, t) in v.tex_coords.iter_mut().enumerate() {
+                *t = [0, 1, 2, 3].map(|c| (slot * 10 + c) as f32 + 100.0 * k as f32);
+            }
+        }
+        let mask = tri.iter().fold(0, |m, v| m | p.outcode(v));
+        let mut poly = tri.to_vec();
+        p.clip_polygon(&mut poly, &mut Vec::new(), mask);
+        assert_eq!(poly.len(), 4);
+        // The cuts: from vertex 0 (z = −3) towards 1 and towards 2 (z = 0), at t = 2/3.
+        let cuts: Vec<&ClipVertex> = poly.iter().filter(|v| !tri.contains(v)).collect();
+        assert_eq!(cuts.len(), 2);
+        for cut in &cuts {
+            let t = 2.0 / 3.0;
+            let to = if cut.clip[0] > 0.0 { 1 } else { 2 };
+            for slot in [0, 3, 4, 9, VARYING_SLOTS - 1] {
+                for c in 0..4 {
+                    let (a, b) = (tri[0].tex_coords[slot][c], tri[to].tex_coords[slot][c]);
+                    let want = a + t * (b - a);
+                    assert!((cut.tex_coords[slot][c] - want).abs() < 1e-3, "slot {slot}: {cut:?}");
+                }
+            }
+        }
+        let mut fixed: Vec<FixedClipVertex> = tri
+            .iter()
+            .map(|v| {
+                let mut tex_coords = [[0.0; 4]; FIXED_SLOTS];
+                tex_coords.copy_from_slice(&v.tex_coords[..FIXED_SLOTS]);
+                FixedClipVertex {
+                    clip: v.clip,
+                    eye: v.eye,
+                    color: v.color,
+                    secondary_color: v.secondary_color,
+                    back_colors: v.back_colors,
+                    tex_coords,
+                    fog_coord: v.fog_coord,
+                    point_size: v.point_size,
+                    edge_flag: v.edge_flag,
+                }
+            })
+            .collect();
+        p.clip_polygon(&mut fixed, &mut Vec::new(), mask);
+        assert_eq!(fixed.len(), poly.len());
+        for (f, full) in fixed.iter().zip(&poly) {
+            let wide = f.widen();
+            assert_eq!(wide.tex_coords[..FIXED_SLOTS], full.tex_coords[..FIXED_SLOTS]);
+            assert!(wide.tex_coords[FIXED_SLOTS..].iter().all(|t| *t == [0.0; 4]));
+            assert_eq!((wide.clip, wide.color, wide.edge_flag), (full.clip, full.color, full.edge_flag));
+        }
     }
 
     #[test]

@@ -6,7 +6,7 @@ use crate::setup::jobs::triangle::WindowVertex;
 
 /// Twice the signed area of a window-space triangle, positive when counter-clockwise.
 #[inline]
-pub fn area2(w: &[WindowVertex; 3]) -> f32 {
+pub fn area2<const N: usize>(w: &[WindowVertex<N>; 3]) -> f32 {
     (w[1].x - w[0].x) * (w[2].y - w[0].y) - (w[2].x - w[0].x) * (w[1].y - w[0].y)
 }
 

@@ -70,7 +70,7 @@ pub struct Geometry {
 impl Geometry {
     /// Whether any vertex lies outside the view volume (not only the guard band) or an
     /// enabled user clip plane: where Mesa's draw module takes its pipeline path.
-    pub fn leaves_view_volume(&self, vertices: &[ClipVertex]) -> bool {
+    pub fn leaves_view_volume<const N: usize>(&self, vertices: &[ClipVertex<N>]) -> bool {
         vertices.iter().any(|v| self.line_planes.outcode(v) != 0)
     }
 }

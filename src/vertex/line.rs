@@ -21,11 +21,11 @@ pub struct LineStipple {
 /// Clips a line to the view volume the way Mesa's clipper does (both ends moved from the
 /// original endpoints, by the largest cut of any plane), maps it to window space and emits
 /// it. `outcodes` are against `g.line_planes`.
-pub fn emit_clip_line(
+pub fn emit_clip_line<const N: usize>(
     scene: &mut Scene,
     state: u32,
     g: &Geometry,
-    ends: [&ClipVertex; 2],
+    ends: [&ClipVertex<N>; 2],
     outcodes: [u32; 2],
     flat: Option<[f32; 4]>,
     stipple: Option<&mut LineStipple>,
@@ -73,7 +73,7 @@ pub fn emit_clip_line(
 }
 
 /// `from + t · (to − from)` for the clip position and attributes of a clipped line end.
-pub fn lerp_clip(from: &ClipVertex, to: &ClipVertex, t: f32) -> ClipVertex {
+pub fn lerp_clip<const N: usize>(from: &ClipVertex<N>, to: &ClipVertex<N>, t: f32) -> ClipVertex<N> {
     let mix = |a: [f32; 4], b: [f32; 4]| std::array::from_fn(|i| a[i] + t * (b[i] - a[i]));
     ClipVertex {
         clip: mix(from.clip, to.clip),
@@ -86,12 +86,12 @@ pub fn lerp_clip(from: &ClipVertex, to: &ClipVertex, t: f32) -> ClipVertex {
 }
 
 /// Emits a window-space line, cut into its stippled dashes when stippled.
-pub fn emit_window_line(
+pub fn emit_window_line<const N: usize>(
     scene: &mut Scene,
     state: u32,
     g: &Geometry,
-    a: LineVertex,
-    b: LineVertex,
+    a: LineVertex<N>,
+    b: LineVertex<N>,
     flat: Option<[f32; 4]>,
     stipple: Option<&mut LineStipple>,
 ) {
@@ -132,12 +132,12 @@ pub fn emit_window_line(
 /// Emits the part of `a`–`b` between parameters `t0` and `t1`, every attribute
 /// interpolated linearly in window space as llvmpipe's stipple stage does.
 #[allow(clippy::too_many_arguments)]
-pub fn emit_dash(
+pub fn emit_dash<const N: usize>(
     scene: &mut Scene,
     state: u32,
     g: &Geometry,
-    a: &LineVertex,
-    b: &LineVertex,
+    a: &LineVertex<N>,
+    b: &LineVertex<N>,
     t0: f32,
     t1: f32,
     flat: Option<[f32; 4]>,
@@ -160,21 +160,17 @@ pub fn emit_dash(
     emit_line_job(scene, state, g, &start, &end, flat);
 }
 
-pub fn emit_line_job(
+pub fn emit_line_job<const N: usize>(
     scene: &mut Scene,
     state: u32,
     g: &Geometry,
-    a: &LineVertex,
-    b: &LineVertex,
+    a: &LineVertex<N>,
+    b: &LineVertex<N>,
     flat: Option<[f32; 4]>,
 ) {
-    // On the stack: setting up a line allocates nothing.
-    let mut values = [[0.0f32; 2]; MAX_VARYINGS];
-    let n = g.varyings.len().min(MAX_VARYINGS);
-    for (value, v) in values.iter_mut().zip(&g.varyings) {
-        *value = [v.of_line(a), v.of_line(b)];
-    }
-    let varyings = &values[..n];
+    // Each varying's values at the ends, read as the job's planes are made: setting up a
+    // line allocates, fills and zeroes no table of them.
+    let varyings = g.varyings.iter().take(MAX_VARYINGS).map(|v| [v.of_line(a), v.of_line(b)]);
     if g.smooth_lines {
         if let Some(job) = SmoothLine::new(a, b, g.line_width, g.height, flat, varyings) {
             let job = SmoothJob::Line(Box::new(job));
@@ -185,7 +181,7 @@ pub fn emit_line_job(
     if g.per_sample {
         // The rectangle of the unrounded width, as llvmpipe draws it on a multisampled target
         // (widths below 1 draw as 1 there, Mesa's minimum line width).
-        let up = |v: &LineVertex| [v.x, g.height as f32 - v.y_down];
+        let up = |v: &LineVertex<N>| [v.x, g.height as f32 - v.y_down];
         let quad = SampleQuad::line(up(a), up(b), g.line_width.max(1.0));
         if let Some(job) = quad.and_then(|quad| LineJob::covering_samples(a, b, g.height, flat, varyings, quad)) {
             scene.add(state, job.bounds(), RasterPrimitive::Line(job));

@@ -36,7 +36,7 @@ pub fn depth_resolution(depth: DepthEncoding, z: impl Iterator<Item = f32>) -> f
 
 /// glPolygonOffset's depth offset for a triangle: factor × max depth slope + units × r,
 /// where r is the smallest resolvable difference of the depth buffer.
-pub fn polygon_offset(w: &[WindowVertex; 3], factor: f32, units: f32, depth: DepthEncoding) -> f32 {
+pub fn polygon_offset<const N: usize>(w: &[WindowVertex<N>; 3], factor: f32, units: f32, depth: DepthEncoding) -> f32 {
     let (x1, y1, z1) = (w[1].x - w[0].x, w[1].y - w[0].y, w[1].z - w[0].z);
     let (x2, y2, z2) = (w[2].x - w[0].x, w[2].y - w[0].y, w[2].z - w[0].z);
     let det = x1 * y2 - x2 * y1;

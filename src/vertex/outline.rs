@@ -113,13 +113,13 @@ pub struct Outline<'a> {
 
 impl Outline<'_> {
     /// One triangle of the decomposition, `codes` its vertices' outcodes.
-    pub fn triangle(
+    pub fn triangle<const N: usize>(
         &mut self,
-        v: [&ClipVertex; 3],
+        v: [&ClipVertex<N>; 3],
         codes: [u32; 3],
         t: OutlineTriangle,
-        poly: &mut Vec<ClipVertex>,
-        scratch: &mut Vec<ClipVertex>,
+        poly: &mut Vec<ClipVertex<N>>,
+        scratch: &mut Vec<ClipVertex<N>>,
     ) {
         if codes[0] & codes[1] & codes[2] != 0 {
             return;
@@ -127,7 +127,7 @@ impl Outline<'_> {
         // An edge is drawn when the decomposition and the edge flag of its first vertex say so.
         let edges = std::array::from_fn(|i| t.edges[i] && v[i].edge_flag);
         let flat = self.g.flat.then(|| FlatColors::of(v[if self.g.first_vertex { 0 } else { 2 }]));
-        let corner = |c: &ClipVertex, fused: bool| {
+        let corner = |c: &ClipVertex<N>, fused: bool| {
             (self.g.viewport.window_down(c, fused), self.g.viewport.window(c), c.back_colors, self.g.point_size_of(c))
         };
         if codes[0] | codes[1] | codes[2] == 0 {
@@ -163,7 +163,7 @@ impl Outline<'_> {
 
     /// Culls, offsets and draws one (clipped) triangle in its face's mode; `w` holds each
     /// corner in y-down and in GL window coordinates.
-    fn draw(&mut self, w: [Corner; 3], edges: [bool; 3], first: bool, flat: Option<FlatColors>) {
+    fn draw<const N: usize>(&mut self, w: [Corner<N>; 3], edges: [bool; 3], first: bool, flat: Option<FlatColors>) {
         let g = self.g;
         let mut l = w.map(|c| c.0);
         let (ex, ey, ez) = (l[0].x - l[2].x, l[0].y_down - l[2].y_down, l[0].z - l[2].z);
@@ -244,14 +244,19 @@ impl Outline<'_> {
 
 /// A corner of an outlined triangle: in llvmpipe's y-down window space, in GL window
 /// coordinates, its back-face colors and its point size (GL_POINT polygon mode).
-type Corner = (LineVertex, WindowVertex, [[f32; 4]; 2], f32);
+type Corner<const N: usize> = (LineVertex<N>, WindowVertex<N>, [[f32; 4]; 2], f32);
 
 /// Clips the polygon `poly` (each vertex's `edge_flag` telling whether the edge it starts
 /// is drawn) against the planes in `mask` as Mesa's clipper does for polygons it draws as
 /// outlines: plane by plane, each new vertex interpolated from the end of the cut edge
 /// nearer to the plane, edges along a view-volume plane not drawn. `false` when a
 /// distance is NaN (the polygon is dropped).
-pub fn clip_outline(planes: &ClipPlanes, poly: &mut Vec<ClipVertex>, scratch: &mut Vec<ClipVertex>, mask: u32) -> bool {
+pub fn clip_outline<const N: usize>(
+    planes: &ClipPlanes,
+    poly: &mut Vec<ClipVertex<N>>,
+    scratch: &mut Vec<ClipVertex<N>>,
+    mask: u32,
+) -> bool {
     let user_planes = planes.count() - planes.user.len();
     for plane in 0..planes.count() {
         if mask & (1 << plane) == 0 || poly.len() < 3 {

@@ -17,12 +17,12 @@ use crate::setup::Scene;
 /// connected primitive these vertices are (see [`DrawPart`]); `stipple` is GL_LINE_STIPPLE's
 /// state where the part starts, and the state where it ends is returned.
 #[allow(clippy::too_many_arguments)]
-pub fn draw(
+pub fn draw<const N: usize>(
     scene: &mut Scene,
     state_index: u32,
     geometry: &Geometry,
     mode: GLenum,
-    clip_vertices: &[ClipVertex],
+    clip_vertices: &[ClipVertex<N>],
     part: DrawPart,
     mut stipple: Option<LineStipple>,
 ) -> Option<LineStipple> {
@@ -99,7 +99,7 @@ pub fn draw(
                     return;
                 }
                 // A fan around the first vertex, each vertex mapped to window space once.
-                let window = |v: &ClipVertex| geometry.viewport.window(v);
+                let window = |v: &ClipVertex<N>| geometry.viewport.window(v);
                 let (w0, mut previous) = (window(&poly[0]), window(&poly[1]));
                 for i in 1..poly.len() - 1 {
                     let next = window(&poly[i + 1]);

@@ -87,7 +87,7 @@ impl Geometry {
     /// The width of the point of vertex `v`: its program's gl_PointSize
     /// (GL_VERTEX_PROGRAM_POINT_SIZE, clamped as glPointSize's), else glPointSize's, attenuated
     /// by the eye distance when GL_POINT_DISTANCE_ATTENUATION says so.
-    pub fn point_size_of(&self, v: &ClipVertex) -> f32 {
+    pub fn point_size_of<const N: usize>(&self, v: &ClipVertex<N>) -> f32 {
         if let Some(limits) = self.program_point_size {
             return clamp_point_size(v.point_size, limits[0], limits[1]);
         }
@@ -96,12 +96,12 @@ impl Geometry {
 }
 
 /// Emits a point whose vertex is inside the view volume.
-pub fn emit_point(scene: &mut Scene, state: u32, g: &Geometry, v: &ClipVertex) {
+pub fn emit_point<const N: usize>(scene: &mut Scene, state: u32, g: &Geometry, v: &ClipVertex<N>) {
     let w = g.viewport.window_down(v, true);
     emit_window_point(scene, state, g, &w, g.point_size_of(v));
 }
 
-pub fn emit_window_point(scene: &mut Scene, state: u32, g: &Geometry, w: &LineVertex, size: f32) {
+pub fn emit_window_point<const N: usize>(scene: &mut Scene, state: u32, g: &Geometry, w: &LineVertex<N>, size: f32) {
     // llvmpipe interpolates point colors perspective-correctly too: (c/w)·w.
     let color = if w.inv_w == 1.0 { w.color } else { w.color.map(|c| c * w.inv_w * (1.0 / w.inv_w)) };
     let varyings = point_varyings(g.varyings.iter().map(|v| v.of_line(w)));

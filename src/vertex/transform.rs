@@ -11,18 +11,16 @@
 //! or [`StageCache`] keeps the last draw's for the next unlit draw with the same state;
 //! [`VertexStage::run`] gathers 16 vertices at a time into the program's input words
 //! (structure of arrays), runs the compiled program on the live lanes and scatters its
-//! outputs into [`ClipVertex`]es.
+//! outputs into [`FixedClipVertex`]es.
 //!
 //! There is no second, hand-written path: the per-vertex code the programs replaced is kept
 //! only as the reference the generated programs are tested against
 //! (`super::program::reference`, test builds).
-use super::clip::ClipVertex;
+use super::clip::{FixedClipVertex, FIXED_SLOTS};
 use super::lighting::{Lighting, LightingState, Material, NormalScaling};
 use super::program::{CompiledVertex, VertexInput, VertexKey, VertexOutput, VertexProgram};
 use super::texgen::{Gen, TexCoordUnit, TexGen};
 use super::Vertex;
-use crate::gl::limits::MAX_TEXTURE_UNITS;
-use crate::glsl::varyings::VARYING_SLOTS;
 use crate::shader::exec::{Io, NoTextures, Word, ALL_LANES, LANES};
 use crate::shader::fast::{BoundRun, Compiled, Registers};
 use crate::shader::lower::R;
@@ -78,9 +76,9 @@ struct Scratch {
     registers: Registers,
     inputs: Vec<Word>,
     outputs: Vec<Word>,
-    clip: Vec<ClipVertex>,
+    clip: Vec<FixedClipVertex>,
     /// The records of one batch, made in place ([`Run::transform_bound`]).
-    batch: Vec<ClipVertex>,
+    batch: Vec<FixedClipVertex>,
     /// The program `registers` were last prepared for (held, so that no other program can
     /// be allocated where it was).
     program: Option<Arc<CompiledVertex>>,
@@ -166,7 +164,7 @@ impl VertexStage {
     /// Runs the stage on `vertices`, the draw's vertices from index `first` on (a part of
     /// the draw, when it is split between threads), and hands their clip-space vertices to
     /// `then`.
-    pub fn run<T>(&self, vertices: &[Vertex], first: usize, then: impl FnOnce(&[ClipVertex]) -> T) -> T {
+    pub fn run<T>(&self, vertices: &[Vertex], first: usize, then: impl FnOnce(&[FixedClipVertex]) -> T) -> T {
         self.run_with(vertices, first, &mut Scratch::default(), then)
     }
 
@@ -176,7 +174,7 @@ impl VertexStage {
         scratch: &mut VertexScratch,
         vertices: &[Vertex],
         first: usize,
-        then: impl FnOnce(&[ClipVertex]) -> T,
+        then: impl FnOnce(&[FixedClipVertex]) -> T,
     ) -> T {
         self.run_with(vertices, first, &mut scratch.0, then)
     }
@@ -186,7 +184,7 @@ impl VertexStage {
         vertices: &[Vertex],
         first: usize,
         scratch: &mut Scratch,
-        then: impl FnOnce(&[ClipVertex]) -> T,
+        then: impl FnOnce(&[FixedClipVertex]) -> T,
     ) -> T {
         scratch.clip.clear();
         scratch.clip.reserve(vertices.len());
@@ -372,9 +370,8 @@ impl Run {
             for lane in 0..n {
                 let (v, c) = (&batch[lane], &mut records[lane]);
                 c.back_colors = if self.lit_one_sided { [c.color, c.secondary_color] } else { [[0.0; 4]; 2] };
-                // The fixed-function units' slots; the others stay zero (the batch's records
-                // start zeroed and no fixed-function program writes them).
-                c.tex_coords[..MAX_TEXTURE_UNITS].copy_from_slice(&v.tex_coords);
+                // The units' slots (a fixed-function record has no others).
+                c.tex_coords = v.tex_coords;
                 c.fog_coord = f32::from_bits(fog[lane]);
                 c.edge_flag = v.edge_flag;
             }
@@ -407,13 +404,13 @@ impl Run {
             let base = scratch.clip.len();
             // What the program does not write: texture coordinates of units without texgen
             // or texture matrix, the edge flag, and the back colours of unlit vertices.
-            scratch.clip.extend(batch.iter().map(|v| ClipVertex {
+            scratch.clip.extend(batch.iter().map(|v| FixedClipVertex {
                 clip: [0.0; 4],
                 eye: [0.0; 4],
                 color: [0.0; 4],
                 secondary_color: [0.0; 4],
                 back_colors: [[0.0; 4]; 2],
-                tex_coords: unit_slots(&v.tex_coords),
+                tex_coords: v.tex_coords,
                 fog_coord: 0.0,
                 point_size: 0.0,
                 edge_flag: v.edge_flag,
@@ -541,7 +538,11 @@ fn gather4(batch: &[Vertex], words: &mut [Word], registers: [Option<R>; 4], get:
 /// Transposes the four words `words` (a group of four standard outputs) into the field
 /// `field` of the records `out` (one per lane).
 #[inline(always)]
-fn transpose_out(words: [&Word; 4], out: &mut [ClipVertex], field: impl Fn(&mut ClipVertex) -> &mut [f32; 4]) {
+fn transpose_out(
+    words: [&Word; 4],
+    out: &mut [FixedClipVertex],
+    field: impl Fn(&mut FixedClipVertex) -> &mut [f32; 4],
+) {
     for quad in 0..LANES / 4 {
         let column = |j: usize| {
             let w = &words[j];
@@ -561,13 +562,13 @@ fn transpose_out(words: [&Word; 4], out: &mut [ClipVertex], field: impl Fn(&mut 
 }
 
 /// A record every field of which the batch overwrites.
-const EMPTY: ClipVertex = ClipVertex {
+const EMPTY: FixedClipVertex = FixedClipVertex {
     clip: [0.0; 4],
     eye: [0.0; 4],
     color: [0.0; 4],
     secondary_color: [0.0; 4],
     back_colors: [[0.0; 4]; 2],
-    tex_coords: [[0.0; 4]; VARYING_SLOTS],
+    tex_coords: [[0.0; 4]; FIXED_SLOTS],
     fog_coord: 0.0,
     point_size: 0.0,
     edge_flag: false,
@@ -613,9 +614,9 @@ fn gather(source: VertexInput, batch: &[Vertex], word: &mut Word) {
 
 /// Output word `what` into the clip-space vertices `out` of a batch.
 #[inline]
-fn scatter(what: VertexOutput, word: &Word, out: &mut [ClipVertex]) {
+fn scatter(what: VertexOutput, word: &Word, out: &mut [FixedClipVertex]) {
     #[inline(always)]
-    fn put(word: &Word, out: &mut [ClipVertex], set: impl Fn(&mut ClipVertex, f32)) {
+    fn put(word: &Word, out: &mut [FixedClipVertex], set: impl Fn(&mut FixedClipVertex, f32)) {
         let n = out.len().min(LANES);
         for i in 0..n {
             set(&mut out[i], f32::from_bits(word[i]));
@@ -632,12 +633,4 @@ fn scatter(what: VertexOutput, word: &Word, out: &mut [ClipVertex]) {
         VertexOutput::TexCoord { unit, k } => put(word, out, |c, x| c.tex_coords[unit as usize][k as usize & 3] = x),
         VertexOutput::FogCoord => put(word, out, |c, x| c.fog_coord = x),
     }
-}
-
-/// A vertex's texture coordinates as the varying slots of its record (the slots beyond the
-/// units zero).
-pub fn unit_slots(units: &[[f32; 4]; MAX_TEXTURE_UNITS]) -> [[f32; 4]; VARYING_SLOTS] {
-    let mut slots = [[0.0; 4]; VARYING_SLOTS];
-    slots[..MAX_TEXTURE_UNITS].copy_from_slice(units);
-    slots
 }

@@ -19,7 +19,7 @@ pub struct FlatColors {
 }
 
 impl FlatColors {
-    pub fn of(v: &ClipVertex) -> Self {
+    pub fn of<const N: usize>(v: &ClipVertex<N>) -> Self {
         FlatColors { front: [v.color, v.secondary_color], back: v.back_colors }
     }
 }
@@ -27,11 +27,11 @@ impl FlatColors {
 /// Emits a filled triangle with the colors of its facing: the back colors `back` of its
 /// corners when it faces back under two-sided lighting, and the provoking vertex's colors
 /// (primary and secondary) under flat shading.
-pub fn emit_shaded_triangle(
+pub fn emit_shaded_triangle<const N: usize>(
     scene: &mut Scene,
     state: u32,
     g: &Geometry,
-    w: &[WindowVertex; 3],
+    w: &[WindowVertex<N>; 3],
     back: [[[f32; 4]; 2]; 3],
     flat: Option<FlatColors>,
 ) {
@@ -42,11 +42,11 @@ pub fn emit_shaded_triangle(
 /// uses them (copying them for every triangle of a draw without two-sided lighting cost
 /// a small triangle's setup more than its culling).
 #[inline(always)]
-pub fn emit_shaded_triangle_with(
+pub fn emit_shaded_triangle_with<const N: usize>(
     scene: &mut Scene,
     state: u32,
     g: &Geometry,
-    w: &[WindowVertex; 3],
+    w: &[WindowVertex<N>; 3],
     back: impl FnOnce() -> [[[f32; 4]; 2]; 3],
     flat: Option<FlatColors>,
 ) {
@@ -71,7 +71,13 @@ pub fn emit_shaded_triangle_with(
 }
 
 /// Culls, offsets, sets up and bins one window-space triangle.
-pub fn emit_triangle(scene: &mut Scene, state: u32, g: &Geometry, w: &[WindowVertex; 3], flat: Option<[f32; 4]>) {
+pub fn emit_triangle<const N: usize>(
+    scene: &mut Scene,
+    state: u32,
+    g: &Geometry,
+    w: &[WindowVertex<N>; 3],
+    flat: Option<[f32; 4]>,
+) {
     let area2 = area2(w);
     if !area2.is_finite() {
         return;
@@ -80,9 +86,16 @@ pub fn emit_triangle(scene: &mut Scene, state: u32, g: &Geometry, w: &[WindowVer
     if culls(g.cull, front) {
         return;
     }
+    let count = g.varyings.len().min(MAX_VARYINGS);
+    // Varying k's values at the corners, read from the vertices where the job is made:
+    // no table of all of them is filled (and zeroed) per triangle.
+    let varying = |k: usize| {
+        let a = g.varyings[k];
+        [a.of(&w[0]), a.of(&w[1]), a.of(&w[2])]
+    };
     if g.smooth_polygons {
-        let (offset, values, n) = offset_and_varyings(g, w);
-        if let Some(job) = SmoothTriangle::new(*w, flat, offset, &values[..n], front) {
+        let values = (0..count).map(varying);
+        if let Some(job) = SmoothTriangle::new(*w, flat, depth_offset(g, w), values, front) {
             let job = SmoothJob::Triangle(Box::new(job));
             scene.add(state, job.bounds(), RasterPrimitive::Smooth(job));
         }
@@ -93,41 +106,14 @@ pub fn emit_triangle(scene: &mut Scene, state: u32, g: &Geometry, w: &[WindowVer
     let Some(setup) = TriangleSetup::new(w.map(|p| [p.x, p.y])) else { return };
     scene.add_triangle(state, setup, |setup| {
         let offset = depth_offset(g, w);
-        // Without varyings (plain coloured meshes) no table of their values is made: zeroing
-        // and returning it was a fifth of a small triangle's job in `perf`.
-        let mut job = if g.varyings.is_empty() {
-            TriangleJob::with_setup(setup, g.accuracy, w, flat, offset, &[])
-        } else {
-            let (values, n) = varying_values(g, w);
-            TriangleJob::with_setup(setup, g.accuracy, w, flat, offset, &values[..n])
-        };
+        let mut job = TriangleJob::with_setup_by(setup, g.accuracy, w, flat, offset, count, varying);
         job.front_facing = front;
         job
     });
 }
 
-/// A triangle's polygon offset and the values at its corners of the varyings the draw
-/// interpolates (the first of the `MAX_VARYINGS` rows).
-#[inline(always)]
-fn offset_and_varyings(g: &Geometry, w: &[WindowVertex; 3]) -> (f32, [[f32; 3]; MAX_VARYINGS], usize) {
-    let (values, n) = varying_values(g, w);
-    (depth_offset(g, w), values, n)
-}
-
 /// A triangle's polygon offset (0 without one).
 #[inline(always)]
-fn depth_offset(g: &Geometry, w: &[WindowVertex; 3]) -> f32 {
+fn depth_offset<const N: usize>(g: &Geometry, w: &[WindowVertex<N>; 3]) -> f32 {
     g.offset.map_or(0.0, |(factor, units)| clamp_offset(polygon_offset(w, factor, units, g.depth), g.offset_clamp))
-}
-
-/// The values at a triangle's corners of the varyings the draw interpolates (the first of
-/// the `MAX_VARYINGS` rows), on the stack: setting up a triangle allocates nothing.
-#[inline(always)]
-fn varying_values(g: &Geometry, w: &[WindowVertex; 3]) -> ([[f32; 3]; MAX_VARYINGS], usize) {
-    let mut values = [[0.0f32; 3]; MAX_VARYINGS];
-    let n = g.varyings.len().min(MAX_VARYINGS);
-    for (value, a) in values.iter_mut().zip(&g.varyings) {
-        *value = [0, 1, 2].map(|i| a.of(&w[i]));
-    }
-    (values, n)
 }

@@ -43,7 +43,7 @@ impl Viewport {
     /// Window coordinates of a clip-space vertex (w > 0), as llvmpipe computes them:
     /// the reciprocal of w first, then a multiply and the scale/offset, in single precision.
     #[inline]
-    pub fn window(&self, v: &ClipVertex) -> WindowVertex {
+    pub fn window<const N: usize>(&self, v: &ClipVertex<N>) -> WindowVertex<N> {
         let inv_w = 1.0 / v.clip[3];
         let ndc = [v.clip[0] * inv_w, v.clip[1] * inv_w, v.clip[2] * inv_w];
         WindowVertex {
@@ -63,7 +63,7 @@ impl Viewport {
     /// code fuses (`fused`); vertices made by clipping get its C clipper's separate
     /// multiply and add. Endpoint pixels depend on the last bit of these coordinates.
     #[inline]
-    pub fn window_down(&self, v: &ClipVertex, fused: bool) -> LineVertex {
+    pub fn window_down<const N: usize>(&self, v: &ClipVertex<N>, fused: bool) -> LineVertex<N> {
         let inv_w = 1.0 / v.clip[3];
         let ndc = [v.clip[0] * inv_w, v.clip[1] * inv_w, v.clip[2] * inv_w];
         let map = |n: f32, scale: f32, offset: f32| {

@@ -92,7 +92,7 @@ impl Context {
         tex_units: &[TexCoordUnit],
     ) -> Vec<ClipVertex> {
         let input = self.transform_input(float_color, tex_units);
-        self.vertex_stage(&input, vertices.len()).run(vertices, 0, <[ClipVertex]>::to_vec)
+        self.vertex_stage(&input, vertices.len()).run(vertices, 0, |c| c.iter().map(ClipVertex::widen).collect())
     }
 
     /// The per-draw geometry constants.

@@ -21,9 +21,10 @@ use crate::setup::plane::{Shading, Varyings};
 /// How a line's color varies along it (planes over y-down pixel coordinates).
 pub type LineShading = Shading<LinePlane>;
 
-/// One endpoint of a line in window space (y down, as the line setup wants it).
+/// One endpoint of a line in window space (y down, as the line setup wants it), with the `N`
+/// varying slots of its clip-space record (see `crate::vertex::clip::ClipVertex`).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct LineVertex {
+pub struct LineVertex<const N: usize = { crate::glsl::varyings::VARYING_SLOTS }> {
     pub x: f32,
     pub y_down: f32,
     pub z: f32,
@@ -31,7 +32,7 @@ pub struct LineVertex {
     pub color: [f32; 4],
     /// Read for the varyings a draw needs.
     pub secondary_color: [f32; 4],
-    pub tex_coords: [[f32; 4]; crate::glsl::varyings::VARYING_SLOTS],
+    pub tex_coords: [[f32; 4]; N],
     pub fog_coord: f32,
 }
 
@@ -51,13 +52,13 @@ impl LineJob {
     /// Sets up the line `a`–`b` of GL width `width` in a framebuffer `height` rows high;
     /// `flat` is the flat-shading color if flat shaded; `varyings` the values of the draw's
     /// varyings at `a` and `b`. `None` if it draws nothing.
-    pub fn new(
-        a: &LineVertex,
-        b: &LineVertex,
+    pub fn new<const N: usize>(
+        a: &LineVertex<N>,
+        b: &LineVertex<N>,
         width: f32,
         height: i32,
         flat: Option<[f32; 4]>,
-        varyings: &[[f32; 2]],
+        varyings: impl IntoIterator<Item = [f32; 2]>,
     ) -> Option<LineJob> {
         let setup = LineSetup::new([a.x, a.y_down], [b.x, b.y_down], width, height)?;
         let g = setup.gradient;
@@ -67,12 +68,12 @@ impl LineJob {
     /// As [`LineJob::new`] for a line covering the samples of `quad` (its rectangle) on a
     /// multisampled target with GL_MULTISAMPLE on, its attributes varying along the line
     /// (llvmpipe's planes for such rectangles).
-    pub fn covering_samples(
-        a: &LineVertex,
-        b: &LineVertex,
+    pub fn covering_samples<const N: usize>(
+        a: &LineVertex<N>,
+        b: &LineVertex<N>,
         height: i32,
         flat: Option<[f32; 4]>,
-        varyings: &[[f32; 2]],
+        varyings: impl IntoIterator<Item = [f32; 2]>,
         quad: SampleQuad,
     ) -> Option<LineJob> {
         let setup = LineSetup::new([a.x, a.y_down], [b.x, b.y_down], 1.0, height)?;
@@ -82,13 +83,13 @@ impl LineJob {
         Some(job)
     }
 
-    fn with_planes(
+    fn with_planes<const N: usize>(
         setup: LineSetup,
         g: LineGradient,
-        a: &LineVertex,
-        b: &LineVertex,
+        a: &LineVertex<N>,
+        b: &LineVertex<N>,
         flat: Option<[f32; 4]>,
-        varyings: &[[f32; 2]],
+        varyings: impl IntoIterator<Item = [f32; 2]>,
     ) -> LineJob {
         let z = g.plane(a.z, b.z);
         let shading = match flat {
@@ -100,7 +101,7 @@ impl LineJob {
                 inv_w: g.plane(a.inv_w, b.inv_w),
             },
         };
-        let over_w = varyings.iter().map(|v| g.plane(v[0] * a.inv_w, v[1] * b.inv_w));
+        let over_w = varyings.into_iter().map(|v| g.plane(v[0] * a.inv_w, v[1] * b.inv_w));
         let varyings = Varyings::new(over_w, g.plane(a.inv_w, b.inv_w));
         LineJob { setup, z, shading, varyings, sample_quad: None }
     }

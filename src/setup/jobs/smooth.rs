@@ -84,13 +84,13 @@ impl SmoothLine {
     /// Sets up the smooth line `a`–`b` of GL width `width` in a framebuffer `height` rows
     /// high; `flat` is the flat-shading color if flat shaded, `varyings` the values of the
     /// draw's varyings at `a` and `b`. `None` if it draws nothing.
-    pub fn new(
-        a: &LineVertex,
-        b: &LineVertex,
+    pub fn new<const N: usize>(
+        a: &LineVertex<N>,
+        b: &LineVertex<N>,
         width: f32,
         height: i32,
         flat: Option<[f32; 4]>,
-        varyings: &[[f32; 2]],
+        varyings: impl IntoIterator<Item = [f32; 2]>,
     ) -> Option<SmoothLine> {
         let coverage = SmoothLineCoverage::new([a.x, a.y_down], [b.x, b.y_down], width)?;
         let (lo, hi) = coverage.extent();
@@ -109,7 +109,7 @@ impl SmoothLine {
                 inv_w: plane(a.inv_w, b.inv_w),
             },
         };
-        let over_w = varyings.iter().map(|v| plane(v[0] * a.inv_w, v[1] * b.inv_w));
+        let over_w = varyings.into_iter().map(|v| plane(v[0] * a.inv_w, v[1] * b.inv_w));
         Some(SmoothLine {
             coverage,
             bounds: rect_from_down(lo, hi, height),
@@ -173,8 +173,8 @@ pub struct SmoothPoint {
 impl SmoothPoint {
     /// The smooth point at `v` (y-down window coordinates) of size `size` in a framebuffer
     /// `height` rows high, with `color` and the draw's `varyings`.
-    pub fn new(
-        v: &LineVertex,
+    pub fn new<const N: usize>(
+        v: &LineVertex<N>,
         size: f32,
         height: i32,
         color: [f32; 4],
@@ -236,11 +236,11 @@ pub struct SmoothTriangle {
 impl SmoothTriangle {
     /// Sets up a smooth triangle; as [`super::triangle::TriangleJob::new`], plus its facing.
     /// `None` for a degenerate or non-finite triangle.
-    pub fn new(
-        v: [WindowVertex; 3],
+    pub fn new<const N: usize>(
+        v: [WindowVertex<N>; 3],
         flat: Option<[f32; 4]>,
         depth_offset: f32,
-        varyings: &[[f32; 3]],
+        varyings: impl IntoIterator<Item = [f32; 3]>,
         front_facing: bool,
     ) -> Option<SmoothTriangle> {
         let p = v.map(|q| [q.x as f64, q.y as f64]);
@@ -265,7 +265,7 @@ impl SmoothTriangle {
                 inv_w: plane(inv_w),
             },
         };
-        let over_w = varyings.iter().map(|a| plane([0, 1, 2].map(|i| a[i] * inv_w[i])));
+        let over_w = varyings.into_iter().map(|a| plane([0, 1, 2].map(|i| a[i] * inv_w[i])));
         let to_i32 = |f: f64| f.clamp(i32::MIN as f64 / 2.0, i32::MAX as f64 / 2.0) as i32;
         let (xs, ys) = (p.map(|q| q[0]), p.map(|q| q[1]));
         let min = |a: [f64; 3]| a[0].min(a[1]).min(a[2]);

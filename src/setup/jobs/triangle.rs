@@ -87,9 +87,11 @@ impl ExactAttributes {
     }
 }
 
-/// The window-space inputs of one vertex.
+/// The window-space inputs of one vertex, with the `N` varying slots of the clip-space
+/// record it comes from (`crate::vertex::clip::ClipVertex`: all of them after a GLSL vertex
+/// program, the texture units' after fixed-function processing).
 #[derive(Clone, Copy, Debug)]
-pub struct WindowVertex {
+pub struct WindowVertex<const N: usize = VARYING_SLOTS> {
     pub x: f32,
     pub y: f32,
     pub z: f32,
@@ -98,7 +100,7 @@ pub struct WindowVertex {
     /// The attributes later stages may read; [`TriangleJob::new`] interpolates the ones a
     /// draw asks for.
     pub secondary_color: [f32; 4],
-    pub tex_coords: [[f32; 4]; VARYING_SLOTS],
+    pub tex_coords: [[f32; 4]; N],
     pub fog_coord: f32,
 }
 
@@ -117,9 +119,9 @@ impl TriangleJob {
     }
 
     /// As [`TriangleJob::new`], interpolating as `accuracy` says.
-    pub fn with_accuracy(
+    pub fn with_accuracy<const N: usize>(
         accuracy: Accuracy,
-        v: &[WindowVertex; 3],
+        v: &[WindowVertex<N>; 3],
         flat: Option<[f32; 4]>,
         depth_offset: f32,
         varyings: &[[f32; 3]],
@@ -132,13 +134,29 @@ impl TriangleJob {
     /// positions of `v`): its planes, made only once the caller knows the triangle may
     /// cover something (see `Scene::add_triangle`).
     #[inline]
-    pub fn with_setup(
+    pub fn with_setup<const N: usize>(
         setup: TriangleSetup,
         accuracy: Accuracy,
-        v: &[WindowVertex; 3],
+        v: &[WindowVertex<N>; 3],
         flat: Option<[f32; 4]>,
         depth_offset: f32,
         varyings: &[[f32; 3]],
+    ) -> TriangleJob {
+        Self::with_setup_by(setup, accuracy, v, flat, depth_offset, varyings.len(), |k| varyings[k])
+    }
+
+    /// As [`TriangleJob::with_setup`] with the values of varying `k` (`k < count`) at the
+    /// three vertices given by `varying(k)`: the caller reads them straight from its
+    /// vertices, with no table of them made (and zeroed) per triangle.
+    #[inline(always)]
+    pub fn with_setup_by<const N: usize>(
+        setup: TriangleSetup,
+        accuracy: Accuracy,
+        v: &[WindowVertex<N>; 3],
+        flat: Option<[f32; 4]>,
+        depth_offset: f32,
+        count: usize,
+        varying: impl Fn(usize) -> [f32; 3],
     ) -> TriangleJob {
         // Attribute values in the setup's (counter-clockwise) vertex order.
         let order = if setup.was_clockwise { [0, 2, 1] } else { [0, 1, 2] };
@@ -186,15 +204,19 @@ impl TriangleJob {
                     Shading::Flat(_) => None,
                     _ => Some(v.map(|q| q.color.map(|c| c as f64))),
                 },
-                varyings: varyings.iter().map(|a| f(order.map(|i| a[i]))).collect(),
+                varyings: (0..count).map(|k| f(varying(k))).map(|a| order.map(|i| a[i])).collect(),
             })
         });
-        let varyings = if varyings.is_empty() {
+        let varyings = if count == 0 {
             Varyings::default()
         } else if fast {
-            Varyings::affine(varyings.iter().map(|a| plane(order.map(|i| a[i]))))
+            Varyings::affine((0..count).map(|k| {
+                let a = varying(k);
+                plane(order.map(|i| a[i]))
+            }))
         } else {
-            let over_w = varyings.iter().map(|a| {
+            let over_w = (0..count).map(|k| {
+                let a = varying(k);
                 let a = order.map(|i| a[i]);
                 plane([a[0] * inv_w[0], a[1] * inv_w[1], a[2] * inv_w[2]])
             });

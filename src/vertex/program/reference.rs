@@ -13,7 +13,7 @@
 //! arithmetic, glam's operators), so the two agreeing bit for bit is a real test.
 use crate::gl::limits::MAX_TEXTURE_UNITS;
 use crate::shader::math::{exp2, log2};
-use crate::vertex::clip::ClipVertex;
+use crate::vertex::clip::FixedClipVertex as ClipVertex;
 use crate::vertex::lighting::{face_setup, scale3, set_material_parameter, FaceSetup, Lighting, NormalScaling};
 use crate::vertex::texgen::{Gen, TexGen};
 use crate::vertex::transform::{FogSource, LightingInput, Transform};
@@ -54,11 +54,7 @@ pub fn transform(t: &Transform, vertices: &[Vertex]) -> Vec<ClipVertex> {
                 color: clamp4(v.color),
                 secondary_color: clamp4(v.secondary_color),
                 back_colors: [[0.0; 4]; 2],
-                tex_coords: crate::vertex::transform::unit_slots(&if texgen.units.is_empty() {
-                    v.tex_coords
-                } else {
-                    tex_coords(texgen, v, eye)
-                }),
+                tex_coords: if texgen.units.is_empty() { v.tex_coords } else { tex_coords(texgen, v, eye) },
                 fog_coord: fog_coord(v, eye),
                 point_size: 0.0,
                 edge_flag: v.edge_flag,

@@ -305,7 +305,7 @@ fn generated_vertex_programs_give_the_bits_of_transform() {
 }
 
 /// Every bit of a clip-space vertex (NaN payloads included).
-fn clip_bits(c: &crate::vertex::clip::ClipVertex) -> Vec<u32> {
+fn clip_bits(c: &crate::vertex::clip::FixedClipVertex) -> Vec<u32> {
     let mut bits: Vec<u32> = [c.clip, c.eye, c.color, c.secondary_color, c.back_colors[0], c.back_colors[1]]
         .iter()
         .chain(&c.tex_coords)
