@@ -357,13 +357,43 @@ impl TextureStage {
     /// Compiled once per SIMD level: the lane loops of the common textures (`lanes`) run at
     /// the machine's level; other textures go quad by quad through the reference kernels.
     pub fn sample_lanes(&self, coords: &[[u32; LANES]; 4], projective: bool, live: u16, out: &mut [[u32; LANES]; 4]) {
-        crate::simd::per_level!(self.sample_lanes_body(coords, projective, live, out))
+        crate::simd::per_level!(self.sample_lanes_body(&self.sampler, coords, projective, live, out))
+    }
+
+    /// [`TextureStage::sample_lanes`] with a shader's bias argument (`bias`, f32 bits per
+    /// lane) added to each quad's λ: llvmpipe takes a quad's bias from its upper-left lane
+    /// ([`kernel::QUAD_LANES`]`[q][0]`). Quad by quad, each with its bias in a copy of the
+    /// sampler (a rare lookup: the copy is cheaper than a bias in every lookup's path).
+    pub fn sample_lanes_biased(
+        &self,
+        coords: &[[u32; LANES]; 4],
+        projective: bool,
+        bias: &[u32; LANES],
+        live: u16,
+        out: &mut [[u32; LANES]; 4],
+    ) {
+        let mut sampler = self.sampler.clone();
+        for lanes in &kernel::QUAD_LANES {
+            let quad = lanes.iter().fold(0u16, |m, &l| m | (1 << l));
+            if live & quad == 0 {
+                continue;
+            }
+            sampler.shader_bias = f32::from_bits(bias[lanes[0]]);
+            crate::simd::per_level!(self.sample_lanes_body(&sampler, coords, projective, live & quad, out))
+        }
     }
 
     // Lanes index the coordinate arrays alike.
     #[allow(clippy::needless_range_loop)]
     #[inline(always)]
-    fn sample_lanes_body(&self, coords: &[[u32; LANES]; 4], projective: bool, live: u16, out: &mut [[u32; LANES]; 4]) {
+    fn sample_lanes_body(
+        &self,
+        sampler: &sampler::Sampler,
+        coords: &[[u32; LANES]; 4],
+        projective: bool,
+        live: u16,
+        out: &mut [[u32; LANES]; 4],
+    ) {
         let mut c = [[0f32; LANES]; 3];
         if projective {
             let mut inv = [0f32; LANES];
@@ -387,11 +417,11 @@ impl TextureStage {
             }
         }
         if let Some(plan) = &self.plan {
-            if plan.sample(&self.sampler, &c, live, out) {
+            if plan.sample(sampler, &c, live, out) {
                 return;
             }
         }
-        self.kernel.sample_quads(&self.sampler, &c, live, out);
+        self.kernel.sample_quads(sampler, &c, live, out);
     }
 
     /// [`TextureStage::sample_lanes`] of coordinates already divided by q, as f32 colors
@@ -522,6 +552,7 @@ mod tests {
             mip: Some(Filter::Linear),
             border: [0.0; 4],
             lod_bias: 0.0,
+            shader_bias: 0.0,
             min_lod: -1000.0,
             max_lod: 1000.0,
             compare: None,
