@@ -749,7 +749,9 @@ impl Scene {
             .states
             .iter()
             .map(|s| {
+                // (A GLSL shader's gl_FragData[n] reach their draw buffers on the span path.)
                 let blocks = match s.multisample {
+                    _ if s.fragment.glsl.as_ref().is_some_and(|g| g.writes_data()) => false,
                     None => single_sampled,
                     Some(_) => !single_sampled && BlockPipeline::takes_samples(s),
                 };
