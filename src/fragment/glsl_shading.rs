@@ -409,7 +409,9 @@ impl GlslShading {
         for (out, target) in outputs.iter().zip(&self.outputs) {
             match *target {
                 ShaderOutput::Color { buffer: 0, channel } => colors[channel as usize & 3] = floats(out),
-                ShaderOutput::Color { buffer, channel } => data[buffer as usize - 1][channel as usize & 3] = floats(out),
+                ShaderOutput::Color { buffer, channel } => {
+                    data[buffer as usize - 1][channel as usize & 3] = floats(out)
+                }
                 ShaderOutput::Depth => {
                     // GL 2.1 §3.11.2: the shader's depth is clamped to [0, 1].
                     *z = floats(out).map(|d| if d > 0.0 { d.min(1.0) } else { 0.0 });

@@ -387,7 +387,9 @@ pub fn shade<F: Footprint>(
     let colors = &scratch.colors;
     if let Some(glsl) = fragment.glsl.as_deref().filter(|g| g.writes_data()) {
         let data = &scratch.glsl;
-        footprint.each_sample(band, &span, |band, _, at, mask| write_span_data(fragment, glsl, data, band, at, colors, *mask));
+        footprint.each_sample(band, &span, |band, _, at, mask| {
+            write_span_data(fragment, glsl, data, band, at, colors, *mask)
+        });
         return;
     }
     footprint.each_sample(band, &span, |band, _, at, mask| match uniform {

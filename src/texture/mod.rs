@@ -677,7 +677,8 @@ mod tests {
         // Per lane: λ = 1 + bias, levels 1, 2, 3 and 0 (magnified) across each row; and
         // one bias over the middle rows.
         let per_lane: [u32; LANES] = std::array::from_fn(|i| [0.0f32, 1.0, 2.0, -1.0][i % 4].to_bits());
-        let cases = [(per_lane, 0xffffu16), ([0.5f32.to_bits(); LANES], 0x0ff0), ([(-2.0f32).to_bits(); LANES], 0x0ff0)];
+        let cases =
+            [(per_lane, 0xffffu16), ([0.5f32.to_bits(); LANES], 0x0ff0), ([(-2.0f32).to_bits(); LANES], 0x0ff0)];
         let mut levels_seen = std::collections::BTreeSet::new();
         for (bias, live) in cases {
             let mut biased = [[0u32; LANES]; 4];
