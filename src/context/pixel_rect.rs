@@ -172,7 +172,7 @@ impl Context {
             z: raster.window[2],
             varyings: needed
                 .iter()
-                .map(|a| a.pick(&raster.secondary_color, raster.distance, &raster.tex_coords))
+                .map(|a| a.pick(&raster.secondary_color, raster.distance, &raster.tex_coords, 1.0 / raster.window[3]))
                 .collect(),
             source,
         });

@@ -520,6 +520,7 @@ fn compile_sampler(obj: &TextureObject, t: usize, unit_bias: f32) -> Option<Samp
         mip,
         border,
         lod_bias: bias,
+        shader_bias: 0.0,
         min_lod: p.min_lod,
         max_lod: p.max_lod,
         compare,

@@ -6,24 +6,32 @@
 //!
 //! The context wires the program once per draw state ([`GlslShading`]'s lists): what each
 //! input slot reads ([`ShaderInput`]: the primary colour, a varying the draw interpolates,
-//! `gl_FragCoord`, `gl_FrontFacing`), where each output slot goes ([`ShaderOutput`]: draw
-//! buffer 0's colour, the fragment depth), the uniform words, and each sampler's texture
+//! `gl_FragCoord`, `gl_FrontFacing`), where each output slot goes ([`ShaderOutput`]: a draw
+//! buffer's colour, the fragment depth), the uniform words, and each sampler's texture
 //! (a [`Texturing`] whose stage `i` is the program's sampler `i`, IR `Sample.unit` `i`).
+//! Two inputs come through varyings the draw interpolates like any other: `gl_FragCoord.w`
+//! is 1 over the clip w ([`ShaderInput::Reciprocal`] of `Attribute::CLIP_W`, perspective-
+//! correct, so 1/w interpolated linearly in the window), and `gl_PointCoord` is a point
+//! sprite's s and t (`Attribute::point_coord`, which a sprite replaces as GL_COORD_REPLACE
+//! replaces a texture coordinate).
 //!
 //! Unlike the fixed-function program, a shader may drop fragments (`discard`) and replace
 //! their depth (`gl_FragDepth`): then the pipeline runs it before the alpha, stencil and
 //! depth tests ([`GlslShading::late_tests`]), and both runs return the fragments that
 //! survive and leave the depths to test in their `depth` lanes.
 //!
+//! `gl_FragColor` (and `gl_FragData[0]` alone) reaches every draw buffer; a shader that
+//! writes `gl_FragData[n]` for n > 0 gives each draw buffer its own colour: the span run
+//! keeps those colours in the scratch ([`GlslShading::target_colors`]), and such a draw
+//! takes the span path (the block path has one colour per fragment).
+//!
 //! Every lane of a quad with a live lane runs when the program takes derivatives (helper
 //! lanes: their own pixel's inputs); on a span, a helper lane in the other row of the quad
 //! takes the primary colour and depth of the span's pixel in its column (the span path has
 //! no other row's colours), so `dFdy` of those is 0 there.
 //!
-//! Known differences from GL: `gl_FragCoord.w` is 1 (the draw's 1/w is not among the values
-//! a primitive hands the fragment stage); `gl_PointCoord` is (0, 0); a lookup's bias and
-//! explicit level are ignored (the unit's own bias applies); `gl_FragData[n]` for n > 0 is
-//! not written (one colour per fragment reaches the targets).
+//! Known differences from GL: `gl_PointCoord` is (0, 0) on points without GL_POINT_SPRITE;
+//! a lookup's explicit level is ignored (only vertex shaders have one).
 
 use super::block::{F32s, LANES};
 use super::shading::{quads, StageTextures};
@@ -45,8 +53,11 @@ pub enum ShaderInput {
     Primary(u8),
     /// A varying of the draw (index into the draw's varying list).
     Varying(u16),
-    /// `gl_FragCoord`'s component: window x + ½, y + ½, the depth, 1/w.
+    /// `gl_FragCoord`'s component: window x + ½, y + ½, the depth (w comes as
+    /// [`ShaderInput::Reciprocal`]).
     FragCoord(u8),
+    /// 1 over a varying of the draw: `gl_FragCoord.w`, 1 over the interpolated clip w.
+    Reciprocal(u16),
     /// `gl_FrontFacing` (a bool: 1 or 0).
     FrontFacing,
     /// Anything the draw does not supply (`gl_PointCoord`, a varying beyond the vertex
@@ -86,6 +97,12 @@ pub struct GlslShading {
     discards: bool,
     writes_depth: bool,
     derivatives: bool,
+    /// 1 + the highest n > 0 of the `gl_FragData[n]` written (0: one colour, broadcast).
+    data_buffers: usize,
+    /// Bit n: the shader writes `gl_FragData[n]`.
+    data_written: u32,
+    /// The draw buffer index of each of the band's colour targets (when `data_buffers`).
+    target_buffers: Vec<u8>,
     /// Which shading a scratch's registers were prepared for (its uniform values).
     id: u64,
 }
@@ -98,6 +115,7 @@ impl PartialEq for GlslShading {
             && self.outputs == other.outputs
             && self.uniforms == other.uniforms
             && self.textures == other.textures
+            && self.target_buffers == other.target_buffers
     }
 }
 
@@ -139,8 +157,23 @@ impl GlslShading {
     ) -> GlslShading {
         let mut traits = Traits::default();
         walk(&program.body, &mut traits);
+        let data_buffers = outputs
+            .iter()
+            .filter_map(|o| match *o {
+                ShaderOutput::Color { buffer, .. } if buffer > 0 => Some(buffer as usize + 1),
+                _ => None,
+            })
+            .max()
+            .unwrap_or(0);
+        let data_written = outputs.iter().fold(0u32, |bits, o| match *o {
+            ShaderOutput::Color { buffer, .. } => bits | 1u32.checked_shl(buffer.into()).unwrap_or(0),
+            _ => bits,
+        });
         GlslShading {
             code,
+            data_buffers,
+            data_written,
+            target_buffers: Vec::new(),
             writes_depth: outputs.contains(&ShaderOutput::Depth),
             inputs,
             outputs,
@@ -157,6 +190,32 @@ impl GlslShading {
     /// or it writes the depth.
     pub fn late_tests(&self) -> bool {
         self.discards || self.writes_depth
+    }
+
+    /// The shading with the band's colour target `i` being draw buffer `buffers[i]` (where
+    /// `gl_FragData[n]` goes).
+    pub fn with_target_buffers(mut self, buffers: Vec<u8>) -> GlslShading {
+        self.target_buffers = buffers;
+        self
+    }
+
+    /// Whether the shader writes `gl_FragData[n]` for some n > 0: then each draw buffer has
+    /// its own colour ([`GlslShading::target_colors`]), and the draw takes the span path.
+    #[inline]
+    pub fn writes_data(&self) -> bool {
+        self.data_buffers > 0
+    }
+
+    /// The colours of the span shaded last for the band's colour target `index`: its draw
+    /// buffer's `gl_FragData[n]`, or `colors` (buffer 0's) for buffer 0 and any buffer the
+    /// shader does not write.
+    #[inline]
+    pub fn target_colors<'a>(&self, scratch: &'a GlslScratch, index: usize, colors: &'a [[f32; 4]]) -> &'a [[f32; 4]] {
+        match self.target_buffers.get(index).copied().unwrap_or(0) {
+            0 => colors,
+            b if self.data_written & 1u32.checked_shl(b.into()).unwrap_or(0) == 0 => colors,
+            b => scratch.span_data.get(b as usize - 1).map_or(colors, |c| &c[..colors.len().min(c.len())]),
+        }
     }
 
     /// Whether the shader writes `gl_FragDepth` (then the depths of the runs are its).
@@ -240,6 +299,10 @@ impl GlslShading {
             return 0;
         }
         scratch.prepare(self);
+        for data in &mut scratch.span_data {
+            data.clear();
+            data.resize(n, [0.0; 4]);
+        }
         // As the fixed-function span run: lane rows 0 and 2 are the lower row of
         // llvmpipe's quads holding row `y`, the span is lane row `row` (and `row + 2`).
         let low = if (self.textures.fb_height - y) & 1 == 0 { y } else { y - 1 };
@@ -293,6 +356,9 @@ impl GlslShading {
                 let i = left + d - x0;
                 let lane = lane_of(d);
                 if kept & (1 << lane) != 0 {
+                    for (data, lanes) in scratch.span_data.iter_mut().zip(&scratch.data) {
+                        data[i as usize] = std::array::from_fn(|k| lanes[k][lane]);
+                    }
                     colors[i as usize] = std::array::from_fn(|k| primary[k][lane]);
                     depth[i as usize] = z[lane];
                     survivors |= 1 << i;
@@ -317,7 +383,7 @@ impl GlslShading {
         colors: &mut [F32s; 4],
         z: &mut F32s,
     ) -> u16 {
-        let GlslScratch { registers, inputs, varyings, outputs, prepared } = scratch;
+        let GlslScratch { registers, inputs, varyings, outputs, prepared, data, .. } = scratch;
         let compiled = self.code.compiled();
         if *prepared != self.id {
             compiled.prepare(registers, &self.uniforms);
@@ -331,6 +397,7 @@ impl GlslShading {
                 ShaderInput::FragCoord(1) => bits(py),
                 ShaderInput::FragCoord(2) => bits(z),
                 ShaderInput::FragCoord(_) => [1f32.to_bits(); LANES],
+                ShaderInput::Reciprocal(v) => bits(&varyings[v as usize].map(|w| 1.0 / w)),
                 ShaderInput::FrontFacing => [u32::from(front_facing); LANES],
                 ShaderInput::Zero => [0; LANES],
             };
@@ -342,6 +409,9 @@ impl GlslShading {
         for (out, target) in outputs.iter().zip(&self.outputs) {
             match *target {
                 ShaderOutput::Color { buffer: 0, channel } => colors[channel as usize & 3] = floats(out),
+                ShaderOutput::Color { buffer, channel } => {
+                    data[buffer as usize - 1][channel as usize & 3] = floats(out)
+                }
                 ShaderOutput::Depth => {
                     // GL 2.1 §3.11.2: the shader's depth is clamped to [0, 1].
                     *z = floats(out).map(|d| if d > 0.0 { d.min(1.0) } else { 0.0 });
@@ -372,6 +442,10 @@ pub struct GlslScratch {
     outputs: Vec<Word>,
     /// The [`GlslShading::id`] whose uniform values `registers` hold (0: none).
     prepared: u64,
+    /// `gl_FragData[n + 1]`'s lanes of a run.
+    data: Vec<[F32s; 4]>,
+    /// `gl_FragData[n + 1]` of the span shaded last, per pixel.
+    span_data: Vec<Vec<[f32; 4]>>,
 }
 
 impl GlslScratch {
@@ -382,6 +456,9 @@ impl GlslScratch {
         if self.varyings.len() < shading.varyings {
             self.varyings.resize(shading.varyings, [0.0; LANES]);
         }
+        let extra = shading.data_buffers.saturating_sub(1);
+        self.data.resize(extra, [[0.0; LANES]; 4]);
+        self.span_data.resize_with(extra, Vec::new);
     }
 }
 

@@ -385,10 +385,43 @@ pub fn shade<F: Footprint>(
         }
     }
     let colors = &scratch.colors;
+    if let Some(glsl) = fragment.glsl.as_deref().filter(|g| g.writes_data()) {
+        let data = &scratch.glsl;
+        footprint.each_sample(band, &span, |band, _, at, mask| {
+            write_span_data(fragment, glsl, data, band, at, colors, *mask)
+        });
+        return;
+    }
     footprint.each_sample(band, &span, |band, _, at, mask| match uniform {
         Some(color) => write_span_uniform(fragment, band, at, color, *mask),
         None => write_span_colors(fragment, band, at, colors, *mask),
     });
+}
+
+/// As [`write_span_colors`] for a GLSL shader that writes `gl_FragData[n]`: each colour
+/// target takes the colours of its draw buffer ([`GlslShading::target_colors`]).
+///
+/// [`GlslShading::target_colors`]: super::glsl_shading::GlslShading::target_colors
+#[inline(never)]
+fn write_span_data(
+    fragment: &FragmentState,
+    glsl: &super::glsl_shading::GlslShading,
+    data: &super::glsl_shading::GlslScratch,
+    band: &mut Band<'_>,
+    span: &Span,
+    colors: &[[f32; 4]],
+    live: u64,
+) {
+    for (index, (target, mask)) in band.colors.iter_mut().zip(&fragment.color_masks).enumerate() {
+        let Some(mask) = *mask else { continue };
+        let colors = glsl.target_colors(data, index, colors);
+        if fragment.target_has_ops(index) {
+            let ops = fragment.target_ops(index, mask);
+            write_target(&mut target.pixels, span.row_start, span.x0, span.y, colors, live, &ops);
+        } else {
+            write_colors(&mut target.pixels, span.row_start, colors, live, mask, fragment.clamp_float);
+        }
+    }
 }
 
 /// The colors of a span's fragments: the interpolated (or flat) colors, then the draw's

@@ -24,7 +24,7 @@
 use super::block::{F32s, LANES};
 use super::program::{CompiledFragment, FragmentInput, FragmentKey};
 use super::FragmentState;
-use crate::shader::exec::{Io, SampleRequest, Textures, Word};
+use crate::shader::exec::{Io, LodLanes, SampleRequest, Textures, Word};
 use crate::shader::fast::{lane_mask, Bound, Registers};
 use crate::shader::lower::R;
 use crate::texture::Texturing;
@@ -445,7 +445,29 @@ impl Textures for StageTextures<'_> {
             *out = [[0; LANES], [0; LANES], [0; LANES], [1f32.to_bits(); LANES]];
             return;
         };
-        stage.sample_lanes(r.coords, r.projective, r.lanes & self.used, out);
+        let live = r.lanes & self.used;
+        // The sampler reads (s, t, r, q): a GLSL lookup of fewer than three coordinates
+        // has its q right after them, and a shadow lookup its depth reference apart.
+        let moved;
+        let coords = if (r.projective && r.n < 3) || r.compare.is_some() {
+            let mut c = *r.coords;
+            if r.projective && r.n < 3 {
+                c[3] = r.coords[r.n as usize];
+                c[r.n as usize..3].fill([0; LANES]);
+            }
+            if let Some(reference) = r.compare {
+                c[2] = *reference;
+            }
+            moved = c;
+            &moved
+        } else {
+            r.coords
+        };
+        match r.lod {
+            LodLanes::Bias(bias) => stage.sample_lanes_biased(coords, r.projective, bias, live, out),
+            // Only vertex programs give an explicit level; fragment stages take the implicit.
+            LodLanes::Implicit | LodLanes::Explicit(_) => stage.sample_lanes(coords, r.projective, live, out),
+        }
     }
 
     fn fetch(&self, _: u8, _: u8, _: &[Word; 3], _: &Word, _: u16, out: &mut [Word; 4]) {

@@ -633,6 +633,8 @@ impl Scene {
         state.multisample.is_none()
             && state.polygon_stipple.is_none()
             && f.alpha.is_none()
+            // A GLSL shader that may discard leaves some pixels as they were.
+            && !f.late_tests()
             && f.stencil.is_none()
             && f.logic_op.is_none()
             && f.depth.is_none_or(|d| d.func == crate::gl::CompareFunc::Always)
@@ -749,7 +751,9 @@ impl Scene {
             .states
             .iter()
             .map(|s| {
+                // (A GLSL shader's gl_FragData[n] reach their draw buffers on the span path.)
                 let blocks = match s.multisample {
+                    _ if s.fragment.glsl.as_ref().is_some_and(|g| g.writes_data()) => false,
                     None => single_sampled,
                     Some(_) => !single_sampled && BlockPipeline::takes_samples(s),
                 };

@@ -179,7 +179,7 @@ impl Plan {
             // With a mipmap blend, llvmpipe's piecewise linear log₂; the others exact.
             let half = if sampler.mip == Some(Filter::Linear) { 0.5 * fast_log2(rho2[q]) } else { 0.5 * log2(rho2[q]) };
             // Clamped as `Sampler::lambda` clamps (the maximum wins; NaN stays NaN).
-            let mut l = half + sampler.lod_bias;
+            let mut l = (half + sampler.shader_bias) + sampler.lod_bias;
             if l < sampler.min_lod {
                 l = sampler.min_lod;
             }

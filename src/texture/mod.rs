@@ -402,13 +402,51 @@ impl TextureStage {
     /// Compiled once per SIMD level: the lane loops of the common textures (`lanes`) run at
     /// the machine's level; other textures go quad by quad through the reference kernels.
     pub fn sample_lanes(&self, coords: &[[u32; LANES]; 4], projective: bool, live: u16, out: &mut [[u32; LANES]; 4]) {
-        crate::simd::per_level!(self.sample_lanes_body(coords, projective, live, out))
+        crate::simd::per_level!(self.sample_lanes_body(&self.sampler, coords, projective, live, out))
+    }
+
+    /// [`TextureStage::sample_lanes`] with a shader's bias argument (`bias`, f32 bits per
+    /// lane) added to λ: per lane, as llvmpipe takes a bias that varies (the derivatives
+    /// stay per 2×2 quad). One lookup per distinct bias, each with that bias in a copy of
+    /// the sampler (a rare lookup: the copy is cheaper than a bias in every lookup's path;
+    /// a bias uniform over the block is one lookup).
+    pub fn sample_lanes_biased(
+        &self,
+        coords: &[[u32; LANES]; 4],
+        projective: bool,
+        bias: &[u32; LANES],
+        live: u16,
+        out: &mut [[u32; LANES]; 4],
+    ) {
+        let mut sampler = self.sampler.clone();
+        let mut rest = live;
+        while rest != 0 {
+            let value = bias[rest.trailing_zeros() as usize];
+            let lanes = (0..LANES).fold(0u16, |m, l| m | (u16::from(bias[l] == value) << l)) & rest;
+            rest &= !lanes;
+            sampler.shader_bias = f32::from_bits(value);
+            // The lane loops may write every lane: into a copy, then the lanes taken.
+            let mut texels = *out;
+            crate::simd::per_level!(self.sample_lanes_body(&sampler, coords, projective, lanes, &mut texels));
+            for (channel, values) in out.iter_mut().zip(&texels) {
+                for l in (0..LANES).filter(|l| lanes & (1 << l) != 0) {
+                    channel[l] = values[l];
+                }
+            }
+        }
     }
 
     // Lanes index the coordinate arrays alike.
     #[allow(clippy::needless_range_loop)]
     #[inline(always)]
-    fn sample_lanes_body(&self, coords: &[[u32; LANES]; 4], projective: bool, live: u16, out: &mut [[u32; LANES]; 4]) {
+    fn sample_lanes_body(
+        &self,
+        sampler: &sampler::Sampler,
+        coords: &[[u32; LANES]; 4],
+        projective: bool,
+        live: u16,
+        out: &mut [[u32; LANES]; 4],
+    ) {
         let mut c = [[0f32; LANES]; 3];
         if projective {
             let mut inv = [0f32; LANES];
@@ -432,11 +470,11 @@ impl TextureStage {
             }
         }
         if let Some(plan) = &self.plan {
-            if plan.sample(&self.sampler, &c, live, out) {
+            if plan.sample(sampler, &c, live, out) {
                 return;
             }
         }
-        self.kernel.sample_quads(&self.sampler, &c, live, out);
+        self.kernel.sample_quads(sampler, &c, live, out);
     }
 
     /// [`TextureStage::sample_lanes`] of coordinates already divided by q, as f32 colors
@@ -582,6 +620,7 @@ mod tests {
             mip: Some(Filter::Linear),
             border: [0.0; 4],
             lod_bias: 0.0,
+            shader_bias: 0.0,
             min_lod: -1000.0,
             max_lod: 1000.0,
             compare: None,
@@ -668,5 +707,51 @@ mod tests {
         assert_eq!(next.depth_format(), Some(format));
         assert_eq!((next.depth_f32(0), next.stencil(0)), (depth_texel(DepthEncoding::Unorm(24), 0x80_0000), 7));
         assert_eq!(level_size(5, 9), 1);
+    }
+
+    // A lane indexes coordinates, colors and biases alike.
+    #[allow(clippy::needless_range_loop)]
+    #[test]
+    fn a_lookups_bias_adds_to_each_lanes_level_of_detail() {
+        // A mipmap of one colour per level, minified 2× (λ = 1 without a bias): each lane's
+        // bias picks its own level (per lane, as llvmpipe's varying bias), and a bias equal
+        // in every lane reads as a texture bias of that value does.
+        use std::sync::Arc;
+        let mut levels = Vec::new();
+        for (d, n) in [16usize, 8, 4, 2, 1].into_iter().enumerate() {
+            let mut img = TexImage::new(n, n, 1, 0, BaseFormat::Rgba).unwrap();
+            img.texels = Texels::Rgba8(vec![[d as u8 * 50, 0, 0, 255]; n * n]);
+            levels.push(Arc::new(img));
+        }
+        let mut sampler = trilinear_rgba(levels);
+        sampler.mip = Some(sampler::Filter::Nearest);
+        sampler.min = sampler::Filter::Nearest;
+        let env = env::TexEnv { mode: env::EnvMode::Replace, base: BaseFormat::Rgba, color: [0.0; 4] };
+        let stage = TextureStage::new(0, sampler.clone(), env, 0);
+        let coords: [[u32; LANES]; 4] = std::array::from_fn(|j| {
+            std::array::from_fn(|i| {
+                let (x, y) = ((i & 3) as f32, (i >> 2) as f32);
+                [x * 2.0 / 16.0, y * 2.0 / 16.0, 0.0, 1.0][j].to_bits()
+            })
+        });
+        // Per lane: λ = 1 + bias, levels 1, 2, 3 and 0 (magnified) across each row; and
+        // one bias over the middle rows.
+        let per_lane: [u32; LANES] = std::array::from_fn(|i| [0.0f32, 1.0, 2.0, -1.0][i % 4].to_bits());
+        let cases =
+            [(per_lane, 0xffffu16), ([0.5f32.to_bits(); LANES], 0x0ff0), ([(-2.0f32).to_bits(); LANES], 0x0ff0)];
+        let mut levels_seen = std::collections::BTreeSet::new();
+        for (bias, live) in cases {
+            let mut biased = [[0u32; LANES]; 4];
+            stage.sample_lanes_biased(&coords, false, &bias, live, &mut biased);
+            for i in (0..LANES).filter(|i| live & (1 << i) != 0) {
+                let mut with_texture_bias = sampler.clone();
+                with_texture_bias.lod_bias = f32::from_bits(bias[i]);
+                let mut expected = [[0u32; LANES]; 4];
+                TextureStage::new(0, with_texture_bias, env, 0).sample_lanes(&coords, false, live, &mut expected);
+                assert_eq!(biased.map(|c| c[i]), expected.map(|c| c[i]), "bias {} lane {i}", f32::from_bits(bias[i]));
+                levels_seen.insert(biased[0][i]);
+            }
+        }
+        assert_eq!(levels_seen.len(), 4, "levels 0 to 3 read");
     }
 }

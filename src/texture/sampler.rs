@@ -75,6 +75,9 @@ pub struct Sampler {
     pub border: [f32; 4],
     /// Texture object bias plus the unit's GL_TEXTURE_LOD_BIAS (clamped).
     pub lod_bias: f32,
+    /// The bias argument of a shader's lookup (`texture2D(s, c, bias)`), added to log₂ ρ
+    /// before `lod_bias`, as llvmpipe adds them (0 for every other lookup: then exact).
+    pub shader_bias: f32,
     pub min_lod: f32,
     pub max_lod: f32,
     /// GL_TEXTURE_COMPARE_MODE COMPARE_R_TO_TEXTURE on a depth image.
@@ -424,7 +427,7 @@ impl Sampler {
         let half_log2 = if self.mip == Some(Filter::Linear) { 0.5 * fast_log2(rho2) } else { 0.5 * log2(rho2) };
         // As `f32::clamp`, without its panic when GL_TEXTURE_MIN_LOD > GL_TEXTURE_MAX_LOD
         // (then the maximum wins, as in llvmpipe); NaN stays NaN.
-        let mut lambda = half_log2 + self.lod_bias;
+        let mut lambda = (half_log2 + self.shader_bias) + self.lod_bias;
         if lambda < self.min_lod {
             lambda = self.min_lod;
         }
@@ -668,6 +671,7 @@ mod tests {
             mip: None,
             border: [0.0, 0.0, 1.0, 1.0],
             lod_bias: 0.0,
+            shader_bias: 0.0,
             min_lod: -1000.0,
             max_lod: 1000.0,
             compare: None,

@@ -5,7 +5,10 @@ use crate::setup::jobs::triangle::WindowVertex;
 
 /// A scalar vertex attribute that a draw's later stages read per fragment: a channel of the
 /// secondary color (GL_COLOR_SUM), the fog coordinate (GL_FOG), or a component of a unit's
-/// texture coordinates (the unit has a texture target enabled).
+/// texture coordinates (the unit has a texture target enabled), or the clip w (a GLSL
+/// fragment shader's `gl_FragCoord.w` is 1 over it, interpolated perspective-correctly),
+/// or a component of `gl_PointCoord` (0 at a vertex; a point sprite replaces it by its s or t,
+/// [`crate::vertex::point::PointSprites`]).
 ///
 /// Plain numbers rather than an enum with payloads, so that every byte of a list of them is
 /// initialised: valgrind's memcheck (tools/memcheck.sh) flags the optimised code's reads of
@@ -22,13 +25,25 @@ enum AttributeKind {
     SecondaryColor,
     FogCoord,
     TexCoord,
+    ClipW,
+    PointCoord,
 }
 
 impl Attribute {
     pub const FOG_COORD: Attribute = Attribute { kind: AttributeKind::FogCoord, unit: 0, component: 0 };
+    pub const CLIP_W: Attribute = Attribute { kind: AttributeKind::ClipW, unit: 0, component: 0 };
 
     pub fn secondary_color(component: usize) -> Attribute {
         Attribute { kind: AttributeKind::SecondaryColor, unit: 0, component: component as u8 }
+    }
+
+    pub fn point_coord(component: usize) -> Attribute {
+        Attribute { kind: AttributeKind::PointCoord, unit: 0, component: component as u8 }
+    }
+
+    /// The component (s 0, t 1) of a `gl_PointCoord` attribute.
+    pub fn point_coordinate(self) -> Option<usize> {
+        (self.kind == AttributeKind::PointCoord).then_some(self.component as usize)
     }
 
     pub fn tex_coord(unit: usize, component: usize) -> Attribute {
@@ -42,10 +57,12 @@ impl Attribute {
 
     /// This attribute among a vertex's secondary color, fog coordinate and texture coordinates
     /// (a slot the record lacks, beyond a fixed-function vertex's units, is zero: see
-    /// [`crate::vertex::clip::ClipVertex`]).
+    /// [`crate::vertex::clip::ClipVertex`]). The clip w is 1 over the vertex's `inv_w`.
     #[inline(always)]
-    pub fn pick(self, secondary_color: &[f32; 4], fog_coord: f32, tex_coords: &[[f32; 4]]) -> f32 {
+    pub fn pick(self, secondary_color: &[f32; 4], fog_coord: f32, tex_coords: &[[f32; 4]], inv_w: f32) -> f32 {
         match self.kind {
+            AttributeKind::ClipW => 1.0 / inv_w,
+            AttributeKind::PointCoord => 0.0,
             AttributeKind::SecondaryColor => secondary_color[self.component as usize],
             AttributeKind::FogCoord => fog_coord,
             AttributeKind::TexCoord => {
@@ -56,12 +73,12 @@ impl Attribute {
 
     #[inline(always)]
     pub fn of<const N: usize>(self, v: &WindowVertex<N>) -> f32 {
-        self.pick(&v.secondary_color, v.fog_coord, &v.tex_coords)
+        self.pick(&v.secondary_color, v.fog_coord, &v.tex_coords, v.inv_w)
     }
 
     /// The attribute at a line or point vertex.
     pub fn of_line<const N: usize>(self, v: &LineVertex<N>) -> f32 {
-        self.pick(&v.secondary_color, v.fog_coord, &v.tex_coords)
+        self.pick(&v.secondary_color, v.fog_coord, &v.tex_coords, v.inv_w)
     }
 }
 

@@ -75,6 +75,10 @@ impl PointSprites {
         let replaced = varyings
             .iter()
             .map(|v| {
+                // A fragment shader's gl_PointCoord: s and t whatever GL_COORD_REPLACE says.
+                if let Some(component) = v.point_coordinate() {
+                    return Some([SpriteCoord::S, SpriteCoord::T][component & 1]);
+                }
                 let (_, component) = v.texture_coordinate().filter(|&(unit, _)| coord_replace(unit))?;
                 Some([SpriteCoord::S, SpriteCoord::T, SpriteCoord::R, SpriteCoord::Q][component])
             })

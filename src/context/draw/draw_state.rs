@@ -104,7 +104,9 @@ impl Context {
             // The shader replaces texturing, the colour sum and fog.
             fragment.color_sum = false;
             fragment.fog = None;
-            fragment.glsl = Some(Arc::new(self.glsl_shading(executable, stage, height as i32)));
+            let buffers = buffer_of.iter().map(|b| b.unwrap_or(0) as u8).collect();
+            let shading = self.glsl_shading(executable, stage, height as i32).with_target_buffers(buffers);
+            fragment.glsl = Some(Arc::new(shading));
             let samples_passed = self.queries.active_counter();
             let multisample = self.multisample_state(self.framebuffer_samples());
             return DrawState { fragment, clip, fill_clip, polygon_stipple, samples_passed, multisample };
@@ -172,8 +174,14 @@ impl ShaderWiring {
                 "gl_Color" => ShaderInput::Primary(w.index as u8),
                 "gl_SecondaryColor" => varying(Attribute::secondary_color(w.index as usize & 3)),
                 "gl_FogFragCoord" => varying(Attribute::FOG_COORD),
+                // w: 1 over the clip w, interpolated as a varying (perspective-correctly).
+                "gl_FragCoord" if w.index == 3 => match varying(Attribute::CLIP_W) {
+                    ShaderInput::Varying(v) => ShaderInput::Reciprocal(v),
+                    other => other,
+                },
                 "gl_FragCoord" => ShaderInput::FragCoord(w.index as u8),
                 "gl_FrontFacing" => ShaderInput::FrontFacing,
+                "gl_PointCoord" => varying(Attribute::point_coord(w.index as usize & 1)),
                 name => match executable.varyings.index_of(name, w.index).map(usize::from) {
                     Some(k) if k / 4 < slots => varying(Attribute::tex_coord(k / 4, k % 4)),
                     _ => ShaderInput::Zero,

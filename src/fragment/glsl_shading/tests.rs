@@ -14,8 +14,8 @@ impl ShaderCode for Code {
 }
 
 /// The shading of the fragment shader `source` on a framebuffer `fb_height` rows high:
-/// `gl_Color`, `gl_FragCoord` and `gl_FrontFacing` wired to the fragment's own,
-/// `gl_TexCoord[0]` to varyings 0..4.
+/// `gl_Color`, `gl_FragCoord` and `gl_FrontFacing` wired to the fragment's own (w: 1 over
+/// varying 3), `gl_TexCoord[0]` to varyings 0..4, `gl_FragData[n]` to draw buffer n.
 fn shading(source: &str, fb_height: i32) -> GlslShading {
     let mut log = InfoLog::default();
     let checked = compile_shader(source, Stage::Fragment, &Options::default(), &mut log)
@@ -26,6 +26,7 @@ fn shading(source: &str, fb_height: i32) -> GlslShading {
         .iter()
         .map(|w| match w.name.as_str() {
             "gl_Color" => ShaderInput::Primary(w.index as u8),
+            "gl_FragCoord" if w.index == 3 => ShaderInput::Reciprocal(3),
             "gl_FragCoord" => ShaderInput::FragCoord(w.index as u8),
             "gl_FrontFacing" => ShaderInput::FrontFacing,
             "gl_TexCoord[0]" => ShaderInput::Varying(w.index as u16),
@@ -38,7 +39,10 @@ fn shading(source: &str, fb_height: i32) -> GlslShading {
         .map(|w| match w.name.as_str() {
             "gl_FragColor" => ShaderOutput::Color { buffer: 0, channel: w.index as u8 },
             "gl_FragDepth" => ShaderOutput::Depth,
-            _ => ShaderOutput::Unused,
+            name => match name.strip_prefix("gl_FragData[").and_then(|n| n.strip_suffix(']')?.parse::<u8>().ok()) {
+                Some(buffer) => ShaderOutput::Color { buffer, channel: w.index as u8 },
+                None => ShaderOutput::Unused,
+            },
         })
         .collect();
     let code = Arc::new(Code(Compiled::new(&lowered.program)));
@@ -136,11 +140,48 @@ fn the_fragments_own_inputs_reach_the_shader() {
         let mut scratch = GlslScratch::default();
         let mut colors = [[0.0; LANES]; 4];
         let mut depth = [0.0; LANES];
-        let kept = s.run_block(&mut scratch, 4, 0, 0xffff, front, &mut colors, &mut depth, |_, _, _, _| {});
+        // Varying 3 (the clip w in a draw) is 4 in lane 0, 2 elsewhere.
+        let kept = s.run_block(&mut scratch, 4, 0, 0xffff, front, &mut colors, &mut depth, |_, _, _, v| {
+            v[3] = std::array::from_fn(|i| if i == 0 { 4.0 } else { 2.0 });
+        });
         assert_eq!(kept, 0xffff);
         assert_eq!(colors[0][6], 6.5, "x of lane 6 (column 2)");
         assert_eq!(colors[1][6], 1.5, "y of lane 6 (row 1)");
-        assert_eq!(colors[2][0], 1.0);
+        assert_eq!((colors[2][0], colors[2][1]), (0.25, 0.5), "gl_FragCoord.w is 1 over the clip w");
         assert_eq!(colors[3][9], if front { 1.0 } else { 0.0 });
+    }
+}
+
+#[test]
+fn each_draw_buffer_takes_its_frag_data() {
+    assert!(!shading("void main() { gl_FragColor = vec4(1.0); }", 8).writes_data());
+    assert!(!shading("void main() { gl_FragData[0] = vec4(1.0); }", 8).writes_data());
+    let s = shading(
+        "void main() {\n\
+             gl_FragData[0] = vec4(0.25);\n\
+             if (gl_FragCoord.x > 5.0) discard;\n\
+             gl_FragData[2] = vec4(gl_FragCoord.x, gl_TexCoord[0].x, 0.5, 1.0);\n\
+         }\n",
+        8,
+    )
+    // The band's targets: draw buffers 2, 0 and 1.
+    .with_target_buffers(vec![2, 0, 1]);
+    assert!(s.writes_data() && s.late_tests());
+    let mut scratch = GlslScratch::default();
+    let mut colors = vec![[0.0; 4]; 6];
+    let mut depth = vec![0.0; 6];
+    let kept = s.run_span(&mut scratch, 1, 3, 0b111110, true, &mut colors, &mut depth, |dx, _, out| {
+        out[0] = dx as f32 * 0.125;
+    });
+    // Columns 1..7, the first not live; x + ½ > 5 discards columns 5 and 6.
+    assert_eq!(kept, 0b001110);
+    let buffer2 = s.target_colors(&scratch, 0, &colors);
+    let buffer0 = s.target_colors(&scratch, 1, &colors);
+    let buffer1 = s.target_colors(&scratch, 2, &colors);
+    for i in (0..6).filter(|i| kept & (1 << i) != 0) {
+        assert_eq!(buffer0[i], [0.25; 4]);
+        assert_eq!(buffer2[i], [(1 + i) as f32 + 0.5, i as f32 * 0.125, 0.5, 1.0], "pixel {i}");
+        // Buffer 1 is not written: it takes buffer 0's colour.
+        assert_eq!(buffer1[i], [0.25; 4]);
     }
 }
