@@ -772,3 +772,91 @@ fn front_end_timing() {
         );
     }
 }
+
+/// The shader of [`front_end_stack`]: `depth` levels of one kind of nesting in one
+/// expression (`sum`: a left-deep chain of `+`; the others nest to the right).
+fn nested_shader(shape: &str, depth: usize) -> String {
+    let expr = match shape {
+        "sum" => vec!["a"; depth + 1].join(" + "),
+        "neg" => format!("{}a{}", "-(".repeat(depth), ")".repeat(depth)),
+        "call" => format!("{}a{}", "sin(".repeat(depth), ")".repeat(depth)),
+        "user" => format!("{}a{}", "f(".repeat(depth), ")".repeat(depth)),
+        "construct" => format!("{}a{}", "float(".repeat(depth), ")".repeat(depth)),
+        "right" => format!("{}a{}", "a * (".repeat(depth), ")".repeat(depth)),
+        "conditional" => format!("{}a{}", "b ? a : (".repeat(depth), ")".repeat(depth)),
+        "index" => format!("v[{}0{}]", "i[".repeat(depth), "]".repeat(depth)),
+        "assign" => format!("{}a", "a = ".repeat(depth)),
+        "and" => format!("float({})", vec!["b"; depth + 1].join(" && ")),
+        _ => panic!("shape {shape}"),
+    };
+    format!(
+        "#version 120\nuniform float a; uniform bool b; uniform int i[4]; uniform float v[4];\n\
+         float f(float x) {{ return x * 2.0; }}\n\
+         void main() {{ float a = a; gl_FragColor = vec4({expr}); }}\n"
+    )
+}
+
+/// Runs the whole front end (compile, link, lowering, freeing) on a thread of
+/// `GFRONT_STACK` bytes for the shader of `GFRONT_SHAPE` nested `GFRONT_DEPTH` deep (run by
+/// hand, one process per size, to find the stack each level costs: an overflow aborts).
+#[test]
+#[ignore]
+fn front_end_stack() {
+    let var = |n: &str| std::env::var(n).unwrap_or_else(|_| panic!("{n}"));
+    let stack: usize = var("GFRONT_STACK").parse().unwrap();
+    let depth: usize = var("GFRONT_DEPTH").parse().unwrap();
+    let source = nested_shader(&var("GFRONT_SHAPE"), depth);
+    let ok = std::thread::Builder::new()
+        .stack_size(stack)
+        .spawn(move || {
+            let mut log = InfoLog::default();
+            let checked = compile_shader(&source, Stage::Fragment, &Options::default(), &mut log);
+            let Some(checked) = checked else { return Err(log.text()) };
+            let checked = std::sync::Arc::new(checked);
+            let _ = super::link::recursive_functions(&checked);
+            super::link::link(std::slice::from_ref(&checked), &[])?;
+            super::lower::lower(&[&checked])?;
+            Ok(())
+        })
+        .unwrap()
+        .join()
+        .unwrap();
+    println!("result {ok:?}");
+}
+
+/// Times the phases of a shader of `GFRONT_FUNCTIONS` (100 000 unless set) one-line
+/// functions, `main` calling the last (run by hand, `-- --ignored --nocapture`): every
+/// phase should be linear in the number of functions.
+#[test]
+#[ignore]
+fn many_functions_timing() {
+    let n: usize = std::env::var("GFRONT_FUNCTIONS").map_or(100_000, |v| v.parse().unwrap());
+    let mut src = String::from("#version 120\n");
+    for i in 0..n {
+        src.push_str(&format!("float f{i}(float x) {{ return x * {i}.0 + 1.0; }}\n"));
+    }
+    src.push_str(&format!("void main() {{ gl_FragColor = vec4(f{}(gl_Color.x)); }}\n", n - 1));
+    let start = std::time::Instant::now();
+    let mut log = InfoLog::default();
+    let parsed = parse_shader(&src, &Options::default(), &mut log).expect("parses");
+    let t_parse = start.elapsed();
+    let start = std::time::Instant::now();
+    let checked = super::check::check(&parsed, Stage::Fragment, &super::Limits::default(), &mut log).expect("checks");
+    let t_check = start.elapsed();
+    let checked = std::sync::Arc::new(checked);
+    let start = std::time::Instant::now();
+    assert!(super::link::recursive_functions(&checked).is_empty());
+    let t_recursion = start.elapsed();
+    let start = std::time::Instant::now();
+    super::link::link(std::slice::from_ref(&checked), &[]).expect("links");
+    let t_link = start.elapsed();
+    let start = std::time::Instant::now();
+    super::lower::lower(&[&checked]).expect("lowers");
+    let t_lower = start.elapsed();
+    let start = std::time::Instant::now();
+    drop((parsed, checked));
+    let t_drop = start.elapsed();
+    println!(
+        "{n} functions: parse {t_parse:?}, check {t_check:?}, recursion {t_recursion:?}, link {t_link:?}, lower {t_lower:?}, free {t_drop:?}"
+    );
+}
