@@ -12,8 +12,8 @@
 //! An error does not end the check: the construct that failed has no type and its parents
 //! say nothing more about it (no cascades), and the next statement is checked, so that a log
 //! lists what a person needs to fix, as Mesa's does. Expressions nest without bound in the
-//! syntax tree (`a+a+...+a` is left-deep), so the checker counts its own depth and refuses
-//! past [`MAX_DEPTH`].
+//! syntax tree (`a+a+...+a` is left-deep), so the checker counts the tree's depth and refuses
+//! past [`MAX_DEPTH`]; a left-deep chain it checks in a loop, not by recursion.
 
 use super::ast::{self, ParameterDirection, Storage};
 use super::builtins::{self, Access, Limits, Signature};
@@ -23,8 +23,17 @@ use super::hir::*;
 use std::collections::HashMap;
 use std::sync::Arc;
 
-/// The deepest expression or statement nesting the checker follows.
-pub const MAX_DEPTH: usize = 512;
+/// The deepest expression or statement nesting the checker follows: the height of the
+/// tree below a function body, which the later passes (the link's walk, the lowering,
+/// freeing) follow recursively. Room for the parser's longest chain
+/// ([`super::parse::MAX_CHAIN`], 512 operators, which the checker walks in a loop) and
+/// 128 levels around it (piglit's `op-selection-*` tests sum 512 terms in one expression).
+/// Measured (release build, whole front end: parse, check, link, lowering, freeing), a
+/// level of a chain costs about 1 KB of stack and a level of nesting (parentheses, calls,
+/// unary operators) 2–4 KB, of which the parser's [`super::parse::MAX_NESTING`] of 256
+/// allows at most 256: the worst tree takes about 1.5 MB, within the 2 MB of a thread
+/// Rust spawns (and the 8 MB of a main thread).
+pub const MAX_DEPTH: usize = 640;
 
 #[derive(Clone)]
 enum Symbol {

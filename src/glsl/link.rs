@@ -236,15 +236,13 @@ fn merged_type(
     if !same_type(ea, eb) || !(a_implicit || b_implicit) {
         return Err(None);
     }
-    match (a_implicit, b_implicit) {
-        (true, true) => Ok((Type::Array(ea.clone(), (*na).max(*nb)), true)),
-        (false, _) | (_, false) => {
-            let (sized, n, used) = if a_implicit { (b, nb, na) } else { (a, na, nb) };
-            match (n, used) {
-                (Some(n), Some(m)) if m > n => Err(Some((sized.clone(), m - 1))),
-                _ => Ok((sized.clone(), false)),
-            }
-        }
+    if a_implicit && b_implicit {
+        return Ok((Type::Array(ea.clone(), (*na).max(*nb)), true));
+    }
+    let (sized, n, used) = if a_implicit { (b, nb, na) } else { (a, na, nb) };
+    match (n, used) {
+        (Some(n), Some(m)) if m > n => Err(Some((sized.clone(), m - 1))),
+        _ => Ok((sized.clone(), false)),
     }
 }
 

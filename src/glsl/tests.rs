@@ -489,7 +489,7 @@ fn long_operator_chains_are_an_error_not_a_crash() {
         assert!(checked.is_none(), "{what}");
         assert!(log.text().contains("operators in a row"), "{what}: {}", log.text());
     }
-    let sum = vec!["a"; 400].join("+");
+    let sum = vec!["a"; 512].join("+");
     let mut log = InfoLog::default();
     let source = format!("void main() {{ float a = 1.0; gl_FragColor = vec4({sum}); }}");
     assert!(
@@ -497,6 +497,45 @@ fn long_operator_chains_are_an_error_not_a_crash() {
         "{}",
         log.text()
     );
+}
+
+/// The whole front end (compile, link, lowering) on a thread of 2 MB, Rust's default for a
+/// spawned thread, at the bounds: the longest chain (piglit's `op-selection-*`: 511 `+`
+/// inside a constructor) compiles, and so does a chain under 100 levels of nesting; a
+/// chain under 200 levels passes [`super::check::MAX_DEPTH`] and is an error, not an
+/// overflow.
+#[test]
+fn chains_at_the_bounds_compile_on_a_small_stack() {
+    let run = |source: String| {
+        std::thread::Builder::new()
+            .stack_size(2 << 20)
+            .spawn(move || {
+                let mut log = InfoLog::default();
+                let checked = compile_shader(&source, Stage::Fragment, &Options::default(), &mut log);
+                let Some(checked) = checked else { return Err(log.text()) };
+                let checked = std::sync::Arc::new(checked);
+                super::link::link(std::slice::from_ref(&checked), &[])?;
+                super::lower::lower(&[&checked]).map(|_| ())
+            })
+            .unwrap()
+            .join()
+            .unwrap()
+    };
+    let chain = vec!["u[0]"; 512].join(" + ");
+    let nested = |levels: usize| {
+        format!(
+            "#version 120\nuniform float u[2];\nvoid main() {{ gl_FragColor = vec4({}{chain}{}); }}",
+            "u[1] * (".repeat(levels),
+            ")".repeat(levels)
+        )
+    };
+    run(nested(0)).unwrap();
+    run(nested(100)).unwrap();
+    assert!(run(nested(200)).unwrap_err().contains("expression nesting deeper than 640 levels"));
+    let lengths: Vec<String> = (0..512).map(|i| format!("a{i}.length()")).collect();
+    let arrays: String = (0..512).map(|i| format!("float a{i}[1];")).collect();
+    let source = format!("#version 120\nvoid main() {{ {arrays} gl_FragColor = vec4({}); }}", lengths.join(" + "));
+    run(source).unwrap();
 }
 
 // ---------------------------------------------------------------- piglit
@@ -836,8 +875,18 @@ fn many_functions_timing() {
         src.push_str(&format!("float f{i}(float x) {{ return x * {i}.0 + 1.0; }}\n"));
     }
     src.push_str(&format!("void main() {{ gl_FragColor = vec4(f{}(gl_Color.x)); }}\n", n - 1));
-    let start = std::time::Instant::now();
     let mut log = InfoLog::default();
+    let start = std::time::Instant::now();
+    let pre = super::preprocess::preprocess(&src, &Options::default(), &mut log);
+    let t_pre = start.elapsed();
+    let start = std::time::Instant::now();
+    let tokens = super::lex::classify(&pre.tokens, pre.version, pre.end, &mut log);
+    let t_lex = start.elapsed();
+    let start = std::time::Instant::now();
+    drop(super::parse::parse(&tokens, pre.version, &mut log).ok().expect("parses"));
+    let t_syntax = start.elapsed();
+    println!("{n} functions: preprocess {t_pre:?}, tokens {t_lex:?}, parse {t_syntax:?}");
+    let start = std::time::Instant::now();
     let parsed = parse_shader(&src, &Options::default(), &mut log).expect("parses");
     let t_parse = start.elapsed();
     let start = std::time::Instant::now();
