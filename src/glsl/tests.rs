@@ -883,7 +883,7 @@ fn many_functions_timing() {
     let tokens = super::lex::classify(&pre.tokens, pre.version, pre.end, &mut log);
     let t_lex = start.elapsed();
     let start = std::time::Instant::now();
-    drop(super::parse::parse(&tokens, pre.version, &mut log).ok().expect("parses"));
+    drop(super::parse::parse(&tokens, pre.version, &mut log).expect("parses"));
     let t_syntax = start.elapsed();
     drop((pre, tokens));
     println!("{n} functions: preprocess {t_pre:?}, tokens {t_lex:?}, parse {t_syntax:?}");

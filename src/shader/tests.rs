@@ -1012,24 +1012,8 @@ fn min_and_max_with_a_nan_operand_give_the_other_operand() {
     let fused = compiled.code().ops.iter().filter(|o| matches!(o, super::lower::Op::Clamp { .. })).count();
     assert_eq!(fused, 1, "{:#?}", compiled.code());
     let values = [f32::NAN, 1.5, -2.0, 0.0, -0.0, f32::INFINITY, f32::NEG_INFINITY, -f32::NAN];
-    let min = |a: f32, b: f32| {
-        if a.is_nan() {
-            b
-        } else if b < a {
-            b
-        } else {
-            a
-        }
-    };
-    let max = |a: f32, b: f32| {
-        if a.is_nan() {
-            b
-        } else if a < b {
-            b
-        } else {
-            a
-        }
-    };
+    let min = |a: f32, b: f32| if a.is_nan() || b < a { b } else { a };
+    let max = |a: f32, b: f32| if a.is_nan() || a < b { b } else { a };
     // Every pair of values for x and y, and as the clamp's bounds.
     let pairs: Vec<(f32, f32)> = values.iter().flat_map(|&a| values.iter().map(move |&b| (a, b))).collect();
     for block in pairs.chunks(LANES) {
@@ -1039,11 +1023,10 @@ fn min_and_max_with_a_nan_operand_give_the_other_operand() {
         let mut want = vec![[0u32; LANES]; 3];
         let io = &mut Io { inputs: &inputs, uniforms: &[], outputs: &mut want, textures: &NoTextures };
         Executor::new().run(&p, io, ALL_LANES);
-        for k in 0..LANES {
+        for (k, words) in (0..LANES).map(|k| (k, want.iter().map(|w| w[k]).collect::<Vec<u32>>())) {
             let (a, b) = lane(k);
-            assert_eq!(want[0][k], min(a, b).to_bits(), "min({a}, {b})");
-            assert_eq!(want[1][k], max(a, b).to_bits(), "max({a}, {b})");
-            assert_eq!(want[2][k], min(max(a, b), a).to_bits(), "clamp({a}, {b}, {a})");
+            let expected = [min(a, b), max(a, b), min(max(a, b), a)].map(f32::to_bits);
+            assert_eq!(words, expected, "min({a}, {b}), max({a}, {b}), clamp({a}, {b}, {a})");
         }
         assert!(min(f32::NAN, 1.5) == 1.5 && max(1.5, f32::NAN) == 1.5);
         for which in 0..2 {
