@@ -954,6 +954,43 @@ mod tests {
         assert_eq!(ctx.take_error(), GL_NO_ERROR);
     }
 
+    /// The first draw with a new program (issue #20 wants it under 5 ms for a 200-line
+    /// shader): the Phong pair of `tests/glsl/phong.{vert,frag}` compiled, linked and drawn
+    /// through the GL entry points, each phase timed (printed with `--nocapture`).
+    #[test]
+    fn a_200_line_shader_pair_compiles_links_and_draws() {
+        let sources = [
+            (GL_VERTEX_SHADER, include_str!("../../tests/glsl/phong.vert")),
+            (GL_FRAGMENT_SHADER, include_str!("../../tests/glsl/phong.frag")),
+        ];
+        let mut best = [std::time::Duration::MAX; 3];
+        for _ in 0..5 {
+            let mut ctx = context();
+            let start = std::time::Instant::now();
+            let program = ctx.create_program();
+            for (kind, source) in sources {
+                let shader = ctx.create_shader(kind);
+                ctx.shader_source(shader, Ok(vec![source.as_bytes().to_vec()]));
+                ctx.compile_shader(shader);
+                assert_eq!(ctx.get_shader(shader, GL_COMPILE_STATUS), Some(1), "{:?}", ctx.shader_info_log(shader));
+                ctx.attach_shader(program, shader);
+            }
+            let compiled = start.elapsed();
+            ctx.link_program(program);
+            assert_eq!(ctx.get_program(program, GL_LINK_STATUS), Some(1), "{:?}", ctx.program_info_log(program));
+            let linked = start.elapsed();
+            ctx.use_program(program);
+            let vertex = |x: f32, y: f32| crate::context::draw::replay::vertex(x, y, 0.0, [1.0; 4]);
+            ctx.draw_vertices(GL_TRIANGLES, &[vertex(-1.0, -1.0), vertex(1.0, -1.0), vertex(0.0, 1.0)]);
+            assert_eq!(ctx.take_error(), GL_NO_ERROR);
+            let drawn = start.elapsed();
+            for (b, t) in best.iter_mut().zip([compiled, linked - compiled, drawn - linked]) {
+                *b = (*b).min(t);
+            }
+        }
+        println!("phong pair, best of 5: compile {:?}, link {:?}, first draw {:?}", best[0], best[1], best[2]);
+    }
+
     #[test]
     fn commands_between_begin_and_end_are_invalid_operations() {
         let mut ctx = context();

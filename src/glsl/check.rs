@@ -12,8 +12,8 @@
 //! An error does not end the check: the construct that failed has no type and its parents
 //! say nothing more about it (no cascades), and the next statement is checked, so that a log
 //! lists what a person needs to fix, as Mesa's does. Expressions nest without bound in the
-//! syntax tree (`a+a+...+a` is left-deep), so the checker counts its own depth and refuses
-//! past [`MAX_DEPTH`].
+//! syntax tree (`a+a+...+a` is left-deep), so the checker counts the tree's depth and refuses
+//! past [`MAX_DEPTH`]; a left-deep chain it checks in a loop, not by recursion.
 
 use super::ast::{self, ParameterDirection, Storage};
 use super::builtins::{self, Access, Limits, Signature};
@@ -23,8 +23,17 @@ use super::hir::*;
 use std::collections::HashMap;
 use std::sync::Arc;
 
-/// The deepest expression or statement nesting the checker follows.
-pub const MAX_DEPTH: usize = 512;
+/// The deepest expression or statement nesting the checker follows: the height of the
+/// tree below a function body, which the later passes (the link's walk, the lowering,
+/// freeing) follow recursively. Room for the parser's longest chain
+/// ([`super::parse::MAX_CHAIN`], 512 operators, which the checker walks in a loop) and
+/// 128 levels around it (piglit's `op-selection-*` tests sum 512 terms in one expression).
+/// Measured (release build, whole front end: parse, check, link, lowering, freeing), a
+/// level of a chain costs about 1 KB of stack and a level of nesting (parentheses, calls,
+/// unary operators) 2–4 KB, of which the parser's [`super::parse::MAX_NESTING`] of 256
+/// allows at most 256: the worst tree takes about 1.5 MB, within the 2 MB of a thread
+/// Rust spawns (and the 8 MB of a main thread).
+pub const MAX_DEPTH: usize = 640;
 
 #[derive(Clone)]
 enum Symbol {
@@ -196,6 +205,7 @@ impl<'a> Checker<'a> {
                 centroid: false,
                 constant,
                 max_index: None,
+                implicit_size: false,
                 written: false,
                 used: false,
                 pos: Pos::default(),
@@ -407,6 +417,44 @@ impl<'a> Checker<'a> {
         r
     }
 
+    /// A left-deep chain of binary operators or commas (`a + b + c ...`, as the parser
+    /// builds it without nesting) checked from its leftmost operand up, in a loop, so that
+    /// the chain costs the checker's stack nothing per operator. The depth counted is
+    /// still the tree's, which the later passes walk recursively: each right operand is
+    /// checked at its node's depth.
+    fn chain(&mut self, top: &ast::Expr) -> R<Expr> {
+        use ast::ExprKind as K;
+        let base = self.depth;
+        let mut spine = vec![top];
+        let mut leftmost = top;
+        while let K::Binary(_, l, _) | K::Sequence(l, _) = &leftmost.kind {
+            if base + spine.len() > MAX_DEPTH {
+                self.error(leftmost.pos, format!("expression nesting deeper than {MAX_DEPTH} levels"));
+                return None;
+            }
+            leftmost = l;
+            spine.push(l);
+        }
+        let leaf = spine.pop().expect("the leftmost operand");
+        // Inside a node, the depth is the node's own (as `expr` leaves it).
+        self.depth = base + spine.len() - 1;
+        let mut acc = self.expr(leaf);
+        while let Some(node) = spine.pop() {
+            self.depth = base + spine.len();
+            let (K::Binary(_, _, r) | K::Sequence(_, r)) = &node.kind else { unreachable!("a chain link") };
+            let right = self.expr(r);
+            acc = match (acc, right, &node.kind) {
+                (Some(l), Some(r), K::Binary(op, ..)) => self.binary(*op, l, r, node.pos),
+                (Some(a), Some(b), _) => {
+                    Some(Expr { ty: b.ty.clone(), kind: ExprKind::Sequence(Box::new(a), Box::new(b)), pos: node.pos })
+                }
+                _ => None,
+            };
+        }
+        self.depth = base;
+        acc
+    }
+
     fn constant(ty: Type, c: Constant, pos: Pos) -> Expr {
         Expr { ty, kind: ExprKind::Constant(c), pos }
     }
@@ -420,11 +468,7 @@ impl<'a> Checker<'a> {
             K::Bool(v) => Some(Self::constant(BOOL, Constant::Basic(vec![Value::B(*v)]), pos)),
             K::Ident(name) => self.identifier(name, pos),
             K::Unary(op, operand) => self.unary(*op, operand, pos),
-            K::Binary(op, l, r) => {
-                let l = self.expr(l);
-                let r = self.expr(r);
-                self.binary(*op, l?, r?, pos)
-            }
+            K::Binary(..) | K::Sequence(..) => self.chain(e),
             K::Assign(op, target, value) => self.assign(*op, target, value, pos),
             K::Conditional(c, a, b) => {
                 let (c, a, b) = (self.expr(c), self.expr(a), self.expr(b));
@@ -452,11 +496,6 @@ impl<'a> Checker<'a> {
                     }
                 }
                 Some(Expr { ty, kind: ExprKind::Conditional(Box::new(c), Box::new(a), Box::new(b)), pos })
-            }
-            K::Sequence(a, b) => {
-                let (a, b) = (self.expr(a), self.expr(b));
-                let (a, b) = (a?, b?);
-                Some(Expr { ty: b.ty.clone(), kind: ExprKind::Sequence(Box::new(a), Box::new(b)), pos })
             }
             K::Index(base, index) => {
                 let (base, index) = (self.expr(base), self.expr(index));
@@ -1424,6 +1463,7 @@ impl<'a> Checker<'a> {
             centroid: q.centroid,
             constant,
             max_index: None,
+            implicit_size: false,
             written: false,
             used: false,
             pos,
@@ -1555,6 +1595,7 @@ impl<'a> Checker<'a> {
                 centroid: false,
                 constant: None,
                 max_index: None,
+                implicit_size: false,
                 written: false,
                 used: false,
                 pos: p.pos,
@@ -1589,6 +1630,7 @@ impl<'a> Checker<'a> {
                 centroid: false,
                 constant: None,
                 max_index: None,
+                implicit_size: false,
                 written: false,
                 used: false,
                 pos: def.prototype.parameters[i].pos,
@@ -1679,6 +1721,7 @@ impl<'a> Checker<'a> {
                     centroid: false,
                     constant: None,
                     max_index: None,
+                    implicit_size: false,
                     written: false,
                     used: false,
                     pos: *pos,
@@ -1834,6 +1877,7 @@ impl<'a> Checker<'a> {
             if let Type::Array(e, None) = &v.ty {
                 if let Some(m) = v.max_index {
                     v.ty = Type::Array(e.clone(), Some(m + 1));
+                    v.implicit_size = true;
                 }
             }
         }

@@ -220,6 +220,24 @@ pub fn field(c: &Constant, member: usize) -> Option<Constant> {
 
 /// A built-in function of constant arguments, if it is one GLSL folds (not the texture
 /// lookups, noise, derivatives or `ftransform`). `ret` is the signature's return type.
+/// `min` as the executor's `FMin`: `y < x ? y : x`, and `y` when `x` is NaN.
+fn fmin(x: f32, y: f32) -> f32 {
+    if y < x || x.is_nan() {
+        y
+    } else {
+        x
+    }
+}
+
+/// `max` as the executor's `FMax`: `x < y ? y : x`, and `y` when `x` is NaN.
+fn fmax(x: f32, y: f32) -> f32 {
+    if x < y || x.is_nan() {
+        y
+    } else {
+        x
+    }
+}
+
 pub fn builtin(name: &str, ret: &Type, arg_types: &[Type], args: &[&Constant]) -> Option<Constant> {
     let vals: Vec<&[Value]> = args.iter().map(|c| basic(c)).collect::<Option<_>>()?;
     let f = |i: usize| vals[i].iter().map(|v| v.as_f32()).collect::<Vec<f32>>();
@@ -275,16 +293,10 @@ pub fn builtin(name: &str, ret: &Type, arg_types: &[Type], args: &[&Constant]) -
         "ceil" => map1(&f32::ceil),
         "fract" => map1(&|x| x - x.floor()),
         "mod" => map2(&|x, y| x - y * (x / y).floor()),
-        "min" => map2(&|x, y| if y < x { y } else { x }),
-        "max" => map2(&|x, y| if x < y { y } else { x }),
-        "clamp" => map3(&|x, lo, hi| {
-            let m = if x < lo { lo } else { x };
-            if hi < m {
-                hi
-            } else {
-                m
-            }
-        }),
+        // As the executor's FMin / FMax: a NaN operand gives the other one.
+        "min" => map2(&fmin),
+        "max" => map2(&fmax),
+        "clamp" => map3(&|x, lo, hi| fmin(fmax(x, lo), hi)),
         "mix" => map3(&|x, y, a| x * (1.0 - a) + y * a),
         "step" => map2(&|edge, x| if x < edge { 0.0 } else { 1.0 }),
         "smoothstep" => map3(&|e0, e1, x| {

@@ -278,6 +278,10 @@ pub struct Variable {
     pub constant: Option<Constant>,
     /// The largest constant index used on an array, for sizing unsized arrays.
     pub max_index: Option<u32>,
+    /// Whether `ty` is an array declared without a size that the shader sized by its
+    /// largest constant index: another shader of the program may declare it larger (GLSL
+    /// 1.10 section 4.1.9).
+    pub implicit_size: bool,
     /// Whether the shader ever writes the variable (`gl_FragColor`, `gl_FragData`...).
     pub written: bool,
     /// Whether the shader reads or writes it at all.
@@ -356,6 +360,16 @@ impl Expr {
     pub fn constant(&self) -> Option<&Constant> {
         match &self.kind {
             ExprKind::Constant(c) => Some(c),
+            _ => None,
+        }
+    }
+
+    /// The value of a constant bool condition (`if (false)`, a folded `sqrt(1.0) != 1.0`):
+    /// the branch it rules out is dead code, which the link and the lowering skip as Mesa's
+    /// compiler drops it (a call there to a function defined nowhere is no link error).
+    pub fn constant_bool(&self) -> Option<bool> {
+        match self.constant()?.components() {
+            [Value::B(b)] => Some(*b),
             _ => None,
         }
     }

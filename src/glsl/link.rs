@@ -23,7 +23,9 @@
 //! is active up to its largest index (`gl_LightSource[1]` lists entries 0 and 1).
 use super::ast::Storage;
 use super::builtins::Limits;
-use super::hir::{Checked, Constant, Expr, ExprKind, FunctionId, Scalar, Stage, Stmt, Type, Value, VarId, VarKind};
+use super::hir::{
+    BinaryOp, Checked, Constant, Expr, ExprKind, FunctionId, Scalar, Stage, Stmt, Type, Value, VarId, VarKind,
+};
 use super::lex::Sampler;
 use crate::gl::enums::*;
 use crate::gl::types::GLenum;
@@ -217,6 +219,33 @@ fn same_type(a: &Type, b: &Type) -> bool {
     }
 }
 
+/// The type of a global that two shaders declare, each as (type, whether an array size is
+/// implicit: declared unsized and sized by the shader's largest constant index, or not
+/// at all). Arrays agree when one size is implicit and no larger than the other (Mesa's
+/// `validate_intrastage_arrays`): `float a[]` indexed up to 5 and `float a[6]` are
+/// `float[6]`; two implicit sizes make the larger. `Err(Some((declared type, index)))`
+/// for an index beyond the declared size, `Err(None)` for types that differ otherwise.
+fn merged_type(
+    (a, a_implicit): (&Type, bool),
+    (b, b_implicit): (&Type, bool),
+) -> Result<(Type, bool), Option<(Type, u32)>> {
+    if same_type(a, b) {
+        return Ok((a.clone(), a_implicit && b_implicit));
+    }
+    let (Type::Array(ea, na), Type::Array(eb, nb)) = (a, b) else { return Err(None) };
+    if !same_type(ea, eb) || !(a_implicit || b_implicit) {
+        return Err(None);
+    }
+    if a_implicit && b_implicit {
+        return Ok((Type::Array(ea.clone(), (*na).max(*nb)), true));
+    }
+    let (sized, n, used) = if a_implicit { (b, nb, na) } else { (a, na, nb) };
+    match (n, used) {
+        (Some(n), Some(m)) if m > n => Err(Some((sized.clone(), m - 1))),
+        _ => Ok((sized.clone(), false)),
+    }
+}
+
 /// A variable of one shader: (shader index, variable).
 type Var = (usize, VarId);
 /// A function of one shader.
@@ -244,6 +273,9 @@ struct Reach<'a> {
     order: Vec<Var>,
     functions: HashSet<Func>,
     errors: Vec<String>,
+    /// Whether the walk enters code a constant condition skips (see
+    /// [`Expr::constant_bool`]): only the compile's recursion check does, as Mesa's.
+    dead_code: bool,
 }
 
 fn signature(shader: &Checked, f: FunctionId) -> String {
@@ -271,6 +303,7 @@ impl<'a> Reach<'a> {
             order: Vec::new(),
             functions: HashSet::new(),
             errors: Vec::new(),
+            dead_code: false,
         }
     }
 
@@ -360,9 +393,12 @@ impl<'a> Reach<'a> {
             Stmt::Expr(e) => self.expr(s, e, calls),
             Stmt::Block(b) => b.iter().for_each(|st| self.stmt(s, st, calls)),
             Stmt::If { condition, then, otherwise } => {
+                let live = if self.dead_code { None } else { condition.constant_bool() };
                 self.expr(s, condition, calls);
-                self.stmt(s, then, calls);
-                if let Some(o) = otherwise {
+                if live != Some(false) {
+                    self.stmt(s, then, calls);
+                }
+                if let Some(o) = otherwise.as_ref().filter(|_| live != Some(true)) {
                     self.stmt(s, o, calls);
                 }
             }
@@ -421,14 +457,26 @@ impl<'a> Reach<'a> {
                 self.expr(s, target, calls);
                 self.expr(s, value, calls);
             }
+            ExprKind::Binary(op @ (BinaryOp::And | BinaryOp::Or), a, b) if !self.dead_code => {
+                // `false && f()`: the second operand is dead code (as in the lowering).
+                self.expr(s, a, calls);
+                if a.constant_bool() != Some(*op == BinaryOp::Or) {
+                    self.expr(s, b, calls);
+                }
+            }
             ExprKind::Binary(_, a, b) | ExprKind::Sequence(a, b) => {
                 self.expr(s, a, calls);
                 self.expr(s, b, calls);
             }
             ExprKind::Conditional(a, b, c) => {
+                let live = if self.dead_code { None } else { a.constant_bool() };
                 self.expr(s, a, calls);
-                self.expr(s, b, calls);
-                self.expr(s, c, calls);
+                if live != Some(false) {
+                    self.expr(s, b, calls);
+                }
+                if live != Some(true) {
+                    self.expr(s, c, calls);
+                }
             }
             ExprKind::Field(a, _) | ExprKind::Swizzle(a, _) | ExprKind::Convert(a) => self.expr(s, a, calls),
             ExprKind::Construct(args) => args.iter().for_each(|a| self.expr(s, a, calls)),
@@ -463,6 +511,7 @@ impl<'a> Reach<'a> {
 pub fn recursive_functions(shader: &Arc<Checked>) -> Vec<String> {
     let shaders = std::slice::from_ref(shader);
     let mut reach = Reach::new(shaders, shader.stage);
+    reach.dead_code = true;
     let callees: Vec<Vec<FunctionId>> = shader
         .functions
         .iter()
@@ -614,8 +663,10 @@ pub fn link(shaders: &[Arc<Checked>], bindings: &[(String, u32)]) -> Result<Link
     }
 
     // Globals of one name agree in type: uniforms across the program, others per stage.
-    let mut seen: HashMap<(bool, Option<Stage>, String), (Type, usize)> = HashMap::new();
-    for (s, shader) in shaders.iter().enumerate() {
+    // An array one shader declares without a size (sized by its largest constant index)
+    // takes the size another declares, or the largest of the implicit sizes.
+    let mut seen: HashMap<(bool, Option<Stage>, String), (Type, bool)> = HashMap::new();
+    for shader in shaders {
         for &(v, _) in &shader.globals {
             let var = &shader.variables[v];
             if var.kind != VarKind::Global || var.storage == Some(Storage::Const) {
@@ -623,20 +674,32 @@ pub fn link(shaders: &[Arc<Checked>], bindings: &[(String, u32)]) -> Result<Link
             }
             let uniform = var.storage == Some(Storage::Uniform);
             let key = (uniform, (!uniform).then_some(shader.stage), var.name.clone());
-            match seen.get(&key) {
-                Some((ty, _)) if !same_type(ty, &var.ty) => {
-                    let mode = match var.storage {
-                        Some(Storage::Uniform) => "uniform",
-                        Some(Storage::Varying) if shader.stage == Stage::Vertex => "shader output",
-                        Some(Storage::Varying | Storage::Attribute) => "shader input",
-                        _ => "global variable",
-                    };
-                    error(&mut log, &format!("{mode} `{}' declared as type `{}' and type `{ty}'\n", var.name, var.ty));
+            let implicit = var.implicit_size || matches!(var.ty, Type::Array(_, None));
+            let Some((ty, seen_implicit)) = seen.get_mut(&key) else {
+                seen.insert(key, (var.ty.clone(), implicit));
+                continue;
+            };
+            let mode = match var.storage {
+                Some(Storage::Uniform) => "uniform",
+                Some(Storage::Varying) if shader.stage == Stage::Vertex => "shader output",
+                Some(Storage::Varying | Storage::Attribute) => "shader input",
+                _ => "global variable",
+            };
+            match merged_type((ty, *seen_implicit), (&var.ty, implicit)) {
+                Ok((merged, merged_implicit)) => (*ty, *seen_implicit) = (merged, merged_implicit),
+                Err(Some((sized, index))) => {
+                    error(
+                        &mut log,
+                        &format!(
+                            "{mode} `{}' declared as type `{sized}' but outermost dimension has an index of `{index}'\n",
+                            var.name
+                        ),
+                    );
                     return Err(log);
                 }
-                Some(_) => {}
-                None => {
-                    seen.insert(key, (var.ty.clone(), s));
+                Err(None) => {
+                    error(&mut log, &format!("{mode} `{}' declared as type `{}' and type `{ty}'\n", var.name, var.ty));
+                    return Err(log);
                 }
             }
         }
@@ -749,9 +812,11 @@ pub fn link(shaders: &[Arc<Checked>], bindings: &[(String, u32)]) -> Result<Link
                 }
                 continue;
             }
+            // The size of an array declared unsized may come from another declaration.
+            let ty = seen.get(&(true, None, var.name.clone())).map_or(&var.ty, |(t, _)| t).clone();
             globals.push(Global {
                 name: var.name.clone(),
-                ty: var.ty.clone(),
+                ty,
                 builtin: var.kind == VarKind::Builtin,
                 usage,
                 initializer,
@@ -1055,6 +1120,73 @@ mod tests {
         )
         .is_ok());
         assert!(link(&[fragment("void main() { gl_FragColor = gl_Color; }")], &[]).is_ok());
+    }
+
+    /// GLSL 1.10 section 4.1.9: an array declared without a size takes the size another
+    /// shader of the stage declares, if its own constant indices fit (piglit
+    /// glsl-fs-implicit-array-size-01); two implicit sizes make the larger.
+    #[test]
+    fn an_unsized_array_links_with_a_sized_declaration_that_holds_its_indices() {
+        let main = "float a[]; void f(); void main() { f(); gl_FragColor = vec4(a[1]); }";
+        let ok = |other: &str| link(&[fragment(main), fragment(other)], &[]);
+        assert!(ok("float a[]; void f() { a[5] = 0.0; }").is_ok());
+        assert!(ok("float a[6]; void f() { a[5] = 0.0; }").is_ok());
+        assert!(ok("float a[2]; void f() {}").is_ok());
+        assert_eq!(
+            ok("float a[1]; void f() {}").unwrap_err(),
+            "error: global variable `a' declared as type `float[1]' but outermost dimension has an index of `1'\n"
+        );
+        assert_eq!(
+            ok("int a[]; void f() { a[5] = 0; }").unwrap_err(),
+            "error: global variable `a' declared as type `int[6]' and type `float[2]'\n"
+        );
+        // Two declared sizes must agree.
+        let sized = |n: u32| fragment(&format!("float a[{n}]; void main() {{ gl_FragColor = vec4(a[0]); }}"));
+        let other = fragment("float a[3]; void f() {}");
+        assert!(link(&[sized(2), other], &[]).unwrap_err().contains("declared as type `float[3]' and type `float[2]'"));
+        // The uniform of an unsized declaration is as large as the sized one.
+        let u = link(
+            &[
+                fragment("uniform float u[]; void f(); void main() { f(); gl_FragColor = vec4(u[1]); }"),
+                fragment("uniform float u[4]; void f() { gl_FragColor += vec4(u[3]); }"),
+            ],
+            &[],
+        )
+        .unwrap();
+        assert_eq!(u.uniforms.iter().find(|x| x.name == "u[0]").map(|x| x.size), Some(4));
+    }
+
+    /// As Mesa's compiler, which drops code a constant condition skips before the link:
+    /// a call there to a function defined nowhere links; the same call in live code, or
+    /// behind a condition that is not constant, does not.
+    #[test]
+    fn calls_in_code_a_constant_condition_skips_need_no_definition() {
+        let linked = |body: &str| {
+            let f = fragment(&format!("#version 120\nvoid bad(); uniform float u;\nvoid main() {{ {body} }}"));
+            link(&[f], &[])
+        };
+        for dead in [
+            "if (false) bad(); gl_FragColor = vec4(1.0);",
+            "if (sqrt(1.0) != 1.0) bad(); else if (exp2(1.0) == 2.0) gl_FragColor = vec4(u); else bad();",
+            "gl_FragColor = vec4(true ? 1.0 : (bad(), 2.0));",
+            "if (false && (bad(), true)) gl_FragColor = vec4(1.0);",
+            "if (true || (bad(), true)) gl_FragColor = vec4(1.0);",
+        ] {
+            assert!(linked(dead).is_ok(), "{dead}");
+        }
+        for live in [
+            "bad();",
+            "if (u > 0.0) bad();",
+            "if (true) bad();",
+            "if (false) {} else bad();",
+            "gl_FragColor = vec4(false ? 1.0 : (bad(), 2.0));",
+            "if (true && (bad(), true)) gl_FragColor = vec4(1.0);",
+        ] {
+            assert_eq!(linked(live).unwrap_err(), "error: unresolved reference to function `bad'\n", "{live}");
+        }
+        // A uniform named only in dead code is not active (as Mesa).
+        let l = linked("if (false) gl_FragColor = vec4(u); gl_FragColor = vec4(1.0);").unwrap();
+        assert_eq!(l.uniform_location("u"), None);
     }
 
     #[test]

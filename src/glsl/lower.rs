@@ -17,9 +17,11 @@
 //! everywhere. Output variables are written by `Output` instructions in an epilogue, after
 //! the body (main's `return` is lowered as a jump there, not as the IR's `Return`).
 //!
-//! **Interface.** "Used" means named by the program after inlining (code that a constant
-//! condition skips included). A uniform or input word is listed when the program reads it
-//! (`gl_LightSource[0].diffuse.x` lists word 0 of `gl_LightSource[0].diffuse` only); an
+//! **Interface.** "Used" means named by the program after inlining, except in code a
+//! constant condition skips (`if (false)`, `true ? a : b`, `false && f()`), which is not
+//! lowered at all, as Mesa's compiler drops it before the link. A uniform or input word is
+//! listed when the program reads it (`gl_LightSource[0].diffuse.x` lists word 0 of
+//! `gl_LightSource[0].diffuse` only); an
 //! output *basic-type element* (`v[3]`, `s.c`, `gl_TexCoord[1]`) is listed, every word of
 //! it, when the shader names any part of it. A dynamically indexed array counts as naming
 //! all its elements. A listed output word that the shader never writes holds
@@ -515,8 +517,11 @@ impl<'a> Lowerer<'a> {
         }
         let v = &self.units[unit].variables[id];
         let mut ty = v.ty.clone();
-        // An unsized array of one unit may be sized in another: the largest wins.
-        if let Type::Array(e, None) = &ty {
+        // An array one unit declares unsized may be sized in another, implicitly or not:
+        // the largest wins (the link refused an index beyond a declared size).
+        let global = matches!(v.kind, VarKind::Builtin | VarKind::Global);
+        let size_open = v.implicit_size || matches!(ty, Type::Array(_, None));
+        if let (Type::Array(e, _), true) = (&ty, global && size_open) {
             let n = self
                 .units
                 .iter()
@@ -721,6 +726,18 @@ impl<'a> Lowerer<'a> {
             .collect()
     }
 
+    /// The place with its dynamic indices copied into registers of their own, so that it
+    /// stays where it is when the variables of the index expressions change later.
+    fn frozen(&mut self, mut p: Place) -> Place {
+        for d in &mut p.dynamic {
+            d.0 = self.copy(&[d.0])[0];
+        }
+        if let Some(pick) = p.pick {
+            p.pick = Some(self.copy(&[pick])[0]);
+        }
+        p
+    }
+
     fn read(&mut self, p: &Place) -> R<Vec<Reg>> {
         let len = if p.swizzle.is_some() { 0 } else { leaf_count(&p.ty) };
         let v = self.read_at(&p.root, p.base, len, &p.dynamic, &p.swizzle)?;
@@ -877,10 +894,9 @@ impl<'a> Lowerer<'a> {
             let n = leaf_count(&pty);
             let value = match arg {
                 Arg::Value(v) => Some(v),
-                Arg::Place(place, argty) => {
-                    let v = if p.direction == ParameterDirection::Inout { Some(self.read(&place)?) } else { None };
-                    writeback.push((key.clone(), place, argty, pty.clone()));
-                    v
+                Arg::Place { place, ty, value } => {
+                    writeback.push((key.clone(), place, ty, pty.clone()));
+                    value
                 }
             };
             if let Some(v) = value {
@@ -956,6 +972,11 @@ impl<'a> Lowerer<'a> {
                 }
             }
             hir::Stmt::If { condition, then, otherwise } => {
+                match condition.constant_bool() {
+                    Some(true) => return self.stmt(then),
+                    Some(false) => return otherwise.as_ref().map_or(Ok(()), |o| self.stmt(o)),
+                    None => {}
+                }
                 let c = self.expr(condition)?[0];
                 let then = self.nested(|l| l.stmt(then))?;
                 let otherwise = match otherwise {
@@ -1105,6 +1126,11 @@ impl<'a> Lowerer<'a> {
                 Ok(v)
             }
             ExprKind::Conditional(c, a, b) => {
+                match c.constant_bool() {
+                    Some(true) => return self.expr(a),
+                    Some(false) => return self.expr(b),
+                    None => {}
+                }
                 let c = self.expr(c)?[0];
                 if !side_effects(a) && !side_effects(b) {
                     let va = self.expr(a)?;
@@ -1143,12 +1169,27 @@ impl<'a> Lowerer<'a> {
                 let unit = self.unit();
                 let (du, df) = self.definition(unit, *f)?;
                 let params = self.units[du].functions[df].parameters.clone();
+                // GLSL 1.20 section 6.1.1: arguments are evaluated left to right once, at
+                // the call: an out argument's place (its index values included) is fixed
+                // then, and an inout's value read then, whatever the call or a later
+                // argument does to the variables they name (`f(i, a[i])` writing `i`).
                 let mut values = Vec::new();
-                for (a, p) in args.iter().zip(&params) {
+                for (k, (a, p)) in args.iter().zip(&params).enumerate() {
+                    let later_effects = args[k + 1..].iter().any(side_effects);
                     if p.direction == ParameterDirection::In {
-                        values.push(Arg::Value(self.expr(a)?));
+                        let v = self.expr(a)?;
+                        values.push(Arg::Value(if later_effects { self.copy(&v) } else { v }));
                     } else {
-                        values.push(Arg::Place(self.place(a)?, a.ty.clone()));
+                        let place = self.place(a)?;
+                        let place = self.frozen(place);
+                        let value = match p.direction {
+                            ParameterDirection::Inout => {
+                                let v = self.read(&place)?;
+                                Some(if later_effects { self.copy(&v) } else { v })
+                            }
+                            _ => None,
+                        };
+                        values.push(Arg::Place { place, ty: a.ty.clone(), value });
                     }
                 }
                 self.inline(unit, *f, values)
@@ -1206,6 +1247,12 @@ impl<'a> Lowerer<'a> {
 
     /// `&&` and `||`: an IR if when the second operand has side effects.
     fn logical(&mut self, op: hir::BinaryOp, a: &Expr, b: &Expr) -> R<Vec<Reg>> {
+        // A constant first operand that decides the result: the second is dead code.
+        match (op, a.constant_bool()) {
+            (hir::BinaryOp::And, Some(false)) | (hir::BinaryOp::Or, Some(true)) => return self.expr(a),
+            (_, Some(_)) => return self.expr(b),
+            _ => {}
+        }
         let va = self.expr(a)?[0];
         if !side_effects(b) {
             let vb = self.expr(b)?[0];
@@ -1438,8 +1485,13 @@ impl<'a> Lowerer<'a> {
 /// An argument of an inlined call.
 enum Arg {
     Value(Vec<Reg>),
-    /// An out or inout argument's place and its type.
-    Place(Place, Type),
+    /// An out or inout argument: its place (indices frozen at the call), its type, and for
+    /// an inout the value read at the call.
+    Place {
+        place: Place,
+        ty: Type,
+        value: Option<Vec<Reg>>,
+    },
 }
 
 impl Place {

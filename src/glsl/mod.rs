@@ -57,8 +57,13 @@ pub fn parse_shader(source: &str, options: &Options, log: &mut InfoLog) -> Optio
         return None;
     }
     let tokens = lex::classify(&pre.tokens, pre.version, pre.end, log);
-    let unit = parse::parse(&tokens, pre.version, log).ok()?;
-    Some(Parsed { unit, extensions: pre.extensions, invariant_all: pre.invariant_all })
+    // The preprocessor's tokens are not needed past here: freed before the tree is built,
+    // they do not add to the compile's peak memory (a token each, 10⁶ of them in a
+    // 10⁵-line shader).
+    let preprocess::Preprocessed { version, tokens: preprocessed, extensions, invariant_all, .. } = pre;
+    drop(preprocessed);
+    let unit = parse::parse(&tokens, version, log).ok()?;
+    Some(Parsed { unit, extensions, invariant_all })
 }
 
 /// Compiles one shader source for `stage`: preprocessing, parsing and semantic analysis.

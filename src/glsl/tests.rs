@@ -489,7 +489,7 @@ fn long_operator_chains_are_an_error_not_a_crash() {
         assert!(checked.is_none(), "{what}");
         assert!(log.text().contains("operators in a row"), "{what}: {}", log.text());
     }
-    let sum = vec!["a"; 400].join("+");
+    let sum = vec!["a"; 512].join("+");
     let mut log = InfoLog::default();
     let source = format!("void main() {{ float a = 1.0; gl_FragColor = vec4({sum}); }}");
     assert!(
@@ -497,6 +497,45 @@ fn long_operator_chains_are_an_error_not_a_crash() {
         "{}",
         log.text()
     );
+}
+
+/// The whole front end (compile, link, lowering) on a thread of 2 MB, Rust's default for a
+/// spawned thread, at the bounds: the longest chain (piglit's `op-selection-*`: 511 `+`
+/// inside a constructor) compiles, and so does a chain under 100 levels of nesting; a
+/// chain under 200 levels passes [`super::check::MAX_DEPTH`] and is an error, not an
+/// overflow.
+#[test]
+fn chains_at_the_bounds_compile_on_a_small_stack() {
+    let run = |source: String| {
+        std::thread::Builder::new()
+            .stack_size(2 << 20)
+            .spawn(move || {
+                let mut log = InfoLog::default();
+                let checked = compile_shader(&source, Stage::Fragment, &Options::default(), &mut log);
+                let Some(checked) = checked else { return Err(log.text()) };
+                let checked = std::sync::Arc::new(checked);
+                super::link::link(std::slice::from_ref(&checked), &[])?;
+                super::lower::lower(&[&checked]).map(|_| ())
+            })
+            .unwrap()
+            .join()
+            .unwrap()
+    };
+    let chain = vec!["u[0]"; 512].join(" + ");
+    let nested = |levels: usize| {
+        format!(
+            "#version 120\nuniform float u[2];\nvoid main() {{ gl_FragColor = vec4({}{chain}{}); }}",
+            "u[1] * (".repeat(levels),
+            ")".repeat(levels)
+        )
+    };
+    run(nested(0)).unwrap();
+    run(nested(100)).unwrap();
+    assert!(run(nested(200)).unwrap_err().contains("expression nesting deeper than 640 levels"));
+    let lengths: Vec<String> = (0..512).map(|i| format!("a{i}.length()")).collect();
+    let arrays: String = (0..512).map(|i| format!("float a{i}[1];")).collect();
+    let source = format!("#version 120\nvoid main() {{ {arrays} gl_FragColor = vec4({}); }}", lengths.join(" + "));
+    run(source).unwrap();
 }
 
 // ---------------------------------------------------------------- piglit
@@ -771,4 +810,103 @@ fn front_end_timing() {
             compiled.as_secs_f64() * 1e6 / lines as f64
         );
     }
+}
+
+/// The shader of [`front_end_stack`]: `depth` levels of one kind of nesting in one
+/// expression (`sum`: a left-deep chain of `+`; the others nest to the right).
+fn nested_shader(shape: &str, depth: usize) -> String {
+    let expr = match shape {
+        "sum" => vec!["a"; depth + 1].join(" + "),
+        "neg" => format!("{}a{}", "-(".repeat(depth), ")".repeat(depth)),
+        "call" => format!("{}a{}", "sin(".repeat(depth), ")".repeat(depth)),
+        "user" => format!("{}a{}", "f(".repeat(depth), ")".repeat(depth)),
+        "construct" => format!("{}a{}", "float(".repeat(depth), ")".repeat(depth)),
+        "right" => format!("{}a{}", "a * (".repeat(depth), ")".repeat(depth)),
+        "conditional" => format!("{}a{}", "b ? a : (".repeat(depth), ")".repeat(depth)),
+        "index" => format!("v[{}0{}]", "i[".repeat(depth), "]".repeat(depth)),
+        "assign" => format!("{}a", "a = ".repeat(depth)),
+        "and" => format!("float({})", vec!["b"; depth + 1].join(" && ")),
+        _ => panic!("shape {shape}"),
+    };
+    format!(
+        "#version 120\nuniform float a; uniform bool b; uniform int i[4]; uniform float v[4];\n\
+         float f(float x) {{ return x * 2.0; }}\n\
+         void main() {{ float a = a; gl_FragColor = vec4({expr}); }}\n"
+    )
+}
+
+/// Runs the whole front end (compile, link, lowering, freeing) on a thread of
+/// `GFRONT_STACK` bytes for the shader of `GFRONT_SHAPE` nested `GFRONT_DEPTH` deep (run by
+/// hand, one process per size, to find the stack each level costs: an overflow aborts).
+#[test]
+#[ignore]
+fn front_end_stack() {
+    let var = |n: &str| std::env::var(n).unwrap_or_else(|_| panic!("{n}"));
+    let stack: usize = var("GFRONT_STACK").parse().unwrap();
+    let depth: usize = var("GFRONT_DEPTH").parse().unwrap();
+    let source = nested_shader(&var("GFRONT_SHAPE"), depth);
+    let ok = std::thread::Builder::new()
+        .stack_size(stack)
+        .spawn(move || {
+            let mut log = InfoLog::default();
+            let checked = compile_shader(&source, Stage::Fragment, &Options::default(), &mut log);
+            let Some(checked) = checked else { return Err(log.text()) };
+            let checked = std::sync::Arc::new(checked);
+            let _ = super::link::recursive_functions(&checked);
+            super::link::link(std::slice::from_ref(&checked), &[])?;
+            super::lower::lower(&[&checked])?;
+            Ok(())
+        })
+        .unwrap()
+        .join()
+        .unwrap();
+    println!("result {ok:?}");
+}
+
+/// Times the phases of a shader of `GFRONT_FUNCTIONS` (100 000 unless set) one-line
+/// functions, `main` calling the last (run by hand, `-- --ignored --nocapture`): every
+/// phase should be linear in the number of functions.
+#[test]
+#[ignore]
+fn many_functions_timing() {
+    let n: usize = std::env::var("GFRONT_FUNCTIONS").map_or(100_000, |v| v.parse().unwrap());
+    let mut src = String::from("#version 120\n");
+    for i in 0..n {
+        src.push_str(&format!("float f{i}(float x) {{ return x * {i}.0 + 1.0; }}\n"));
+    }
+    src.push_str(&format!("void main() {{ gl_FragColor = vec4(f{}(gl_Color.x)); }}\n", n - 1));
+    let mut log = InfoLog::default();
+    let start = std::time::Instant::now();
+    let pre = super::preprocess::preprocess(&src, &Options::default(), &mut log);
+    let t_pre = start.elapsed();
+    let start = std::time::Instant::now();
+    let tokens = super::lex::classify(&pre.tokens, pre.version, pre.end, &mut log);
+    let t_lex = start.elapsed();
+    let start = std::time::Instant::now();
+    drop(super::parse::parse(&tokens, pre.version, &mut log).expect("parses"));
+    let t_syntax = start.elapsed();
+    drop((pre, tokens));
+    println!("{n} functions: preprocess {t_pre:?}, tokens {t_lex:?}, parse {t_syntax:?}");
+    let start = std::time::Instant::now();
+    let parsed = parse_shader(&src, &Options::default(), &mut log).expect("parses");
+    let t_parse = start.elapsed();
+    let start = std::time::Instant::now();
+    let checked = super::check::check(&parsed, Stage::Fragment, &super::Limits::default(), &mut log).expect("checks");
+    let t_check = start.elapsed();
+    let checked = std::sync::Arc::new(checked);
+    let start = std::time::Instant::now();
+    assert!(super::link::recursive_functions(&checked).is_empty());
+    let t_recursion = start.elapsed();
+    let start = std::time::Instant::now();
+    super::link::link(std::slice::from_ref(&checked), &[]).expect("links");
+    let t_link = start.elapsed();
+    let start = std::time::Instant::now();
+    super::lower::lower(&[&checked]).expect("lowers");
+    let t_lower = start.elapsed();
+    let start = std::time::Instant::now();
+    drop((parsed, checked));
+    let t_drop = start.elapsed();
+    println!(
+        "{n} functions: parse {t_parse:?}, check {t_check:?}, recursion {t_recursion:?}, link {t_link:?}, lower {t_lower:?}, free {t_drop:?}"
+    );
 }

@@ -80,6 +80,30 @@ pub(super) fn fu(value: f32) -> u32 {
     value.to_bits()
 }
 
+/// `FMin` on one lane (see [`BinaryOp::FMin`]): `y < x ? y : x`, and `y` when `x` is NaN.
+/// Written as selects, never as a library minimum, so that every SIMD level gives the same
+/// bits (±0 included).
+#[inline(always)]
+pub(super) fn fmin_lane(x: u32, y: u32) -> u32 {
+    let (a, b) = (f(x), f(y));
+    if b < a || a.is_nan() {
+        y
+    } else {
+        x
+    }
+}
+
+/// `FMax` on one lane: `x < y ? y : x`, and `y` when `x` is NaN.
+#[inline(always)]
+pub(super) fn fmax_lane(x: u32, y: u32) -> u32 {
+    let (a, b) = (f(x), f(y));
+    if a < b || a.is_nan() {
+        y
+    } else {
+        x
+    }
+}
+
 /// f32 → i32 truncating toward zero, saturating, NaN → 0 (Rust's `as`, the same on every
 /// CPU).
 #[inline(always)]
@@ -156,8 +180,8 @@ pub(super) fn binary(op: BinaryOp, a: &Word, b: &Word) -> Word {
         FSub => map2(a, b, |x, y| fu(f(x) - f(y))),
         FMul => map2(a, b, |x, y| fu(f(x) * f(y))),
         FDiv => map2(a, b, |x, y| fu(f(x) / f(y))),
-        FMin => map2(a, b, |x, y| if f(y) < f(x) { y } else { x }),
-        FMax => map2(a, b, |x, y| if f(x) < f(y) { y } else { x }),
+        FMin => map2(a, b, fmin_lane),
+        FMax => map2(a, b, fmax_lane),
         FLt => map2(a, b, |x, y| (f(x) < f(y)) as u32),
         FLe => map2(a, b, |x, y| (f(x) <= f(y)) as u32),
         FEq => map2(a, b, |x, y| (f(x) == f(y)) as u32),

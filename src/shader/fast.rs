@@ -289,8 +289,8 @@ operations!(|st, io, wide| {
     Op::Sub { d, a, b } => st.put(d, map2(st.get(a), st.get(b), |x, y| fu(f(x) - f(y)))),
     Op::Mul { d, a, b } => st.put(d, map2(st.get(a), st.get(b), |x, y| fu(f(x) * f(y)))),
     Op::Div { d, a, b } => st.put(d, map2(st.get(a), st.get(b), |x, y| fu(f(x) / f(y)))),
-    Op::Min { d, a, b } => st.put(d, map2(st.get(a), st.get(b), |x, y| if f(y) < f(x) { y } else { x })),
-    Op::Max { d, a, b } => st.put(d, map2(st.get(a), st.get(b), |x, y| if f(x) < f(y) { y } else { x })),
+    Op::Min { d, a, b } => st.put(d, map2(st.get(a), st.get(b), exec::fmin_lane)),
+    Op::Max { d, a, b } => st.put(d, map2(st.get(a), st.get(b), exec::fmax_lane)),
     Op::Lt { d, a, b } => st.put(d, map2(st.get(a), st.get(b), |x, y| (f(x) < f(y)) as u32)),
     Op::Le { d, a, b } => st.put(d, map2(st.get(a), st.get(b), |x, y| (f(x) <= f(y)) as u32)),
     Op::Sqrt { d, a } => st.put(d, map1(st.get(a), |x| fu(f(x).sqrt()))),
@@ -309,14 +309,7 @@ operations!(|st, io, wide| {
     Op::Select { d, c, a, b } => st.put(d, map3(st.get(c), st.get(a), st.get(b), |c, x, y| if c != 0 { x } else { y })),
     Op::Clamp { d, a, lo, hi } => st.put(
         d,
-        map3(st.get(a), st.get(lo), st.get(hi), |x, l, h| {
-            let t = if f(x) < f(l) { l } else { x };
-            if f(h) < f(t) {
-                h
-            } else {
-                t
-            }
-        }),
+        map3(st.get(a), st.get(lo), st.get(hi), |x, l, h| exec::fmin_lane(exec::fmax_lane(x, l), h)),
     ),
     Op::ClampSelect { d, a, lo, hi } => st.put(
         d,

@@ -120,7 +120,9 @@ pub enum UnaryOp {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum BinaryOp {
     /// f32 × f32 → f32, each rounded once. `FMin`/`FMax` are GLSL's `b < a ? b : a` and
-    /// `a < b ? b : a` (with a NaN operand: `a`).
+    /// `a < b ? b : a` (equal operands, ±0 included: `a`), and with one NaN operand the
+    /// other one, as Mesa's min and max (GLSL leaves NaN undefined; piglit's
+    /// `*-nan-builtin-min/max` want the number); NaN when both are.
     FAdd,
     FSub,
     FMul,

@@ -411,20 +411,8 @@ pub fn binary_lane(op: BinaryOp, x: u32, y: u32) -> u32 {
         FSub => fu(f(x) - f(y)),
         FMul => fu(f(x) * f(y)),
         FDiv => fu(f(x) / f(y)),
-        FMin => {
-            if f(y) < f(x) {
-                y
-            } else {
-                x
-            }
-        }
-        FMax => {
-            if f(x) < f(y) {
-                y
-            } else {
-                x
-            }
-        }
+        FMin => super::exec::fmin_lane(x, y),
+        FMax => super::exec::fmax_lane(x, y),
         FLt => (f(x) < f(y)) as u32,
         FLe => (f(x) <= f(y)) as u32,
         FEq => (f(x) == f(y)) as u32,

@@ -112,14 +112,14 @@ fn ref_binary(op: BinaryOp, x: u32, y: u32) -> u32 {
         FMul => from_f64(a * b),
         FDiv => from_f64(a / b),
         FMin => {
-            if b < a {
+            if b < a || a.is_nan() {
                 y
             } else {
                 x
             }
         }
         FMax => {
-            if a < b {
+            if a < b || a.is_nan() {
                 y
             } else {
                 x
@@ -976,6 +976,68 @@ fn the_colour_clamp_is_fused_and_keeps_its_bits() {
                 Threaded::new(&p).run(&mut Registers::new(), &mut io, lanes);
             }
             assert_eq!(got, want, "design {which}, lanes {lanes:#x}");
+        }
+    }
+}
+
+/// `FMin` / `FMax` with a NaN operand give the other operand (Mesa's min and max; piglit
+/// `*-nan-builtin-min/max`), equal operands (±0) the first, on the reference, the compiled
+/// executor (its `Min`, `Max` and the fused `Clamp` of `max` then `min`) and the closures,
+/// the same bits (run at each `TESSERA_SIMD` level).
+#[test]
+fn min_and_max_with_a_nan_operand_give_the_other_operand() {
+    let mut p = Program::new(Stage::Fragment);
+    let [x, y, lo, hi, mn, mx, t, clamped] = [0; 8].map(|_| p.register(Type::F32));
+    for _ in 0..4 {
+        p.input(Type::F32);
+    }
+    for _ in 0..3 {
+        p.output(Type::F32);
+    }
+    p.body = vec![
+        Stmt::Inst(Inst::Input { dst: x, slot: 0 }),
+        Stmt::Inst(Inst::Input { dst: y, slot: 1 }),
+        Stmt::Inst(Inst::Input { dst: lo, slot: 2 }),
+        Stmt::Inst(Inst::Input { dst: hi, slot: 3 }),
+        Stmt::Inst(Inst::Binary { op: BinaryOp::FMin, dst: mn, a: x, b: y }),
+        Stmt::Inst(Inst::Binary { op: BinaryOp::FMax, dst: mx, a: x, b: y }),
+        Stmt::Inst(Inst::Binary { op: BinaryOp::FMax, dst: t, a: x, b: lo }),
+        Stmt::Inst(Inst::Binary { op: BinaryOp::FMin, dst: clamped, a: t, b: hi }),
+        Stmt::Inst(Inst::Output { slot: 0, src: mn }),
+        Stmt::Inst(Inst::Output { slot: 1, src: mx }),
+        Stmt::Inst(Inst::Output { slot: 2, src: clamped }),
+    ];
+    validate(&p).unwrap();
+    let compiled = Compiled::new(&p);
+    let fused = compiled.code().ops.iter().filter(|o| matches!(o, super::lower::Op::Clamp { .. })).count();
+    assert_eq!(fused, 1, "{:#?}", compiled.code());
+    let values = [f32::NAN, 1.5, -2.0, 0.0, -0.0, f32::INFINITY, f32::NEG_INFINITY, -f32::NAN];
+    let min = |a: f32, b: f32| if a.is_nan() || b < a { b } else { a };
+    let max = |a: f32, b: f32| if a.is_nan() || a < b { b } else { a };
+    // Every pair of values for x and y, and as the clamp's bounds.
+    let pairs: Vec<(f32, f32)> = values.iter().flat_map(|&a| values.iter().map(move |&b| (a, b))).collect();
+    for block in pairs.chunks(LANES) {
+        let lane = |k: usize| block[k % block.len()];
+        let word = |g: &dyn Fn(usize) -> f32| -> Word { std::array::from_fn(|k| g(k).to_bits()) };
+        let inputs = [word(&|k| lane(k).0), word(&|k| lane(k).1), word(&|k| lane(k).1), word(&|k| lane(k).0)];
+        let mut want = vec![[0u32; LANES]; 3];
+        let io = &mut Io { inputs: &inputs, uniforms: &[], outputs: &mut want, textures: &NoTextures };
+        Executor::new().run(&p, io, ALL_LANES);
+        for (k, words) in (0..LANES).map(|k| (k, want.iter().map(|w| w[k]).collect::<Vec<u32>>())) {
+            let (a, b) = lane(k);
+            let expected = [min(a, b), max(a, b), min(max(a, b), a)].map(f32::to_bits);
+            assert_eq!(words, expected, "min({a}, {b}), max({a}, {b}), clamp({a}, {b}, {a})");
+        }
+        assert!(min(f32::NAN, 1.5) == 1.5 && max(1.5, f32::NAN) == 1.5);
+        for which in 0..2 {
+            let mut got = vec![[0u32; LANES]; 3];
+            let mut io = Io { inputs: &inputs, uniforms: &[], outputs: &mut got, textures: &NoTextures };
+            if which == 0 {
+                compiled.run(&mut Registers::new(), &mut io, ALL_LANES);
+            } else {
+                Threaded::new(&p).run(&mut Registers::new(), &mut io, ALL_LANES);
+            }
+            assert_eq!(got, want, "design {which}");
         }
     }
 }

@@ -673,6 +673,36 @@ fn dynamic_index_into_a_swizzle_reads_and_writes_one_component() {
 }
 
 #[test]
+fn an_out_argument_indexed_by_a_variable_the_call_changes_writes_the_element_of_the_call() {
+    // GLSL 1.20 section 6.1.1: `a[i]`'s place is fixed when the call starts; the call
+    // writing `i` (an earlier inout argument, copied back first) does not move it.
+    let r = frag(
+        &format!(
+            "{LANE}uniform int u;
+            void f(inout int i, inout float x) {{ i = 0; x = x + 10.0; }}
+            void g(inout int i, out int x) {{ x = 4; i = 3; }}
+            float bump(inout int i) {{ i = 2; return 5.0; }}
+            void h(out float x, in float y) {{ x = y; }}
+            void main() {{
+                float a[4] = float[](1.0, 2.0, 3.0, lane);
+                int i = u;
+                f(i, a[i]);               // a[1] += 10, not a[0]
+                vec4 v = vec4(0.0);
+                int j = u;
+                g(j, v[j]);               // int out into v[1], converted
+                int k = u;
+                h(a[k], bump(k));         // a[1] = 5: k changes in a later argument
+                gl_FragColor = vec4(a[0] + a[2], a[1], v.y + v.w, float(i + j + k));
+            }}"
+        ),
+        &[("u", &[1.0])],
+    );
+    for lane in 0..16usize {
+        assert_eq!([0, 1, 2, 3].map(|c| r.get("gl_FragColor", c)[lane]), [4.0, 5.0, 4.0, 5.0], "lane {lane}");
+    }
+}
+
+#[test]
 fn a_value_is_taken_before_later_side_effects_change_it() {
     let r = frag(
         &format!(
