@@ -402,7 +402,22 @@ impl TextureStage {
     /// Compiled once per SIMD level: the lane loops of the common textures (`lanes`) run at
     /// the machine's level; other textures go quad by quad through the reference kernels.
     pub fn sample_lanes(&self, coords: &[[u32; LANES]; 4], projective: bool, live: u16, out: &mut [[u32; LANES]; 4]) {
-        crate::simd::per_level!(self.sample_lanes_body(&self.sampler, coords, projective, live, out))
+        self.sample_lanes_with(&self.sampler, coords, projective, live, out)
+    }
+
+    /// The per-level copies of the lookup, with `sampler` for the stage's own: one set of
+    /// copies for [`Self::sample_lanes`] and [`Self::sample_lanes_biased`] (a second set
+    /// was about 70 KB per level in each library).
+    #[inline(never)]
+    fn sample_lanes_with(
+        &self,
+        sampler: &sampler::Sampler,
+        coords: &[[u32; LANES]; 4],
+        projective: bool,
+        live: u16,
+        out: &mut [[u32; LANES]; 4],
+    ) {
+        crate::simd::per_level!(self.sample_lanes_body(sampler, coords, projective, live, out))
     }
 
     /// [`TextureStage::sample_lanes`] with a shader's bias argument (`bias`, f32 bits per
@@ -427,7 +442,7 @@ impl TextureStage {
             sampler.shader_bias = f32::from_bits(value);
             // The lane loops may write every lane: into a copy, then the lanes taken.
             let mut texels = *out;
-            crate::simd::per_level!(self.sample_lanes_body(&sampler, coords, projective, lanes, &mut texels));
+            self.sample_lanes_with(&sampler, coords, projective, lanes, &mut texels);
             for (channel, values) in out.iter_mut().zip(&texels) {
                 for l in (0..LANES).filter(|l| lanes & (1 << l) != 0) {
                     channel[l] = values[l];
