@@ -166,6 +166,8 @@ def main():
     parser.add_argument("--lib", default=os.environ.get("TESSERA_LIB_DIR", str(ROOT / "target/release")))
     parser.add_argument("--jobs", type=int, default=os.cpu_count() or 2)
     args = parser.parse_args()
+    # piglit runs each test from its own directory: a relative --lib would find the system's Mesa.
+    args.lib = os.path.abspath(args.lib)
     missing = [what for what, ok in (("piglit", (PIGLIT / "bin/shader_runner").exists()),
                                      ("Xvfb", shutil.which("Xvfb")),
                                      ("tessera's libGL.so.1",
