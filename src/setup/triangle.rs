@@ -89,6 +89,10 @@ impl TriangleSetup {
     /// guard band or with a non-finite coordinate: clipping keeps coordinates inside it
     /// unless the viewport itself lies far outside (glViewport accepts any origin), where
     /// nothing can reach a framebuffer (at most 16384 pixels wide).
+    ///
+    /// Inlined: it runs for every filled triangle, and as a call its 120-byte result went
+    /// through memory and the caller's checks of it.
+    #[inline(always)]
     pub fn new(window: [[f32; 2]; 3]) -> Option<TriangleSetup> {
         if !window.iter().flatten().all(|c| c.abs() <= GUARD_BAND) {
             return None;

@@ -44,6 +44,9 @@ pub fn draw<const N: usize>(
         });
         return outline.stipple;
     }
+    // No varying reads a texture slot (a draw without textures): filled triangles' window
+    // vertices leave the slots out.
+    let slots_unread = geometry.varyings.iter().all(|a| a.texture_coordinate().is_none());
     let split = if !first_vertex && mode == GL_QUADS && geometry.leaves_view_volume(clip_vertices) {
         QuadSplit::SecondDiagonal
     } else {
@@ -88,9 +91,15 @@ pub fn draw<const N: usize>(
             if oa | ob | oc == 0 {
                 let (va, vb, vc) = (&clip_vertices[a], &clip_vertices[b], &clip_vertices[c]);
                 let viewport = &geometry.viewport;
-                let w = [viewport.window(va), viewport.window(vb), viewport.window(vc)];
                 let back = || [va.back_colors, vb.back_colors, vc.back_colors];
-                emit_shaded_triangle_with(scene, state_index, geometry, &w, back, flat);
+                if slots_unread {
+                    let window = |v| viewport.window_without_slots(v);
+                    let w = [window(va), window(vb), window(vc)];
+                    emit_shaded_triangle_with(scene, state_index, geometry, &w, back, flat);
+                } else {
+                    let w = [viewport.window(va), viewport.window(vb), viewport.window(vc)];
+                    emit_shaded_triangle_with(scene, state_index, geometry, &w, back, flat);
+                }
             } else {
                 poly.clear();
                 poly.extend([clip_vertices[a], clip_vertices[b], clip_vertices[c]]);

@@ -58,6 +58,25 @@ impl Viewport {
         }
     }
 
+    /// [`Viewport::window`] without the varying slots, for a filled triangle no varying of
+    /// which reads a texture coordinate: the slots are never read, and copying them into
+    /// each corner was a fifth of making a small triangle's corners.
+    #[inline]
+    pub fn window_without_slots<const N: usize>(&self, v: &ClipVertex<N>) -> WindowVertex<0> {
+        let inv_w = 1.0 / v.clip[3];
+        let ndc = [v.clip[0] * inv_w, v.clip[1] * inv_w, v.clip[2] * inv_w];
+        WindowVertex {
+            x: ndc[0] * self.scale[0] + self.offset[0],
+            y: ndc[1] * self.scale[1] + self.offset[1],
+            z: ndc[2] * self.scale[2] + self.offset[2],
+            inv_w,
+            color: v.color,
+            secondary_color: v.secondary_color,
+            tex_coords: [],
+            fog_coord: v.fog_coord,
+        }
+    }
+
     /// Window coordinates of a line or point vertex in llvmpipe's y-down window space.
     /// Vertices straight from the vertex stage get the multiply-add llvmpipe's generated
     /// code fuses (`fused`); vertices made by clipping get its C clipper's separate
@@ -83,5 +102,36 @@ impl Viewport {
             tex_coords: v.tex_coords,
             fog_coord: v.fog_coord,
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::vertex::clip::FixedClipVertex;
+
+    /// A filled triangle's corners without their slots keep every other value of the full
+    /// corners, bit for bit (the images of draws without textures must not change).
+    #[test]
+    fn corners_without_slots_keep_every_other_value() {
+        let viewport = Viewport::new([3, -7, 250, 190], (0.5, 0.25), 1.0, 300);
+        let v = FixedClipVertex {
+            clip: [0.3, -1.7, 0.9, 1.9],
+            eye: [0.0; 4],
+            color: [0.1, 0.2, 0.3, 0.4],
+            secondary_color: [0.5, 0.6, 0.7, 0.8],
+            back_colors: [[0.0; 4]; 2],
+            tex_coords: [[9.0; 4]; 4],
+            fog_coord: 0.75,
+            point_size: 0.0,
+            edge_flag: true,
+        };
+        let (full, bare) = (viewport.window(&v), viewport.window_without_slots(&v));
+        let bits = |w: [f32; 4]| w.map(f32::to_bits);
+        assert_eq!(bits([full.x, full.y, full.z, full.inv_w]), bits([bare.x, bare.y, bare.z, bare.inv_w]));
+        assert_eq!(bits(full.color), bits(bare.color));
+        assert_eq!(bits(full.secondary_color), bits(bare.secondary_color));
+        assert_eq!(full.fog_coord.to_bits(), bare.fog_coord.to_bits());
+        assert_eq!(full.tex_coords, [[9.0; 4]; 4]);
     }
 }
