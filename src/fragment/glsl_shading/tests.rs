@@ -178,4 +178,5 @@ fn a_loop_over_lights_with_ternaries_and_an_if_runs_as_straight_code() {
         "not one unmasked run: {:?}",
         code.body
     );
+    eprintln!("phong: {} operations, {} registers", code.ops.len(), code.registers);
 }
