@@ -46,6 +46,17 @@ pub const MAX_UNROLLED_ITERATIONS: usize = 32;
 /// their copies).
 pub const MAX_UNROLLED_STATEMENTS: usize = 2048;
 
+/// The most instructions the unrolling of one program may visit (copies of loops nested in
+/// loops are walked again for each copy of the outer ones: piglit's `unroll-explosion`, 16
+/// loops of 16 nested, would take forever). Past it, loops stay loops.
+pub const MAX_UNROLLING_WORK: usize = 1 << 16;
+
+/// The unrolling's state: the registers' types and the work left.
+struct Unroller<'a> {
+    types: &'a [Type],
+    work: usize,
+}
+
 /// The most instructions the two arms of a converted `if` may hold together.
 pub const MAX_CONVERTED_INSTRUCTIONS: usize = 256;
 
@@ -58,7 +69,8 @@ pub fn flatten(program: &Program) -> Program {
         return out;
     }
     let body = std::mem::take(&mut out.body);
-    let body = unroll_block(&program.registers, body, &mut Env::new());
+    let body =
+        unroll_block(&mut Unroller { types: &program.registers, work: MAX_UNROLLING_WORK }, body, &mut Env::new());
     out.body = convert_block(&mut out, body);
     out
 }
@@ -163,18 +175,19 @@ fn is_exit(s: &Stmt) -> bool {
 
 /// Unrolls the loops of `stmts` and takes the `if`s on known conditions; `env` is updated
 /// to after them.
-fn unroll_block(types: &[Type], stmts: Vec<Stmt>, env: &mut Env) -> Vec<Stmt> {
+fn unroll_block(cx: &mut Unroller, stmts: Vec<Stmt>, env: &mut Env) -> Vec<Stmt> {
     let mut out = Vec::with_capacity(stmts.len());
     for s in stmts {
         match s {
             Stmt::Inst(inst) => {
-                let inst = simplify(types, inst, env);
+                cx.work = cx.work.saturating_sub(1);
+                let inst = simplify(cx.types, inst, env);
                 eval(&inst, env);
                 out.push(Stmt::Inst(inst));
             }
             Stmt::If { cond, then, otherwise } => match env.get(&cond) {
                 Some(&c) => {
-                    let arm = unroll_block(types, if c != 0 { then } else { otherwise }, env);
+                    let arm = unroll_block(cx, if c != 0 { then } else { otherwise }, env);
                     let exits = arm.last().is_some_and(is_exit);
                     out.extend(arm);
                     if exits {
@@ -183,8 +196,8 @@ fn unroll_block(types: &[Type], stmts: Vec<Stmt>, env: &mut Env) -> Vec<Stmt> {
                 }
                 None => {
                     let mut other = env.clone();
-                    let then = unroll_block(types, then, env);
-                    let otherwise = unroll_block(types, otherwise, &mut other);
+                    let then = unroll_block(cx, then, env);
+                    let otherwise = unroll_block(cx, otherwise, &mut other);
                     // A side that left (its list ends in an exit) has no lanes after the if.
                     let then_exits = then.last().is_some_and(is_exit);
                     let otherwise_exits = otherwise.last().is_some_and(is_exit);
@@ -197,7 +210,7 @@ fn unroll_block(types: &[Type], stmts: Vec<Stmt>, env: &mut Env) -> Vec<Stmt> {
                 }
             },
             Stmt::Loop { body } => {
-                let exits = unroll_loop(types, body, env, &mut out);
+                let exits = unroll_loop(cx, body, env, &mut out);
                 if exits {
                     return out;
                 }
@@ -257,11 +270,12 @@ fn kill_writes(stmts: &[Stmt], env: &mut Env) {
 
 /// Appends loop `body` to `out`, unrolled if it can be (see the module docs); returns
 /// whether every lane has left the program after it (an unrolled `return` or `discard`).
-fn unroll_loop(types: &[Type], body: Vec<Stmt>, env: &mut Env, out: &mut Vec<Stmt>) -> bool {
+fn unroll_loop(cx: &mut Unroller, body: Vec<Stmt>, env: &mut Env, out: &mut Vec<Stmt>) -> bool {
     let mut copies = Vec::new();
     let mut state = env.clone();
-    for _ in 0..MAX_UNROLLED_ITERATIONS {
-        let copy = unroll_block(types, body.clone(), &mut state);
+    let iterations = if cx.work == 0 { 0 } else { MAX_UNROLLED_ITERATIONS };
+    for _ in 0..iterations {
+        let copy = unroll_block(cx, body.clone(), &mut state);
         if nested_loop_exit(&copy) {
             break;
         }
@@ -285,7 +299,7 @@ fn unroll_loop(types: &[Type], body: Vec<Stmt>, env: &mut Env, out: &mut Vec<Stm
     }
     // Kept as a loop: its body sees any iteration's values.
     kill_writes(&body, env);
-    let body = unroll_block(types, body, &mut env.clone());
+    let body = unroll_block(cx, body, &mut env.clone());
     out.push(Stmt::Loop { body });
     false
 }

@@ -1552,3 +1552,41 @@ fn loops_that_break_under_unknown_conditions_or_run_long_stay_loops() {
     let (_, loops) = control_statements(&super::flatten::flatten(&program).body);
     assert_eq!(loops, 1);
 }
+
+/// piglit's `unroll-explosion`: loops of 16 iterations nested deep. Unrolling each copy of
+/// each loop again would never end; the work bound keeps flattening quick.
+#[test]
+fn deeply_nested_counted_loops_flatten_quickly() {
+    let mut p = Program::new(Stage::Fragment);
+    let x = p.register(Type::F32);
+    let slot = p.input(Type::F32);
+    let out = p.output(Type::F32);
+    let (one, sixteen) = (p.register(Type::I32), p.register(Type::I32));
+    let mut body = vec![Stmt::Inst(Inst::Unary { op: UnaryOp::Exp, dst: x, a: x })];
+    for _ in 0..14 {
+        let (i, more) = (p.register(Type::I32), p.register(Type::Bool));
+        let mut inner = vec![
+            Stmt::Inst(Inst::Binary { op: BinaryOp::ILt, dst: more, a: i, b: sixteen }),
+            Stmt::If { cond: more, then: vec![], otherwise: vec![Stmt::Break] },
+            Stmt::Inst(Inst::Binary { op: BinaryOp::IAdd, dst: i, a: i, b: one }),
+        ];
+        inner.extend(body);
+        // The counter starts again at every iteration of the enclosing loop.
+        body = vec![Stmt::Inst(Inst::Const { dst: i, value: Const::I32(0) }), Stmt::Loop { body: inner }];
+    }
+    p.body = vec![
+        Stmt::Inst(Inst::Input { dst: x, slot }),
+        Stmt::Inst(Inst::Const { dst: one, value: Const::I32(1) }),
+        Stmt::Inst(Inst::Const { dst: sixteen, value: Const::I32(16) }),
+    ];
+    p.body.extend(body);
+    p.body.push(Stmt::Inst(Inst::Output { slot: out, src: x }));
+    if validate(&p).is_err() {
+        return; // deeper than the validator allows: nothing to flatten
+    }
+    let start = std::time::Instant::now();
+    let flat = super::flatten::flatten(&p);
+    validate(&flat).unwrap();
+    assert!(start.elapsed().as_secs() < 5, "flattening took {:?}", start.elapsed());
+    assert!(control_statements(&flat.body).1 > 0, "the nest stays loops");
+}
