@@ -503,7 +503,7 @@ impl Straight for Interpreter {
 impl Compiled {
     /// Compiles `program`, which [`super::validate::validate`] accepted.
     pub fn new(program: &Program) -> Compiled {
-        let code = lower(program);
+        let code = lower(&super::flatten::flatten(program));
         let (prologue, rest) = split_prologue(&code);
         Compiled { code, prologue, rest }
     }

@@ -14,6 +14,8 @@
 //!   (constants folded, dead code dropped, uniform values scalar, fused operations) and
 //!   interpreted over a file of 16-lane words, bit-identical to [`exec`] (tested on random
 //!   programs); `fast`'s docs say why an interpreter, with measurements.
+//! - [`flatten`]: loops of known trip counts unrolled and pure `if`s made selects before
+//!   lowering, so that typical GLSL programs run as straight code.
 //! - [`cache`]: compiled programs by the key of the state that shaped them, least recently
 //!   used evicted first (one cache per share group).
 //! - [`exec`]: the reference: runs a validated program over 16 lanes with execution masks, statement by statement; the arithmetic
@@ -27,6 +29,7 @@ pub mod cache;
 pub mod dump;
 pub mod exec;
 pub mod fast;
+pub mod flatten;
 pub mod ir;
 pub mod lower;
 pub mod math;

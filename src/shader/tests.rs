@@ -1434,3 +1434,221 @@ fn exp2_and_log2_over_lanes_give_the_scalar_functions_bits() {
         assert_eq!(super::math::log2_lanes(&input), input.map(|b| super::math::log2(f32::from_bits(b)).to_bits()));
     }
 }
+
+// ---- Flattening (`super::flatten`) ---------------------------------------------------
+
+/// Counts the `if`s and loops of a body.
+fn control_statements(stmts: &[Stmt]) -> (usize, usize) {
+    stmts.iter().fold((0, 0), |(ifs, loops), s| match s {
+        Stmt::If { then, otherwise, .. } => {
+            let (a, b) = control_statements(then);
+            let (c, d) = control_statements(otherwise);
+            (ifs + 1 + a + c, loops + b + d)
+        }
+        Stmt::Loop { body } => {
+            let (a, b) = control_statements(body);
+            (ifs + a, loops + 1 + b)
+        }
+        _ => (ifs, loops),
+    })
+}
+
+#[test]
+fn flattened_programs_give_the_reference_bits_lookups_and_discards() {
+    use super::flatten::flatten;
+    let mut rng = Rng(0xf1a7_7e40_5eed_0001);
+    let mut executor = Executor::new();
+    let (mut unrolled, mut converted, mut straight, mut discards) = (0, 0, 0, 0);
+    for case in 0..4000u64 {
+        let stage = if case % 3 == 0 { Stage::Vertex } else { Stage::Fragment };
+        let mut generator = Generator::new(rng.next(), stage);
+        generator.cross_lane = case % 2 == 0;
+        let program = generator.program();
+        let flat = flatten(&program);
+        validate(&flat).unwrap_or_else(|e| panic!("case {case}: {e}\n{}", super::dump::dump(&flat)));
+        let (ifs, loops) = control_statements(&program.body);
+        let (flat_ifs, flat_loops) = control_statements(&flat.body);
+        unrolled += loops - flat_loops;
+        converted += ifs.saturating_sub(flat_ifs);
+        straight += usize::from(flat_ifs + flat_loops == 0 && ifs + loops > 0);
+        // NaN, infinities, signed zeros and denormals in the inputs and the uniform.
+        let inputs: Vec<Word> = program
+            .inputs
+            .iter()
+            .map(|t| if *t == Type::F32 { special_word(&mut rng) } else { std::array::from_fn(|_| rng.int()) })
+            .collect();
+        let uniforms = [rng.float().to_bits(), rng.int()];
+        let lanes = if rng.chance(60) { ALL_LANES } else { rng.next() as u16 };
+        let mut run = |p: &Program| {
+            let textures = Recorder::default();
+            let mut outputs = vec![[0u32; LANES]; p.outputs.len()];
+            let mut io = Io { inputs: &inputs, uniforms: &uniforms, outputs: &mut outputs, textures: &textures };
+            let alive = executor.run(p, &mut io, lanes);
+            (alive, outputs, textures.0.into_inner())
+        };
+        // Bit for bit, NaN payloads included: the same operations on the same values.
+        let reference = run(&program);
+        let got = run(&flat);
+        discards += usize::from(reference.0 != lanes);
+        assert!(
+            got == reference,
+            "case {case} differs\n{}\nflattened:\n{}",
+            super::dump::dump(&program),
+            super::dump::dump(&flat)
+        );
+    }
+    assert!(unrolled > 1000, "only {unrolled} loops unrolled");
+    assert!(converted > 1000, "only {converted} ifs converted");
+    assert!(straight > 80, "only {straight} programs made straight");
+    assert!(discards > 200, "only {discards} runs with discards");
+}
+
+/// A GLSL `for (int i = 0; i < 2; i++)` as the front end lowers it (an `again` flag guarding
+/// the step, the test then `break`), around `if (d > 0.0) s += exp2(log2(d) * e)`.
+fn glsl_style_loop() -> Program {
+    let mut p = Program::new(Stage::Fragment);
+    let (f, i32t, b) = (Type::F32, Type::I32, Type::Bool);
+    let slot_x = p.input(f);
+    let slot_e = p.uniform(f);
+    let out = p.output(f);
+    let [x, e, s, d, l, t] = [0; 6].map(|_| p.register(f));
+    let [i, one, two] = [0; 3].map(|_| p.register(i32t));
+    let [again, yes, no, more, positive] = [0; 5].map(|_| p.register(b));
+    let zero = p.register(f);
+    let inst = Stmt::Inst;
+    let body = vec![
+        Stmt::If {
+            cond: again,
+            then: vec![inst(Inst::Binary { op: BinaryOp::IAdd, dst: i, a: i, b: one })],
+            otherwise: vec![],
+        },
+        inst(Inst::Mov { dst: again, src: yes }),
+        inst(Inst::Binary { op: BinaryOp::ILt, dst: more, a: i, b: two }),
+        Stmt::If { cond: more, then: vec![], otherwise: vec![Stmt::Break] },
+        inst(Inst::Binary { op: BinaryOp::FSub, dst: d, a: x, b: s }),
+        inst(Inst::Binary { op: BinaryOp::FLt, dst: positive, a: zero, b: d }),
+        Stmt::If {
+            cond: positive,
+            then: vec![
+                inst(Inst::Unary { op: UnaryOp::Log2, dst: l, a: d }),
+                inst(Inst::Binary { op: BinaryOp::FMul, dst: l, a: l, b: e }),
+                inst(Inst::Unary { op: UnaryOp::Exp2, dst: t, a: l }),
+                inst(Inst::Binary { op: BinaryOp::FAdd, dst: s, a: s, b: t }),
+            ],
+            otherwise: vec![inst(Inst::Binary { op: BinaryOp::FMul, dst: s, a: s, b: d })],
+        },
+    ];
+    p.body = vec![
+        inst(Inst::Input { dst: x, slot: slot_x }),
+        inst(Inst::Uniform { dst: e, slot: slot_e }),
+        inst(Inst::Const { dst: s, value: Const::F32(0.25) }),
+        inst(Inst::Const { dst: zero, value: Const::F32(0.0) }),
+        inst(Inst::Const { dst: i, value: Const::I32(0) }),
+        inst(Inst::Const { dst: one, value: Const::I32(1) }),
+        inst(Inst::Const { dst: two, value: Const::I32(2) }),
+        inst(Inst::Const { dst: yes, value: Const::Bool(true) }),
+        inst(Inst::Const { dst: no, value: Const::Bool(false) }),
+        inst(Inst::Mov { dst: again, src: no }),
+        Stmt::Loop { body },
+        inst(Inst::Output { slot: out, src: s }),
+    ];
+    p
+}
+
+#[test]
+fn a_glsl_for_loop_of_two_with_a_pure_if_becomes_straight_code_with_the_same_bits() {
+    let program = glsl_style_loop();
+    validate(&program).unwrap();
+    let flat = super::flatten::flatten(&program);
+    validate(&flat).unwrap();
+    assert!(flat.body.iter().all(|s| matches!(s, Stmt::Inst(_))), "not straight:\n{}", super::dump::dump(&flat));
+    let mut rng = Rng(0x0123_4567_89ab_cdef);
+    let mut executor = Executor::new();
+    let mut registers = Registers::new();
+    for _ in 0..200 {
+        let inputs = [special_word(&mut rng)];
+        let uniforms = [rng.float().to_bits()];
+        let lanes = if rng.chance(50) { ALL_LANES } else { rng.next() as u16 };
+        let mut reference = vec![[0u32; LANES]];
+        executor.run(
+            &program,
+            &mut Io { inputs: &inputs, uniforms: &uniforms, outputs: &mut reference, textures: &NoTextures },
+            lanes,
+        );
+        for p in [&program, &flat] {
+            let mut outputs = vec![[0u32; LANES]];
+            executor.run(
+                p,
+                &mut Io { inputs: &inputs, uniforms: &uniforms, outputs: &mut outputs, textures: &NoTextures },
+                lanes,
+            );
+            assert_eq!(outputs, reference);
+        }
+        // The compiled form runs one straight run of operations, with the same bits.
+        let compiled = Compiled::new(&program);
+        let mut outputs = vec![[0u32; LANES]];
+        compiled.run(
+            &mut registers,
+            &mut Io { inputs: &inputs, uniforms: &uniforms, outputs: &mut outputs, textures: &NoTextures },
+            lanes,
+        );
+        assert_eq!(outputs, reference);
+    }
+}
+
+#[test]
+fn loops_that_break_under_unknown_conditions_or_run_long_stay_loops() {
+    let mut program = glsl_style_loop();
+    // The trip count from an input: not known when compiling.
+    let Stmt::Inst(Inst::Const { dst: i, .. }) = program.body[4] else { panic!("the counter") };
+    program.body[4] = Stmt::Inst(Inst::Input { dst: i, slot: program.inputs.len() as u16 });
+    program.inputs.push(Type::I32);
+    validate(&program).unwrap();
+    let (_, loops) = control_statements(&super::flatten::flatten(&program).body);
+    assert_eq!(loops, 1);
+    // A known trip count above the bound.
+    let mut program = glsl_style_loop();
+    let Stmt::Inst(Inst::Const { dst: two, .. }) = program.body[6] else { panic!("the limit") };
+    let limit = super::flatten::MAX_UNROLLED_ITERATIONS as i32 + 1;
+    program.body[6] = Stmt::Inst(Inst::Const { dst: two, value: Const::I32(limit) });
+    let (_, loops) = control_statements(&super::flatten::flatten(&program).body);
+    assert_eq!(loops, 1);
+}
+
+/// piglit's `unroll-explosion`: loops of 16 iterations nested deep. Unrolling each copy of
+/// each loop again would never end; the work bound keeps flattening quick.
+#[test]
+fn deeply_nested_counted_loops_flatten_quickly() {
+    let mut p = Program::new(Stage::Fragment);
+    let x = p.register(Type::F32);
+    let slot = p.input(Type::F32);
+    let out = p.output(Type::F32);
+    let (one, sixteen) = (p.register(Type::I32), p.register(Type::I32));
+    let mut body = vec![Stmt::Inst(Inst::Unary { op: UnaryOp::Exp, dst: x, a: x })];
+    for _ in 0..14 {
+        let (i, more) = (p.register(Type::I32), p.register(Type::Bool));
+        let mut inner = vec![
+            Stmt::Inst(Inst::Binary { op: BinaryOp::ILt, dst: more, a: i, b: sixteen }),
+            Stmt::If { cond: more, then: vec![], otherwise: vec![Stmt::Break] },
+            Stmt::Inst(Inst::Binary { op: BinaryOp::IAdd, dst: i, a: i, b: one }),
+        ];
+        inner.extend(body);
+        // The counter starts again at every iteration of the enclosing loop.
+        body = vec![Stmt::Inst(Inst::Const { dst: i, value: Const::I32(0) }), Stmt::Loop { body: inner }];
+    }
+    p.body = vec![
+        Stmt::Inst(Inst::Input { dst: x, slot }),
+        Stmt::Inst(Inst::Const { dst: one, value: Const::I32(1) }),
+        Stmt::Inst(Inst::Const { dst: sixteen, value: Const::I32(16) }),
+    ];
+    p.body.extend(body);
+    p.body.push(Stmt::Inst(Inst::Output { slot: out, src: x }));
+    if validate(&p).is_err() {
+        return; // deeper than the validator allows: nothing to flatten
+    }
+    let start = std::time::Instant::now();
+    let flat = super::flatten::flatten(&p);
+    validate(&flat).unwrap();
+    assert!(start.elapsed().as_secs() < 5, "flattening took {:?}", start.elapsed());
+    assert!(control_statements(&flat.body).1 > 0, "the nest stays loops");
+}

@@ -185,3 +185,39 @@ fn each_draw_buffer_takes_its_frag_data() {
         assert_eq!(buffer1[i], [0.25; 4]);
     }
 }
+
+/// `tools/bench`'s phong fragment shader: a loop over two lights, ternaries on the light's
+/// `w`, an `if` around `pow`.
+const PHONG: &str = "varying vec3 normal;\n\
+varying vec3 position;\n\
+void main() {\n\
+    vec3 n = normalize(normal);\n\
+    vec3 eye = -normalize(position);\n\
+    vec4 color = gl_FrontLightModelProduct.sceneColor;\n\
+    for (int i = 0; i < 2; i++) {\n\
+        vec4 p = gl_LightSource[i].position;\n\
+        vec3 l = p.w == 0.0 ? normalize(p.xyz) : normalize(p.xyz - position);\n\
+        float attenuation = p.w == 0.0 ? 1.0\n\
+            : 1.0 / (gl_LightSource[i].constantAttenuation\n\
+                     + gl_LightSource[i].linearAttenuation * length(p.xyz - position));\n\
+        float diffuse = max(dot(n, l), 0.0);\n\
+        color += attenuation * (gl_FrontLightProduct[i].ambient + gl_FrontLightProduct[i].diffuse * diffuse);\n\
+        if (diffuse > 0.0) {\n\
+            float h = max(dot(n, normalize(l + eye)), 0.0);\n\
+            color += attenuation * gl_FrontLightProduct[i].specular * pow(h, gl_FrontMaterial.shininess);\n\
+        }\n\
+    }\n\
+    gl_FragColor = clamp(color, 0.0, 1.0);\n\
+}\n";
+
+#[test]
+fn a_loop_over_lights_with_ternaries_and_an_if_runs_as_straight_code() {
+    let shading = shading(PHONG, 16);
+    let code = shading.code.compiled().code();
+    assert!(
+        matches!(code.body.as_slice(), [crate::shader::lower::Node::Run { masked: false, .. }]),
+        "not one unmasked run: {:?}",
+        code.body
+    );
+    eprintln!("phong: {} operations, {} registers", code.ops.len(), code.registers);
+}

@@ -1,0 +1,430 @@
+//! Control flow made straight before compiling: [`flatten`] unrolls loops whose trip count
+//! is known when the program is compiled and turns `if`s whose arms are pure arithmetic into
+//! selects, so that typical GLSL fragment programs (a `for` over two lights, a ternary, an
+//! `if (diffuse > 0.0)` around a `pow`) reach [`super::lower`] as one straight run of
+//! operations: [`super::fast`] then runs them without its control tree, masks per run or
+//! recursion, which cost phong 5× the time of its straight-line arithmetic.
+//!
+//! **Why at the IR, before lowering.** Both passes are rewrites of structured statements
+//! whose result is again a valid [`Program`]: the reference [`super::exec`] runs the
+//! flattened program to the same bits as the original (the tests check it on random programs
+//! and inputs), and [`super::lower`]'s folding, dead code, uniform values and fused
+//! operations apply to the straight result unchanged (an unrolled `i < 2` becomes constants
+//! it drops; a select on a uniform condition stays a scalar operation).
+//!
+//! - **Unrolling.** Walking the program with the registers whose value is a known constant in
+//!   every running lane (constants, and operations on them computed with the executor's own
+//!   lane functions), an `if` on a known condition is replaced by the arm it takes (in the
+//!   reference, the other arm runs in no lane). A loop is unrolled by walking copies of its
+//!   body so, one per iteration, while every `break` and `continue` of the loop ends up at
+//!   the top level of the iteration (every running lane leaves together): a `continue` ends
+//!   the copy, a `break`, `return` or `discard` ends the loop. GLSL's
+//!   `for (int i = 0; i < n; i++)` with a constant `n` is such a loop. A loop still running
+//!   after [`MAX_UNROLLED_ITERATIONS`], or whose copies outgrow [`MAX_UNROLLED_STATEMENTS`],
+//!   or that breaks under an unknown condition, stays a loop. Statements after a `break`,
+//!   `continue`, `return` or `discard` in the same list run in no lane and are dropped.
+//! - **If-conversion.** An `if` whose arms (after their own nested `if`s are converted) are
+//!   instructions that only compute registers (no texture lookups, whose sampler sees the
+//!   running lanes and, with an implicit level of detail, their quads; no derivatives,
+//!   which read other lanes of registers the arms would now write in all of them; no
+//!   outputs, `discard`, loops or exits) becomes both arms, each writing fresh registers,
+//!   then for every register an arm writes `r = cond ? then's value : else's value` (the
+//!   register itself where an arm leaves it). The selects are written in the lanes that ran
+//!   the `if`, which is where the original arms wrote; the fresh registers are read by the
+//!   selects alone. Arithmetic has no traps, so computing an arm in lanes that do not take it
+//!   changes only values nothing reads. Arms larger than [`MAX_CONVERTED_INSTRUCTIONS`] stay
+//!   branches (a rare path costs its full price in every lane once converted).
+use std::collections::HashMap;
+
+use super::ir::{Const, Inst, Program, Reg, Stmt, Type};
+use super::lower::{binary_lane, dot_lane, mad_lane, unary_lane};
+
+/// The most iterations of one loop that are unrolled.
+pub const MAX_UNROLLED_ITERATIONS: usize = 32;
+
+/// The most statements one loop's unrolled copies may hold (nested unrolled loops count
+/// their copies).
+pub const MAX_UNROLLED_STATEMENTS: usize = 2048;
+
+/// The most instructions the unrolling of one program may visit (copies of loops nested in
+/// loops are walked again for each copy of the outer ones: piglit's `unroll-explosion`, 16
+/// loops of 16 nested, would take forever). Past it, loops stay loops.
+pub const MAX_UNROLLING_WORK: usize = 1 << 16;
+
+/// The unrolling's state: the registers' types and the work left.
+struct Unroller<'a> {
+    types: &'a [Type],
+    work: usize,
+}
+
+/// The most instructions the two arms of a converted `if` may hold together.
+pub const MAX_CONVERTED_INSTRUCTIONS: usize = 256;
+
+/// `program` with its loops of known trip counts unrolled and its pure `if`s turned into
+/// selects (see the module docs): the same outputs, lookups and discards in every lane.
+/// `program` must be valid; so is the result.
+pub fn flatten(program: &Program) -> Program {
+    let mut out = program.clone();
+    if !has_control_flow(&program.body) {
+        return out;
+    }
+    let body = std::mem::take(&mut out.body);
+    let body =
+        unroll_block(&mut Unroller { types: &program.registers, work: MAX_UNROLLING_WORK }, body, &mut Env::new());
+    out.body = convert_block(&mut out, body);
+    out
+}
+
+fn has_control_flow(stmts: &[Stmt]) -> bool {
+    stmts.iter().any(|s| !matches!(s, Stmt::Inst(_)))
+}
+
+// ---- Unrolling ----------------------------------------------------------------------
+
+/// The registers whose value is the same known word in every running lane.
+type Env = HashMap<Reg, u32>;
+
+/// Records what `inst` writes in `env`.
+fn eval(inst: &Inst, env: &mut Env) {
+    match (inst.dst(), value(inst, env)) {
+        (Some(d), Some(v)) => {
+            env.insert(d, v);
+        }
+        _ => {
+            for r in inst.writes() {
+                env.remove(&r);
+            }
+        }
+    }
+}
+
+/// The word `inst` computes, if `env` knows its operands.
+fn value(inst: &Inst, env: &Env) -> Option<u32> {
+    let known = |r: &Reg| env.get(r).copied();
+    match *inst {
+        Inst::Const { value, .. } => Some(value.bits()),
+        Inst::Mov { src, .. } => known(&src),
+        Inst::Unary { op, a, .. } => known(&a).map(|x| unary_lane(op, x)),
+        Inst::Binary { op, a, b, .. } => match (known(&a), known(&b)) {
+            (Some(x), Some(y)) => Some(binary_lane(op, x, y)),
+            _ => None,
+        },
+        Inst::Mad { a, b, c, .. } => match (known(&a), known(&b), known(&c)) {
+            (Some(x), Some(y), Some(z)) => Some(mad_lane(x, y, z)),
+            _ => None,
+        },
+        Inst::Dot { n, a, b, .. } => {
+            let (mut x, mut y) = ([0; 4], [0; 4]);
+            let mut all = true;
+            for k in 0..n as usize {
+                match (known(&a[k]), known(&b[k])) {
+                    (Some(p), Some(q)) => (x[k], y[k]) = (p, q),
+                    _ => all = false,
+                }
+            }
+            all.then(|| dot_lane(n as usize, &x, &y))
+        }
+        Inst::Select { cond, a, b, .. } => match known(&cond) {
+            Some(c) => known(if c != 0 { &a } else { &b }),
+            None => None,
+        },
+        _ => None,
+    }
+}
+
+/// `inst` with what `env` knows put in: an operation on known values becomes its constant
+/// (computed with the executor's lane functions: the same bits), a select on a known
+/// condition a move (an unrolled loop's `gl_LightSource[i]` is a chain of those).
+fn simplify(types: &[Type], inst: Inst, env: &Env) -> Inst {
+    let known = |r: &Reg| env.contains_key(r);
+    let folds = match &inst {
+        Inst::Mov { src, .. } => known(src),
+        Inst::Unary { a, .. } => known(a),
+        Inst::Binary { a, b, .. } => known(a) && known(b),
+        Inst::Mad { a, b, c, .. } => known(a) && known(b) && known(c),
+        Inst::Dot { n, a, b, .. } => (0..*n as usize).all(|k| known(&a[k]) && known(&b[k])),
+        Inst::Select { cond, a, b, .. } => known(cond) && known(a) && known(b),
+        _ => false,
+    };
+    if folds {
+        let dst = inst.dst().expect("an operation writes a register");
+        let bits = value(&inst, env).expect("known operands");
+        let value = match types[dst.0 as usize] {
+            Type::F32 => Const::F32(f32::from_bits(bits)),
+            Type::I32 => Const::I32(bits as i32),
+            Type::U32 => Const::U32(bits),
+            Type::Bool => Const::Bool(bits != 0),
+        };
+        return Inst::Const { dst, value };
+    }
+    match inst {
+        Inst::Select { dst, cond, a, b } if known(&cond) => Inst::Mov { dst, src: if env[&cond] != 0 { a } else { b } },
+        other => other,
+    }
+}
+
+/// The values both of two environments know alike.
+fn intersect(a: Env, b: &Env) -> Env {
+    a.into_iter().filter(|(r, v)| b.get(r) == Some(v)).collect()
+}
+
+/// Whether a statement ends the list it is in for every lane that runs it.
+fn is_exit(s: &Stmt) -> bool {
+    matches!(s, Stmt::Break | Stmt::Continue | Stmt::Return | Stmt::Discard)
+}
+
+/// Unrolls the loops of `stmts` and takes the `if`s on known conditions; `env` is updated
+/// to after them.
+fn unroll_block(cx: &mut Unroller, stmts: Vec<Stmt>, env: &mut Env) -> Vec<Stmt> {
+    let mut out = Vec::with_capacity(stmts.len());
+    for s in stmts {
+        match s {
+            Stmt::Inst(inst) => {
+                cx.work = cx.work.saturating_sub(1);
+                let inst = simplify(cx.types, inst, env);
+                eval(&inst, env);
+                out.push(Stmt::Inst(inst));
+            }
+            Stmt::If { cond, then, otherwise } => match env.get(&cond) {
+                Some(&c) => {
+                    let arm = unroll_block(cx, if c != 0 { then } else { otherwise }, env);
+                    let exits = arm.last().is_some_and(is_exit);
+                    out.extend(arm);
+                    if exits {
+                        return out;
+                    }
+                }
+                None => {
+                    let mut other = env.clone();
+                    let then = unroll_block(cx, then, env);
+                    let otherwise = unroll_block(cx, otherwise, &mut other);
+                    // A side that left (its list ends in an exit) has no lanes after the if.
+                    let then_exits = then.last().is_some_and(is_exit);
+                    let otherwise_exits = otherwise.last().is_some_and(is_exit);
+                    *env = match (then_exits, otherwise_exits) {
+                        (true, false) => other,
+                        (false, true) => std::mem::take(env),
+                        _ => intersect(std::mem::take(env), &other),
+                    };
+                    out.push(Stmt::If { cond, then, otherwise });
+                }
+            },
+            Stmt::Loop { body } => {
+                let exits = unroll_loop(cx, body, env, &mut out);
+                if exits {
+                    return out;
+                }
+            }
+            exit => {
+                out.push(exit);
+                return out;
+            }
+        }
+    }
+    out
+}
+
+/// Whether `stmts` hold a `break` or `continue` of their loop other than at their top level.
+fn nested_loop_exit(stmts: &[Stmt]) -> bool {
+    fn inside(stmts: &[Stmt]) -> bool {
+        stmts.iter().any(|s| match s {
+            Stmt::Break | Stmt::Continue => true,
+            Stmt::If { then, otherwise, .. } => inside(then) || inside(otherwise),
+            _ => false,
+        })
+    }
+    stmts.iter().any(|s| match s {
+        Stmt::If { then, otherwise, .. } => inside(then) || inside(otherwise),
+        _ => false,
+    })
+}
+
+fn count(stmts: &[Stmt]) -> usize {
+    stmts
+        .iter()
+        .map(|s| match s {
+            Stmt::If { then, otherwise, .. } => 1 + count(then) + count(otherwise),
+            Stmt::Loop { body } => 1 + count(body),
+            _ => 1,
+        })
+        .sum()
+}
+
+fn kill_writes(stmts: &[Stmt], env: &mut Env) {
+    for s in stmts {
+        match s {
+            Stmt::Inst(inst) => {
+                for r in inst.writes() {
+                    env.remove(&r);
+                }
+            }
+            Stmt::If { then, otherwise, .. } => {
+                kill_writes(then, env);
+                kill_writes(otherwise, env);
+            }
+            Stmt::Loop { body } => kill_writes(body, env),
+            _ => {}
+        }
+    }
+}
+
+/// Appends loop `body` to `out`, unrolled if it can be (see the module docs); returns
+/// whether every lane has left the program after it (an unrolled `return` or `discard`).
+fn unroll_loop(cx: &mut Unroller, body: Vec<Stmt>, env: &mut Env, out: &mut Vec<Stmt>) -> bool {
+    let mut copies = Vec::new();
+    let mut state = env.clone();
+    let iterations = if cx.work == 0 { 0 } else { MAX_UNROLLED_ITERATIONS };
+    for _ in 0..iterations {
+        let copy = unroll_block(cx, body.clone(), &mut state);
+        if nested_loop_exit(&copy) {
+            break;
+        }
+        let last = copy.last().cloned();
+        copies.extend(copy.into_iter().filter(|s| !matches!(s, Stmt::Break | Stmt::Continue)));
+        if count(&copies) > MAX_UNROLLED_STATEMENTS {
+            break;
+        }
+        match last {
+            Some(Stmt::Break) => {
+                *env = state;
+                out.extend(copies);
+                return false;
+            }
+            Some(Stmt::Return | Stmt::Discard) => {
+                out.extend(copies);
+                return true;
+            }
+            _ => {}
+        }
+    }
+    // Kept as a loop: its body sees any iteration's values.
+    kill_writes(&body, env);
+    let body = unroll_block(cx, body, &mut env.clone());
+    out.push(Stmt::Loop { body });
+    false
+}
+
+// ---- If-conversion -------------------------------------------------------------------
+
+/// Whether an instruction only computes its register from registers, inputs and uniforms.
+fn is_pure(inst: &Inst) -> bool {
+    matches!(
+        inst,
+        Inst::Const { .. }
+            | Inst::Input { .. }
+            | Inst::Uniform { .. }
+            | Inst::Mov { .. }
+            | Inst::Unary { .. }
+            | Inst::Binary { .. }
+            | Inst::Mad { .. }
+            | Inst::Dot { .. }
+            | Inst::Select { .. }
+    )
+}
+
+fn pure_arm(stmts: &[Stmt]) -> bool {
+    stmts.iter().all(|s| matches!(s, Stmt::Inst(i) if is_pure(i)))
+}
+
+/// `inst` (pure) with its operands renamed by `names`.
+fn rename_reads(inst: &mut Inst, names: &HashMap<Reg, Reg>) {
+    let name = |r: &mut Reg| {
+        if let Some(&n) = names.get(r) {
+            *r = n;
+        }
+    };
+    match inst {
+        Inst::Mov { src, .. } => name(src),
+        Inst::Unary { a, .. } => name(a),
+        Inst::Binary { a, b, .. } => {
+            name(a);
+            name(b);
+        }
+        Inst::Mad { a, b, c, .. } => {
+            name(a);
+            name(b);
+            name(c);
+        }
+        Inst::Dot { n, a, b, .. } => {
+            for k in 0..*n as usize {
+                name(&mut a[k]);
+                name(&mut b[k]);
+            }
+        }
+        Inst::Select { cond, a, b, .. } => {
+            name(cond);
+            name(a);
+            name(b);
+        }
+        _ => {}
+    }
+}
+
+fn set_dst(inst: &mut Inst, to: Reg) {
+    match inst {
+        Inst::Const { dst, .. }
+        | Inst::Input { dst, .. }
+        | Inst::Uniform { dst, .. }
+        | Inst::Mov { dst, .. }
+        | Inst::Unary { dst, .. }
+        | Inst::Binary { dst, .. }
+        | Inst::Mad { dst, .. }
+        | Inst::Dot { dst, .. }
+        | Inst::Select { dst, .. } => *dst = to,
+        _ => unreachable!("a pure instruction"),
+    }
+}
+
+/// An arm's instructions writing fresh registers, appended to `out`; returns the final
+/// name of each register the arm writes, in the order of first writes.
+fn rename_arm(program: &mut Program, arm: Vec<Stmt>, out: &mut Vec<Stmt>) -> Vec<(Reg, Reg)> {
+    let mut names = HashMap::new();
+    let mut order = Vec::new();
+    for s in arm {
+        let Stmt::Inst(mut inst) = s else { unreachable!("a pure arm") };
+        rename_reads(&mut inst, &names);
+        let dst = inst.dst().expect("a pure instruction writes a register");
+        let fresh = program.register(program.registers[dst.0 as usize]);
+        set_dst(&mut inst, fresh);
+        if names.insert(dst, fresh).is_none() {
+            order.push(dst);
+        }
+        out.push(Stmt::Inst(inst));
+    }
+    order.into_iter().map(|r| (r, names[&r])).collect()
+}
+
+fn convert_block(program: &mut Program, stmts: Vec<Stmt>) -> Vec<Stmt> {
+    let mut out = Vec::with_capacity(stmts.len());
+    for s in stmts {
+        match s {
+            Stmt::If { cond, then, otherwise } => {
+                let then = convert_block(program, then);
+                let otherwise = convert_block(program, otherwise);
+                if pure_arm(&then) && pure_arm(&otherwise) && then.len() + otherwise.len() <= MAX_CONVERTED_INSTRUCTIONS
+                {
+                    let then_names = rename_arm(program, then, &mut out);
+                    let otherwise_names = rename_arm(program, otherwise, &mut out);
+                    let mut written: Vec<Reg> = then_names.iter().chain(&otherwise_names).map(|&(r, _)| r).collect();
+                    written.sort();
+                    written.dedup();
+                    // The condition's own select last: the others read its old value.
+                    if let Some(k) = written.iter().position(|&r| r == cond) {
+                        let c = written.remove(k);
+                        written.push(c);
+                    }
+                    let find = |names: &[(Reg, Reg)], r: Reg| names.iter().find(|n| n.0 == r).map_or(r, |n| n.1);
+                    for r in written {
+                        let (a, b) = (find(&then_names, r), find(&otherwise_names, r));
+                        out.push(Stmt::Inst(Inst::Select { dst: r, cond, a, b }));
+                    }
+                } else {
+                    out.push(Stmt::If { cond, then, otherwise });
+                }
+            }
+            Stmt::Loop { body } => out.push(Stmt::Loop { body: convert_block(program, body) }),
+            other => out.push(other),
+        }
+    }
+    out
+}
