@@ -22,6 +22,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#include <unistd.h>
 
 static int W = 1024, H = 1024;
 static unsigned char *pixels;
@@ -572,10 +573,14 @@ static double scene_textured_shader(void)
 
 /* The first draw with a new program: a 200-line shader pair (lighting, texturing, fog and
  * helper functions) compiled, linked and drawn over 64 x 64 pixels. Each repetition's source
- * differs by one constant, so no implementation can reuse an earlier compile. */
+ * differs by one constant, and the constants start from the process id, so no implementation
+ * can reuse an earlier compile (Mesa keeps compiled shaders in a disk cache across
+ * processes: with the same sources in every run, llvmpipe's "first" draws were cache hits). */
 static double scene_shader_first_draw(void)
 {
-    static int generation;
+    static int generation = -1;
+    if (generation < 0)
+        generation = (int)(getpid() % 100000) * 1000;
     static char vertex[8192], fragment[16384];
     int n = snprintf(vertex, sizeof vertex,
                      "// first-draw benchmark, generation %d\n"
