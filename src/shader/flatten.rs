@@ -361,18 +361,7 @@ fn rename_reads(inst: &mut Inst, names: &HashMap<Reg, Reg>) {
 }
 
 fn set_dst(inst: &mut Inst, to: Reg) {
-    match inst {
-        Inst::Const { dst, .. }
-        | Inst::Input { dst, .. }
-        | Inst::Uniform { dst, .. }
-        | Inst::Mov { dst, .. }
-        | Inst::Unary { dst, .. }
-        | Inst::Binary { dst, .. }
-        | Inst::Mad { dst, .. }
-        | Inst::Dot { dst, .. }
-        | Inst::Select { dst, .. } => *dst = to,
-        _ => unreachable!("a pure instruction"),
-    }
+    *inst.pure_dst_mut().expect("a pure instruction") = to;
 }
 
 /// An arm's instructions writing fresh registers, appended to `out`; returns the final

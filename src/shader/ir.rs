@@ -293,6 +293,23 @@ pub enum Inst {
 }
 
 impl Inst {
+    /// The register a pure instruction (one that computes a register from registers, inputs
+    /// and uniforms alone) writes, to rename it; `None` for the others.
+    pub fn pure_dst_mut(&mut self) -> Option<&mut Reg> {
+        match self {
+            Inst::Const { dst, .. }
+            | Inst::Input { dst, .. }
+            | Inst::Uniform { dst, .. }
+            | Inst::Mov { dst, .. }
+            | Inst::Unary { dst, .. }
+            | Inst::Binary { dst, .. }
+            | Inst::Mad { dst, .. }
+            | Inst::Dot { dst, .. }
+            | Inst::Select { dst, .. } => Some(dst),
+            _ => None,
+        }
+    }
+
     /// The register the instruction writes, if any.
     pub fn dst(&self) -> Option<Reg> {
         match *self {

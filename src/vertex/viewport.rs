@@ -44,18 +44,8 @@ impl Viewport {
     /// the reciprocal of w first, then a multiply and the scale/offset, in single precision.
     #[inline]
     pub fn window<const N: usize>(&self, v: &ClipVertex<N>) -> WindowVertex<N> {
-        let inv_w = 1.0 / v.clip[3];
-        let ndc = [v.clip[0] * inv_w, v.clip[1] * inv_w, v.clip[2] * inv_w];
-        WindowVertex {
-            x: ndc[0] * self.scale[0] + self.offset[0],
-            y: ndc[1] * self.scale[1] + self.offset[1],
-            z: ndc[2] * self.scale[2] + self.offset[2],
-            inv_w,
-            color: v.color,
-            secondary_color: v.secondary_color,
-            tex_coords: v.tex_coords,
-            fog_coord: v.fog_coord,
-        }
+        let WindowVertex { x, y, z, inv_w, color, secondary_color, fog_coord, .. } = self.window_without_slots(v);
+        WindowVertex { x, y, z, inv_w, color, secondary_color, tex_coords: v.tex_coords, fog_coord }
     }
 
     /// [`Viewport::window`] without the varying slots, for a filled triangle no varying of
