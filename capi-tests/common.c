@@ -140,3 +140,52 @@ long capi_status_mib(const char *key)
         fclose(f);
     return kib < 0 ? -1 : kib / 1024;
 }
+
+GLuint capi_compile_shader(GLenum type, const char *key, const char *source)
+{
+    GLuint shader = glCreateShader(type);
+    glShaderSource(shader, 1, &source, NULL);
+    glCompileShader(shader);
+    GLint ok = 0;
+    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+        char log[2048] = "";
+        glGetShaderInfoLog(shader, sizeof log, NULL, log);
+        capi_check(0, "%s: compile: %s\n%s", key, source, log);
+    }
+    return shader;
+}
+
+GLuint capi_program_with(const char *key, const char *vs, const char *fs)
+{
+    GLuint program = glCreateProgram();
+    const char *sources[2] = {vs, fs};
+    const GLenum types[2] = {GL_VERTEX_SHADER, GL_FRAGMENT_SHADER};
+    for (int i = 0; i < 2; i++) {
+        if (!sources[i])
+            continue;
+        GLuint shader = capi_compile_shader(types[i], key, sources[i]);
+        glAttachShader(program, shader);
+        glDeleteShader(shader);
+    }
+    return program;
+}
+
+void capi_link_program(const char *key, GLuint program)
+{
+    glLinkProgram(program);
+    GLint ok = 0;
+    glGetProgramiv(program, GL_LINK_STATUS, &ok);
+    if (!ok) {
+        char log[2048] = "";
+        glGetProgramInfoLog(program, sizeof log, NULL, log);
+        capi_check(0, "%s: link: %s", key, log);
+    }
+}
+
+GLuint capi_program(const char *key, const char *vs, const char *fs)
+{
+    GLuint program = capi_program_with(key, vs, fs);
+    capi_link_program(key, program);
+    return program;
+}

@@ -63,6 +63,20 @@ void capi_save_framebuffer(const char *name, int w, int h);
 OSMesaContext capi_make_context(GLenum format, GLenum type, int depth, int stencil, int accum,
                                 int w, int h, void **buffer_out);
 
+/* GLSL helpers for tests whose shaders must compile and link (a failure is a failed
+ * capi_check carrying `key` and the info log). Tests of compile or link failures query
+ * the status themselves.
+ *  - capi_compile_shader(): a compiled shader of `type`.
+ *  - capi_program_with(): a new program with the shaders of `vs` and `fs` attached (either
+ *    may be NULL) and already flagged for deletion, so the caller can bind attribute
+ *    locations before capi_link_program().
+ *  - capi_link_program(): links `program` and checks its status.
+ *  - capi_program(): capi_program_with() then capi_link_program(). */
+GLuint capi_compile_shader(GLenum type, const char *key, const char *source);
+GLuint capi_program_with(const char *key, const char *vs, const char *fs);
+void capi_link_program(const char *key, GLuint program);
+GLuint capi_program(const char *key, const char *vs, const char *fs);
+
 /* A line of /proc/self/status in MiB (e.g. "VmRSS:" or "VmHWM:", the peak); -1 when absent. */
 long capi_status_mib(const char *key);
 

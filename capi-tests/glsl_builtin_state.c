@@ -30,21 +30,6 @@ struct entry {
 static struct entry entries[W * H];
 static int entry_count;
 
-static GLuint compile(GLenum type, const char *source)
-{
-    GLuint s = glCreateShader(type);
-    glShaderSource(s, 1, &source, NULL);
-    glCompileShader(s);
-    GLint ok = 0;
-    glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
-    if (!ok) {
-        char log[1024] = "";
-        glGetShaderInfoLog(s, sizeof log, NULL, log);
-        capi_check(0, "compile failed: %s\n%s", source, log);
-    }
-    return s;
-}
-
 /* Draws `expr` (a vec4 expression of built-in state) into the next pixel, read in the
  * fragment shader (vertex = 0) or in the vertex shader. */
 static void draw_value(const char *key, const char *expr, int vertex)
@@ -57,16 +42,7 @@ static void draw_value(const char *key, const char *expr, int vertex)
         snprintf(vs, sizeof vs, "void main() { gl_Position = gl_Vertex; }");
         snprintf(fs, sizeof fs, "void main() { gl_FragColor = %s; }", expr);
     }
-    GLuint program = glCreateProgram();
-    GLuint v = compile(GL_VERTEX_SHADER, vs), f = compile(GL_FRAGMENT_SHADER, fs);
-    glAttachShader(program, v);
-    glAttachShader(program, f);
-    glLinkProgram(program);
-    glDeleteShader(v);
-    glDeleteShader(f);
-    GLint linked = 0;
-    glGetProgramiv(program, GL_LINK_STATUS, &linked);
-    capi_check(linked, "link failed: %s", expr);
+    GLuint program = capi_program(key, vs, fs);
     glUseProgram(program);
     int p = next_pixel++;
     if (p >= W * H) {

@@ -15,22 +15,7 @@
 
 static GLuint program(const char *key, const char *fs)
 {
-    GLuint s = glCreateShader(GL_FRAGMENT_SHADER);
-    glShaderSource(s, 1, &fs, NULL);
-    glCompileShader(s);
-    GLint ok = 0;
-    glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
-    if (!ok) {
-        char log[1024] = "";
-        glGetShaderInfoLog(s, sizeof log, NULL, log);
-        capi_check(0, "%s: compile: %s", key, log);
-    }
-    GLuint p = glCreateProgram();
-    glAttachShader(p, s);
-    glDeleteShader(s);
-    glLinkProgram(p);
-    glGetProgramiv(p, GL_LINK_STATUS, &ok);
-    capi_check(ok, "%s: link", key);
+    GLuint p = capi_program(key, NULL, fs);
     glUseProgram(p);
     glUniform1i(glGetUniformLocation(p, "s"), 0);
     capi_expect_error(GL_NO_ERROR, key);

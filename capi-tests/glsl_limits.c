@@ -30,23 +30,7 @@ static const struct limit LIMITS[] = {
 
 static GLuint build(const char *vs, const char *fs)
 {
-    GLuint program = glCreateProgram();
-    const char *sources[2] = {vs, fs};
-    for (int i = 0; i < 2; i++) {
-        GLuint s = glCreateShader(i ? GL_FRAGMENT_SHADER : GL_VERTEX_SHADER);
-        glShaderSource(s, 1, &sources[i], NULL);
-        glCompileShader(s);
-        GLint ok = 0;
-        glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
-        capi_check(ok, "compile: %s", sources[i]);
-        glAttachShader(program, s);
-        glDeleteShader(s);
-    }
-    glLinkProgram(program);
-    GLint linked = 0;
-    glGetProgramiv(program, GL_LINK_STATUS, &linked);
-    capi_check(linked, "link");
-    return program;
+    return capi_program("limits", vs, fs);
 }
 
 int main(void)

@@ -12,22 +12,10 @@
 
 static GLuint program(const char *vs, const char *fs)
 {
-    GLuint p = glCreateProgram();
-    const char *src[2] = {vs, fs};
-    GLenum kinds[2] = {GL_VERTEX_SHADER, GL_FRAGMENT_SHADER};
-    for (int i = 0; i < 2; i++) {
-        GLuint s = glCreateShader(kinds[i]);
-        glShaderSource(s, 1, &src[i], NULL);
-        glCompileShader(s);
-        glAttachShader(p, s);
-        glDeleteShader(s);
-    }
+    GLuint p = capi_program_with("list arrays", vs, fs);
     glBindAttribLocation(p, 1, "weight");
     glBindAttribLocation(p, 5, "tint");
-    glLinkProgram(p);
-    GLint ok = 0;
-    glGetProgramiv(p, GL_LINK_STATUS, &ok);
-    capi_check(ok, "link");
+    capi_link_program("list arrays", p);
     return p;
 }
 

@@ -11,39 +11,12 @@
 #define W 64
 #define H 64
 
-static GLuint compile(GLenum type, const char *key, const char *source)
-{
-    GLuint s = glCreateShader(type);
-    glShaderSource(s, 1, &source, NULL);
-    glCompileShader(s);
-    GLint ok = 0;
-    glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
-    if (!ok) {
-        char log[1024] = "";
-        glGetShaderInfoLog(s, sizeof log, NULL, log);
-        capi_check(0, "%s: compile: %s", key, log);
-    }
-    return s;
-}
-
 static GLuint program(const char *key, const char *vs, const char *fs)
 {
-    GLuint p = glCreateProgram();
-    GLuint v = compile(GL_VERTEX_SHADER, key, vs), f = compile(GL_FRAGMENT_SHADER, key, fs);
-    glAttachShader(p, v);
-    glAttachShader(p, f);
-    glDeleteShader(v);
-    glDeleteShader(f);
+    GLuint p = capi_program_with(key, vs, fs);
     glBindAttribLocation(p, 3, "weights");
     glBindAttribLocation(p, 5, "tint");
-    glLinkProgram(p);
-    GLint ok = 0;
-    glGetProgramiv(p, GL_LINK_STATUS, &ok);
-    if (!ok) {
-        char log[1024] = "";
-        glGetProgramInfoLog(p, sizeof log, NULL, log);
-        capi_check(0, "%s: link: %s", key, log);
-    }
+    capi_link_program(key, p);
     capi_expect_error(GL_NO_ERROR, key);
     return p;
 }

@@ -41,17 +41,9 @@ static void raster(const char *key)
 
 static GLuint program(const char *vs)
 {
-    GLuint s = glCreateShader(GL_VERTEX_SHADER);
-    glShaderSource(s, 1, &vs, NULL);
-    glCompileShader(s);
-    GLuint p = glCreateProgram();
-    glAttachShader(p, s);
+    GLuint p = capi_program_with("raster feedback", vs, NULL);
     glBindAttribLocation(p, 3, "extra");
-    glLinkProgram(p);
-    GLint ok = 0;
-    glGetProgramiv(p, GL_LINK_STATUS, &ok);
-    capi_check(ok, "link");
-    glDeleteShader(s);
+    capi_link_program("raster feedback", p);
     return p;
 }
 

@@ -15,39 +15,14 @@
 /* glOrtho(0, W, 0, H, -1, 1), column-major. */
 static const GLfloat ortho[16] = {2.0f / W, 0, 0, 0, 0, 2.0f / H, 0, 0, 0, 0, -1, 0, -1, -1, 0, 1};
 
-static GLuint shader(GLenum type, const char *source)
-{
-    GLuint s = glCreateShader(type);
-    glShaderSource(s, 1, &source, NULL);
-    glCompileShader(s);
-    GLint ok = 0;
-    glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
-    if (!ok) {
-        char log[2048] = "";
-        glGetShaderInfoLog(s, sizeof log, NULL, log);
-        capi_check(0, "compile: %s", log);
-    }
-    return s;
-}
-
 /* A program of the vertex shader `source` alone, with "color" at location 1 and "size" at
  * 2 (when the shader has them), in use, its matrix uniform "mvp" set to `ortho`. */
 static GLuint program(const char *source)
 {
-    GLuint p = glCreateProgram();
-    GLuint s = shader(GL_VERTEX_SHADER, source);
-    glAttachShader(p, s);
-    glDeleteShader(s);
+    GLuint p = capi_program_with("vertex", source, NULL);
     glBindAttribLocation(p, 1, "color");
     glBindAttribLocation(p, 2, "size");
-    glLinkProgram(p);
-    GLint ok = 0;
-    glGetProgramiv(p, GL_LINK_STATUS, &ok);
-    if (!ok) {
-        char log[2048] = "";
-        glGetProgramInfoLog(p, sizeof log, NULL, log);
-        capi_check(0, "link: %s", log);
-    }
+    capi_link_program("vertex", p);
     glUseProgram(p);
     GLint mvp = glGetUniformLocation(p, "mvp");
     if (mvp >= 0)
@@ -168,17 +143,16 @@ static void attribute_zero(void)
     glUseProgram(0);
     glDeleteProgram(p);
 
-    p = glCreateProgram();
-    GLuint s = shader(GL_VERTEX_SHADER, "uniform mat4 mvp;\n"
-                                        "attribute vec2 where;\n"
-                                        "void main() {\n"
-                                        "    gl_Position = mvp * vec4(where.yx, 0.0, 1.0);\n"
-                                        "    gl_FrontColor = vec4(0.0, 0.5, 1.0, 1.0);\n"
-                                        "}\n");
-    glAttachShader(p, s);
-    glDeleteShader(s);
+    p = capi_program_with("attribute zero aliasing",
+                          "uniform mat4 mvp;\n"
+                          "attribute vec2 where;\n"
+                          "void main() {\n"
+                          "    gl_Position = mvp * vec4(where.yx, 0.0, 1.0);\n"
+                          "    gl_FrontColor = vec4(0.0, 0.5, 1.0, 1.0);\n"
+                          "}\n",
+                          NULL);
     glBindAttribLocation(p, 0, "where");
-    glLinkProgram(p);
+    capi_link_program("attribute zero aliasing", p);
     glUseProgram(p);
     glUniformMatrix4fv(glGetUniformLocation(p, "mvp"), 1, GL_FALSE, ortho);
     glDrawArrays(GL_TRIANGLES, 0, 3);

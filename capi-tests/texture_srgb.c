@@ -227,22 +227,13 @@ static void glsl(void)
     glBindTexture(GL_TEXTURE_2D, t);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_SRGB_ALPHA, 8, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, img);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    GLuint s = glCreateShader(GL_FRAGMENT_SHADER);
-    glShaderSource(s, 1, &fs, NULL);
-    glCompileShader(s);
-    GLuint p = glCreateProgram();
-    glAttachShader(p, s);
-    glLinkProgram(p);
-    GLint ok = 0;
-    glGetProgramiv(p, GL_LINK_STATUS, &ok);
-    capi_check(ok, "glsl: link");
+    GLuint p = capi_program("glsl", NULL, fs);
     glUseProgram(p);
     glUniform1i(glGetUniformLocation(p, "tex"), 0);
     quad(-0.25f, 0.1f, 1.3f, 0.9f, 0);
     glUseProgram(0);
     save("glsl_sampled");
     glDeleteProgram(p);
-    glDeleteShader(s);
     glDeleteTextures(1, &t);
     capi_expect_error(GL_NO_ERROR, "glsl");
 }
