@@ -106,6 +106,69 @@ struct Run {
     /// Lit without two-sided lighting: the back colours are the front ones (as the clipper
     /// and flat shading read them).
     lit_one_sided: bool,
+    /// The program's arithmetic written out, for the programs that are only the two
+    /// matrix products and the colour clamp ([`Direct`]); `None` runs the program.
+    direct: Option<Direct>,
+}
+
+/// What the vertex program of an unlit draw with no texture unit and the fog coordinate
+/// passed through computes, written out in Rust with the same arithmetic: clip and eye
+/// coordinates as glam's `Mat4 * Vec4` ([`super::program`]'s `matrix_times` is that
+/// product, every operation rounded in order), the colours clamped as `Builder::clamp01`
+/// (`0 < c ? min(c, 1) : 0`), everything else copied. The position-and-colour draws (most
+/// meshes, small_triangles) ran the program through the executor, gathering sixteen
+/// vertices into its registers and scattering its outputs: about 195 instructions a vertex
+/// against about 60 here. The program stays the definition: the tests compare the two bit
+/// for bit on random matrices and vertices, special values included.
+#[derive(Clone, Copy, Debug)]
+struct Direct {
+    modelview: Mat4,
+    model_project: Mat4,
+    clamp_color: bool,
+}
+
+impl Direct {
+    /// The direct form of the unlit program of `t`, when it has one.
+    fn of(t: &Transform) -> Option<Direct> {
+        let plain_fog = matches!(t.fog, None | Some(FogSource::Attribute));
+        (t.lighting.is_none() && t.texgen.units.is_empty() && plain_fog).then_some(Direct {
+            modelview: t.modelview,
+            model_project: t.model_project,
+            clamp_color: t.clamp_color,
+        })
+    }
+
+    /// Appends the clip-space vertices of `vertices` to `clip`.
+    fn transform(&self, vertices: &[Vertex], clip: &mut Vec<FixedClipVertex>) {
+        #[inline(always)]
+        fn clamp01(c: f32) -> f32 {
+            if 0.0 < c {
+                if 1.0 < c {
+                    1.0
+                } else {
+                    c
+                }
+            } else {
+                0.0
+            }
+        }
+        let clamp = self.clamp_color;
+        let colour = |c: [f32; 4]| if clamp { c.map(clamp01) } else { c };
+        clip.extend(vertices.iter().map(|v| {
+            let position = Vec4::from_array(v.position);
+            FixedClipVertex {
+                clip: (self.model_project * position).to_array(),
+                eye: (self.modelview * position).to_array(),
+                color: colour(v.color),
+                secondary_color: colour(v.secondary_color),
+                back_colors: [[0.0; 4]; 2],
+                tex_coords: v.tex_coords,
+                fog_coord: v.fog_coord,
+                point_size: 0.0,
+                edge_flag: v.edge_flag,
+            }
+        }));
+    }
 }
 
 /// A draw's vertex processing, ready to run: its program(s), looked up once per draw, and
@@ -128,7 +191,7 @@ impl VertexStage {
             let compiled = program(&VertexKey::of(t, None));
             let uniforms = compiled.generated.uniform_values(t, None);
             return VertexStage {
-                first: Run { from: 0, program: compiled, uniforms, lit_one_sided: false },
+                first: Run { from: 0, program: compiled, uniforms, lit_one_sided: false, direct: Direct::of(t) },
                 more: Vec::new(),
             };
         };
@@ -150,7 +213,7 @@ impl VertexStage {
             };
             previous_key = Some(key);
             let uniforms = compiled.generated.uniform_values(t, Some(&lighting));
-            runs.push(Run { from, program: compiled, uniforms, lit_one_sided: !lighting.two_side() });
+            runs.push(Run { from, program: compiled, uniforms, lit_one_sided: !lighting.two_side(), direct: None });
             match marks.get(next_mark) {
                 Some(&(index, _)) if index < vertex_count => from = index,
                 _ => break,
@@ -159,6 +222,20 @@ impl VertexStage {
         let mut runs = runs.into_iter();
         let first = runs.next().expect("at least one run");
         VertexStage { first, more: runs.collect() }
+    }
+
+    /// The stage with every run through its program, none in its [`Direct`] form (tests).
+    #[cfg(test)]
+    pub fn through_programs(mut self) -> VertexStage {
+        self.first.direct = None;
+        self.more.iter_mut().for_each(|r| r.direct = None);
+        self
+    }
+
+    /// Whether the stage's first run is in the [`Direct`] form (tests).
+    #[cfg(test)]
+    pub fn runs_directly(&self) -> bool {
+        self.first.direct.is_some()
     }
 
     /// Runs the stage on `vertices`, the draw's vertices from index `first` on (a part of
@@ -315,6 +392,9 @@ impl StageCache {
 impl Run {
     /// Appends the clip-space vertices of `vertices` to `scratch.clip`.
     fn transform(&self, vertices: &[Vertex], scratch: &mut Scratch) {
+        if let Some(direct) = &self.direct {
+            return direct.transform(vertices, &mut scratch.clip);
+        }
         let same_program = scratch.program.as_ref().is_some_and(|p| Arc::ptr_eq(p, &self.program));
         if !same_program {
             scratch.registers = Registers::default();
