@@ -153,7 +153,8 @@ impl Direct {
             }
         }
         let clamp = self.clamp_color;
-        let colour = |c: [f32; 4]| if clamp { c.map(clamp01) } else { c };
+        // (Written out, not `map`: builds without LTO left that a call per colour.)
+        let colour = |c: [f32; 4]| if clamp { [clamp01(c[0]), clamp01(c[1]), clamp01(c[2]), clamp01(c[3])] } else { c };
         clip.extend(vertices.iter().map(|v| {
             let position = Vec4::from_array(v.position);
             FixedClipVertex {
