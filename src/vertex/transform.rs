@@ -140,21 +140,16 @@ impl Direct {
 
     /// Appends the clip-space vertices of `vertices` to `clip`.
     fn transform(&self, vertices: &[Vertex], clip: &mut Vec<FixedClipVertex>) {
+        // `0 < c ? (1 < c ? 1 : c) : 0` on the four channels at once (NaN and -0 give +0),
+        // without a branch per channel.
         #[inline(always)]
-        fn clamp01(c: f32) -> f32 {
-            if 0.0 < c {
-                if 1.0 < c {
-                    1.0
-                } else {
-                    c
-                }
-            } else {
-                0.0
-            }
+        fn clamp01(c: [f32; 4]) -> [f32; 4] {
+            let c = Vec4::from_array(c);
+            let at_most_one = Vec4::select(Vec4::ONE.cmplt(c), Vec4::ONE, c);
+            Vec4::select(Vec4::ZERO.cmplt(c), at_most_one, Vec4::ZERO).to_array()
         }
         let clamp = self.clamp_color;
-        // (Written out, not `map`: builds without LTO left that a call per colour.)
-        let colour = |c: [f32; 4]| if clamp { [clamp01(c[0]), clamp01(c[1]), clamp01(c[2]), clamp01(c[3])] } else { c };
+        let colour = |c: [f32; 4]| if clamp { clamp01(c) } else { c };
         clip.extend(vertices.iter().map(|v| {
             let position = Vec4::from_array(v.position);
             FixedClipVertex {
