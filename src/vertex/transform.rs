@@ -15,7 +15,7 @@
 //!
 //! One program has a second, hand-written form: an unlit draw with no texture unit and the
 //! fog coordinate passed through (position and colours only) runs the program's
-//! arithmetic written out ([`Direct`]), tested bit for bit against the program. Otherwise
+//! arithmetic written out (`Direct`), tested bit for bit against the program. Otherwise
 //! the per-vertex code the programs replaced is kept only as the reference the generated
 //! programs are tested against (`super::program::reference`, test builds).
 use super::clip::{FixedClipVertex, FIXED_SLOTS};
