@@ -13,9 +13,11 @@
 //! (structure of arrays), runs the compiled program on the live lanes and scatters its
 //! outputs into [`FixedClipVertex`]es.
 //!
-//! There is no second, hand-written path: the per-vertex code the programs replaced is kept
-//! only as the reference the generated programs are tested against
-//! (`super::program::reference`, test builds).
+//! One program has a second, hand-written form: an unlit draw with no texture unit and the
+//! fog coordinate passed through (position and colours only) runs the program's
+//! arithmetic written out (`Direct`), tested bit for bit against the program. Otherwise
+//! the per-vertex code the programs replaced is kept only as the reference the generated
+//! programs are tested against (`super::program::reference`, test builds).
 use super::clip::{FixedClipVertex, FIXED_SLOTS};
 use super::lighting::{Lighting, LightingState, Material, NormalScaling};
 use super::program::{CompiledVertex, VertexInput, VertexKey, VertexOutput, VertexProgram};
@@ -106,6 +108,66 @@ struct Run {
     /// Lit without two-sided lighting: the back colours are the front ones (as the clipper
     /// and flat shading read them).
     lit_one_sided: bool,
+    /// The program's arithmetic written out, for the programs that are only the two
+    /// matrix products and the colour clamp ([`Direct`]); `None` runs the program.
+    direct: Option<Direct>,
+}
+
+/// What the vertex program of an unlit draw with no texture unit and the fog coordinate
+/// passed through computes, written out in Rust with the same arithmetic: clip and eye
+/// coordinates as glam's `Mat4 * Vec4` ([`super::program`]'s `matrix_times` is that
+/// product, every operation rounded in order), the colours clamped as `Builder::clamp01`
+/// (`0 < c ? min(c, 1) : 0`), everything else copied. The position-and-colour draws (most
+/// meshes, small_triangles) ran the program through the executor, gathering sixteen
+/// vertices into its registers and scattering its outputs: about 195 instructions a vertex
+/// against about 70 here (LTO build, callgrind). The program stays the definition: the
+/// tests compare the two bit for bit on random matrices and vertices, special values
+/// included.
+#[derive(Clone, Copy, Debug)]
+struct Direct {
+    modelview: Mat4,
+    model_project: Mat4,
+    clamp_color: bool,
+}
+
+impl Direct {
+    /// The direct form of the unlit program of `t`, when it has one.
+    fn of(t: &Transform) -> Option<Direct> {
+        let plain_fog = matches!(t.fog, None | Some(FogSource::Attribute));
+        (t.lighting.is_none() && t.texgen.units.is_empty() && plain_fog).then_some(Direct {
+            modelview: t.modelview,
+            model_project: t.model_project,
+            clamp_color: t.clamp_color,
+        })
+    }
+
+    /// Appends the clip-space vertices of `vertices` to `clip`.
+    fn transform(&self, vertices: &[Vertex], clip: &mut Vec<FixedClipVertex>) {
+        // `0 < c ? (1 < c ? 1 : c) : 0` on the four channels at once (NaN and -0 give +0),
+        // without a branch per channel.
+        #[inline(always)]
+        fn clamp01(c: [f32; 4]) -> [f32; 4] {
+            let c = Vec4::from_array(c);
+            let at_most_one = Vec4::select(Vec4::ONE.cmplt(c), Vec4::ONE, c);
+            Vec4::select(Vec4::ZERO.cmplt(c), at_most_one, Vec4::ZERO).to_array()
+        }
+        let clamp = self.clamp_color;
+        let colour = |c: [f32; 4]| if clamp { clamp01(c) } else { c };
+        clip.extend(vertices.iter().map(|v| {
+            let position = Vec4::from_array(v.position);
+            FixedClipVertex {
+                clip: (self.model_project * position).to_array(),
+                eye: (self.modelview * position).to_array(),
+                color: colour(v.color),
+                secondary_color: colour(v.secondary_color),
+                back_colors: [[0.0; 4]; 2],
+                tex_coords: v.tex_coords,
+                fog_coord: v.fog_coord,
+                point_size: 0.0,
+                edge_flag: v.edge_flag,
+            }
+        }));
+    }
 }
 
 /// A draw's vertex processing, ready to run: its program(s), looked up once per draw, and
@@ -128,7 +190,7 @@ impl VertexStage {
             let compiled = program(&VertexKey::of(t, None));
             let uniforms = compiled.generated.uniform_values(t, None);
             return VertexStage {
-                first: Run { from: 0, program: compiled, uniforms, lit_one_sided: false },
+                first: Run { from: 0, program: compiled, uniforms, lit_one_sided: false, direct: Direct::of(t) },
                 more: Vec::new(),
             };
         };
@@ -150,7 +212,7 @@ impl VertexStage {
             };
             previous_key = Some(key);
             let uniforms = compiled.generated.uniform_values(t, Some(&lighting));
-            runs.push(Run { from, program: compiled, uniforms, lit_one_sided: !lighting.two_side() });
+            runs.push(Run { from, program: compiled, uniforms, lit_one_sided: !lighting.two_side(), direct: None });
             match marks.get(next_mark) {
                 Some(&(index, _)) if index < vertex_count => from = index,
                 _ => break,
@@ -159,6 +221,20 @@ impl VertexStage {
         let mut runs = runs.into_iter();
         let first = runs.next().expect("at least one run");
         VertexStage { first, more: runs.collect() }
+    }
+
+    /// The stage with every run through its program, none in its [`Direct`] form (tests).
+    #[cfg(test)]
+    pub fn through_programs(mut self) -> VertexStage {
+        self.first.direct = None;
+        self.more.iter_mut().for_each(|r| r.direct = None);
+        self
+    }
+
+    /// Whether the stage's first run is in the [`Direct`] form (tests).
+    #[cfg(test)]
+    pub fn runs_directly(&self) -> bool {
+        self.first.direct.is_some()
     }
 
     /// Runs the stage on `vertices`, the draw's vertices from index `first` on (a part of
@@ -315,6 +391,9 @@ impl StageCache {
 impl Run {
     /// Appends the clip-space vertices of `vertices` to `scratch.clip`.
     fn transform(&self, vertices: &[Vertex], scratch: &mut Scratch) {
+        if let Some(direct) = &self.direct {
+            return direct.transform(vertices, &mut scratch.clip);
+        }
         let same_program = scratch.program.as_ref().is_some_and(|p| Arc::ptr_eq(p, &self.program));
         if !same_program {
             scratch.registers = Registers::default();

@@ -205,7 +205,7 @@ fn a_draw_split_between_threads_draws_the_bytes_of_small_draws() {
             ctx.state.depth.test = depth;
             ctx.clear(GL_DEPTH_BUFFER_BIT);
             if whole {
-                assert_eq!(super::split_point(GL_TRIANGLES, &geometry(&mut ctx), vertices.len(), 2), Some(2700));
+                assert_eq!(super::split_point(GL_TRIANGLES, &geometry(&mut ctx), vertices.len(), 2), Some(3150));
                 ctx.draw_vertices(GL_TRIANGLES, &vertices);
             } else {
                 vertices.chunks(3).for_each(|t| ctx.draw_vertices(GL_TRIANGLES, t));

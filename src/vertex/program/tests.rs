@@ -512,3 +512,69 @@ fn a_draw_reuses_the_last_stage_only_when_its_unlit_state_is_the_same_bit_for_bi
         cache = Some(stage);
     }
 }
+
+#[test]
+fn the_direct_transform_gives_the_program_s_vertices_bit_for_bit() {
+    // An unlit draw without texture units whose fog coordinate passes through runs its
+    // program's arithmetic written out (`transform::Direct`): the same records, bit for
+    // bit, as the program through the executor, on random matrices (special values among
+    // their elements) and vertices with NaN, infinities, signed zeros and colours outside
+    // [0, 1]; a state it does not cover (texgen, fog from the eye, lighting) runs the program.
+    use crate::vertex::transform::{LightingInput as Lit, VertexStage};
+    use crate::vertex::Vertex;
+    use std::sync::Arc;
+    let mut rng = Rng(0x00d1_2ec7_0000_0007);
+    let special = [0.0, -0.0, 1.0, -1.0, f32::NAN, f32::INFINITY, f32::NEG_INFINITY, 1e30, -3e-39, 0.5];
+    let value = |rng: &mut Rng, r: f32| if rng.below(6) == 0 { rng.pick(&special) } else { rng.range(-r, r) };
+    let lighting_state = LightingState::default();
+    let no_units: [TexCoordUnit; 0] = [];
+    for case in 0..300 {
+        let mut matrix = random_matrix(&mut rng).to_cols_array();
+        for m in &mut matrix {
+            if rng.below(8) == 0 {
+                *m = value(&mut rng, 2.0);
+            }
+        }
+        let units = if case % 10 == 9 { random_units(&mut rng) } else { Vec::new() };
+        let fog = [None, Some(FogSource::Attribute), Some(FogSource::Radial), Some(FogSource::Plane)][rng.below(4)];
+        let lit = case % 10 == 8;
+        let t = Transform {
+            modelview: random_matrix(&mut rng),
+            model_project: glam::Mat4::from_cols_array(&matrix),
+            clamp_color: rng.below(2) == 0,
+            fog,
+            texgen: crate::vertex::texgen::TexGen {
+                units: if units.is_empty() { &no_units } else { &units },
+                modelview_inverse: glam::Mat4::IDENTITY,
+                normalize: false,
+                rescale_normal: false,
+            },
+            lighting: lit.then(|| Lit {
+                state: &lighting_state,
+                modelview_inverse: glam::Mat4::IDENTITY.to_cols_array(),
+                normals: NormalScaling::None,
+                material_marks: &[],
+            }),
+        };
+        let count = rng.pick(&[1, 3, 16, 17, 50]);
+        let vertices: Vec<Vertex> = (0..count)
+            .map(|_| Vertex {
+                position: std::array::from_fn(|_| value(&mut rng, 5.0)),
+                color: std::array::from_fn(|_| value(&mut rng, 1.5)),
+                secondary_color: std::array::from_fn(|_| value(&mut rng, 1.5)),
+                tex_coords: std::array::from_fn(|_| std::array::from_fn(|_| rng.range(-2.0, 2.0))),
+                normal: rng.vec3(1.0),
+                fog_coord: value(&mut rng, 4.0),
+                edge_flag: rng.below(2) == 0,
+                generic: crate::vertex::generic::CURRENT,
+            })
+            .collect();
+        let stage = VertexStage::new(&t, count, |key| Arc::new(CompiledVertex::generate(key)));
+        let direct = !lit && units.is_empty() && matches!(fog, None | Some(FogSource::Attribute));
+        assert_eq!(stage.runs_directly(), direct, "case {case}: the direct form exactly where it applies");
+        let got: Vec<Vec<u32>> = stage.run(&vertices, 0, |c| c.iter().map(clip_bits).collect());
+        let programmed = VertexStage::new(&t, count, |key| Arc::new(CompiledVertex::generate(key))).through_programs();
+        let want: Vec<Vec<u32>> = programmed.run(&vertices, 0, |c| c.iter().map(clip_bits).collect());
+        assert_eq!(got, want, "case {case}");
+    }
+}
