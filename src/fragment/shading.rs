@@ -414,7 +414,17 @@ impl LinearFog {
     #[inline(always)]
     fn apply(&self, c: &F32s, colors: &mut [F32s; 4]) {
         // clamp01: `0 < x ? (1 < x ? 1 : x) : 0` (NaN gives 0).
-        let clamp01 = |x: f32| if 0.0 < x { if 1.0 < x { 1.0 } else { x } } else { 0.0 };
+        let clamp01 = |x: f32| {
+            if 0.0 < x {
+                if 1.0 < x {
+                    1.0
+                } else {
+                    x
+                }
+            } else {
+                0.0
+            }
+        };
         let mut factor = [0f32; LANES];
         match self.span {
             Some(span) => {

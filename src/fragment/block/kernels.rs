@@ -411,10 +411,9 @@ fn src_pairs(colors: &BlockColors) -> (U32s, U32s) {
             let b = |k: usize| float_to_unorm(c[k], 8);
             ([b(0) | b(2) << 16; LANES], [b(1) | b(3) << 16; LANES])
         }
-        BlockColors::Lanes([r, g, b, a]) => (
-            lanes(|i| unorm8_u32(r[i]) | unorm8_u32(b[i]) << 16),
-            lanes(|i| unorm8_u32(g[i]) | unorm8_u32(a[i]) << 16),
-        ),
+        BlockColors::Lanes([r, g, b, a]) => {
+            (lanes(|i| unorm8_u32(r[i]) | unorm8_u32(b[i]) << 16), lanes(|i| unorm8_u32(g[i]) | unorm8_u32(a[i]) << 16))
+        }
     }
 }
 

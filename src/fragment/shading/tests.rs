@@ -363,7 +363,13 @@ fn written_out_linear_fog_is_the_program_bit_for_bit() {
                 _ => rng.unit() * 4.0 - 1.5,
             });
             let primary: [F32s; 4] = std::array::from_fn(|k| {
-                std::array::from_fn(|i| if round == 0 && k == 0 { edges[(i + 3) % edges.len()] } else { rng.unit() * 1.5 - 0.25 })
+                std::array::from_fn(|i| {
+                    if round == 0 && k == 0 {
+                        edges[(i + 3) % edges.len()]
+                    } else {
+                        rng.unit() * 1.5 - 0.25
+                    }
+                })
             });
             let mut scratch = ShadingScratch::default();
             scratch.prepare(&shading);
@@ -378,7 +384,12 @@ fn written_out_linear_fog_is_the_program_bit_for_bit() {
             });
             for k in 0..4 {
                 for i in 0..LANES {
-                    assert_eq!(got[k][i].to_bits(), want[k][i].to_bits(), "start {start} end {end} c {} channel {k}", coordinate[i]);
+                    assert_eq!(
+                        got[k][i].to_bits(),
+                        want[k][i].to_bits(),
+                        "start {start} end {end} c {} channel {k}",
+                        coordinate[i]
+                    );
                     checked += 1;
                 }
             }
