@@ -388,33 +388,16 @@ fn unorm8_blend(p: &TargetParams, band: &mut ColorBand<'_>, at: &BlockAt, colors
 fn unorm8_blend_src_alpha(p: &TargetParams, band: &mut ColorBand<'_>, at: &BlockAt, colors: &BlockColors, live: u16) {
     let ColorBand::Unorm8(px) = band else { return };
     let dst = load8(px, at);
-    let (src_rb, src_ga) = src_pairs(colors);
+    let src = src_words(colors);
     let words = lanes(|i| {
-        let d = dst[i];
-        let a = src_ga[i] >> 16;
+        let (s, d) = (src[i], dst[i]);
+        let a = s >> 24;
         let ia = 255 - a;
-        let rb = mul8_pair(src_rb[i] * a) + mul8_pair((d & 0x00ff_00ff) * ia);
-        let ga = mul8_pair(src_ga[i] * a) + mul8_pair(((d >> 8) & 0x00ff_00ff) * ia);
+        let rb = mul8_pair((s & 0x00ff_00ff) * a) + mul8_pair((d & 0x00ff_00ff) * ia);
+        let ga = mul8_pair(((s >> 8) & 0x00ff_00ff) * a) + mul8_pair(((d >> 8) & 0x00ff_00ff) * ia);
         rb | ga << 8
     });
     store8(p, px, at, &words, Some(&dst), live);
-}
-
-/// A block's colours converted to unorm8 as [`src_words`] converts them, as the pairs the
-/// word blends take: red and blue (`r | b << 16`), green and alpha (`g | a << 16`), straight
-/// from the channels (packing the words and masking them apart again cost 10 operations
-/// per vector).
-#[inline(always)]
-fn src_pairs(colors: &BlockColors) -> (U32s, U32s) {
-    match colors {
-        BlockColors::Uniform(c) => {
-            let b = |k: usize| float_to_unorm(c[k], 8);
-            ([b(0) | b(2) << 16; LANES], [b(1) | b(3) << 16; LANES])
-        }
-        BlockColors::Lanes([r, g, b, a]) => {
-            (lanes(|i| unorm8_u32(r[i]) | unorm8_u32(b[i]) << 16), lanes(|i| unorm8_u32(g[i]) | unorm8_u32(a[i]) << 16))
-        }
-    }
 }
 
 /// `mul8`'s rounding `t = x + 128; (t + (t >> 8)) >> 8` on both 16-bit halves of `x` (each a
