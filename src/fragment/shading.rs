@@ -383,7 +383,8 @@ impl Shading {
 /// colour sum), written out on lanes: the operations of the generated program
 /// (`program::Gen::fog_factor`, `shader::build::Gen::clamp01`, the blend of three channels)
 /// in its order and single-precision roundings, so the same bits, without the executor's
-/// register moves (the executor ran about 580 instructions a block for it, this about 60).
+/// register moves: fog_blend's fog cost 589 instructions a block over blend_fill's with the
+/// executor and 281 with this, the fog coordinate's evaluation included (callgrind, LTO).
 /// The alpha and the lanes outside the block's live ones are the program's too (it reads
 /// the alpha through).
 #[derive(Clone, Copy, Debug)]
