@@ -61,6 +61,9 @@ pub struct Shading {
     bound_outputs: Vec<(usize, R)>,
     /// Which shading a scratch's registers were prepared for (its uniform values).
     id: u64,
+    /// The program's arithmetic written out, when the program is linear fog alone
+    /// ([`LinearFog`]): blocks then skip the executor.
+    linear_fog: Option<LinearFog>,
 }
 
 impl PartialEq for Shading {
@@ -136,6 +139,7 @@ impl Shading {
             bound_varyings,
             bound_outputs,
             id: NEXT_ID.fetch_add(1, Ordering::Relaxed),
+            linear_fog: LinearFog::of(&FragmentKey::of(state), state.fog.as_ref()),
             varying_runs,
             varyings: read.last().map_or(0, |v| v + 1),
             derivatives: stages.iter().any(|s| s.needs_derivatives()),
@@ -162,6 +166,13 @@ impl Shading {
         varying_lanes: impl Fn(i32, usize, &mut [F32s]),
     ) {
         if live == 0 {
+            return;
+        }
+        if let Some(fog) = &self.linear_fog {
+            // No lookups, so no quads: the block's own varyings, as the program's pass.
+            let mut coordinate = [[0.0; LANES]];
+            varying_lanes(y, 0, &mut coordinate);
+            fog.apply(&coordinate[0], colors);
             return;
         }
         let textures = StageTextures { texturing, used: !0 };
@@ -364,6 +375,74 @@ impl Shading {
         for &(k, r) in &self.bound_outputs {
             let out: Word = *registers.word(r);
             colors[k & 3] = floats(&out);
+        }
+    }
+}
+
+/// A fixed-function program that is GL_LINEAR fog and nothing else (no texture unit, no
+/// colour sum), written out on lanes: the operations of the generated program
+/// (`program::Gen::fog_factor`, `shader::build::Gen::clamp01`, the blend of three channels)
+/// in its order and single-precision roundings, so the same bits, without the executor's
+/// register moves: fog_blend's fog cost 589 instructions a block over blend_fill's with the
+/// executor and 281 with this, the fog coordinate's evaluation included (callgrind, LTO).
+/// The alpha and the lanes outside the block's live ones are the program's too (it reads
+/// the alpha through).
+#[derive(Clone, Copy, Debug)]
+struct LinearFog {
+    end: f32,
+    /// `end − start` (LINEAR's divisor), or `None` when start = end (Mesa's `c − end`).
+    span: Option<f32>,
+    color: [f32; 3],
+}
+
+impl LinearFog {
+    /// The written-out form of `key`'s program, when it is linear fog alone.
+    fn of(key: &FragmentKey, fog: Option<&super::fog::Fog>) -> Option<LinearFog> {
+        use super::program::FogKey;
+        if !key.stages.is_empty() || key.color_sum.is_some() {
+            return None;
+        }
+        let fog = fog?;
+        let span = match key.fog? {
+            FogKey::Linear => Some(fog.end - fog.start),
+            FogKey::LinearDegenerate => None,
+            FogKey::Exp | FogKey::Exp2 => return None,
+        };
+        Some(LinearFog { end: fog.end, span, color: [fog.color[0], fog.color[1], fog.color[2]] })
+    }
+
+    /// Fogs `colors` by the fog coordinates `c` (varying 0 of the program), every lane.
+    #[inline(always)]
+    fn apply(&self, c: &F32s, colors: &mut [F32s; 4]) {
+        // clamp01: `0 < x ? (1 < x ? 1 : x) : 0` (NaN gives 0).
+        let clamp01 = |x: f32| {
+            if 0.0 < x {
+                if 1.0 < x {
+                    1.0
+                } else {
+                    x
+                }
+            } else {
+                0.0
+            }
+        };
+        let mut factor = [0f32; LANES];
+        match self.span {
+            Some(span) => {
+                for (f, c) in factor.iter_mut().zip(c) {
+                    *f = clamp01((self.end - *c) / span);
+                }
+            }
+            None => {
+                for (f, c) in factor.iter_mut().zip(c) {
+                    *f = clamp01(*c - self.end);
+                }
+            }
+        }
+        for (channel, fog) in colors[..3].iter_mut().zip(self.color) {
+            for (x, f) in channel.iter_mut().zip(&factor) {
+                *x = *f * *x + (1.0 - *f) * fog;
+            }
         }
     }
 }

@@ -340,3 +340,67 @@ fn a_program_that_passes_the_colour_through_is_none() {
     empty.texturing = Some(Arc::new(Texturing { stages: Vec::new(), fb_height: 4 }));
     assert!(is_identity(&FragmentKey::of(&empty)));
 }
+
+/// Linear fog alone runs written out ([`LinearFog`]): the executor's bits on every lane, for
+/// coordinates inside, outside and at the ends of the ramp, the edges (±0, ±∞, NaN, tiny)
+/// and colours outside [0, 1], with start below, above and equal to end. A factor computed
+/// another way (a reciprocal, a fused product, another clamp) differs in some lane.
+#[test]
+fn written_out_linear_fog_is_the_program_bit_for_bit() {
+    let mut rng = Rng(0x2545_f491_4f6c_dd1d);
+    let ends = [(0.0, 1.0), (0.2, 0.8), (0.8, 0.2), (-1.5, 3.25), (0.5, 0.5), (0.3, 0.3), (1.0, 1.0 + 1e-7)];
+    let edges = [0.0, -0.0, 1.0, -1.0, f32::INFINITY, f32::NEG_INFINITY, f32::NAN, 1e-38, 1e-45, 0.5, 0.2, 0.8];
+    let mut checked = 0;
+    for &(start, end) in &ends {
+        let mut state = FragmentState::plain(None, Vec::new(), true);
+        state.fog = Some(Fog { mode: FogMode::Linear, start, end, density: 1.0, color: [0.25, 0.6, 0.9, 1.0] });
+        let shading = shading_of(&state);
+        assert!(shading.linear_fog.is_some());
+        for round in 0..200 {
+            let coordinate: F32s = std::array::from_fn(|i| match round {
+                0 => edges[i % edges.len()],
+                1 => end + (i as f32 - 8.0) * 1e-7,
+                _ => rng.unit() * 4.0 - 1.5,
+            });
+            let primary: [F32s; 4] = std::array::from_fn(|k| {
+                std::array::from_fn(|i| {
+                    if round == 0 && k == 0 {
+                        edges[(i + 3) % edges.len()]
+                    } else {
+                        rng.unit() * 1.5 - 0.25
+                    }
+                })
+            });
+            let mut scratch = ShadingScratch::default();
+            scratch.prepare(&shading);
+            scratch.varyings[0] = coordinate;
+            let mut want = primary;
+            let textures = StageTextures { texturing: None, used: !0 };
+            shading.run(&mut scratch, &textures, 0xffff, &mut want);
+            let mut got = primary;
+            shading.run_block(&mut scratch, None, 0, 0xffff, &mut got, |_, first, out| {
+                assert_eq!((first, out.len()), (0, 1));
+                out[0] = coordinate;
+            });
+            for k in 0..4 {
+                for i in 0..LANES {
+                    assert_eq!(
+                        got[k][i].to_bits(),
+                        want[k][i].to_bits(),
+                        "start {start} end {end} c {} channel {k}",
+                        coordinate[i]
+                    );
+                    checked += 1;
+                }
+            }
+        }
+    }
+    assert!(checked > 40_000);
+    // Any other program keeps the executor.
+    let mut state = FragmentState::plain(None, Vec::new(), true);
+    state.fog = Some(Fog { mode: FogMode::Exp, start: 0.0, end: 1.0, density: 1.0, color: [0.0; 4] });
+    assert!(shading_of(&state).linear_fog.is_none());
+    state.fog = Some(Fog { mode: FogMode::Linear, start: 0.0, end: 1.0, density: 1.0, color: [0.0; 4] });
+    state.color_sum = true;
+    assert!(shading_of(&state).linear_fog.is_none());
+}
