@@ -601,9 +601,19 @@ impl super::Context {
     pub fn validate_program(&mut self, program: u32) {
         self.with_shader_objects(|objects| {
             let program = objects.program(program)?;
-            program.validate_status = program.link_status;
-            program.info_log =
-                if program.link_status { String::new() } else { "error: program not linked\n".to_string() };
+            let conflict = match &program.executable {
+                Some(executable) if program.link_status => sampler_unit_conflict(executable, &program.uniform_values),
+                _ => None,
+            };
+            program.validate_status = program.link_status && conflict.is_none();
+            program.info_log = match conflict {
+                _ if !program.link_status => "error: program not linked\n".to_string(),
+                // Mesa's words (the spec's), with the unit.
+                Some(unit) => format!(
+                    "active samplers with a different type refer to the same texture image unit ({unit})\n"
+                ),
+                None => String::new(),
+            };
             Ok(())
         });
     }
@@ -850,6 +860,58 @@ impl Program {
     /// The interface of the last link, if it succeeded.
     fn linked(&self) -> Option<&Arc<Linked>> {
         self.executable.as_ref().filter(|_| self.link_status).map(|e| &e.interface)
+    }
+}
+
+/// The first texture unit that two samplers the program's stages read give different
+/// targets (GL 2.0 section 2.15.4, "Validation": two active samplers of different types on
+/// one unit make draws GL_INVALID_OPERATION and glValidateProgram fail; glRasterPos, which
+/// the spec names too, is not refused, as in Mesa). Shadow and plain
+/// samplers of one dimensionality read the same target, and do not conflict (as Mesa).
+pub fn sampler_unit_conflict(executable: &Executable, values: &[u32]) -> Option<u32> {
+    let mut targets: Vec<(u32, usize)> = Vec::new();
+    let stages = [&executable.vertex_program, &executable.fragment_program];
+    for sampler in stages.into_iter().flatten().flat_map(|stage| &stage.lowered.samplers) {
+        let Some((_, first)) = executable.interface.element(&sampler.name) else { continue };
+        let Some(&unit) = values.get(first) else { continue };
+        let target = sampler_target(sampler.kind);
+        match targets.iter().find(|&&(u, _)| u == unit) {
+            Some(&(_, t)) if t != target => return Some(unit),
+            Some(_) => {}
+            None => targets.push((unit, target)),
+        }
+    }
+    None
+}
+
+/// The texture target index (1D, 2D, 3D, cube map) a sampler type reads.
+pub fn sampler_target(kind: crate::glsl::lex::Sampler) -> usize {
+    use crate::glsl::lex::Sampler as Kind;
+    match kind {
+        Kind::S1D | Kind::S1DShadow => 0,
+        Kind::S2D | Kind::S2DShadow => 1,
+        Kind::S3D => 2,
+        Kind::Cube => 3,
+    }
+}
+
+impl Context {
+    /// The validation a draw command (glBegin, the array draws) makes of the
+    /// program in use: false, with GL_INVALID_OPERATION, when two of its samplers of
+    /// different types share a texture unit ([`sampler_unit_conflict`]).
+    pub(crate) fn check_program_samplers(&mut self) -> bool {
+        let Some(executable) = self.program_in_use.executable() else { return true };
+        let stages = [&executable.vertex_program, &executable.fragment_program];
+        // Two samplers at least, or there is nothing to compare (and no lock to take).
+        if stages.into_iter().flatten().map(|s| s.lowered.samplers.len()).sum::<usize>() < 2 {
+            return true;
+        }
+        let executable = executable.clone();
+        let conflict = self.program_in_use.uniform_values().and_then(|values| sampler_unit_conflict(&executable, &values));
+        if conflict.is_some() {
+            self.error(GL_INVALID_OPERATION);
+        }
+        conflict.is_none()
     }
 }
 

@@ -27,6 +27,9 @@ impl Context {
         if !is_primitive_mode(mode) {
             return self.error(GL_INVALID_ENUM);
         }
+        if !self.check_program_samplers() {
+            return;
+        }
         self.vertex_input.begin_mode = mode;
         self.vertex_input.vertices.clear();
         self.forget_generic_rows();
