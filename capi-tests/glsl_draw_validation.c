@@ -7,7 +7,10 @@
  *    matter to the result, or Mesa's compiler drops them and their samplers are inactive);
  *  - generic attribute 0 as a constant: glVertexAttrib(0, ...) outside glBegin/glEnd sets
  *    its current value, and a vertex shader reading it draws from the other arrays alone
- *    (piglit gl-2.0-vertex-const-attr); inside glBegin/glEnd it is still glVertex. */
+ *    (piglit gl-2.0-vertex-const-attr); inside glBegin/glEnd it is still glVertex;
+ *  - glMaterial between glBegin and glEnd: gl_FrontMaterial keeps glBegin's materials for
+ *    that draw, immediate and in a display list, and has the last ones after glEnd
+ *    (piglit gl-2.0-shader-materials). */
 #include "common.h"
 
 #define W 32
@@ -207,11 +210,73 @@ static void constant_attribute_0(void)
     glDeleteProgram(p);
 }
 
+static void materials_in_begin_end(void)
+{
+    static const char *vs = "attribute vec4 generic1;\n"
+                            "void main() { gl_FrontColor = gl_FrontMaterial.ambient + gl_FrontMaterial.diffuse\n"
+                            "    + gl_FrontLightProduct[0].ambient + generic1; gl_Position = ftransform(); }\n";
+    static const char *fs = "void main() { gl_FragColor = gl_Color; }\n";
+    static const float red[] = {1, 0, 0, 1}, ambient[] = {0, 0.3f, 0.5f, 1}, diffuse[] = {0, 0.2f, 0.3f, 1};
+    static const float generic1[] = {0.2f, 0.1f, -0.4f, 0};
+    static const float pos[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+    GLuint p = program("materials", vs, fs);
+    link("materials", p);
+    glUseProgram(p);
+    GLint g1 = glGetAttribLocation(p, "generic1");
+    /* The list first: after it Mesa 22 still has the materials of before its glBegin (its
+     * list playback does not make the list's last glMaterial current), where tessera has
+     * the last one, as GL 2.1 section 5.4 (a list's commands execute as if called) says;
+     * so that value is checked on tessera only, and the immediate case comes last. */
+    for (int list = 1; list >= 0; list--) {
+        clear();
+        if (list)
+            glNewList(1, GL_COMPILE);
+        glMaterialfv(GL_FRONT, GL_AMBIENT, ambient);
+        glMaterialfv(GL_FRONT, GL_DIFFUSE, diffuse);
+        glBegin(GL_TRIANGLE_FAN);
+        for (int i = 0; i < 4; i++) {
+            glMaterialfv(GL_FRONT, GL_AMBIENT, red);
+            glMaterialfv(GL_FRONT, GL_DIFFUSE, red);
+            glVertexAttrib4fv(g1, generic1);
+            glVertex2fv(pos[i]);
+        }
+        glEnd();
+        if (list) {
+            glEndList();
+            glCallList(1);
+            glDeleteLists(1, 1);
+        }
+        unsigned char px[4];
+        glReadPixels(W / 2, H / 2, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
+        /* ambient + diffuse + 0.2 ambient (light 0's ambient is black) + generic1. */
+        capi_check(px[0] == 51 && px[1] >= 152 && px[1] <= 154 && px[2] == 102,
+                   "%s: gl_FrontMaterial keeps glBegin's materials: (%d, %d, %d)", list ? "list" : "immediate", px[0],
+                   px[1], px[2]);
+        capi_save_framebuffer(list ? "materials_list" : "materials_immediate", W, H);
+        GLfloat after[4];
+        glGetMaterialfv(GL_FRONT, GL_AMBIENT, after);
+        if (!list)
+            capi_value("materials.immediate.ambient_after", "%g %g %g %g", after[0], after[1], after[2], after[3]);
+        else if (capi_is_tessera())
+            capi_check(after[0] == 1 && after[1] == 0 && after[2] == 0, "the list's last glMaterial is current");
+    }
+    /* After glEnd the last materials hold: a draw without glMaterial reads them. */
+    clear();
+    glBegin(GL_TRIANGLE_FAN);
+    for (int i = 0; i < 4; i++)
+        glVertex2fv(pos[i]);
+    glEnd();
+    capi_save_framebuffer("materials_after_end", W, H);
+    glUseProgram(0);
+    glDeleteProgram(p);
+}
+
 int main(void)
 {
     capi_make_context(OSMESA_RGBA, GL_UNSIGNED_BYTE, 0, 0, 0, W, H, NULL);
     sampler_conflicts();
     constant_attribute_0();
+    materials_in_begin_end();
     capi_expect_error(GL_NO_ERROR, "at the end");
     return capi_finish();
 }

@@ -47,6 +47,7 @@ impl Context {
         self.deliver_open_vertices();
         self.forget_generic_rows();
         self.vertex_input.material_marks.clear();
+        self.begin_materials = None;
         // Mesa updates tracked materials when it flushes the current attributes.
         self.update_color_material();
     }
