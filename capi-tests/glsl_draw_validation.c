@@ -10,7 +10,9 @@
  *    (piglit gl-2.0-vertex-const-attr); inside glBegin/glEnd it is still glVertex;
  *  - glMaterial between glBegin and glEnd: gl_FrontMaterial keeps glBegin's materials for
  *    that draw, immediate and in a display list, and has the last ones after glEnd
- *    (piglit gl-2.0-shader-materials). */
+ *    (piglit gl-2.0-shader-materials);
+ *  - the integer abs, sign, min, max and clamp that Mesa compiles in GLSL 1.10 (1.30's
+ *    built-ins; piglit's vs-loop-variable-iteration-limit-unroll calls min(int, int)). */
 #include "common.h"
 
 #define W 32
@@ -271,12 +273,39 @@ static void materials_in_begin_end(void)
     glDeleteProgram(p);
 }
 
+static void integer_builtins_110(void)
+{
+    static const char *fs = "uniform int u;\n"
+                            "void main() { ivec2 v = max(ivec2(u, -u), 1);\n"
+                            "  gl_FragColor = vec4(float(sign(u)) * 0.5 + 0.5, float(abs(u)) / 8.0,\n"
+                            "                      float(clamp(u, -2, 2) + 2) / 4.0, float(min(v.x, v.y)) / 8.0); }\n";
+    GLuint p = program("integer_builtins", NULL, fs);
+    link("integer_builtins", p);
+    glUseProgram(p);
+    GLint u = glGetUniformLocation(p, "u");
+    static const int values[] = {-5, 0, 3, 7};
+    char key[64];
+    for (unsigned i = 0; i < sizeof values / sizeof values[0]; i++) {
+        glUniform1i(u, values[i]);
+        clear();
+        glRectf(-1, -1, 1, 1);
+        unsigned char px[4];
+        glReadPixels(W / 2, H / 2, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
+        snprintf(key, sizeof key, "integer_builtins.u=%d", values[i]);
+        capi_value(key, "%d %d %d %d", px[0], px[1], px[2], px[3]);
+    }
+    capi_expect_error(GL_NO_ERROR, "integer built-ins");
+    glUseProgram(0);
+    glDeleteProgram(p);
+}
+
 int main(void)
 {
     capi_make_context(OSMESA_RGBA, GL_UNSIGNED_BYTE, 0, 0, 0, W, H, NULL);
     sampler_conflicts();
     constant_attribute_0();
     materials_in_begin_end();
+    integer_builtins_110();
     capi_expect_error(GL_NO_ERROR, "at the end");
     return capi_finish();
 }

@@ -194,7 +194,12 @@ impl Lowerer<'_> {
             "sqrt" => self.each(&[arg(0)], |l, o| l.un(U::Sqrt, o[0])),
             "inversesqrt" => self.each(&[arg(0)], |l, o| l.un(U::Rsq, o[0])),
             "abs" => self.each(&[arg(0)], |l, o| l.un(if float { U::FAbs } else { U::IAbs }, o[0])),
-            "sign" => self.each(&[arg(0)], |l, o| l.un(U::FSign, o[0])),
+            "sign" if float => self.each(&[arg(0)], |l, o| l.un(U::FSign, o[0])),
+            // The integer sign is x clamped to [-1, 1].
+            "sign" => self.each(&[arg(0)], |l, o| {
+                let (lo, hi) = (l.konst(Const::I32(-1)), l.konst(Const::I32(1)));
+                l.min_max_clamp(o[0], lo, hi, false)
+            }),
             "floor" => self.each(&[arg(0)], |l, o| l.un(U::Floor, o[0])),
             "ceil" => self.each(&[arg(0)], |l, o| l.un(U::Ceil, o[0])),
             "fract" => self.each(&[arg(0)], |l, o| l.un(U::Fract, o[0])),
