@@ -12,7 +12,12 @@
  *    that draw, immediate and in a display list, and has the last ones after glEnd
  *    (piglit gl-2.0-shader-materials);
  *  - the integer abs, sign, min, max and clamp that Mesa compiles in GLSL 1.10 (1.30's
- *    built-ins; piglit's vs-loop-variable-iteration-limit-unroll calls min(int, int)). */
+ *    built-ins; piglit's vs-loop-variable-iteration-limit-unroll calls min(int, int));
+ *  - a sampler array indexed by a non-constant expression (a uniform, a loop counter):
+ *    GLSL 1.10/1.20 allow only constant indices, Mesa compiles the others (piglit
+ *    max-samplers), and so does tessera, choosing per fragment. (An index that differs
+ *    between the fragments of a quad is not compared: llvmpipe does not choose per
+ *    fragment, and later GLSL versions leave such an index undefined.) */
 #include "common.h"
 
 #define W 32
@@ -299,6 +304,51 @@ static void integer_builtins_110(void)
     glDeleteProgram(p);
 }
 
+static void dynamic_sampler_indices(void)
+{
+    static const char *fs = "uniform sampler2D t[3]; uniform int i;\n"
+                            "void main() {\n"
+                            "  vec4 loop = vec4(0.0);\n"
+                            "  for (int k = 0; k < 3; k++) if (k == i) loop = texture2D(t[k], vec2(0.5));\n"
+                            "  gl_FragColor = 0.5 * texture2D(t[i], vec2(0.5)) + 0.5 * loop; }\n";
+    GLuint p = program("dynamic_samplers", NULL, fs);
+    link("dynamic_samplers", p);
+    glUseProgram(p);
+    static const GLubyte texels[3][4] = {{255, 0, 0, 255}, {0, 255, 0, 255}, {0, 0, 255, 255}};
+    GLuint tex[3];
+    glGenTextures(3, tex);
+    char name[8];
+    for (int k = 0; k < 3; k++) {
+        glActiveTexture(GL_TEXTURE0 + k);
+        glBindTexture(GL_TEXTURE_2D, tex[k]);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels[k]);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        /* Units in another order than the elements. */
+        snprintf(name, sizeof name, "t[%d]", k);
+        glUniform1i(glGetUniformLocation(p, name), 2 - k);
+    }
+    glActiveTexture(GL_TEXTURE0);
+    GLint i = glGetUniformLocation(p, "i");
+    for (int k = 0; k < 3; k++) {
+        glUniform1i(i, k);
+        clear();
+        glRectf(-1, -1, 1, 1);
+        unsigned char px[4];
+        glReadPixels(1, 1, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
+        /* Element k reads unit 2 - k, which holds texel 2 - k. */
+        int want = 2 - k;
+        capi_check(px[want] >= 190 || (want == 2 && px[2] >= 190), "t[%d] reads unit %d: (%d, %d, %d)", k, want, px[0],
+                   px[1], px[2]);
+        snprintf(name, sizeof name, "i=%d", k);
+        capi_save_framebuffer(k == 0 ? "dynamic_samplers_0" : k == 1 ? "dynamic_samplers_1" : "dynamic_samplers_2", W,
+                              H);
+    }
+    capi_expect_error(GL_NO_ERROR, "dynamic sampler indices");
+    glUseProgram(0);
+    glDeleteProgram(p);
+    glDeleteTextures(3, tex);
+}
+
 int main(void)
 {
     capi_make_context(OSMESA_RGBA, GL_UNSIGNED_BYTE, 0, 0, 0, W, H, NULL);
@@ -306,6 +356,7 @@ int main(void)
     constant_attribute_0();
     materials_in_begin_end();
     integer_builtins_110();
+    dynamic_sampler_indices();
     capi_expect_error(GL_NO_ERROR, "at the end");
     return capi_finish();
 }
