@@ -609,9 +609,9 @@ impl super::Context {
             program.info_log = match conflict {
                 _ if !program.link_status => "error: program not linked\n".to_string(),
                 // Mesa's words (the spec's), with the unit.
-                Some(unit) => format!(
-                    "active samplers with a different type refer to the same texture image unit ({unit})\n"
-                ),
+                Some(unit) => {
+                    format!("active samplers with a different type refer to the same texture image unit ({unit})\n")
+                }
                 None => String::new(),
             };
             Ok(())
@@ -907,7 +907,8 @@ impl Context {
             return true;
         }
         let executable = executable.clone();
-        let conflict = self.program_in_use.uniform_values().and_then(|values| sampler_unit_conflict(&executable, &values));
+        let conflict =
+            self.program_in_use.uniform_values().and_then(|values| sampler_unit_conflict(&executable, &values));
         if conflict.is_some() {
             self.error(GL_INVALID_OPERATION);
         }

@@ -776,9 +776,12 @@ impl<'a> Lowerer<'a> {
         };
         let mut result = self.read_at(root, base, len, &dynamic[1..], swizzle)?;
         if result.iter().any(|r| r.0 >= SAMPLER_TAG) {
-            return self.dynamic_sampler_leaves(index, result, |l, k| {
-                l.read_at(root, base + k * stride, len, &dynamic[1..], swizzle)
-            }, count);
+            return self.dynamic_sampler_leaves(
+                index,
+                result,
+                |l, k| l.read_at(root, base + k * stride, len, &dynamic[1..], swizzle),
+                count,
+            );
         }
         for k in 1..count {
             let v = self.read_at(root, base + k * stride, len, &dynamic[1..], swizzle)?;

@@ -535,10 +535,7 @@ impl PartialEq for Texturing {
         self.fb_height == other.fb_height
             && self.stages.len() == other.stages.len()
             && self.stages.iter().zip(&other.stages).all(|(a, b)| {
-                a.unit == b.unit
-                    && a.slot == b.slot
-                    && a.env == b.env
-                    && a.sampler.same_lookup(&b.sampler)
+                a.unit == b.unit && a.slot == b.slot && a.env == b.env && a.sampler.same_lookup(&b.sampler)
             })
     }
 }

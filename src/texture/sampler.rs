@@ -354,7 +354,11 @@ impl Sampler {
             && self.base == other.base
             && bits(self) == bits(other)
             && self.faces.len() == other.faces.len()
-            && self.faces.iter().zip(&other.faces).all(|(x, y)| x.len() == y.len() && x.iter().zip(y).all(|(p, q)| Arc::ptr_eq(p, q)))
+            && self
+                .faces
+                .iter()
+                .zip(&other.faces)
+                .all(|(x, y)| x.len() == y.len() && x.iter().zip(y).all(|(p, q)| Arc::ptr_eq(p, q)))
     }
 
     /// The texture color of coordinates `c` (s, t, r already divided by q), given their

@@ -204,7 +204,6 @@ fn shader_output(name: &str, index: u32) -> ShaderOutput {
     }
 }
 
-
 impl Context {
     /// The program in use and its fragment stage, when that is a shader.
     pub(in crate::context) fn fragment_shader(&self) -> Option<(&Arc<Executable>, &Arc<StageProgram>)> {

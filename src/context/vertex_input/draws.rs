@@ -350,14 +350,14 @@ impl Context {
             };
             outcome = match elements {
                 Some(elements) => {
-                    let arrays = &self.vertex_input.arrays;
+                    let (arrays, current) = (&self.vertex_input.arrays, &self.state.current);
                     let start = batch.len();
-                    assemble(arrays, &buffers, &self.state.current, shader, elements, memory, &mut batch).and_then(|()| {
+                    assemble(arrays, &buffers, current, shader, elements, memory, &mut batch).and_then(|()| {
                         if !generic {
                             return Ok(());
                         }
                         let vertices = &mut batch[start..];
-                        assemble_generic(arrays, &buffers, &self.state.current, elements, memory, &mut rows, vertices)
+                        assemble_generic(arrays, &buffers, current, elements, memory, &mut rows, vertices)
                     })
                 }
                 None => Err(NoDraw::Undefined),

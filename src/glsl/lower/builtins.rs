@@ -36,7 +36,7 @@
 //!   lookups without `Lod` use level 0 (GLSL: no implicit derivatives there); `shadow*`
 //!   pass the reference (r) as the comparison value.
 
-use super::{Leaf, Lowerer, R, DYNAMIC_SAMPLER_TAG, SAMPLER_TAG};
+use super::{Leaf, Lowerer, DYNAMIC_SAMPLER_TAG, R, SAMPLER_TAG};
 use crate::glsl::hir::{Scalar, Type};
 use crate::glsl::lex::Sampler;
 use crate::shader::ir::{self, Axis, BinaryOp as B, Const, Inst, Lod, Reg, Stmt, UnaryOp as U};
@@ -158,9 +158,7 @@ impl Lowerer<'_> {
     /// The samplers a lookup's sampler argument may be: one, or for an array element chosen
     /// by a non-constant index, the index register and every element's sampler.
     fn sampler_choice(&self, v: &[Reg]) -> R<(Option<Reg>, Vec<u8>)> {
-        let unit = |r: Reg| -> R<u8> {
-            u8::try_from(r.0 - SAMPLER_TAG).map_err(|_| "too many samplers".to_string())
-        };
+        let unit = |r: Reg| -> R<u8> { u8::try_from(r.0 - SAMPLER_TAG).map_err(|_| "too many samplers".to_string()) };
         match v.first() {
             Some(r) if r.0 >= DYNAMIC_SAMPLER_TAG => {
                 let (index, candidates) = &self.dynamic_samplers[(r.0 - DYNAMIC_SAMPLER_TAG) as usize];
