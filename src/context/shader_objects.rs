@@ -84,6 +84,10 @@ pub struct Executable {
     pub fragment_program: Option<Arc<StageProgram>>,
     /// Where the varyings travel between the stages.
     pub varyings: VaryingLayout,
+    /// Each sampler the stages read: the index of its value (the texture unit) among the
+    /// program's uniform words and the target it reads, for the draws' validation
+    /// ([`sampler_unit_conflict`]).
+    pub sampler_slots: Vec<(usize, usize)>,
 }
 
 /// One stage of a linked program: its lowering (the program and what its uniform, input,
@@ -160,6 +164,12 @@ impl Executable {
             vertex_program.as_ref().map(|p| &p.lowered),
             fragment_program.as_ref().map(|p| &p.lowered),
         )?;
+        let sampler_slots = [&vertex_program, &fragment_program]
+            .into_iter()
+            .flatten()
+            .flat_map(|stage| &stage.lowered.samplers)
+            .filter_map(|s| Some((linked.element(&s.name)?.1, sampler_target(s.kind))))
+            .collect();
         Ok(Executable {
             vertex: linked.vertex,
             fragment: linked.fragment,
@@ -167,6 +177,7 @@ impl Executable {
             vertex_program,
             fragment_program,
             varyings,
+            sampler_slots,
         })
     }
 }
@@ -869,16 +880,13 @@ impl Program {
 /// the spec names too, is not refused, as in Mesa). Shadow and plain
 /// samplers of one dimensionality read the same target, and do not conflict (as Mesa).
 pub fn sampler_unit_conflict(executable: &Executable, values: &[u32]) -> Option<u32> {
-    let mut targets: Vec<(u32, usize)> = Vec::new();
-    let stages = [&executable.vertex_program, &executable.fragment_program];
-    for sampler in stages.into_iter().flatten().flat_map(|stage| &stage.lowered.samplers) {
-        let Some((_, first)) = executable.interface.element(&sampler.name) else { continue };
-        let Some(&unit) = values.get(first) else { continue };
-        let target = sampler_target(sampler.kind);
-        match targets.iter().find(|&&(u, _)| u == unit) {
-            Some(&(_, t)) if t != target => return Some(unit),
-            Some(_) => {}
-            None => targets.push((unit, target)),
+    let slots = &executable.sampler_slots;
+    // Pairs in order: a program has few samplers (GL_MAX_TEXTURE_IMAGE_UNITS per stage).
+    for (i, &(slot, target)) in slots.iter().enumerate() {
+        let Some(&unit) = values.get(slot) else { continue };
+        let clash = slots[..i].iter().any(|&(s, t)| t != target && values.get(s) == Some(&unit));
+        if clash {
+            return Some(unit);
         }
     }
     None
@@ -901,14 +909,12 @@ impl Context {
     /// different types share a texture unit ([`sampler_unit_conflict`]).
     pub(crate) fn check_program_samplers(&mut self) -> bool {
         let Some(executable) = self.program_in_use.executable() else { return true };
-        let stages = [&executable.vertex_program, &executable.fragment_program];
         // Two samplers at least, or there is nothing to compare (and no lock to take).
-        if stages.into_iter().flatten().map(|s| s.lowered.samplers.len()).sum::<usize>() < 2 {
+        if executable.sampler_slots.len() < 2 {
             return true;
         }
-        let executable = executable.clone();
-        let conflict =
-            self.program_in_use.uniform_values().and_then(|values| sampler_unit_conflict(&executable, &values));
+        let in_use = &self.program_in_use;
+        let conflict = in_use.with_uniform_values(|values| sampler_unit_conflict(executable, values)).flatten();
         if conflict.is_some() {
             self.error(GL_INVALID_OPERATION);
         }
@@ -917,6 +923,13 @@ impl Context {
 }
 
 impl ProgramInUse {
+    /// `f` of the uniform values of the program in use, under the share group's lock.
+    pub fn with_uniform_values<T>(&self, f: impl FnOnce(&[u32]) -> T) -> Option<T> {
+        let objects = self.objects.as_ref()?;
+        let mut table = objects.lock();
+        table.program(self.name).ok().map(|p| f(&p.uniform_values))
+    }
+
     /// The uniform values of the program in use, for the draw path (a copy taken under the
     /// share group's lock).
     pub fn uniform_values(&self) -> Option<Vec<u32>> {
