@@ -9,8 +9,10 @@ use crate::gl::types::GLenum;
 
 pub const VENDOR: &str = "tessera project\0";
 pub const RENDERER: &str = concat!("tessera ", env!("CARGO_PKG_VERSION"), " (software rasterizer)\0");
-/// GL_VERSION: 1.5, the highest version whose every feature works (the audit below);
-/// GL 2.0 needs GLSL.
+/// GL_VERSION: 1.5, the highest version whose every feature works (the audit below). GL 2.0
+/// and 2.1 work under [`preview_gl21`] but for one disagreement: GL_MAX_TEXTURE_COORDS is
+/// the fixed-function 4 while shaders see 8 texture coordinate sets (gl_MaxTextureCoords,
+/// gl_TexCoord), which GL 2.0 section 2.7 and GLSL 1.20 section 7.4 want equal (issue #20).
 pub const VERSION: &str = concat!("1.5 tessera ", env!("CARGO_PKG_VERSION"), "\0");
 
 /// GL_VERSION under `TESSERA_PREVIEW=gl21` ([`preview_gl21`]).
