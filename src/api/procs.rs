@@ -132,6 +132,7 @@ mod tests {
             | "GL_ARB_texture_env_crossbar"
             | "GL_ARB_texture_env_dot3"
             | "GL_ARB_texture_mirrored_repeat"
+            | "GL_ARB_texture_non_power_of_two"
             | "GL_EXT_bgra"
             | "GL_EXT_packed_depth_stencil"
             | "GL_EXT_packed_pixels"

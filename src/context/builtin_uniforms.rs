@@ -483,6 +483,10 @@ impl BuiltinValues<'_> {
         use BuiltinUniform as B;
         let s = &self.ctx.state;
         let lighting = &s.lighting;
+        // glMaterial between glBegin and glEnd gives vertices their materials, which only
+        // fixed-function lighting reads: a shader's gl_FrontMaterial and its products keep
+        // the materials of glBegin until glEnd (as Mesa; piglit gl-2.0-shader-materials).
+        let materials = self.ctx.begin_materials.as_ref().unwrap_or(&lighting.materials);
         match *uniform {
             B::Matrix { source, form, word } => {
                 let word = word as usize;
@@ -529,7 +533,7 @@ impl BuiltinValues<'_> {
                 }
             }
             B::Material { face, member, word } => {
-                let m = &lighting.materials[face as usize];
+                let m = &materials[face as usize];
                 let w = word as usize;
                 match member {
                     MaterialMember::Emission => m.emission[w],
@@ -559,7 +563,7 @@ impl BuiltinValues<'_> {
             }
             B::LightModelAmbient { word } => lighting.model_ambient[word as usize],
             B::SceneColor { face, word } => {
-                let m = &lighting.materials[face as usize];
+                let m = &materials[face as usize];
                 let w = word as usize;
                 if w == 3 {
                     m.diffuse[3]
@@ -568,7 +572,7 @@ impl BuiltinValues<'_> {
                 }
             }
             B::LightProduct { face, light, member, word } => {
-                let m = &lighting.materials[face as usize];
+                let m = &materials[face as usize];
                 let l = &lighting.light[light as usize];
                 let (light_color, material_color) = match member {
                     ProductMember::Ambient => (l.ambient, m.ambient),

@@ -249,6 +249,9 @@ impl Context {
             let materials = self.state.lighting.materials;
             self.vertex_input.material_marks.push((0, materials));
         }
+        if self.inside_begin_end && self.begin_materials.is_none() {
+            self.begin_materials = Some(self.state.lighting.materials);
+        }
         for &f in faces {
             set_material_parameter(&mut self.state.lighting.materials[f], pname, params);
         }

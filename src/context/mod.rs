@@ -76,6 +76,10 @@ pub struct Context {
     client_attrib_stack: Vec<attrib::SavedClientAttribs>,
     /// Between glBegin and glEnd, where most commands are GL_INVALID_OPERATION.
     pub inside_begin_end: bool,
+    /// The materials of glBegin once a glMaterial between glBegin and glEnd changed them:
+    /// what a GLSL shader's gl_FrontMaterial and gl_BackMaterial read until glEnd's draw is
+    /// made (per-vertex materials are fixed-function lighting's alone, as in Mesa).
+    pub(crate) begin_materials: Option<[crate::vertex::lighting::Material; 2]>,
     drawable: Option<Arc<Mutex<Drawable>>>,
     /// The drawable pixels are read from (glReadPixels, glCopyPixels, glCopyTexImage) when
     /// it is not the draw drawable (glXMakeContextCurrent with a separate read drawable).
@@ -135,6 +139,7 @@ impl Context {
             attrib_stack: Vec::new(),
             client_attrib_stack: Vec::new(),
             inside_begin_end: false,
+            begin_materials: None,
             drawable: None,
             read_drawable: None,
             scene: None,

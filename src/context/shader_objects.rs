@@ -84,6 +84,10 @@ pub struct Executable {
     pub fragment_program: Option<Arc<StageProgram>>,
     /// Where the varyings travel between the stages.
     pub varyings: VaryingLayout,
+    /// Each sampler the stages read: the index of its value (the texture unit) among the
+    /// program's uniform words and the target it reads, for the draws' validation
+    /// ([`sampler_unit_conflict`]).
+    pub sampler_slots: Vec<(usize, usize)>,
 }
 
 /// One stage of a linked program: its lowering (the program and what its uniform, input,
@@ -160,6 +164,12 @@ impl Executable {
             vertex_program.as_ref().map(|p| &p.lowered),
             fragment_program.as_ref().map(|p| &p.lowered),
         )?;
+        let sampler_slots = [&vertex_program, &fragment_program]
+            .into_iter()
+            .flatten()
+            .flat_map(|stage| &stage.lowered.samplers)
+            .filter_map(|s| Some((linked.element(&s.name)?.1, sampler_target(s.kind))))
+            .collect();
         Ok(Executable {
             vertex: linked.vertex,
             fragment: linked.fragment,
@@ -167,6 +177,7 @@ impl Executable {
             vertex_program,
             fragment_program,
             varyings,
+            sampler_slots,
         })
     }
 }
@@ -601,9 +612,19 @@ impl super::Context {
     pub fn validate_program(&mut self, program: u32) {
         self.with_shader_objects(|objects| {
             let program = objects.program(program)?;
-            program.validate_status = program.link_status;
-            program.info_log =
-                if program.link_status { String::new() } else { "error: program not linked\n".to_string() };
+            let conflict = match &program.executable {
+                Some(executable) if program.link_status => sampler_unit_conflict(executable, &program.uniform_values),
+                _ => None,
+            };
+            program.validate_status = program.link_status && conflict.is_none();
+            program.info_log = match conflict {
+                _ if !program.link_status => "error: program not linked\n".to_string(),
+                // Mesa's words (the spec's), with the unit.
+                Some(unit) => {
+                    format!("active samplers with a different type refer to the same texture image unit ({unit})\n")
+                }
+                None => String::new(),
+            };
             Ok(())
         });
     }
@@ -853,7 +874,62 @@ impl Program {
     }
 }
 
+/// The first texture unit that two samplers the program's stages read give different
+/// targets (GL 2.0 section 2.15.4, "Validation": two active samplers of different types on
+/// one unit make draws GL_INVALID_OPERATION and glValidateProgram fail; glRasterPos, which
+/// the spec names too, is not refused, as in Mesa). Shadow and plain
+/// samplers of one dimensionality read the same target, and do not conflict (as Mesa).
+pub fn sampler_unit_conflict(executable: &Executable, values: &[u32]) -> Option<u32> {
+    let slots = &executable.sampler_slots;
+    // Pairs in order: a program has few samplers (GL_MAX_TEXTURE_IMAGE_UNITS per stage).
+    for (i, &(slot, target)) in slots.iter().enumerate() {
+        let Some(&unit) = values.get(slot) else { continue };
+        let clash = slots[..i].iter().any(|&(s, t)| t != target && values.get(s) == Some(&unit));
+        if clash {
+            return Some(unit);
+        }
+    }
+    None
+}
+
+/// The texture target index (1D, 2D, 3D, cube map) a sampler type reads.
+pub fn sampler_target(kind: crate::glsl::lex::Sampler) -> usize {
+    use crate::glsl::lex::Sampler as Kind;
+    match kind {
+        Kind::S1D | Kind::S1DShadow => 0,
+        Kind::S2D | Kind::S2DShadow => 1,
+        Kind::S3D => 2,
+        Kind::Cube => 3,
+    }
+}
+
+impl Context {
+    /// The validation a draw command (glBegin, the array draws) makes of the
+    /// program in use: false, with GL_INVALID_OPERATION, when two of its samplers of
+    /// different types share a texture unit ([`sampler_unit_conflict`]).
+    pub(crate) fn check_program_samplers(&mut self) -> bool {
+        let Some(executable) = self.program_in_use.executable() else { return true };
+        // Two samplers at least, or there is nothing to compare (and no lock to take).
+        if executable.sampler_slots.len() < 2 {
+            return true;
+        }
+        let in_use = &self.program_in_use;
+        let conflict = in_use.with_uniform_values(|values| sampler_unit_conflict(executable, values)).flatten();
+        if conflict.is_some() {
+            self.error(GL_INVALID_OPERATION);
+        }
+        conflict.is_none()
+    }
+}
+
 impl ProgramInUse {
+    /// `f` of the uniform values of the program in use, under the share group's lock.
+    pub fn with_uniform_values<T>(&self, f: impl FnOnce(&[u32]) -> T) -> Option<T> {
+        let objects = self.objects.as_ref()?;
+        let mut table = objects.lock();
+        table.program(self.name).ok().map(|p| f(&p.uniform_values))
+    }
+
     /// The uniform values of the program in use, for the draw path (a copy taken under the
     /// share group's lock).
     pub fn uniform_values(&self) -> Option<Vec<u32>> {

@@ -9,8 +9,10 @@ use crate::gl::types::GLenum;
 
 pub const VENDOR: &str = "tessera project\0";
 pub const RENDERER: &str = concat!("tessera ", env!("CARGO_PKG_VERSION"), " (software rasterizer)\0");
-/// GL_VERSION: 1.5, the highest version whose every feature works (the audit below);
-/// GL 2.0 needs GLSL.
+/// GL_VERSION: 1.5, the highest version whose every feature works (the audit below). GL 2.0
+/// and 2.1 work under [`preview_gl21`] but for one disagreement: GL_MAX_TEXTURE_COORDS is
+/// the fixed-function 4 while shaders see 8 texture coordinate sets (gl_MaxTextureCoords,
+/// gl_TexCoord), which GL 2.0 section 2.7 and GLSL 1.20 section 7.4 want equal (issue #20).
 pub const VERSION: &str = concat!("1.5 tessera ", env!("CARGO_PKG_VERSION"), "\0");
 
 /// GL_VERSION under `TESSERA_PREVIEW=gl21` ([`preview_gl21`]).
@@ -85,6 +87,7 @@ pub fn preview_gl21() -> bool {
 // | GL_ARB_point_sprite (GL 2.0) | GL_POINT_SPRITE: squares of the unrounded size whatever GL_POINT_SMOOTH says, GL_COORD_REPLACE per unit (s, t across the square, r = 0, q = 1), GL_POINT_SPRITE_COORD_ORIGIN; llvmpipe's coordinate planes | works | setup/jobs/point.rs Sprite; capi point_sprites |
 // | GL_EXT_texture_sRGB (GL 2.1) | GL_SRGB*, GL_SLUMINANCE*, the generic GL_COMPRESSED_S* (stored uncompressed); texels decoded with llvmpipe's curve before filtering, fixed function and GLSL; glGetTexImage of the stored values; colour attachments (writes not encoded) | works | texture/mod.rs srgb_to_linear, texture/sampler.rs; capi texture_srgb |
 // | GL_ARB_pixel_buffer_object | pack and unpack buffer targets (GL 2.1): glReadPixels, glGetTexImage, glGetPolygonStipple, glGetPixelMap into a buffer; glTexImage*, glTexSubImage*, glDrawPixels, glBitmap, glPolygonStipple, glPixelMap from one (also while compiling a list); range, alignment and mapping errors | works | context/pixel_buffers.rs; capi pixel_buffer_objects |
+// | GL_ARB_texture_non_power_of_two (GL 2.0) | any size for 1D, 2D, 3D and cube map textures (and their borders): every wrap mode, filter and mipmap chain (⌊size / 2^level⌋, down to 1), glGenerateMipmap and GL_GENERATE_MIPMAP, render to texture | works | texture/sampler.rs; capi texture_sampling (npot_1d_3d_cube); piglit texwrap … npot, tex-npot, tex3d-npot, fbo-npot |
 //
 // Outside these lists but needed by every version: GL 1.0's evaluators (capi evaluators),
 // polygon/line/point smoothing (capi smooth_primitives), and color-index pixel data in RGBA
@@ -121,6 +124,7 @@ pub const EXTENSIONS: &[&str] = &[
     "GL_ARB_texture_env_crossbar",
     "GL_ARB_texture_env_dot3",
     "GL_ARB_texture_mirrored_repeat",
+    "GL_ARB_texture_non_power_of_two",
     "GL_ARB_transpose_matrix",
     "GL_ARB_vertex_buffer_object",
     "GL_ARB_window_pos",

@@ -4,8 +4,14 @@
 //!
 //! Signatures are written once as short lines (`G mix(G,G,float)`) and expanded over the
 //! generic types, the way the specification itself writes them: `G` is genType (float,
-//! vec2, vec3, vec4), `v`/`iv`/`bv` are the 2- to 4-component float/int/bool vectors of one
-//! size. A leading `v:` or `f:` limits a signature to vertex or fragment shaders (the `Lod`
+//! vec2, vec3, vec4), `I` its integer form (int, ivec2, ivec3, ivec4), `v`/`iv`/`bv` are
+//! the 2- to 4-component float/int/bool vectors of one size.
+//!
+//! Beyond the specifications, as Mesa 22: the integer `abs`, `sign`, `min`, `max` and
+//! `clamp` of GLSL 1.30 are there in 1.10 and 1.20 too (Mesa compiles them there, and
+//! shaders written against it call `min(int, int)`, e.g. piglit's
+//! vs-loop-variable-iteration-limit-unroll); no other 1.30 built-in is, and there is still
+//! no implicit int-to-float conversion in 1.10 (`min(int, float)` is an error, as in Mesa). A leading `v:` or `f:` limits a signature to vertex or fragment shaders (the `Lod`
 //! texture lookups, `ftransform`; the bias forms, the derivatives). The table is built
 //! once per process.
 
@@ -56,6 +62,14 @@ G max(G,G)
 G max(G,float)
 G clamp(G,G,G)
 G clamp(G,float,float)
+I abs(I)
+I sign(I)
+I min(I,I)
+I min(I,int)
+I max(I,I)
+I max(I,int)
+I clamp(I,I,I)
+I clamp(I,int,int)
 G mix(G,G,G)
 G mix(G,G,float)
 G step(G,G)
@@ -140,6 +154,7 @@ vec4 noise4(G)
 fn table_type(word: &str, n: u8) -> Type {
     match word {
         "G" => Type::vector(Scalar::Float, n),
+        "I" => Type::vector(Scalar::Int, n),
         "v" => Type::Vector(Scalar::Float, n),
         "iv" => Type::Vector(Scalar::Int, n),
         "bv" => Type::Vector(Scalar::Bool, n),
@@ -171,7 +186,7 @@ fn build() -> HashMap<&'static str, Vec<Signature>> {
         let (name, params) = rest.split_once('(').expect("parameters");
         let params: Vec<&str> = params.trim_end_matches(')').split(',').filter(|p| !p.is_empty()).collect();
         let words = || std::iter::once(ret).chain(params.iter().copied());
-        let sizes: &[u8] = if words().any(|w| w == "G") {
+        let sizes: &[u8] = if words().any(|w| w == "G" || w == "I") {
             &[1, 2, 3, 4]
         } else if words().any(|w| matches!(w, "v" | "iv" | "bv")) {
             &[2, 3, 4]

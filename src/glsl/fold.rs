@@ -218,6 +218,29 @@ pub fn field(c: &Constant, member: usize) -> Option<Constant> {
     }
 }
 
+/// The integer `abs`, `sign`, `min`, `max` and `clamp` of constant arguments (`n`
+/// components; a scalar argument applies to every component).
+fn integer_builtin(name: &str, n: usize, vals: &[&[Value]]) -> Option<Constant> {
+    let at = |i: usize, k: usize| -> Option<i32> {
+        let v = vals.get(i)?;
+        match if v.len() == 1 { v[0] } else { *v.get(k)? } {
+            Value::I(x) => Some(x),
+            _ => None,
+        }
+    };
+    let each = |g: &dyn Fn(usize) -> Option<i32>| -> Option<Constant> {
+        Some(Constant::Basic((0..n).map(|k| g(k).map(Value::I)).collect::<Option<_>>()?))
+    };
+    match name {
+        "abs" => each(&|k| Some(at(0, k)?.wrapping_abs())),
+        "sign" => each(&|k| Some(at(0, k)?.signum())),
+        "min" => each(&|k| Some(at(0, k)?.min(at(1, k)?))),
+        "max" => each(&|k| Some(at(0, k)?.max(at(1, k)?))),
+        "clamp" => each(&|k| Some(at(0, k)?.max(at(1, k)?).min(at(2, k)?))),
+        _ => None,
+    }
+}
+
 /// A built-in function of constant arguments, if it is one GLSL folds (not the texture
 /// lookups, noise, derivatives or `ftransform`). `ret` is the signature's return type.
 /// `min` as the executor's `FMin`: `y < x ? y : x`, and `y` when `x` is NaN.
@@ -240,6 +263,9 @@ fn fmax(x: f32, y: f32) -> f32 {
 
 pub fn builtin(name: &str, ret: &Type, arg_types: &[Type], args: &[&Constant]) -> Option<Constant> {
     let vals: Vec<&[Value]> = args.iter().map(|c| basic(c)).collect::<Option<_>>()?;
+    if ret.base() == Some(Scalar::Int) {
+        return integer_builtin(name, ret.components().max(1), &vals);
+    }
     let f = |i: usize| vals[i].iter().map(|v| v.as_f32()).collect::<Vec<f32>>();
     let floats = |v: Vec<f32>| Some(Constant::Basic(v.into_iter().map(Value::F).collect()));
     let bools = |v: Vec<bool>| Some(Constant::Basic(v.into_iter().map(Value::B).collect()));

@@ -6,8 +6,10 @@
 //! **Values.** Every GLSL value is a list of scalar registers, its *leaves*, in GLSL's
 //! order: struct members in declaration order, array elements in index order, matrices
 //! column by column. A sampler leaf is no register but a compile-time index into
-//! [`Lowered::samplers`] (GLSL 1.10/1.20 index sampler arrays only by constant
-//! expressions, and functions are inlined, so every lookup knows its sampler statically).
+//! [`Lowered::samplers`] (functions are inlined, so every lookup knows its sampler
+//! statically), or, for an element of a sampler array chosen by a non-constant index (which
+//! GLSL 1.10/1.20 do not allow and Mesa compiles), a tag naming the index register and the
+//! candidates: the lookup then samples each candidate and selects per lane.
 //!
 //! **Variables.** Shader globals and built-ins are shared across the units of a stage by
 //! name; locals and parameters belong to their unit. A variable's leaves get registers on
@@ -89,6 +91,11 @@ pub struct Lowered {
 
 /// The register index that tags a sampler leaf (`SAMPLER_TAG + index into samplers`).
 const SAMPLER_TAG: u32 = 0xffff_0000;
+
+/// The tag of a sampler chosen from an array by a non-constant index:
+/// `DYNAMIC_SAMPLER_TAG + index into Lowerer::dynamic_samplers` (above every plain sampler
+/// tag, so every test for a sampler leaf, `r.0 >= SAMPLER_TAG`, holds for it too).
+const DYNAMIC_SAMPLER_TAG: u32 = SAMPLER_TAG + 0x8000;
 
 /// The most registers a lowered program may have: every call is inlined, and a shader that
 /// calls a function twice in each of n nested functions would grow as 2ⁿ (the executor
@@ -265,6 +272,10 @@ struct Lowerer<'a> {
     uniforms: Vec<Word>,
     inputs: Vec<Word>,
     samplers: Vec<SamplerUse>,
+    /// Samplers chosen by a non-constant index (GLSL 1.10/1.20 allow only constant indices
+    /// of sampler arrays; Mesa accepts others, piglit's max-samplers indexes by a loop
+    /// counter): the index register and the candidate sampler tags, element by element.
+    dynamic_samplers: Vec<(Reg, Vec<Reg>)>,
     /// Output variables in order of first use.
     output_vars: Vec<Key>,
     frames: Vec<Frame>,
@@ -300,6 +311,7 @@ pub fn lower(units: &[&Checked]) -> Result<Lowered, String> {
         uniforms: Vec::new(),
         inputs: Vec::new(),
         samplers: Vec::new(),
+        dynamic_samplers: Vec::new(),
         output_vars: Vec::new(),
         frames: Vec::new(),
     };
@@ -763,14 +775,57 @@ impl<'a> Lowerer<'a> {
             return self.static_leaves(root, base, len, swizzle);
         };
         let mut result = self.read_at(root, base, len, &dynamic[1..], swizzle)?;
+        if result.iter().any(|r| r.0 >= SAMPLER_TAG) {
+            return self.dynamic_sampler_leaves(
+                index,
+                result,
+                |l, k| l.read_at(root, base + k * stride, len, &dynamic[1..], swizzle),
+                count,
+            );
+        }
         for k in 1..count {
             let v = self.read_at(root, base + k * stride, len, &dynamic[1..], swizzle)?;
-            if v.iter().any(|r| r.0 >= SAMPLER_TAG) {
-                return Err("a sampler array indexed by a non-constant expression".into());
-            }
             let kc = self.konst(Const::I32(k as i32));
             let cond = self.bin(B::IEq, index, kc);
             result = v.iter().zip(&result).map(|(&a, &b)| self.select(cond, a, b)).collect();
+        }
+        Ok(result)
+    }
+
+    /// The leaves of element `index` of an array whose element 0 is `first` and element k
+    /// what `element(k)` reads, when its elements hold samplers: each sampler leaf becomes
+    /// a dynamic sampler tag naming the candidates (the lookup selects among them per lane,
+    /// element 0 for an index out of range, as other reads are). Arrays of such elements
+    /// indexed again (no GLSL 1.20 type has them) are refused.
+    fn dynamic_sampler_leaves(
+        &mut self,
+        index: Reg,
+        first: Vec<Reg>,
+        mut element: impl FnMut(&mut Self, usize) -> R<Vec<Reg>>,
+        count: usize,
+    ) -> R<Vec<Reg>> {
+        let mut elements = vec![first];
+        for k in 1..count {
+            elements.push(element(self, k)?);
+        }
+        if elements.iter().flatten().any(|r| r.0 >= DYNAMIC_SAMPLER_TAG) {
+            return Err("a sampler array indexed twice by non-constant expressions".into());
+        }
+        let mut result = Vec::with_capacity(elements[0].len());
+        for j in 0..elements[0].len() {
+            if elements[0][j].0 >= SAMPLER_TAG {
+                let candidates: Vec<Reg> = elements.iter().map(|e| e[j]).collect();
+                self.dynamic_samplers.push((index, candidates));
+                result.push(Reg(DYNAMIC_SAMPLER_TAG + (self.dynamic_samplers.len() - 1) as u32));
+            } else {
+                let mut r = elements[0][j];
+                for (k, e) in elements.iter().enumerate().skip(1) {
+                    let kc = self.konst(Const::I32(k as i32));
+                    let cond = self.bin(B::IEq, index, kc);
+                    r = self.select(cond, e[j], r);
+                }
+                result.push(r);
+            }
         }
         Ok(result)
     }

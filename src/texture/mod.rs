@@ -530,20 +530,12 @@ pub struct Texturing {
 }
 
 impl PartialEq for Texturing {
-    /// Two draws texture alike only if they share the very same images.
+    /// Two draws texture alike only if they share the very same images, read alike.
     fn eq(&self, other: &Self) -> bool {
         self.fb_height == other.fb_height
             && self.stages.len() == other.stages.len()
             && self.stages.iter().zip(&other.stages).all(|(a, b)| {
-                a.unit == b.unit
-                    && a.slot == b.slot
-                    && a.env == b.env
-                    && a.sampler.faces.len() == b.sampler.faces.len()
-                    && a.sampler
-                        .faces
-                        .iter()
-                        .zip(&b.sampler.faces)
-                        .all(|(x, y)| x.len() == y.len() && x.iter().zip(y).all(|(p, q)| std::sync::Arc::ptr_eq(p, q)))
+                a.unit == b.unit && a.slot == b.slot && a.env == b.env && a.sampler.same_lookup(&b.sampler)
             })
     }
 }

@@ -336,6 +336,31 @@ pub fn cube_face(s: f32, t: f32, r: f32) -> (usize, f32, f32, f32) {
 }
 
 impl Sampler {
+    /// Whether two samplers look up alike: the very same images (shared, not compared
+    /// texel by texel) read with the same parameters. Draw states are reused by this test,
+    /// so a parameter it left out would let a draw sample with an earlier draw's wrap modes.
+    pub fn same_lookup(&self, other: &Sampler) -> bool {
+        let bits = |s: &Sampler| {
+            [s.lod_bias, s.shader_bias, s.min_lod, s.max_lod, s.border[0], s.border[1], s.border[2], s.border[3]]
+                .map(f32::to_bits)
+        };
+        self.dim == other.dim
+            && self.wrap == other.wrap
+            && self.mag == other.mag
+            && self.min == other.min
+            && self.mip == other.mip
+            && self.compare == other.compare
+            && self.depth_mode == other.depth_mode
+            && self.base == other.base
+            && bits(self) == bits(other)
+            && self.faces.len() == other.faces.len()
+            && self
+                .faces
+                .iter()
+                .zip(&other.faces)
+                .all(|(x, y)| x.len() == y.len() && x.iter().zip(y).all(|(p, q)| Arc::ptr_eq(p, q)))
+    }
+
     /// The texture color of coordinates `c` (s, t, r already divided by q), given their
     /// derivatives along x and y (`ddx`, `ddy`, in coordinate units per pixel).
     pub fn sample(&self, c: [f32; 3], ddx: [f32; 3], ddy: [f32; 3]) -> [f32; 4] {

@@ -6,7 +6,7 @@
 //! fixed-function fragment program ([`crate::fragment::glsl_shading`]): its inputs, outputs,
 //! uniform words and samplers are wired here once per draw state ([`ShaderWiring`]), and
 //! the varyings are exactly the ones it reads.
-use super::super::shader_objects::{Executable, StageProgram};
+use super::super::shader_objects::{sampler_target, Executable, StageProgram};
 use super::super::Context;
 use crate::fragment::glsl_shading::{GlslShading, ShaderCode, ShaderInput, ShaderOutput};
 use crate::fragment::pipeline::DrawState;
@@ -16,7 +16,6 @@ use crate::fragment::{DepthTest, FragmentState};
 use crate::framebuffer::{ColorFormat, Rect};
 use crate::gl::enums::*;
 use crate::gl::types::GLenum;
-use crate::glsl::lex::Sampler as SamplerKind;
 use crate::setup::accuracy::Accuracy;
 use crate::setup::jobs::triangle::WindowVertex;
 use crate::setup::Scene;
@@ -202,16 +201,6 @@ fn shader_output(name: &str, index: u32) -> ShaderOutput {
             Some(buffer) => ShaderOutput::Color { buffer, channel },
             None => ShaderOutput::Unused,
         },
-    }
-}
-
-/// The texture target index (1D, 2D, 3D, cube map) a sampler type reads.
-fn sampler_target(kind: SamplerKind) -> usize {
-    match kind {
-        SamplerKind::S1D | SamplerKind::S1DShadow => 0,
-        SamplerKind::S2D | SamplerKind::S2DShadow => 1,
-        SamplerKind::S3D => 2,
-        SamplerKind::Cube => 3,
     }
 }
 

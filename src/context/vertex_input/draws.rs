@@ -158,16 +158,20 @@ fn fill<T>(batch: &mut [T], elements: Elements, array: &BoundArray, store: impl 
 }
 
 /// Appends the vertices of `elements` to `batch`: copies of the current attributes, then
-/// each enabled array's values stored over them, one array at a time.
+/// each enabled array's values stored over them, one array at a time. Without a position
+/// array only a GLSL vertex shader draws (`shader`): its attribute 0 is then generic
+/// attribute 0's current value, as in Mesa, which draws whatever arrays are enabled.
 fn assemble(
     arrays: &ClientArrays,
     buffers: &BufferTable,
     current: &CurrentState,
+    shader: bool,
     elements: Elements,
     memory: &dyn ClientMemory,
     batch: &mut Vec<Vertex>,
 ) -> Result<(), NoDraw> {
-    if !arrays.position().enabled {
+    let positions = arrays.position().enabled;
+    if !positions && !shader {
         return Err(NoDraw::Undefined);
     }
     let Some((first, last)) = elements.range() else {
@@ -182,7 +186,8 @@ fn assemble(
     }
     batch.try_reserve(elements.len()).map_err(|_| NoDraw::OutOfMemory)?;
     let start = batch.len();
-    batch.resize(start + elements.len(), current.vertex_at([0.0, 0.0, 0.0, 1.0]));
+    let position = if positions { [0.0, 0.0, 0.0, 1.0] } else { current.generic[0] };
+    batch.resize(start + elements.len(), current.vertex_at(position));
     let vertices = &mut batch[start..];
     for (id, array) in bound.iter().flatten() {
         match *id {
@@ -258,8 +263,12 @@ impl Context {
             || (with_indices && mapped(arrays.element_array_buffer))
     }
 
-    /// The last check of every draw: GL_INVALID_OPERATION when it would read a mapped buffer.
+    /// The last checks of every draw: GL_INVALID_OPERATION when the program in use has
+    /// conflicting samplers or the draw would read a mapped buffer.
     fn check_unmapped(&mut self, with_indices: bool) -> bool {
+        if !self.check_program_samplers() {
+            return false;
+        }
         if self.sources_mapped_buffer(with_indices) {
             self.error(GL_INVALID_OPERATION);
             return false;
@@ -322,6 +331,7 @@ impl Context {
         let mut batch = std::mem::take(&mut self.vertex_input.batch);
         batch.clear();
         let generic = self.array_draw_needs_generic_rows();
+        let shader = self.program_in_use.executable().is_some_and(|e| e.vertex_program.is_some());
         let mut rows = std::mem::take(&mut self.vertex_input.generic_rows);
         rows.clear();
         let mut outcome = Ok(());
@@ -340,14 +350,14 @@ impl Context {
             };
             outcome = match elements {
                 Some(elements) => {
-                    let arrays = &self.vertex_input.arrays;
+                    let (arrays, current) = (&self.vertex_input.arrays, &self.state.current);
                     let start = batch.len();
-                    assemble(arrays, &buffers, &self.state.current, elements, memory, &mut batch).and_then(|()| {
+                    assemble(arrays, &buffers, current, shader, elements, memory, &mut batch).and_then(|()| {
                         if !generic {
                             return Ok(());
                         }
                         let vertices = &mut batch[start..];
-                        assemble_generic(arrays, &buffers, &self.state.current, elements, memory, &mut rows, vertices)
+                        assemble_generic(arrays, &buffers, current, elements, memory, &mut rows, vertices)
                     })
                 }
                 None => Err(NoDraw::Undefined),

@@ -62,11 +62,13 @@ impl Context {
         Some(index)
     }
 
-    /// Every glVertexAttrib form, its components already converted: attribute 0 is a
-    /// glVertex, the others set their current value. Legal between glBegin and glEnd.
+    /// Every glVertexAttrib form, its components already converted: attribute 0 between
+    /// glBegin and glEnd is a glVertex; outside them it sets attribute 0's current value, as
+    /// the others do, which a GLSL vertex shader reads when no array feeds attribute 0
+    /// (Mesa's behaviour; piglit gl-2.0-vertex-const-attr).
     pub fn vertex_attrib(&mut self, index: u32, value: [f32; 4]) {
         match self.generic_index(index) {
-            Some(0) => self.vertex_xyzw(value[0], value[1], value[2], value[3]),
+            Some(0) if self.inside_begin_end => self.vertex_xyzw(value[0], value[1], value[2], value[3]),
             Some(index) => self.set_generic(index, value),
             None => {}
         }

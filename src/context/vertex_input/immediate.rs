@@ -27,6 +27,9 @@ impl Context {
         if !is_primitive_mode(mode) {
             return self.error(GL_INVALID_ENUM);
         }
+        if !self.check_program_samplers() {
+            return;
+        }
         self.vertex_input.begin_mode = mode;
         self.vertex_input.vertices.clear();
         self.forget_generic_rows();
@@ -44,6 +47,7 @@ impl Context {
         self.deliver_open_vertices();
         self.forget_generic_rows();
         self.vertex_input.material_marks.clear();
+        self.begin_materials = None;
         // Mesa updates tracked materials when it flushes the current attributes.
         self.update_color_material();
     }

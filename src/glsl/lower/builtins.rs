@@ -36,7 +36,7 @@
 //!   lookups without `Lod` use level 0 (GLSL: no implicit derivatives there); `shadow*`
 //!   pass the reference (r) as the comparison value.
 
-use super::{Leaf, Lowerer, R, SAMPLER_TAG};
+use super::{Leaf, Lowerer, DYNAMIC_SAMPLER_TAG, R, SAMPLER_TAG};
 use crate::glsl::hir::{Scalar, Type};
 use crate::glsl::lex::Sampler;
 use crate::shader::ir::{self, Axis, BinaryOp as B, Const, Inst, Lod, Reg, Stmt, UnaryOp as U};
@@ -155,9 +155,16 @@ impl Lowerer<'_> {
         self.bin(mn, t, b)
     }
 
-    fn sampler_index(&self, v: &[Reg]) -> R<u8> {
+    /// The samplers a lookup's sampler argument may be: one, or for an array element chosen
+    /// by a non-constant index, the index register and every element's sampler.
+    fn sampler_choice(&self, v: &[Reg]) -> R<(Option<Reg>, Vec<u8>)> {
+        let unit = |r: Reg| -> R<u8> { u8::try_from(r.0 - SAMPLER_TAG).map_err(|_| "too many samplers".to_string()) };
         match v.first() {
-            Some(r) if r.0 >= SAMPLER_TAG => Ok((r.0 - SAMPLER_TAG) as u8),
+            Some(r) if r.0 >= DYNAMIC_SAMPLER_TAG => {
+                let (index, candidates) = &self.dynamic_samplers[(r.0 - DYNAMIC_SAMPLER_TAG) as usize];
+                Ok((Some(*index), candidates.iter().map(|&c| unit(c)).collect::<R<_>>()?))
+            }
+            Some(&r) if r.0 >= SAMPLER_TAG => Ok((None, vec![unit(r)?])),
             _ => Err("a texture lookup without a sampler uniform".into()),
         }
     }
@@ -194,7 +201,12 @@ impl Lowerer<'_> {
             "sqrt" => self.each(&[arg(0)], |l, o| l.un(U::Sqrt, o[0])),
             "inversesqrt" => self.each(&[arg(0)], |l, o| l.un(U::Rsq, o[0])),
             "abs" => self.each(&[arg(0)], |l, o| l.un(if float { U::FAbs } else { U::IAbs }, o[0])),
-            "sign" => self.each(&[arg(0)], |l, o| l.un(U::FSign, o[0])),
+            "sign" if float => self.each(&[arg(0)], |l, o| l.un(U::FSign, o[0])),
+            // The integer sign is x clamped to [-1, 1].
+            "sign" => self.each(&[arg(0)], |l, o| {
+                let (lo, hi) = (l.konst(Const::I32(-1)), l.konst(Const::I32(1)));
+                l.min_max_clamp(o[0], lo, hi, false)
+            }),
             "floor" => self.each(&[arg(0)], |l, o| l.un(U::Floor, o[0])),
             "ceil" => self.each(&[arg(0)], |l, o| l.un(U::Ceil, o[0])),
             "fract" => self.each(&[arg(0)], |l, o| l.un(U::Fract, o[0])),
@@ -396,7 +408,7 @@ impl Lowerer<'_> {
 
     /// `texture*`, `shadow*` (plain, `Proj`, `Lod`, bias).
     fn lookup(&mut self, name: &str, a: &[Vec<Reg>], types: &[Type]) -> R<Vec<Reg>> {
-        let unit = self.sampler_index(&a[0])?;
+        let (index, units) = self.sampler_choice(&a[0])?;
         let Type::Sampler(kind) = types[0] else { return Err("lookup without a sampler".into()) };
         let proj = name.contains("Proj");
         let explicit = name.ends_with("Lod");
@@ -429,17 +441,30 @@ impl Lowerer<'_> {
         } else {
             Lod::Implicit
         };
-        let dst = [0; 4].map(|_| self.reg(ir::Type::F32));
-        self.body.push(Stmt::Inst(Inst::Sample {
-            dst,
-            unit,
-            n: n as u8,
-            coords: [coords[0], coords[1], coords[2], coords[3]],
-            projective: proj,
-            lod,
-            compare,
-        }));
-        let _ = (Leaf::Sampler, Const::F32(0.0));
-        Ok(dst.to_vec())
+        let mut result: Option<[Reg; 4]> = None;
+        // One lookup per candidate sampler, the index choosing among their results per lane
+        // (element 0 where it is out of range).
+        for (k, &unit) in units.iter().enumerate() {
+            let dst = [0; 4].map(|_| self.reg(ir::Type::F32));
+            self.body.push(Stmt::Inst(Inst::Sample {
+                dst,
+                unit,
+                n: n as u8,
+                coords: [coords[0], coords[1], coords[2], coords[3]],
+                projective: proj,
+                lod,
+                compare,
+            }));
+            result = Some(match (result, index) {
+                (Some(previous), Some(index)) => {
+                    let kc = self.konst(Const::I32(k as i32));
+                    let cond = self.bin(B::IEq, index, kc);
+                    [0, 1, 2, 3].map(|c| self.select(cond, dst[c], previous[c]))
+                }
+                _ => dst,
+            });
+        }
+        let _ = Leaf::Sampler;
+        Ok(result.ok_or("a sampler array of no elements")?.to_vec())
     }
 }
