@@ -8,7 +8,8 @@
 //!
 //! Under `TESSERA_DEBUG=programs` every program generated on a miss is printed on stderr in
 //! the text form of [`crate::shader::dump`], after a line naming its kind and the cache's
-//! counts.
+//! counts; every GLSL program's stages are printed the same way when it is linked
+//! ([`print_linked`]).
 use super::debug;
 use crate::fragment::program::{CompiledFragment, FragmentKey};
 use crate::shader::cache::{CacheStats, ProgramCache};
@@ -58,6 +59,23 @@ fn print_generated(kind: &str, before: CacheStats, text: impl FnOnce() -> String
         );
         eprintln!("{}", text());
     }
+}
+
+/// Under `TESSERA_DEBUG=programs`, prints a GLSL program's `stage` as linked (once per
+/// successful link: the IR the draws run, before the executor's own lowering).
+pub fn print_linked(stage: crate::glsl::Stage, program: &crate::shader::ir::Program) {
+    if debug::enabled("programs") {
+        eprintln!("{}", linked_text(stage, program));
+    }
+}
+
+/// What [`print_linked`] prints: a line naming the stage, then the program's text form.
+fn linked_text(stage: crate::glsl::Stage, program: &crate::shader::ir::Program) -> String {
+    let kind = match stage {
+        crate::glsl::Stage::Vertex => "vertex",
+        crate::glsl::Stage::Fragment => "fragment",
+    };
+    format!("tessera programs: GLSL {kind} program linked\n{}", dump(program))
 }
 
 #[cfg(test)]

@@ -138,7 +138,11 @@ impl Executable {
             }
             let lowered = lower(&units).map_err(|e| format!("error: {e}\n"))?;
             validate(&lowered.program).map_err(|e| format!("error: internal: invalid program: {e:?}\n"))?;
+            super::programs::print_linked(stage, &lowered.program);
             let compiled = Compiled::new(&lowered.program);
+            if std::env::var("EXEC_TMP_OPS").is_ok() {
+                eprintln!("{:#?}", compiled.code()); // TEMP
+            }
             let uniform_sources = lowered
                 .uniforms
                 .iter()
