@@ -84,6 +84,21 @@ mod tests {
     use crate::fragment::program::FogKey;
 
     #[test]
+    fn a_linked_glsl_stage_prints_its_kind_then_its_text() {
+        use crate::shader::ir::{Const, Inst, Program, Stage, Stmt, Type};
+        let mut program = Program::new(Stage::Fragment);
+        let r = program.register(Type::F32);
+        let slot = program.output(Type::F32);
+        program.body = vec![
+            Stmt::Inst(Inst::Const { dst: r, value: Const::F32(0.25) }),
+            Stmt::Inst(Inst::Output { slot, src: r }),
+        ];
+        let text = linked_text(crate::glsl::Stage::Fragment, &program);
+        assert!(text.starts_with("tessera programs: GLSL fragment program linked\nfragment program: 1 registers"), "{text}");
+        assert!(text.contains("output 0 = r0"), "{text}");
+    }
+
+    #[test]
     fn a_fragment_key_seen_before_is_not_generated_again() {
         let mut caches = ProgramCaches::default();
         let key = FragmentKey { stages: Vec::new(), color_sum: Some(true), fog: Some(FogKey::Linear) };

@@ -140,9 +140,6 @@ impl Executable {
             validate(&lowered.program).map_err(|e| format!("error: internal: invalid program: {e:?}\n"))?;
             super::programs::print_linked(stage, &lowered.program);
             let compiled = Compiled::new(&lowered.program);
-            if std::env::var("EXEC_TMP_OPS").is_ok() {
-                eprintln!("{:#?}", compiled.code()); // TEMP
-            }
             let uniform_sources = lowered
                 .uniforms
                 .iter()

@@ -374,6 +374,24 @@ mod tests {
     use super::errors::*;
     use super::*;
 
+    /// The lane forms against the scalar functions over every 1021st bit pattern and every
+    /// 2⁻¹⁶ step of [−130, 130] (where exp2's floor, clamp and 2^⌊x⌋ change): the same bits.
+    #[test]
+    fn lane_forms_give_the_scalar_bits() {
+        let sparse = (0..=u32::MAX / 1021).map(|k| k * 1021);
+        let dense = (-130 * 65536..=130 * 65536).map(|k| (k as f32 / 65536.0).to_bits());
+        let edges = [f32::MIN_POSITIVE, -126.99999, -127.0, 128.0, -0.0, 0.0, f32::INFINITY, f32::NEG_INFINITY, f32::NAN];
+        let all: Vec<u32> = sparse.chain(dense).chain(edges.map(f32::to_bits)).collect();
+        for chunk in all.chunks(16) {
+            let mut x = [0u32; 16];
+            x[..chunk.len()].copy_from_slice(chunk);
+            let want_exp2 = x.map(|b| exp2(f32::from_bits(b)).to_bits());
+            let want_log2 = x.map(|b| log2(f32::from_bits(b)).to_bits());
+            assert_eq!(exp2_lanes(&x), want_exp2, "exp2 of {:?}", x.map(f32::from_bits));
+            assert_eq!(log2_lanes(&x), want_log2, "log2 of {:?}", x.map(f32::from_bits));
+        }
+    }
+
     /// llvmpipe's approximations: their measured error (the bounds a little above it), the
     /// edges, and the points where they are exact.
     #[test]

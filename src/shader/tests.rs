@@ -1562,6 +1562,13 @@ fn a_glsl_for_loop_of_two_with_a_pure_if_becomes_straight_code_with_the_same_bit
     let flat = super::flatten::flatten(&program);
     validate(&flat).unwrap();
     assert!(flat.body.iter().all(|s| matches!(s, Stmt::Inst(_))), "not straight:\n{}", super::dump::dump(&flat));
+    // Each register written once: the iterations' copies write fresh ones.
+    let mut writes = vec![0; flat.registers.len()];
+    for s in &flat.body {
+        let Stmt::Inst(i) = s else { unreachable!() };
+        i.writes().into_iter().for_each(|r| writes[r.0 as usize] += 1);
+    }
+    assert!(writes.iter().all(|&w| w <= 1), "registers written twice:\n{}", super::dump::dump(&flat));
     let mut rng = Rng(0x0123_4567_89ab_cdef);
     let mut executor = Executor::new();
     let mut registers = Registers::new();
