@@ -106,10 +106,16 @@ fn single_writes(program: &mut Program) {
         return;
     }
     let n = program.registers.len();
+    // Per original register, its writes still to come, and those that keep its name
+    // (texture lookups, derivatives: not renamed).
     let mut remaining = vec![0u32; n];
+    let mut in_place = vec![0u32; n];
     for s in &program.body {
         let Stmt::Inst(inst) = s else { unreachable!("straight code") };
         inst.writes().into_iter().for_each(|r| remaining[r.0 as usize] += 1);
+        if inst.clone().pure_dst_mut().is_none() {
+            inst.writes().into_iter().for_each(|r| in_place[r.0 as usize] += 1);
+        }
     }
     let total: usize = remaining.iter().map(|&w| w as usize).sum();
     if n + total > MAX_RENAMED_REGISTERS {
@@ -119,6 +125,7 @@ fn single_writes(program: &mut Program) {
     let mut name: Vec<Reg> = (0..n as u32).map(Reg).collect();
     let mut written = vec![false; n];
     let mut copies: Vec<Option<Reg>> = vec![None; n];
+    let mut computed: HashMap<String, Reg> = HashMap::new();
     let body = std::mem::take(&mut program.body);
     for s in body {
         let Stmt::Inst(mut inst) = s else { unreachable!("straight code") };
@@ -140,21 +147,60 @@ fn single_writes(program: &mut Program) {
             for r in inst.writes() {
                 let original = r.0 as usize;
                 remaining[original] -= 1;
+                in_place[original] -= 1;
                 written[original] = true;
                 name[original] = r;
                 copies[original] = None;
             }
         }
-        // A move's destination stands for its source while nothing writes the source again
-        // (fresh registers are written once; an original one when no write of it is left).
+        // A move's destination stands for its source while nothing writes the source again:
+        // fresh registers are written once; an original one keeps its value once written
+        // (its later pure writes go to fresh ones) unless a lookup writes it in place.
+        let stable = |r: Reg| {
+            let r = r.0 as usize;
+            r >= n || (in_place[r] == 0 && (written[r] || remaining[r] == 0))
+        };
         if let Inst::Mov { dst, src } = inst {
-            let stable = src.0 as usize >= n || remaining[src.0 as usize] == 0;
-            if stable && program.registers[dst.0 as usize] == program.registers[src.0 as usize] {
+            if stable(src) && program.registers[dst.0 as usize] == program.registers[src.0 as usize] {
                 copies[dst.0 as usize] = Some(src);
+            }
+        }
+        // An arithmetic instruction on stable registers computed before by the same
+        // instruction on the same registers: its destination stands for the earlier one
+        // (`p.xyz - position` for a light's direction and again for its distance).
+        if let (Some(key), Some(dst)) = (arithmetic_key(&inst), inst.dst()) {
+            let mut operands_stable = true;
+            visit_reads(&mut inst.clone(), &mut |r| operands_stable &= stable(*r));
+            if operands_stable && stable(dst) {
+                match computed.get(&key) {
+                    Some(&earlier) if program.registers[earlier.0 as usize] == program.registers[dst.0 as usize] => {
+                        copies[dst.0 as usize] = Some(earlier)
+                    }
+                    Some(_) => {}
+                    None => {
+                        computed.insert(key, dst);
+                    }
+                }
             }
         }
         program.body.push(Stmt::Inst(inst));
     }
+}
+
+/// What an arithmetic instruction computes, its destination left out (its text: operations
+/// and registers alone, exact); `None` for the others (constants are [`super::lower`]'s to
+/// fold, and their text would not tell NaN payloads apart).
+fn arithmetic_key(inst: &Inst) -> Option<String> {
+    let mut inst = inst.clone();
+    match &mut inst {
+        Inst::Unary { dst, .. }
+        | Inst::Binary { dst, .. }
+        | Inst::Mad { dst, .. }
+        | Inst::Dot { dst, .. }
+        | Inst::Select { dst, .. } => *dst = Reg(u32::MAX),
+        _ => return None,
+    }
+    Some(format!("{inst:?}"))
 }
 
 /// Shows every register `inst` reads to `visit`, which may rename it.
