@@ -94,7 +94,10 @@ mod tests {
             Stmt::Inst(Inst::Output { slot, src: r }),
         ];
         let text = linked_text(crate::glsl::Stage::Fragment, &program);
-        assert!(text.starts_with("tessera programs: GLSL fragment program linked\nfragment program: 1 registers"), "{text}");
+        assert!(
+            text.starts_with("tessera programs: GLSL fragment program linked\nfragment program: 1 registers"),
+            "{text}"
+        );
         assert!(text.contains("output 0 = r0"), "{text}");
     }
 

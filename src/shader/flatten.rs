@@ -619,7 +619,9 @@ fn convert_block(program: &mut Program, stmts: Vec<Stmt>, uniform: Option<&[bool
                 let otherwise = convert_block(program, otherwise, None);
                 let uniform_condition = uniform.is_some_and(|u| u.get(cond.0 as usize) == Some(&true));
                 if !uniform_condition
-                    && pure_arm(&then) && pure_arm(&otherwise) && then.len() + otherwise.len() <= MAX_CONVERTED_INSTRUCTIONS
+                    && pure_arm(&then)
+                    && pure_arm(&otherwise)
+                    && then.len() + otherwise.len() <= MAX_CONVERTED_INSTRUCTIONS
                 {
                     let then_names = rename_arm(program, then, &mut out);
                     let otherwise_names = rename_arm(program, otherwise, &mut out);

@@ -380,7 +380,8 @@ mod tests {
     fn lane_forms_give_the_scalar_bits() {
         let sparse = (0..=u32::MAX / 1021).map(|k| k * 1021);
         let dense = (-130 * 65536..=130 * 65536).map(|k| (k as f32 / 65536.0).to_bits());
-        let edges = [f32::MIN_POSITIVE, -126.99999, -127.0, 128.0, -0.0, 0.0, f32::INFINITY, f32::NEG_INFINITY, f32::NAN];
+        let edges =
+            [f32::MIN_POSITIVE, -126.99999, -127.0, 128.0, -0.0, 0.0, f32::INFINITY, f32::NEG_INFINITY, f32::NAN];
         let all: Vec<u32> = sparse.chain(dense).chain(edges.map(f32::to_bits)).collect();
         for chunk in all.chunks(16) {
             let mut x = [0u32; 16];

@@ -1718,7 +1718,11 @@ fn fragment_programs_keep_ifs_on_uniform_conditions_and_vertex_programs_convert_
         }
     }
     assert!(
-        compiled.code().body.iter().any(|n| matches!(n, super::lower::Node::If { cond: super::lower::Cond::Uniform(_), .. })),
+        compiled
+            .code()
+            .body
+            .iter()
+            .any(|n| matches!(n, super::lower::Node::If { cond: super::lower::Cond::Uniform(_), .. })),
         "{:?}",
         compiled.code().body
     );
