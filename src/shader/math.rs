@@ -177,9 +177,11 @@ const ROUNDER: f32 = 12_582_912.0;
 /// The common case of [`fused_multiply_add`] in a lane loop: the rounded f64 sum, and
 /// `slow` set when the lane needs the rare case (the scalar function then decides).
 #[inline(always)]
+#[allow(clippy::neg_cmp_op_on_partial_ord)]
 fn fma_common(a: f32, b: f32, c: f32, slow: &mut bool) -> f32 {
     let s = a as f64 * b as f64 + c as f64;
-    // A midpoint of the f32 grid, or under the normal range, or NaN (which fails `>=`).
+    // A midpoint of the f32 grid, or under the normal range, or NaN (which fails `>=`: one
+    // compare for both).
     *slow |= (s.to_bits() & 0x1fff_ffff == 0x1000_0000) | !(s.abs() >= f32::MIN_POSITIVE as f64);
     s as f32
 }
