@@ -1,9 +1,11 @@
 //! Control flow made straight before compiling: [`flatten`] unrolls loops whose trip count
-//! is known when the program is compiled and turns `if`s whose arms are pure arithmetic into
-//! selects, so that typical GLSL fragment programs (a `for` over two lights, a ternary, an
-//! `if (diffuse > 0.0)` around a `pow`) reach [`super::lower`] as one straight run of
-//! operations: [`super::fast`] then runs them without its control tree, masks per run or
-//! recursion, which cost phong 5× the time of its straight-line arithmetic.
+//! is known when the program is compiled and turns `if`s whose arms are pure arithmetic
+//! into selects (in fragment programs, not those on uniform conditions: a real branch there
+//! runs one arm), then writes straight code's registers once each (`single_writes`), so
+//! that typical GLSL fragment programs (a `for` over two lights, a ternary, an
+//! `if (diffuse > 0.0)` around a `pow`) reach [`super::lower`] as one straight run of operations:
+//! [`super::fast`] then runs them without its control tree, masks per run or recursion,
+//! which cost phong 5× the time of its straight-line arithmetic.
 //!
 //! **Why at the IR, before lowering.** Both passes are rewrites of structured statements
 //! whose result is again a valid [`Program`]: the reference [`super::exec`] runs the
@@ -609,7 +611,7 @@ fn uniform_registers(registers: usize, body: &[Stmt]) -> Vec<bool> {
 }
 
 /// Converts the pure `if`s of `stmts` into selects; `uniform` (at the top level: the
-/// [`uniform_registers`], empty for none) keeps those on uniform conditions `if`s.
+/// [`uniform_registers`], empty for none) keeps those on uniform conditions as `if`s.
 fn convert_block(program: &mut Program, stmts: Vec<Stmt>, uniform: Option<&[bool]>) -> Vec<Stmt> {
     let mut out = Vec::with_capacity(stmts.len());
     for s in stmts {
