@@ -539,6 +539,41 @@ fn value_lines_keep_order_and_drop_free_keys() {
 }
 
 #[test]
+fn debug_programs_prints_each_linked_glsl_program() {
+    let Some(setup) = setup::require("TESSERA_DEBUG=programs") else {
+        return;
+    };
+    let binary = setup.out.join("programs/debug_programs");
+    std::fs::create_dir_all(binary.parent().unwrap()).unwrap();
+    let mut command = Command::new(CC);
+    command
+        .args(["-std=c11", "-Wall", "-Werror"])
+        .arg(setup.root.join("tests/programs/debug_programs.c"))
+        .args(["-lOSMesa", "-o"])
+        .arg(&binary);
+    let (ok, log) = process::output_of(&mut command);
+    assert!(ok, "debug_programs.c does not build:\n{log}");
+    let dir = setup.out.join("run/debug_programs");
+    std::fs::create_dir_all(&dir).unwrap();
+    let mut command = Command::new(&binary);
+    Implementation::Tessera.configure(&mut command, &setup);
+    command.env("TESSERA_DEBUG", "programs");
+    let finished = process::run_with_timeout(&mut command, &dir, TIMEOUT).unwrap();
+    assert_eq!(finished.exit, Exit::Code(0), "debug_programs failed:\n{}", finished.stderr);
+    let stderr = &finished.stderr;
+    // Each stage once, announced, then its text form (its header and its output statement).
+    for (kind, output) in [("vertex", "output 0 = "), ("fragment", "output 0 = ")] {
+        let announce = format!("tessera programs: GLSL {kind} program linked\n{kind} program: ");
+        assert_eq!(stderr.matches(&announce).count(), 1, "{kind} program not printed once:\n{stderr}");
+        let text = &stderr[stderr.find(&announce).unwrap()..];
+        assert!(text.contains(output), "{kind} program without its outputs:\n{stderr}");
+    }
+    // The fragment program's uniform and its constant 0.25 (bits shown) are there.
+    let fragment = &stderr[stderr.find("GLSL fragment program linked").unwrap()..];
+    assert!(fragment.contains("uniform 0") && fragment.contains("0.25 (0x3e800000)"), "stderr:\n{stderr}");
+}
+
+#[test]
 fn debug_pipeline_prints_the_stages_each_draw_compiled() {
     let Some(setup) = setup::require("TESSERA_DEBUG=pipeline") else {
         return;

@@ -5,7 +5,7 @@
 //!   order, and whether the state was compiled anew or found in the scene's cache.
 //! - `programs`: every fixed-function vertex or fragment program the draws generate (on a
 //!   miss of the share group's cache, `super::programs`) is printed on stderr in its text
-//!   form.
+//!   form, and so is each stage of every GLSL program when it is linked.
 //! - `config`: the first context created prints the renderer's configuration, one line per
 //!   setting: `tessera config: simd avx2 (detected; TESSERA_SIMD unset)` (the SIMD level of
 //!   the hot loops, `crate::simd`), `... threads 2`, `... accuracy conformant`.

@@ -8,7 +8,8 @@
 //!
 //! Under `TESSERA_DEBUG=programs` every program generated on a miss is printed on stderr in
 //! the text form of [`crate::shader::dump`], after a line naming its kind and the cache's
-//! counts.
+//! counts; every GLSL program's stages are printed the same way when it is linked
+//! ([`print_linked`]).
 use super::debug;
 use crate::fragment::program::{CompiledFragment, FragmentKey};
 use crate::shader::cache::{CacheStats, ProgramCache};
@@ -60,10 +61,45 @@ fn print_generated(kind: &str, before: CacheStats, text: impl FnOnce() -> String
     }
 }
 
+/// Under `TESSERA_DEBUG=programs`, prints a GLSL program's `stage` as linked (once per
+/// successful link: the IR the draws run, before the executor's own lowering).
+pub fn print_linked(stage: crate::glsl::Stage, program: &crate::shader::ir::Program) {
+    if debug::enabled("programs") {
+        eprintln!("{}", linked_text(stage, program));
+    }
+}
+
+/// What [`print_linked`] prints: a line naming the stage, then the program's text form.
+fn linked_text(stage: crate::glsl::Stage, program: &crate::shader::ir::Program) -> String {
+    let kind = match stage {
+        crate::glsl::Stage::Vertex => "vertex",
+        crate::glsl::Stage::Fragment => "fragment",
+    };
+    format!("tessera programs: GLSL {kind} program linked\n{}", dump(program))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::fragment::program::FogKey;
+
+    #[test]
+    fn a_linked_glsl_stage_prints_its_kind_then_its_text() {
+        use crate::shader::ir::{Const, Inst, Program, Stage, Stmt, Type};
+        let mut program = Program::new(Stage::Fragment);
+        let r = program.register(Type::F32);
+        let slot = program.output(Type::F32);
+        program.body = vec![
+            Stmt::Inst(Inst::Const { dst: r, value: Const::F32(0.25) }),
+            Stmt::Inst(Inst::Output { slot, src: r }),
+        ];
+        let text = linked_text(crate::glsl::Stage::Fragment, &program);
+        assert!(
+            text.starts_with("tessera programs: GLSL fragment program linked\nfragment program: 1 registers"),
+            "{text}"
+        );
+        assert!(text.contains("output 0 = r0"), "{text}");
+    }
 
     #[test]
     fn a_fragment_key_seen_before_is_not_generated_again() {

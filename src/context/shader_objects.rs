@@ -142,6 +142,7 @@ impl Executable {
             }
             let lowered = lower(&units).map_err(|e| format!("error: {e}\n"))?;
             validate(&lowered.program).map_err(|e| format!("error: internal: invalid program: {e:?}\n"))?;
+            super::programs::print_linked(stage, &lowered.program);
             let compiled = Compiled::new(&lowered.program);
             let uniform_sources = lowered
                 .uniforms

@@ -1,9 +1,11 @@
 //! Control flow made straight before compiling: [`flatten`] unrolls loops whose trip count
-//! is known when the program is compiled and turns `if`s whose arms are pure arithmetic into
-//! selects, so that typical GLSL fragment programs (a `for` over two lights, a ternary, an
-//! `if (diffuse > 0.0)` around a `pow`) reach [`super::lower`] as one straight run of
-//! operations: [`super::fast`] then runs them without its control tree, masks per run or
-//! recursion, which cost phong 5× the time of its straight-line arithmetic.
+//! is known when the program is compiled and turns `if`s whose arms are pure arithmetic
+//! into selects (in fragment programs, not those on uniform conditions: a real branch there
+//! runs one arm), then writes straight code's registers once each (`single_writes`), so
+//! that typical GLSL fragment programs (a `for` over two lights, a ternary, an
+//! `if (diffuse > 0.0)` around a `pow`) reach [`super::lower`] as one straight run of operations:
+//! [`super::fast`] then runs them without its control tree, masks per run or recursion,
+//! which cost phong 5× the time of its straight-line arithmetic.
 //!
 //! **Why at the IR, before lowering.** Both passes are rewrites of structured statements
 //! whose result is again a valid [`Program`]: the reference [`super::exec`] runs the
@@ -36,7 +38,7 @@
 //!   branches (a rare path costs its full price in every lane once converted).
 use std::collections::HashMap;
 
-use super::ir::{Const, Inst, Program, Reg, Stmt, Type};
+use super::ir::{Const, Inst, Lod, Program, Reg, Stage, Stmt, Type};
 use super::lower::{binary_lane, dot_lane, mad_lane, unary_lane};
 
 /// The most iterations of one loop that are unrolled.
@@ -66,13 +68,185 @@ pub const MAX_CONVERTED_INSTRUCTIONS: usize = 256;
 pub fn flatten(program: &Program) -> Program {
     let mut out = program.clone();
     if !has_control_flow(&program.body) {
+        single_writes(&mut out);
         return out;
     }
     let body = std::mem::take(&mut out.body);
     let body =
         unroll_block(&mut Unroller { types: &program.registers, work: MAX_UNROLLING_WORK }, body, &mut Env::new());
-    out.body = convert_block(&mut out, body);
+    // Fragment programs keep their `if`s on uniform conditions: the fragment pipeline runs
+    // [`super::fast`]'s control tree, where such an `if` is one test per block and runs only
+    // the arm taken (phong's `p.w == 0.0 ? … : …` per light: converted, every block paid
+    // for a positional light's arm at a directional light too). Vertex programs convert
+    // them: their bound form ([`super::fast::BoundRun`]) needs one straight run.
+    let uniform = match program.stage {
+        Stage::Fragment => uniform_registers(out.registers.len(), &body),
+        Stage::Vertex => Vec::new(),
+    };
+    out.body = convert_block(&mut out, body, Some(&uniform));
+    single_writes(&mut out);
     out
+}
+
+// ---- Single writes -------------------------------------------------------------------
+
+/// The most registers a program may reach by [`single_writes`]' renaming (the executor
+/// numbers its words in 16 bits).
+const MAX_RENAMED_REGISTERS: usize = 60_000;
+
+/// Straight code (instructions alone, as unrolling and if-conversion leave typical
+/// programs) with each pure instruction's register written once: a write of a register
+/// written before goes to a fresh register, which the reads after it read, and a read of
+/// the destination of a move reads its source instead, when nothing writes that source
+/// later. Unrolled iterations reassign the same registers (a light's position, its
+/// colours, the loop's results), which kept them out of [`super::lower`]'s uniform
+/// prologue and constant folding, and behind chains of moves (phong: 260 of its 506
+/// operations were moves of uniform values per block). Every read sees the value it saw
+/// before, so the outputs, lookups and bits are the same.
+fn single_writes(program: &mut Program) {
+    if has_control_flow(&program.body) {
+        return;
+    }
+    let n = program.registers.len();
+    // Per original register, its writes still to come, and those that keep its name
+    // (texture lookups, derivatives: not renamed).
+    let mut remaining = vec![0u32; n];
+    let mut in_place = vec![0u32; n];
+    for s in &program.body {
+        let Stmt::Inst(inst) = s else { unreachable!("straight code") };
+        inst.writes().into_iter().for_each(|r| remaining[r.0 as usize] += 1);
+        if inst.clone().pure_dst_mut().is_none() {
+            inst.writes().into_iter().for_each(|r| in_place[r.0 as usize] += 1);
+        }
+    }
+    let total: usize = remaining.iter().map(|&w| w as usize).sum();
+    if n + total > MAX_RENAMED_REGISTERS {
+        return;
+    }
+    // Per original register, its current name; per name, the source it copies.
+    let mut name: Vec<Reg> = (0..n as u32).map(Reg).collect();
+    let mut written = vec![false; n];
+    let mut copies: Vec<Option<Reg>> = vec![None; n];
+    let mut computed: HashMap<String, Reg> = HashMap::new();
+    let body = std::mem::take(&mut program.body);
+    for s in body {
+        let Stmt::Inst(mut inst) = s else { unreachable!("straight code") };
+        visit_reads(&mut inst, &mut |r| {
+            let current = name[r.0 as usize];
+            *r = copies[current.0 as usize].unwrap_or(current);
+        });
+        if let Some(d) = inst.pure_dst_mut() {
+            let original = d.0 as usize;
+            remaining[original] -= 1;
+            if written[original] {
+                let fresh = program.register(program.registers[original]);
+                copies.push(None);
+                *d = fresh;
+            }
+            written[original] = true;
+            name[original] = *d;
+        } else {
+            for r in inst.writes() {
+                let original = r.0 as usize;
+                remaining[original] -= 1;
+                in_place[original] -= 1;
+                written[original] = true;
+                name[original] = r;
+                copies[original] = None;
+            }
+        }
+        // A move's destination stands for its source while nothing writes the source again:
+        // fresh registers are written once; an original one keeps its value once written
+        // (its later pure writes go to fresh ones) unless a lookup writes it in place.
+        let stable = |r: Reg| {
+            let r = r.0 as usize;
+            r >= n || (in_place[r] == 0 && (written[r] || remaining[r] == 0))
+        };
+        if let Inst::Mov { dst, src } = inst {
+            if stable(src) && program.registers[dst.0 as usize] == program.registers[src.0 as usize] {
+                copies[dst.0 as usize] = Some(src);
+            }
+        }
+        // An arithmetic instruction on stable registers computed before by the same
+        // instruction on the same registers: its destination stands for the earlier one
+        // (`p.xyz - position` for a light's direction and again for its distance).
+        if let (Some(key), Some(dst)) = (arithmetic_key(&inst), inst.dst()) {
+            let mut operands_stable = true;
+            visit_reads(&mut inst.clone(), &mut |r| operands_stable &= stable(*r));
+            if operands_stable && stable(dst) {
+                match computed.get(&key) {
+                    Some(&earlier) if program.registers[earlier.0 as usize] == program.registers[dst.0 as usize] => {
+                        copies[dst.0 as usize] = Some(earlier)
+                    }
+                    Some(_) => {}
+                    None => {
+                        computed.insert(key, dst);
+                    }
+                }
+            }
+        }
+        program.body.push(Stmt::Inst(inst));
+    }
+}
+
+/// What an arithmetic instruction computes, its destination left out (its text: operations
+/// and registers alone, exact); `None` for the others (constants are [`super::lower`]'s to
+/// fold, and their text would not tell NaN payloads apart).
+fn arithmetic_key(inst: &Inst) -> Option<String> {
+    let mut inst = inst.clone();
+    match &mut inst {
+        Inst::Unary { dst, .. }
+        | Inst::Binary { dst, .. }
+        | Inst::Mad { dst, .. }
+        | Inst::Dot { dst, .. }
+        | Inst::Select { dst, .. } => *dst = Reg(u32::MAX),
+        _ => return None,
+    }
+    Some(format!("{inst:?}"))
+}
+
+/// Shows every register `inst` reads to `visit`, which may rename it.
+fn visit_reads(inst: &mut Inst, visit: &mut dyn FnMut(&mut Reg)) {
+    match inst {
+        Inst::Const { .. } | Inst::Input { .. } | Inst::Uniform { .. } => {}
+        Inst::Mov { src: a, .. } | Inst::Unary { a, .. } | Inst::Derivative { a, .. } | Inst::Output { src: a, .. } => {
+            visit(a)
+        }
+        Inst::Binary { a, b, .. } => {
+            visit(a);
+            visit(b);
+        }
+        Inst::Mad { a, b, c, .. } => {
+            visit(a);
+            visit(b);
+            visit(c);
+        }
+        Inst::Dot { n, a, b, .. } => {
+            for k in 0..*n as usize {
+                visit(&mut a[k]);
+                visit(&mut b[k]);
+            }
+        }
+        Inst::Select { cond, a, b, .. } => {
+            visit(cond);
+            visit(a);
+            visit(b);
+        }
+        Inst::Sample { coords, lod, compare, .. } => {
+            coords.iter_mut().for_each(&mut *visit);
+            if let Lod::Bias(r) | Lod::Explicit(r) = lod {
+                visit(r);
+            }
+            if let Some(r) = compare {
+                visit(r);
+            }
+        }
+        Inst::Fetch { coords, lod, .. } => {
+            coords.iter_mut().for_each(&mut *visit);
+            visit(lod);
+        }
+        Inst::Size { lod, .. } => visit(lod),
+    }
 }
 
 fn has_control_flow(stmts: &[Stmt]) -> bool {
@@ -326,9 +500,10 @@ fn pure_arm(stmts: &[Stmt]) -> bool {
     stmts.iter().all(|s| matches!(s, Stmt::Inst(i) if is_pure(i)))
 }
 
-/// `inst` (pure) with its operands renamed by `names`.
-fn rename_reads(inst: &mut Inst, names: &HashMap<Reg, Reg>) {
-    let name = |r: &mut Reg| {
+/// `inst` (pure) with its operands renamed by `names`, each operand shown to `seen` first.
+fn rename_reads(inst: &mut Inst, names: &HashMap<Reg, Reg>, seen: &mut dyn FnMut(Reg)) {
+    let mut name = |r: &mut Reg| {
+        seen(*r);
         if let Some(&n) = names.get(r) {
             *r = n;
         }
@@ -371,7 +546,7 @@ fn rename_arm(program: &mut Program, arm: Vec<Stmt>, out: &mut Vec<Stmt>) -> Vec
     let mut order = Vec::new();
     for s in arm {
         let Stmt::Inst(mut inst) = s else { unreachable!("a pure arm") };
-        rename_reads(&mut inst, &names);
+        rename_reads(&mut inst, &names, &mut |_| {});
         let dst = inst.dst().expect("a pure instruction writes a register");
         let fresh = program.register(program.registers[dst.0 as usize]);
         set_dst(&mut inst, fresh);
@@ -383,14 +558,72 @@ fn rename_arm(program: &mut Program, arm: Vec<Stmt>, out: &mut Vec<Stmt>) -> Vec
     order.into_iter().map(|r| (r, names[&r])).collect()
 }
 
-fn convert_block(program: &mut Program, stmts: Vec<Stmt>) -> Vec<Stmt> {
+/// Per register, whether its value is the same in every running lane wherever it is read:
+/// every write of it is a pure instruction at the top level (run by every lane still
+/// running; lanes that left by `discard` or `return` are gone for good) whose operands are
+/// such registers (a constant or a uniform has none). A register nothing writes reads zero.
+fn uniform_registers(registers: usize, body: &[Stmt]) -> Vec<bool> {
+    fn nested_writes(stmts: &[Stmt], uniform: &mut [bool]) {
+        for s in stmts {
+            match s {
+                Stmt::Inst(inst) => inst.writes().into_iter().for_each(|r| uniform[r.0 as usize] = false),
+                Stmt::If { then, otherwise, .. } => {
+                    nested_writes(then, uniform);
+                    nested_writes(otherwise, uniform);
+                }
+                Stmt::Loop { body } => nested_writes(body, uniform),
+                _ => {}
+            }
+        }
+    }
+    let mut uniform = vec![true; registers];
+    for s in body {
+        match s {
+            Stmt::Inst(inst) if !is_pure(inst) || matches!(inst, Inst::Input { .. }) => {
+                inst.writes().into_iter().for_each(|r| uniform[r.0 as usize] = false)
+            }
+            Stmt::If { then, otherwise, .. } => {
+                nested_writes(then, &mut uniform);
+                nested_writes(otherwise, &mut uniform);
+            }
+            Stmt::Loop { body } => nested_writes(body, &mut uniform),
+            _ => {}
+        }
+    }
+    // A write of a value computed from a register that is not uniform: to a fixed point.
+    let mut changed = true;
+    while changed {
+        changed = false;
+        for s in body {
+            let Stmt::Inst(inst) = s else { continue };
+            let Some(d) = inst.dst() else { continue };
+            if uniform[d.0 as usize] && is_pure(inst) {
+                let mut reads_varying = false;
+                rename_reads(&mut inst.clone(), &HashMap::new(), &mut |r| reads_varying |= !uniform[r.0 as usize]);
+                if reads_varying {
+                    uniform[d.0 as usize] = false;
+                    changed = true;
+                }
+            }
+        }
+    }
+    uniform
+}
+
+/// Converts the pure `if`s of `stmts` into selects; `uniform` (at the top level: the
+/// [`uniform_registers`], empty for none) keeps those on uniform conditions as `if`s.
+fn convert_block(program: &mut Program, stmts: Vec<Stmt>, uniform: Option<&[bool]>) -> Vec<Stmt> {
     let mut out = Vec::with_capacity(stmts.len());
     for s in stmts {
         match s {
             Stmt::If { cond, then, otherwise } => {
-                let then = convert_block(program, then);
-                let otherwise = convert_block(program, otherwise);
-                if pure_arm(&then) && pure_arm(&otherwise) && then.len() + otherwise.len() <= MAX_CONVERTED_INSTRUCTIONS
+                let then = convert_block(program, then, None);
+                let otherwise = convert_block(program, otherwise, None);
+                let uniform_condition = uniform.is_some_and(|u| u.get(cond.0 as usize) == Some(&true));
+                if !uniform_condition
+                    && pure_arm(&then)
+                    && pure_arm(&otherwise)
+                    && then.len() + otherwise.len() <= MAX_CONVERTED_INSTRUCTIONS
                 {
                     let then_names = rename_arm(program, then, &mut out);
                     let otherwise_names = rename_arm(program, otherwise, &mut out);
@@ -411,7 +644,7 @@ fn convert_block(program: &mut Program, stmts: Vec<Stmt>) -> Vec<Stmt> {
                     out.push(Stmt::If { cond, then, otherwise });
                 }
             }
-            Stmt::Loop { body } => out.push(Stmt::Loop { body: convert_block(program, body) }),
+            Stmt::Loop { body } => out.push(Stmt::Loop { body: convert_block(program, body, None) }),
             other => out.push(other),
         }
     }

@@ -158,12 +158,31 @@ pub fn exp2(x: f32) -> f32 {
 /// The lower clamp of [`exp2`]'s argument.
 const EXP2_MIN: f32 = -126.99999;
 
+/// [`EXP2_POLYNOMIAL`] and [`LOG2_POLYNOMIAL`] rounded to f32 as [`polynomial`] rounds them,
+/// once at compile time (mapped per call, the arrays were a call out of line each).
+const EXP2_F32: [f32; 6] = {
+    let c = EXP2_POLYNOMIAL;
+    [c[0] as f32, c[1] as f32, c[2] as f32, c[3] as f32, c[4] as f32, c[5] as f32]
+};
+const LOG2_F32: [f32; 5] = {
+    let c = LOG2_POLYNOMIAL;
+    [c[0] as f32, c[1] as f32, c[2] as f32, c[3] as f32, c[4] as f32]
+};
+
+/// 2²³ + 2²²: added to and taken from an f32 of magnitude under 2²², it rounds it to the
+/// nearest integer (ties to even), exactly, with no conversion to an integer (those are
+/// saturating calls per lane in Rust, not vector instructions).
+const ROUNDER: f32 = 12_582_912.0;
+
 /// The common case of [`fused_multiply_add`] in a lane loop: the rounded f64 sum, and
 /// `slow` set when the lane needs the rare case (the scalar function then decides).
 #[inline(always)]
+#[allow(clippy::neg_cmp_op_on_partial_ord)]
 fn fma_common(a: f32, b: f32, c: f32, slow: &mut bool) -> f32 {
     let s = a as f64 * b as f64 + c as f64;
-    *slow |= (s.to_bits() & 0x1fff_ffff == 0x1000_0000) | (s.abs() < f32::MIN_POSITIVE as f64) | s.is_nan();
+    // A midpoint of the f32 grid, or under the normal range, or NaN (which fails `>=`: one
+    // compare for both).
+    *slow |= (s.to_bits() & 0x1fff_ffff == 0x1000_0000) | !(s.abs() >= f32::MIN_POSITIVE as f64);
     s as f32
 }
 
@@ -172,7 +191,7 @@ fn fma_common(a: f32, b: f32, c: f32, slow: &mut bool) -> f32 {
 /// cover (NaN, zero, negative, +∞, and the rare fused multiply-adds).
 #[inline(always)]
 pub fn log2_lanes(x: &[u32; 16]) -> [u32; 16] {
-    let c = LOG2_POLYNOMIAL.map(|c| c as f32);
+    let c = LOG2_F32;
     let mut out = [0u32; 16];
     let mut slow = [false; 16];
     for i in 0..16 {
@@ -204,7 +223,7 @@ pub fn log2_lanes(x: &[u32; 16]) -> [u32; 16] {
 /// function takes NaN and the rare fused multiply-adds).
 #[inline(always)]
 pub fn exp2_lanes(x: &[u32; 16]) -> [u32; 16] {
-    let c = EXP2_POLYNOMIAL.map(|c| c as f32);
+    let c = EXP2_F32;
     let mut out = [0u32; 16];
     let mut slow = [false; 16];
     for i in 0..16 {
@@ -213,10 +232,16 @@ pub fn exp2_lanes(x: &[u32; 16]) -> [u32; 16] {
         // v.clamp(EXP2_MIN, 128.0) and floor_f32 of it (|v| < 2²³, not NaN), branch-free.
         let v = if v < EXP2_MIN { EXP2_MIN } else { v };
         let v = if v > 128.0 { 128.0 } else { v };
-        let t = v as i32 as f32;
+        // NaN lanes are the scalar function's: any number keeps the arithmetic in range.
+        let v = if v.is_nan() { 0.0 } else { v };
+        // ⌊v⌋: v rounded to an integer, less one where that rounded up (the value of
+        // `v as i32 as f32` so adjusted, with no conversion: |v| ≤ 128).
+        let t = (v + ROUNDER) - ROUNDER;
         let t = if t > v { t - 1.0 } else { t };
         let floor = if t == 0.0 { 0.0f32.copysign(v) } else { t };
-        let whole = f32::from_bits(((floor as i32 + 127) as u32) << 23);
+        // 2^⌊v⌋ from the bits of ⌊v⌋ + 127 + 2²³, whose low 23 bits are ⌊v⌋ + 127 (0 to 255).
+        let biased = floor + (8_388_608.0 + 127.0);
+        let whole = f32::from_bits((biased.to_bits() & 0x007f_ffff) << 23);
         // polynomial(v − floor, EXP2_POLYNOMIAL), its terms in its order.
         let r = v - floor;
         let r2 = r * r;
@@ -350,6 +375,25 @@ pub fn exp(x: f32) -> f32 {
 mod tests {
     use super::errors::*;
     use super::*;
+
+    /// The lane forms against the scalar functions over every 1021st bit pattern and every
+    /// 2⁻¹⁶ step of [−130, 130] (where exp2's floor, clamp and 2^⌊x⌋ change): the same bits.
+    #[test]
+    fn lane_forms_give_the_scalar_bits() {
+        let sparse = (0..=u32::MAX / 1021).map(|k| k * 1021);
+        let dense = (-130 * 65536..=130 * 65536).map(|k| (k as f32 / 65536.0).to_bits());
+        let edges =
+            [f32::MIN_POSITIVE, -126.99999, -127.0, 128.0, -0.0, 0.0, f32::INFINITY, f32::NEG_INFINITY, f32::NAN];
+        let all: Vec<u32> = sparse.chain(dense).chain(edges.map(f32::to_bits)).collect();
+        for chunk in all.chunks(16) {
+            let mut x = [0u32; 16];
+            x[..chunk.len()].copy_from_slice(chunk);
+            let want_exp2 = x.map(|b| exp2(f32::from_bits(b)).to_bits());
+            let want_log2 = x.map(|b| log2(f32::from_bits(b)).to_bits());
+            assert_eq!(exp2_lanes(&x), want_exp2, "exp2 of {:?}", x.map(f32::from_bits));
+            assert_eq!(log2_lanes(&x), want_log2, "log2 of {:?}", x.map(f32::from_bits));
+        }
+    }
 
     /// llvmpipe's approximations: their measured error (the bounds a little above it), the
     /// edges, and the points where they are exact.

@@ -1562,6 +1562,13 @@ fn a_glsl_for_loop_of_two_with_a_pure_if_becomes_straight_code_with_the_same_bit
     let flat = super::flatten::flatten(&program);
     validate(&flat).unwrap();
     assert!(flat.body.iter().all(|s| matches!(s, Stmt::Inst(_))), "not straight:\n{}", super::dump::dump(&flat));
+    // Each register written once: the iterations' copies write fresh ones.
+    let mut writes = vec![0; flat.registers.len()];
+    for s in &flat.body {
+        let Stmt::Inst(i) = s else { unreachable!() };
+        i.writes().into_iter().for_each(|r| writes[r.0 as usize] += 1);
+    }
+    assert!(writes.iter().all(|&w| w <= 1), "registers written twice:\n{}", super::dump::dump(&flat));
     let mut rng = Rng(0x0123_4567_89ab_cdef);
     let mut executor = Executor::new();
     let mut registers = Registers::new();
@@ -1651,4 +1658,72 @@ fn deeply_nested_counted_loops_flatten_quickly() {
     validate(&flat).unwrap();
     assert!(start.elapsed().as_secs() < 5, "flattening took {:?}", start.elapsed());
     assert!(control_statements(&flat.body).1 > 0, "the nest stays loops");
+}
+
+/// A light's `p.w == 0.0 ? normalize(p.xyz) : normalize(p.xyz - position)` as the front end
+/// lowers it (one component here): a condition on a uniform, pure arms.
+fn uniform_ternary(stage: Stage) -> Program {
+    let mut p = Program::new(stage);
+    let (f, b) = (Type::F32, Type::Bool);
+    let slot_x = p.input(f);
+    let slot_w = p.uniform(f);
+    let out = p.output(f);
+    let [x, w, zero, t, r] = [0; 5].map(|_| p.register(f));
+    let directional = p.register(b);
+    let inst = Stmt::Inst;
+    p.body = vec![
+        inst(Inst::Input { dst: x, slot: slot_x }),
+        inst(Inst::Uniform { dst: w, slot: slot_w }),
+        inst(Inst::Const { dst: zero, value: Const::F32(0.0) }),
+        inst(Inst::Binary { op: BinaryOp::FEq, dst: directional, a: w, b: zero }),
+        Stmt::If {
+            cond: directional,
+            then: vec![inst(Inst::Mov { dst: r, src: w })],
+            otherwise: vec![
+                inst(Inst::Binary { op: BinaryOp::FSub, dst: t, a: w, b: x }),
+                inst(Inst::Unary { op: UnaryOp::Sqrt, dst: r, a: t }),
+            ],
+        },
+        inst(Inst::Output { slot: out, src: r }),
+    ];
+    p
+}
+
+#[test]
+fn fragment_programs_keep_ifs_on_uniform_conditions_and_vertex_programs_convert_them() {
+    let fragment = uniform_ternary(Stage::Fragment);
+    validate(&fragment).unwrap();
+    let flat = super::flatten::flatten(&fragment);
+    assert_eq!(control_statements(&flat.body), (1, 0), "{}", super::dump::dump(&flat));
+    let vertex = uniform_ternary(Stage::Vertex);
+    let flat = super::flatten::flatten(&vertex);
+    assert_eq!(control_statements(&flat.body), (0, 0), "{}", super::dump::dump(&flat));
+    // The fragment program's `if` compiles to a uniform branch: each block runs one arm,
+    // with the reference's bits.
+    let compiled = Compiled::new(&fragment);
+    let mut executor = Executor::new();
+    let mut registers = Registers::new();
+    let mut rng = Rng(0x5eed_1f1f_0000_0001);
+    for w in [0.0f32, 2.0, -0.0] {
+        let inputs = [special_word(&mut rng)];
+        let uniforms = [w.to_bits()];
+        let mut reference = vec![[0u32; LANES]];
+        let io = |outputs| Io { inputs: &inputs, uniforms: &uniforms, outputs, textures: &NoTextures };
+        executor.run(&fragment, &mut io(&mut reference), ALL_LANES);
+        let mut outputs = vec![[0u32; LANES]];
+        compiled.run(&mut registers, &mut io(&mut outputs), 0x0ff0);
+        let mask = super::fast::lane_mask(0x0ff0);
+        for i in 0..LANES {
+            assert_eq!(outputs[0][i] & mask[i], reference[0][i] & mask[i], "w = {w}");
+        }
+    }
+    assert!(
+        compiled
+            .code()
+            .body
+            .iter()
+            .any(|n| matches!(n, super::lower::Node::If { cond: super::lower::Cond::Uniform(_), .. })),
+        "{:?}",
+        compiled.code().body
+    );
 }
