@@ -141,18 +141,26 @@ long capi_status_mib(const char *key)
     return kib < 0 ? -1 : kib / 1024;
 }
 
+/* A failed capi_check with `key`, `what` and the info log when `object`'s `status` is false
+ * (shaders and programs have the same query and log signatures). */
+static void check_status(GLuint object, GLenum status, void (*get)(GLuint, GLenum, GLint *),
+                         void (*get_log)(GLuint, GLsizei, GLsizei *, GLchar *), const char *key, const char *what)
+{
+    GLint ok = 0;
+    get(object, status, &ok);
+    if (!ok) {
+        char log[2048] = "";
+        get_log(object, sizeof log, NULL, log);
+        capi_check(0, "%s: %s failed:\n%s", key, what, log);
+    }
+}
+
 GLuint capi_compile_shader(GLenum type, const char *key, const char *source)
 {
     GLuint shader = glCreateShader(type);
     glShaderSource(shader, 1, &source, NULL);
     glCompileShader(shader);
-    GLint ok = 0;
-    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-    if (!ok) {
-        char log[2048] = "";
-        glGetShaderInfoLog(shader, sizeof log, NULL, log);
-        capi_check(0, "%s: compile: %s\n%s", key, source, log);
-    }
+    check_status(shader, GL_COMPILE_STATUS, glGetShaderiv, glGetShaderInfoLog, key, source);
     return shader;
 }
 
@@ -174,13 +182,7 @@ GLuint capi_program_with(const char *key, const char *vs, const char *fs)
 void capi_link_program(const char *key, GLuint program)
 {
     glLinkProgram(program);
-    GLint ok = 0;
-    glGetProgramiv(program, GL_LINK_STATUS, &ok);
-    if (!ok) {
-        char log[2048] = "";
-        glGetProgramInfoLog(program, sizeof log, NULL, log);
-        capi_check(0, "%s: link: %s", key, log);
-    }
+    check_status(program, GL_LINK_STATUS, glGetProgramiv, glGetProgramInfoLog, key, "link");
 }
 
 GLuint capi_program(const char *key, const char *vs, const char *fs)
@@ -188,4 +190,14 @@ GLuint capi_program(const char *key, const char *vs, const char *fs)
     GLuint program = capi_program_with(key, vs, fs);
     capi_link_program(key, program);
     return program;
+}
+
+void capi_pixel_ortho(int w, int h)
+{
+    glViewport(0, 0, w, h);
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glOrtho(0, w, 0, h, -1, 1);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
 }

@@ -63,6 +63,10 @@ void capi_save_framebuffer(const char *name, int w, int h);
 OSMesaContext capi_make_context(GLenum format, GLenum type, int depth, int stencil, int accum,
                                 int w, int h, void **buffer_out);
 
+/* Pixel coordinates for drawing: the viewport is the w x h window, the projection
+ * glOrtho(0, w, 0, h, -1, 1), the modelview identity (left current). */
+void capi_pixel_ortho(int w, int h);
+
 /* GLSL helpers for tests whose shaders must compile and link (a failure is a failed
  * capi_check carrying `key` and the info log). Tests of compile or link failures query
  * the status themselves.

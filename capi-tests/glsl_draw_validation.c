@@ -23,31 +23,6 @@
 #define W 32
 #define H 32
 
-static GLuint program(const char *key, const char *vs, const char *fs)
-{
-    GLuint p = glCreateProgram();
-    const char *sources[2] = {vs, fs};
-    const GLenum types[2] = {GL_VERTEX_SHADER, GL_FRAGMENT_SHADER};
-    for (int i = 0; i < 2; i++) {
-        if (!sources[i])
-            continue;
-        GLuint s = glCreateShader(types[i]);
-        glShaderSource(s, 1, &sources[i], NULL);
-        glCompileShader(s);
-        glAttachShader(p, s);
-        glDeleteShader(s);
-    }
-    return p;
-}
-
-static void link(const char *key, GLuint p)
-{
-    glLinkProgram(p);
-    GLint ok = 0;
-    glGetProgramiv(p, GL_LINK_STATUS, &ok);
-    capi_check(ok, "%s: the program links", key);
-}
-
 static int validate(GLuint p)
 {
     GLint ok = -1;
@@ -75,8 +50,8 @@ static void sampler_conflicts(void)
                             "void main() { gl_FragColor = vec4(0.5, 0.0, 0.0, 0.5)\n"
                             "    + 0.001 * (texture2D(a, vec2(0.5)) + texture3D(b, vec3(0.5))\n"
                             "               + shadow2D(c, vec3(0.5))); }\n";
-    GLuint p = program("samplers", NULL, fs);
-    link("samplers", p);
+    GLuint p = capi_program_with("samplers", NULL, fs);
+    capi_link_program("samplers", p);
     glUseProgram(p);
     GLint a = glGetUniformLocation(p, "a"), b = glGetUniformLocation(p, "b"), c = glGetUniformLocation(p, "c");
     static const struct {
@@ -155,10 +130,10 @@ static void constant_attribute_0(void)
                             "void main() { gl_Position = vec4(vertex, 0.0, 1.0); color = attr; }\n";
     static const char *fs = "varying vec4 color; void main() { gl_FragColor = color; }\n";
     static const GLfloat quad[4][2] = {{-1, -1}, {1, -1}, {-1, 1}, {1, 1}};
-    GLuint p = program("attr0", vs, fs);
+    GLuint p = capi_program_with("attr0", vs, fs);
     glBindAttribLocation(p, 0, "attr");
     glBindAttribLocation(p, 1, "vertex");
-    link("attr0", p);
+    capi_link_program("attr0", p);
     glUseProgram(p);
     glVertexAttribPointer(1, 2, GL_FLOAT, GL_FALSE, 0, quad);
     glEnableVertexAttribArray(1);
@@ -226,8 +201,8 @@ static void materials_in_begin_end(void)
     static const float red[] = {1, 0, 0, 1}, ambient[] = {0, 0.3f, 0.5f, 1}, diffuse[] = {0, 0.2f, 0.3f, 1};
     static const float generic1[] = {0.2f, 0.1f, -0.4f, 0};
     static const float pos[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
-    GLuint p = program("materials", vs, fs);
-    link("materials", p);
+    GLuint p = capi_program_with("materials", vs, fs);
+    capi_link_program("materials", p);
     glUseProgram(p);
     GLint g1 = glGetAttribLocation(p, "generic1");
     /* The list first: after it Mesa 22 still has the materials of before its glBegin (its
@@ -284,8 +259,8 @@ static void integer_builtins_110(void)
                             "void main() { ivec2 v = max(ivec2(u, -u), 1);\n"
                             "  gl_FragColor = vec4(float(sign(u)) * 0.5 + 0.5, float(abs(u)) / 8.0,\n"
                             "                      float(clamp(u, -2, 2) + 2) / 4.0, float(min(v.x, v.y)) / 8.0); }\n";
-    GLuint p = program("integer_builtins", NULL, fs);
-    link("integer_builtins", p);
+    GLuint p = capi_program_with("integer_builtins", NULL, fs);
+    capi_link_program("integer_builtins", p);
     glUseProgram(p);
     GLint u = glGetUniformLocation(p, "u");
     static const int values[] = {-5, 0, 3, 7};
@@ -311,8 +286,8 @@ static void dynamic_sampler_indices(void)
                             "  vec4 loop = vec4(0.0);\n"
                             "  for (int k = 0; k < 3; k++) if (k == i) loop = texture2D(t[k], vec2(0.5));\n"
                             "  gl_FragColor = 0.5 * texture2D(t[i], vec2(0.5)) + 0.5 * loop; }\n";
-    GLuint p = program("dynamic_samplers", NULL, fs);
-    link("dynamic_samplers", p);
+    GLuint p = capi_program_with("dynamic_samplers", NULL, fs);
+    capi_link_program("dynamic_samplers", p);
     glUseProgram(p);
     static const GLubyte texels[3][4] = {{255, 0, 0, 255}, {0, 255, 0, 255}, {0, 0, 255, 255}};
     GLuint tex[3];

@@ -29,12 +29,7 @@ static int draw_and_check(unsigned char *pixels, int index, int frame)
     unsigned char fg[4] = {10, 250, (unsigned char)(20 * index + frame), 255};
     int sx = 8 * index + frame, sy = 70 + 9 * index, ss = 90; /* scissored clear: crosses tiles */
     int rx = 150 - 5 * index, ry = 20 + frame, rw = 140, rh = 200;
-    glViewport(0, 0, W, H);
-    glMatrixMode(GL_PROJECTION);
-    glLoadIdentity();
-    glOrtho(0, W, 0, H, -1, 1);
-    glMatrixMode(GL_MODELVIEW);
-    glLoadIdentity();
+    capi_pixel_ortho(W, H);
     glShadeModel(GL_FLAT);
     glDisable(GL_SCISSOR_TEST);
     glClearColor(bg[0] / 255.0f, bg[1] / 255.0f, bg[2] / 255.0f, 1);

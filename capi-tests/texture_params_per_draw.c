@@ -11,12 +11,7 @@
 
 static void setup_ortho(void)
 {
-    glViewport(0, 0, W, H);
-    glMatrixMode(GL_PROJECTION);
-    glLoadIdentity();
-    glOrtho(0, W, 0, H, -1, 1);
-    glMatrixMode(GL_MODELVIEW);
-    glLoadIdentity();
+    capi_pixel_ortho(W, H);
     glClearColor(0, 0, 0, 0);
     glClear(GL_COLOR_BUFFER_BIT);
 }
@@ -140,18 +135,7 @@ static void glsl(void)
 {
     static const char *vs = "void main() { gl_TexCoord[0] = gl_MultiTexCoord0; gl_Position = ftransform(); }";
     static const char *fs = "uniform sampler2D t; void main() { gl_FragColor = texture2D(t, gl_TexCoord[0].xy); }";
-    GLuint v = glCreateShader(GL_VERTEX_SHADER), f = glCreateShader(GL_FRAGMENT_SHADER);
-    glShaderSource(v, 1, &vs, NULL);
-    glShaderSource(f, 1, &fs, NULL);
-    glCompileShader(v);
-    glCompileShader(f);
-    GLuint prog = glCreateProgram();
-    glAttachShader(prog, v);
-    glAttachShader(prog, f);
-    glLinkProgram(prog);
-    GLint linked = 0;
-    glGetProgramiv(prog, GL_LINK_STATUS, &linked);
-    capi_check(linked, "the GLSL program links");
+    GLuint prog = capi_program("glsl", vs, fs);
     glUseProgram(prog);
     GLuint tex = make_texture(0);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
@@ -159,8 +143,6 @@ static void glsl(void)
     draw_wrap_row("glsl_wrap_nearest");
     glUseProgram(0);
     glDeleteProgram(prog);
-    glDeleteShader(v);
-    glDeleteShader(f);
     glDeleteTextures(1, &tex);
 }
 

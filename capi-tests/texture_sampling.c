@@ -26,12 +26,7 @@ static unsigned char *random_image(int w, int h, int d)
 
 static void setup_ortho(void)
 {
-    glViewport(0, 0, W, H);
-    glMatrixMode(GL_PROJECTION);
-    glLoadIdentity();
-    glOrtho(0, W, 0, H, -1, 1);
-    glMatrixMode(GL_MODELVIEW);
-    glLoadIdentity();
+    capi_pixel_ortho(W, H);
     glClearColor(0.2f, 0.1f, 0.3f, 1);
     glClear(GL_COLOR_BUFFER_BIT);
 }
