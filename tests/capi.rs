@@ -538,28 +538,35 @@ fn value_lines_keep_order_and_drop_free_keys() {
     assert_eq!(kept_values(stdout, &["a".to_string()]), ["VALUE b error=0x0"]);
 }
 
-#[test]
-fn debug_programs_prints_each_linked_glsl_program() {
-    let Some(setup) = setup::require("TESSERA_DEBUG=programs") else {
-        return;
-    };
-    let binary = setup.out.join("programs/debug_programs");
+/// Builds `tests/programs/<name>.c` and runs it on tessera with `TESSERA_DEBUG=<debug>`,
+/// asserting that it exits 0; `None` when tessera is not available (as `setup::require`).
+fn run_with_debug(name: &str, debug: &str) -> Option<Finished> {
+    let setup = setup::require(&format!("TESSERA_DEBUG={debug}"))?;
+    let binary = setup.out.join("programs").join(name);
     std::fs::create_dir_all(binary.parent().unwrap()).unwrap();
     let mut command = Command::new(CC);
     command
         .args(["-std=c11", "-Wall", "-Werror"])
-        .arg(setup.root.join("tests/programs/debug_programs.c"))
+        .arg(setup.root.join(format!("tests/programs/{name}.c")))
         .args(["-lOSMesa", "-o"])
         .arg(&binary);
     let (ok, log) = process::output_of(&mut command);
-    assert!(ok, "debug_programs.c does not build:\n{log}");
-    let dir = setup.out.join("run/debug_programs");
+    assert!(ok, "{name}.c does not build:\n{log}");
+    let dir = setup.out.join("run").join(name);
     std::fs::create_dir_all(&dir).unwrap();
     let mut command = Command::new(&binary);
     Implementation::Tessera.configure(&mut command, &setup);
-    command.env("TESSERA_DEBUG", "programs");
+    command.env("TESSERA_DEBUG", debug);
     let finished = process::run_with_timeout(&mut command, &dir, TIMEOUT).unwrap();
-    assert_eq!(finished.exit, Exit::Code(0), "debug_programs failed:\n{}", finished.stderr);
+    assert_eq!(finished.exit, Exit::Code(0), "{name} failed:\n{}", finished.stderr);
+    Some(finished)
+}
+
+#[test]
+fn debug_programs_prints_each_linked_glsl_program() {
+    let Some(finished) = run_with_debug("debug_programs", "programs") else {
+        return;
+    };
     let stderr = &finished.stderr;
     // Each stage once, announced, then its text form (its header and its output statement).
     for (kind, output) in [("vertex", "output 0 = "), ("fragment", "output 0 = ")] {
@@ -575,26 +582,9 @@ fn debug_programs_prints_each_linked_glsl_program() {
 
 #[test]
 fn debug_pipeline_prints_the_stages_each_draw_compiled() {
-    let Some(setup) = setup::require("TESSERA_DEBUG=pipeline") else {
+    let Some(finished) = run_with_debug("debug_pipeline", "pipeline") else {
         return;
     };
-    let binary = setup.out.join("programs/debug_pipeline");
-    std::fs::create_dir_all(binary.parent().unwrap()).unwrap();
-    let mut command = Command::new(CC);
-    command
-        .args(["-std=c11", "-Wall", "-Werror"])
-        .arg(setup.root.join("tests/programs/debug_pipeline.c"))
-        .args(["-lOSMesa", "-o"])
-        .arg(&binary);
-    let (ok, log) = process::output_of(&mut command);
-    assert!(ok, "debug_pipeline.c does not build:\n{log}");
-    let dir = setup.out.join("run/debug_pipeline");
-    std::fs::create_dir_all(&dir).unwrap();
-    let mut command = Command::new(&binary);
-    Implementation::Tessera.configure(&mut command, &setup);
-    command.env("TESSERA_DEBUG", "pipeline");
-    let finished = process::run_with_timeout(&mut command, &dir, TIMEOUT).unwrap();
-    assert_eq!(finished.exit, Exit::Code(0), "debug_pipeline failed:\n{}", finished.stderr);
     let lines: Vec<&str> = finished.stderr.lines().filter(|l| l.starts_with("tessera pipeline:")).collect();
     let expected = [
         "GL_QUADS (4 vertices), state 0 compiled: pixels [0, 16) x [0, 16) → shade → target 0: write RGBA",
