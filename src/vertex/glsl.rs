@@ -18,7 +18,7 @@
 use super::clip::ClipVertex;
 use super::generic::{GenericRows, GenericValues};
 use super::Vertex;
-use crate::gl::limits::MAX_TEXTURE_UNITS;
+use crate::gl::limits::{MAX_TEXTURE_COORDS, MAX_TEXTURE_UNITS};
 use crate::glsl::lower::Word as InterfaceWord;
 use crate::shader::exec::{Io, NoTextures, ALL_LANES, LANES};
 use crate::shader::fast::{Compiled, Registers};
@@ -91,6 +91,10 @@ impl Input {
                 if let Some(unit) = name.strip_prefix("gl_MultiTexCoord").and_then(|u| u.parse::<usize>().ok()) {
                     return if unit < MAX_TEXTURE_UNITS {
                         Input::TexCoord { unit: unit as u8, k }
+                    } else if unit < MAX_TEXTURE_COORDS {
+                        // The sets past the fixed-function units travel with the generic
+                        // attributes (crate::vertex::generic).
+                        Input::Generic { attribute: crate::vertex::generic::tex_coord_slot(unit) as u8, k }
                     } else {
                         Input::Constant(if k == 3 { 1.0 } else { 0.0 })
                     };
