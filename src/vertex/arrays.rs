@@ -582,7 +582,10 @@ mod tests {
         assert_eq!(arrays.array_of_capability(GL_TEXTURE_2D), None);
         assert_eq!(arrays.array_of_pointer_name(GL_VERTEX_ARRAY), None);
         assert_eq!(arrays.all().count(), 7 + MAX_TEXTURE_UNITS);
-        assert_eq!(arrays.all_mut().count(), 7 + MAX_TEXTURE_UNITS + MAX_VERTEX_ATTRIBS);
+        assert_eq!(arrays.all_mut().count(), 7 + MAX_TEXTURE_COORDS + MAX_VERTEX_ATTRIBS);
+        // Generic arrays past 0, then the sets past the fixed-function units.
+        let slots: Vec<usize> = arrays.generic_slots().map(|(slot, _)| slot).collect();
+        assert_eq!(slots, (1..crate::vertex::generic::SLOTS).collect::<Vec<_>>());
         assert_eq!(arrays.edge_flag.element_size(), 1);
         assert_eq!(arrays.vertex.effective_stride(), 16);
     }

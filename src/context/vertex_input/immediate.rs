@@ -316,6 +316,7 @@ pub(crate) fn texture_unit(texture: GLenum) -> Option<usize> {
 mod tests {
     use super::super::test_support::*;
     use super::*;
+    use crate::gl::limits::MAX_TEXTURE_UNITS;
 
     #[test]
     fn begin_end_delivers_snapshots_of_the_current_attributes() {
