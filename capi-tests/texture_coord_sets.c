@@ -2,7 +2,8 @@
  * GL_MAX_TEXTURE_COORDS is 8, as GLSL's gl_MaxTextureCoords): sets 4..7 have current values
  * (glMultiTexCoord, in display lists too), texcoord arrays (glClientActiveTexture, the
  * GL_TEXTURE_COORD_ARRAY_* queries, glInterleavedArrays, glArrayElement), texture matrix
- * stacks and texgen state, saved by glPushAttrib / glPushClientAttrib; a GLSL vertex
+ * stacks and texgen state (raster texture coordinates too), saved by glPushAttrib /
+ * glPushClientAttrib; a GLSL vertex
  * shader reads them as gl_MultiTexCoord4..7 and gl_TextureMatrix[4..7]. The errors past
  * set 7 are compared with Mesa; tessera's fixed-function units stop at 4 (Mesa's llvmpipe
  * has 8), so texture enables and the environment there are GL_INVALID_OPERATION on tessera
@@ -220,6 +221,39 @@ static void attribs_and_lists(void)
     capi_expect_error(GL_NO_ERROR, "attribs_and_lists");
 }
 
+/* The raster texture coordinates of sets 4..7: texgen and the texture matrices apply. */
+static void raster(void)
+{
+    static const GLfloat plane[4] = {2, 0, 0, 0.5f};
+    glMatrixMode(GL_TEXTURE);
+    glActiveTexture(GL_TEXTURE6);
+    glTranslatef(0.5f, 0, 0);
+    glMatrixMode(GL_MODELVIEW);
+    glMultiTexCoord4f(GL_TEXTURE6, 1, 2, 3, 1);
+    glMultiTexCoord4f(GL_TEXTURE5, 7, 7, 7, 1);
+    glActiveTexture(GL_TEXTURE5);
+    glTexGeni(GL_S, GL_TEXTURE_GEN_MODE, GL_OBJECT_LINEAR);
+    glTexGenfv(GL_S, GL_OBJECT_PLANE, plane);
+    glEnable(GL_TEXTURE_GEN_S);
+    glRasterPos2f(0.25f, 0.5f);
+    for (int i = 4; i < 8; i++) {
+        char key[64];
+        glActiveTexture(GL_TEXTURE0 + i);
+        snprintf(key, sizeof key, "raster.%d", i);
+        value_floats(key, GL_CURRENT_RASTER_TEXTURE_COORDS, 4);
+    }
+    glWindowPos2f(1, 1);
+    glActiveTexture(GL_TEXTURE6);
+    value_floats("window_pos.6", GL_CURRENT_RASTER_TEXTURE_COORDS, 4);
+    glMatrixMode(GL_TEXTURE);
+    glLoadIdentity();
+    glMatrixMode(GL_MODELVIEW);
+    glActiveTexture(GL_TEXTURE5);
+    glDisable(GL_TEXTURE_GEN_S);
+    glActiveTexture(GL_TEXTURE0);
+    capi_expect_error(GL_NO_ERROR, "raster");
+}
+
 static GLuint vertex_program(const char *source)
 {
     GLuint p = capi_program("sets", source, NULL);
@@ -326,6 +360,7 @@ int main(void)
     set_and_get();
     errors();
     attribs_and_lists();
+    raster();
     shader_draws();
     return capi_finish();
 }
