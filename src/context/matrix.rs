@@ -19,8 +19,8 @@
 //! the 3-D algorithms leave the bottom row of the previous inverse in place, and a singular
 //! matrix has the identity as its inverse.
 use crate::gl::limits::{
-    MAX_COLOR_STACK_DEPTH, MAX_MODELVIEW_STACK_DEPTH, MAX_PROJECTION_STACK_DEPTH, MAX_TEXTURE_STACK_DEPTH,
-    MAX_TEXTURE_COORDS,
+    MAX_COLOR_STACK_DEPTH, MAX_MODELVIEW_STACK_DEPTH, MAX_PROJECTION_STACK_DEPTH, MAX_TEXTURE_COORDS,
+    MAX_TEXTURE_STACK_DEPTH,
 };
 use glam::Mat4;
 

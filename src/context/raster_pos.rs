@@ -152,7 +152,8 @@ impl Context {
         for first in (MAX_TEXTURE_UNITS..MAX_TEXTURE_COORDS).step_by(MAX_TEXTURE_UNITS) {
             let sets = first..MAX_TEXTURE_COORDS.min(first + MAX_TEXTURE_UNITS);
             let mut moved = vertex;
-            moved.tex_coords = std::array::from_fn(|k| self.current_tex_coords((first + k).min(MAX_TEXTURE_COORDS - 1)));
+            moved.tex_coords =
+                std::array::from_fn(|k| self.current_tex_coords((first + k).min(MAX_TEXTURE_COORDS - 1)));
             let mut work = self.tex_coord_units_of(sets.clone());
             work.iter_mut().for_each(|w| w.unit -= first);
             let out = self.transform_units(&[moved], float_color, &work)[0];
