@@ -52,7 +52,7 @@ pub fn preview_gl21() -> bool {
 // | 1.3     | Compressed texture entry points                  | works, no formats (GL_NUM_COMPRESSED_TEXTURE_FORMATS = 0) | api/gl_texture.rs |
 // | 1.3     | Cube map textures                                | works  | capi texture_texgen_shadow |
 // | 1.3     | Multisample state (GL_MULTISAMPLE, SAMPLE_*)     | works (2/4/8 samples: multisampled GLX configs and renderbuffers) | context/multisample.rs; capi msaa_resolve, glx multisample.c |
-// | 1.3     | Multitexture (4 units)                           | works  | capi texture_env |
+// | 1.3     | Multitexture (4 units; 8 coordinate sets, GL 2.0) | works  | capi texture_env, texture_coord_sets |
 // | 1.3     | Env modes ADD, COMBINE, DOT3                     | works  | texture/env.rs; capi texture_env, piglit gl-1.3-texture-env |
 // | 1.3     | GL_CLAMP_TO_BORDER                               | works  | texture/sampler.rs |
 // | 1.3     | Transpose matrices                               | works  | capi transform_matrices |
