@@ -431,6 +431,9 @@ impl<'a> BoundArray<'a> {
     /// says whether it did. Then the values are exactly [`BoundArray::fetch`]'s, read in
     /// place: no decoder call and no bounds arithmetic per element (the common case of a
     /// float array draw, where the decoder call was most of the fetch).
+    // Inlined into each caller's per-array loop: left to the inliner (without LTO), whether
+    // the store closure is inlined into the loop changed with unrelated edits elsewhere.
+    #[inline(always)]
     pub fn fill_floats<T>(&self, first: u32, out: &mut [T], store: impl Fn(&mut T, [f32; 4])) -> bool {
         if !self.float || out.is_empty() || self.element_size != 4 * self.size {
             return false;
