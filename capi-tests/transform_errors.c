@@ -8,7 +8,7 @@
  * glMatrixMode(GL_TEXTURE0) without an error (tessera: GL_INVALID_ENUM, as the specification
  * says), accepts GL_MATRIX0_ARB (ARB_vertex_program, which tessera lacks) and rejects
  * GL_COLOR (tessera keeps the imaging subset's color matrix stack); glActiveTexture accepts
- * Mesa's 192 combined units but tessera's 4 fixed-function units only.
+ * Mesa's 192 combined units but tessera's 8 texture coordinate sets only.
  */
 #define GL_GLEXT_PROTOTYPES
 #include "common.h"
@@ -159,9 +159,12 @@ static void texture_units(void)
     glActiveTexture(0);
     capi_expect_error(GL_INVALID_ENUM, "active_texture_zero");
     capi_value("active_texture", "0x%x", get_int(GL_ACTIVE_TEXTURE));
+    /* Units past the fixed-function ones select texture coordinate sets (8 on both). */
     glActiveTexture(GL_TEXTURE0 + max_units);
+    capi_expect_error(GL_NO_ERROR, "active_texture_max_units");
+    glActiveTexture(GL_TEXTURE0 + 8);
     GLenum error = glGetError();
-    capi_check(error == (capi_is_tessera() ? GL_INVALID_ENUM : GL_NO_ERROR), "unit GL_MAX_TEXTURE_UNITS: 0x%x", error);
+    capi_check(error == (capi_is_tessera() ? GL_INVALID_ENUM : GL_NO_ERROR), "unit 8: 0x%x", error);
     glActiveTextureARB(GL_TEXTURE1);
     capi_value("active_texture_arb", "0x%x", get_int(GL_ACTIVE_TEXTURE));
     glActiveTexture(GL_TEXTURE0);

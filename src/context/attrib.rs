@@ -36,7 +36,7 @@ struct Enables {
     /// GL_BLEND of every draw buffer.
     blend: [bool; MAX_DRAW_BUFFERS],
     /// The texture and texture-coordinate generation enables of every unit.
-    texture_units: [TextureUnitEnables; MAX_TEXTURE_UNITS],
+    texture_units: [TextureUnitEnables; MAX_TEXTURE_COORDS],
 }
 
 /// Capabilities that are not one flag of the context: GL_BLEND has one flag per draw buffer,
@@ -418,7 +418,7 @@ mod tests {
             texture_cube_map: true,
             gen: [true; 4],
         };
-        t.texture.units = [all; MAX_TEXTURE_UNITS];
+        t.texture.units = [all; MAX_TEXTURE_COORDS];
         t.eval = EvalState {
             map1: [true; 9],
             map2: [true; 9],

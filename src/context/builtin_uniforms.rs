@@ -34,12 +34,12 @@
 //!   those units' initial state: the identity, the initial planes.
 use super::matrix::{Matrix, StackId};
 use super::Context;
-use crate::gl::limits::{MAX_CLIP_PLANES, MAX_LIGHTS, MAX_TEXTURE_UNITS};
+use crate::gl::limits::{MAX_CLIP_PLANES, MAX_LIGHTS, MAX_TEXTURE_COORDS, MAX_TEXTURE_UNITS};
 use std::cell::OnceCell;
 
 /// Elements of the arrays GLSL sizes by gl_MaxTextureCoords (the texture matrices and the
 /// texgen planes), as [`crate::glsl::builtins::Limits`] declares them.
-const TEXTURE_COORD_SETS: u32 = 8;
+const TEXTURE_COORD_SETS: u32 = MAX_TEXTURE_COORDS as u32;
 
 /// Which 4×4 matrix a matrix uniform reads.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -427,7 +427,7 @@ pub struct BuiltinValues<'a> {
     /// Analysed copies of the modelview, projection, modelview-projection and texture
     /// matrices (tops of the stacks are analysed already after the draw's validation; a
     /// copy is analysed when one is not).
-    matrices: [OnceCell<Matrix>; 3 + MAX_TEXTURE_UNITS],
+    matrices: [OnceCell<Matrix>; 3 + MAX_TEXTURE_COORDS],
 }
 
 impl Context {
@@ -465,7 +465,7 @@ impl BuiltinValues<'_> {
             MatrixSource::ModelViewProjection => {
                 return Some(self.matrices[2].get_or_init(|| analysed(stacks.model_project_matrix())));
             }
-            MatrixSource::Texture(unit) if (unit as usize) < MAX_TEXTURE_UNITS => {
+            MatrixSource::Texture(unit) if (unit as usize) < MAX_TEXTURE_COORDS => {
                 (3 + unit as usize, StackId::Texture(unit as usize))
             }
             MatrixSource::Texture(_) => return None,

@@ -6,7 +6,7 @@
 use super::state::State;
 use super::Context;
 use crate::gl::enums::*;
-use crate::gl::limits::MAX_DRAW_BUFFERS;
+use crate::gl::limits::{MAX_DRAW_BUFFERS, MAX_TEXTURE_UNITS};
 use crate::gl::types::{GLboolean, GLenum};
 
 /// Every capability accepted by glEnable (GL 2.1 compatibility profile plus the
@@ -87,6 +87,16 @@ pub const CAPABILITIES: &[GLenum] = &[
     GL_VERTEX_PROGRAM_TWO_SIDE,
 ];
 
+/// Whether `cap` is a texture target enable while the active unit is a texture coordinate
+/// set without fixed-function texturing (GL_MAX_TEXTURE_UNITS <= unit <
+/// GL_MAX_TEXTURE_COORDS): glEnable, glDisable, glIsEnabled and glGet of it are then
+/// GL_INVALID_OPERATION (GL 2.0 section 3.8.15; Mesa's check too, though its llvmpipe has 8
+/// fixed-function units). Texgen enables are coordinate state and exist on every set.
+pub fn is_missing_unit_enable(state: &State, cap: GLenum) -> bool {
+    matches!(cap, GL_TEXTURE_1D | GL_TEXTURE_2D | GL_TEXTURE_3D | GL_TEXTURE_CUBE_MAP)
+        && state.texture.active_unit >= MAX_TEXTURE_UNITS
+}
+
 /// The boolean a capability names, or `None` for an enum that is not a capability.
 /// Texture enables are those of the active texture unit.
 pub fn flag(state: &mut State, cap: GLenum) -> Option<&mut bool> {
@@ -154,6 +164,9 @@ impl Context {
             *enabled = on;
             return;
         }
+        if is_missing_unit_enable(&self.state, cap) {
+            return self.error(GL_INVALID_OPERATION);
+        }
         match flag(&mut self.state, cap) {
             Some(f) => *f = on,
             None => self.error(GL_INVALID_ENUM),
@@ -171,6 +184,10 @@ impl Context {
         }
         if let Some(enabled) = self.client_array_enable(cap) {
             return *enabled as GLboolean;
+        }
+        if is_missing_unit_enable(&self.state, cap) {
+            self.error(GL_INVALID_OPERATION);
+            return GL_FALSE;
         }
         match flag(&mut self.state, cap) {
             Some(f) => *f as GLboolean,

@@ -34,7 +34,9 @@ use super::raster_state::{LINE_WIDTH_GRANULARITY, LINE_WIDTH_RANGE, POINT_SIZE_G
 use super::state::StencilFace;
 use super::Context;
 use crate::gl::enums::*;
-use crate::gl::limits::{MAX_ATTRIB_STACK_DEPTH, MAX_CLIP_PLANES, MAX_LIGHTS, MAX_TEXTURE_UNITS, MAX_VIEWPORT_DIM};
+use crate::gl::limits::{
+    MAX_ATTRIB_STACK_DEPTH, MAX_CLIP_PLANES, MAX_LIGHTS, MAX_TEXTURE_COORDS, MAX_TEXTURE_UNITS, MAX_VIEWPORT_DIM,
+};
 use crate::gl::types::*;
 
 /// The implementation limits GLSL programs see, which glGet reports.
@@ -255,9 +257,10 @@ impl Context {
             GL_MAX_CUBE_MAP_TEXTURE_SIZE => one(Int(super::texture::MAX_CUBE_MAP_TEXTURE_SIZE as i32)),
             GL_MAX_TEXTURE_LOD_BIAS => one(Float(super::texture::MAX_TEXTURE_LOD_BIAS)),
             GL_NUM_COMPRESSED_TEXTURE_FORMATS => one(Int(0)),
-            // The fixed-function coordinate sets; GLSL's gl_MaxTextureCoords says 8 (see
-            // `glsl::Limits::TESSERA`).
-            GL_MAX_TEXTURE_COORDS => one(Int(MAX_TEXTURE_UNITS as i32)),
+            // The texture coordinate sets (GL 2.0 section 2.7), as many as GLSL's
+            // gl_MaxTextureCoords says (`glsl::Limits::TESSERA`); the first
+            // GL_MAX_TEXTURE_UNITS have fixed-function texturing.
+            GL_MAX_TEXTURE_COORDS => one(Int(MAX_TEXTURE_COORDS as i32)),
             GL_COMPRESSED_TEXTURE_FORMATS => Vec::new(),
             GL_TEXTURE_BINDING_1D | GL_TEXTURE_BINDING_2D | GL_TEXTURE_BINDING_3D | GL_TEXTURE_BINDING_CUBE_MAP => {
                 let t = match pname {
@@ -422,6 +425,10 @@ impl Context {
     /// glBegin/glEnd, GL_INVALID_ENUM for an unknown pname.
     fn query(&mut self, pname: GLenum) -> Option<Vec<Value>> {
         if !self.check_outside_begin_end() {
+            return None;
+        }
+        if capabilities::is_missing_unit_enable(&self.state, pname) {
+            self.error(GL_INVALID_OPERATION);
             return None;
         }
         let values = self.state_values(pname);

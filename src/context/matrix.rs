@@ -19,8 +19,8 @@
 //! the 3-D algorithms leave the bottom row of the previous inverse in place, and a singular
 //! matrix has the identity as its inverse.
 use crate::gl::limits::{
-    MAX_COLOR_STACK_DEPTH, MAX_MODELVIEW_STACK_DEPTH, MAX_PROJECTION_STACK_DEPTH, MAX_TEXTURE_STACK_DEPTH,
-    MAX_TEXTURE_UNITS,
+    MAX_COLOR_STACK_DEPTH, MAX_MODELVIEW_STACK_DEPTH, MAX_PROJECTION_STACK_DEPTH, MAX_TEXTURE_COORDS,
+    MAX_TEXTURE_STACK_DEPTH,
 };
 use glam::Mat4;
 
@@ -736,7 +736,8 @@ pub enum StackId {
 pub struct MatrixStacks {
     modelview: Vec<Matrix>,
     projection: Vec<Matrix>,
-    texture: [Vec<Matrix>; MAX_TEXTURE_UNITS],
+    /// One per texture coordinate set (GL 2.0 section 2.11.2).
+    texture: [Vec<Matrix>; MAX_TEXTURE_COORDS],
     color: Vec<Matrix>,
 }
 
@@ -812,7 +813,7 @@ impl MatrixStacks {
     pub fn validate(&mut self) {
         self.top_mut(StackId::Modelview).analyse();
         self.top_mut(StackId::Projection).analyse();
-        for unit in 0..MAX_TEXTURE_UNITS {
+        for unit in 0..MAX_TEXTURE_COORDS {
             self.top_mut(StackId::Texture(unit)).analyse();
         }
     }
@@ -831,7 +832,7 @@ impl MatrixStacks {
         match id {
             StackId::Modelview => &mut self.modelview,
             StackId::Projection => &mut self.projection,
-            StackId::Texture(unit) => &mut self.texture[unit.min(MAX_TEXTURE_UNITS - 1)],
+            StackId::Texture(unit) => &mut self.texture[unit.min(MAX_TEXTURE_COORDS - 1)],
             StackId::Color => &mut self.color,
         }
     }

@@ -25,13 +25,15 @@ use super::get::Value;
 use super::shader_objects::Executable;
 use super::Context;
 use crate::gl::enums::*;
-use crate::gl::limits::MAX_TEXTURE_UNITS;
+use crate::gl::limits::{MAX_TEXTURE_COORDS, MAX_TEXTURE_UNITS};
 use crate::gl::types::GLenum;
 use crate::vertex::Vertex;
 use glam::Vec4;
 
 /// Which of the outputs a raster position or feedback vertex reports a GLSL vertex shader
 /// writes: Mesa 22 takes the current value of the attribute for one it does not write.
+/// Only the fixed-function units' `gl_TexCoord` are looked at: the raster coordinates of the
+/// sets past them are their current values under a shader (Mesa takes what the shader wrote).
 pub(super) struct ShaderOutputs {
     pub color: bool,
     pub secondary_color: bool,
@@ -59,7 +61,8 @@ pub struct RasterPos {
     pub distance: f32,
     pub color: [f32; 4],
     pub secondary_color: [f32; 4],
-    pub tex_coords: [[f32; 4]; MAX_TEXTURE_UNITS],
+    /// One per texture coordinate set.
+    pub tex_coords: [[f32; 4]; MAX_TEXTURE_COORDS],
     pub index: f32,
 }
 
@@ -71,7 +74,7 @@ impl Default for RasterPos {
             distance: 0.0,
             color: [1.0; 4],
             secondary_color: [0.0, 0.0, 0.0, 1.0],
-            tex_coords: [[0.0, 0.0, 0.0, 1.0]; MAX_TEXTURE_UNITS],
+            tex_coords: [[0.0, 0.0, 0.0, 1.0]; MAX_TEXTURE_COORDS],
             index: 1.0,
         }
     }
@@ -105,6 +108,8 @@ impl Context {
         let marks = std::mem::take(&mut self.vertex_input.material_marks);
         let float_color = self.config.visual.color.is_float();
         let transformed = self.transform_units(&[vertex], float_color, &units)[0];
+        let units = std::array::from_fn(|unit| transformed.tex_coords[unit]);
+        let tex_coords = self.raster_tex_coords(vertex, float_color, units);
         self.vertex_input.material_marks = marks;
         let eye = Vec4::from_array(transformed.eye);
         let clip = Vec4::from_array(transformed.clip);
@@ -127,9 +132,35 @@ impl Context {
             distance,
             color: transformed.color,
             secondary_color: transformed.secondary_color,
-            tex_coords: std::array::from_fn(|unit| transformed.tex_coords[unit]),
+            tex_coords,
             index: self.state.current.index,
         };
+    }
+
+    /// The raster texture coordinates of every set without a shader: the fixed-function
+    /// units' as the per-vertex stage made them (`units`), then the sets past them through
+    /// the same stage (texgen, their texture matrices), their current values and state put
+    /// in the record's slots for the occasion (the record carries the units' only).
+    fn raster_tex_coords(
+        &self,
+        vertex: Vertex,
+        float_color: bool,
+        units: [[f32; 4]; MAX_TEXTURE_UNITS],
+    ) -> [[f32; 4]; MAX_TEXTURE_COORDS] {
+        let mut all = [[0.0, 0.0, 0.0, 1.0]; MAX_TEXTURE_COORDS];
+        all[..MAX_TEXTURE_UNITS].copy_from_slice(&units);
+        for first in (MAX_TEXTURE_UNITS..MAX_TEXTURE_COORDS).step_by(MAX_TEXTURE_UNITS) {
+            let sets = first..MAX_TEXTURE_COORDS.min(first + MAX_TEXTURE_UNITS);
+            let mut moved = vertex;
+            moved.tex_coords =
+                std::array::from_fn(|k| self.current_tex_coords((first + k).min(MAX_TEXTURE_COORDS - 1)));
+            let mut work = self.tex_coord_units_of(sets.clone());
+            work.iter_mut().for_each(|w| w.unit -= first);
+            let out = self.transform_units(&[moved], float_color, &work)[0];
+            let count = sets.len();
+            all[sets].copy_from_slice(&out.tex_coords[..count]);
+        }
+        all
     }
 
     /// glRasterPos with a GLSL vertex shader in use (see the module docs).
@@ -157,12 +188,9 @@ impl Context {
             distance: current.raster.distance,
             color: if written.color { out.color } else { current.color },
             secondary_color: if written.secondary_color { out.secondary_color } else { current.secondary_color },
-            tex_coords: std::array::from_fn(|unit| {
-                if written.tex_coords[unit] {
-                    out.tex_coords[unit]
-                } else {
-                    current.tex_coords[unit]
-                }
+            tex_coords: std::array::from_fn(|unit| match written.tex_coords.get(unit) {
+                Some(true) => out.tex_coords[unit],
+                _ => self.current_tex_coords(unit),
             }),
             index: current.index,
         };
@@ -237,7 +265,7 @@ impl Context {
             distance,
             color,
             secondary_color,
-            tex_coords: current.tex_coords,
+            tex_coords: std::array::from_fn(|unit| self.current_tex_coords(unit)),
             index: current.index,
         };
     }
@@ -253,7 +281,7 @@ impl Context {
             GL_CURRENT_RASTER_SECONDARY_COLOR => r.secondary_color.map(Value::NormFloat).to_vec(),
             GL_CURRENT_RASTER_INDEX => vec![Value::Float(r.index)],
             GL_CURRENT_RASTER_TEXTURE_COORDS => {
-                let unit = self.state.texture.active_unit.min(MAX_TEXTURE_UNITS - 1);
+                let unit = self.state.texture.active_unit.min(MAX_TEXTURE_COORDS - 1);
                 r.tex_coords[unit].map(Value::Float).to_vec()
             }
             GL_ZOOM_X => vec![Value::Float(self.state.pixel_mode.zoom[0])],

@@ -421,8 +421,12 @@ pub struct TextureUnitEnables {
 #[derive(Clone, Debug, PartialEq, Default)]
 pub struct TextureState {
     pub active_unit: usize,
-    pub units: [TextureUnitEnables; MAX_TEXTURE_UNITS],
-    pub unit_state: [super::texture_env::TextureUnitState; MAX_TEXTURE_UNITS],
+    /// Per texture coordinate set: units at and past GL_MAX_TEXTURE_UNITS only ever have
+    /// their texgen enables set (their target enables are GL_INVALID_OPERATION).
+    pub units: [TextureUnitEnables; MAX_TEXTURE_COORDS],
+    /// Per texture coordinate set; past GL_MAX_TEXTURE_UNITS only the texgen state and the
+    /// bindings are used (glTexEnv there is GL_INVALID_OPERATION).
+    pub unit_state: [super::texture_env::TextureUnitState; MAX_TEXTURE_COORDS],
 }
 
 /// GL_EVAL_BIT: the enables GL_MAP1_* and GL_MAP2_* (in enum order) and GL_AUTO_NORMAL, and
@@ -548,8 +552,10 @@ pub struct CurrentState {
     /// The current raster position (glRasterPos, glWindowPos) and its attributes.
     pub raster: crate::context::raster_pos::RasterPos,
     /// The current generic attributes (glVertexAttrib); attribute 0 is the vertex itself and
-    /// has none.
-    pub generic: [[f32; 4]; crate::gl::limits::MAX_VERTEX_ATTRIBS],
+    /// has none. Past them, the current texture coordinates of the sets past
+    /// GL_MAX_TEXTURE_UNITS ([`crate::vertex::generic::tex_coord_slot`]): glMultiTexCoord
+    /// sets those as glVertexAttrib sets a generic attribute.
+    pub generic: crate::vertex::generic::GenericValues,
     /// The row of the open glBegin/glEnd's generic attribute rows that holds `generic`, once
     /// glVertexAttrib changed them there (see [`crate::vertex::generic`]); else
     /// [`crate::vertex::generic::CURRENT`].
@@ -584,7 +590,7 @@ impl Default for CurrentState {
             edge_flag: true,
             index: 1.0,
             raster: Default::default(),
-            generic: [[0.0, 0.0, 0.0, 1.0]; crate::gl::limits::MAX_VERTEX_ATTRIBS],
+            generic: [[0.0, 0.0, 0.0, 1.0]; crate::vertex::generic::SLOTS],
             generic_row: crate::vertex::generic::CURRENT,
         }
     }

@@ -9,10 +9,12 @@ use crate::gl::types::GLenum;
 
 pub const VENDOR: &str = "tessera project\0";
 pub const RENDERER: &str = concat!("tessera ", env!("CARGO_PKG_VERSION"), " (software rasterizer)\0");
-/// GL_VERSION: 1.5, the highest version whose every feature works (the audit below). GL 2.0
-/// and 2.1 work under [`preview_gl21`] but for one disagreement: GL_MAX_TEXTURE_COORDS is
-/// the fixed-function 4 while shaders see 8 texture coordinate sets (gl_MaxTextureCoords,
-/// gl_TexCoord), which GL 2.0 section 2.7 and GLSL 1.20 section 7.4 want equal (issue #20).
+/// GL_VERSION: 1.5 until the full piglit runs confirm GL 2.1 (the audit below), which works
+/// under [`preview_gl21`]. The last disagreement is settled: GL_MAX_TEXTURE_COORDS is 8, the
+/// texture coordinate sets shaders see (gl_MaxTextureCoords, gl_TexCoord,
+/// gl_MultiTexCoord0..7, gl_TextureMatrix), as GL 2.0 section 2.7 and GLSL 1.20 section 7.4
+/// want; fixed-function texturing keeps 4 units (GL_MAX_TEXTURE_UNITS), capi
+/// texture_coord_sets (issue #20).
 pub const VERSION: &str = concat!("1.5 tessera ", env!("CARGO_PKG_VERSION"), "\0");
 
 /// GL_VERSION under `TESSERA_PREVIEW=gl21` ([`preview_gl21`]).
@@ -50,7 +52,7 @@ pub fn preview_gl21() -> bool {
 // | 1.3     | Compressed texture entry points                  | works, no formats (GL_NUM_COMPRESSED_TEXTURE_FORMATS = 0) | api/gl_texture.rs |
 // | 1.3     | Cube map textures                                | works  | capi texture_texgen_shadow |
 // | 1.3     | Multisample state (GL_MULTISAMPLE, SAMPLE_*)     | works (2/4/8 samples: multisampled GLX configs and renderbuffers) | context/multisample.rs; capi msaa_resolve, glx multisample.c |
-// | 1.3     | Multitexture (4 units)                           | works  | capi texture_env |
+// | 1.3     | Multitexture (4 units; 8 coordinate sets, GL 2.0) | works  | capi texture_env, texture_coord_sets |
 // | 1.3     | Env modes ADD, COMBINE, DOT3                     | works  | texture/env.rs; capi texture_env, piglit gl-1.3-texture-env |
 // | 1.3     | GL_CLAMP_TO_BORDER                               | works  | texture/sampler.rs |
 // | 1.3     | Transpose matrices                               | works  | capi transform_matrices |

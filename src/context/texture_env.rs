@@ -132,6 +132,20 @@ fn wrap(e: GLenum) -> Wrap {
 }
 
 impl Context {
+    /// Whether glTexEnv / glGetTexEnv of (`target`, `pname`) may address the active unit
+    /// (else GL_INVALID_OPERATION, before any enum check, as in Mesa): the environment and
+    /// the level-of-detail bias exist on the fixed-function units (GL_MAX_TEXTURE_UNITS,
+    /// which is GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS too), GL_COORD_REPLACE on every texture
+    /// coordinate set (GL 2.0 sections 3.3.1 and 3.8.13).
+    fn check_env_unit(&mut self, target: GLenum, pname: GLenum) -> bool {
+        let coordinate_state = (target, pname) == (GL_POINT_SPRITE, GL_COORD_REPLACE);
+        if self.state.texture.active_unit >= MAX_TEXTURE_UNITS && !coordinate_state {
+            self.error(GL_INVALID_OPERATION);
+            return false;
+        }
+        true
+    }
+
     fn active_env(&mut self) -> &mut TexEnvState {
         let unit = self.state.texture.active_unit;
         &mut self.state.texture.unit_state[unit].env
@@ -141,6 +155,9 @@ impl Context {
     /// normalized).
     pub fn tex_env(&mut self, target: GLenum, pname: GLenum, values: &[f32], int_form: bool) {
         if !self.check_outside_begin_end() {
+            return;
+        }
+        if !self.check_env_unit(target, pname) {
             return;
         }
         let v = values.first().copied().unwrap_or(0.0);
@@ -243,6 +260,9 @@ impl Context {
         if !self.check_outside_begin_end() {
             return None;
         }
+        if !self.check_env_unit(target, pname) {
+            return None;
+        }
         let env = self.state.texture.unit_state[self.state.texture.active_unit].env.clone();
         let e = |x: GLenum| Some((vec![x as f32], false));
         let r = match (target, pname) {
@@ -336,7 +356,7 @@ impl Context {
     /// of highest priority: cube map, 3D, 2D, 1D).
     pub(super) fn enabled_texture_units(&self) -> Vec<(usize, usize)> {
         let mut units = Vec::new();
-        for (unit, e) in self.state.texture.units.iter().enumerate() {
+        for (unit, e) in self.state.texture.units.iter().enumerate().take(MAX_TEXTURE_UNITS) {
             let t = if e.texture_cube_map {
                 3
             } else if e.texture_3d {

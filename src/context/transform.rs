@@ -21,14 +21,15 @@
 //! - glMatrixMode(GL_TEXTUREi) and glMatrixMode(GL_MATRIXi_ARB) are GL_INVALID_ENUM. Mesa 22
 //!   silently ignores the former (a bug) and accepts the latter (ARB_vertex_program, which
 //!   tessera does not have).
-//! - glActiveTexture accepts the fixed-function units (GL_MAX_TEXTURE_UNITS) only; Mesa
-//!   accepts all of its combined image units.
+//! - glActiveTexture accepts the texture coordinate sets (GL_MAX_TEXTURE_COORDS, which is
+//!   larger than GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS here); Mesa accepts all of its 192
+//!   combined image units.
 //! - A NULL matrix or plane pointer is ignored (Mesa ignores NULL matrices but crashes on a
 //!   NULL plane).
 use super::matrix::{transform_row_vector, transpose, StackId};
 use super::Context;
 use crate::gl::enums::*;
-use crate::gl::limits::{MAX_CLIP_PLANES, MAX_TEXTURE_UNITS};
+use crate::gl::limits::{MAX_CLIP_PLANES, MAX_TEXTURE_COORDS};
 use crate::gl::types::GLenum;
 
 impl Context {
@@ -59,7 +60,7 @@ impl Context {
             return;
         }
         match texture.checked_sub(GL_TEXTURE0) {
-            Some(unit) if (unit as usize) < MAX_TEXTURE_UNITS => self.state.texture.active_unit = unit as usize,
+            Some(unit) if (unit as usize) < MAX_TEXTURE_COORDS => self.state.texture.active_unit = unit as usize,
             _ => self.error(GL_INVALID_ENUM),
         }
     }
@@ -283,7 +284,7 @@ mod tests {
             assert_eq!(ctx.take_error(), GL_INVALID_ENUM);
         }
         assert_eq!(ctx.state.transform.matrix_mode, GL_TEXTURE);
-        ctx.active_texture(GL_TEXTURE0 + MAX_TEXTURE_UNITS as GLenum);
+        ctx.active_texture(GL_TEXTURE0 + MAX_TEXTURE_COORDS as GLenum);
         assert_eq!(ctx.take_error(), GL_INVALID_ENUM);
         ctx.active_texture(GL_TEXTURE0 - 1);
         assert_eq!(ctx.take_error(), GL_INVALID_ENUM);

@@ -196,7 +196,7 @@ impl Context {
             GL_CURRENT_SECONDARY_COLOR => current.secondary_color.map(NormFloat).to_vec(),
             GL_CURRENT_NORMAL => current.normal.map(NormFloat).to_vec(),
             GL_CURRENT_TEXTURE_COORDS => {
-                let coords = current.tex_coords.get(self.state.texture.active_unit).copied().unwrap_or_default();
+                let coords = self.current_tex_coords(self.state.texture.active_unit);
                 coords.map(Float).to_vec()
             }
             GL_CURRENT_FOG_COORD => vec![Float(current.fog_coord)],

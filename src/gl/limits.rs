@@ -10,6 +10,10 @@ pub const MAX_CLIP_PLANES: usize = 6;
 pub const MAX_LIGHTS: usize = 8;
 /// Texture units with fixed-function state (GL_MAX_TEXTURE_UNITS).
 pub const MAX_TEXTURE_UNITS: usize = 4;
+/// Texture coordinate sets (GL_MAX_TEXTURE_COORDS, GL 2.0 section 2.7): current values,
+/// arrays, texture matrices and texgen state exist for these; the first
+/// [`MAX_TEXTURE_UNITS`] also have fixed-function texturing.
+pub const MAX_TEXTURE_COORDS: usize = 8;
 /// GL_MAX_VERTEX_ATTRIBS: generic vertex attributes (GL 2.0), as Mesa's 16.
 pub const MAX_VERTEX_ATTRIBS: usize = 16;
 /// Largest point size and line width (GL_POINT_SIZE_RANGE / GL_LINE_WIDTH_RANGE maximum).

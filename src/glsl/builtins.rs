@@ -266,19 +266,22 @@ pub struct Limits {
 impl Limits {
     /// What tessera's GL reports (`crate::gl::limits`; glGet answers the GL_MAX_* pnames of
     /// GL 2.0 from this): 4 texture units, 6 clip planes. No texture image units for vertex
-    /// shaders (GL 2.0 allows 0). Shaders see 8 texture coordinate sets, as on Mesa (piglit's
-    /// shaders index `gl_TexCoord[7]` without asking), while GL_MAX_TEXTURE_COORDS still
-    /// reports the fixed-function 4 (GL 2.0 section 2.7 and GLSL 1.20 section 7.4 want the
-    /// two equal: to settle once programs run). The uniform budget is Mesa's llvmpipe value,
+    /// shaders (GL 2.0 allows 0). 8 texture coordinate sets (GL_MAX_TEXTURE_COORDS, as on
+    /// Mesa; piglit's shaders index `gl_TexCoord[7]` without asking): sets 4..7 have current
+    /// values, arrays, texture matrices and texgen state but no fixed-function texturing
+    /// (GL 2.0 section 2.7; GLSL 1.20 section 7.4 wants gl_MaxTextureCoords equal to it).
+    /// The uniform budget is Mesa's llvmpipe value,
     /// the one the link checks ([`super::link`]); the varying budget what the vertex record
     /// carries ([`super::varyings`]; Mesa's is 128).
     pub const TESSERA: Limits = {
-        use crate::gl::limits::{MAX_CLIP_PLANES, MAX_DRAW_BUFFERS, MAX_LIGHTS, MAX_TEXTURE_UNITS, MAX_VERTEX_ATTRIBS};
+        use crate::gl::limits::{
+            MAX_CLIP_PLANES, MAX_DRAW_BUFFERS, MAX_LIGHTS, MAX_TEXTURE_COORDS, MAX_TEXTURE_UNITS, MAX_VERTEX_ATTRIBS,
+        };
         Limits {
             max_lights: MAX_LIGHTS as i32,
             max_clip_planes: MAX_CLIP_PLANES as i32,
             max_texture_units: MAX_TEXTURE_UNITS as i32,
-            max_texture_coords: 8,
+            max_texture_coords: MAX_TEXTURE_COORDS as i32,
             max_vertex_attribs: MAX_VERTEX_ATTRIBS as i32,
             max_vertex_uniform_components: 16384,
             max_varying_floats: super::varyings::MAX_VARYING_FLOATS as i32,

@@ -7,7 +7,7 @@
 //! touched, and it only ever covers what GL's contract says the caller provides.
 use super::components::{decoder, ComponentType, Decoder};
 use crate::gl::enums::*;
-use crate::gl::limits::{MAX_TEXTURE_UNITS, MAX_VERTEX_ATTRIBS};
+use crate::gl::limits::{MAX_TEXTURE_COORDS, MAX_TEXTURE_UNITS, MAX_VERTEX_ATTRIBS};
 use crate::gl::types::GLenum;
 
 /// The fixed-function vertex arrays.
@@ -142,7 +142,9 @@ pub struct ClientArrays {
     pub fog_coord: ArrayState,
     pub index: ArrayState,
     pub edge_flag: ArrayState,
-    pub tex_coords: [ArrayState; MAX_TEXTURE_UNITS],
+    /// One per texture coordinate set; the sets past GL_MAX_TEXTURE_UNITS feed only GLSL
+    /// vertex shaders, as the generic arrays do ([`ClientArrays::generic_slots`]).
+    pub tex_coords: [ArrayState; MAX_TEXTURE_COORDS],
     /// glClientActiveTexture: the unit glTexCoordPointer and the texture array enable address.
     pub client_active_texture: usize,
     /// GL_ARRAY_BUFFER_BINDING.
@@ -166,7 +168,7 @@ impl Default for ClientArrays {
             fog_coord: ArrayState::new(1),
             index: ArrayState::new(1),
             edge_flag,
-            tex_coords: [ArrayState::new(4); MAX_TEXTURE_UNITS],
+            tex_coords: [ArrayState::new(4); MAX_TEXTURE_COORDS],
             client_active_texture: 0,
             array_buffer: 0,
             element_array_buffer: 0,
@@ -185,7 +187,7 @@ impl ClientArrays {
             ArrayId::FogCoord => &self.fog_coord,
             ArrayId::Index => &self.index,
             ArrayId::EdgeFlag => &self.edge_flag,
-            ArrayId::TexCoord(unit) => &self.tex_coords[unit.min(MAX_TEXTURE_UNITS - 1)],
+            ArrayId::TexCoord(unit) => &self.tex_coords[unit.min(MAX_TEXTURE_COORDS - 1)],
         }
     }
 
@@ -198,7 +200,7 @@ impl ClientArrays {
             ArrayId::FogCoord => &mut self.fog_coord,
             ArrayId::Index => &mut self.index,
             ArrayId::EdgeFlag => &mut self.edge_flag,
-            ArrayId::TexCoord(unit) => &mut self.tex_coords[unit.min(MAX_TEXTURE_UNITS - 1)],
+            ArrayId::TexCoord(unit) => &mut self.tex_coords[unit.min(MAX_TEXTURE_COORDS - 1)],
         }
     }
 
@@ -247,8 +249,18 @@ impl ClientArrays {
         }
     }
 
-    /// Every array a draw reads with its id, texture units in order; the positions are
-    /// [`ClientArrays::position`]'s.
+    /// The arrays whose values go to the rows of generic attributes
+    /// ([`crate::vertex::generic`]) with the slot each fills: the generic arrays past 0, then
+    /// the texture coordinate arrays past GL_MAX_TEXTURE_UNITS.
+    pub fn generic_slots(&self) -> impl Iterator<Item = (usize, &ArrayState)> {
+        let generic = self.generic.iter().enumerate().skip(1);
+        let sets = self.tex_coords.iter().enumerate().skip(MAX_TEXTURE_UNITS);
+        generic.chain(sets.map(|(set, a)| (crate::vertex::generic::tex_coord_slot(set), a)))
+    }
+
+    /// Every array a fixed-function draw reads with its id, texture units in order (the
+    /// sets past GL_MAX_TEXTURE_UNITS are in [`ClientArrays::generic_slots`]); the positions
+    /// are [`ClientArrays::position`]'s.
     pub fn all(&self) -> impl Iterator<Item = (ArrayId, &ArrayState)> {
         let fixed = [
             ArrayId::Vertex,
@@ -419,6 +431,9 @@ impl<'a> BoundArray<'a> {
     /// says whether it did. Then the values are exactly [`BoundArray::fetch`]'s, read in
     /// place: no decoder call and no bounds arithmetic per element (the common case of a
     /// float array draw, where the decoder call was most of the fetch).
+    // Inlined into each caller's per-array loop: left to the inliner (without LTO), whether
+    // the store closure is inlined into the loop changed with unrelated edits elsewhere.
+    #[inline(always)]
     pub fn fill_floats<T>(&self, first: u32, out: &mut [T], store: impl Fn(&mut T, [f32; 4])) -> bool {
         if !self.float || out.is_empty() || self.element_size != 4 * self.size {
             return false;
@@ -570,7 +585,10 @@ mod tests {
         assert_eq!(arrays.array_of_capability(GL_TEXTURE_2D), None);
         assert_eq!(arrays.array_of_pointer_name(GL_VERTEX_ARRAY), None);
         assert_eq!(arrays.all().count(), 7 + MAX_TEXTURE_UNITS);
-        assert_eq!(arrays.all_mut().count(), 7 + MAX_TEXTURE_UNITS + MAX_VERTEX_ATTRIBS);
+        assert_eq!(arrays.all_mut().count(), 7 + MAX_TEXTURE_COORDS + MAX_VERTEX_ATTRIBS);
+        // Generic arrays past 0, then the sets past the fixed-function units.
+        let slots: Vec<usize> = arrays.generic_slots().map(|(slot, _)| slot).collect();
+        assert_eq!(slots, (1..crate::vertex::generic::SLOTS).collect::<Vec<_>>());
         assert_eq!(arrays.edge_flag.element_size(), 1);
         assert_eq!(arrays.vertex.effective_stride(), 16);
     }

@@ -11,13 +11,27 @@
 //! vertex). Fixed-function draws make none, and their vertices say [`CURRENT`] at no cost
 //! (the index fills the record's padding).
 use super::Vertex;
-use crate::gl::limits::MAX_VERTEX_ATTRIBS;
+use crate::gl::limits::{MAX_TEXTURE_COORDS, MAX_TEXTURE_UNITS, MAX_VERTEX_ATTRIBS};
 
 /// [`Vertex::generic`] of a vertex whose generic attributes are the current values.
 pub const CURRENT: u32 = u32::MAX;
 
-/// The generic attributes of one vertex (attribute 0, the position, is in the vertex).
-pub type GenericValues = [[f32; 4]; MAX_VERTEX_ATTRIBS];
+/// The slots of a row: the generic attributes, then the texture coordinate sets past the
+/// fixed-function units (GL_MAX_TEXTURE_UNITS up to GL_MAX_TEXTURE_COORDS). Only a GLSL
+/// vertex shader reads those sets (`gl_MultiTexCoord4..7`), so they travel here, beside the
+/// records, rather than in [`Vertex::tex_coords`].
+pub const SLOTS: usize = MAX_VERTEX_ATTRIBS + MAX_TEXTURE_COORDS - MAX_TEXTURE_UNITS;
+
+/// The slot of texture coordinate set `set` (GL_MAX_TEXTURE_UNITS <= set <
+/// GL_MAX_TEXTURE_COORDS).
+#[inline]
+pub const fn tex_coord_slot(set: usize) -> usize {
+    MAX_VERTEX_ATTRIBS + set - MAX_TEXTURE_UNITS
+}
+
+/// The generic attributes of one vertex (attribute 0, the position, is in the vertex) and
+/// its texture coordinate sets past the fixed-function units ([`SLOTS`]).
+pub type GenericValues = [[f32; 4]; SLOTS];
 
 /// The rows vertices of a draw name.
 #[derive(Clone, Debug, Default)]

@@ -18,7 +18,7 @@
 use super::clip::ClipVertex;
 use super::generic::{GenericRows, GenericValues};
 use super::Vertex;
-use crate::gl::limits::MAX_TEXTURE_UNITS;
+use crate::gl::limits::{MAX_TEXTURE_COORDS, MAX_TEXTURE_UNITS};
 use crate::glsl::lower::Word as InterfaceWord;
 use crate::shader::exec::{Io, NoTextures, ALL_LANES, LANES};
 use crate::shader::fast::{Compiled, Registers};
@@ -91,6 +91,10 @@ impl Input {
                 if let Some(unit) = name.strip_prefix("gl_MultiTexCoord").and_then(|u| u.parse::<usize>().ok()) {
                     return if unit < MAX_TEXTURE_UNITS {
                         Input::TexCoord { unit: unit as u8, k }
+                    } else if unit < MAX_TEXTURE_COORDS {
+                        // The sets past the fixed-function units travel with the generic
+                        // attributes (crate::vertex::generic).
+                        Input::Generic { attribute: crate::vertex::generic::tex_coord_slot(unit) as u8, k }
                     } else {
                         Input::Constant(if k == 3 { 1.0 } else { 0.0 })
                     };
@@ -307,9 +311,12 @@ mod tests {
         assert_eq!(input("gl_SecondaryColor", 1), Input::SecondaryColor(1));
         assert_eq!(input("gl_FogCoord", 0), Input::FogCoord);
         assert_eq!(input("gl_MultiTexCoord3", 1), Input::TexCoord { unit: 3, k: 1 });
-        // Units beyond the fixed-function ones read (0, 0, 0, 1).
-        assert_eq!(input("gl_MultiTexCoord6", 2), Input::Constant(0.0));
-        assert_eq!(input("gl_MultiTexCoord7", 3), Input::Constant(1.0));
+        // Sets beyond the fixed-function ones travel with the generic attributes; sets
+        // beyond GL_MAX_TEXTURE_COORDS do not exist and read (0, 0, 0, 1).
+        assert_eq!(input("gl_MultiTexCoord6", 2), Input::Generic { attribute: 18, k: 2 });
+        assert_eq!(input("gl_MultiTexCoord4", 0), Input::Generic { attribute: 16, k: 0 });
+        assert_eq!(input("gl_MultiTexCoord8", 2), Input::Constant(0.0));
+        assert_eq!(input("gl_MultiTexCoord8", 3), Input::Constant(1.0));
         assert_eq!(input("v", 2), Input::Generic { attribute: 3, k: 2 });
         // A mat3 takes three locations, one per column of three words.
         assert_eq!(input("m", 0), Input::Generic { attribute: 5, k: 0 });

@@ -155,7 +155,7 @@ impl Context {
 mod tests {
     use super::super::test_support::*;
     use super::*;
-    use crate::gl::limits::MAX_TEXTURE_UNITS;
+    use crate::gl::limits::{MAX_TEXTURE_COORDS, MAX_TEXTURE_UNITS};
 
     #[test]
     fn pointers_record_format_and_buffer_binding() {
@@ -214,8 +214,14 @@ mod tests {
         ctx.enable_client_state(GL_TEXTURE_2D, true);
         assert_eq!(ctx.take_error(), GL_INVALID_ENUM);
         assert!(ctx.vertex_input.arrays.fog_coord.enabled);
-        ctx.client_active_texture(GL_TEXTURE0 + MAX_TEXTURE_UNITS as GLenum);
+        ctx.client_active_texture(GL_TEXTURE0 + MAX_TEXTURE_COORDS as GLenum);
         assert_eq!(ctx.take_error(), GL_INVALID_ENUM);
+        // The sets past the fixed-function units have arrays too.
+        ctx.client_active_texture(GL_TEXTURE0 + MAX_TEXTURE_UNITS as GLenum + 1);
+        ctx.enable_client_state(GL_TEXTURE_COORD_ARRAY, true);
+        assert_eq!(ctx.take_error(), GL_NO_ERROR);
+        assert!(ctx.vertex_input.arrays.tex_coords[MAX_TEXTURE_UNITS + 1].enabled);
+        ctx.enable_client_state(GL_TEXTURE_COORD_ARRAY, false);
         ctx.client_active_texture(GL_TEXTURE3);
         ctx.enable_client_state(GL_TEXTURE_COORD_ARRAY, true);
         assert!(ctx.vertex_input.arrays.tex_coords[3].enabled);

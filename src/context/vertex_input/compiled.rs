@@ -11,7 +11,7 @@
 use super::draws::FetchedElement;
 use super::{CapturedBatch, Context};
 use crate::gl::enums::*;
-use crate::gl::limits::{MAX_TEXTURE_UNITS, MAX_VERTEX_ATTRIBS};
+use crate::gl::limits::MAX_TEXTURE_UNITS;
 use crate::gl::types::GLenum;
 use crate::vertex::arrays::ArrayId;
 use crate::vertex::Vertex;
@@ -25,8 +25,9 @@ struct ArraySupplied {
     fog_coord: bool,
     edge_flag: bool,
     tex_coords: [bool; MAX_TEXTURE_UNITS],
-    /// Generic attributes 1 and up (0 is the position).
-    generic: [bool; MAX_VERTEX_ATTRIBS],
+    /// Generic attributes 1 and up (0 is the position), then the texture coordinate sets
+    /// past GL_MAX_TEXTURE_UNITS (slots of `crate::vertex::generic`).
+    generic: [bool; crate::vertex::generic::SLOTS],
 }
 
 impl ArraySupplied {
@@ -78,8 +79,8 @@ impl Context {
         self.inside_begin_end = inside;
         let error = std::mem::replace(&mut self.error, earlier_error);
         let mut supplied = ArraySupplied::default();
-        for (attribute, array) in self.vertex_input.arrays.generic.iter().enumerate().skip(1) {
-            supplied.generic[attribute] = array.enabled;
+        for (slot, array) in self.vertex_input.arrays.generic_slots() {
+            supplied.generic[slot] = array.enabled;
         }
         for (id, array) in self.vertex_input.arrays.all() {
             if !array.enabled {

@@ -20,14 +20,14 @@
 use super::{independent_primitive_size, Context, BATCH_VERTICES};
 use crate::context::state::CurrentState;
 use crate::gl::enums::*;
-use crate::gl::limits::{MAX_TEXTURE_UNITS, MAX_VERTEX_ATTRIBS};
+use crate::gl::limits::MAX_TEXTURE_UNITS;
 use crate::gl::types::GLenum;
 use crate::vertex::arrays::{
     byte_extent, index_range, ArrayId, ArrayState, BoundArray, ClientArrays, ClientMemory, IndexType,
 };
 use crate::vertex::assembly::{continued_vertices, DrawPart};
 use crate::vertex::buffer_objects::BufferTable;
-use crate::vertex::generic::GenericRows;
+use crate::vertex::generic::{GenericRows, SLOTS as GENERIC_SLOTS};
 use crate::vertex::immediate::is_primitive_mode;
 use crate::vertex::Vertex;
 
@@ -39,7 +39,7 @@ const ARRAY_COUNT: usize = 7 + MAX_TEXTURE_UNITS;
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct FetchedElement {
     arrays: [Option<(ArrayId, [f32; 4])>; ARRAY_COUNT],
-    generic: [Option<[f32; 4]>; MAX_VERTEX_ATTRIBS],
+    generic: [Option<[f32; 4]>; GENERIC_SLOTS],
 }
 
 /// A draw's batch vector keeps at most this many vertices of capacity between draws (the
@@ -212,7 +212,8 @@ fn assemble(
 
 /// Gives each of `vertices` (the vertices of `elements`) a row of generic attributes in
 /// `rows`: the current values, then what the enabled generic arrays 1 and up hold (array 0
-/// is the position, which [`assemble`] fetched).
+/// is the position, which [`assemble`] fetched) and the enabled texture coordinate arrays
+/// past GL_MAX_TEXTURE_UNITS ([`ClientArrays::generic_slots`]).
 fn assemble_generic(
     arrays: &ClientArrays,
     buffers: &BufferTable,
@@ -231,10 +232,11 @@ fn assemble_generic(
         v.generic = rows.push(current.generic);
     }
     let new_rows = &mut rows.rows[start..];
-    for (attribute, array) in arrays.generic.iter().enumerate().skip(1) {
+    for (attribute, array) in arrays.generic_slots() {
         if array.enabled {
             let bytes = array_bytes(array, buffers, memory, first, last)?;
-            // ArrayId::Vertex: no normalization of its own (the array's flag decides).
+            // ArrayId::Vertex: no normalization of its own (the array's flag decides; a
+            // texture coordinate array's is false).
             let bound = BoundArray::new(ArrayId::Vertex, array, bytes, first);
             fill(new_rows, elements, &bound, |row, x| row[attribute] = x);
         }
@@ -246,12 +248,18 @@ impl Context {
     /// Whether an array draw makes generic attribute rows: some generic array past 0 is
     /// enabled, and a GLSL vertex shader in use reads generic attributes or a display list
     /// captures the draw (GL 2.1 §5.4: the arrays are dereferenced when it is compiled,
-    /// whatever program runs the list).
+    /// whatever program runs the list); or a texture coordinate array past
+    /// GL_MAX_TEXTURE_UNITS is enabled, and a GLSL vertex shader is in use (which may read
+    /// `gl_MultiTexCoord4..7`) or a display list captures the draw.
     fn array_draw_needs_generic_rows(&self) -> bool {
-        let reads_generic = self.program_in_use.executable().is_some_and(|e| {
-            e.vertex_program.is_some() && e.interface.attributes.iter().any(|a| a.location.is_some_and(|l| l > 0))
-        });
-        (reads_generic || self.capturing()) && self.vertex_input.arrays.generic[1..].iter().any(|a| a.enabled)
+        let vertex_shader = self.program_in_use.executable().filter(|e| e.vertex_program.is_some());
+        let reads_generic =
+            vertex_shader.is_some_and(|e| e.interface.attributes.iter().any(|a| a.location.is_some_and(|l| l > 0)));
+        let arrays = &self.vertex_input.arrays;
+        let generic_arrays = arrays.generic[1..].iter().any(|a| a.enabled);
+        let set_arrays = arrays.tex_coords[MAX_TEXTURE_UNITS..].iter().any(|a| a.enabled);
+        ((reads_generic || self.capturing()) && generic_arrays)
+            || ((vertex_shader.is_some() || self.capturing()) && set_arrays)
     }
 
     /// Whether the draw would source data from a mapped buffer: an enabled array's, or the
@@ -403,7 +411,7 @@ impl Context {
             return Ok(None);
         };
         let buffers = self.buffers.lock();
-        let mut fetched = FetchedElement { arrays: [None; ARRAY_COUNT], generic: [None; MAX_VERTEX_ATTRIBS] };
+        let mut fetched = FetchedElement { arrays: [None; ARRAY_COUNT], generic: [None; GENERIC_SLOTS] };
         for (slot, (id, array)) in fetched.arrays.iter_mut().zip(self.vertex_input.arrays.all()) {
             if array.enabled {
                 let Ok(bytes) = array_bytes(array, &buffers, memory, index, index) else {
@@ -412,13 +420,12 @@ impl Context {
                 *slot = Some((id, BoundArray::new(id, array, bytes, index).fetch(index)));
             }
         }
-        let generic = self.vertex_input.arrays.generic.iter().enumerate().skip(1);
-        for ((_, array), slot) in generic.zip(fetched.generic.iter_mut().skip(1)) {
+        for (slot, array) in self.vertex_input.arrays.generic_slots() {
             if array.enabled {
                 let Ok(bytes) = array_bytes(array, &buffers, memory, index, index) else {
                     return Ok(None);
                 };
-                *slot = Some(BoundArray::new(ArrayId::Vertex, array, bytes, index).fetch(index));
+                fetched.generic[slot] = Some(BoundArray::new(ArrayId::Vertex, array, bytes, index).fetch(index));
             }
         }
         Ok(Some(fetched))

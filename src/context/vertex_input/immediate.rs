@@ -7,13 +7,17 @@
 //!
 //! Deliberate differences from Mesa 22:
 //! - glBegin takes GL 2.1's modes only: the adjacency modes and GL_PATCHES are GL_INVALID_ENUM.
-//! - glMultiTexCoord with a target beyond GL_MAX_TEXTURE_UNITS is GL_INVALID_ENUM; Mesa does
+//! - glMultiTexCoord with a target beyond GL_MAX_TEXTURE_COORDS is GL_INVALID_ENUM; Mesa does
 //!   not check the target and writes unit `target & 7`.
+//!
+//! The texture coordinate sets past GL_MAX_TEXTURE_UNITS have no fixed-function use: their
+//! current values live among the generic attributes' ([`crate::vertex::generic::SLOTS`]),
+//! where only a GLSL vertex shader reads them.
 //! - glEdgeFlag(flag) sets the edge flag for any nonzero `flag`; Mesa keeps the flag as a
 //!   float and reports TRUE only for exactly 1.
 use super::{independent_primitive_size, Context, BATCH_VERTICES};
 use crate::gl::enums::*;
-use crate::gl::limits::MAX_TEXTURE_UNITS;
+use crate::gl::limits::MAX_TEXTURE_COORDS;
 use crate::gl::types::GLenum;
 use crate::vertex::assembly::{continued_vertices, DrawPart};
 use crate::vertex::immediate::{is_primitive_mode, rect_positions};
@@ -250,6 +254,17 @@ impl Context {
     pub fn set_tex_coords(&mut self, unit: usize, coords: [f32; 4]) {
         if let Some(current) = self.state.current.tex_coords.get_mut(unit) {
             *current = coords;
+        } else if unit < MAX_TEXTURE_COORDS {
+            self.set_generic(crate::vertex::generic::tex_coord_slot(unit), coords);
+        }
+    }
+
+    /// The current texture coordinates of set `unit` (< GL_MAX_TEXTURE_COORDS).
+    pub(crate) fn current_tex_coords(&self, unit: usize) -> [f32; 4] {
+        let current = &self.state.current;
+        match current.tex_coords.get(unit) {
+            Some(&coords) => coords,
+            None => current.generic[crate::vertex::generic::tex_coord_slot(unit.min(MAX_TEXTURE_COORDS - 1))],
         }
     }
 
@@ -291,16 +306,17 @@ impl Context {
     }
 }
 
-/// The unit GL_TEXTUREi names, when it exists.
-pub(super) fn texture_unit(texture: GLenum) -> Option<usize> {
+/// The texture coordinate set GL_TEXTUREi names, when it exists (i < GL_MAX_TEXTURE_COORDS).
+pub(crate) fn texture_unit(texture: GLenum) -> Option<usize> {
     let unit = texture.checked_sub(GL_TEXTURE0)? as usize;
-    (unit < MAX_TEXTURE_UNITS).then_some(unit)
+    (unit < MAX_TEXTURE_COORDS).then_some(unit)
 }
 
 #[cfg(test)]
 mod tests {
     use super::super::test_support::*;
     use super::*;
+    use crate::gl::limits::MAX_TEXTURE_UNITS;
 
     #[test]
     fn begin_end_delivers_snapshots_of_the_current_attributes() {
@@ -406,7 +422,7 @@ mod tests {
     #[test]
     fn multi_tex_coord_targets() {
         let mut ctx = context();
-        ctx.multi_tex_coord(GL_TEXTURE0 + MAX_TEXTURE_UNITS as GLenum, [1.0; 4]);
+        ctx.multi_tex_coord(GL_TEXTURE0 + MAX_TEXTURE_COORDS as GLenum, [1.0; 4]);
         assert_eq!(ctx.take_error(), GL_INVALID_ENUM);
         ctx.multi_tex_coord(GL_TEXTURE0 - 1, [1.0; 4]);
         assert_eq!(ctx.take_error(), GL_INVALID_ENUM);
@@ -414,6 +430,11 @@ mod tests {
         ctx.set_tex_coords(0, [2.0; 4]);
         assert_eq!(ctx.state.current.tex_coords[0], [2.0; 4]);
         assert_eq!(texture_unit(GL_TEXTURE3), Some(3));
+        // The sets past the fixed-function units exist: their values are kept beside them.
+        ctx.multi_tex_coord(GL_TEXTURE0 + MAX_TEXTURE_UNITS as GLenum + 2, [3.0, 4.0, 5.0, 6.0]);
+        assert_eq!(ctx.take_error(), GL_NO_ERROR);
+        assert_eq!(ctx.current_tex_coords(MAX_TEXTURE_UNITS + 2), [3.0, 4.0, 5.0, 6.0]);
+        assert_eq!(ctx.current_tex_coords(MAX_TEXTURE_UNITS + 1), [0.0, 0.0, 0.0, 1.0]);
     }
 
     #[test]
