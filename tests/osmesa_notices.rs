@@ -18,11 +18,11 @@ fn refusals_child() {
     if std::env::var_os(CHILD).is_none() {
         return;
     }
-    // pyrender's request: OpenGL 3.3 core profile; then 2.1 compatibility (same reason).
+    // pyrender's request: OpenGL 3.3 core profile; then 3.0 compatibility (same reason).
     let core_33 =
         [OSMESA_PROFILE, OSMESA_CORE_PROFILE, OSMESA_CONTEXT_MAJOR_VERSION, 3, OSMESA_CONTEXT_MINOR_VERSION, 3, 0];
-    let compat_21 = [OSMESA_CONTEXT_MAJOR_VERSION, 2, OSMESA_CONTEXT_MINOR_VERSION, 1, 0 as c_int];
-    for attribs in [&core_33[..], &compat_21[..]] {
+    let compat_30 = [OSMESA_CONTEXT_MAJOR_VERSION, 3, OSMESA_CONTEXT_MINOR_VERSION, 0, 0 as c_int];
+    for attribs in [&core_33[..], &compat_30[..]] {
         // SAFETY: a zero-terminated attribute list.
         let ctx = unsafe { OSMesaCreateContextAttribs(attribs.as_ptr(), std::ptr::null_mut()) };
         assert!(ctx.is_null());
@@ -61,7 +61,7 @@ fn each_refusal_reason_is_named_once() {
     let lines = child_stderr(None);
     let expected = [
         "tessera: OSMesaCreateContextAttribs asked for OpenGL 3.3 core profile; \
-         tessera provides OpenGL 1.5 (compatibility)",
+         tessera provides OpenGL 2.1 (compatibility)",
         "tessera: OSMesaCreateContextExt asked for pixel format OSMESA_COLOR_INDEX; \
          tessera provides OSMESA_RGBA, OSMESA_BGRA, OSMESA_ARGB, OSMESA_RGB, OSMESA_BGR and OSMESA_RGB_565",
         "tessera: OSMesaCreateContextExt asked for -1 depth, 0 stencil and 0 accumulation bits; \

@@ -4,9 +4,8 @@
 The tests: `spec@glsl-1.10@execution` and `spec@glsl-1.20@execution` (shader_runner, from
 piglit's `shader` profile) and `spec@glsl-1.10@compiler` and `spec@glsl-1.20@compiler`
 (glslparsertest, from the `glslparser` profile), read from the installed piglit's test lists.
-Each runs under a private Xvfb with PIGLIT_PLATFORM=glx, on tessera (LD_LIBRARY_PATH=<lib>,
-TESSERA_PREVIEW=gl21 while tessera does not yet say GL 2.1 on its own) or on Mesa (the
-system's libGL, llvmpipe).
+Each runs under a private Xvfb with PIGLIT_PLATFORM=glx, on tessera (LD_LIBRARY_PATH=<lib>)
+or on Mesa (the system's libGL, llvmpipe).
 
 Expectations: tests/piglit/glsl-expected.txt, one line per test:
 
@@ -80,7 +79,7 @@ def run_one(name, argv, env, log_dir):
 def run_all(selected, impl, lib, jobs):
     env = dict(os.environ, PIGLIT_PLATFORM="glx")
     if impl == "tessera":
-        env.update(LD_LIBRARY_PATH=str(lib), TESSERA_PREVIEW="gl21", TESSERA_QUIET="1", TESSERA_THREADS="1")
+        env.update(LD_LIBRARY_PATH=str(lib), TESSERA_QUIET="1", TESSERA_THREADS="1")
     else:
         env.pop("LD_LIBRARY_PATH", None)
         env.update(GALLIUM_DRIVER="llvmpipe", LP_NUM_THREADS="1")

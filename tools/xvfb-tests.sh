@@ -17,7 +17,7 @@
 #      tests/piglit/expected.txt marks "pass" must pass (a skip is not a pass).
 #   6. piglit's framebuffer-object tests, further GL 1.x tests and the tests of the GL 2.x
 #      features tessera has: each command tests/piglit/fbo-expected.txt, gl1x-expected.txt or
-#      gl2x-expected.txt marks "pass" must pass (the GL 2.x ones with TESSERA_PREVIEW=gl21).
+#      gl2x-expected.txt marks "pass" must pass.
 # Needs xvfb, piglit, mesa-utils, freeglut3-dev, libglfw3-dev, x11-apps, libx11-dev, python3 (installed by
 # tools/setup-debian.sh). Without them it skips loudly, except under CI=true where it fails.
 set -euo pipefail
@@ -264,17 +264,14 @@ for c in "${unexpected_passes[@]}"; do
 done
 
 # 6. piglit's framebuffer-object tests, further GL 1.x tests and the GL 2.x
-#    feature tests: every command of tests/piglit/fbo-expected.txt, gl1x-expected.txt and gl2x-expected.txt.
-#    The GL 2.x tests run with TESSERA_PREVIEW=gl21 (GL_VERSION 2.1): most of them ask for
-#    GL 2.0 (the whole file takes about 15 s on tessera, so CI runs all of it).
+#    feature tests: every command of tests/piglit/fbo-expected.txt, gl1x-expected.txt and gl2x-expected.txt
+#    (the GL 2.x file takes about 15 s on tessera, so CI runs all of it).
 for expectations in tests/piglit/fbo-expected.txt tests/piglit/gl1x-expected.txt tests/piglit/gl2x-expected.txt; do
     passed=0
-    preview=()
-    [[ $expectations == */gl2x-expected.txt ]] && preview=(TESSERA_PREVIEW=gl21)
     while read -r status command; do
         [[ -z $status || $status == \#* ]] && continue
         command=$(echo ${command%%#*})
-        output=$(cd "$piglit_bin" && "${on_tessera[@]}" "${preview[@]}" timeout 120 ./$command 2>&1) || true
+        output=$(cd "$piglit_bin" && "${on_tessera[@]}" timeout 120 ./$command 2>&1) || true
         result=$(grep -o '"result": *"[a-z]*"' <<<"$output" | tail -1 | sed 's/.*"\([a-z]*\)"$/\1/' || true)
         result=${result:-crash}
         case $status in

@@ -9,35 +9,18 @@ use crate::gl::types::GLenum;
 
 pub const VENDOR: &str = "tessera project\0";
 pub const RENDERER: &str = concat!("tessera ", env!("CARGO_PKG_VERSION"), " (software rasterizer)\0");
-/// GL_VERSION: 1.5 until the full piglit runs confirm GL 2.1 (the audit below), which works
-/// under [`preview_gl21`]. The last disagreement is settled: GL_MAX_TEXTURE_COORDS is 8, the
-/// texture coordinate sets shaders see (gl_MaxTextureCoords, gl_TexCoord,
-/// gl_MultiTexCoord0..7, gl_TextureMatrix), as GL 2.0 section 2.7 and GLSL 1.20 section 7.4
-/// want; fixed-function texturing keeps 4 units (GL_MAX_TEXTURE_UNITS), capi
-/// texture_coord_sets (issue #20).
-pub const VERSION: &str = concat!("1.5 tessera ", env!("CARGO_PKG_VERSION"), "\0");
+/// GL_VERSION: 2.1, the highest version whose every feature works (the audit below).
+/// Fixed-function texturing has 4 units (GL_MAX_TEXTURE_UNITS) beside the 8 texture
+/// coordinate sets shaders see (GL_MAX_TEXTURE_COORDS, gl_MaxTextureCoords), as GL 2.0
+/// section 2.7 allows.
+pub const VERSION: &str = concat!("2.1 tessera ", env!("CARGO_PKG_VERSION"), "\0");
 
-/// GL_VERSION under `TESSERA_PREVIEW=gl21` ([`preview_gl21`]).
-pub const PREVIEW_VERSION: &str = concat!("2.1 tessera ", env!("CARGO_PKG_VERSION"), " (preview)\0");
-
-/// GL_SHADING_LANGUAGE_VERSION under the preview.
+/// GL_SHADING_LANGUAGE_VERSION: GLSL 1.20, GL 2.1's (1.10 shaders too, by `#version`).
 pub const SHADING_LANGUAGE_VERSION: &str = "1.20\0";
 
-/// Whether `TESSERA_PREVIEW` names `gl21` (read once per process): the version string, the
-/// shading language version and context creation then say GL 2.1, before every GL 2.1
-/// feature works, so that conformance suites (piglit's GLSL tests, tools/piglit-glsl.sh)
-/// can measure the GLSL work in progress. Not for applications: what does not work yet is
-/// listed in tests/piglit/glsl-expected.txt and issue #20.
-pub fn preview_gl21() -> bool {
-    static PREVIEW: std::sync::OnceLock<bool> = std::sync::OnceLock::new();
-    *PREVIEW.get_or_init(|| {
-        std::env::var("TESSERA_PREVIEW").is_ok_and(|v| v.split(',').any(|topic| topic.trim() == "gl21"))
-    })
-}
-
-// The version audit: each feature of the GL 1.2–1.5 core feature lists (GL 2.1 spec,
-// appendices C–F) checked against the code and its tests. GL 1.0/1.1 are complete now that
-// evaluators and smoothing exist; GL 2.0 needs GLSL.
+// The version audit: each feature of the GL 1.2–2.1 core feature lists (GL 2.1 spec,
+// appendices C–H) checked against the code and its tests. GL 1.0/1.1 are complete now that
+// evaluators and smoothing exist.
 //
 // | Version | Feature                                          | Status | Where / checked by |
 // |---------|--------------------------------------------------|--------|--------------------|
@@ -72,6 +55,19 @@ pub fn preview_gl21() -> bool {
 // | 1.5     | Buffer objects                                   | works  | capi vertex_buffers |
 // | 1.5     | Occlusion queries                                | works  | capi occlusion_queries |
 // | 1.5     | Shadow functions (all 8 compare funcs)           | works  | context/texture.rs |
+// | 2.0     | GLSL 1.10: shader and program objects, compile, link, validate, deferred deletion, info logs | works | context/shader_objects.rs, glsl/; capi shader_objects, glsl_*; piglit GLSL 1.10 (tests/piglit/glsl-expected.txt) |
+// | 2.0     | Uniforms and their reflection, generic attributes (attribute 0 aliases glVertex) | works | context/shader_objects.rs, vertex_input/; capi shader_uniforms, vertex_attributes, glsl_draw_validation |
+// | 2.0     | Multiple render targets (glDrawBuffers, gl_FragData) | works | capi glsl_fragment_lookups; piglit arb_draw_buffers (gl2x-expected.txt) |
+// | 2.0     | Non-power-of-two textures                        | works  | see GL_ARB_texture_non_power_of_two below |
+// | 2.0     | Point sprites                                    | works  | see GL_ARB_point_sprite below |
+// | 2.0     | Separate stencil (glStencil*Separate)            | works  | capi fragment_ops_alpha_stencil |
+// | 2.0     | glBlendEquationSeparate                          | works  | capi fragment_ops_blend |
+// | 2.0     | Two-sided colour and point size from vertex shaders (GL_VERTEX_PROGRAM_TWO_SIDE, _POINT_SIZE) | works | capi glsl_vertex |
+// | 2.0     | Texture coordinate sets (GL_MAX_TEXTURE_COORDS 8, the shaders' gl_MaxTextureCoords) beside 4 fixed-function units | works | capi texture_coord_sets |
+// | 2.1     | GLSL 1.20 (arrays, implicit conversions, non-square matrices, invariant, centroid) | works | glsl/; piglit GLSL 1.20 |
+// | 2.1     | Non-square uniform matrices (glUniformMatrix2x3fv ...) | works | capi shader_uniforms |
+// | 2.1     | Pixel buffer objects                             | works  | see GL_ARB_pixel_buffer_object below |
+// | 2.1     | sRGB textures                                    | works  | see GL_EXT_texture_sRGB below |
 //
 // Beyond GL 1.5, extensions checked the same way:
 //
@@ -186,23 +182,14 @@ pub const PROVIDED_VERSION: (i32, i32) = {
     (major, minor)
 };
 
-/// The version contexts are created with: [`PROVIDED_VERSION`], or 2.1 under the preview.
-fn offered_version() -> (i32, i32) {
-    if preview_gl21() {
-        (2, 1)
-    } else {
-        PROVIDED_VERSION
-    }
-}
-
 /// Whether a context of GL version `major.minor` (compatibility profile) can be created.
 pub fn supports_version(major: i32, minor: i32) -> bool {
-    (major, minor) <= offered_version() && major >= 1 && minor >= 0
+    (major, minor) <= PROVIDED_VERSION && major >= 1 && minor >= 0
 }
 
-/// What tessera provides, for messages: e.g. "OpenGL 1.5 (compatibility)".
+/// What tessera provides, for messages: e.g. "OpenGL 2.1 (compatibility)".
 pub fn provided_description() -> String {
-    let (major, minor) = offered_version();
+    let (major, minor) = PROVIDED_VERSION;
     format!("OpenGL {major}.{minor} (compatibility)")
 }
 
@@ -224,9 +211,8 @@ impl Context {
         match name {
             GL_VENDOR => Some(VENDOR),
             GL_RENDERER => Some(RENDERER),
-            GL_VERSION if preview_gl21() => Some(PREVIEW_VERSION),
             GL_VERSION => Some(VERSION),
-            GL_SHADING_LANGUAGE_VERSION if preview_gl21() => Some(SHADING_LANGUAGE_VERSION),
+            GL_SHADING_LANGUAGE_VERSION => Some(SHADING_LANGUAGE_VERSION),
             GL_EXTENSIONS => Some(extensions_string()),
             _ => {
                 self.error(GL_INVALID_ENUM);

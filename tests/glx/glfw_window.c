@@ -3,9 +3,9 @@
  * back and swaps; glGetString(GL_RENDERER) must name tessera. GLFW loads its GLX through
  * dlopen ("libGLX.so.0", then "libGL.so.1") and creates the context with
  * glXCreateContextAttribsARB (GLX_ARB_create_context), so this checks what GLFW needs from
- * tessera's GLX. Then a window with GLFW_CONTEXT_VERSION_MAJOR 2 is asked for: created when
- * tessera provides OpenGL 2 or more, otherwise refused with GLFW_VERSION_UNAVAILABLE and a
- * description that names the GLX error (GLXBadFBConfig, not a bare number).
+ * tessera's GLX. Then a window with GLFW_CONTEXT_VERSION 2.0 is asked for (created: tessera
+ * provides 2.1), and one of 3.0: refused with GLFW_VERSION_UNAVAILABLE and a description that
+ * names the GLX error (GLXBadFBConfig, not a bare number).
  * As in a GLFW program using a loader, the program does not link libGL: GLFW loads it and
  * the GL functions come from glfwGetProcAddress. Run by tools/xvfb-tests.sh with tessera
  * first on LD_LIBRARY_PATH (Debian's GLFW 3.3 dlopens "libGL.so.1"; GLFW 3.4 tries
@@ -133,21 +133,29 @@ int main(void)
     CHECK(p_glGetError() == GL_NO_ERROR, "GL error 0x%x", p_glGetError());
     glfwDestroyWindow(window);
 
-    /* GLFW_CONTEXT_VERSION_MAJOR 2 */
+    /* A 2.0 window: created, since tessera provides 2.1. Then 3.0, which it does not provide:
+     * refused, and GLFW's description names the GLX error. */
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 2);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 0);
+    window = glfwCreateWindow(64, 48, "glfw_window 2.0", NULL, NULL);
+    CHECK(window != NULL, "an OpenGL 2.0 window was refused although %d.%d is provided: %s", major, minor,
+          last_description);
+    if (window)
+        glfwDestroyWindow(window);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 0);
     last_error = 0;
     last_description[0] = 0;
-    window = glfwCreateWindow(64, 48, "glfw_window 2.0", NULL, NULL);
-    if (major >= 2) {
-        CHECK(window != NULL, "an OpenGL 2.0 window was refused although %d.%d is provided: %s", major, minor,
+    window = glfwCreateWindow(64, 48, "glfw_window 3.0", NULL, NULL);
+    if (major >= 3) {
+        CHECK(window != NULL, "an OpenGL 3.0 window was refused although %d.%d is provided: %s", major, minor,
               last_description);
     } else {
-        CHECK(window == NULL, "an OpenGL 2.0 window was created on OpenGL %d.%d", major, minor);
+        CHECK(window == NULL, "an OpenGL 3.0 window was created on OpenGL %d.%d", major, minor);
         CHECK(last_error == GLFW_VERSION_UNAVAILABLE, "error 0x%x (want GLFW_VERSION_UNAVAILABLE)", last_error);
         CHECK(strstr(last_description, "GLXBadFBConfig") != NULL, "the refusal does not name the GLX error: %s",
               last_description);
-        printf("glfw_window: OpenGL 2.0 refused as expected on OpenGL %d.%d\n", major, minor);
+        printf("glfw_window: OpenGL 3.0 refused as expected on OpenGL %d.%d\n", major, minor);
     }
     if (window)
         glfwDestroyWindow(window);

@@ -124,6 +124,8 @@ int main(void)
         int v11[] = {GLX_CONTEXT_MAJOR_VERSION_ARB, 1, GLX_CONTEXT_MINOR_VERSION_ARB, 1, None};
         int v15[] = {GLX_CONTEXT_MAJOR_VERSION_ARB, 1, GLX_CONTEXT_MINOR_VERSION_ARB, 5, None};
         int v20[] = {GLX_CONTEXT_MAJOR_VERSION_ARB, 2, GLX_CONTEXT_MINOR_VERSION_ARB, 0, None};
+        int v21[] = {GLX_CONTEXT_MAJOR_VERSION_ARB, 2, GLX_CONTEXT_MINOR_VERSION_ARB, 1, None};
+        int v30[] = {GLX_CONTEXT_MAJOR_VERSION_ARB, 3, GLX_CONTEXT_MINOR_VERSION_ARB, 0, None};
         int core[] = {GLX_CONTEXT_MAJOR_VERSION_ARB, 3, GLX_CONTEXT_MINOR_VERSION_ARB, 2,
                       GLX_CONTEXT_PROFILE_MASK_ARB, GLX_CONTEXT_CORE_PROFILE_BIT_ARB, None};
         int fwd[] = {GLX_CONTEXT_FLAGS_ARB, GLX_CONTEXT_FORWARD_COMPATIBLE_BIT_ARB, None};
@@ -135,7 +137,15 @@ int main(void)
         CHECK(c != NULL, "1.5 compatibility context refused");
         if (c)
             glXDestroyContext(dpy, c);
-        CHECK(create_attribs(dpy, config, NULL, True, v20) == NULL, "2.0 context created (version is 1.5)");
+        c = create_attribs(dpy, config, NULL, True, v20);
+        CHECK(c != NULL, "2.0 compatibility context refused");
+        if (c)
+            glXDestroyContext(dpy, c);
+        c = create_attribs(dpy, config, NULL, True, v21);
+        CHECK(c != NULL, "2.1 compatibility context refused");
+        if (c)
+            glXDestroyContext(dpy, c);
+        CHECK(create_attribs(dpy, config, NULL, True, v30) == NULL, "3.0 context created (version is 2.1)");
         CHECK(create_attribs(dpy, config, NULL, True, core) == NULL, "3.2 core context created");
         CHECK(create_attribs(dpy, config, NULL, True, fwd) == NULL, "forward-compatible 1.0 context created");
     }

@@ -6,7 +6,7 @@
  * These are the specifications' rules; Mesa 22's GLX (on Xvfb) departs from some of them:
  * it makes a context current without drawables and one current in another thread, accepts
  * glXCreateWindow twice on one window, and reports GLXBadFBConfig for version 9.9; and it
- * provides OpenGL 3.3 core, which tessera (OpenGL 1.5) refuses with GLXBadFBConfig.
+ * provides OpenGL 3.3 core, which tessera (OpenGL 2.1) refuses with GLXBadFBConfig.
  * Xlib's error text names the GLX errors (XGetErrorText gives "GLXBadContext", not a bare
  * number, and Xlib's default error handler prints the name), as with Mesa's libGL.
  * Prints one line per failed check; exit status 0 when all hold.
