@@ -114,7 +114,10 @@ if [[ -n $display ]]; then
     run pyopengl-glfw DISPLAY="$display" -- pyopengl_glfw.py
     # (PyOpenGL loads libglut.so, or libglut.so.N for a single-digit N: Debian 12's freeglut
     # is libglut.so.3.12, so this needs freeglut3-dev's libglut.so.)
-    if ldconfig -p | grep -q 'libglut\.so '; then
+    # (The cache is read whole first: `ldconfig -p | grep -q` under pipefail fails when grep
+    # stops reading before ldconfig has written everything.)
+    linker_cache=$(ldconfig -p)
+    if grep -q 'libglut\.so ' <<<"$linker_cache"; then
         run pyopengl-glut DISPLAY="$display" -- pyopengl_glut.py
     elif [[ ${CI:-} == true ]]; then
         fail "pyopengl-glut: freeglut is not installed (apt-get install freeglut3-dev)"
