@@ -412,7 +412,9 @@ impl LinearFog {
     }
 
     /// Fogs `colors` by the fog coordinates `c` (varying 0 of the program), every lane.
-    #[inline(always)]
+    /// One out-of-line copy at the baseline level rather than one inlined per SIMD level and
+    /// call site: the libraries' size limit (its plain lane loops gain little from AVX2).
+    #[inline(never)]
     fn apply(&self, c: &F32s, colors: &mut [F32s; 4]) {
         // clamp01: `0 < x ? (1 < x ? 1 : x) : 0` (NaN gives 0).
         let clamp01 = |x: f32| {
