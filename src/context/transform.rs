@@ -284,7 +284,7 @@ mod tests {
             assert_eq!(ctx.take_error(), GL_INVALID_ENUM);
         }
         assert_eq!(ctx.state.transform.matrix_mode, GL_TEXTURE);
-        ctx.active_texture(GL_TEXTURE0 + MAX_TEXTURE_COORDS as GLenum);
+        ctx.active_texture(GL_TEXTURE0 + MAX_ACTIVE_TEXTURE_UNITS as GLenum);
         assert_eq!(ctx.take_error(), GL_INVALID_ENUM);
         ctx.active_texture(GL_TEXTURE0 - 1);
         assert_eq!(ctx.take_error(), GL_INVALID_ENUM);
