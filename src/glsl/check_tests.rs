@@ -133,11 +133,9 @@ fn integer_min_max_clamp_abs_sign_in_110_as_mesa() {
     assert_eq!(builtin_ty("k"), ("clamp".into(), "ivec3".into(), "int".into()));
     // Folded as integers: 3 + 1 + 5 + 3 − 1 (no `const` initializers: in 1.10 a built-in
     // call is no constant expression, though its value is folded).
-    assert!(compile(
-        "void main() { const int f = min(7, 3); gl_FragColor = vec4(float(f)); }\n",
-        Stage::Fragment
-    )
-    .is_err());
+    assert!(
+        compile("void main() { const int f = min(7, 3); gl_FragColor = vec4(float(f)); }\n", Stage::Fragment).is_err()
+    );
     assert_eq!(init(&c, "f").constant().unwrap().components(), [Value::I(11)]);
     assert_eq!(init(&c, "g").constant().unwrap().components(), [Value::I(-1), Value::I(1)]);
     // Still no implicit int-to-float conversion in 1.10, nor mixed overloads.

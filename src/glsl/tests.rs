@@ -815,9 +815,15 @@ fn builtin_calls_are_constant_expressions_from_glsl_120_on() {
         compile(&body(110, "  float a[int(abs(-2.0))];")),
         Err("array size must be a constant valued expression".to_string())
     );
-    assert_eq!(compile(&body(110, "  float x = abs(-1.0) + u;\n  const float k = 2.0 * 3.0;\n  float a[int(k)];")), Ok(()));
+    assert_eq!(
+        compile(&body(110, "  float x = abs(-1.0) + u;\n  const float k = 2.0 * 3.0;\n  float a[int(k)];")),
+        Ok(())
+    );
     assert_eq!(compile(&body(110, "  const float k = float(ivec2(3, 4).y) - 1.0;")), Ok(()));
-    assert_eq!(compile(&body(120, "  const float one = abs(-1.0);\n  const vec2 v = vec2(1.0, 2.0 * sqrt(4.0));")), Ok(()));
+    assert_eq!(
+        compile(&body(120, "  const float one = abs(-1.0);\n  const vec2 v = vec2(1.0, 2.0 * sqrt(4.0));")),
+        Ok(())
+    );
     assert_eq!(compile(&body(120, "  float a[int(abs(-2.0))];")), Ok(()));
 }
 
