@@ -3,7 +3,8 @@
  * shader's outputs (those it does not write keep the current values, as in Mesa 22), user
  * clip planes test gl_Position, the fourth raster coordinate is 1/w_c and the raster
  * distance is left as it was (Mesa's draw-module raster position); feedback vertices and
- * selection hits come from the shader's gl_Position, colours and gl_TexCoord[0]. Generic
+ * selection hits come from the shader's gl_Position, colours and gl_TexCoord[0]. The raster
+ * texture coordinates of sets 4-7 come from gl_TexCoord[4..7] as those of sets 0-3 do. Generic
  * attributes (current values) feed the shader. No glColor between glBegin and glEnd here:
  * Mesa's feedback of a shader that does not write gl_FrontColor reports the colour current
  * before the glBegin (its current values are updated after the primitive). */
@@ -157,8 +158,40 @@ int main(void)
         k += 3 + sel[k];
     }
     glUseProgram(0);
+
+    /* The texture coordinate sets past the fixed-function units (4-7) under a shader: the
+     * raster coordinates of a set are what the shader writes to its gl_TexCoord element (as
+     * for sets 0-3), the current ones where it writes none. */
+    GLuint r = program("attribute vec4 extra;\n"
+                       "void main() {\n"
+                       "  gl_Position = ftransform() + extra;\n"
+                       "  gl_TexCoord[5] = vec4(0.5, -2.0, 0.25, 3.0) + gl_MultiTexCoord6 * 0.5 + gl_Vertex.x;\n"
+                       "  gl_TexCoord[7] = gl_MultiTexCoord4.wzyx;\n"
+                       "}\n");
+    for (int set = 4; set < 8; set++)
+        glMultiTexCoord4f(GL_TEXTURE0 + set, set, set + 0.5f, -set, 1.0f / set);
+    glUseProgram(r);
+    glRasterPos3f(0.25f, 0.5f, 0);
+    for (int set = 4; set < 8; set++) {
+        GLfloat v[4];
+        char key[32];
+        glActiveTexture(GL_TEXTURE0 + set);
+        glGetFloatv(GL_CURRENT_RASTER_TEXTURE_COORDS, v);
+        snprintf(key, sizeof key, "sets.tex%d", set);
+        capi_value(key, "%a %a %a %a", v[0], v[1], v[2], v[3]);
+        if (set == 5)
+            capi_check(v[0] == 3.75f && v[1] == 1.5f && v[2] == -2.5f && v[3] == 3.3333333f,
+                       "raster coordinates of set 5: %g %g %g %g, want the shader's 3.75 1.5 -2.5 3.33333",
+                       v[0], v[1], v[2], v[3]);
+        if (set == 6)
+            capi_check(v[0] == 6.0f && v[3] == 1.0f / 6, "raster coordinates of set 6 (not written): %g %g %g %g",
+                       v[0], v[1], v[2], v[3]);
+    }
+    glActiveTexture(GL_TEXTURE0);
+    glUseProgram(0);
     glDeleteProgram(p);
     glDeleteProgram(q);
+    glDeleteProgram(r);
     capi_expect_error(GL_NO_ERROR, "end");
     return capi_finish();
 }

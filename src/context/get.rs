@@ -628,6 +628,29 @@ mod tests {
     }
 
     #[test]
+    fn image_units_past_the_fixed_function_units_have_bindings_only() {
+        let mut ctx = rgba8();
+        assert_eq!(ctx.get_integers(GL_MAX_TEXTURE_IMAGE_UNITS), Some(vec![8]));
+        assert_eq!(ctx.get_integers(GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS), Some(vec![8]));
+        assert_eq!(ctx.get_integers(GL_MAX_VERTEX_TEXTURE_IMAGE_UNITS), Some(vec![0]));
+        let names = ctx.gen_textures(2).unwrap();
+        ctx.active_texture(GL_TEXTURE7);
+        ctx.bind_texture(GL_TEXTURE_2D, names[0]);
+        ctx.active_texture(GL_TEXTURE5);
+        ctx.bind_texture(GL_TEXTURE_2D, names[1]);
+        ctx.tex_parameter(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, &[GL_NEAREST as f32], true);
+        assert_eq!(ctx.take_error(), GL_NO_ERROR);
+        assert_eq!(ctx.get_integers(GL_TEXTURE_BINDING_2D), Some(vec![names[1] as i32]));
+        ctx.active_texture(GL_TEXTURE7);
+        assert_eq!(ctx.get_integers(GL_TEXTURE_BINDING_2D), Some(vec![names[0] as i32]));
+        // Fixed-function enables stop at GL_MAX_TEXTURE_UNITS.
+        assert_eq!(ctx.is_enabled(GL_TEXTURE_2D), GL_FALSE);
+        assert_eq!(ctx.take_error(), GL_INVALID_OPERATION);
+        ctx.active_texture(GL_TEXTURE8);
+        assert_eq!(ctx.take_error(), GL_INVALID_ENUM);
+    }
+
+    #[test]
     fn framebuffer_limits_and_buffers() {
         let mut ctx = context(ColorFormat::Rgb565);
         let int = |ctx: &mut Context, pname| ctx.get_integers(pname).unwrap();

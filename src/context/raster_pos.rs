@@ -32,12 +32,13 @@ use glam::Vec4;
 
 /// Which of the outputs a raster position or feedback vertex reports a GLSL vertex shader
 /// writes: Mesa 22 takes the current value of the attribute for one it does not write.
-/// Only the fixed-function units' `gl_TexCoord` are looked at: the raster coordinates of the
-/// sets past them are their current values under a shader (Mesa takes what the shader wrote).
+/// Every texture coordinate set's `gl_TexCoord` element is looked at (`gl_TexCoord[i]`
+/// travels in varying slot `i` whether or not a fragment shader reads it), so a raster
+/// position takes sets 4–7 from the shader as it does sets 0–3, as Mesa does.
 pub(super) struct ShaderOutputs {
     pub color: bool,
     pub secondary_color: bool,
-    pub tex_coords: [bool; MAX_TEXTURE_UNITS],
+    pub tex_coords: [bool; MAX_TEXTURE_COORDS],
 }
 
 impl ShaderOutputs {

@@ -1031,6 +1031,34 @@ mod tests {
         assert_eq!(ctx.take_error(), GL_NO_ERROR);
     }
 
+    #[test]
+    fn samplers_name_the_eight_texture_image_units() {
+        let mut ctx = context();
+        let shader = ctx.create_shader(GL_FRAGMENT_SHADER);
+        let source = b"uniform sampler2D a;\nuniform sampler1D b;\n\
+            void main() { gl_FragColor = texture2D(a, vec2(0.5)) + texture1D(b, 0.5); }";
+        ctx.shader_source(shader, Ok(vec![source.to_vec()]));
+        ctx.compile_shader(shader);
+        let program = ctx.create_program();
+        ctx.attach_shader(program, shader);
+        ctx.link_program(program);
+        assert_eq!(ctx.get_program(program, GL_LINK_STATUS), Some(1));
+        ctx.use_program(program);
+        let (a, b) = (ctx.uniform_location(program, "a"), ctx.uniform_location(program, "b"));
+        ctx.set_uniform(a, 1, UniformForm::Int(1), &[7]);
+        ctx.set_uniform(b, 1, UniformForm::Int(1), &[4]);
+        assert_eq!(ctx.take_error(), GL_NO_ERROR);
+        assert!(ctx.check_program_samplers());
+        // Past GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS: refused, the value kept.
+        ctx.set_uniform(a, 1, UniformForm::Int(1), &[8]);
+        assert_eq!(ctx.take_error(), GL_INVALID_VALUE);
+        // Two types on unit 7: the draw-time validation refuses it.
+        ctx.set_uniform(b, 1, UniformForm::Int(1), &[7]);
+        assert_eq!(ctx.take_error(), GL_NO_ERROR);
+        assert!(!ctx.check_program_samplers());
+        assert_eq!(ctx.take_error(), GL_INVALID_OPERATION);
+    }
+
     /// The first draw with a new program (issue #20 wants it under 5 ms for a 200-line
     /// shader): the Phong pair of `tests/glsl/phong.{vert,frag}` compiled, linked and drawn
     /// through the GL entry points, each phase timed (printed with `--nocapture`).

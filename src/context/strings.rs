@@ -11,8 +11,9 @@ pub const VENDOR: &str = "tessera project\0";
 pub const RENDERER: &str = concat!("tessera ", env!("CARGO_PKG_VERSION"), " (software rasterizer)\0");
 /// GL_VERSION: 2.1, the highest version whose every feature works (the audit below).
 /// Fixed-function texturing has 4 units (GL_MAX_TEXTURE_UNITS) beside the 8 texture
-/// coordinate sets shaders see (GL_MAX_TEXTURE_COORDS, gl_MaxTextureCoords), as GL 2.0
-/// section 2.7 allows.
+/// coordinate sets shaders see (GL_MAX_TEXTURE_COORDS, gl_MaxTextureCoords) and the 8
+/// texture image units fragment shaders sample (GL_MAX_TEXTURE_IMAGE_UNITS), as GL 2.0
+/// sections 2.7 and 3.11.2 allow.
 pub const VERSION: &str = concat!("2.1 tessera ", env!("CARGO_PKG_VERSION"), "\0");
 
 /// GL_SHADING_LANGUAGE_VERSION: GLSL 1.20, GL 2.1's (1.10 shaders too, by `#version`).
@@ -64,6 +65,7 @@ pub const SHADING_LANGUAGE_VERSION: &str = "1.20\0";
 // | 2.0     | glBlendEquationSeparate                          | works  | capi fragment_ops_blend |
 // | 2.0     | Two-sided colour and point size from vertex shaders (GL_VERTEX_PROGRAM_TWO_SIDE, _POINT_SIZE) | works | capi glsl_vertex |
 // | 2.0     | Texture coordinate sets (GL_MAX_TEXTURE_COORDS 8, the shaders' gl_MaxTextureCoords) beside 4 fixed-function units | works | capi texture_coord_sets |
+// | 2.0     | Texture image units for fragment shaders (GL_MAX_TEXTURE_IMAGE_UNITS 8, combined 8; none for vertex shaders) | works | capi glsl_eight_samplers; piglit gl-2.0-texture-units |
 // | 2.1     | GLSL 1.20 (arrays, implicit conversions, non-square matrices, invariant, centroid) | works | glsl/; piglit GLSL 1.20 |
 // | 2.1     | Non-square uniform matrices (glUniformMatrix2x3fv ...) | works | capi shader_uniforms |
 // | 2.1     | Pixel buffer objects                             | works  | see GL_ARB_pixel_buffer_object below |

@@ -134,9 +134,10 @@ fn wrap(e: GLenum) -> Wrap {
 impl Context {
     /// Whether glTexEnv / glGetTexEnv of (`target`, `pname`) may address the active unit
     /// (else GL_INVALID_OPERATION, before any enum check, as in Mesa): the environment and
-    /// the level-of-detail bias exist on the fixed-function units (GL_MAX_TEXTURE_UNITS,
-    /// which is GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS too), GL_COORD_REPLACE on every texture
-    /// coordinate set (GL 2.0 sections 3.3.1 and 3.8.13).
+    /// the level-of-detail bias exist on the fixed-function units (GL_MAX_TEXTURE_UNITS; the
+    /// image units past them have bindings and texture parameters only, their bias 0),
+    /// GL_COORD_REPLACE on every texture coordinate set (GL 2.0 sections 3.3.1 and 3.8.13).
+    /// Mesa accepts the environment on all of its 192 combined image units.
     fn check_env_unit(&mut self, target: GLenum, pname: GLenum) -> bool {
         let coordinate_state = (target, pname) == (GL_POINT_SPRITE, GL_COORD_REPLACE);
         if self.state.texture.active_unit >= MAX_TEXTURE_UNITS && !coordinate_state {

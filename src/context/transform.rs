@@ -21,15 +21,15 @@
 //! - glMatrixMode(GL_TEXTUREi) and glMatrixMode(GL_MATRIXi_ARB) are GL_INVALID_ENUM. Mesa 22
 //!   silently ignores the former (a bug) and accepts the latter (ARB_vertex_program, which
 //!   tessera does not have).
-//! - glActiveTexture accepts the texture coordinate sets (GL_MAX_TEXTURE_COORDS, which is
-//!   larger than GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS here); Mesa accepts all of its 192
-//!   combined image units.
+//! - glActiveTexture accepts units up to the larger of GL_MAX_TEXTURE_COORDS and
+//!   GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS (GL 2.0 section 2.7), 8 and 8 here; Mesa accepts all
+//!   of its 192 combined image units.
 //! - A NULL matrix or plane pointer is ignored (Mesa ignores NULL matrices but crashes on a
 //!   NULL plane).
 use super::matrix::{transform_row_vector, transpose, StackId};
 use super::Context;
 use crate::gl::enums::*;
-use crate::gl::limits::{MAX_CLIP_PLANES, MAX_TEXTURE_COORDS};
+use crate::gl::limits::{MAX_ACTIVE_TEXTURE_UNITS, MAX_CLIP_PLANES};
 use crate::gl::types::GLenum;
 
 impl Context {
@@ -60,7 +60,7 @@ impl Context {
             return;
         }
         match texture.checked_sub(GL_TEXTURE0) {
-            Some(unit) if (unit as usize) < MAX_TEXTURE_COORDS => self.state.texture.active_unit = unit as usize,
+            Some(unit) if (unit as usize) < MAX_ACTIVE_TEXTURE_UNITS => self.state.texture.active_unit = unit as usize,
             _ => self.error(GL_INVALID_ENUM),
         }
     }
@@ -284,7 +284,7 @@ mod tests {
             assert_eq!(ctx.take_error(), GL_INVALID_ENUM);
         }
         assert_eq!(ctx.state.transform.matrix_mode, GL_TEXTURE);
-        ctx.active_texture(GL_TEXTURE0 + MAX_TEXTURE_COORDS as GLenum);
+        ctx.active_texture(GL_TEXTURE0 + MAX_ACTIVE_TEXTURE_UNITS as GLenum);
         assert_eq!(ctx.take_error(), GL_INVALID_ENUM);
         ctx.active_texture(GL_TEXTURE0 - 1);
         assert_eq!(ctx.take_error(), GL_INVALID_ENUM);

@@ -14,6 +14,19 @@ pub const MAX_TEXTURE_UNITS: usize = 4;
 /// arrays, texture matrices and texgen state exist for these; the first
 /// [`MAX_TEXTURE_UNITS`] also have fixed-function texturing.
 pub const MAX_TEXTURE_COORDS: usize = 8;
+/// Texture image units a fragment shader's samplers may name (GL_MAX_TEXTURE_IMAGE_UNITS,
+/// and GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS: vertex shaders have none). Each has texture
+/// bindings and the parameters of its textures; the first [`MAX_TEXTURE_UNITS`] also have
+/// fixed-function texturing (enables, environment).
+pub const MAX_TEXTURE_IMAGE_UNITS: usize = 8;
+/// The units glActiveTexture selects: the larger of [`MAX_TEXTURE_COORDS`] and
+/// [`MAX_TEXTURE_IMAGE_UNITS`] (GL 2.0 section 2.7). The per-unit state (texture bindings,
+/// coordinate state, texture matrices) is kept for each of them.
+pub const MAX_ACTIVE_TEXTURE_UNITS: usize =
+    if MAX_TEXTURE_COORDS > MAX_TEXTURE_IMAGE_UNITS { MAX_TEXTURE_COORDS } else { MAX_TEXTURE_IMAGE_UNITS };
+// The per-unit state arrays are sized by MAX_TEXTURE_COORDS: every image unit must be a
+// coordinate set too.
+const _: () = assert!(MAX_TEXTURE_IMAGE_UNITS <= MAX_TEXTURE_COORDS);
 /// GL_MAX_VERTEX_ATTRIBS: generic vertex attributes (GL 2.0), as Mesa's 16.
 pub const MAX_VERTEX_ATTRIBS: usize = 16;
 /// Largest point size and line width (GL_POINT_SIZE_RANGE / GL_LINE_WIDTH_RANGE maximum).

@@ -265,8 +265,10 @@ pub struct Limits {
 
 impl Limits {
     /// What tessera's GL reports (`crate::gl::limits`; glGet answers the GL_MAX_* pnames of
-    /// GL 2.0 from this): 4 texture units, 6 clip planes. No texture image units for vertex
-    /// shaders (GL 2.0 allows 0). 8 texture coordinate sets (GL_MAX_TEXTURE_COORDS, as on
+    /// GL 2.0 from this): 4 fixed-function texture units, 8 texture image units for fragment
+    /// shaders (GL_MAX_TEXTURE_IMAGE_UNITS, the combined count too), 6 clip planes. No
+    /// texture image units for vertex shaders (GL 2.0 allows 0: their lookups are not
+    /// wired to textures). 8 texture coordinate sets (GL_MAX_TEXTURE_COORDS, as on
     /// Mesa; piglit's shaders index `gl_TexCoord[7]` without asking): sets 4..7 have current
     /// values, arrays, texture matrices and texgen state but no fixed-function texturing
     /// (GL 2.0 section 2.7; GLSL 1.20 section 7.4 wants gl_MaxTextureCoords equal to it).
@@ -275,7 +277,8 @@ impl Limits {
     /// carries ([`super::varyings`]; Mesa's is 128).
     pub const TESSERA: Limits = {
         use crate::gl::limits::{
-            MAX_CLIP_PLANES, MAX_DRAW_BUFFERS, MAX_LIGHTS, MAX_TEXTURE_COORDS, MAX_TEXTURE_UNITS, MAX_VERTEX_ATTRIBS,
+            MAX_CLIP_PLANES, MAX_DRAW_BUFFERS, MAX_LIGHTS, MAX_TEXTURE_COORDS, MAX_TEXTURE_IMAGE_UNITS,
+            MAX_TEXTURE_UNITS, MAX_VERTEX_ATTRIBS,
         };
         Limits {
             max_lights: MAX_LIGHTS as i32,
@@ -286,8 +289,8 @@ impl Limits {
             max_vertex_uniform_components: 16384,
             max_varying_floats: super::varyings::MAX_VARYING_FLOATS as i32,
             max_vertex_texture_image_units: 0,
-            max_combined_texture_image_units: MAX_TEXTURE_UNITS as i32,
-            max_texture_image_units: MAX_TEXTURE_UNITS as i32,
+            max_combined_texture_image_units: MAX_TEXTURE_IMAGE_UNITS as i32,
+            max_texture_image_units: MAX_TEXTURE_IMAGE_UNITS as i32,
             max_fragment_uniform_components: 16384,
             max_draw_buffers: MAX_DRAW_BUFFERS as i32,
         }

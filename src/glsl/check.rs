@@ -63,6 +63,11 @@ struct Checker<'a> {
     function_name: String,
     loops: u32,
     depth: usize,
+    /// Set when a call of a built-in function with constant arguments is folded: in GLSL
+    /// 1.10 such a call is no constant expression (1.10 section 5.10 lists no function
+    /// calls; 1.20 adds the built-ins), so a `const` initializer or an array size holding
+    /// one is refused there, as Mesa refuses it. Its value is folded in either version.
+    folded_builtin_call: bool,
 }
 
 /// Checks a parsed shader for `stage`. `None` when the log holds an error.
@@ -83,6 +88,7 @@ pub fn check(parsed: &super::Parsed, stage: Stage, limits: &Limits, log: &mut In
         function_name: String::new(),
         loops: 0,
         depth: 0,
+        folded_builtin_call: false,
     };
     c.declare_builtins();
     c.scopes.push(HashMap::new());
@@ -246,16 +252,28 @@ impl<'a> Checker<'a> {
 
     // ------------------------------------------------------------ types
 
+    /// `e` checked, and whether it is a constant expression of this version: folded to a
+    /// constant, and in GLSL 1.10 without a built-in call folded into it
+    /// ([`Checker::folded_builtin_call`]).
+    fn constant_expr(&mut self, e: &ast::Expr) -> (R<Expr>, bool) {
+        let outer = std::mem::take(&mut self.folded_builtin_call);
+        let checked = self.expr(e);
+        let calls = std::mem::replace(&mut self.folded_builtin_call, outer) && self.version < 120;
+        let constant = checked.as_ref().is_some_and(|e| e.constant().is_some()) && !calls;
+        (checked, constant)
+    }
+
     fn array_size(&mut self, size: &ast::ArraySize) -> R<Option<u32>> {
         let ast::ArraySize::Sized(e) = size else { return Some(None) };
         let pos = e.pos;
-        let e = self.expr(e)?;
+        let (e, constant) = self.constant_expr(e);
+        let e = e?;
         if !matches!(e.ty, Type::Scalar(Scalar::Int)) {
             let what = if e.ty.is_scalar() { "integer" } else { "scalar" };
             self.error(pos, format!("array size must be {what} type"));
             return None;
         }
-        let Some(Constant::Basic(v)) = e.constant() else {
+        let (true, Some(Constant::Basic(v))) = (constant, e.constant()) else {
             self.error(pos, "array size must be a constant valued expression");
             return None;
         };
@@ -1207,6 +1225,7 @@ impl<'a> Checker<'a> {
                     args.into_iter().zip(&s.params).filter_map(|(a, p)| self.convert(a, p).ok()).collect();
                 let consts: Option<Vec<&Constant>> = out.iter().map(|a| a.constant()).collect();
                 if let Some(c) = consts.and_then(|cs| fold::builtin(s.name, &s.ret, &s.params, &cs)) {
+                    self.folded_builtin_call = true;
                     return Some(Self::constant(s.ret.clone(), c, pos));
                 }
                 return Some(Expr { ty: s.ret.clone(), kind: ExprKind::Builtin(s.name, out), pos });
@@ -1373,6 +1392,7 @@ impl<'a> Checker<'a> {
             return None;
         }
         let mut failed = false;
+        let mut init_constant = false;
         let init = match &d.initializer {
             None => None,
             Some(e) => {
@@ -1387,8 +1407,9 @@ impl<'a> Checker<'a> {
                     self.error(pos, "uniform initializers require GLSL 1.20");
                     failed = true;
                 }
-                let e = self.expr(e);
+                let (e, constant) = self.constant_expr(e);
                 failed |= e.is_none();
+                init_constant = constant;
                 e
             }
         };
@@ -1434,7 +1455,7 @@ impl<'a> Checker<'a> {
                 None => {
                     self.error(pos, format!("const declaration of `{name}' must be initialized"));
                 }
-                Some(i) => match i.constant() {
+                Some(i) => match i.constant().filter(|_| init_constant) {
                     Some(c) => constant = Some(c.clone()),
                     None => {
                         self.error(

@@ -785,6 +785,48 @@ fn piglit_glsl_110_120_execution_shaders_parse() {
     assert!(failures.is_empty(), "{} shaders refused:\n{}", failures.len(), failures.join(""));
 }
 
+/// GLSL 1.10's constant expressions have no function calls (1.10 section 5.10; 1.20 adds
+/// the built-ins): a built-in call in a `const` initializer or an array size is refused in
+/// 1.10, as Mesa refuses it (piglit's glslparsertest/glsl2/const-builtin-110.frag), wherever
+/// it sits in the expression, and accepted in 1.20. A built-in call elsewhere in 1.10 (an
+/// ordinary initializer, beside a `const` declaration) compiles and leaves the next `const`
+/// declaration alone.
+#[test]
+fn builtin_calls_are_constant_expressions_from_glsl_120_on() {
+    let compile = |source: &str| {
+        let mut log = InfoLog::default();
+        let checked = compile_shader(source, Stage::Fragment, &Options::default(), &mut log);
+        // The message without its position.
+        let message = |e: String| e.split_once("error: ").map_or(e.clone(), |(_, m)| m.to_string());
+        checked.map(|_| ()).ok_or_else(|| message(log.first_error().expect("an error").to_string()))
+    };
+    let body = |version: u32, statements: &str| {
+        format!("#version {version}\nuniform float u;\nvoid main() {{\n{statements}\n  gl_FragColor = vec4(u);\n}}\n")
+    };
+    assert_eq!(
+        compile(&body(110, "  const float one = abs(-1.0);")),
+        Err("initializer of const variable `one' must be a constant expression".to_string())
+    );
+    assert_eq!(
+        compile(&body(110, "  const vec2 v = vec2(1.0, 2.0 * sqrt(4.0));")),
+        Err("initializer of const variable `v' must be a constant expression".to_string())
+    );
+    assert_eq!(
+        compile(&body(110, "  float a[int(abs(-2.0))];")),
+        Err("array size must be a constant valued expression".to_string())
+    );
+    assert_eq!(
+        compile(&body(110, "  float x = abs(-1.0) + u;\n  const float k = 2.0 * 3.0;\n  float a[int(k)];")),
+        Ok(())
+    );
+    assert_eq!(compile(&body(110, "  const float k = float(ivec2(3, 4).y) - 1.0;")), Ok(()));
+    assert_eq!(
+        compile(&body(120, "  const float one = abs(-1.0);\n  const vec2 v = vec2(1.0, 2.0 * sqrt(4.0));")),
+        Ok(())
+    );
+    assert_eq!(compile(&body(120, "  float a[int(abs(-2.0))];")), Ok(()));
+}
+
 /// Times the front end on a 100 000-line shader and a 200-line one (run by hand:
 /// `cargo test --release --lib glsl::tests::front_end_timing -- --ignored --nocapture`).
 #[test]
