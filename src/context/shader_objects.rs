@@ -141,6 +141,15 @@ impl Executable {
                 return Ok(None);
             }
             let lowered = lower(&units).map_err(|e| format!("error: {e}\n"))?;
+            // GL 2.0 section 2.15.3: a stage may use no more samplers than it has image
+            // units (Mesa's linker says it in these words).
+            let (name, units_of_stage) = match stage {
+                Stage::Vertex => ("vertex", crate::glsl::Limits::TESSERA.max_vertex_texture_image_units),
+                Stage::Fragment => ("fragment", crate::glsl::Limits::TESSERA.max_texture_image_units),
+            };
+            if lowered.samplers.len() > units_of_stage as usize {
+                return Err(format!("error: Too many {name} shader texture samplers\n"));
+            }
             validate(&lowered.program).map_err(|e| format!("error: internal: invalid program: {e:?}\n"))?;
             super::programs::print_linked(stage, &lowered.program);
             let compiled = Compiled::new(&lowered.program);
@@ -1057,6 +1066,40 @@ mod tests {
         assert_eq!(ctx.take_error(), GL_NO_ERROR);
         assert!(!ctx.check_program_samplers());
         assert_eq!(ctx.take_error(), GL_INVALID_OPERATION);
+    }
+
+    /// Links `source` as the only shader of `kind`; the link status and the info log.
+    fn link_one(ctx: &mut Context, kind: GLenum, source: &str) -> (bool, String) {
+        let shader = ctx.create_shader(kind);
+        ctx.shader_source(shader, Ok(vec![source.as_bytes().to_vec()]));
+        ctx.compile_shader(shader);
+        assert_eq!(ctx.get_shader(shader, GL_COMPILE_STATUS), Some(1), "{source}");
+        let program = ctx.create_program();
+        ctx.attach_shader(program, shader);
+        ctx.link_program(program);
+        let linked = ctx.get_program(program, GL_LINK_STATUS) == Some(1);
+        (linked, ctx.program_info_log(program).unwrap_or_default())
+    }
+
+    #[test]
+    fn a_stage_uses_no_more_samplers_than_its_image_units() {
+        let mut ctx = context();
+        let fragment = |n: usize| {
+            let sum: Vec<String> = (0..n).map(|i| format!("texture2D(t[{i}], vec2(0.5))")).collect();
+            format!("uniform sampler2D t[{n}];\nvoid main() {{ gl_FragColor = {}; }}", sum.join(" + "))
+        };
+        assert_eq!(link_one(&mut ctx, GL_FRAGMENT_SHADER, &fragment(8)), (true, String::new()));
+        let (linked, log) = link_one(&mut ctx, GL_FRAGMENT_SHADER, &fragment(9));
+        assert!(!linked && log.contains("Too many fragment shader texture samplers"), "{log}");
+        // An unused ninth sampler is not active and does not count.
+        let unused = "uniform sampler2D t[9];\nvoid main() { gl_FragColor = texture2D(t[0], vec2(0.5)); }";
+        assert!(link_one(&mut ctx, GL_FRAGMENT_SHADER, unused).0);
+        // GL_MAX_VERTEX_TEXTURE_IMAGE_UNITS is 0: a vertex shader that samples cannot link.
+        let vertex = "uniform sampler2D t;\n\
+            void main() { gl_Position = texture2DLod(t, vec2(0.5), 0.0); }";
+        let (linked, log) = link_one(&mut ctx, GL_VERTEX_SHADER, vertex);
+        assert!(!linked && log.contains("Too many vertex shader texture samplers"), "{log}");
+        assert_eq!(ctx.take_error(), GL_NO_ERROR);
     }
 
     /// The first draw with a new program (issue #20 wants it under 5 ms for a 200-line
