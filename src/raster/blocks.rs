@@ -300,6 +300,34 @@ fn sub_blocks<T: Lane>(level: Supported, hi: [T; 3], lo: [T; 3], ab: [(T, T); 3]
     (T::inside(level, hi, &s), T::inside(level, lo, &s))
 }
 
+/// Bit `i` of each nibble set for the lanes of that row (`0b0101` → rows 0 and 2 of a
+/// block: `0x0f0f`).
+const NIBBLES: [u16; 16] = {
+    let mut t = [0u16; 16];
+    let mut i = 0;
+    while i < 16 {
+        let mut r = 0;
+        while r < 4 {
+            if i & (1 << r) != 0 {
+                t[i] |= 0xf << (4 * r);
+            }
+            r += 1;
+        }
+        i += 1;
+    }
+    t
+};
+
+/// The columns and rows of the non-empty `area` from `(x, y)` (fewer than 32 of each, from
+/// the area's first aligned block) as bit runs: bit `i` of the first is column `x + i` inside
+/// the area, of the second row `y + i`. Four bits are one block's columns (or rows), the
+/// runs end with the area, so blocks past it have none.
+#[inline(always)]
+fn area_runs(area: Rect, x: i32, y: i32) -> (u32, u32) {
+    let run = |lo: i32, hi: i32| (1u32 << hi) - (1u32 << lo);
+    (run(area.x0 - x, area.x1 - x), run(area.y0 - y, area.y1 - y))
+}
+
 /// The 16 sub-blocks of side `size` of the block at `(x, y)` that meet `area`.
 #[inline(always)]
 fn area_mask(area: Rect, x: i32, y: i32, size: i32) -> u16 {
@@ -429,21 +457,34 @@ impl<'a, T: Lane, F: FnMut(i32, i32, u16), G: FnMut(Rect)> Walker<'a, T, F, G> {
     /// An area within up to 6 aligned 4×4 blocks from its first (a small triangle's): each
     /// of its blocks tested at once as in [`Walker::one_block`]. For so few blocks the
     /// 16×16 level's bounds on each edge ([`Walker::block16`]) cost more than they save.
+    /// The edges step from block to block by adds (the same exact integers as the corner
+    /// plus multiples of the steps), and the area's cut of each block comes from its columns
+    /// and rows as bit runs made once ([`area_runs`]), not from [`rect_mask`] per block.
     #[inline(always)]
     fn few_blocks(&mut self) {
         let area = self.area;
         let (x, y) = (area.x0 & !3, area.y0 & !3);
-        let base = self.corner(x, y);
         let s = map3(self.ab, |(a, b)| steps(a, b));
         let ab4 = self.ab_shl(2);
-        let (columns, rows) = (1 + (area.x1 - 1 - x) / 4, 1 + (area.y1 - 1 - y) / 4);
-        for r in 0..rows {
-            for c in 0..columns {
-                let b: [T; 3] = index3(|k| base[k] + ab4[k].0.times(c) + ab4[k].1.times(r));
-                let (bx, by) = (x + 4 * c, y + 4 * r);
-                let mask = T::inside(self.level, b, &s) & rect_mask(area, bx, by);
+        let (columns, rows) = area_runs(area, x, y);
+        let mut row_base = self.corner(x, y);
+        let mut by = y;
+        let mut row_bits = rows;
+        while row_bits != 0 {
+            // The row's covered lines as whole nibbles.
+            let row_mask = NIBBLES[(row_bits & 0xf) as usize];
+            let mut base = row_base;
+            let (mut bx, mut column_bits) = (x, columns);
+            while column_bits != 0 {
+                let mask = T::inside(self.level, base, &s) & row_mask & ((column_bits & 0xf) as u16 * 0x1111);
                 self.emit_masked(bx, by, mask);
+                base = index3(|k| base[k] + ab4[k].0);
+                bx += 4;
+                column_bits >>= 4;
             }
+            row_base = index3(|k| row_base[k] + ab4[k].1);
+            by += 4;
+            row_bits >>= 4;
         }
     }
 
