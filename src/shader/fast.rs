@@ -69,8 +69,8 @@
 use super::exec::{self, f, fu, map1, map2, Io, LodLanes, SampleRequest, Word, LANES, MAX_LOOP_ITERATIONS};
 use super::ir::{Axis, Program};
 use super::lower::{
-    binary_lane, dot_lane, lower, mad_lane, op_writes, split_prologue, unary_lane, Code, Cond, GroupKind, Node, Op, Wide,
-    WideLod, R,
+    binary_lane, dot_lane, lower, mad_lane, op_writes, split_prologue, unary_lane, Code, Cond, GroupKind, Node, Op,
+    Wide, WideLod, R,
 };
 
 #[inline(always)]
@@ -320,8 +320,11 @@ fn dot4(a: [&Word; 4], b: [&Word; 4]) -> Word {
 /// `thunk` (the closure-threaded design's closure per operation) are both made from it.
 macro_rules! operations {
     (|$st:ident, $io:ident, $wide:ident| { $( $pat:pat => $body:expr, )* }) => {
+        /// One operation; `GROUPS`: whether the caller's code holds groups (only
+        /// [`Interpreter`]'s: the copies of the bound forms and the prologue, which never see
+        /// one, then carry no [`Registers::group`]: library size).
         #[inline(always)]
-        fn step(op: &Op, $st: &mut Registers, $io: &mut Io<'_>, $wide: &[Wide]) {
+        fn step<const GROUPS: bool>(op: &Op, $st: &mut Registers, $io: &mut Io<'_>, $wide: &[Wide]) {
             match *op {
                 $( $pat => $body, )*
             }
@@ -333,6 +336,7 @@ macro_rules! operations {
 
         #[cfg(test)]
         fn thunk(op: Op) -> Thunk {
+            const GROUPS: bool = true;
             match op {
                 $( $pat => Box::new(move |$st: &mut Registers, $io: &mut Io<'_>, $wide: &[Wide]| {
                     let _ = (&$io, &$wide);
@@ -426,7 +430,13 @@ operations!(|st, io, wide| {
         }
     },
     Op::Texture(i) => st.texture(io, &wide[i as usize]),
-    Op::Group(i) => st.group(&wide[i as usize]),
+    Op::Group(i) => {
+        if GROUPS {
+            st.group(&wide[i as usize])
+        } else {
+            unreachable!("a group outside the interpreter's code")
+        }
+    },
     Op::MatRow { d, m, v } => {
         let [m0, m1, m2, m3] = m.map(|r| f(st.s(r)));
         let (v0, v1, v2, v3) = (st.get(v[0]), st.get(v[1]), st.get(v[2]), st.get(v[3]));
@@ -540,7 +550,7 @@ fn nodes<S: Straight>(
 fn run_prologue(prologue: &[Op], registers: &mut Registers, uniforms: &[u32], wide: &[Wide]) {
     let mut io = Io { inputs: &[], uniforms, outputs: &mut [], textures: &exec::NoTextures };
     for op in prologue {
-        step(op, registers, &mut io, wide);
+        step::<false>(op, registers, &mut io, wide);
     }
 }
 
@@ -578,7 +588,7 @@ impl Straight for Interpreter {
         let wide = &code.wide[..];
         crate::simd::per_level!({
             for op in ops {
-                step(op, st, io, wide);
+                step::<true>(op, st, io, wide);
             }
         })
     }
@@ -723,7 +733,7 @@ impl Compiled {
         let (ops, wide) = (&bound.ops[..], &self.rest.wide[..]);
         crate::simd::per_level!({
             for op in ops {
-                step(op, st, &mut io, wide);
+                step::<false>(op, st, &mut io, wide);
             }
         })
     }
@@ -1037,7 +1047,7 @@ impl Bound {
             registers.masked = masked;
             for op in &self.ops[start as usize..end as usize] {
                 match op {
-                    BOp::Op(op) => step(op, registers, io, wide),
+                    BOp::Op(op) => step::<false>(op, registers, io, wide),
                     BOp::MulClamp { d, a, b, lo, hi } => {
                         let mut st = registers.view();
                         let (a, b, lo, hi) = (st.get(*a), st.get(*b), st.get(*lo), st.get(*hi));

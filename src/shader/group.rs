@@ -139,7 +139,14 @@ mod tests {
         );
         assert_eq!(
             grouped.wide[2],
-            Wide::Group { kind: GroupKind::Select, n: 2, d: [9, 10, 0, 0], a: [2, 3, 0, 0], b: [3, 2, 0, 0], c: [1, 1, 0, 0] }
+            Wide::Group {
+                kind: GroupKind::Select,
+                n: 2,
+                d: [9, 10, 0, 0],
+                a: [2, 3, 0, 0],
+                b: [3, 2, 0, 0],
+                c: [1, 1, 0, 0]
+            }
         );
     }
 }
