@@ -52,10 +52,10 @@
 //! (The last row: the interpreter's own instructions and its callees per call, 256², release
 //! build without LTO, AVX2, callgrind, not under `GlslShading::run`: the build had no symbols;
 //! the whole process ran 3.2 % fewer instructions; at 1024², 2 threads, on a loaded machine,
-//! phong's best of 6 frames went from 150 to 142 ms, llvmpipe's 56.) A group's loop reads its registers from
-//! the file's first [`FILE`] words as an array, by a byte: without that, and with the file
-//! reached through `self` (the compiler reloaded its pointer and length after every store),
-//! groups saved 1.5 %, not 8 %.
+//! phong's best of 6 frames went from 150 to 142 ms, llvmpipe's 56.) A group's loop reads
+//! its registers from the file's first [`FILE`] words as an array, by a byte: without that,
+//! and with the file reached through `self` (the compiler reloaded its pointer and length
+//! after every store), groups saved 1.5 %, not 8 %.
 //!
 //! The unrolled iterations reassigned the same registers (the light's position, products,
 //! results), so their uniform values stayed in the per-block run as moves instead of the
