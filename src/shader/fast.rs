@@ -47,6 +47,15 @@
 //! |---|---|---|---|---|
 //! | unrolled as is | 506 (260 scalar moves) | 14 940 | 2 800 | 16 410 |
 //! | [`super::flatten`]'s single writes and common instructions, vector exp2 without conversions | 205 | 7 370 | 1 900 | 8 500 |
+//! | [`super::group`]'s groups (a `vec4`'s adds, subs, muls, selects: one dispatch each four) | 205 (≈ 126 per block → 66) | 6 090 (6 630 before) | | |
+//!
+//! (The last row: the interpreter's own instructions and its callees per call, 256², release
+//! build without LTO, AVX2, callgrind, not under `GlslShading::run`: the build had no symbols;
+//! the whole process ran 3.2 % fewer instructions; at 1024², 2 threads, on a loaded machine,
+//! phong's best of 6 frames went from 150 to 142 ms, llvmpipe's 56.) A group's loop reads
+//! its registers from the file's first [`FILE`] words as an array, by a byte: without that,
+//! and with the file reached through `self` (the compiler reloaded its pointer and length
+//! after every store), groups saved 1.5 %, not 8 %.
 //!
 //! The unrolled iterations reassigned the same registers (the light's position, products,
 //! results), so their uniform values stayed in the per-block run as moves instead of the
@@ -61,8 +70,8 @@
 use super::exec::{self, f, fu, map1, map2, Io, LodLanes, SampleRequest, Word, LANES, MAX_LOOP_ITERATIONS};
 use super::ir::{Axis, Program};
 use super::lower::{
-    binary_lane, dot_lane, lower, mad_lane, op_writes, split_prologue, unary_lane, Code, Cond, Node, Op, Wide, WideLod,
-    R,
+    binary_lane, dot_lane, lower, mad_lane, op_writes, split_prologue, unary_lane, Code, Cond, GroupKind, Node, Op,
+    Wide, WideLod, R,
 };
 
 #[inline(always)]
@@ -202,7 +211,7 @@ impl Registers {
                     self.put_masked(dst[k], &out[k]);
                 }
             }
-            Wide::MatVec { .. } => unreachable!("not a texture lookup"),
+            Wide::MatVec { .. } | Wide::Group { .. } => unreachable!("not a texture lookup"),
         }
     }
 
@@ -222,6 +231,59 @@ impl Registers {
                 ),
             };
             self.put(d[row], value);
+        }
+    }
+
+    /// A [`Wide::Group`]: its operations in order, one loop per kind. The file's first
+    /// [`FILE`] words as a local array, indexed by a byte ([`super::group`] groups registers
+    /// below [`FILE`] only), and the mask flag read once: through `self`, every store made
+    /// the compiler reload the file's pointer and length and the flag, and each read and
+    /// write had its bounds check (a group cost about what its operations did one by one).
+    #[inline(always)]
+    fn group(&mut self, wide: &Wide) {
+        let Wide::Group { kind, n, d, a, b, c } = wide else { unreachable!("a group of operations") };
+        let n = usize::from(*n).min(4);
+        let Registers { w, mask, masked, .. } = self;
+        let masked = *masked;
+        let w: &mut [Word; FILE] = (&mut w[..FILE]).try_into().expect("a file of at least FILE words");
+        let at = |r: R| usize::from(r as u8);
+        match kind {
+            GroupKind::Add => {
+                for k in 0..n {
+                    let v = map2(&w[at(a[k])], &w[at(b[k])], |x, y| fu(f(x) + f(y)));
+                    put_word(&mut w[at(d[k])], &v, mask, masked);
+                }
+            }
+            GroupKind::Sub => {
+                for k in 0..n {
+                    let v = map2(&w[at(a[k])], &w[at(b[k])], |x, y| fu(f(x) - f(y)));
+                    put_word(&mut w[at(d[k])], &v, mask, masked);
+                }
+            }
+            GroupKind::Mul => {
+                for k in 0..n {
+                    let v = map2(&w[at(a[k])], &w[at(b[k])], |x, y| fu(f(x) * f(y)));
+                    put_word(&mut w[at(d[k])], &v, mask, masked);
+                }
+            }
+            GroupKind::Select => {
+                for k in 0..n {
+                    let v = map3(&w[at(c[k])], &w[at(a[k])], &w[at(b[k])], |c, x, y| if c != 0 { x } else { y });
+                    put_word(&mut w[at(d[k])], &v, mask, masked);
+                }
+            }
+        }
+    }
+}
+
+/// Writes `v` to `dst`, under `mask` when `masked`.
+#[inline(always)]
+fn put_word(dst: &mut Word, v: &Word, mask: &Word, masked: bool) {
+    if !masked {
+        *dst = *v;
+    } else {
+        for i in 0..LANES {
+            dst[i] = (v[i] & mask[i]) | (dst[i] & !mask[i]);
         }
     }
 }
@@ -259,8 +321,11 @@ fn dot4(a: [&Word; 4], b: [&Word; 4]) -> Word {
 /// `thunk` (the closure-threaded design's closure per operation) are both made from it.
 macro_rules! operations {
     (|$st:ident, $io:ident, $wide:ident| { $( $pat:pat => $body:expr, )* }) => {
+        /// One operation; `GROUPS`: whether the caller's code holds groups (only
+        /// [`Interpreter`]'s: the copies of the bound forms and the prologue, which never see
+        /// one, then carry no [`Registers::group`]: library size).
         #[inline(always)]
-        fn step(op: &Op, $st: &mut Registers, $io: &mut Io<'_>, $wide: &[Wide]) {
+        fn step<const GROUPS: bool>(op: &Op, $st: &mut Registers, $io: &mut Io<'_>, $wide: &[Wide]) {
             match *op {
                 $( $pat => $body, )*
             }
@@ -272,6 +337,7 @@ macro_rules! operations {
 
         #[cfg(test)]
         fn thunk(op: Op) -> Thunk {
+            const GROUPS: bool = true;
             match op {
                 $( $pat => Box::new(move |$st: &mut Registers, $io: &mut Io<'_>, $wide: &[Wide]| {
                     let _ = (&$io, &$wide);
@@ -365,6 +431,13 @@ operations!(|st, io, wide| {
         }
     },
     Op::Texture(i) => st.texture(io, &wide[i as usize]),
+    Op::Group(i) => {
+        if GROUPS {
+            st.group(&wide[i as usize])
+        } else {
+            unreachable!("a group outside the interpreter's code")
+        }
+    },
     Op::MatRow { d, m, v } => {
         let [m0, m1, m2, m3] = m.map(|r| f(st.s(r)));
         let (v0, v1, v2, v3) = (st.get(v[0]), st.get(v[1]), st.get(v[2]), st.get(v[3]));
@@ -478,12 +551,13 @@ fn nodes<S: Straight>(
 fn run_prologue(prologue: &[Op], registers: &mut Registers, uniforms: &[u32], wide: &[Wide]) {
     let mut io = Io { inputs: &[], uniforms, outputs: &mut [], textures: &exec::NoTextures };
     for op in prologue {
-        step(op, registers, &mut io, wide);
+        step::<false>(op, registers, &mut io, wide);
     }
 }
 
 fn run_tree<S: Straight>(s: &S, code: &Code, st: &mut Registers, io: &mut Io<'_>, lanes: u16) -> u16 {
-    st.w.resize(code.registers, [0; LANES]);
+    // At least [`FILE`] words: a group's ([`Registers::group`]).
+    st.w.resize(code.registers.max(FILE), [0; LANES]);
     for &r in &code.zeroed {
         st.w[r as usize] = [0; LANES];
     }
@@ -500,6 +574,10 @@ pub struct Compiled {
     /// their uniforms ([`Compiled::prepare`]).
     prologue: Vec<Op>,
     rest: Code,
+    /// `code` and `rest` as the control tree runs them: grouped ([`super::group`]; the
+    /// bound forms are made from `rest`, whose single operations their fusions look for).
+    run_code: Code,
+    run_rest: Code,
 }
 
 struct Interpreter;
@@ -511,7 +589,7 @@ impl Straight for Interpreter {
         let wide = &code.wide[..];
         crate::simd::per_level!({
             for op in ops {
-                step(op, st, io, wide);
+                step::<true>(op, st, io, wide);
             }
         })
     }
@@ -522,12 +600,18 @@ impl Compiled {
     pub fn new(program: &Program) -> Compiled {
         let code = lower(&super::flatten::flatten(program));
         let (prologue, rest) = split_prologue(&code);
-        Compiled { code, prologue, rest }
+        let (run_code, run_rest) = (super::group::group(&code), super::group::group(&rest));
+        Compiled { code, prologue, rest, run_code, run_rest }
     }
 
     /// The pre-decoded form (for tests and diagnostics).
     pub fn code(&self) -> &Code {
         &self.code
+    }
+
+    /// The pre-decoded form as [`Compiled::run`] runs it, grouped (for tests and diagnostics).
+    pub fn run_code(&self) -> &Code {
+        &self.run_code
     }
 
     /// Runs the program in the lanes of `lanes`, as [`exec::Executor::run`] does (the same
@@ -536,21 +620,21 @@ impl Compiled {
     /// otherwise copy again.
     #[inline(never)]
     pub fn run(&self, registers: &mut Registers, io: &mut Io<'_>, lanes: u16) -> u16 {
-        run_tree(&Interpreter, &self.code, registers, io, lanes)
+        run_tree(&Interpreter, &self.run_code, registers, io, lanes)
     }
 
     /// Computes the program's uniform values (its scalar operations on uniforms and
     /// constants alone) into `registers`, for [`Compiled::run_prepared`] calls with the same
     /// `uniforms` and registers: a draw's vertex batches compute them once, not per batch.
     pub fn prepare(&self, registers: &mut Registers, uniforms: &[u32]) {
-        registers.w.resize(self.rest.registers, [0; LANES]);
+        registers.w.resize(self.rest.registers.max(FILE), [0; LANES]);
         run_prologue(&self.prologue, registers, uniforms, &self.rest.wide);
     }
 
     /// [`Compiled::run`] after [`Compiled::prepare`] (the same results): `registers` must be
     /// the prepared ones, unused by any other program since, and `io.uniforms` the same.
     pub fn run_prepared(&self, registers: &mut Registers, io: &mut Io<'_>, lanes: u16) -> u16 {
-        run_tree(&Interpreter, &self.rest, registers, io, lanes)
+        run_tree(&Interpreter, &self.run_rest, registers, io, lanes)
     }
 }
 
@@ -650,7 +734,7 @@ impl Compiled {
         let (ops, wide) = (&bound.ops[..], &self.rest.wide[..]);
         crate::simd::per_level!({
             for op in ops {
-                step(op, st, &mut io, wide);
+                step::<false>(op, st, &mut io, wide);
             }
         })
     }
@@ -852,7 +936,12 @@ fn op_reads(op: &Op, wide: &[Wide]) -> Vec<R> {
         Op::Dot4 { a, b, .. } => a.iter().chain(&b).copied().collect(),
         Op::Normalize3 { a, .. } => a.to_vec(),
         Op::MatRow { m, v, .. } => m.iter().chain(&v).copied().collect(),
-        Op::MatVec(i) | Op::Texture(i) => match wide[i as usize] {
+        Op::MatVec(i) | Op::Texture(i) | Op::Group(i) => match wide[i as usize] {
+            Wide::Group { kind, n, a, b, c, .. } => {
+                let n = n as usize;
+                let c = if kind == GroupKind::Select { &c[..n] } else { &[][..] };
+                a[..n].iter().chain(&b[..n]).chain(c).copied().collect()
+            }
             Wide::MatVec { n, rows_n, rows, v, .. } => {
                 let n = n as usize;
                 rows[..rows_n as usize].iter().flat_map(|r| r[..n].to_vec()).chain(v[..n].iter().copied()).collect()
@@ -959,7 +1048,7 @@ impl Bound {
             registers.masked = masked;
             for op in &self.ops[start as usize..end as usize] {
                 match op {
-                    BOp::Op(op) => step(op, registers, io, wide),
+                    BOp::Op(op) => step::<false>(op, registers, io, wide),
                     BOp::MulClamp { d, a, b, lo, hi } => {
                         let mut st = registers.view();
                         let (a, b, lo, hi) = (st.get(*a), st.get(*b), st.get(*lo), st.get(*hi));
@@ -995,7 +1084,7 @@ impl Bound {
 
 /// How many words of the register file a [`Bound`] run's fused operations see as an array
 /// ([`View`]); [`fuse`] fuses only operations whose registers are below it.
-const FILE: usize = 256;
+pub(super) const FILE: usize = 256;
 
 /// The first [`FILE`] words of a register file as an array, with the run's mask: a
 /// register number below [`FILE`] indexes it with no bounds check (a fused operation's

@@ -224,6 +224,8 @@ pub enum Op {
     },
     /// Texture lookups: [`Wide`].
     Texture(u16),
+    /// Up to four consecutive operations of one kind: [`Wide::Group`] ([`super::group`]).
+    Group(u16),
     /// `d = ((m0·v0 + m1·v1) + m2·v2) + m3·v3` with uniform `m` (their lane 0 read), as the
     /// multiplication and the three multiply-adds it replaces compute it (each product and
     /// sum rounded, in that order): a row of a uniform matrix times a vector (the vertex
@@ -276,6 +278,25 @@ pub enum Wide {
         unit: u8,
         lod: R,
     },
+    /// `d[k] = kind(a[k], b[k])` (a select: `c[k] ? a[k] : b[k]`) for k < `n`, in order, each
+    /// written before the next reads: the `n` operations it replaces, one dispatch.
+    Group {
+        kind: GroupKind,
+        n: u8,
+        d: [R; 4],
+        a: [R; 4],
+        b: [R; 4],
+        c: [R; 4],
+    },
+}
+
+/// The kind of the operations of a [`Wide::Group`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum GroupKind {
+    Add,
+    Sub,
+    Mul,
+    Select,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -1201,10 +1222,11 @@ pub(super) fn op_writes(op: &Op, wide: &[Wide]) -> ([R; 4], usize) {
         | Op::Log2 { d, .. } => one(d),
         Op::Normalize3 { d, .. } => ([d[0], d[1], d[2], 0], 3),
         Op::Output { .. } => ([0; 4], 0),
-        Op::MatVec(i) | Op::Texture(i) => match wide[i as usize] {
+        Op::MatVec(i) | Op::Texture(i) | Op::Group(i) => match wide[i as usize] {
             Wide::MatVec { rows_n, d, .. } => (d, rows_n as usize),
             Wide::Sample { dst, .. } | Wide::Fetch { dst, .. } => (dst, 4),
             Wide::Size { dst, .. } => ([dst[0], dst[1], dst[2], 0], 3),
+            Wide::Group { n, d, .. } => (d, n as usize),
         },
     }
 }

@@ -16,6 +16,8 @@
 //!   programs); `fast`'s docs say why an interpreter, with measurements.
 //! - [`flatten`]: loops of known trip counts unrolled and pure `if`s made selects before
 //!   lowering, so that typical GLSL programs run as straight code.
+//! - [`group`]: consecutive operations of one kind (a `vec4`'s components) made one
+//!   operation of the interpreter.
 //! - [`cache`]: compiled programs by the key of the state that shaped them, least recently
 //!   used evicted first (one cache per share group).
 //! - [`exec`]: the reference: runs a validated program over 16 lanes with execution masks, statement by statement; the arithmetic
@@ -30,6 +32,7 @@ pub mod dump;
 pub mod exec;
 pub mod fast;
 pub mod flatten;
+pub mod group;
 pub mod ir;
 pub mod lower;
 pub mod math;
