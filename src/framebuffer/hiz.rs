@@ -38,6 +38,13 @@ pub struct HiZ {
     /// Per region: whether the bound may exceed the largest stored depth (a scan of the
     /// region makes it exact).
     loose: Vec<bool>,
+    /// Per region: a depth the stored ones are thought to be at least (0: unknown), which
+    /// only decides whether a loose region is worth a scan: a primitive whose nearest
+    /// fragment is no farther than it likely passes somewhere. Never used to reject.
+    floor: Vec<u32>,
+    /// The area of the last primitive [`Band::hiz_rejected`] tested and its lowest encoded
+    /// depth per region (4 × 4, as its bits), for its own depth write that follows.
+    last: Option<(Rect, [u32; 16])>,
 }
 
 /// A depth test that hierarchical z can reject regions for: GL_LESS or GL_LEQUAL.
@@ -69,9 +76,8 @@ impl DepthPlane {
         let low = a0 + (dadx * dx[0]).min(dadx * dx[1]) + (dady * dy[0]).min(dady * dy[1]);
         // The lanes' f32 arithmetic (offsets, two products, two sums) errs by at most about
         // 4·2⁻²⁴ of the magnitudes involved; 1e-6 of them is four times that.
-        let magnitude = a0.abs()
-            + dadx.abs() * dx[0].abs().max(dx[1].abs())
-            + dady.abs() * dy[0].abs().max(dy[1].abs());
+        let magnitude =
+            a0.abs() + dadx.abs() * dx[0].abs().max(dx[1].abs()) + dady.abs() * dy[0].abs().max(dy[1].abs());
         let low = low - 1e-6 * magnitude - 1e-30;
         (low.is_finite() && magnitude < 1e30).then_some(low as f32)
     }
@@ -85,34 +91,47 @@ impl HiZ {
         let count = self.columns * rows.div_ceil(r);
         self.bound = vec![u32::MAX; count];
         self.loose = vec![true; count];
+        self.floor = vec![0; count];
     }
 }
 
 /// The largest stored depth of `rect` (band-relative rows) of `depth`, as the depth test
 /// compares it; `u32::MAX` for a band without depth.
 fn scan(depth: &DepthBand<'_>, width: usize, rect: Rect) -> u32 {
-    let rows = rect.y0 as usize..rect.y1 as usize;
-    let (x0, x1) = (rect.x0 as usize, rect.x1 as usize);
-    let mut max = 0u32;
     match depth {
-        DepthBand::None => return u32::MAX,
-        DepthBand::Depth16(px) => {
-            for y in rows {
-                max = px[y * width + x0..y * width + x1].iter().fold(max, |m, &v| m.max(v as u32));
-            }
-        }
-        DepthBand::Packed24(px) => {
-            for y in rows {
-                max = px[y * width + x0..y * width + x1].iter().fold(max, |m, &v| m.max(v & 0x00ff_ffff));
-            }
-        }
+        DepthBand::None => u32::MAX,
+        DepthBand::Depth16(px) => scan_rows(px, width, rect, i32::from) as u32,
+        DepthBand::Packed24(px) => scan_rows(px, width, rect, |v| (v & 0x00ff_ffff) as i32) as u32,
+        // Halved so that the baseline's signed lane maximum applies (SSE2 has no unsigned
+        // one); the bound rounds back up: at least every value, at most one step above.
         DepthBand::Depth32(px, _) | DepthBand::Float32(px, _) => {
-            for y in rows {
-                max = px[y * width + x0..y * width + x1].iter().fold(max, |m, &v| m.max(v));
+            ((scan_rows(px, width, rect, |v| (v >> 1) as i32) as u32) << 1) | 1
+        }
+    }
+}
+
+/// The largest `key` of the pixels of `rect` (band-relative rows) of `px`: a whole region's
+/// rows as 16 lanes of running maxima (a few vector instructions a row), others one by one.
+#[inline(always)]
+fn scan_rows<T: Copy>(px: &[T], width: usize, rect: Rect, key: impl Fn(T) -> i32) -> i32 {
+    let (x0, x1) = (rect.x0 as usize, rect.x1 as usize);
+    let rows = rect.y0 as usize..rect.y1 as usize;
+    let mut lanes = [0i32; REGION as usize];
+    if x1 - x0 == REGION as usize {
+        for y in rows {
+            let row: &[T; REGION as usize] = px[y * width + x0..][..REGION as usize].try_into().expect("16 pixels");
+            for (m, &v) in lanes.iter_mut().zip(row) {
+                *m = (*m).max(key(v));
+            }
+        }
+    } else {
+        for y in rows {
+            for &v in &px[y * width + x0..y * width + x1] {
+                lanes[0] = lanes[0].max(key(v));
             }
         }
     }
-    max
+    lanes.into_iter().fold(0, i32::max)
 }
 
 impl Band<'_> {
@@ -163,9 +182,11 @@ impl Band<'_> {
                 if region.intersect(rect) == region {
                     self.hiz.bound[i] = value;
                     self.hiz.loose[i] = false;
+                    self.hiz.floor[i] = value;
                 } else {
                     self.hiz.bound[i] = self.hiz.bound[i].max(value);
                     self.hiz.loose[i] = true;
+                    self.hiz.floor[i] = self.hiz.floor[i].min(value);
                 }
             }
         }
@@ -178,6 +199,8 @@ impl Band<'_> {
             return; // Nothing known yet: nothing to forget.
         }
         let Some((columns, rows)) = self.regions_of(rect) else { return };
+        // The writer's own nearest depths, when it was the primitive tested last.
+        let lows = self.hiz.last.take().filter(|(area, _)| *area == rect && only_nearer).map(|(_, lows)| lows);
         for ry in rows[0]..rows[1] {
             for rx in columns[0]..columns[1] {
                 let i = ry * self.hiz.columns + rx;
@@ -185,6 +208,11 @@ impl Band<'_> {
                 if !only_nearer {
                     self.hiz.bound[i] = u32::MAX;
                 }
+                let k = 4 * (ry - rows[0]) + rx - columns[0];
+                self.hiz.floor[i] = match lows {
+                    Some(lows) if k < 16 => self.hiz.floor[i].min(lows[k]),
+                    _ => 0,
+                };
             }
         }
     }
@@ -200,7 +228,7 @@ impl Band<'_> {
             return true;
         }
         let region = self.region_rect(rx, ry);
-        if !self.hiz.loose[i] || part != region {
+        if !self.hiz.loose[i] || part != region || low <= self.hiz.floor[i] {
             return false;
         }
         let local = Rect { y0: region.y0 - self.y0, y1: region.y1 - self.y0, ..region };
@@ -209,58 +237,64 @@ impl Band<'_> {
         fails(self.hiz.bound[i])
     }
 
-    /// Hands `emit` the parts of `area` (inside the band) where a primitive of depth
-    /// `plane` drawn with `test` may have a passing fragment: `area` itself when no region
-    /// is rejected, else rectangles of whole rows of regions' runs, which together hold
-    /// every pixel of `area` outside the rejected regions.
-    pub fn hiz_visible(&mut self, area: Rect, plane: &DepthPlane, test: DepthReject, mut emit: impl FnMut(Rect)) {
+    /// The regions of `area` (inside the band, at most 4 × 4 regions) where no fragment
+    /// of a primitive of depth `plane` drawn with `test` passes: bit `4·row + column`
+    /// counted from `area`'s first region ([`visible_parts`] walks the rest).
+    pub fn hiz_rejected(&mut self, area: Rect, plane: &DepthPlane, test: DepthReject) -> u16 {
+        self.hiz.last = None;
         let Some((columns, rows)) = self.regions_of(area).filter(|_| self.hiz_ready()) else {
-            return emit(area);
+            return 0;
         };
-        let (width, height) = (columns[1] - columns[0], rows[1] - rows[0]);
-        if width * height > 64 {
-            return emit(area);
+        if columns[1] - columns[0] > 4 || rows[1] - rows[0] > 4 {
+            return 0;
         }
         let encoding = self.depth_format.depth_encoding();
-        let mut rejected = 0u64;
+        let mut rejected = 0u16;
+        let mut lows = [0u32; 16];
         for ry in rows[0]..rows[1] {
             for rx in columns[0]..columns[1] {
                 let part = self.region_rect(rx, ry).intersect(area);
-                let Some(mut low) = plane.lowest(part) else { return emit(area) };
+                let Some(mut low) = plane.lowest(part) else { return 0 };
                 if let Some([lo, hi]) = test.clamp {
                     low = low.clamp(lo, hi);
                 }
-                if self.hiz_rejects(rx, ry, part, encoding.encode_fragment(low), test) {
-                    rejected |= 1 << ((ry - rows[0]) * width + rx - columns[0]);
+                let (low, k) = (encoding.encode_fragment(low), 4 * (ry - rows[0]) + rx - columns[0]);
+                lows[k] = low;
+                if self.hiz_rejects(rx, ry, part, low, test) {
+                    rejected |= 1 << k;
                 }
             }
         }
-        if rejected == 0 {
-            return emit(area);
-        }
-        for ry in rows[0]..rows[1] {
-            let mut rx = columns[0];
-            while rx < columns[1] {
-                let bit = |rx: usize| rejected & (1 << ((ry - rows[0]) * width + rx - columns[0])) != 0;
-                if bit(rx) {
-                    rx += 1;
-                    continue;
-                }
-                let start = rx;
-                while rx < columns[1] && !bit(rx) {
-                    rx += 1;
-                }
-                let run = Rect {
-                    x0: start as i32 * REGION,
-                    x1: rx as i32 * REGION,
-                    y0: self.y0 + ry as i32 * REGION,
-                    y1: self.y0 + (ry as i32 + 1) * REGION,
-                };
-                let run = run.intersect(area);
-                if !run.is_empty() {
-                    emit(run);
-                }
+        self.hiz.last = Some((area, lows));
+        rejected
+    }
+}
+
+/// Hands `emit` the parts of `area` outside the `rejected` regions ([`Band::hiz_rejected`]
+/// of that area): `area` itself when none is, else per row of regions the runs of the
+/// others, cut to `area`. (Bands start at multiples of [`REGION`] rows, so regions are
+/// aligned in window coordinates too.)
+#[inline(always)]
+pub fn visible_parts(area: Rect, rejected: u16, mut emit: impl FnMut(Rect)) {
+    if rejected == 0 {
+        return emit(area);
+    }
+    let (rx0, ry0) = (area.x0.div_euclid(REGION), area.y0.div_euclid(REGION));
+    let (rx1, ry1) = ((area.x1 + REGION - 1).div_euclid(REGION), (area.y1 + REGION - 1).div_euclid(REGION));
+    let is_rejected = |rx: i32, ry: i32| rejected & (1 << (4 * (ry - ry0) + rx - rx0)) != 0;
+    for ry in ry0..ry1 {
+        let mut rx = rx0;
+        while rx < rx1 {
+            if is_rejected(rx, ry) {
+                rx += 1;
+                continue;
             }
+            let start = rx;
+            while rx < rx1 && !is_rejected(rx, ry) {
+                rx += 1;
+            }
+            let run = Rect { x0: start * REGION, x1: rx * REGION, y0: ry * REGION, y1: (ry + 1) * REGION };
+            emit(run.intersect(area));
         }
     }
 }
@@ -283,11 +317,12 @@ mod tests {
         }
     }
 
-    /// The rectangles `hiz_visible` hands out for a flat plane at `z` over `area`.
+    /// The rectangles `hiz_rejected` and `visible_parts` hands out for a flat plane at `z` over `area`.
     fn visible(band: &mut Band<'_>, area: Rect, z: f32, equal_passes: bool) -> Vec<Rect> {
         let plane = DepthPlane { a0: z, dadx: 0.0, dady: 0.0, anchor: [0.0, 0.0] };
         let mut out = Vec::new();
-        band.hiz_visible(area, &plane, DepthReject { equal_passes, clamp: None }, |r| out.push(r));
+        let rejected = band.hiz_rejected(area, &plane, DepthReject { equal_passes, clamp: None });
+        visible_parts(area, rejected, |r| out.push(r));
         out
     }
 

@@ -24,7 +24,7 @@ use crate::fragment::block::{lanes, Batch, BlockColors, BlockInputs, BlockPipeli
 use crate::fragment::pipeline::{shade_span, shade_span_samples, DrawState, Scratch, Span};
 use crate::fragment::{multisample::SampleMasks, span_mask};
 use crate::framebuffer::band::Band;
-use crate::framebuffer::hiz::DepthPlane;
+use crate::framebuffer::hiz::{visible_parts, DepthPlane, REGION};
 use crate::framebuffer::multisample::MAX_SAMPLES;
 use crate::framebuffer::Rect;
 use crate::glsl::varyings::VARYING_SLOTS;
@@ -298,19 +298,19 @@ impl TriangleJob {
         // (that level runs SSE2's: issue #18's 5 MB limit).
         // Hierarchical z (`framebuffer::hiz`): the regions where every fragment fails the
         // depth test are not walked.
-        let mut parts = [area; 64];
-        let mut count = 1;
-        if let Some(test) = pipeline.hiz_reject(&state.fragment) {
-            let z = DepthPlane { a0: self.z.a0, dadx: self.z.dadx, dady: self.z.dady, anchor: self.anchor };
-            count = 0;
-            band.hiz_visible(area, &z, test, |part| {
-                parts[count] = part;
-                count += 1;
-            });
-        }
+        // depth test are not walked. Not for triangles smaller than a region in this tile,
+        // whose tests would cost more than they save.
+        let big = area.x1 - area.x0 >= REGION && area.y1 - area.y0 >= REGION;
+        let rejected = match pipeline.hiz_reject(&state.fragment).filter(|_| big) {
+            Some(test) => {
+                let z = DepthPlane { a0: self.z.a0, dadx: self.z.dadx, dady: self.z.dady, anchor: self.anchor };
+                band.hiz_rejected(area, &z, test)
+            }
+            None => 0,
+        };
         crate::simd::per_level!(sse2_for_sse41, |level| {
             let front_facing = self.front_facing;
-            for &part in &parts[..count] {
+            visible_parts(area, rejected, |part| {
                 walk_blocks(
                     level,
                     part,
@@ -323,7 +323,7 @@ impl TriangleJob {
                         }
                     },
                 );
-            }
+            });
             pipeline.render(level, state, band, scratch, self, front_facing, batch);
         });
     }
