@@ -420,6 +420,13 @@ impl AlphaKernel {
 }
 
 impl BlockPipeline {
+    /// The depth test by which hierarchical z may skip regions of a triangle of this draw
+    /// ([`DepthStencilKernel::hiz_reject`]); none when a shader writes the depth.
+    pub fn hiz_reject(&self, fragment: &FragmentState) -> Option<crate::framebuffer::hiz::DepthReject> {
+        let shader_depth = fragment.glsl.as_ref().is_some_and(|g| g.writes_depth());
+        self.depth_stencil.as_ref().and_then(|k| k.hiz_reject()).filter(|_| !shader_depth)
+    }
+
     /// Compiles `fragment` for a single-sampled framebuffer whose band colour targets have
     /// `formats` (in the band's order) and whose depth/stencil layer is `depth_format`.
     pub fn compile(fragment: &FragmentState, formats: &[ColorFormat], depth_format: DepthStencilFormat) -> Self {
@@ -837,6 +844,7 @@ mod tests {
             }],
             depth: DepthBand::None,
             depth_format: DepthStencilFormat::None,
+            hiz: Default::default(),
         };
         let at = BlockAt::new(&band, 4, 0, crate::simd::current());
         assert_eq!(at.valid, 0b0000_0011_0011_0011);

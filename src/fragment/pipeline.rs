@@ -547,6 +547,7 @@ mod tests {
             }],
             depth: DepthBand::Depth16(&mut depth),
             depth_format: DepthStencilFormat::Depth16,
+            hiz: Default::default(),
         };
         let computed = Cell::new(0);
         let span = Span { y: 0, x0: 0, n: 4, row_start: 0, front_facing: true };

@@ -5,6 +5,7 @@
 //! the buffers, so worker threads can render different bands at the same time with no
 //! locking and no unsafe code; each pixel belongs to exactly one band, which is what makes
 //! results identical for any number of threads.
+use super::hiz::HiZ;
 use super::surface::{ColorPixels, DepthStencilPixels};
 use super::{ColorFormat, ColorSlot, DepthStencilFormat, Framebuffer, Rect};
 
@@ -45,6 +46,9 @@ pub struct Band<'a> {
     pub colors: Vec<ColorTarget<'a>>,
     pub depth: DepthBand<'a>,
     pub depth_format: DepthStencilFormat,
+    /// The depth summary of hierarchical z, kept while the band renders a scene
+    /// ([`super::hiz`]): start with `HiZ::default()`.
+    pub hiz: HiZ,
 }
 
 impl Band<'_> {
@@ -127,6 +131,7 @@ impl Framebuffer {
                 colors: Vec::new(),
                 depth: DepthBand::None,
                 depth_format: self.config.depth_stencil,
+                hiz: HiZ::default(),
             })
             .collect();
         // Split every selected buffer, then hand the pieces to the bands in `slots` order.

@@ -11,6 +11,7 @@ pub mod band;
 pub mod blit;
 pub mod external;
 pub mod format;
+pub mod hiz;
 pub mod layers;
 pub mod multisample;
 pub mod pages;

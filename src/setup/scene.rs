@@ -22,8 +22,10 @@ use super::jobs::triangle::TriangleJob;
 use super::triangle::TriangleSetup;
 use crate::fragment::block::{Batch, BlockPipeline};
 use crate::fragment::pipeline::{DrawState, Scratch};
+use crate::fragment::DepthTest;
 use crate::framebuffer::band::Band;
 use crate::framebuffer::{ColorFormat, ColorSlot, Framebuffer, Rect};
+use crate::gl::CompareFunc;
 use crate::raster::{render_tiles, thread_count, TILE_SIZE};
 use std::mem::ManuallyDrop;
 use std::sync::Arc;
@@ -789,6 +791,24 @@ impl Scene {
                 Primitive::Smooth(job) => job.render(state, area, band, scratch),
                 Primitive::Pixels(job) => job.render(state, area, band, scratch),
                 Primitive::Clear(_) => unreachable!("rendered above"),
+            }
+            // Hierarchical z (`framebuffer::hiz`) learns where the job may have written depth:
+            // through a test that keeps only nearer or equal depths, or anything (pixel
+            // rectangles: glDrawPixels of depth).
+            let only_nearer = match (primitive, state.fragment.depth) {
+                (Primitive::Pixels(_), _) => Some(false),
+                (_, Some(DepthTest { func, write: true })) => Some(matches!(
+                    func,
+                    CompareFunc::Less | CompareFunc::LessEqual | CompareFunc::Equal | CompareFunc::Never
+                )),
+                _ => None,
+            };
+            if let Some(only_nearer) = only_nearer {
+                let written = match primitive {
+                    Primitive::Triangle(job) => tile.intersect(state.fill_clip).intersect(job.bounds()),
+                    _ => area,
+                };
+                band.hiz_written(written, only_nearer);
             }
         };
         render_tiles(framebuffer, &self.targets, self.tiles_x, &self.bins, threads, render);

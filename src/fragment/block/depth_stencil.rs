@@ -22,6 +22,7 @@ use crate::fragment::stencil::{StencilFace, StencilOp};
 use crate::fragment::FragmentState;
 use crate::framebuffer::band::DepthBand;
 use crate::framebuffer::format::DepthEncoding;
+use crate::framebuffer::hiz::DepthReject;
 use crate::framebuffer::DepthStencilFormat;
 use crate::gl::CompareFunc;
 use crate::simd::dispatch::sign_mask16;
@@ -262,6 +263,17 @@ impl DepthStencilKernel {
     /// their alpha, since failing the stencil or depth test leaves everything as it was.
     pub fn culls_before_alpha(&self) -> bool {
         self.failures_keep
+    }
+
+    /// The depth test hierarchical z may reject whole regions for (`framebuffer::hiz`):
+    /// GL_LESS or GL_LEQUAL, when a failing fragment changes nothing.
+    pub fn hiz_reject(&self) -> Option<DepthReject> {
+        match self.params.depth {
+            Some((func @ (1 | 3), _)) if self.failures_keep => {
+                Some(DepthReject { equal_passes: func == 3, clamp: self.params.clamp })
+            }
+            _ => None,
+        }
     }
 
     /// The lanes of `live` that pass the stencil and depth tests, without storing anything

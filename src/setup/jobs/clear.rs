@@ -61,6 +61,9 @@ impl ClearJob {
         if self.depth.is_some() || self.stencil.is_some() {
             let format = band.depth_format;
             clear_depth_band(&mut band.depth, format, width, y0, area, self.depth, self.stencil, self.whole);
+            if let Some(depth) = self.depth {
+                band.hiz_cleared(area, depth, self.whole);
+            }
         }
     }
 }

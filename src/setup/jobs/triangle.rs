@@ -24,6 +24,7 @@ use crate::fragment::block::{lanes, Batch, BlockColors, BlockInputs, BlockPipeli
 use crate::fragment::pipeline::{shade_span, shade_span_samples, DrawState, Scratch, Span};
 use crate::fragment::{multisample::SampleMasks, span_mask};
 use crate::framebuffer::band::Band;
+use crate::framebuffer::hiz::{visible_parts, DepthPlane, REGION};
 use crate::framebuffer::multisample::MAX_SAMPLES;
 use crate::framebuffer::Rect;
 use crate::glsl::varyings::VARYING_SLOTS;
@@ -295,20 +296,34 @@ impl TriangleJob {
         // blocks collected in batches, each batch's stages one direct call per stage into
         // their copies for the level (`BlockPipeline::render`). No SSE4.1 copy of the walk
         // (that level runs SSE2's: issue #18's 5 MB limit).
+        // Hierarchical z (`framebuffer::hiz`): the regions where every fragment fails the
+        // depth test are not walked.
+        // depth test are not walked. Not for triangles smaller than a region in this tile,
+        // whose tests would cost more than they save.
+        let big = area.x1 - area.x0 >= REGION && area.y1 - area.y0 >= REGION;
+        let rejected = match pipeline.hiz_reject(&state.fragment).filter(|_| big) {
+            Some(test) => {
+                let z = DepthPlane { a0: self.z.a0, dadx: self.z.dadx, dady: self.z.dady, anchor: self.anchor };
+                band.hiz_rejected(area, &z, test)
+            }
+            None => 0,
+        };
         crate::simd::per_level!(sse2_for_sse41, |level| {
             let front_facing = self.front_facing;
-            walk_blocks(
-                level,
-                area,
-                &edges,
-                state.polygon_stipple.as_ref(),
-                #[inline(always)]
-                |x, y, mask| {
-                    if batch.push(x, y, mask) {
-                        pipeline.render(level, state, band, scratch, self, front_facing, batch);
-                    }
-                },
-            );
+            visible_parts(area, rejected, |part| {
+                walk_blocks(
+                    level,
+                    part,
+                    &edges,
+                    state.polygon_stipple.as_ref(),
+                    #[inline(always)]
+                    |x, y, mask| {
+                        if batch.push(x, y, mask) {
+                            pipeline.render(level, state, band, scratch, self, front_facing, batch);
+                        }
+                    },
+                );
+            });
             pipeline.render(level, state, band, scratch, self, front_facing, batch);
         });
     }
@@ -1011,6 +1026,7 @@ mod sample_block_tests {
                     }],
                     depth: DepthBand::Packed24(d),
                     depth_format: DepthStencilFormat::Packed24 { depth: true, stencil: true },
+                    hiz: Default::default(),
                 })
                 .collect();
             let kind = round % 8;
@@ -1118,6 +1134,7 @@ mod sample_block_tests {
                         _ => DepthBand::Float32(d, Some(s)),
                     },
                     depth_format: format,
+                    hiz: Default::default(),
                 })
                 .collect();
             let state = random_state(&mut rng, samples, size, stencil);
