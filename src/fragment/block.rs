@@ -423,10 +423,14 @@ impl BlockPipeline {
     /// Compiles `fragment` for a single-sampled framebuffer whose band colour targets have
     /// `formats` (in the band's order) and whose depth/stencil layer is `depth_format`.
     pub fn compile(fragment: &FragmentState, formats: &[ColorFormat], depth_format: DepthStencilFormat) -> Self {
+        // A target whose channels are all masked (glColorMask(0, 0, 0, 0): the stencil
+        // passes of shadow volumes, depth pre-passes) gets no kernel: nothing it could do
+        // changes a bit, and without a target the block stage skips the colours entirely.
         let targets = formats
             .iter()
             .zip(&fragment.color_masks)
             .enumerate()
+            .filter(|(_, (_, mask))| mask.is_some_and(|m| m.contains(&true)))
             .filter_map(|(index, (format, mask))| Some(TargetKernel::new(fragment, index, *format, (*mask)?)))
             .collect();
         BlockPipeline {
@@ -763,6 +767,7 @@ fn block_colors(
     // The closure inlined (LLVM left it a call per varying run and pass, with the planes'
     // setup behind it, in each per-level body).
     shading.run_block(
+        at.level,
         &mut scratch.shading,
         texturing,
         at.y,

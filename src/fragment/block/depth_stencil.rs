@@ -403,8 +403,11 @@ fn tests<const SIGNED: bool>(
 /// The stencil and depth tests on one format: the block's stored values loaded as lanes
 /// once, [`tests`], and the block stored back whole (lanes that neither test changed
 /// keep the values just loaded) only when the draw can change them and `STORE`. Called
-/// through a function pointer (the alpha-test path and the tests), so one dispatch to the
-/// level's copy per block.
+/// through a function pointer, block by block: the alpha-test path (and the tests), whose
+/// blocks pay for their colours and the alpha test before these tests. One copy, at the
+/// baseline level: the AVX2 copies of the eight instances were 34 KB of each library
+/// (issue #18's 5 MB limit), for a path no benchmark scene takes; the batched stage
+/// ([`DepthStencilKernel::run_blocks`]) keeps its per-level copies.
 fn depth_stencil<const FMT: u8, const STORE: bool>(
     p: &DepthStencilParams,
     band: &mut DepthBand<'_>,
@@ -413,10 +416,7 @@ fn depth_stencil<const FMT: u8, const STORE: bool>(
     live: u16,
     front_facing: bool,
 ) -> u16 {
-    // Two copies (SSE4.1 runs SSE2's, which measured fewer instructions: simd::dispatch).
-    let level = crate::simd::current();
-    crate::simd::dispatch::run_with_sse2_for_sse41(
-        level,
+    crate::simd::dispatch::baseline(
         #[inline(always)]
         |level| {
             let at = BlockAt { level, ..*at };
