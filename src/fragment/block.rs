@@ -858,6 +858,19 @@ mod tests {
     }
 
     #[test]
+    fn fully_masked_targets_get_no_kernel() {
+        // glColorMask(0, 0, 0, 0) (a shadow volume's stencil pass): no target, so the block
+        // stage never computes colours; one channel written keeps its kernel.
+        let formats = [ColorFormat::Unorm8 { alpha: true }, ColorFormat::Unorm8 { alpha: true }];
+        let masks = |a, b| FragmentState::plain(None, vec![a, b], false);
+        let compiled = |f: &FragmentState| BlockPipeline::compile(f, &formats, DepthStencilFormat::None);
+        let indices = |p: &BlockPipeline| p.targets.iter().map(|t| t.index).collect::<Vec<_>>();
+        assert!(compiled(&masks(Some([false; 4]), None)).targets.is_empty());
+        assert_eq!(indices(&compiled(&masks(Some([false; 4]), Some([false, false, false, true])))), [1]);
+        assert_eq!(indices(&compiled(&masks(Some([true; 4]), Some([false; 4])))), [0]);
+    }
+
+    #[test]
     fn the_lane_alpha_test_is_the_span_alpha_test() {
         use crate::gl::CompareFunc as C;
         // Alphas at and around every unorm8 step and the references, the edges and NaN.

@@ -513,6 +513,7 @@ fn depth16<const STORE: bool>(p: &DepthStencilParams, px: &mut [u16], at: &Block
 
 /// Packed 24-bit depth and 8-bit stencil (`face`: the stencil test's, if on).
 #[inline(always)]
+#[allow(clippy::needless_range_loop)] // index loops vectorise where a `zip` may stay a call
 fn packed24<const STORE: bool>(
     p: &DepthStencilParams,
     face: Option<&FaceKernel>,
@@ -530,7 +531,17 @@ fn packed24<const STORE: bool>(
     let depth_writes = STORE && p.depth.is_some_and(|(_, write)| write);
     let stencil_writes = STORE && face.is_some() && p.stencil_writes;
     if (depth_writes && bits != 0) || stencil_writes {
-        store(px, at, &lanes(|i| depth[i] | stencil[i] << 24), 0xffff);
+        let new = lanes(|i| depth[i] | stencil[i] << 24);
+        // Stored only when a word changed: the stencil passes of shadow volumes change
+        // few blocks (z-fail: only where the volume is behind the scene), and a block
+        // left alone costs no store and dirties no cache line.
+        let mut changed = 0;
+        for i in 0..LANES {
+            changed |= new[i] ^ words[i];
+        }
+        if changed != 0 {
+            store(px, at, &new, 0xffff);
+        }
     }
     bits
 }
