@@ -136,7 +136,9 @@ impl TargetKernel {
     /// constant fill of it writes the bytes this kernel writes. `None` for any other kernel.
     pub fn constant_pixel(&self, color: [f32; 4]) -> Option<[u8; 4]> {
         match (self.kind, self.params.keep8) {
-            (Kind::Unorm8Store, 0) => Some(src_words(crate::simd::current(), &BlockColors::Uniform(color))[0].to_le_bytes()),
+            (Kind::Unorm8Store, 0) => {
+                Some(src_words(crate::simd::current(), &BlockColors::Uniform(color))[0].to_le_bytes())
+            }
             _ => None,
         }
     }
@@ -570,7 +572,8 @@ mod tests {
                 let mut lane_values = [0.25f32; LANES];
                 lane_values[..chunk.len()].copy_from_slice(chunk);
                 // Channel k reads the values rotated by k lanes, so each channel sees each value.
-                let channels: [F32s; 4] = std::array::from_fn(|k| std::array::from_fn(|i| lane_values[(i + k) % LANES]));
+                let channels: [F32s; 4] =
+                    std::array::from_fn(|k| std::array::from_fn(|i| lane_values[(i + k) % LANES]));
                 let got = crate::simd::dispatch::run_with(level, |l| src_words(l, &BlockColors::Lanes(channels)));
                 for i in 0..LANES {
                     let want = (0..4).fold(0, |w, k| w | float_to_unorm(channels[k][i], 8) << (8 * k));

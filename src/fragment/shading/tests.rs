@@ -207,15 +207,23 @@ fn blocks_shade_as_spans_do() {
                 }
             }
             let before = colors;
-            shading.run_block(crate::simd::current(), &mut scratch, texturing, by, live, &mut colors, |y0, first, out| {
-                for i in 0..LANES {
-                    let mut v = vec![0.0; n];
-                    at(bx + (i & 3) as i32, y0 + (i >> 2) as i32, &mut v);
-                    for (k, o) in out.iter_mut().enumerate() {
-                        o[i] = v.get(first + k).copied().unwrap_or(0.0);
+            shading.run_block(
+                crate::simd::current(),
+                &mut scratch,
+                texturing,
+                by,
+                live,
+                &mut colors,
+                |y0, first, out| {
+                    for i in 0..LANES {
+                        let mut v = vec![0.0; n];
+                        at(bx + (i & 3) as i32, y0 + (i >> 2) as i32, &mut v);
+                        for (k, o) in out.iter_mut().enumerate() {
+                            o[i] = v.get(first + k).copied().unwrap_or(0.0);
+                        }
                     }
-                }
-            });
+                },
+            );
             for r in 0..4 {
                 let y = by + r as i32;
                 // The row as a span from one column left of the block: another grouping of
