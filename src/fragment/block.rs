@@ -430,10 +430,14 @@ impl BlockPipeline {
     /// Compiles `fragment` for a single-sampled framebuffer whose band colour targets have
     /// `formats` (in the band's order) and whose depth/stencil layer is `depth_format`.
     pub fn compile(fragment: &FragmentState, formats: &[ColorFormat], depth_format: DepthStencilFormat) -> Self {
+        // A target whose channels are all masked (glColorMask(0, 0, 0, 0): the stencil
+        // passes of shadow volumes, depth pre-passes) gets no kernel: nothing it could do
+        // changes a bit, and without a target the block stage skips the colours entirely.
         let targets = formats
             .iter()
             .zip(&fragment.color_masks)
             .enumerate()
+            .filter(|(_, (_, mask))| mask.is_some_and(|m| m.contains(&true)))
             .filter_map(|(index, (format, mask))| Some(TargetKernel::new(fragment, index, *format, (*mask)?)))
             .collect();
         BlockPipeline {
@@ -770,6 +774,7 @@ fn block_colors(
     // The closure inlined (LLVM left it a call per varying run and pass, with the planes'
     // setup behind it, in each per-level body).
     shading.run_block(
+        at.level,
         &mut scratch.shading,
         texturing,
         at.y,
@@ -858,6 +863,19 @@ mod tests {
         assert_eq!(px[10..12], [4, 5]);
         assert_eq!(px[16..18], [8, 9]);
         assert_eq!(px[0..4], [7; 4]);
+    }
+
+    #[test]
+    fn fully_masked_targets_get_no_kernel() {
+        // glColorMask(0, 0, 0, 0) (a shadow volume's stencil pass): no target, so the block
+        // stage never computes colours; one channel written keeps its kernel.
+        let formats = [ColorFormat::Unorm8 { alpha: true }, ColorFormat::Unorm8 { alpha: true }];
+        let masks = |a, b| FragmentState::plain(None, vec![a, b], false);
+        let compiled = |f: &FragmentState| BlockPipeline::compile(f, &formats, DepthStencilFormat::None);
+        let indices = |p: &BlockPipeline| p.targets.iter().map(|t| t.index).collect::<Vec<_>>();
+        assert!(compiled(&masks(Some([false; 4]), None)).targets.is_empty());
+        assert_eq!(indices(&compiled(&masks(Some([false; 4]), Some([false, false, false, true])))), [1]);
+        assert_eq!(indices(&compiled(&masks(Some([true; 4]), Some([false; 4])))), [0]);
     }
 
     #[test]

@@ -27,6 +27,7 @@ use super::FragmentState;
 use crate::shader::exec::{Io, LodLanes, SampleRequest, Textures, Word};
 use crate::shader::fast::{lane_mask, Bound, Registers};
 use crate::shader::lower::R;
+use crate::simd::Supported;
 use crate::texture::Texturing;
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::Arc;
@@ -154,10 +155,12 @@ impl Shading {
     /// unspecified: the pipeline does not read them). `varying_lanes(y0, first, out)`
     /// gives varyings `first .. first + out.len()` of the 16 lanes of the block at
     /// `(x, y0)` (`y0` is `y`, or `y − 1` and `y + 3`, see the module). Inlined into the
-    /// block pipeline's per-SIMD-level body.
+    /// block pipeline's per-SIMD-level body, whose level `level` is.
+    #[allow(clippy::too_many_arguments)]
     #[inline(always)]
     pub fn run_block(
         &self,
+        level: Supported,
         scratch: &mut ShadingScratch,
         texturing: Option<&Texturing>,
         y: i32,
@@ -172,7 +175,7 @@ impl Shading {
             // No lookups, so no quads: the block's own varyings, as the program's pass.
             let mut coordinate = [[0.0; LANES]];
             varying_lanes(y, 0, &mut coordinate);
-            fog.apply(&coordinate[0], colors);
+            fog.apply(level, &coordinate[0], colors);
             return;
         }
         let textures = StageTextures { texturing, used: !0 };
@@ -307,9 +310,11 @@ impl Shading {
     /// per-lane branch), so that they vectorise in the caller's SIMD level.
     ///
     /// One copy per SIMD level, called from the block and span paths' own copies (inlined
-    /// into each, it made the libraries a few hundred kB larger).
+    /// into each, it made the libraries a few hundred kB larger); SSE4.1 runs SSE2's (the
+    /// block walk that calls it has no SSE4.1 copy either), whose third copy was 22 KB of
+    /// each library (issue #18's 5 MB limit).
     fn run(&self, scratch: &mut ShadingScratch, textures: &StageTextures<'_>, live: u16, colors: &mut [F32s; 4]) {
-        crate::simd::per_level!(self.run_body(scratch, textures, live, colors))
+        crate::simd::per_level!(sse2_for_sse41, |_level| self.run_body(scratch, textures, live, colors))
     }
 
     #[inline(always)]
@@ -411,21 +416,31 @@ impl LinearFog {
         Some(LinearFog { end: fog.end, span, color: [fog.color[0], fog.color[1], fog.color[2]] })
     }
 
-    /// Fogs `colors` by the fog coordinates `c` (varying 0 of the program), every lane.
-    /// One out-of-line copy at the baseline level rather than one inlined per SIMD level and
-    /// call site: the libraries' size limit (its plain lane loops gain little from AVX2).
-    #[inline(never)]
-    fn apply(&self, c: &F32s, colors: &mut [F32s; 4]) {
-        // clamp01: `0 < x ? (1 < x ? 1 : x) : 0` (NaN gives 0).
+    /// Fogs `colors` by the fog coordinates `c` (varying 0 of the program), every lane, in
+    /// the copy for `level` (the caller's, a constant there): one out-of-line copy per level,
+    /// called directly, rather than one inlined at each of the block paths' call sites (13 KB
+    /// more per library) or one baseline copy for every level (fog_blend 13 % slower).
+    #[inline(always)]
+    fn apply(&self, level: Supported, c: &F32s, colors: &mut [F32s; 4]) {
+        // A non-generic function's closure: one copy per level whatever the caller.
+        crate::simd::dispatch::outlined(
+            level,
+            #[inline(always)]
+            |_| self.apply_body(c, colors),
+        )
+    }
+
+    #[inline(always)]
+    fn apply_body(&self, c: &F32s, colors: &mut [F32s; 4]) {
+        // clamp01: `0 < x ? (1 < x ? 1 : x) : 0` (NaN gives 0), as two selects, which
+        // vectorise (max and min); the nested form stayed a scalar division and two
+        // branches per lane (262 instructions a block at SSE2).
         let clamp01 = |x: f32| {
-            if 0.0 < x {
-                if 1.0 < x {
-                    1.0
-                } else {
-                    x
-                }
+            let v = if 0.0 < x { x } else { 0.0 };
+            if v < 1.0 {
+                v
             } else {
-                0.0
+                1.0
             }
         };
         let mut factor = [0f32; LANES];

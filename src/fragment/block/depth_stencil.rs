@@ -415,8 +415,11 @@ fn tests<const SIGNED: bool>(
 /// The stencil and depth tests on one format: the block's stored values loaded as lanes
 /// once, [`tests`], and the block stored back whole (lanes that neither test changed
 /// keep the values just loaded) only when the draw can change them and `STORE`. Called
-/// through a function pointer (the alpha-test path and the tests), so one dispatch to the
-/// level's copy per block.
+/// through a function pointer, block by block: the alpha-test path (and the tests), whose
+/// blocks pay for their colours and the alpha test before these tests. One copy, at the
+/// baseline level: the AVX2 copies of the eight instances were 34 KB of each library
+/// (issue #18's 5 MB limit), for a path no benchmark scene takes; the batched stage
+/// ([`DepthStencilKernel::run_blocks`]) keeps its per-level copies.
 fn depth_stencil<const FMT: u8, const STORE: bool>(
     p: &DepthStencilParams,
     band: &mut DepthBand<'_>,
@@ -425,10 +428,7 @@ fn depth_stencil<const FMT: u8, const STORE: bool>(
     live: u16,
     front_facing: bool,
 ) -> u16 {
-    // Two copies (SSE4.1 runs SSE2's, which measured fewer instructions: simd::dispatch).
-    let level = crate::simd::current();
-    crate::simd::dispatch::run_with_sse2_for_sse41(
-        level,
+    crate::simd::dispatch::baseline(
         #[inline(always)]
         |level| {
             let at = BlockAt { level, ..*at };
@@ -525,6 +525,7 @@ fn depth16<const STORE: bool>(p: &DepthStencilParams, px: &mut [u16], at: &Block
 
 /// Packed 24-bit depth and 8-bit stencil (`face`: the stencil test's, if on).
 #[inline(always)]
+#[allow(clippy::needless_range_loop)] // index loops vectorise where a `zip` may stay a call
 fn packed24<const STORE: bool>(
     p: &DepthStencilParams,
     face: Option<&FaceKernel>,
@@ -542,7 +543,17 @@ fn packed24<const STORE: bool>(
     let depth_writes = STORE && p.depth.is_some_and(|(_, write)| write);
     let stencil_writes = STORE && face.is_some() && p.stencil_writes;
     if (depth_writes && bits != 0) || stencil_writes {
-        store(px, at, &lanes(|i| depth[i] | stencil[i] << 24), 0xffff);
+        let new = lanes(|i| depth[i] | stencil[i] << 24);
+        // Stored only when a word changed: the stencil passes of shadow volumes change
+        // few blocks (z-fail: only where the volume is behind the scene), and a block
+        // left alone costs no store and dirties no cache line.
+        let mut changed = 0;
+        for i in 0..LANES {
+            changed |= new[i] ^ words[i];
+        }
+        if changed != 0 {
+            store(px, at, &new, 0xffff);
+        }
     }
     bits
 }

@@ -27,6 +27,8 @@ use crate::fragment::{write_colors, FragmentState};
 use crate::framebuffer::band::ColorBand;
 use crate::framebuffer::format::float_to_unorm;
 use crate::framebuffer::ColorFormat;
+use crate::simd::dispatch::round_even_i32;
+use crate::simd::Supported;
 
 // ---------------------------------------------------------------------------------------
 // Colour targets.
@@ -134,7 +136,9 @@ impl TargetKernel {
     /// constant fill of it writes the bytes this kernel writes. `None` for any other kernel.
     pub fn constant_pixel(&self, color: [f32; 4]) -> Option<[u8; 4]> {
         match (self.kind, self.params.keep8) {
-            (Kind::Unorm8Store, 0) => Some(src_words(&BlockColors::Uniform(color))[0].to_le_bytes()),
+            (Kind::Unorm8Store, 0) => {
+                Some(src_words(crate::simd::current(), &BlockColors::Uniform(color))[0].to_le_bytes())
+            }
             _ => None,
         }
     }
@@ -154,26 +158,30 @@ pub fn unorm8_lanes(x: &F32s) -> U16s {
     })
 }
 
-/// `float_to_unorm(x, 8)` of one lane as [`unorm8_lanes`] computes it, as a u32 (0..=255).
-#[inline(always)]
-fn unorm8_u32(x: f32) -> u32 {
-    const MAGIC: f32 = (1u32 << 23) as f32;
-    let v = if x > 0.0 { x } else { 0.0 };
-    let v = if v < 1.0 { v } else { 1.0 };
-    (v * 255.0 + MAGIC).to_bits() - MAGIC.to_bits()
-}
-
 /// A block's colours converted to unorm8 (the span path's `float_to_unorm`) and packed into
-/// RGBA words (byte k: channel k), straight from the f32 lanes.
+/// RGBA words (byte k: channel k), straight from the f32 lanes, in the copy for `level`.
+/// Each channel is clamped, scaled and rounded to nearest even by one conversion
+/// (`simd::dispatch::round_even_i32`): the products lie in [0, 255], where that is the
+/// integer `float_to_unorm` gets by adding 2²³ (one instruction fewer per vector).
 #[inline(always)]
-fn src_words(colors: &BlockColors) -> U32s {
+fn src_words(level: Supported, colors: &BlockColors) -> U32s {
     match colors {
         BlockColors::Uniform(c) => {
             let b = |k: usize| float_to_unorm(c[k], 8);
             [b(0) | b(1) << 8 | b(2) << 16 | b(3) << 24; LANES]
         }
         BlockColors::Lanes([r, g, b, a]) => {
-            lanes(|i| unorm8_u32(r[i]) | unorm8_u32(g[i]) << 8 | unorm8_u32(b[i]) << 16 | unorm8_u32(a[i]) << 24)
+            let byte = |x: &F32s| {
+                let scaled = lanes(|i| {
+                    let v = x[i];
+                    let v = if v > 0.0 { v } else { 0.0 };
+                    let v = if v < 1.0 { v } else { 1.0 };
+                    v * 255.0
+                });
+                round_even_i32(level, &scaled)
+            };
+            let (r, g, b, a) = (byte(r), byte(g), byte(b), byte(a));
+            lanes(|i| r[i] as u32 | (g[i] as u32) << 8 | (b[i] as u32) << 16 | (a[i] as u32) << 24)
         }
     }
 }
@@ -227,7 +235,7 @@ fn store8(p: &TargetParams, px: &mut [[u8; 4]], at: &BlockAt, words: &U32s, old:
 #[inline(always)]
 fn unorm8_store(p: &TargetParams, band: &mut ColorBand<'_>, at: &BlockAt, colors: &BlockColors, live: u16) {
     let ColorBand::Unorm8(px) = band else { return };
-    store8(p, px, at, &src_words(colors), None, live);
+    store8(p, px, at, &src_words(at.level, colors), None, live);
 }
 
 /// unorm8 with the logic op on the packed words.
@@ -235,7 +243,7 @@ fn unorm8_store(p: &TargetParams, band: &mut ColorBand<'_>, at: &BlockAt, colors
 fn unorm8_logic_op(p: &TargetParams, band: &mut ColorBand<'_>, at: &BlockAt, colors: &BlockColors, live: u16) {
     let ColorBand::Unorm8(px) = band else { return };
     let Some(op) = p.logic_op else { return };
-    let src = src_words(colors);
+    let src = src_words(at.level, colors);
     let dst = load8(px, at);
     let words = logic_lanes(op, &src, &dst);
     store8(p, px, at, &words, Some(&dst), live);
@@ -388,7 +396,7 @@ fn unorm8_blend(p: &TargetParams, band: &mut ColorBand<'_>, at: &BlockAt, colors
 fn unorm8_blend_src_alpha(p: &TargetParams, band: &mut ColorBand<'_>, at: &BlockAt, colors: &BlockColors, live: u16) {
     let ColorBand::Unorm8(px) = band else { return };
     let dst = load8(px, at);
-    let src = src_words(colors);
+    let src = src_words(at.level, colors);
     let words = lanes(|i| {
         let (s, d) = (src[i], dst[i]);
         let a = s >> 24;
@@ -414,7 +422,7 @@ fn mul8_pair(x: u32) -> u32 {
 fn unorm8_blend_add(p: &TargetParams, band: &mut ColorBand<'_>, at: &BlockAt, colors: &BlockColors, live: u16) {
     let ColorBand::Unorm8(px) = band else { return };
     let dst = load8(px, at);
-    let src = src_words(colors);
+    let src = src_words(at.level, colors);
     let words = lanes(|i| {
         let (s, d) = (src[i], dst[i]);
         add_saturate_pair(s & 0x00ff_00ff, d & 0x00ff_00ff)
@@ -545,6 +553,35 @@ fn rows_f32(p: &TargetParams, band: &mut ColorBand<'_>, at: &BlockAt, colors: &B
 mod tests {
     use super::*;
     use crate::fragment::blend::{blend_unorm8, BlendFunc};
+
+    #[test]
+    fn packed_source_words_are_float_to_unorm_at_every_level() {
+        // Every step's value and the half-way points between steps a few ulps either side
+        // (ties round to even), the ends, values outside [0, 1], ±∞ and NaN, in every channel.
+        let mut values = vec![0.0, -0.0, 1.0, 2.0, -1.0, f32::NAN, f32::INFINITY, f32::NEG_INFINITY, 1e-45];
+        for k in 0..=256u32 {
+            let x = (k as f32 - 0.5) / 255.0;
+            for d in -3..=3i32 {
+                values.push(f32::from_bits((x.abs().to_bits() as i32 + d) as u32).copysign(x));
+            }
+            values.push(k as f32 / 255.0);
+        }
+        values.push(f32::from_bits(1f32.to_bits() - 1));
+        for level in crate::simd::Level::ALL.iter().filter_map(|&l| Supported::new(l)) {
+            for (n, chunk) in values.chunks(LANES).enumerate() {
+                let mut lane_values = [0.25f32; LANES];
+                lane_values[..chunk.len()].copy_from_slice(chunk);
+                // Channel k reads the values rotated by k lanes, so each channel sees each value.
+                let channels: [F32s; 4] =
+                    std::array::from_fn(|k| std::array::from_fn(|i| lane_values[(i + k) % LANES]));
+                let got = crate::simd::dispatch::run_with(level, |l| src_words(l, &BlockColors::Lanes(channels)));
+                for i in 0..LANES {
+                    let want = (0..4).fold(0, |w, k| w | float_to_unorm(channels[k][i], 8) << (8 * k));
+                    assert_eq!(got[i], want, "chunk {n} lane {i} {level:?}");
+                }
+            }
+        }
+    }
 
     #[test]
     fn lane_blending_equals_the_span_blend_for_every_factor_and_equation() {

@@ -207,15 +207,23 @@ fn blocks_shade_as_spans_do() {
                 }
             }
             let before = colors;
-            shading.run_block(&mut scratch, texturing, by, live, &mut colors, |y0, first, out| {
-                for i in 0..LANES {
-                    let mut v = vec![0.0; n];
-                    at(bx + (i & 3) as i32, y0 + (i >> 2) as i32, &mut v);
-                    for (k, o) in out.iter_mut().enumerate() {
-                        o[i] = v.get(first + k).copied().unwrap_or(0.0);
+            shading.run_block(
+                crate::simd::current(),
+                &mut scratch,
+                texturing,
+                by,
+                live,
+                &mut colors,
+                |y0, first, out| {
+                    for i in 0..LANES {
+                        let mut v = vec![0.0; n];
+                        at(bx + (i & 3) as i32, y0 + (i >> 2) as i32, &mut v);
+                        for (k, o) in out.iter_mut().enumerate() {
+                            o[i] = v.get(first + k).copied().unwrap_or(0.0);
+                        }
                     }
-                }
-            });
+                },
+            );
             for r in 0..4 {
                 let y = by + r as i32;
                 // The row as a span from one column left of the block: another grouping of
@@ -377,20 +385,23 @@ fn written_out_linear_fog_is_the_program_bit_for_bit() {
             let mut want = primary;
             let textures = StageTextures { texturing: None, used: !0 };
             shading.run(&mut scratch, &textures, 0xffff, &mut want);
-            let mut got = primary;
-            shading.run_block(&mut scratch, None, 0, 0xffff, &mut got, |_, first, out| {
-                assert_eq!((first, out.len()), (0, 1));
-                out[0] = coordinate;
-            });
-            for k in 0..4 {
-                for i in 0..LANES {
-                    assert_eq!(
-                        got[k][i].to_bits(),
-                        want[k][i].to_bits(),
-                        "start {start} end {end} c {} channel {k}",
-                        coordinate[i]
-                    );
-                    checked += 1;
+            // At every level the CPU has (each runs its own copy of the written-out fog).
+            for level in crate::simd::Level::ALL.iter().filter_map(|&l| crate::simd::Supported::new(l)) {
+                let mut got = primary;
+                shading.run_block(level, &mut scratch, None, 0, 0xffff, &mut got, |_, first, out| {
+                    assert_eq!((first, out.len()), (0, 1));
+                    out[0] = coordinate;
+                });
+                for k in 0..4 {
+                    for i in 0..LANES {
+                        assert_eq!(
+                            got[k][i].to_bits(),
+                            want[k][i].to_bits(),
+                            "start {start} end {end} c {} channel {k} {level:?}",
+                            coordinate[i]
+                        );
+                        checked += 1;
+                    }
                 }
             }
         }
