@@ -161,8 +161,6 @@ static const char *reflect_vertex =
     "uniform bvec2 bv;\n"
     "uniform ivec3 iv;\n"
     "uniform int i1;\n"
-    "uniform sampler2D tex;\n"
-    "uniform samplerCube cube[2];\n"
     "uniform float unused;\n"
     "uniform vec4 init = vec4(1.0, 2.0, 3.0, 4.0);\n"
     "uniform float shared;\n"
@@ -177,15 +175,22 @@ static const char *reflect_vertex =
     "    gl_Position = gl_ModelViewProjectionMatrix * pos + vec4(nrm, 1.0) + vec4(am[0], tc) + gl_Color\n"
     "        + gl_Normal.xxxx + gl_MultiTexCoord1 + bound[3]\n"
     "        + vec4(s.a + s.b[1].x + s.m[0][0] + sa[1].b[0].y + arr[2] + dyn[int(pos.x)] + m3[0][0] + m23[1][2]\n"
-    "        + m42[3][1] + float(bb) + float(bv.y) + float(iv.z) + float(i1) + shared\n"
-    "        + texture2D(tex, vec2(0.0)).x + textureCube(cube[1], vec3(0.0)).x)\n"
+    "        + m42[3][1] + float(bb) + float(bv.y) + float(iv.z) + float(i1) + shared)\n"
     "        + init + gl_LightSource[1].diffuse + gl_FrontMaterial.ambient * gl_Fog.color;\n"
     "}\n";
 
+/* The samplers are the fragment shader's: tessera's vertex shaders have no texture image
+ * units (GL_MAX_VERTEX_TEXTURE_IMAGE_UNITS 0), so a vertex shader that samples does not link. */
 static const char *reflect_fragment =
     "uniform float fu;\n"
     "uniform float shared;\n"
-    "void main() { gl_FragColor = vec4(fu + shared) * gl_FragCoord + gl_TextureEnvColor[0]; }\n";
+    "uniform sampler2D tex;\n"
+    "uniform samplerCube cube[2];\n"
+    "void main()\n"
+    "{\n"
+    "    gl_FragColor = vec4(fu + shared + texture2D(tex, vec2(0.0)).x + textureCube(cube[1], vec3(0.0)).x)\n"
+    "        * gl_FragCoord + gl_TextureEnvColor[0];\n"
+    "}\n";
 
 static int by_name(const void *a, const void *b)
 {
