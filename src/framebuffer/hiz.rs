@@ -270,14 +270,19 @@ impl Band<'_> {
     }
 }
 
-/// Hands `emit` the parts of `area` outside the `rejected` regions ([`Band::hiz_rejected`]
-/// of that area): `area` itself when none is, else per row of regions the runs of the
-/// others, cut to `area`. (Bands start at multiples of [`REGION`] rows, so regions are
-/// aligned in window coordinates too.)
+/// The parts of `area` outside the `rejected` regions ([`Band::hiz_rejected`] of that area):
+/// `area` itself when none is, else per row of regions the runs of the others, cut to
+/// `area`. (Bands start at multiples of [`REGION`] rows, so regions are aligned in window
+/// coordinates too.) Returned as a list rather than handed to a callback so that the caller
+/// walks them from one call site: a walk called from two sites was compiled as a separate
+/// function without the caller's SIMD level (and with a third copy of the colour stage).
 #[inline(always)]
-pub fn visible_parts(area: Rect, rejected: u16, mut emit: impl FnMut(Rect)) {
+pub fn visible_parts(area: Rect, rejected: u16) -> Parts {
+    let mut parts = Parts { rects: [Rect::default(); MAX_PARTS], len: 0 };
     if rejected == 0 {
-        return emit(area);
+        parts.rects[0] = area;
+        parts.len = 1;
+        return parts;
     }
     let (rx0, ry0) = (area.x0.div_euclid(REGION), area.y0.div_euclid(REGION));
     let (rx1, ry1) = ((area.x1 + REGION - 1).div_euclid(REGION), (area.y1 + REGION - 1).div_euclid(REGION));
@@ -294,8 +299,27 @@ pub fn visible_parts(area: Rect, rejected: u16, mut emit: impl FnMut(Rect)) {
                 rx += 1;
             }
             let run = Rect { x0: start * REGION, x1: rx * REGION, y0: ry * REGION, y1: (ry + 1) * REGION };
-            emit(run.intersect(area));
+            parts.rects[parts.len] = run.intersect(area);
+            parts.len += 1;
         }
+    }
+    parts
+}
+
+/// The most parts [`visible_parts`] hands out: an area of at most 4 × 4 regions (the `u16`
+/// of rejected regions) has at most two runs per row of regions.
+const MAX_PARTS: usize = 8;
+
+/// The rectangles of [`visible_parts`].
+#[derive(Clone, Copy, Debug)]
+pub struct Parts {
+    rects: [Rect; MAX_PARTS],
+    len: usize,
+}
+
+impl Parts {
+    pub fn as_slice(&self) -> &[Rect] {
+        &self.rects[..self.len]
     }
 }
 
@@ -320,10 +344,8 @@ mod tests {
     /// The rectangles `hiz_rejected` and `visible_parts` hands out for a flat plane at `z` over `area`.
     fn visible(band: &mut Band<'_>, area: Rect, z: f32, equal_passes: bool) -> Vec<Rect> {
         let plane = DepthPlane { a0: z, dadx: 0.0, dady: 0.0, anchor: [0.0, 0.0] };
-        let mut out = Vec::new();
         let rejected = band.hiz_rejected(area, &plane, DepthReject { equal_passes, clamp: None });
-        visible_parts(area, rejected, |r| out.push(r));
-        out
+        visible_parts(area, rejected).as_slice().to_vec()
     }
 
     const HALF: u32 = 0x80_0000; // 0.5 in 24 bits (0.5 · (2²⁴ − 1) rounded to even)

@@ -587,7 +587,9 @@ impl Straight for Interpreter {
     fn run(&self, code: &Code, st: &mut Registers, io: &mut Io<'_>, start: u32, end: u32) {
         let ops = &code.ops[start as usize..end as usize];
         let wide = &code.wide[..];
-        crate::simd::per_level!({
+        // No SSE4.1 copy (that level runs SSE2's): each copy of the op loop is about 17 KB of
+        // each library, and issue #18's 5 MB limit is close.
+        crate::simd::per_level!(sse2_for_sse41, |_level| {
             for op in ops {
                 step::<true>(op, st, io, wide);
             }
@@ -732,7 +734,8 @@ impl Compiled {
         st.masked = false;
         let mut io = Io { inputs: &[], uniforms, outputs: &mut [], textures: &exec::NoTextures };
         let (ops, wide) = (&bound.ops[..], &self.rest.wide[..]);
-        crate::simd::per_level!({
+        // No SSE4.1 copy, as `Interpreter::run`.
+        crate::simd::per_level!(sse2_for_sse41, |_level| {
             for op in ops {
                 step::<false>(op, st, &mut io, wide);
             }

@@ -297,7 +297,6 @@ impl TriangleJob {
         // their copies for the level (`BlockPipeline::render`). No SSE4.1 copy of the walk
         // (that level runs SSE2's: issue #18's 5 MB limit).
         // Hierarchical z (`framebuffer::hiz`): the regions where every fragment fails the
-        // depth test are not walked.
         // depth test are not walked. Not for triangles smaller than a region in this tile,
         // whose tests would cost more than they save.
         let big = area.x1 - area.x0 >= REGION && area.y1 - area.y0 >= REGION;
@@ -310,7 +309,7 @@ impl TriangleJob {
         };
         crate::simd::per_level!(sse2_for_sse41, |level| {
             let front_facing = self.front_facing;
-            visible_parts(area, rejected, |part| {
+            for &part in visible_parts(area, rejected).as_slice() {
                 walk_blocks(
                     level,
                     part,
@@ -323,7 +322,7 @@ impl TriangleJob {
                         }
                     },
                 );
-            });
+            }
             pipeline.render(level, state, band, scratch, self, front_facing, batch);
         });
     }
