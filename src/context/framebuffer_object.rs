@@ -1457,7 +1457,8 @@ impl Context {
         // draw one, which must then be single-sampled, with rectangles of the same size and
         // (for color) the same format (ARB_framebuffer_object, glBlitFramebuffer).
         let (read_samples, draw_samples) = (self.read_samples(), self.framebuffer_samples());
-        let same_size = (src[2] - src[0], src[3] - src[1]) == (dst[2] - dst[0], dst[3] - dst[1]);
+        let size = |r: [i32; 4]| (i64::from(r[2]) - i64::from(r[0]), i64::from(r[3]) - i64::from(r[1]));
+        let same_size = size(src) == size(dst);
         let same_color = read.color == draw.color;
         if draw_samples > 1 || (read_samples > 1 && (!same_size || (mask & GL_COLOR_BUFFER_BIT != 0 && !same_color))) {
             return self.error(GL_INVALID_OPERATION);

@@ -39,12 +39,12 @@ impl BlitAxis {
 
     /// Whether source and destination have the same size and direction (a plain copy).
     pub fn is_copy(&self) -> bool {
-        self.src1 - self.src0 == self.dst1 - self.dst0
+        wide(self.src1) - wide(self.src0) == wide(self.dst1) - wide(self.dst0)
     }
 
     /// Whether source and destination have the same size, in either direction.
     pub fn is_unscaled(&self) -> bool {
-        (self.src1 - self.src0).abs() == (self.dst1 - self.dst0).abs()
+        (wide(self.src1) - wide(self.src0)).abs() == (wide(self.dst1) - wide(self.dst0)).abs()
     }
 
     /// The source coordinate of the centre of destination pixel `d`.
@@ -56,7 +56,7 @@ impl BlitAxis {
     /// The source pixel NEAREST reads for destination pixel `d`.
     pub fn nearest(&self, d: i32) -> i32 {
         if self.is_copy() {
-            return d - self.dst0 + self.src0;
+            return saturate(wide(d) - wide(self.dst0) + wide(self.src0));
         }
         floor_f64(self.source_coord(d)) as i32
     }
@@ -70,6 +70,17 @@ impl BlitAxis {
         let i = i as i32;
         (i.clamp(lo, hi - 1), (i + 1).clamp(lo, hi - 1), weight)
     }
+}
+
+/// `v` widened, so that sums and differences of any two blit coordinates (any GLint, and
+/// the fuzzer finds the extremes) do not overflow.
+fn wide(v: i32) -> i64 {
+    i64::from(v)
+}
+
+/// `v` clamped to the `i32` range: a coordinate beyond it is outside every buffer either way.
+fn saturate(v: i64) -> i32 {
+    v.clamp(i64::from(i32::MIN), i64::from(i32::MAX)) as i32
 }
 
 /// The destination pixels of a blit: its rectangle cut by `clip` (bounds and scissor).
@@ -207,13 +218,14 @@ fn copy_unorm8(src: &ColorSource, dst: &mut ColorBuffer, x: BlitAxis, y: BlitAxi
     // (src0 + dst0 − 1) − dx, as `BlitAxis::nearest` computes for an unscaled axis.
     let forward = x.is_copy();
     let (sx_of, lo, hi) = if forward {
-        let offset = x.src0 - x.dst0;
-        (x.dst0 - x.src0, -offset, src.width - offset)
+        let offset = wide(x.src0) - wide(x.dst0);
+        (-offset, saturate(-offset), saturate(wide(src.width) - offset))
     } else {
-        let c = x.src0 + x.dst0 - 1;
-        (c, c - src.width + 1, c + 1)
+        let c = wide(x.src0) + wide(x.dst0) - 1;
+        (c, saturate(c - wide(src.width) + 1), saturate(c + 1))
     };
-    let sx = |dx: i32| if forward { dx - sx_of } else { sx_of - dx };
+    // Within [lo, hi) the source column is within the source's width.
+    let sx = |dx: i32| (if forward { wide(dx) - sx_of } else { sx_of - wide(dx) }) as i32;
     let (dx0, dx1) = (rect.x0.max(lo), rect.x1.min(hi));
     if dx0 >= dx1 {
         return true;
@@ -439,7 +451,8 @@ pub fn blit_depth_stencil(
     };
     // An unscaled, unmirrored blit copies runs of whole rows where the formats allow.
     let rows = x.is_copy() && y.is_copy();
-    let (lo, hi) = (x.dst0 - x.src0, x.dst0 - x.src0 + src.width);
+    let shift = wide(x.dst0) - wide(x.src0);
+    let (lo, hi) = (saturate(shift), saturate(shift + wide(src.width)));
     for dy in rect.y0..rect.y1 {
         let sy = y.nearest(dy);
         if sy < 0 || sy >= src.height {
