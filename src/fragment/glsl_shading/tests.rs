@@ -222,31 +222,12 @@ fn a_loop_over_lights_with_ternaries_and_an_if_runs_as_straight_code() {
     eprintln!("phong: {} operations, {} registers", code.ops.len(), code.registers);
 }
 
-/// `tools/bench/bench.c`'s Phong shader runs its colour arithmetic (a `vec4` per light's
+/// `tools/bench/bench.c`'s Phong shader ([`PHONG`]) runs its colour arithmetic (a `vec4` per light's
 /// products and sums, the converted specular `if`'s selects) as groups of four operations:
 /// one dispatch each instead of four.
 #[test]
 fn phong_runs_its_colour_arithmetic_in_groups() {
-    let source = "varying vec3 normal, position;\n\
-        void main() {\n\
-            vec3 n = normalize(normal);\n\
-            vec3 eye = -normalize(position);\n\
-            vec4 color = gl_FrontLightModelProduct.sceneColor;\n\
-            for (int i = 0; i < 2; i++) {\n\
-                vec4 p = gl_LightSource[i].position;\n\
-                vec3 l = p.w == 0.0 ? normalize(p.xyz) : normalize(p.xyz - position);\n\
-                float attenuation = p.w == 0.0 ? 1.0\n\
-                    : 1.0 / (gl_LightSource[i].constantAttenuation\n\
-                             + gl_LightSource[i].linearAttenuation * length(p.xyz - position));\n\
-                float diffuse = max(dot(n, l), 0.0);\n\
-                color += attenuation * (gl_FrontLightProduct[i].ambient + gl_FrontLightProduct[i].diffuse * diffuse);\n\
-                if (diffuse > 0.0) {\n\
-                    float h = max(dot(n, normalize(l + eye)), 0.0);\n\
-                    color += attenuation * gl_FrontLightProduct[i].specular * pow(h, gl_FrontMaterial.shininess);\n\
-                }\n\
-            }\n\
-            gl_FragColor = clamp(color, 0.0, 1.0);\n\
-        }\n";
+    let source = PHONG;
     let mut log = InfoLog::default();
     let checked = compile_shader(source, Stage::Fragment, &Options::default(), &mut log).unwrap();
     let lowered = crate::glsl::lower::lower(&[&checked]).unwrap();
