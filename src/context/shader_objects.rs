@@ -1025,12 +1025,7 @@ mod tests {
     #[test]
     fn draws_with_a_linked_program_run_without_error() {
         let mut ctx = context();
-        let shader = ctx.create_shader(GL_FRAGMENT_SHADER);
-        ctx.shader_source(shader, Ok(vec![b"void main() { gl_FragColor = vec4(1.0); }".to_vec()]));
-        ctx.compile_shader(shader);
-        let program = ctx.create_program();
-        ctx.attach_shader(program, shader);
-        ctx.link_program(program);
+        let program = program_of(&mut ctx, GL_FRAGMENT_SHADER, "void main() { gl_FragColor = vec4(1.0); }");
         assert_eq!(ctx.get_program(program, GL_LINK_STATUS), Some(1));
         ctx.use_program(program);
         ctx.draw_vertices(
@@ -1043,14 +1038,9 @@ mod tests {
     #[test]
     fn samplers_name_the_eight_texture_image_units() {
         let mut ctx = context();
-        let shader = ctx.create_shader(GL_FRAGMENT_SHADER);
-        let source = b"uniform sampler2D a;\nuniform sampler1D b;\n\
+        let source = "uniform sampler2D a;\nuniform sampler1D b;\n\
             void main() { gl_FragColor = texture2D(a, vec2(0.5)) + texture1D(b, 0.5); }";
-        ctx.shader_source(shader, Ok(vec![source.to_vec()]));
-        ctx.compile_shader(shader);
-        let program = ctx.create_program();
-        ctx.attach_shader(program, shader);
-        ctx.link_program(program);
+        let program = program_of(&mut ctx, GL_FRAGMENT_SHADER, source);
         assert_eq!(ctx.get_program(program, GL_LINK_STATUS), Some(1));
         ctx.use_program(program);
         let (a, b) = (ctx.uniform_location(program, "a"), ctx.uniform_location(program, "b"));
@@ -1068,8 +1058,8 @@ mod tests {
         assert_eq!(ctx.take_error(), GL_INVALID_OPERATION);
     }
 
-    /// Links `source` as the only shader of `kind`; the link status and the info log.
-    fn link_one(ctx: &mut Context, kind: GLenum, source: &str) -> (bool, String) {
+    /// A program of `source` compiled as the only shader of `kind` (which must compile), linked.
+    fn program_of(ctx: &mut Context, kind: GLenum, source: &str) -> u32 {
         let shader = ctx.create_shader(kind);
         ctx.shader_source(shader, Ok(vec![source.as_bytes().to_vec()]));
         ctx.compile_shader(shader);
@@ -1077,6 +1067,12 @@ mod tests {
         let program = ctx.create_program();
         ctx.attach_shader(program, shader);
         ctx.link_program(program);
+        program
+    }
+
+    /// Links `source` as the only shader of `kind`; the link status and the info log.
+    fn link_one(ctx: &mut Context, kind: GLenum, source: &str) -> (bool, String) {
+        let program = program_of(ctx, kind, source);
         let linked = ctx.get_program(program, GL_LINK_STATUS) == Some(1);
         (linked, ctx.program_info_log(program).unwrap_or_default())
     }

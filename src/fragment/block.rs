@@ -827,6 +827,23 @@ fn glsl_block_colors(
     kept
 }
 
+/// Test values around every unorm8 step: each step `k/255`, the half-way points between
+/// steps and the floats a few ulps either side of them (ties round to even), and the float
+/// just below 1.
+#[cfg(test)]
+pub(crate) fn unorm8_steps_and_ties() -> Vec<f32> {
+    let mut values = Vec::new();
+    for k in 0..=256u32 {
+        let x = (k as f32 - 0.5) / 255.0;
+        for d in -3..=3i32 {
+            values.push(f32::from_bits((x.abs().to_bits() as i32 + d) as u32).copysign(x));
+        }
+        values.push(k as f32 / 255.0);
+    }
+    values.push(f32::from_bits(1f32.to_bits() - 1));
+    values
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -883,14 +900,7 @@ mod tests {
         use crate::gl::CompareFunc as C;
         // Alphas at and around every unorm8 step and the references, the edges and NaN.
         let mut alphas = vec![0.0, -0.0, 1.0, 2.0, -1.0, f32::NAN, f32::INFINITY, f32::NEG_INFINITY, 1e-30, 1e-45];
-        for k in 0..=256u32 {
-            let x = (k as f32 - 0.5) / 255.0;
-            for d in -3..=3i32 {
-                alphas.push(f32::from_bits((x.abs().to_bits() as i32 + d) as u32).copysign(x));
-            }
-            alphas.push(k as f32 / 255.0);
-        }
-        alphas.push(f32::from_bits(1f32.to_bits() - 1));
+        alphas.extend(unorm8_steps_and_ties());
         let references = [0.0, 1.0, 0.5, 0.1, 0.75, 125.5 / 255.0, 126.5 / 255.0, -0.5, 1.5, f32::NAN, 1e-40];
         for func in [C::Never, C::Less, C::Equal, C::LessEqual, C::Greater, C::NotEqual, C::GreaterEqual, C::Always] {
             for &reference in &references {

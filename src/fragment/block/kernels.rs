@@ -559,14 +559,7 @@ mod tests {
         // Every step's value and the half-way points between steps a few ulps either side
         // (ties round to even), the ends, values outside [0, 1], ±∞ and NaN, in every channel.
         let mut values = vec![0.0, -0.0, 1.0, 2.0, -1.0, f32::NAN, f32::INFINITY, f32::NEG_INFINITY, 1e-45];
-        for k in 0..=256u32 {
-            let x = (k as f32 - 0.5) / 255.0;
-            for d in -3..=3i32 {
-                values.push(f32::from_bits((x.abs().to_bits() as i32 + d) as u32).copysign(x));
-            }
-            values.push(k as f32 / 255.0);
-        }
-        values.push(f32::from_bits(1f32.to_bits() - 1));
+        values.extend(crate::fragment::block::unorm8_steps_and_ties());
         for level in crate::simd::Level::ALL.iter().filter_map(|&l| Supported::new(l)) {
             for (n, chunk) in values.chunks(LANES).enumerate() {
                 let mut lane_values = [0.25f32; LANES];
