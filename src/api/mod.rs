@@ -129,14 +129,24 @@ pub(crate) fn guard<R>(default: R, f: impl FnOnce() -> R) -> R {
     match catch_unwind(AssertUnwindSafe(f)) {
         Ok(value) => value,
         Err(payload) => {
-            let message = payload
-                .downcast_ref::<&str>()
-                .map(|s| s.to_string())
-                .or_else(|| payload.downcast_ref::<String>().cloned())
-                .unwrap_or_else(|| "unknown panic".to_string());
-            CAUGHT_PANICS.fetch_add(1, Ordering::Relaxed);
-            eprintln!("tessera: internal error caught at the API edge: {message}");
+            report_caught_panic(payload);
             default
         }
     }
+}
+
+/// Counts a panic [`guard`] caught and reports it on stderr. Out of line and not generic: one
+/// copy instead of one in each of the ~800 entry points (inlined, the message's downcasts,
+/// string copies and `eprintln!` were about 450 bytes of each: outlined, the stripped
+/// libraries are 272 KB smaller).
+#[cold]
+#[inline(never)]
+fn report_caught_panic(payload: Box<dyn std::any::Any + Send>) {
+    let message = payload
+        .downcast_ref::<&str>()
+        .map(|s| s.to_string())
+        .or_else(|| payload.downcast_ref::<String>().cloned())
+        .unwrap_or_else(|| "unknown panic".to_string());
+    CAUGHT_PANICS.fetch_add(1, Ordering::Relaxed);
+    eprintln!("tessera: internal error caught at the API edge: {message}");
 }

@@ -1,74 +1,41 @@
-//! The GLSL front end: GLSL 1.10 and 1.20 shader source → a checked, typed program
-//! ([`hir`]) for one stage, with an info log worded as Mesa's. The lowering onto the shading
-//! IR of [`crate::shader`] builds on it; [`compile_shader`] is the entry point for
-//! `glCompileShader`.
+//! GLSL in tessera: the front end (the `tessera-glsl-front` crate, re-exported here: source →
+//! a checked, typed program with Mesa's info log), the lowering of checked shaders onto the
+//! shading IR of [`crate::shader`], and linking.
 //!
-//! - [`preprocess`]: directives, conditionals and macro expansion over tokens.
-//! - [`lex`]: source → preprocessing tokens → GLSL tokens of the shader's version.
-//! - [`parse`]: recursive descent over the grammar of chapter 9 into [`ast`].
-//! - [`check`]: semantic analysis into [`hir`], with the built-ins of [`builtins`] and the
-//!   constant folding of [`fold`].
-//! - [`diagnostics`]: positions and the info log (`0:12(5): error: ...`).
+//! - [`preprocess`], [`lex`], [`parse`], [`ast`], [`check`], [`hir`], [`builtins`], [`fold`],
+//!   [`diagnostics`]: the front end ([`compile_shader`] is `glCompileShader`'s entry).
 //! - [`lower`]: the checked units of one stage → a shading IR program, with its uniform,
 //!   input, output and sampler interface by GL names.
 //! - [`link`]: the shaders of a program → one interface (Mesa's link errors), the active
 //!   uniforms and attributes with their locations, and the uniform values' storage.
-//!
-//! As in Mesa, preprocessor errors end the compile before parsing, and the first syntax
-//! error ends the parse; semantic errors are all reported. Nothing here is tied to a GL
-//! context.
+//! - [`varyings`]: where a program's varyings sit in the vertex record.
 #![deny(unsafe_code)]
 
-pub mod ast;
-pub mod builtins;
-pub mod check;
-pub mod diagnostics;
-pub mod fold;
-pub mod hir;
-pub mod lex;
+pub use glsl_front::{ast, builtins, check, diagnostics, fold, hir, lex, parse, preprocess};
+pub use glsl_front::{compile_shader, parse_shader, Checked, InfoLog, Limits, Options, Parsed, Stage};
+
 pub mod link;
 pub mod lower;
-pub mod parse;
-pub mod preprocess;
 pub mod varyings;
 
 #[cfg(test)]
-mod check_tests;
-#[cfg(test)]
 mod tests;
 
-pub use builtins::Limits;
-pub use diagnostics::InfoLog;
-pub use hir::{Checked, Stage};
-pub use preprocess::Options;
-
-/// A parsed shader and what the preprocessor recorded about it.
-#[derive(Clone, Debug)]
-pub struct Parsed {
-    pub unit: ast::TranslationUnit,
-    pub extensions: Vec<preprocess::Extension>,
-    pub invariant_all: bool,
-}
-
-/// Preprocesses and parses one shader source. `None` when the log holds an error.
-pub fn parse_shader(source: &str, options: &Options, log: &mut InfoLog) -> Option<Parsed> {
-    let pre = preprocess::preprocess(source, options, log);
-    if log.has_errors() {
-        return None;
-    }
-    let tokens = lex::classify(&pre.tokens, pre.version, pre.end, log);
-    // The preprocessor's tokens are not needed past here: freed before the tree is built,
-    // they do not add to the compile's peak memory (a token each, 10⁶ of them in a
-    // 10⁵-line shader).
-    let preprocess::Preprocessed { version, tokens: preprocessed, extensions, invariant_all, .. } = pre;
-    drop(preprocessed);
-    let unit = parse::parse(&tokens, version, log).ok()?;
-    Some(Parsed { unit, extensions, invariant_all })
-}
-
-/// Compiles one shader source for `stage`: preprocessing, parsing and semantic analysis.
-/// `None` when the log holds an error; warnings may be in the log either way.
-pub fn compile_shader(source: &str, stage: Stage, options: &Options, log: &mut InfoLog) -> Option<Checked> {
-    let parsed = parse_shader(source, options, log)?;
-    check::check(&parsed, stage, &Limits::default(), log)
-}
+// The front end's limits (`Limits::TESSERA`, what the compiler lets shaders use) are written
+// out in its crate, which cannot see tessera's; they must be the ones glGet reports.
+const _: () = {
+    use crate::gl::limits::{
+        MAX_CLIP_PLANES, MAX_DRAW_BUFFERS, MAX_LIGHTS, MAX_TEXTURE_COORDS, MAX_TEXTURE_IMAGE_UNITS, MAX_TEXTURE_UNITS,
+        MAX_VERTEX_ATTRIBS,
+    };
+    let limits = Limits::TESSERA;
+    assert!(limits.max_lights == MAX_LIGHTS as i32);
+    assert!(limits.max_clip_planes == MAX_CLIP_PLANES as i32);
+    assert!(limits.max_texture_units == MAX_TEXTURE_UNITS as i32);
+    assert!(limits.max_texture_coords == MAX_TEXTURE_COORDS as i32);
+    assert!(limits.max_vertex_attribs == MAX_VERTEX_ATTRIBS as i32);
+    assert!(limits.max_varying_floats == varyings::MAX_VARYING_FLOATS as i32);
+    assert!(limits.max_combined_texture_image_units == MAX_TEXTURE_IMAGE_UNITS as i32);
+    assert!(limits.max_texture_image_units == MAX_TEXTURE_IMAGE_UNITS as i32);
+    assert!(limits.max_draw_buffers == MAX_DRAW_BUFFERS as i32);
+};

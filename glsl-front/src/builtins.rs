@@ -264,36 +264,30 @@ pub struct Limits {
 }
 
 impl Limits {
-    /// What tessera's GL reports (`crate::gl::limits`; glGet answers the GL_MAX_* pnames of
-    /// GL 2.0 from this): 4 fixed-function texture units, 8 texture image units for fragment
-    /// shaders (GL_MAX_TEXTURE_IMAGE_UNITS, the combined count too), 6 clip planes. No
-    /// texture image units for vertex shaders (GL 2.0 allows 0: their lookups are not
-    /// wired to textures). 8 texture coordinate sets (GL_MAX_TEXTURE_COORDS, as on
-    /// Mesa; piglit's shaders index `gl_TexCoord[7]` without asking): sets 4..7 have current
-    /// values, arrays, texture matrices and texgen state but no fixed-function texturing
-    /// (GL 2.0 section 2.7; GLSL 1.20 section 7.4 wants gl_MaxTextureCoords equal to it).
-    /// The uniform budget is Mesa's llvmpipe value,
-    /// the one the link checks ([`super::link`]); the varying budget what the vertex record
-    /// carries ([`super::varyings`]; Mesa's is 128).
-    pub const TESSERA: Limits = {
-        use crate::gl::limits::{
-            MAX_CLIP_PLANES, MAX_DRAW_BUFFERS, MAX_LIGHTS, MAX_TEXTURE_COORDS, MAX_TEXTURE_IMAGE_UNITS,
-            MAX_TEXTURE_UNITS, MAX_VERTEX_ATTRIBS,
-        };
-        Limits {
-            max_lights: MAX_LIGHTS as i32,
-            max_clip_planes: MAX_CLIP_PLANES as i32,
-            max_texture_units: MAX_TEXTURE_UNITS as i32,
-            max_texture_coords: MAX_TEXTURE_COORDS as i32,
-            max_vertex_attribs: MAX_VERTEX_ATTRIBS as i32,
-            max_vertex_uniform_components: 16384,
-            max_varying_floats: super::varyings::MAX_VARYING_FLOATS as i32,
-            max_vertex_texture_image_units: 0,
-            max_combined_texture_image_units: MAX_TEXTURE_IMAGE_UNITS as i32,
-            max_texture_image_units: MAX_TEXTURE_IMAGE_UNITS as i32,
-            max_fragment_uniform_components: 16384,
-            max_draw_buffers: MAX_DRAW_BUFFERS as i32,
-        }
+    /// What tessera's GL reports (glGet answers the GL_MAX_* pnames of GL 2.0 from this;
+    /// tessera's `glsl` module asserts at compile time that these are its `gl::limits` and
+    /// varying budget, which this crate cannot see): 4 fixed-function texture units, 8 texture
+    /// image units for fragment shaders (GL_MAX_TEXTURE_IMAGE_UNITS, the combined count too),
+    /// 6 clip planes. No texture image units for vertex shaders (GL 2.0 allows 0: their
+    /// lookups are not wired to textures). 8 texture coordinate sets (GL_MAX_TEXTURE_COORDS,
+    /// as on Mesa; piglit's shaders index `gl_TexCoord[7]` without asking): sets 4..7 have
+    /// current values, arrays, texture matrices and texgen state but no fixed-function
+    /// texturing (GL 2.0 section 2.7; GLSL 1.20 section 7.4 wants gl_MaxTextureCoords equal
+    /// to it). The uniform budget is Mesa's llvmpipe value, the one tessera's link checks;
+    /// the varying budget what tessera's vertex record carries (16 vec4 slots; Mesa's is 128).
+    pub const TESSERA: Limits = Limits {
+        max_lights: 8,
+        max_clip_planes: 6,
+        max_texture_units: 4,
+        max_texture_coords: 8,
+        max_vertex_attribs: 16,
+        max_vertex_uniform_components: 16384,
+        max_varying_floats: 64,
+        max_vertex_texture_image_units: 0,
+        max_combined_texture_image_units: 8,
+        max_texture_image_units: 8,
+        max_fragment_uniform_components: 16384,
+        max_draw_buffers: 8,
     };
 }
 
