@@ -231,7 +231,9 @@ impl Present for CallerPresenter {
         // The first presentation into a buffer faults its pages in (the caller's fresh
         // memory: one fault per 4 KiB outside huge pages); each band asks for its pages in
         // one call instead (`framebuffer::pages::populate`). Later ones find them mapped.
-        let populate = !std::mem::replace(&mut self.populated, true);
+        // Only for rows without gaps: the pages of a wide row length's padding may never be
+        // written, so they are not asked for.
+        let populate = !std::mem::replace(&mut self.populated, true) && stride == width * bpp;
         let write_band = |first_row: usize, band: &mut [u8]| {
             if populate {
                 pages::populate(band);
