@@ -342,8 +342,12 @@ mod tests {
     #[test]
     fn prestarted_threads_are_spawned_at_once_and_serve_later_jobs() {
         // A pool of its own, so that the other tests' jobs do not change its thread count.
-        let pool =
-            Arc::new(Pool { pid: 0, state: Mutex::new(State::default()), posted: Condvar::new(), finished: Condvar::new() });
+        let pool = Arc::new(Pool {
+            pid: 0,
+            state: Mutex::new(State::default()),
+            posted: Condvar::new(),
+            finished: Condvar::new(),
+        });
         pool.prestart(3);
         assert_eq!(relock(&pool.state).threads, 3);
         pool.prestart(2);
