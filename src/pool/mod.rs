@@ -60,6 +60,18 @@ pub fn run(helpers: usize, work: &(dyn Fn() + Sync)) {
     }
 }
 
+/// Spawns pool threads until there are `helpers`, without waiting for them to start: a
+/// context calls this when it is made, so that the threads have started and parked (a fresh
+/// thread's start-up, its stack and its allocator arena take tens of microseconds, and
+/// longer on a loaded machine) by the time its first scene wants them, instead of the
+/// calling thread doing the first scene mostly alone.
+pub fn prestart(helpers: usize) {
+    if helpers == 0 {
+        return;
+    }
+    Pool::current().prestart(helpers);
+}
+
 /// Runs `a` and `b`, `a` on a pool thread when one is free at once, else both on the calling
 /// thread, and returns both results.
 pub fn join<A, B, RA, RB>(a: A, b: B) -> (RA, RB)
@@ -182,19 +194,36 @@ impl Pool {
         state.jobs.push(Job { id, work, slots: helpers, active: 0, panic: None });
         let wanted = helpers.min(MAX_THREADS);
         while state.idle < wanted && state.threads < wanted {
-            let pool = self.clone();
-            let spawned = std::thread::Builder::new().name("tessera-worker".into()).spawn(move || pool.serve()).is_ok();
-            if !spawned {
+            if !self.spawn(&mut state) {
                 break; // the caller does the work itself
             }
-            state.threads += 1;
-            state.idle += 1;
         }
         drop(state);
         for _ in 0..helpers.min(MAX_THREADS) {
             self.posted.notify_one();
         }
         id
+    }
+
+    /// [`prestart`] on this pool.
+    fn prestart(self: &Arc<Self>, helpers: usize) {
+        let mut state = relock(&self.state);
+        while state.threads < helpers.min(MAX_THREADS) {
+            if !self.spawn(&mut state) {
+                break;
+            }
+        }
+    }
+
+    /// Spawns one more pool thread (counted as parked); false when the system refuses.
+    fn spawn(self: &Arc<Self>, state: &mut State) -> bool {
+        let pool = self.clone();
+        let spawned = std::thread::Builder::new().name("tessera-worker".into()).spawn(move || pool.serve()).is_ok();
+        if spawned {
+            state.threads += 1;
+            state.idle += 1;
+        }
+        spawned
     }
 
     /// Closes job `id` to new helpers, waits until those that joined have finished, and
@@ -308,6 +337,30 @@ mod tests {
         }));
         assert!(result.is_err(), "the panic is raised on the calling thread");
         assert_eq!(sum_of_items(2, 100), 100, "the pool still works after a panic");
+    }
+
+    #[test]
+    fn prestarted_threads_are_spawned_at_once_and_serve_later_jobs() {
+        // A pool of its own, so that the other tests' jobs do not change its thread count.
+        let pool = Arc::new(Pool {
+            pid: 0,
+            state: Mutex::new(State::default()),
+            posted: Condvar::new(),
+            finished: Condvar::new(),
+        });
+        pool.prestart(3);
+        assert_eq!(relock(&pool.state).threads, 3);
+        pool.prestart(2);
+        assert_eq!(relock(&pool.state).threads, 3, "no more threads than asked for");
+        let done = AtomicUsize::new(0);
+        let work = || {
+            done.fetch_add(1, Ordering::SeqCst);
+        };
+        let id = pool.post(lifetime::erase(&work), 3);
+        work();
+        assert!(pool.close(id).is_none());
+        assert_eq!(relock(&pool.state).threads, 3, "the job found the prestarted threads");
+        assert!((1..=4).contains(&done.load(Ordering::SeqCst)));
     }
 
     #[test]

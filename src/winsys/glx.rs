@@ -655,6 +655,8 @@ pub fn create_context(display: DisplayAddr, config: &'static FbConfig, share: us
         0 => None,
         handle => Some(lookup_context(handle)?),
     };
+    // The worker threads start now rather than at the first scene (`crate::pool::prestart`).
+    crate::pool::prestart(crate::raster::thread_count() - 1);
     let mut context = Context::new(ContextConfig { visual: config.framebuffer_config() });
     if let Some(source) = share_source {
         context.join_share_group(source.shared.share_group());

@@ -36,6 +36,7 @@
 use crate::context::current::{self, SharedContext};
 use crate::context::{Context, ContextConfig};
 use crate::framebuffer::external::CallerBuffer;
+use crate::framebuffer::pages;
 use crate::framebuffer::surface::{ColorPixels, DepthStencilPixels};
 use crate::framebuffer::{
     ColorFormat, ColorSlot, DepthStencilFormat, Drawable, Framebuffer, FramebufferConfig, OutOfMemory, Present,
@@ -199,6 +200,8 @@ struct CallerPresenter {
     ty: GLenum,
     row_length: usize,
     y_up: bool,
+    /// Whether a presentation has faulted the buffer's pages in.
+    populated: bool,
 }
 
 impl Present for CallerPresenter {
@@ -225,33 +228,36 @@ impl Present for CallerPresenter {
         let Some(bytes) = self.buffer.bytes_mut(0, rows_bytes) else {
             return;
         };
-        let mut rows: Vec<(usize, &mut [u8])> = bytes
-            .chunks_mut(stride)
-            .enumerate()
-            .map(|(dst_row, row)| (if y_up { dst_row } else { height - 1 - dst_row }, &mut row[..width * bpp]))
-            .collect();
+        // The first presentation into a buffer faults its pages in (the caller's fresh
+        // memory: one fault per 4 KiB outside huge pages); each band asks for its pages in
+        // one call instead (`framebuffer::pages::populate`). Later ones find them mapped.
+        // Only for rows without gaps: the pages of a wide row length's padding may never be
+        // written, so they are not asked for.
+        let populate = !std::mem::replace(&mut self.populated, true) && stride == width * bpp;
+        let write_band = |first_row: usize, band: &mut [u8]| {
+            if populate {
+                pages::populate(band);
+            }
+            for (i, row) in band.chunks_mut(stride).enumerate() {
+                let dst_row = first_row + i;
+                let y = if y_up { dst_row } else { height - 1 - dst_row };
+                present_row(layout, color.pixels(), width, y, &mut row[..width * bpp]);
+            }
+        };
         // A large image is written by the shared worker threads too, in bands of rows: the
         // first write of a fresh caller buffer is mostly page faults (one per 4 KiB), which
         // then happen on every core at once.
         let threads = if width * height >= PARALLEL_PRESENT_PIXELS { thread_count() } else { 1 };
         if threads <= 1 {
-            rows.into_iter().for_each(|(y, dst)| present_row(layout, color.pixels(), width, y, dst));
-            return;
+            return write_band(0, bytes);
         }
-        let band = rows.len().div_ceil(threads * 4).max(1);
-        let mut bands = Vec::new();
-        while !rows.is_empty() {
-            let rest = rows.split_off(rows.len().saturating_sub(band));
-            bands.push(rest);
-        }
-        let queue = Mutex::new(bands.into_iter());
+        let band_rows = height.div_ceil(threads * 4).max(1);
+        let queue = Mutex::new(bytes.chunks_mut(band_rows * stride).enumerate());
         crate::pool::run(threads - 1, &|| loop {
-            let Some(band) = queue.lock().unwrap_or_else(|p| p.into_inner()).next() else {
+            let Some((index, band)) = queue.lock().unwrap_or_else(|p| p.into_inner()).next() else {
                 break;
             };
-            for (y, dst) in band {
-                present_row(layout, color.pixels(), width, y, dst);
-            }
+            write_band(index * band_rows, band);
         });
     }
 }
@@ -361,7 +367,8 @@ impl OsMesaContext {
         if row_length <= width {
             buffer.advise_huge_pages();
         }
-        let presenter = Box::new(CallerPresenter { buffer, layout: self.request.layout, ty, row_length, y_up });
+        let presenter =
+            Box::new(CallerPresenter { buffer, layout: self.request.layout, ty, row_length, y_up, populated: false });
         let mut binding = self.lock_binding();
         let reuse = binding.as_ref().filter(|b| b.ty == ty && b.width == width && b.height == height);
         let drawable = match reuse {
@@ -408,6 +415,7 @@ impl OsMesaContext {
                 ty: b.ty,
                 row_length,
                 y_up,
+                populated: false,
             };
             b.drawable.lock().unwrap_or_else(|p| p.into_inner()).presenter = Some(Box::new(presenter));
         }
@@ -486,6 +494,9 @@ pub fn create(request: Request, share: Option<usize>) -> Option<usize> {
         Some(handle) => Some(lookup(handle)?),
         None => None,
     };
+    // The worker threads start now, while the context is built and bound, rather than at
+    // its first scene (`crate::pool::prestart`).
+    crate::pool::prestart(thread_count() - 1);
     // The color format is decided by the type given at MakeCurrent; RGBA8 until then.
     let placeholder = request.layout.color_format(GL_UNSIGNED_BYTE).unwrap_or(ColorFormat::Rgb565);
     let mut context = Context::new(ContextConfig { visual: request.config(placeholder) });
