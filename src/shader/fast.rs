@@ -57,6 +57,20 @@
 //! and with the file reached through `self` (the compiler reloaded its pointer and length
 //! after every store), groups saved 1.5 %, not 8 %.
 //!
+//! GLSL's `pow` (log2, a product, exp2) is one operation, [`Op::Pow`], and
+//! [`super::math::log2_lanes`] takes zero in its vector path (a light's specular power at
+//! the lanes facing away from it: scalar calls before, ≈ 2 % of phong's instructions).
+//! Together (`tools/bench/bench.c`'s `phong_shader`, 256², one thread, release build without
+//! LTO, AVX2, callgrind): the whole process 1 227 → 1 161 million instructions (≈ 17 560 →
+//! 16 610 per shaded block), the same bytes at SSE2 and AVX2.
+//! Tried and dropped: every operation reading a fixed-size file through register numbers
+//! masked to it (4096 words, no bounds checks; a larger program would not link): each
+//! operand's compare and branch (26.7 million instructions on phong at 256²) became an `and`
+//! (30.9 million), no fewer instructions; and piglit's `glsl-fs-uniform-array-6` has 10 239
+//! registers. A byte index (256 words) would make the mask free but needs words reused
+//! between register lifetimes first (14 of piglit's 1 237 GLSL 1.10/1.20 shaders have more
+//! than 256 registers, 4 more than 1 024).
+//!
 //! The unrolled iterations reassigned the same registers (the light's position, products,
 //! results), so their uniform values stayed in the per-block run as moves instead of the
 //! prologue; written once, they are computed once per draw. What is left per block is ~150
@@ -452,6 +466,11 @@ operations!(|st, io, wide| {
     },
     Op::Exp2 { d, a } => st.put(d, super::math::exp2_lanes(st.get(a))),
     Op::Log2 { d, a } => st.put(d, super::math::log2_lanes(st.get(a))),
+    Op::Pow { d, a, b } => {
+        let l = super::math::log2_lanes(st.get(a));
+        let m = map2(st.get(b), &l, |y, l| fu(f(y) * f(l)));
+        st.put(d, super::math::exp2_lanes(&m))
+    },
 });
 
 /// Where the lanes that stopped running went (as in the reference).
@@ -925,7 +944,8 @@ fn op_reads(op: &Op, wide: &[Wide]) -> Vec<R> {
         | Op::Max { a, b, .. }
         | Op::Lt { a, b, .. }
         | Op::Le { a, b, .. }
-        | Op::Binary { a, b, .. } => vec![a, b],
+        | Op::Binary { a, b, .. }
+        | Op::Pow { a, b, .. } => vec![a, b],
         Op::SMad { a, b, c, .. }
         | Op::Mad { a, b, c, .. }
         | Op::SSelect { c, a, b, .. }

@@ -244,6 +244,14 @@ pub enum Op {
         d: R,
         a: R,
     },
+    /// `d = exp2(b·log2(a))` as the three operations compute it ([`super::math`]'s lane
+    /// functions, the product rounded once): GLSL's `pow`, one dispatch and no stores of
+    /// the logarithm and the product.
+    Pow {
+        d: R,
+        a: R,
+        b: R,
+    },
 }
 
 /// The operations too large to keep in an [`Op`].
@@ -998,6 +1006,25 @@ impl Lowering {
                     continue;
                 }
             }
+            // Power, as the GLSL front end writes `pow`: l = log2 a; m = b·l; d = exp2 m.
+            if let [Inst::Unary { op: UnaryOp::Log2, dst: l, a }, Inst::Binary { op: FMul, dst: m, a: b, b: l2 }, Inst::Unary { op: UnaryOp::Exp2, dst, a: m2 }, ..] =
+                rest
+            {
+                if l == l2
+                    && m == m2
+                    && l != m
+                    && a != l
+                    && b != l
+                    && self.temporary(*l, 1)
+                    && self.temporary(*m, 1)
+                    && !self.uniform(*dst)
+                {
+                    let op = Op::Pow { d: self.r(*dst), a: self.r(*a), b: self.r(*b) };
+                    self.ops.push(op);
+                    k += 3;
+                    continue;
+                }
+            }
             // Clamp: t = max(a, lo); d = min(t, hi).
             if let [Inst::Binary { op: FMax, dst: t, a, b: lo }, Inst::Binary { op: FMin, dst, a: t2, b: hi }, ..] =
                 rest
@@ -1219,7 +1246,8 @@ pub(super) fn op_writes(op: &Op, wide: &[Wide]) -> ([R; 4], usize) {
         | Op::Derivative { d, .. }
         | Op::MatRow { d, .. }
         | Op::Exp2 { d, .. }
-        | Op::Log2 { d, .. } => one(d),
+        | Op::Log2 { d, .. }
+        | Op::Pow { d, .. } => one(d),
         Op::Normalize3 { d, .. } => ([d[0], d[1], d[2], 0], 3),
         Op::Output { .. } => ([0; 4], 0),
         Op::MatVec(i) | Op::Texture(i) | Op::Group(i) => match wide[i as usize] {

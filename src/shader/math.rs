@@ -188,7 +188,9 @@ fn fma_common(a: f32, b: f32, c: f32, slow: &mut bool) -> f32 {
 
 /// [`log2`] of sixteen lanes of f32 bits, the same bits: the common case branch-free over
 /// the lanes (so that it vectorises), then the scalar function for the lanes it does not
-/// cover (NaN, zero, negative, +∞, and the rare fused multiply-adds).
+/// cover (NaN, negative, +∞, and the rare fused multiply-adds). Zero (−∞) is a lane of the
+/// common case: `pow(max(dot(n, h), 0.0), e)` takes it in every lane facing away from a
+/// light, and the scalar calls for those were 2 % of a Phong shader's instructions.
 #[inline(always)]
 pub fn log2_lanes(x: &[u32; 16]) -> [u32; 16] {
     let c = LOG2_F32;
@@ -197,7 +199,8 @@ pub fn log2_lanes(x: &[u32; 16]) -> [u32; 16] {
     for i in 0..16 {
         let bits = x[i];
         let v = f32::from_bits(bits);
-        let mut s = (v <= 0.0) | v.is_nan() | (v == f32::INFINITY);
+        let zero = v == 0.0;
+        let mut s = (v < 0.0) | v.is_nan() | (v == f32::INFINITY);
         let exponent = (((bits & 0x7f80_0000) >> 23) as i32 - 127) as f32;
         let mantissa = f32::from_bits((bits & 0x007f_ffff) | 1.0f32.to_bits());
         let y = (mantissa - 1.0) / (mantissa + 1.0);
@@ -208,8 +211,10 @@ pub fn log2_lanes(x: &[u32; 16]) -> [u32; 16] {
         let odd = fma_common(z2, c[3], c[1], &mut s);
         let even = fma_common(z2, even, c[0], &mut s);
         let p = fma_common(odd, z, even, &mut s);
-        out[i] = fma_common(y, p, exponent, &mut s).to_bits();
-        slow[i] = s;
+        let value = fma_common(y, p, exponent, &mut s).to_bits();
+        // ±0: −∞ as [`log2`] gives it (the arithmetic above is of the bits 0, and ignored).
+        out[i] = if zero { f32::NEG_INFINITY.to_bits() } else { value };
+        slow[i] = s & !zero;
     }
     for i in 0..16 {
         if slow[i] {

@@ -1435,6 +1435,52 @@ fn exp2_and_log2_over_lanes_give_the_scalar_functions_bits() {
     }
 }
 
+/// GLSL's `pow` (log2, the exponent times it, exp2) is one fused operation, with the bits
+/// of the three (the reference's): zeros, negative and NaN bases, ±∞ and huge exponents,
+/// the exponent read before the logarithm is written (a base that is its own exponent).
+#[test]
+fn pow_is_one_operation_with_the_bits_of_its_three() {
+    let specials =
+        [0.0, -0.0, 1.0, 2.0, 0.5, -1.5, 1e-40, 3e38, f32::INFINITY, f32::NEG_INFINITY, f32::NAN, 128.0, -130.0];
+    for same in [false, true] {
+        let mut p = Program::new(Stage::Fragment);
+        let [x, y, l, m, d] = [0; 5].map(|_| p.register(Type::F32));
+        p.input(Type::F32);
+        p.input(Type::F32);
+        p.output(Type::F32);
+        let y = if same { x } else { y };
+        p.body = vec![
+            Stmt::Inst(Inst::Input { dst: x, slot: 0 }),
+            Stmt::Inst(Inst::Input { dst: y, slot: 1 }),
+            Stmt::Inst(Inst::Unary { op: UnaryOp::Log2, dst: l, a: x }),
+            Stmt::Inst(Inst::Binary { op: BinaryOp::FMul, dst: m, a: y, b: l }),
+            Stmt::Inst(Inst::Unary { op: UnaryOp::Exp2, dst: d, a: m }),
+            Stmt::Inst(Inst::Output { slot: 0, src: d }),
+        ];
+        validate(&p).unwrap();
+        let compiled = Compiled::new(&p);
+        let ops = &compiled.code().ops;
+        assert!(ops.iter().any(|o| matches!(o, super::lower::Op::Pow { .. })), "{ops:?}");
+        assert!(!ops.iter().any(|o| matches!(o, super::lower::Op::Exp2 { .. })), "{ops:?}");
+        let mut rng = Rng(0x90_0000_7777);
+        for round in 0..500 {
+            let mut value = || match rng.below(3) {
+                0 => specials[rng.below(specials.len())].to_bits(),
+                1 => rng.next() as u32,
+                _ => rng.float().to_bits(),
+            };
+            let inputs: [Word; 2] = [std::array::from_fn(|_| value()), std::array::from_fn(|_| value())];
+            let lanes = if round % 2 == 0 { ALL_LANES } else { 0x9c3f };
+            let (mut want, mut got) = (vec![[0u32; LANES]; 1], vec![[0u32; LANES]; 1]);
+            let mut io = Io { inputs: &inputs, uniforms: &[], outputs: &mut want, textures: &NoTextures };
+            Executor::new().run(&p, &mut io, lanes);
+            let mut io = Io { inputs: &inputs, uniforms: &[], outputs: &mut got, textures: &NoTextures };
+            compiled.run(&mut Registers::new(), &mut io, lanes);
+            assert_eq!(got, want, "pow of {:?} and {:?}", inputs[0].map(f32::from_bits), inputs[1].map(f32::from_bits));
+        }
+    }
+}
+
 // ---- Flattening (`super::flatten`) ---------------------------------------------------
 
 /// Counts the `if`s and loops of a body.

@@ -23,6 +23,13 @@ use crate::glsl::lower::Word as InterfaceWord;
 use crate::shader::exec::{Io, NoTextures, ALL_LANES, LANES};
 use crate::shader::fast::{Compiled, Registers};
 
+thread_local! {
+    /// A thread's register file for [`GlslStage::run`], kept between runs (a run's reads
+    /// reach only words its program writes first or zeroes: the contents left by another
+    /// program are never read).
+    static REGISTERS: std::cell::Cell<Registers> = std::cell::Cell::new(Registers::default());
+}
+
 /// What one input word of the program reads (`k`: the component).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Input {
@@ -184,7 +191,9 @@ impl<'a> GlslStage<'a> {
         current: &GenericValues,
         then: impl FnOnce(&[ClipVertex]) -> T,
     ) -> T {
-        let mut registers = Registers::default();
+        // The thread's file, not a new one per run (a new file is 16 KiB to allocate and
+        // zero per draw).
+        let mut registers = REGISTERS.take();
         self.compiled.prepare(&mut registers, &self.uniforms);
         let mut inputs = vec![[0u32; LANES]; self.inputs.len()];
         let mut outputs = vec![[0u32; LANES]; self.outputs.len()];
@@ -213,6 +222,7 @@ impl<'a> GlslStage<'a> {
                 self.finish(c);
             }
         }
+        REGISTERS.set(registers);
         then(&clip)
     }
 
