@@ -472,20 +472,44 @@ impl BlockPipeline {
     }
 }
 
-/// A block the walk found: window position (multiples of 4) and covered lanes.
+/// A block the walk found: window position (multiples of 4), covered lanes, and which
+/// primitive of the batch's sources it is of ([`BlockSource`]; 0 for a batch of one
+/// primitive).
 #[derive(Clone, Copy, Debug, Default)]
 pub struct BlockEntry {
     pub x: i32,
     pub y: i32,
     pub mask: u16,
+    pub source: u8,
+}
+
+/// The primitives whose blocks a batch holds: one primitive (any [`BlockInputs`]), or a run
+/// of them (`setup::jobs::triangle`'s runs of small triangles in a tile, one batch for
+/// many triangles), block `b` being of primitive `b.source`.
+pub trait BlockSource {
+    type Inputs: BlockInputs;
+    /// The primitive of blocks with source `source`.
+    fn of(&self, source: u8) -> &Self::Inputs;
+}
+
+impl<T: BlockInputs> BlockSource for T {
+    type Inputs = T;
+    #[inline(always)]
+    fn of(&self, _: u8) -> &T {
+        self
+    }
 }
 
 /// Blocks in a batch: the walk's blocks are collected this many at a time, so that each
 /// stage runs as one call per batch rather than one per block.
 pub const BATCH: usize = 32;
 
-/// A batch of a primitive's blocks, in walk order (disjoint pixels: the stages may run over
-/// the whole batch one after the other, each block's result is the same as block by block).
+/// A batch of blocks in walk order, of one primitive or of a run of them ([`BlockSource`]).
+/// The stages may run over the whole batch one after the other: each stage handles the
+/// blocks in order and reads and writes only its own buffers (the tests depth and stencil,
+/// the colour stage the colour targets), so every pixel sees each of its fragments' tests
+/// and writes in submission order, as block by block, also where blocks of several
+/// primitives of a run overlap.
 pub struct Batch {
     entries: [BlockEntry; BATCH],
     len: usize,
@@ -501,9 +525,16 @@ impl Batch {
     /// Adds a block; true when the batch is then full.
     #[inline(always)]
     pub fn push(&mut self, x: i32, y: i32, mask: u16) -> bool {
+        self.push_from(0, x, y, mask)
+    }
+
+    /// Adds a block of the batch's primitive `source` ([`BlockSource`]); true when the
+    /// batch is then full.
+    #[inline(always)]
+    pub fn push_from(&mut self, source: u8, x: i32, y: i32, mask: u16) -> bool {
         // `len < BATCH` always holds here: a full batch is rendered (emptied) at once.
         let slot = self.len.min(BATCH - 1);
-        self.entries[slot] = BlockEntry { x, y, mask };
+        self.entries[slot] = BlockEntry { x, y, mask, source };
         self.len = slot + 1;
         self.len == BATCH
     }
@@ -523,7 +554,7 @@ impl BlockPipeline {
     /// colours, the alpha test and the tests block by block.
     #[allow(clippy::too_many_arguments)]
     #[inline(always)]
-    pub fn render<I: BlockInputs>(
+    pub fn render<I: BlockSource>(
         &self,
         level: Supported,
         state: &DrawState,
@@ -570,7 +601,7 @@ impl BlockPipeline {
                         front_facing,
                         blocks,
                         #[inline(always)]
-                        |x, y| inputs.z(x, y),
+                        |b| inputs.of(b.source).z(b.x, b.y),
                     )
                 },
             ),
@@ -595,7 +626,7 @@ impl BlockPipeline {
     /// and stencil scenes (callgrind) and cost each library 196 KB.
     #[allow(clippy::too_many_arguments)]
     #[inline(always)]
-    fn color_stage<I: BlockInputs>(
+    fn color_stage<I: BlockSource>(
         &self,
         level: Supported,
         state: &DrawState,
@@ -623,7 +654,7 @@ impl BlockPipeline {
 /// compiled once per SIMD level.
 #[allow(clippy::too_many_arguments)]
 #[inline(always)]
-fn color_blocks<I: BlockInputs>(
+fn color_blocks<I: BlockSource>(
     pipeline: &BlockPipeline,
     fragment: &FragmentState,
     band: &mut Band<'_>,
@@ -641,7 +672,7 @@ fn color_blocks<I: BlockInputs>(
             Some(shaded) => &shaded[i],
             None => {
                 // Nothing discards here (a shader that may runs before the tests).
-                block_colors(fragment, scratch, &at, b.mask, front_facing, inputs, &mut local);
+                block_colors(fragment, scratch, &at, b.mask, front_facing, inputs.of(b.source), &mut local);
                 &local
             }
         };
@@ -656,7 +687,7 @@ fn color_blocks<I: BlockInputs>(
 /// surviving lane (their masks those lanes) and their colours in `shaded`; returns how many.
 #[allow(clippy::too_many_arguments)]
 #[inline(always)]
-fn alpha_blocks<I: BlockInputs>(
+fn alpha_blocks<I: BlockSource>(
     pipeline: &BlockPipeline,
     state: &DrawState,
     band: &mut Band<'_>,
@@ -673,6 +704,7 @@ fn alpha_blocks<I: BlockInputs>(
     let mut kept = 0;
     for i in 0..blocks.len() {
         let b = blocks[i];
+        let inputs = inputs.of(b.source);
         let (x, y) = (b.x, b.y);
         let at = grid.at(x, y);
         let mut live = b.mask;

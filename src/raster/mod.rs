@@ -27,16 +27,18 @@ pub const TILE_SIZE: usize = 64;
 
 /// Renders `bins` (per tile, row-major, `tiles_x` tiles a row: what to render there, in
 /// order) into the color `targets` of `framebuffer` on up to `threads` threads (the caller's
-/// included): `render(item, tile, band, scratch, local)` renders one bin entry into the part
-/// `tile` (a rectangle of the framebuffer) of `band`. `local` is the caller's own per-band
-/// state (made once per band, not per entry: a triangle's batch of blocks).
-pub fn render_tiles<T: Copy + Sync, L: Default>(
+/// included): `render(items, tile, band, scratch, local)` renders a tile's bin entries, in
+/// order, into the part `tile` (a rectangle of the framebuffer) of `band` (the whole bin at
+/// once, so that the caller may render runs of entries together: small triangles). `local`
+/// is the caller's own per-band state (made once per band, not per entry: a batch of
+/// blocks).
+pub fn render_tiles<T: Sync, L: Default>(
     framebuffer: &mut Framebuffer,
     targets: &[ColorSlot],
     tiles_x: usize,
     bins: &[Vec<T>],
     threads: usize,
-    render: impl Fn(T, Rect, &mut Band<'_>, &mut Scratch, &mut L) + Sync,
+    render: impl Fn(&[T], Rect, &mut Band<'_>, &mut Scratch, &mut L) + Sync,
 ) {
     let bounds = framebuffer.bounds();
     let bands = framebuffer.bands(TILE_SIZE, targets);
@@ -50,8 +52,9 @@ pub fn render_tiles<T: Copy + Sync, L: Default>(
             for tx in 0..tiles_x {
                 let tile = Rect::from_xywh((tx * TILE_SIZE) as i32, band.y0, TILE_SIZE as i32, band.rows as i32)
                     .intersect(bounds);
-                for &item in &bins[ty * tiles_x + tx] {
-                    render(item, tile, &mut band, &mut scratch, &mut local);
+                let bin = &bins[ty * tiles_x + tx];
+                if !bin.is_empty() {
+                    render(bin, tile, &mut band, &mut scratch, &mut local);
                 }
             }
         })

@@ -763,7 +763,7 @@ impl Scene {
             })
             .collect();
         // One batch of blocks per band, handed to each triangle empty (`TriangleJob::render_blocks`).
-        let render = |index, tile: Rect, band: &mut Band<'_>, scratch: &mut Scratch, batch: &mut Batch| {
+        let render_one = |index, tile: Rect, band: &mut Band<'_>, scratch: &mut Scratch, batch: &mut Batch| {
             let (primitive, state_index) = self.primitives.get(index);
             if let Primitive::Clear(job) = primitive {
                 return job.render(tile, band);
@@ -795,13 +795,9 @@ impl Scene {
             // Hierarchical z (`framebuffer::hiz`) learns where the job may have written depth:
             // through a test that keeps only nearer or equal depths, or anything (pixel
             // rectangles: glDrawPixels of depth).
-            let only_nearer = match (primitive, state.fragment.depth) {
-                (Primitive::Pixels(_), _) => Some(false),
-                (_, Some(DepthTest { func, write: true })) => Some(matches!(
-                    func,
-                    CompareFunc::Less | CompareFunc::LessEqual | CompareFunc::Equal | CompareFunc::Never
-                )),
-                _ => None,
+            let only_nearer = match primitive {
+                Primitive::Pixels(_) => Some(false),
+                _ => Self::depth_written_only_nearer(state),
             };
             if let Some(only_nearer) = only_nearer {
                 let written = match primitive {
@@ -811,9 +807,69 @@ impl Scene {
                 band.hiz_written(written, only_nearer);
             }
         };
+        // A tile's bin in order, its runs of consecutive triangles that render through the
+        // same block pipeline in one batch (`TriangleJob::render_run`: small triangles,
+        // whose per-triangle set-up of the stages cost as much as their blocks), every
+        // other entry on its own.
+        let render = |bin: &[u32], tile: Rect, band: &mut Band<'_>, scratch: &mut Scratch, batch: &mut Batch| {
+            let single_sampled = band.samples == 1;
+            let joins_run = |index: u32| {
+                let (primitive, state_index) = self.primitives.get(index);
+                let Primitive::Triangle(job) = primitive else { return None };
+                let state = &self.states[state_index as usize];
+                let pipeline = pipelines[state_index as usize].as_ref().filter(|_| single_sampled)?;
+                let area = tile.intersect(state.fill_clip);
+                job.joins_run(state, pipeline, area).then_some((job, state_index, state, pipeline, area))
+            };
+            let mut i = 0;
+            while i < bin.len() {
+                let Some((first, state_index, state, pipeline, area)) = joins_run(bin[i]) else {
+                    render_one(bin[i], tile, band, scratch, batch);
+                    i += 1;
+                    continue;
+                };
+                let mut end = i + 1;
+                while end < bin.len() {
+                    match joins_run(bin[end]) {
+                        Some((job, s, ..)) if s == state_index && job.front_facing == first.front_facing => end += 1,
+                        _ => break,
+                    }
+                }
+                if end == i + 1 {
+                    render_one(bin[i], tile, band, scratch, batch);
+                    i += 1;
+                    continue;
+                }
+                let run = &bin[i..end];
+                let job = |index: u32| match self.primitives.get(index).0 {
+                    Primitive::Triangle(job) => job,
+                    _ => unreachable!("a run holds triangles"),
+                };
+                TriangleJob::render_run(state, pipeline, area, band, scratch, batch, run.iter().map(|&k| job(k)));
+                if let Some(only_nearer) = Self::depth_written_only_nearer(state) {
+                    for &k in run {
+                        band.hiz_written(area.intersect(job(k).bounds()), only_nearer);
+                    }
+                }
+                i = end;
+            }
+        };
         render_tiles(framebuffer, &self.targets, self.tiles_x, &self.bins, threads, render);
         if framebuffer.samples() > 1 {
             framebuffer.resolve(&self.targets, self.drawn_area());
+        }
+    }
+
+    /// Whether a primitive drawn with `state` may write depth only through a test that keeps
+    /// nearer or equal depths (what hierarchical z learns, `framebuffer::hiz`); `None` when
+    /// it writes no depth.
+    fn depth_written_only_nearer(state: &DrawState) -> Option<bool> {
+        match state.fragment.depth {
+            Some(DepthTest { func, write: true }) => Some(matches!(
+                func,
+                CompareFunc::Less | CompareFunc::LessEqual | CompareFunc::Equal | CompareFunc::Never
+            )),
+            _ => None,
         }
     }
 

@@ -218,6 +218,84 @@ fn a_draw_split_between_threads_draws_the_bytes_of_small_draws() {
     }
 }
 
+/// Small overlapping triangles drawn in long draws (a tile's consecutive triangles render
+/// as runs through one batch of blocks: `setup::jobs::triangle::TriangleJob::render_run`)
+/// and one triangle per scene (never a run): the same bytes and occlusion counts. The
+/// triangles overlap in the same blocks, so the order of a run's fragments shows through
+/// blending and the depth test; they alternate in winding, and the two faces' stencil tests
+/// differ, so a triangle rendered with its neighbour's facing shows; the draws alternate
+/// between two blend functions and two colour masks, so runs must end at a state change;
+/// a run reaches past a batch's 32 blocks; some triangles are flat, some larger than a
+/// hierarchical z region (never in a run with the depth test).
+#[test]
+fn runs_of_small_triangles_draw_the_bytes_of_one_triangle_at_a_time() {
+    let mut seed = 4242u32;
+    let mut rnd = || {
+        seed = seed.wrapping_mul(1664525).wrapping_add(1013904223);
+        (seed >> 8) as f32 / (1 << 24) as f32
+    };
+    let mut triangles = Vec::new();
+    for i in 0..900 {
+        let size = if i % 61 == 0 { 40.0 } else { 7.0 };
+        let (x, y) = (rnd() * 150.0 - 5.0, rnd() * 80.0 - 5.0);
+        let flat = i % 7 == 0;
+        let c = [rnd(), rnd(), rnd(), rnd()];
+        let mut t: Vec<_> = (0..3)
+            .map(|_| {
+                let c = if flat { c } else { [rnd(), rnd(), rnd(), rnd()] };
+                vertex(x + rnd() * size, y + rnd() * size, rnd() * 2.0 - 1.0, c)
+            })
+            .collect();
+        // Counter-clockwise and clockwise in turn, whatever the random points gave.
+        let [p, q, r] = [&t[0].position, &t[1].position, &t[2].position];
+        let ccw = (q[0] - p[0]) * (r[1] - p[1]) - (r[0] - p[0]) * (q[1] - p[1]) > 0.0;
+        if ccw != (i % 2 == 0) {
+            t.swap(1, 2);
+        }
+        triangles.push(t);
+    }
+    for (depth, stencil) in [(false, false), (true, false), (true, true), (false, true)] {
+        let render = |one_at_a_time: bool| {
+            let (mut ctx, d) = context(160, 90);
+            ctx.state.depth.test = depth;
+            ctx.clear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+            if stencil {
+                ctx.set_capability(GL_STENCIL_TEST, true);
+                ctx.stencil_func_separate(GL_FRONT, GL_GEQUAL, 1, !0);
+                ctx.stencil_func_separate(GL_BACK, GL_NOTEQUAL, 2, !0);
+                ctx.stencil_op_separate(GL_FRONT, GL_KEEP, GL_INCR, GL_INCR);
+                ctx.stencil_op_separate(GL_BACK, GL_INCR, GL_KEEP, GL_DECR);
+            }
+            let query = ctx.gen_queries(1).unwrap()[0];
+            ctx.begin_query(GL_SAMPLES_PASSED, query);
+            for (k, draw) in triangles.chunks(150).enumerate() {
+                ctx.set_capability(GL_BLEND, k % 3 != 2);
+                let (src, dst) = if k % 2 == 0 { (GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA) } else { (GL_ONE, GL_ONE) };
+                ctx.blend_func(None, src, dst, src, dst);
+                ctx.color_mask(None, [true, k % 4 != 3, true, true]);
+                for t in draw {
+                    if one_at_a_time {
+                        ctx.draw_vertices(GL_TRIANGLES, t);
+                        ctx.flush_rendering();
+                    }
+                }
+                if !one_at_a_time {
+                    ctx.draw_vertices(GL_TRIANGLES, &draw.concat());
+                }
+            }
+            ctx.end_query(GL_SAMPLES_PASSED);
+            assert_eq!(ctx.take_error(), GL_NO_ERROR);
+            let passed = ctx.get_query_object(query, GL_QUERY_RESULT).unwrap();
+            (pixels(&mut ctx, &d), passed)
+        };
+        let (runs, passed) = render(false);
+        let (alone, alone_passed) = render(true);
+        assert!(runs.iter().any(|p| p[0] != 0) && passed > 0);
+        assert!(runs == alone, "depth {depth}, stencil {stencil}: the runs' pixels differ");
+        assert_eq!(passed, alone_passed, "depth {depth}, stencil {stencil}: samples passed");
+    }
+}
+
 /// Horizontal, vertical, diagonal, shallow and steep lines; pixel-centre, integer and
 /// fractional endpoints; both directions of one steep segment (its centre tie goes
 /// differently each way).

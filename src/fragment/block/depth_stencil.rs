@@ -306,13 +306,13 @@ impl DepthStencilKernel {
         (self.run)(&self.params, band, at, &lanes, live, front_facing)
     }
 
-    /// The window depth of block `b` (`z_at(x, y)`: of the block at `(x, y)`), as
+    /// The window depth of block `b` (`z_at(b)`), as
     /// [`Self::depth_lanes`].
     #[inline(always)]
-    fn block_depth(&self, b: &BlockEntry, z_at: &impl Fn(i32, i32) -> F32s) -> F32s {
+    fn block_depth(&self, b: &BlockEntry, z_at: &impl Fn(&BlockEntry) -> F32s) -> F32s {
         self.depth_lanes(
             #[inline(always)]
-            || z_at(b.x, b.y),
+            || z_at(b),
         )
     }
 
@@ -457,7 +457,7 @@ impl DepthStencilKernel {
         grid: Grid,
         front_facing: bool,
         blocks: &mut [BlockEntry],
-        z_at: impl Fn(i32, i32) -> F32s,
+        z_at: impl Fn(&BlockEntry) -> F32s,
     ) -> usize {
         let p = &self.params;
         let face = p.stencil.as_ref().map(|f| &f[usize::from(!front_facing)]);

@@ -191,7 +191,7 @@ impl BlockPipeline {
                         let mut plane = [BlockEntry::default(); BATCH];
                         let mut n = 0;
                         for b in blocks.iter().filter(|b| b.samples[s] != 0) {
-                            plane[n.min(BATCH - 1)] = BlockEntry { x: b.x, y: b.y, mask: b.samples[s] };
+                            plane[n.min(BATCH - 1)] = BlockEntry { x: b.x, y: b.y, mask: b.samples[s], source: 0 };
                             n += 1;
                         }
                         if n == 0 {
@@ -203,7 +203,7 @@ impl BlockPipeline {
                             front_facing,
                             &mut plane[..n],
                             #[inline(always)]
-                            |x, y| inputs.sample_z(x, y, s),
+                            |b| inputs.sample_z(b.x, b.y, s),
                         );
                         let mut j = 0;
                         for b in blocks.iter_mut().filter(|b| b.samples[s] != 0) {
@@ -292,7 +292,7 @@ impl BlockPipeline {
         for s in 0..samples {
             let mut m = 0;
             for b in blocks.iter().filter(|b| b.samples[s] != 0) {
-                plane[m.min(BATCH - 1)] = BlockEntry { x: b.x, y: b.y, mask: b.samples[s] };
+                plane[m.min(BATCH - 1)] = BlockEntry { x: b.x, y: b.y, mask: b.samples[s], source: 0 };
                 m += 1;
             }
             if m == 0 {

@@ -20,7 +20,7 @@
 //! plane at the sample positions ([`TriangleJob::render_sample_blocks`]); draws with
 //! alpha-to-coverage or depth clamping, and the exact mode, keep the span path.
 use crate::fragment::block::samples::{SampleBatch, SampleInputs};
-use crate::fragment::block::{lanes, Batch, BlockColors, BlockInputs, BlockPipeline, F32s};
+use crate::fragment::block::{lanes, Batch, BlockColors, BlockInputs, BlockPipeline, BlockSource, F32s, BATCH};
 use crate::fragment::pipeline::{shade_span, shade_span_samples, DrawState, Scratch, Span};
 use crate::fragment::{multisample::SampleMasks, span_mask};
 use crate::framebuffer::band::Band;
@@ -327,6 +327,85 @@ impl TriangleJob {
         });
     }
 
+    /// Whether the triangle, drawn with `state` through `pipeline` into a single-sampled
+    /// band, may render inside `area` as part of a run ([`TriangleJob::render_run`]): when
+    /// [`TriangleJob::render_blocks`] would walk all of its blocks through the pipeline.
+    /// Not in the exact accuracy mode, nor a constant fill (written as rows), nor a
+    /// triangle hierarchical z may skip regions of (one larger than a region in `area`).
+    #[inline(always)]
+    pub fn joins_run(&self, state: &DrawState, pipeline: &BlockPipeline, area: Rect) -> bool {
+        if self.exact.is_some() {
+            return false;
+        }
+        let area = area.intersect(self.bounds());
+        let big = area.x1 - area.x0 >= REGION && area.y1 - area.y0 >= REGION;
+        if big && pipeline.hiz_reject(&state.fragment).is_some() {
+            return false;
+        }
+        let constant = || self.uniform_color().and_then(|c| pipeline.constant_fill(state, c)).is_some();
+        state.polygon_stipple.is_some() || !constant()
+    }
+
+    /// Renders the parts inside `area` (within the single-sampled band) of a run of
+    /// consecutive triangles of one draw state and facing, each of which
+    /// [`TriangleJob::joins_run`], as [`TriangleJob::render_blocks`] renders them one after
+    /// the other: their blocks walked into one `batch` (empty, and left empty), each block
+    /// tagged with its triangle, and the pipeline run per full batch. The stages' set-up
+    /// (the level's dispatch, the stage calls) is paid per batch, not per triangle: a
+    /// small triangle has two or three blocks. Blocks of different triangles may overlap;
+    /// the stages keep their order (see `fragment::block::Batch`).
+    #[allow(clippy::too_many_arguments)]
+    pub fn render_run<'a>(
+        state: &DrawState,
+        pipeline: &BlockPipeline,
+        area: Rect,
+        band: &mut Band<'_>,
+        scratch: &mut Scratch,
+        batch: &mut Batch,
+        jobs: impl Iterator<Item = &'a TriangleJob> + Clone,
+    ) {
+        let Some(first) = jobs.clone().next() else { return };
+        let front_facing = first.front_facing;
+        let stipple = state.polygon_stipple.as_ref();
+        let mut run = TriangleRun { jobs: [first; BATCH], len: 0 };
+        crate::simd::per_level!(sse2_for_sse41, |level| {
+            for job in jobs.clone() {
+                let part = area.intersect(job.bounds());
+                if part.is_empty() {
+                    continue;
+                }
+                let edges = job.setup.pixel_edges().map(PixelEdge::from_array);
+                // The job's source in the run, once it has a block in the batch.
+                let mut source = None;
+                walk_blocks(
+                    level,
+                    part,
+                    &edges,
+                    stipple,
+                    #[inline(always)]
+                    |x, y, mask| {
+                        let s = match source {
+                            Some(s) => s,
+                            None => {
+                                let s = run.len;
+                                run.jobs[s.min(BATCH - 1)] = job;
+                                run.len = s + 1;
+                                source = Some(s);
+                                s
+                            }
+                        };
+                        if batch.push_from(s as u8, x, y, mask) {
+                            pipeline.render(level, state, band, scratch, &run, front_facing, batch);
+                            run.len = 0;
+                            source = None;
+                        }
+                    },
+                );
+            }
+            pipeline.render(level, state, band, scratch, &run, front_facing, batch);
+        });
+    }
+
     /// Renders the part of the triangle inside `area` (within the band) into a
     /// multisampled `band` in 4×4 blocks through the compiled lane `pipeline`
     /// (`fragment::block::samples`): per sample at the standard positions while
@@ -564,6 +643,21 @@ impl BlockInputs for TriangleJob {
         let px: F32s = lanes(|i| dx0 + (i & 3) as f32);
         let py: F32s = lanes(|i| (y + (i >> 2) as i32) as f32 + 0.5 - self.anchor[1] + 0.0);
         self.varyings.lanes_at(&px, &py, first, out);
+    }
+}
+
+/// The triangles of a batch of a run ([`TriangleJob::render_run`]): block source `s` is
+/// `jobs[s]`, the first `len` set (the rest repeat the first, never read).
+struct TriangleRun<'a> {
+    jobs: [&'a TriangleJob; BATCH],
+    len: usize,
+}
+
+impl BlockSource for TriangleRun<'_> {
+    type Inputs = TriangleJob;
+    #[inline(always)]
+    fn of(&self, source: u8) -> &TriangleJob {
+        self.jobs[source as usize % BATCH]
     }
 }
 
