@@ -934,8 +934,10 @@ mod tests {
                 zfail: ops[rng.next() as usize % 8],
                 zpass: ops[rng.next() as usize % 8],
             };
-            let depth = (!rng.next().is_multiple_of(4))
-                .then(|| DepthTest { func: CompareFunc::ALL[rng.next() as usize % 8], write: rng.next() % 2 == 0 });
+            let depth = (!rng.next().is_multiple_of(4)).then(|| DepthTest {
+                func: CompareFunc::ALL[rng.next() as usize % 8],
+                write: rng.next().is_multiple_of(2),
+            });
             let mut fragment = FragmentState::plain(depth, vec![], false);
             fragment.stencil = Some(StencilTest { front: face(&mut rng), back: face(&mut rng) });
             let kernel = DepthStencilKernel::new(&fragment, format).unwrap();
