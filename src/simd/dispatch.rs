@@ -506,3 +506,160 @@ unsafe fn round_even_i32_avx2(x: &[f32; 16]) -> [i32; 16] {
     // SAFETY: two 32-byte vectors are the 64 bytes of 16 i32.
     unsafe { std::mem::transmute::<[__m256i; 2], [i32; 16]>([_mm256_cvtps_epi32(lo), _mm256_cvtps_epi32(hi)]) }
 }
+
+/// `mul8(x, y) = t + (t >> 8) >> 8` with `t = x·y + 128` (`x·y/255` rounded to nearest,
+/// exact for bytes) on 16-bit lanes holding bytes: the product and `t` fit in 16 bits
+/// (`255·255 + 128 < 2¹⁶`), and `(t + (t >> 8)) >> 8` is the high half of `t·257` (with
+/// `t = 256q + r`, `t·257/2¹⁶ = q + (r + q + r/256)/256`, and `r + q + r/256` reaches the
+/// next multiple of 256 only where `r + q` does, `r < 256`): `pmullw`, `paddw`, `pmulhuw`.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+fn mul8_epi16(x: std::arch::x86_64::__m128i, y: std::arch::x86_64::__m128i) -> std::arch::x86_64::__m128i {
+    use std::arch::x86_64::{_mm_add_epi16, _mm_mulhi_epu16, _mm_mullo_epi16, _mm_set1_epi16};
+    // SAFETY: register operations of SSE2, the x86-64 baseline.
+    unsafe { _mm_mulhi_epu16(_mm_add_epi16(_mm_mullo_epi16(x, y), _mm_set1_epi16(128)), _mm_set1_epi16(257)) }
+}
+
+/// [`mul8_epi16`] on 256-bit vectors.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+fn mul8_epi16_avx2(x: std::arch::x86_64::__m256i, y: std::arch::x86_64::__m256i) -> std::arch::x86_64::__m256i {
+    use std::arch::x86_64::{_mm256_add_epi16, _mm256_mulhi_epu16, _mm256_mullo_epi16, _mm256_set1_epi16};
+    _mm256_mulhi_epu16(_mm256_add_epi16(_mm256_mullo_epi16(x, y), _mm256_set1_epi16(128)), _mm256_set1_epi16(257))
+}
+
+/// unorm8 RGBA words (byte `k`: channel `k`) blended by `GL_FUNC_ADD` with destination
+/// factor `GL_ONE_MINUS_SRC_ALPHA` on every channel and source factor `GL_SRC_ALPHA`
+/// (`SRC_ALPHA`) or `GL_ONE`: `min(mul8(s, f) + mul8(d, 255 − a), 255)` per byte, `a` the
+/// source alpha, `f` it or 255 (`mul8(s, 255) = s`), the integer blend of
+/// `fragment::blend::blend_unorm8` byte for byte. On 16-bit lanes, a row of four pixels per
+/// 128-bit vector (two per 256-bit one at AVX2): bytes widened by unpacking, each pixel's
+/// alpha spread over its channels by two word shuffles, [`mul8_epi16`], and the bytes packed
+/// back with unsigned saturation (the clamp; with `GL_SRC_ALPHA` the sum is at most
+/// `mul8(255, a) + mul8(255, 255 − a) = 255`). Integer arithmetic: the same words at every
+/// level.
+#[inline(always)]
+pub fn blend_inv_src_alpha8<const SRC_ALPHA: bool>(level: Supported, src: &[u32; 16], dst: &[u32; 16]) -> [u32; 16] {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if level.0 == Level::Avx2 {
+            // SAFETY: a `Supported` holds only a level the CPU was detected to have: AVX2.
+            return unsafe { blend_inv_src_alpha8_avx2::<SRC_ALPHA>(src, dst) };
+        }
+        use std::arch::x86_64::{
+            __m128i, _mm_add_epi16, _mm_loadu_si128, _mm_packus_epi16, _mm_set1_epi16, _mm_setzero_si128,
+            _mm_shufflehi_epi16, _mm_shufflelo_epi16, _mm_unpackhi_epi8, _mm_unpacklo_epi8, _mm_xor_si128,
+        };
+        let (s, d) = (src.as_ptr() as *const __m128i, dst.as_ptr() as *const __m128i);
+        // Two pixels' channels as 16-bit lanes: each alpha (lanes 3 and 7) spread over its pixel.
+        // SAFETY (the register operations here): SSE2 is the x86-64 baseline.
+        let half = |s: __m128i, d: __m128i| unsafe {
+            let a = _mm_shufflehi_epi16::<0xff>(_mm_shufflelo_epi16::<0xff>(s));
+            let ia = _mm_xor_si128(a, _mm_set1_epi16(0xff));
+            let sf = if SRC_ALPHA { mul8_epi16(s, a) } else { s };
+            _mm_add_epi16(sf, mul8_epi16(d, ia))
+        };
+        // SAFETY: `src` and `dst` are 64 bytes each, read as four 16-byte vectors; SSE2 is
+        // the baseline.
+        let row = |r: usize| unsafe {
+            let (s, d) = (_mm_loadu_si128(s.add(r)), _mm_loadu_si128(d.add(r)));
+            let zero = _mm_setzero_si128();
+            let lo = half(_mm_unpacklo_epi8(s, zero), _mm_unpacklo_epi8(d, zero));
+            let hi = half(_mm_unpackhi_epi8(s, zero), _mm_unpackhi_epi8(d, zero));
+            _mm_packus_epi16(lo, hi)
+        };
+        let v = [row(0), row(1), row(2), row(3)];
+        // SAFETY: four 16-byte vectors are the 64 bytes of 16 u32.
+        unsafe { std::mem::transmute::<[__m128i; 4], [u32; 16]>(v) }
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        let _ = level;
+        let mul8 = |x: u32, y: u32| {
+            let t = x * y + 128;
+            (t + (t >> 8)) >> 8
+        };
+        let mut out = [0u32; 16];
+        for (o, (&s, &d)) in out.iter_mut().zip(src.iter().zip(dst)) {
+            let a = s >> 24;
+            for k in 0..4 {
+                let (sc, dc) = ((s >> (8 * k)) & 0xff, (d >> (8 * k)) & 0xff);
+                let sf = if SRC_ALPHA { mul8(sc, a) } else { sc };
+                *o |= (sf + mul8(dc, 255 - a)).min(255) << (8 * k);
+            }
+        }
+        out
+    }
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+unsafe fn blend_inv_src_alpha8_avx2<const SRC_ALPHA: bool>(src: &[u32; 16], dst: &[u32; 16]) -> [u32; 16] {
+    use std::arch::x86_64::{
+        __m256i, _mm256_add_epi16, _mm256_loadu_si256, _mm256_packus_epi16, _mm256_set1_epi16, _mm256_setzero_si256,
+        _mm256_shufflehi_epi16, _mm256_shufflelo_epi16, _mm256_unpackhi_epi8, _mm256_unpacklo_epi8, _mm256_xor_si256,
+    };
+    let (s, d) = (src.as_ptr() as *const __m256i, dst.as_ptr() as *const __m256i);
+    // Unpacking and packing both work within 128-bit halves: each half is
+    // `blend_inv_src_alpha8`'s SSE2 row.
+    let half = |s: __m256i, d: __m256i| {
+        let a = _mm256_shufflehi_epi16::<0xff>(_mm256_shufflelo_epi16::<0xff>(s));
+        let ia = _mm256_xor_si256(a, _mm256_set1_epi16(0xff));
+        let sf = if SRC_ALPHA { mul8_epi16_avx2(s, a) } else { s };
+        _mm256_add_epi16(sf, mul8_epi16_avx2(d, ia))
+    };
+    let rows = |r: usize| {
+        // SAFETY: `src` and `dst` are 64 bytes each, read as two 32-byte vectors.
+        let (s, d) = unsafe { (_mm256_loadu_si256(s.add(r)), _mm256_loadu_si256(d.add(r))) };
+        let zero = _mm256_setzero_si256();
+        let lo = half(_mm256_unpacklo_epi8(s, zero), _mm256_unpacklo_epi8(d, zero));
+        let hi = half(_mm256_unpackhi_epi8(s, zero), _mm256_unpackhi_epi8(d, zero));
+        _mm256_packus_epi16(lo, hi)
+    };
+    // SAFETY: two 32-byte vectors are the 64 bytes of 16 u32.
+    unsafe { std::mem::transmute::<[__m256i; 2], [u32; 16]>([rows(0), rows(1)]) }
+}
+
+/// `min(a + b, 255)` on every byte of 16 words (GL_ONE, GL_ONE blending of unorm8 words):
+/// one unsigned saturating byte add (`paddusb`) per vector.
+#[inline(always)]
+pub fn add_saturate8(level: Supported, a: &[u32; 16], b: &[u32; 16]) -> [u32; 16] {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if level.0 == Level::Avx2 {
+            // SAFETY: a `Supported` holds only a level the CPU was detected to have: AVX2.
+            return unsafe { add_saturate8_avx2(a, b) };
+        }
+        use std::arch::x86_64::{__m128i, _mm_adds_epu8, _mm_loadu_si128};
+        let (pa, pb) = (a.as_ptr() as *const __m128i, b.as_ptr() as *const __m128i);
+        // SAFETY: `a` and `b` are 64 bytes each, read as four 16-byte vectors; SSE2 is the
+        // baseline.
+        let row = |r: usize| unsafe { _mm_adds_epu8(_mm_loadu_si128(pa.add(r)), _mm_loadu_si128(pb.add(r))) };
+        let v = [row(0), row(1), row(2), row(3)];
+        // SAFETY: four 16-byte vectors are the 64 bytes of 16 u32.
+        unsafe { std::mem::transmute::<[__m128i; 4], [u32; 16]>(v) }
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        let _ = level;
+        let mut out = [0u32; 16];
+        for (o, (&x, &y)) in out.iter_mut().zip(a.iter().zip(b)) {
+            *o = u32::from_le_bytes(std::array::from_fn(|k| x.to_le_bytes()[k].saturating_add(y.to_le_bytes()[k])));
+        }
+        out
+    }
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+unsafe fn add_saturate8_avx2(a: &[u32; 16], b: &[u32; 16]) -> [u32; 16] {
+    use std::arch::x86_64::{__m256i, _mm256_adds_epu8, _mm256_loadu_si256};
+    let (pa, pb) = (a.as_ptr() as *const __m256i, b.as_ptr() as *const __m256i);
+    // SAFETY: `a` and `b` are 64 bytes each, read as two 32-byte vectors.
+    let row = |r: usize| unsafe { _mm256_adds_epu8(_mm256_loadu_si256(pa.add(r)), _mm256_loadu_si256(pb.add(r))) };
+    // SAFETY: two 32-byte vectors are the 64 bytes of 16 u32.
+    unsafe { std::mem::transmute::<[__m256i; 2], [u32; 16]>([row(0), row(1)]) }
+}

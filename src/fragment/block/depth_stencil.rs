@@ -204,6 +204,75 @@ impl FaceKernel {
     }
 }
 
+/// A stencil operation on packed 24/8 words (stencil in bits 24–31), through the write
+/// mask, as `((w & and) + add) ^ xor`: every operation but the saturating INCR and DECR, the
+/// wrapping ones only with the full write mask (the add's carry out of bit 31 is the wrap).
+/// Applied to the lanes of a lane mask `m` as `((w & (and | !m)) + (add & m)) ^ (xor & m)`:
+/// four vector operations on the words, with no shift of the stencil out and back.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct WordOp {
+    and: u32,
+    add: u32,
+    xor: u32,
+}
+
+impl WordOp {
+    const KEEP: WordOp = WordOp { and: !0, add: 0, xor: 0 };
+
+    fn of(op: StencilOp, reference: u8, write_mask: u8) -> Option<WordOp> {
+        let wm = u32::from(write_mask) << 24;
+        let full = write_mask == 0xff;
+        Some(match op {
+            _ if write_mask == 0 => WordOp::KEEP,
+            StencilOp::Keep => WordOp::KEEP,
+            StencilOp::Zero => WordOp { and: !wm, ..WordOp::KEEP },
+            StencilOp::Replace => WordOp { and: !wm, add: (u32::from(reference) << 24) & wm, xor: 0 },
+            StencilOp::Invert => WordOp { xor: wm, ..WordOp::KEEP },
+            StencilOp::IncrWrap if full => WordOp { add: 1 << 24, ..WordOp::KEEP },
+            StencilOp::DecrWrap if full => WordOp { add: 0xff00_0000, ..WordOp::KEEP },
+            _ => return None,
+        })
+    }
+
+    /// Applies the operation to the lanes of `which` (lane masks); KEEP skips the work.
+    #[inline(always)]
+    #[allow(clippy::needless_range_loop)] // an index loop vectorises where a `zip` may stay a call
+    fn apply(&self, words: &mut U32s, which: &U32s) {
+        if *self == WordOp::KEEP {
+            return;
+        }
+        for i in 0..LANES {
+            let m = which[i];
+            words[i] = (words[i] & (self.and | !m)).wrapping_add(self.add & m) ^ (self.xor & m);
+        }
+    }
+}
+
+/// A stencil face whose three operations all have the packed-word form ([`WordOp`]).
+#[derive(Clone, Copy)]
+struct WordFace {
+    func: u8,
+    reference: u32,
+    value_mask: u32,
+    sfail: WordOp,
+    zfail: WordOp,
+    zpass: WordOp,
+}
+
+impl WordFace {
+    fn new(face: &StencilFace) -> Option<Self> {
+        let op = |op| WordOp::of(op, face.reference, face.write_mask);
+        Some(WordFace {
+            func: compare_bits(face.func),
+            reference: face.reference as u32,
+            value_mask: face.value_mask as u32,
+            sfail: op(face.sfail)?,
+            zfail: op(face.zfail)?,
+            zpass: op(face.zpass)?,
+        })
+    }
+}
+
 /// The compiled depth and stencil state.
 pub struct DepthStencilParams {
     /// Comparison bits and depth write.
@@ -213,6 +282,8 @@ pub struct DepthStencilParams {
     stencil: Option<[FaceKernel; 2]>,
     /// Whether the stencil values can change (else they are not stored back).
     stencil_writes: bool,
+    /// Front and back faces in the packed-word form, when both have it (packed 24/8 only).
+    word_faces: Option<[WordFace; 2]>,
 }
 
 type DepthStencilFn = fn(&DepthStencilParams, &mut DepthBand<'_>, &BlockAt, &F32s, u16, bool) -> u16;
@@ -253,6 +324,12 @@ impl DepthStencilKernel {
             clamp: fragment.depth_clamp,
             stencil_writes: faces.is_some_and(|f| f[0].writes() || f[1].writes()),
             stencil: faces,
+            word_faces: match (format, stencil) {
+                (DepthStencilFormat::Packed24 { .. }, Some(s)) => {
+                    WordFace::new(&s.front).zip(WordFace::new(&s.back)).map(|(f, b)| [f, b])
+                }
+                _ => None,
+            },
         };
         let failures_keep = faces.is_none_or(|f| f.iter().all(|f| f.sfail == 0 && f.zfail == 0));
         Some(DepthStencilKernel { run, test, params, failures_keep })
@@ -474,11 +551,21 @@ impl DepthStencilKernel {
                 #[inline(always)]
                 |b| packed24::<true>(p, None, px, &grid.at(b.x, b.y), &self.block_depth(b, &z_at), b.mask),
             ),
-            DepthBand::Packed24(px) => keep(
-                blocks,
-                #[inline(always)]
-                |b| packed24::<true>(p, face, px, &grid.at(b.x, b.y), &self.block_depth(b, &z_at), b.mask),
-            ),
+            DepthBand::Packed24(px) => match &p.word_faces {
+                Some(faces) => {
+                    let face = &faces[usize::from(!front_facing)];
+                    keep(
+                        blocks,
+                        #[inline(always)]
+                        |b| packed24_words(p, face, px, &grid.at(b.x, b.y), &self.block_depth(b, &z_at), b.mask),
+                    )
+                }
+                None => keep(
+                    blocks,
+                    #[inline(always)]
+                    |b| packed24::<true>(p, face, px, &grid.at(b.x, b.y), &self.block_depth(b, &z_at), b.mask),
+                ),
+            },
             DepthBand::Depth32(px, s) => keep(
                 blocks,
                 #[inline(always)]
@@ -556,6 +643,46 @@ fn packed24<const STORE: bool>(
         }
     }
     bits
+}
+
+/// Packed 24-bit depth and 8-bit stencil with the stencil test on and every operation of
+/// the face in the packed-word form ([`WordOp`]): the stencil passes of shadow volumes
+/// (INCR_WRAP/DECR_WRAP on depth failure) and the stencil-masked passes after them. The
+/// operations change the loaded words in place, the depth write replaces their low 24 bits,
+/// and the block is stored only when a word changed. The same words as [`packed24`].
+#[inline(always)]
+#[allow(clippy::needless_range_loop)] // an index loop vectorises where a `zip` may stay a call
+fn packed24_words(p: &DepthStencilParams, face: &WordFace, px: &mut [u32], at: &BlockAt, z: &F32s, live: u16) -> u16 {
+    let words = load(px, at);
+    let live = expand_mask(live);
+    let mut new = words;
+    let mut passing = live;
+    if face.func != 7 {
+        let reference = [(face.reference & face.value_mask) as i32; LANES];
+        let masked = map_lanes(&words, |w| ((w >> 24) & face.value_mask) as i32);
+        passing = and(&compare_mask(face.func, &reference, &masked), &live);
+        face.sfail.apply(&mut new, &and_not(&live, &passing));
+    }
+    if let Some((func, write)) = p.depth {
+        let fragment = encode_depth(at.level, DepthEncoding::Unorm(24), z);
+        let f = map_lanes(&fragment, |v| v as i32);
+        let stored = map_lanes(&words, |w| (w & 0x00ff_ffff) as i32);
+        let pass = and(&compare_mask(func, &f, &stored), &passing);
+        face.zfail.apply(&mut new, &and_not(&passing, &pass));
+        if write {
+            new = select(&pass, &lanes(|i| (new[i] & 0xff00_0000) | fragment[i]), &new);
+        }
+        passing = pass;
+    }
+    face.zpass.apply(&mut new, &passing);
+    let mut changed = 0;
+    for i in 0..LANES {
+        changed |= new[i] ^ words[i];
+    }
+    if changed != 0 {
+        store(px, at, &new, 0xffff);
+    }
+    sign_mask16(at.level, &passing)
 }
 
 /// 32-bit unorm (`FLOAT` false) or float depth with an optional separate stencil plane.
@@ -783,6 +910,66 @@ mod tests {
                 .is_none_or(|s| keeps(&s.front) && keeps(&s.back));
             assert_eq!(kernel.culls_before_alpha(), want, "{what}");
         }
+    }
+
+    #[test]
+    fn the_packed_word_stencil_kernel_is_the_lane_kernel() {
+        // Packed 24/8 with the stencil test: the batched stage (the packed-word kernel when
+        // both faces have the word form) against the block-by-block lane kernel, itself the
+        // span path (the test above), over every operation, write masks full, partial and
+        // empty, every function, depth on or off, with or without its write.
+        use crate::fragment::{DepthTest, StencilTest};
+        use StencilOp::*;
+        let ops = [Keep, Zero, Replace, Incr, Decr, IncrWrap, DecrWrap, Invert];
+        let format = DepthStencilFormat::Packed24 { depth: true, stencil: true };
+        let mut rng = Lcg(11);
+        let mut word_form = 0;
+        for _ in 0..20_000 {
+            let face = |rng: &mut Lcg| StencilFace {
+                func: CompareFunc::ALL[rng.next() as usize % 8],
+                reference: [0, 1, 7, 128, 255][rng.next() as usize % 5],
+                value_mask: [0xff, 0x0f, 0][rng.next() as usize % 3],
+                write_mask: [0xff, 0xff, 0xf0, 0][rng.next() as usize % 4],
+                sfail: ops[rng.next() as usize % 8],
+                zfail: ops[rng.next() as usize % 8],
+                zpass: ops[rng.next() as usize % 8],
+            };
+            let depth = (!rng.next().is_multiple_of(4)).then(|| DepthTest {
+                func: CompareFunc::ALL[rng.next() as usize % 8],
+                write: rng.next().is_multiple_of(2),
+            });
+            let mut fragment = FragmentState::plain(depth, vec![], false);
+            fragment.stencil = Some(StencilTest { front: face(&mut rng), back: face(&mut rng) });
+            let kernel = DepthStencilKernel::new(&fragment, format).unwrap();
+            word_form += usize::from(kernel.params.word_faces.is_some());
+            let stored: Vec<u32> = (0..16)
+                .map(|_| {
+                    let d = [0, 0x00ff_ffff, 0x0080_0000, rng.next() & 0x00ff_ffff][rng.next() as usize % 4];
+                    d | [0u32, 1, 255, 128, 7][rng.next() as usize % 5] << 24
+                })
+                .collect();
+            let z: F32s = std::array::from_fn(|i| match rng.next() % 4 {
+                0 => (stored[i] & 0x00ff_ffff) as f32 / 16_777_215.0,
+                1 => f32::NAN,
+                _ => (rng.next() % 1000) as f32 / 999.0,
+            });
+            let live = rng.next() as u16 | ((rng.next() % 2) as u16 * 0xffff);
+            let front_facing = rng.next().is_multiple_of(2);
+            let level = crate::simd::current();
+            let at = BlockAt { x: 0, y: 0, base: 0, width: 4, valid: 0xffff, level };
+            let grid = Grid { y0: 0, rows: 4, width: 4, stride: 4, offset: 0, level };
+            let (mut lane, mut batched) = (stored.clone(), stored.clone());
+            let want = kernel.run(&mut DepthBand::Packed24(&mut lane), &at, live, front_facing, || z);
+            let mut blocks = [BlockEntry { x: 0, y: 0, mask: live }];
+            let kept = crate::simd::dispatch::run_with(level, |l| {
+                let grid = Grid { level: l, ..grid };
+                kernel.run_blocks(&mut DepthBand::Packed24(&mut batched), grid, front_facing, &mut blocks, |_, _| z)
+            });
+            let what = format!("{fragment:?} live {live:#x} front {front_facing}");
+            assert_eq!((kept, blocks[0].mask), (usize::from(want != 0), want), "{what}");
+            assert_eq!(batched, lane, "{what}");
+        }
+        assert!(word_form > 2000, "{word_form} states took the packed-word kernel");
     }
 
     #[test]

@@ -10,9 +10,10 @@
 //! - unorm8 targets: colours converted straight to packed RGBA words; exact integer
 //!   blending on u16 lanes (`mul8`), every factor and equation, separate RGB and alpha, the
 //!   blend colour; the logic op on the packed words; channel masks as byte masks. The
-//!   common factor pairs have their own kernels (GL_SRC_ALPHA/GL_ONE_MINUS_SRC_ALPHA and
-//!   GL_ONE/GL_ONE on the packed words, two channels per u32 or as a saturating byte add),
-//!   the rest call one function pointer per factor and channel.
+//!   common factor pairs have their own kernels on the packed words
+//!   (GL_SRC_ALPHA or GL_ONE with GL_ONE_MINUS_SRC_ALPHA as 16-bit lanes with `pmullw`,
+//!   GL_ONE/GL_ONE as a saturating byte add: `simd::dispatch`'s blend helpers), the rest
+//!   call one function pointer per factor and channel.
 //! - RGB565 targets: the unorm8 blend on the widened destination, dither or truncation to
 //!   5/6 bits, the logic op on the packed words, channel masks as bit masks.
 //! - 16-bit unorm and float targets: the span path's f32 stages (`super::super::output`),
@@ -119,9 +120,9 @@ impl TargetKernel {
         match self.kind {
             Kind::Unorm8Store => unorm8_store(p, band, at, colors, live),
             Kind::Unorm8LogicOp => unorm8_logic_op(p, band, at, colors, live),
-            Kind::Unorm8BlendSrcAlpha => unorm8_blend_src_alpha(p, band, at, colors, live),
+            Kind::Unorm8BlendSrcAlpha => unorm8_blend_inv_src_alpha::<true>(p, band, at, colors, live),
             Kind::Unorm8BlendAdd => unorm8_blend_add(p, band, at, colors, live),
-            Kind::Unorm8BlendOneInvSrcAlpha => unorm8_blend_fixed::<1, 7>(p, band, at, colors, live),
+            Kind::Unorm8BlendOneInvSrcAlpha => unorm8_blend_inv_src_alpha::<false>(p, band, at, colors, live),
             Kind::Unorm8Blend => unorm8_blend(p, band, at, colors, live),
             Kind::Rgb565 => rgb565(p, band, at, colors, live),
             Kind::RowsF32 => rows_f32(p, band, at, colors, live),
@@ -387,63 +388,12 @@ fn unorm8_blend(p: &TargetParams, band: &mut ColorBand<'_>, at: &BlockAt, colors
     store8(p, px, at, &pack8(&out), Some(&dst_words), live);
 }
 
-/// unorm8 blending with GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA and GL_FUNC_ADD on RGB and
-/// alpha alike, on the packed words two channels at a time (red and blue, green and
-/// alpha, each in a 16-bit half of a u32 lane): `mul8` on both halves at once is exact
-/// because every intermediate of `t = a·b + 128; (t + (t >> 8)) >> 8` stays below 2¹⁶, and
-/// `mul8(s, a) + mul8(d, 255 − a) ≤ mul8(255, a) + mul8(255, 255 − a) = 255` needs no clamp.
+/// unorm8 blending with GL_SRC_ALPHA (`SRC_ALPHA`) or GL_ONE, GL_ONE_MINUS_SRC_ALPHA and
+/// GL_FUNC_ADD on RGB and alpha alike, on the packed words as 16-bit lanes
+/// (`simd::dispatch::blend_inv_src_alpha8`: `pmullw`/`pmulhuw`, four pixels per 128-bit
+/// vector, the span path's rounding of `mul8` byte for byte).
 #[inline(always)]
-fn unorm8_blend_src_alpha(p: &TargetParams, band: &mut ColorBand<'_>, at: &BlockAt, colors: &BlockColors, live: u16) {
-    let ColorBand::Unorm8(px) = band else { return };
-    let dst = load8(px, at);
-    let src = src_words(at.level, colors);
-    let words = lanes(|i| {
-        let (s, d) = (src[i], dst[i]);
-        let a = s >> 24;
-        let ia = 255 - a;
-        let rb = mul8_pair((s & 0x00ff_00ff) * a) + mul8_pair((d & 0x00ff_00ff) * ia);
-        let ga = mul8_pair(((s >> 8) & 0x00ff_00ff) * a) + mul8_pair(((d >> 8) & 0x00ff_00ff) * ia);
-        rb | ga << 8
-    });
-    store8(p, px, at, &words, Some(&dst), live);
-}
-
-/// `mul8`'s rounding `t = x + 128; (t + (t >> 8)) >> 8` on both 16-bit halves of `x` (each a
-/// product of two unorm8 values), giving a byte in bits 0–7 and one in bits 16–23.
-#[inline(always)]
-fn mul8_pair(x: u32) -> u32 {
-    let t = x + 0x0080_0080;
-    ((t + ((t >> 8) & 0x00ff_00ff)) >> 8) & 0x00ff_00ff
-}
-
-/// unorm8 blending with GL_ONE, GL_ONE and GL_FUNC_ADD on RGB and alpha alike: `mul8(x, 255)`
-/// is `x`, so the blend is `min(s + d, 255)` per byte, a saturating add of the packed words.
-#[inline(always)]
-fn unorm8_blend_add(p: &TargetParams, band: &mut ColorBand<'_>, at: &BlockAt, colors: &BlockColors, live: u16) {
-    let ColorBand::Unorm8(px) = band else { return };
-    let dst = load8(px, at);
-    let src = src_words(at.level, colors);
-    let words = lanes(|i| {
-        let (s, d) = (src[i], dst[i]);
-        add_saturate_pair(s & 0x00ff_00ff, d & 0x00ff_00ff)
-            | add_saturate_pair((s >> 8) & 0x00ff_00ff, (d >> 8) & 0x00ff_00ff) << 8
-    });
-    store8(p, px, at, &words, Some(&dst), live);
-}
-
-/// `min(a + b, 255)` on both bytes of two pairs of bytes in bits 0–7 and 16–23: each sum is
-/// below 2⁹, so it stays in its 16-bit half, and bit 8 says it passed 255.
-#[inline(always)]
-fn add_saturate_pair(a: u32, b: u32) -> u32 {
-    let sum = a + b;
-    let over = (sum >> 8) & 0x0001_0001;
-    (sum | (over * 0xff)) & 0x00ff_00ff
-}
-
-/// unorm8 blending with one factor pair (codes as [`factor8`]) and GL_FUNC_ADD on RGB and
-/// alpha alike: everything inlined.
-#[inline(always)]
-fn unorm8_blend_fixed<const SRC: u8, const DST: u8>(
+fn unorm8_blend_inv_src_alpha<const SRC_ALPHA: bool>(
     p: &TargetParams,
     band: &mut ColorBand<'_>,
     at: &BlockAt,
@@ -451,23 +401,22 @@ fn unorm8_blend_fixed<const SRC: u8, const DST: u8>(
     live: u16,
 ) {
     let ColorBand::Unorm8(px) = band else { return };
-    let dst_words = load8(px, at);
-    let (s, d) = (to_unorm8(colors), unpack8(&dst_words));
-    let c = &p.constant8;
-    let out = [
-        fixed_channel::<SRC, DST>(0, &s, &d, c),
-        fixed_channel::<SRC, DST>(1, &s, &d, c),
-        fixed_channel::<SRC, DST>(2, &s, &d, c),
-        fixed_channel::<SRC, DST>(3, &s, &d, c),
-    ];
-    store8(p, px, at, &pack8(&out), Some(&dst_words), live);
+    let dst = load8(px, at);
+    let src = src_words(at.level, colors);
+    let words = crate::simd::dispatch::blend_inv_src_alpha8::<SRC_ALPHA>(at.level, &src, &dst);
+    store8(p, px, at, &words, Some(&dst), live);
 }
 
+/// unorm8 blending with GL_ONE, GL_ONE and GL_FUNC_ADD on RGB and alpha alike: `mul8(x, 255)`
+/// is `x`, so the blend is `min(s + d, 255)` per byte, a saturating byte add of the packed
+/// words (`simd::dispatch::add_saturate8`).
 #[inline(always)]
-fn fixed_channel<const SRC: u8, const DST: u8>(k: usize, s: &[U16s; 4], d: &[U16s; 4], c: &[u16; 4]) -> U16s {
-    let sf = factor8(SRC, k, s, d, c);
-    let df = factor8(DST, k, s, d, c);
-    equation8(0, &s[k], &sf, &d[k], &df)
+fn unorm8_blend_add(p: &TargetParams, band: &mut ColorBand<'_>, at: &BlockAt, colors: &BlockColors, live: u16) {
+    let ColorBand::Unorm8(px) = band else { return };
+    let dst = load8(px, at);
+    let src = src_words(at.level, colors);
+    let words = crate::simd::dispatch::add_saturate8(at.level, &src, &dst);
+    store8(p, px, at, &words, Some(&dst), live);
 }
 
 /// RGB565: blend on the destination widened to 8 bits (bit replication), dither or
@@ -598,6 +547,46 @@ mod tests {
                     let got = BlendFns::new(blend).blend(&lanes(&src), &lanes(&dst), &constant.map(u16::from));
                     for i in 0..LANES {
                         assert_eq!([0, 1, 2, 3].map(|k| got[k][i] as u8), want[i], "{blend:?} lane {i}");
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn word_blend_helpers_equal_the_span_blend_for_every_source_destination_and_alpha() {
+        // simd::dispatch's 16-bit-lane blends (GL_SRC_ALPHA or GL_ONE with
+        // GL_ONE_MINUS_SRC_ALPHA) and saturating add (GL_ONE, GL_ONE) at every level, over
+        // every (source, destination, alpha) byte triple: 48 source channels a call.
+        use crate::simd::dispatch::{add_saturate8, blend_inv_src_alpha8};
+        let func = |src, dst| BlendFunc { src, dst, equation: BlendEquation::Add };
+        let blend = |f| Blend { rgb: f, alpha: f };
+        let src_alpha = blend(func(BlendFactor::SrcAlpha, BlendFactor::OneMinusSrcAlpha));
+        let one = blend(func(BlendFactor::One, BlendFactor::OneMinusSrcAlpha));
+        let add = blend(func(BlendFactor::One, BlendFactor::One));
+        let words = |p: &[[u8; 4]; LANES]| p.map(u32::from_le_bytes);
+        for level in crate::simd::Level::ALL.iter().filter_map(|&l| Supported::new(l)) {
+            for a in 0..=255u8 {
+                for d in 0..=255u8 {
+                    let dst = [[d, d, d, d]; LANES];
+                    for s0 in (0..256).step_by(48) {
+                        let src: [[u8; 4]; LANES] = std::array::from_fn(|i| {
+                            let c = |k: usize| (s0 + 3 * i + k) as u8;
+                            [c(0), c(1), c(2), a]
+                        });
+                        let (s, dw) = (words(&src), words(&dst));
+                        let got = crate::simd::dispatch::run_with(level, |l| {
+                            [
+                                blend_inv_src_alpha8::<true>(l, &s, &dw),
+                                blend_inv_src_alpha8::<false>(l, &s, &dw),
+                                add_saturate8(l, &s, &dw),
+                            ]
+                        });
+                        for (got, b) in got.iter().zip([src_alpha, one, add]) {
+                            let mut want = dst;
+                            blend_unorm8(&b, [0; 4], &src, &mut want, 0xffff);
+                            assert_eq!(*got, words(&want), "{b:?} a {a} d {d} s0 {s0} {level:?}");
+                        }
                     }
                 }
             }
