@@ -960,10 +960,10 @@ mod tests {
             let grid = Grid { y0: 0, rows: 4, width: 4, stride: 4, offset: 0, level };
             let (mut lane, mut batched) = (stored.clone(), stored.clone());
             let want = kernel.run(&mut DepthBand::Packed24(&mut lane), &at, live, front_facing, || z);
-            let mut blocks = [BlockEntry { x: 0, y: 0, mask: live }];
+            let mut blocks = [BlockEntry { x: 0, y: 0, mask: live, source: 0 }];
             let kept = crate::simd::dispatch::run_with(level, |l| {
                 let grid = Grid { level: l, ..grid };
-                kernel.run_blocks(&mut DepthBand::Packed24(&mut batched), grid, front_facing, &mut blocks, |_, _| z)
+                kernel.run_blocks(&mut DepthBand::Packed24(&mut batched), grid, front_facing, &mut blocks, |_| z)
             });
             let what = format!("{fragment:?} live {live:#x} front {front_facing}");
             assert_eq!((kept, blocks[0].mask), (usize::from(want != 0), want), "{what}");
