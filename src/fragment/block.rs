@@ -500,6 +500,32 @@ impl<T: BlockInputs> BlockSource for T {
     }
 }
 
+/// The primitives of one batch as the renderers hand them to the stages: block source `s`
+/// is `of[s]`, the first `len` set (the rest repeat the first and are never read). A single
+/// primitive is a run of one ([`Run::one`]): the stages are compiled for `Run<T>` alone, not
+/// a second time for `T` (a copy of every colour stage per SIMD level, about 200 KB of each
+/// library: issue #18's 5 MB limit), so every renderer of `T` passes a `Run`.
+pub struct Run<'a, T> {
+    pub of: [&'a T; BATCH],
+    pub len: usize,
+}
+
+impl<'a, T> Run<'a, T> {
+    /// `primitive` alone (every block of the batch is of source 0).
+    #[inline(always)]
+    pub fn one(primitive: &'a T) -> Self {
+        Run { of: [primitive; BATCH], len: 1 }
+    }
+}
+
+impl<T: BlockInputs> BlockSource for Run<'_, T> {
+    type Inputs = T;
+    #[inline(always)]
+    fn of(&self, source: u8) -> &T {
+        self.of[source as usize % BATCH]
+    }
+}
+
 /// Blocks in a batch: the walk's blocks are collected this many at a time, so that each
 /// stage runs as one call per batch rather than one per block.
 pub const BATCH: usize = 32;

@@ -264,6 +264,8 @@ impl BlockPipeline {
         alpha_to_one: bool,
     ) {
         let pixels = inputs.pixels();
+        // The colour stage's copies are those of the single-sample pipeline's runs.
+        let run = super::Run::one(pixels);
         let n = blocks.len().min(BATCH);
         let blocks = &blocks[..n];
         if !kept {
@@ -300,7 +302,7 @@ impl BlockPipeline {
             }
             let grid = grid.sample(s);
             if m == n {
-                self.color_stage(level, state, band, scratch, grid, pixels, &plane[..m], Some(&shaded[..m]), true);
+                self.color_stage(level, state, band, scratch, grid, &run, &plane[..m], Some(&shaded[..m]), true);
             } else {
                 // Some blocks lack sample s (edge blocks): the others' colours, in order.
                 let mut colors = [BlockColors::Uniform([0.0; 4]); BATCH];
@@ -311,7 +313,7 @@ impl BlockPipeline {
                         j += 1;
                     }
                 }
-                self.color_stage(level, state, band, scratch, grid, pixels, &plane[..m], Some(&colors[..m]), true);
+                self.color_stage(level, state, band, scratch, grid, &run, &plane[..m], Some(&colors[..m]), true);
             }
         }
     }

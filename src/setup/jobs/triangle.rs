@@ -20,7 +20,7 @@
 //! plane at the sample positions ([`TriangleJob::render_sample_blocks`]); draws with
 //! alpha-to-coverage or depth clamping, and the exact mode, keep the span path.
 use crate::fragment::block::samples::{SampleBatch, SampleInputs};
-use crate::fragment::block::{lanes, Batch, BlockColors, BlockInputs, BlockPipeline, BlockSource, F32s, BATCH};
+use crate::fragment::block::{lanes, Batch, BlockColors, BlockInputs, BlockPipeline, F32s, Run, BATCH};
 use crate::fragment::pipeline::{shade_span, shade_span_samples, DrawState, Scratch, Span};
 use crate::fragment::{multisample::SampleMasks, span_mask};
 use crate::framebuffer::band::Band;
@@ -307,6 +307,9 @@ impl TriangleJob {
             }
             None => 0,
         };
+        // The stages see the triangle as a run of one (`fragment::block::Run`: they are
+        // compiled for runs only).
+        let one = Run::one(self);
         crate::simd::per_level!(sse2_for_sse41, |level| {
             let front_facing = self.front_facing;
             for &part in visible_parts(area, rejected).as_slice() {
@@ -318,12 +321,12 @@ impl TriangleJob {
                     #[inline(always)]
                     |x, y, mask| {
                         if batch.push(x, y, mask) {
-                            pipeline.render(level, state, band, scratch, self, front_facing, batch);
+                            pipeline.render(level, state, band, scratch, &one, front_facing, batch);
                         }
                     },
                 );
             }
-            pipeline.render(level, state, band, scratch, self, front_facing, batch);
+            pipeline.render(level, state, band, scratch, &one, front_facing, batch);
         });
     }
 
@@ -367,7 +370,7 @@ impl TriangleJob {
         let Some(first) = jobs.clone().next() else { return };
         let front_facing = first.front_facing;
         let stipple = state.polygon_stipple.as_ref();
-        let mut run = TriangleRun { jobs: [first; BATCH], len: 0 };
+        let mut run = Run { of: [first; BATCH], len: 0 };
         crate::simd::per_level!(sse2_for_sse41, |level| {
             for job in jobs.clone() {
                 let part = area.intersect(job.bounds());
@@ -388,7 +391,7 @@ impl TriangleJob {
                             Some(s) => s,
                             None => {
                                 let s = run.len;
-                                run.jobs[s.min(BATCH - 1)] = job;
+                                run.of[s.min(BATCH - 1)] = job;
                                 run.len = s + 1;
                                 source = Some(s);
                                 s
@@ -643,21 +646,6 @@ impl BlockInputs for TriangleJob {
         let px: F32s = lanes(|i| dx0 + (i & 3) as f32);
         let py: F32s = lanes(|i| (y + (i >> 2) as i32) as f32 + 0.5 - self.anchor[1] + 0.0);
         self.varyings.lanes_at(&px, &py, first, out);
-    }
-}
-
-/// The triangles of a batch of a run ([`TriangleJob::render_run`]): block source `s` is
-/// `jobs[s]`, the first `len` set (the rest repeat the first, never read).
-struct TriangleRun<'a> {
-    jobs: [&'a TriangleJob; BATCH],
-    len: usize,
-}
-
-impl BlockSource for TriangleRun<'_> {
-    type Inputs = TriangleJob;
-    #[inline(always)]
-    fn of(&self, source: u8) -> &TriangleJob {
-        self.jobs[source as usize % BATCH]
     }
 }
 
