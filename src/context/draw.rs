@@ -19,7 +19,7 @@ pub(super) mod tests;
 
 use super::shader_objects::Executable;
 use super::{debug, Context};
-use crate::framebuffer::ColorFormat;
+use crate::framebuffer::{ColorFormat, ColorSlot};
 use crate::gl::enums::{GL_FIXED_ONLY, GL_TRUE};
 use crate::gl::types::GLenum;
 use crate::raster::thread_count;
@@ -245,6 +245,10 @@ impl Context {
         };
         let mut scene = self.take_scene(width, height);
         if !job.depth_stencil_only() {
+            if scene.is_empty() {
+                self.scene_overwrites_front = job.whole
+                    && job.colors.iter().any(|c| c.slot == ColorSlot::FrontLeft && c.mask == [true; 4]);
+            }
             scene.add_clear(job);
         } else if let Some(job) = self.carry_clear(job) {
             // A partial depth/stencil clear: after the carried whole one.
@@ -336,20 +340,37 @@ impl Context {
                 None => self.carried_clear = None,
             }
         }
-        self.flush_keeping_carried_clear();
-    }
-
-    /// Rasterizes what the scene recorded, leaving a carried clear carried (glFlush and
-    /// glFinish: see [`Context::carry_clear`]).
-    pub(super) fn flush_keeping_carried_clear(&mut self) {
         if let Some(scene) = self.scene.take() {
             self.run_scene(scene);
         }
     }
 
+    /// Rasterizes what the scene recorded for a flush point that presents the window's
+    /// drawable right after (glFlush, glFinish, another context made current), leaving a
+    /// carried clear carried (see [`Context::carry_clear`]). Into the window, the front-left
+    /// color is rendered in place into the memory it is presented in where the drawable
+    /// allows it ([`crate::framebuffer::Drawable::render_for_presentation`]: an OSMesa
+    /// caller's RGBA8 buffer), saving the copy and the own pixels' first touch.
+    pub(super) fn flush_for_presentation(&mut self) {
+        let Some(mut scene) = self.scene.take() else { return };
+        let overwrites = std::mem::take(&mut self.scene_overwrites_front);
+        let window = self.drawable.clone().filter(|_| self.fbo.draw == 0);
+        let Some(drawable) = window else { return self.run_scene(scene) };
+        let mut guard = drawable.lock().unwrap_or_else(|p| p.into_inner());
+        if scene.size() != (guard.framebuffer.width(), guard.framebuffer.height()) {
+            drop(guard);
+            return self.run_scene(scene);
+        }
+        guard.render_for_presentation(overwrites, |fb| scene.execute(fb));
+        drop(guard);
+        scene.clear();
+        self.spare_scene = Some(scene);
+    }
+
     /// Rasterizes `scene` into the bound framebuffer, then keeps it, emptied, for the next
     /// draws to record into ([`Scene::clear`] says what it keeps).
     fn run_scene(&mut self, mut scene: Scene) {
+        self.scene_overwrites_front = false;
         let _ = self.with_framebuffer(|fb| {
             if scene.size() == (fb.width(), fb.height()) {
                 scene.execute(fb);

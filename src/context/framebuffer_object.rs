@@ -1100,8 +1100,7 @@ impl Context {
     pub fn framebuffer_shape(&self, draw: bool) -> Option<(usize, usize, FramebufferConfig)> {
         let name = if draw { self.fbo.draw } else { self.fbo.read };
         if name == 0 {
-            let shape = |fb: &mut Framebuffer| (fb.width(), fb.height(), *fb.config());
-            return if draw { self.with_window_framebuffer(shape) } else { self.with_window_read_framebuffer(shape) };
+            return self.window_shape(!draw);
         }
         if self.framebuffer_status(name) != GL_FRAMEBUFFER_COMPLETE {
             return None;
@@ -1496,8 +1495,8 @@ impl Context {
         }
         if read_name == 0 && draw_name != 0 {
             if let Some(drawable) = self.read_drawable.clone().or_else(|| self.drawable.clone()) {
-                let guard = drawable.lock().unwrap_or_else(|p| p.into_inner());
-                let read_fb = &guard.framebuffer;
+                let mut guard = drawable.lock().unwrap_or_else(|p| p.into_inner());
+                let read_fb = &*guard.framebuffer_to_read();
                 let _ = self.with_framebuffer(|fb| job.run(fb, &blit_sources_in_place(read_fb, job.read_slot, want)));
             }
             return;

@@ -88,6 +88,10 @@ pub struct Context {
     scene: Option<crate::setup::Scene>,
     /// The last rendered scene, emptied: the next scene records into its storage.
     spare_scene: Option<crate::setup::Scene>,
+    /// Whether the pending scene starts with a clear of every pixel and channel of the
+    /// front-left color: then what it draws does not depend on the image before it
+    /// (`draw::Context::flush_for_presentation`).
+    scene_overwrites_front: bool,
     /// A clear of every depth and stencil value of the window's framebuffer that no draw
     /// has needed yet (`draw::Context::carry_clear`): kept out of the scenes until a draw
     /// tests depth or stencil, or something reads the buffer.
@@ -145,6 +149,7 @@ impl Context {
             scene: None,
             spare_scene: None,
             carried_clear: None,
+            scene_overwrites_front: false,
             bound_once: false,
             vertex_input: vertex_input::VertexInput::default(),
             buffers: Default::default(),
@@ -236,7 +241,15 @@ impl Context {
     pub fn with_window_framebuffer<R>(&self, f: impl FnOnce(&mut Framebuffer) -> R) -> Option<R> {
         let drawable = self.drawable.as_ref()?;
         let mut guard = drawable.lock().unwrap_or_else(|p| p.into_inner());
-        Some(f(&mut guard.framebuffer))
+        Some(f(guard.framebuffer_to_read()))
+    }
+
+    /// The size and layers of the window's framebuffer (`read`: the one pixels are read
+    /// from); `None` when no drawable is bound.
+    pub fn window_shape(&self, read: bool) -> Option<(usize, usize, FramebufferConfig)> {
+        let drawable = if read { self.read_drawable.as_ref().or(self.drawable.as_ref()) } else { self.drawable.as_ref() };
+        let guard = drawable?.lock().unwrap_or_else(|p| p.into_inner());
+        Some((guard.framebuffer.width(), guard.framebuffer.height(), *guard.framebuffer.config()))
     }
 
     /// As `with_window_framebuffer`, for drawing: the drawable's next presentation shows
@@ -253,12 +266,14 @@ impl Context {
     pub fn with_window_read_framebuffer<R>(&self, f: impl FnOnce(&mut Framebuffer) -> R) -> Option<R> {
         let drawable = self.read_drawable.as_ref().or(self.drawable.as_ref())?;
         let mut guard = drawable.lock().unwrap_or_else(|p| p.into_inner());
-        Some(f(&mut guard.framebuffer))
+        Some(f(guard.framebuffer_to_read()))
     }
 
-    /// glFlush: completes pending rendering and presents the drawable.
+    /// glFlush: completes pending rendering and presents the drawable (rendering in place
+    /// into the memory it is presented in where the drawable allows, see
+    /// [`Drawable::render_for_presentation`]).
     pub fn flush(&mut self) {
-        self.flush_keeping_carried_clear();
+        self.flush_for_presentation();
         if let Some(drawable) = &self.drawable {
             drawable.lock().unwrap_or_else(|p| p.into_inner()).present();
         }

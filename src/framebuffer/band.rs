@@ -137,12 +137,23 @@ impl Framebuffer {
         // Split every selected buffer, then hand the pieces to the bands in `slots` order.
         let mut split_buffers: Vec<(ColorSlot, ColorFormat, Vec<ColorBand<'_>>)> = Vec::new();
         // A multisampled framebuffer renders into its samples (resolved after the scene).
-        let (color_layers, depth_layer) = match self.multisample.as_mut() {
-            Some(layers) => (&mut layers.color, &mut layers.depth_stencil),
-            None => (&mut self.color, &mut self.depth_stencil),
+        let (color_layers, depth_layer, mut in_place_front) = match self.multisample.as_mut() {
+            Some(layers) => (&mut layers.color, &mut layers.depth_stencil, None),
+            None => (&mut self.color, &mut self.depth_stencil, self.in_place_front.as_mut()),
         };
         for (slot, buffer) in color_layers.iter_mut().filter(|(s, _)| slots.contains(s)) {
             let format = buffer.format();
+            // The front-left image rendered in place, in the memory it is presented from.
+            let in_place = match (*slot, format) {
+                (ColorSlot::FrontLeft, ColorFormat::Unorm8 { alpha: true }) => {
+                    in_place_front.take().and_then(|b| b.unorm8_pixels_mut(width * height))
+                }
+                _ => None,
+            };
+            if let Some(px) = in_place {
+                split_buffers.push((*slot, format, split(px, chunk).into_iter().map(ColorBand::Unorm8).collect()));
+                continue;
+            }
             let pieces: Vec<ColorBand<'_>> = match buffer.pixels_mut() {
                 ColorPixels::Unorm8(px) => split(px, chunk).into_iter().map(ColorBand::Unorm8).collect(),
                 ColorPixels::Rgb565(px) => split(px, chunk).into_iter().map(ColorBand::Rgb565).collect(),

@@ -28,6 +28,11 @@ impl CallerBuffer {
         CallerBuffer { ptr, len }
     }
 
+    /// No memory: what a presenter holds while it lends its buffer (`Present::lend`).
+    pub fn empty() -> CallerBuffer {
+        CallerBuffer { ptr: std::ptr::null_mut(), len: 0 }
+    }
+
     /// The address, as the caller gave it.
     pub fn as_ptr(&self) -> *mut u8 {
         self.ptr
@@ -61,5 +66,11 @@ impl CallerBuffer {
         // SAFETY: [offset, end) lies inside the `len` bytes the constructor's contract makes
         // valid for writes, and `&mut self` makes this the only live view.
         Some(unsafe { std::slice::from_raw_parts_mut(self.ptr.add(offset), count) })
+    }
+
+    /// The first `count` pixels of RGBA8 memory; `None` when the buffer holds fewer.
+    pub fn unorm8_pixels_mut(&mut self, count: usize) -> Option<&mut [[u8; 4]]> {
+        let bytes = self.bytes_mut(0, count.checked_mul(4)?)?;
+        Some(bytes.as_chunks_mut::<4>().0)
     }
 }

@@ -119,6 +119,10 @@ pub struct Framebuffer {
     /// The multisampled layers, when the framebuffer has more than one sample per pixel
     /// (`multisample.rs`); the layers above then hold the resolved image.
     multisample: Option<multisample::SampleLayers>,
+    /// The memory the front-left color is rendered into instead of its own pixels while a
+    /// scene renders in place (OSMesa, [`Drawable::render_for_presentation`]): RGBA8 rows
+    /// bottom-up without gaps, as the own pixels are. `None` otherwise.
+    in_place_front: Option<external::CallerBuffer>,
 }
 
 impl Framebuffer {
@@ -133,7 +137,7 @@ impl Framebuffer {
         }
         let depth_stencil = DepthStencilBuffer::new(config.depth_stencil, width, pixels)?;
         let accum = if config.accum_bits > 0 { Some(AccumBuffer::new(width, pixels)?) } else { None };
-        Ok(Framebuffer { config, width, height, color, depth_stencil, accum, multisample: None })
+        Ok(Framebuffer { config, width, height, color, depth_stencil, accum, multisample: None, in_place_front: None })
     }
 
     pub fn config(&self) -> &FramebufferConfig {
@@ -235,22 +239,69 @@ pub trait Present: Send {
     /// Frees what the presenter holds in another process (an X server's GC, a shared
     /// segment) while that is still possible; called when its target is destroyed.
     fn release(&mut self) {}
+
+    /// Whether the memory this presenter writes holds pixels in the layout of
+    /// `framebuffer`'s front-left color (RGBA8 rows bottom-up without gaps), so that a scene
+    /// can render that color there in place ([`Drawable::render_for_presentation`]).
+    /// No by default.
+    fn lends(&self, _framebuffer: &Framebuffer) -> bool {
+        false
+    }
+
+    /// The memory [`Present::lends`] says can be rendered into, its pages mapped, until
+    /// [`Present::give_back`] returns it; `None` when it cannot.
+    fn lend(&mut self, _framebuffer: &Framebuffer) -> Option<external::CallerBuffer> {
+        None
+    }
+
+    /// Takes back what [`Present::lend`] lent.
+    fn give_back(&mut self, _memory: external::CallerBuffer) {}
+
+    /// The address of the caller's memory this presenter writes, if it writes any.
+    fn memory(&self) -> Option<usize> {
+        None
+    }
 }
 
 /// A framebuffer together with the way it is presented: what a GL context draws into.
+///
+/// Where the presenter lends the memory it presents into ([`Present::lends`]: an OSMesa
+/// caller's RGBA8 buffer), a flush point's scene renders the front-left color straight
+/// into that memory ([`Drawable::render_for_presentation`]) instead of into the
+/// framebuffer's own pixels followed by a copy: the first frame of a fresh context then
+/// never touches the own pixels' pages. The image then lives in the presenter's memory,
+/// and everything else that uses the framebuffer first brings it home
+/// ([`Drawable::bring_image_home`], through [`Drawable::framebuffer_to_draw`] and
+/// [`Drawable::framebuffer_to_read`]).
 pub struct Drawable {
+    /// The layers. While the front-left image lives in the presenter's memory its own
+    /// pixels are older: read it through [`Drawable::framebuffer_to_read`].
     pub framebuffer: Framebuffer,
+    /// How the framebuffer is shown. OSMesa replaces it with [`Drawable::set_presenter`].
     pub presenter: Option<Box<dyn Present>>,
     /// Whether the framebuffer was drawn into since it was last presented.
     drawn: bool,
     /// Whether the depth/stencil pixels were lent to the caller (OSMesaGetDepthBuffer),
     /// who may read them at any flush point from then on.
     depth_stencil_lent: bool,
+    /// Whether the presenter's memory holds the current front-left image: it was presented,
+    /// or rendered there in place, and nothing was drawn into the own pixels since.
+    presenter_holds_image: bool,
+    /// Whether the current front-left image lives only in the presenter's memory (a flush
+    /// point rendered it there in place): the framebuffer's own front-left pixels are older.
+    image_with_presenter: bool,
 }
 
 impl Drawable {
     pub fn new(framebuffer: Framebuffer, presenter: Option<Box<dyn Present>>) -> Drawable {
-        Drawable { framebuffer, presenter, drawn: false, depth_stencil_lent: false }
+        Drawable {
+            framebuffer,
+            presenter,
+            drawn: false,
+            depth_stencil_lent: false,
+            presenter_holds_image: false,
+            image_with_presenter: false,
+        }
     }
 
     /// The depth/stencil layer, for a caller who keeps its address and reads it after any
@@ -269,16 +320,105 @@ impl Drawable {
 
     /// The framebuffer, for drawing into it: the next presentation shows the result.
     pub fn framebuffer_to_draw(&mut self) -> &mut Framebuffer {
+        self.bring_image_home();
         self.drawn = true;
+        self.presenter_holds_image = false;
         &mut self.framebuffer
     }
 
+    /// The framebuffer with its front-left image home, for reading it (or for changes the
+    /// presentation need not show: depth, accumulation).
+    pub fn framebuffer_to_read(&mut self) -> &mut Framebuffer {
+        self.bring_image_home();
+        &mut self.framebuffer
+    }
+
+    /// Runs `render` (the scene of a flush point about to present) on the framebuffer,
+    /// rendering the front-left color in place into the presenter's memory when the
+    /// presenter lends it and that memory has what `render` builds on: the current image
+    /// ([`Drawable::presenter_holds_image`]), or nothing because `overwrites` (the scene
+    /// starts by clearing every front-left pixel). The memory is written only here, at a
+    /// flush point that presents what was drawn, where the copy into it would have written
+    /// it anyway. Otherwise `render` draws into the own pixels, as
+    /// [`Drawable::framebuffer_to_draw`].
+    pub fn render_for_presentation(&mut self, overwrites: bool, render: impl FnOnce(&mut Framebuffer)) {
+        let usable = (overwrites || self.presenter_holds_image) && self.framebuffer.samples() == 1;
+        let lent = match self.presenter.as_mut() {
+            Some(presenter) if usable => presenter.lend(&self.framebuffer),
+            _ => None,
+        };
+        let Some(memory) = lent else {
+            return render(self.framebuffer_to_draw());
+        };
+        self.framebuffer.in_place_front = Some(memory);
+        render(&mut self.framebuffer);
+        if let (Some(presenter), Some(memory)) = (self.presenter.as_mut(), self.framebuffer.in_place_front.take()) {
+            presenter.give_back(memory);
+        }
+        self.drawn = true;
+        self.presenter_holds_image = true;
+        self.image_with_presenter = true;
+    }
+
+    /// Copies the front-left image back into the framebuffer's own pixels when it lives
+    /// only in the presenter's memory (rendered there in place). The memory is the caller's
+    /// and still bound: if the caller changed it since the flush point that wrote it, the
+    /// image now shows the change (Mesa 22 keeps its own copy; the classic OSMesa rendered
+    /// into the caller's buffer, as this does).
+    pub fn bring_image_home(&mut self) {
+        if !std::mem::take(&mut self.image_with_presenter) {
+            return;
+        }
+        let Some(presenter) = self.presenter.as_mut() else { return };
+        let Some(mut memory) = presenter.lend(&self.framebuffer) else { return };
+        let pixels = self.framebuffer.width * self.framebuffer.height;
+        let own = self.framebuffer.color_mut(ColorSlot::FrontLeft).map(|b| b.pixels_mut());
+        if let (Some(surface::ColorPixels::Unorm8(own)), Some(image)) = (own, memory.unorm8_pixels_mut(pixels)) {
+            own[..pixels].copy_from_slice(image);
+        }
+        presenter.give_back(memory);
+    }
+
+    /// Replaces the presenter (OSMesaMakeCurrent of a buffer the framebuffer is kept for,
+    /// OSMesaPixelStore). A new presenter into the same memory in the same (lendable) layout
+    /// changes nothing. Otherwise an image that lives only in the old presenter's memory is
+    /// brought home when the new one writes the same memory (the caller has just vouched
+    /// for it again); memory at another address is never read again (the caller need keep
+    /// a buffer valid only while it is bound, and may have freed it before binding the
+    /// next), so the image becomes what the new memory holds when that can be rendered into
+    /// in place (the classic OSMesa's rule), or black.
+    pub fn set_presenter(&mut self, presenter: Option<Box<dyn Present>>) {
+        let memory = |p: &Option<Box<dyn Present>>| p.as_ref().and_then(|p| p.memory());
+        let same_memory = memory(&self.presenter).is_some() && memory(&self.presenter) == memory(&presenter);
+        let lends = |p: &Option<Box<dyn Present>>, fb: &Framebuffer| p.as_ref().is_some_and(|p| p.lends(fb));
+        let (old_lends, new_lends) = (lends(&self.presenter, &self.framebuffer), lends(&presenter, &self.framebuffer));
+        if !(same_memory && old_lends && new_lends) {
+            if self.image_with_presenter && same_memory {
+                self.bring_image_home();
+            } else if self.image_with_presenter && !new_lends {
+                self.image_with_presenter = false;
+                if presenter.is_some() {
+                    let bounds = self.framebuffer.bounds();
+                    if let Some(own) = self.framebuffer.color_mut(ColorSlot::FrontLeft) {
+                        own.clear(bounds, [0.0; 4], [true; 4]);
+                    }
+                }
+            }
+            self.presenter_holds_image = self.image_with_presenter;
+        }
+        self.presenter = presenter;
+    }
+
     /// Shows the framebuffer through the presenter (unless it skips unchanged images and
-    /// nothing was drawn since the last presentation).
+    /// nothing was drawn since the last presentation). An image rendered in place is
+    /// already where it is shown.
     pub fn present(&mut self) {
         if let Some(presenter) = self.presenter.as_mut() {
             if self.drawn || !presenter.only_when_drawn() {
-                presenter.present(&self.framebuffer);
+                if !self.image_with_presenter {
+                    presenter.present(&self.framebuffer);
+                }
+                self.presenter_holds_image = true;
             }
         }
         self.drawn = false;

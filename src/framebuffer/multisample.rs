@@ -242,6 +242,7 @@ impl Framebuffer {
             depth_stencil: none(),
             accum: None,
             multisample: Some(SampleLayers { samples, color, depth_stencil }),
+            in_place_front: None,
         }
     }
 

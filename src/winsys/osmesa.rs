@@ -225,16 +225,17 @@ impl Present for CallerPresenter {
         let Some(rows_bytes) = (height - 1).checked_mul(stride).and_then(|b| b.checked_add(width * bpp)) else {
             return;
         };
-        let Some(bytes) = self.buffer.bytes_mut(0, rows_bytes) else {
-            return;
-        };
         // The first presentation into a buffer faults its pages in (the caller's fresh
         // memory: one fault per 4 KiB outside huge pages); each band asks for its pages in
         // one call instead (`framebuffer::pages::populate`). Later ones find them mapped.
         // Only for rows without gaps: the pages of a wide row length's padding may never be
         // written, so they are not asked for.
-        let populate = !std::mem::replace(&mut self.populated, true) && stride == width * bpp;
-        let write_band = |first_row: usize, band: &mut [u8]| {
+        let populate = !self.populated && stride == width * bpp;
+        let Some(bytes) = self.buffer.bytes_mut(0, rows_bytes) else {
+            return;
+        };
+        self.populated = true;
+        in_bands(bytes, width, height, stride, &|first_row, band| {
             if populate {
                 pages::populate(band);
             }
@@ -243,23 +244,61 @@ impl Present for CallerPresenter {
                 let y = if y_up { dst_row } else { height - 1 - dst_row };
                 present_row(layout, color.pixels(), width, y, &mut row[..width * bpp]);
             }
-        };
-        // A large image is written by the shared worker threads too, in bands of rows: the
-        // first write of a fresh caller buffer is mostly page faults (one per 4 KiB), which
-        // then happen on every core at once.
-        let threads = if width * height >= PARALLEL_PRESENT_PIXELS { thread_count() } else { 1 };
-        if threads <= 1 {
-            return write_band(0, bytes);
-        }
-        let band_rows = height.div_ceil(threads * 4).max(1);
-        let queue = Mutex::new(bytes.chunks_mut(band_rows * stride).enumerate());
-        crate::pool::run(threads - 1, &|| loop {
-            let Some((index, band)) = queue.lock().unwrap_or_else(|p| p.into_inner()).next() else {
-                break;
-            };
-            write_band(index * band_rows, band);
         });
     }
+
+    /// RGBA8 rows bottom-up without gaps, as the framebuffer's own RGBA8 front-left color.
+    fn lends(&self, framebuffer: &Framebuffer) -> bool {
+        let (width, height) = (framebuffer.width(), framebuffer.height());
+        self.layout == PixelLayout::Rgba
+            && self.ty == GL_UNSIGNED_BYTE
+            && self.y_up
+            && self.row_length <= width
+            && framebuffer.config().color == (ColorFormat::Unorm8 { alpha: true })
+            && width.checked_mul(height).and_then(|p| p.checked_mul(4)).is_some_and(|bytes| bytes <= self.buffer.len())
+            && !self.buffer.as_ptr().is_null()
+    }
+
+    fn lend(&mut self, framebuffer: &Framebuffer) -> Option<CallerBuffer> {
+        if !self.lends(framebuffer) {
+            return None;
+        }
+        // The first use maps the pages as the first presentation would (see `present`).
+        if !std::mem::replace(&mut self.populated, true) {
+            let (width, height) = (framebuffer.width(), framebuffer.height());
+            if let Some(bytes) = self.buffer.bytes_mut(0, width * height * 4) {
+                in_bands(bytes, width, height, width * 4, &|_, band| pages::populate(band));
+            }
+        }
+        Some(std::mem::replace(&mut self.buffer, CallerBuffer::empty()))
+    }
+
+    fn give_back(&mut self, memory: CallerBuffer) {
+        self.buffer = memory;
+    }
+
+    fn memory(&self) -> Option<usize> {
+        Some(self.buffer.as_ptr() as usize)
+    }
+}
+
+/// Runs `work(first_row, band)` on bands of whole rows (`stride` bytes apart; the last may
+/// be shorter) of `bytes`, which holds `height` rows of `width` pixels. A large image is written by the
+/// shared worker threads too: the first write of a fresh caller buffer is mostly page
+/// faults (one per 4 KiB), which then happen on every core at once.
+fn in_bands(bytes: &mut [u8], width: usize, height: usize, stride: usize, work: &(dyn Fn(usize, &mut [u8]) + Sync)) {
+    let threads = if width * height >= PARALLEL_PRESENT_PIXELS { thread_count() } else { 1 };
+    if threads <= 1 {
+        return work(0, bytes);
+    }
+    let band_rows = height.div_ceil(threads * 4).max(1);
+    let queue = Mutex::new(bytes.chunks_mut(band_rows * stride).enumerate());
+    crate::pool::run(threads - 1, &|| loop {
+        let Some((index, band)) = queue.lock().unwrap_or_else(|p| p.into_inner()).next() else {
+            break;
+        };
+        work(index * band_rows, band);
+    });
 }
 
 /// Images from this many pixels on are written into the caller's buffer by all the worker
@@ -373,12 +412,17 @@ impl OsMesaContext {
         let reuse = binding.as_ref().filter(|b| b.ty == ty && b.width == width && b.height == height);
         let drawable = match reuse {
             Some(b) => {
-                b.drawable.lock().unwrap_or_else(|p| p.into_inner()).presenter = Some(presenter);
+                b.drawable.lock().unwrap_or_else(|p| p.into_inner()).set_presenter(Some(presenter));
                 b.drawable.clone()
             }
             None => {
                 let framebuffer = Framebuffer::new(self.request.config(color), width, height)
                     .map_err(|OutOfMemory| BindFailure::OutOfMemory)?;
+                // The old framebuffer goes; an image of it that lives in the old buffer is
+                // never read (the caller may have freed that buffer already).
+                if let Some(old) = binding.as_ref() {
+                    old.drawable.lock().unwrap_or_else(|p| p.into_inner()).set_presenter(None);
+                }
                 Arc::new(Mutex::new(Drawable::new(framebuffer, Some(presenter))))
             }
         };
@@ -417,7 +461,7 @@ impl OsMesaContext {
                 y_up,
                 populated: false,
             };
-            b.drawable.lock().unwrap_or_else(|p| p.into_inner()).presenter = Some(Box::new(presenter));
+            b.drawable.lock().unwrap_or_else(|p| p.into_inner()).set_presenter(Some(Box::new(presenter)));
         }
     }
 
@@ -437,9 +481,9 @@ impl OsMesaContext {
         self.store()
     }
 
-    /// The caller's buffer address and size, after flushing rendering into it.
+    /// The caller's buffer address and size, after flushing rendering into it (as glFlush).
     pub fn color_buffer(&self) -> Option<(usize, usize, usize)> {
-        self.shared.with_gl(|gl| gl.flush_rendering());
+        self.shared.with_gl(|gl| gl.flush());
         let binding = self.lock_binding();
         let b = binding.as_ref()?;
         b.drawable.lock().unwrap_or_else(|p| p.into_inner()).present();
@@ -470,7 +514,7 @@ impl OsMesaContext {
     /// drawn since the last flush point (OSMesaDestroyContext).
     fn forget_buffer(&self) {
         if let Some(b) = self.lock_binding().take() {
-            b.drawable.lock().unwrap_or_else(|p| p.into_inner()).presenter = None;
+            b.drawable.lock().unwrap_or_else(|p| p.into_inner()).set_presenter(None);
         }
     }
 }
