@@ -74,3 +74,14 @@ impl CallerBuffer {
         Some(bytes.as_chunks_mut::<4>().0)
     }
 }
+
+#[cfg(test)]
+impl CallerBuffer {
+    /// The memory of a test's vector, which must neither move nor be dropped while the
+    /// value is used.
+    pub fn of_test_vec(memory: &mut [u8]) -> CallerBuffer {
+        // SAFETY: the slice is valid for writes of its length; the test keeps it alive and
+        // in place while the value is used (the contract above).
+        unsafe { CallerBuffer::new(memory.as_mut_ptr(), memory.len()) }
+    }
+}

@@ -424,3 +424,162 @@ impl Drawable {
         self.drawn = false;
     }
 }
+
+#[cfg(test)]
+mod in_place_tests {
+    //! Rendering in place into a presenter's memory ([`Drawable::render_for_presentation`]).
+    use super::*;
+    use crate::framebuffer::band::ColorBand;
+    use crate::framebuffer::surface::ColorPixels;
+    use std::sync::atomic::{AtomicUsize, Ordering};
+    use std::sync::Arc;
+
+    const W: usize = 8;
+    const H: usize = 6;
+
+    /// A presenter into test memory (RGBA8 rows bottom-up), lending it when `lends`.
+    struct Memory {
+        buffer: external::CallerBuffer,
+        lends: bool,
+        copies: Arc<AtomicUsize>,
+    }
+
+    impl Present for Memory {
+        fn present(&mut self, framebuffer: &Framebuffer) {
+            self.copies.fetch_add(1, Ordering::SeqCst);
+            let Some(ColorPixels::Unorm8(px)) = framebuffer.color(ColorSlot::FrontLeft).map(|b| b.pixels()) else {
+                return;
+            };
+            self.buffer.unorm8_pixels_mut(W * H).unwrap().copy_from_slice(&px[..W * H]);
+        }
+
+        fn only_when_drawn(&self) -> bool {
+            true
+        }
+
+        fn lends(&self, _framebuffer: &Framebuffer) -> bool {
+            self.lends
+        }
+
+        fn lend(&mut self, framebuffer: &Framebuffer) -> Option<external::CallerBuffer> {
+            self.lends(framebuffer).then(|| std::mem::replace(&mut self.buffer, external::CallerBuffer::empty()))
+        }
+
+        fn give_back(&mut self, memory: external::CallerBuffer) {
+            self.buffer = memory;
+        }
+
+        fn memory(&self) -> Option<usize> {
+            Some(self.buffer.as_ptr() as usize)
+        }
+    }
+
+    fn drawable(memory: &mut [u8], lends: bool) -> (Drawable, Arc<AtomicUsize>) {
+        let config = FramebufferConfig::single_buffered(
+            ColorFormat::Unorm8 { alpha: true },
+            DepthStencilFormat::None,
+            0,
+        );
+        let framebuffer = Framebuffer::new(config, W, H).unwrap();
+        let copies = Arc::new(AtomicUsize::new(0));
+        let presenter = Memory { buffer: external::CallerBuffer::of_test_vec(memory), lends, copies: copies.clone() };
+        (Drawable::new(framebuffer, Some(Box::new(presenter))), copies)
+    }
+
+    /// Fills the rows `[y0, y1)` of the front-left color, as a scene's band workers write.
+    fn fill_rows(framebuffer: &mut Framebuffer, y0: usize, y1: usize, pixel: [u8; 4]) {
+        for mut band in framebuffer.bands(1, &[ColorSlot::FrontLeft]) {
+            let y = band.y0 as usize;
+            if let ColorBand::Unorm8(px) = &mut band.colors[0].pixels {
+                if (y0..y1).contains(&y) {
+                    px.fill(pixel);
+                }
+            }
+        }
+    }
+
+    fn own_pixels(drawable: &Drawable) -> Vec<[u8; 4]> {
+        let Some(ColorPixels::Unorm8(px)) = drawable.framebuffer.color(ColorSlot::FrontLeft).map(|b| b.pixels()) else {
+            unreachable!()
+        };
+        px[..W * H].to_vec()
+    }
+
+    fn pixel_rows(memory: &[u8]) -> Vec<[u8; 4]> {
+        memory.as_chunks::<4>().0.to_vec()
+    }
+
+    #[test]
+    fn a_scene_that_overwrites_renders_in_place_and_is_not_copied() {
+        let mut memory = vec![0xEE; W * H * 4];
+        let (mut drawable, copies) = drawable(&mut memory, true);
+        drawable.render_for_presentation(true, |fb| fill_rows(fb, 0, H, [1, 2, 3, 4]));
+        drawable.present();
+        assert_eq!(copies.load(Ordering::SeqCst), 0, "presented by a copy");
+        assert_eq!(own_pixels(&drawable), vec![[0; 4]; W * H], "the own pixels were touched");
+        // Every other use brings the image home.
+        let _ = drawable.framebuffer_to_read();
+        assert_eq!(own_pixels(&drawable), vec![[1, 2, 3, 4]; W * H]);
+        drop(drawable);
+        assert_eq!(pixel_rows(&memory), vec![[1, 2, 3, 4]; W * H]);
+    }
+
+    #[test]
+    fn a_scene_that_builds_on_an_image_the_memory_lacks_renders_into_the_own_pixels() {
+        let mut memory = vec![0xEE; W * H * 4];
+        let (mut drawable, copies) = drawable(&mut memory, true);
+        drawable.render_for_presentation(false, |fb| fill_rows(fb, 0, 2, [9; 4]));
+        assert_eq!(copies.load(Ordering::SeqCst), 0);
+        drawable.present();
+        assert_eq!(copies.load(Ordering::SeqCst), 1, "not presented by a copy");
+        // The memory now holds the image: the next frame builds on it in place.
+        drawable.render_for_presentation(false, |fb| fill_rows(fb, 4, 5, [7; 4]));
+        drawable.present();
+        assert_eq!(copies.load(Ordering::SeqCst), 1);
+        drop(drawable);
+        let rows = pixel_rows(&memory);
+        assert_eq!(rows[0], [9; 4]);
+        assert_eq!(rows[2 * W], [0; 4], "the fresh image is black, whatever the memory held");
+        assert_eq!(rows[4 * W], [7; 4]);
+    }
+
+    #[test]
+    fn a_presenter_that_does_not_lend_is_presented_by_copies() {
+        let mut memory = vec![0xEE; W * H * 4];
+        let (mut drawable, copies) = drawable(&mut memory, false);
+        drawable.render_for_presentation(true, |fb| fill_rows(fb, 0, H, [5; 4]));
+        assert_eq!(own_pixels(&drawable), vec![[5; 4]; W * H]);
+        drawable.present();
+        assert_eq!(copies.load(Ordering::SeqCst), 1);
+    }
+
+    #[test]
+    fn other_memory_is_never_read_once_the_presenter_is_replaced() {
+        let (mut first, mut second) = (vec![0xEE; W * H * 4], vec![0x55; W * H * 4]);
+        let (mut drawable, _) = drawable(&mut first, true);
+        drawable.render_for_presentation(true, |fb| fill_rows(fb, 0, H, [1; 4]));
+        drawable.present();
+        let copies = Arc::new(AtomicUsize::new(0));
+        let buffer = external::CallerBuffer::of_test_vec(&mut second);
+        drawable.set_presenter(Some(Box::new(Memory { buffer, lends: true, copies })));
+        // The old memory changes (as freed memory would): the image is the new memory's.
+        first.fill(0x99);
+        let _ = drawable.framebuffer_to_read();
+        assert_eq!(own_pixels(&drawable), vec![[0x55; 4]; W * H]);
+    }
+
+    #[test]
+    fn the_same_memory_in_a_layout_not_rendered_into_brings_the_image_home() {
+        let mut memory = vec![0xEE; W * H * 4];
+        let (mut drawable, copies) = drawable(&mut memory, true);
+        drawable.render_for_presentation(true, |fb| fill_rows(fb, 0, H, [3; 4]));
+        drawable.present();
+        let buffer = external::CallerBuffer::of_test_vec(&mut memory);
+        drawable.set_presenter(Some(Box::new(Memory { buffer, lends: false, copies: copies.clone() })));
+        assert_eq!(own_pixels(&drawable), vec![[3; 4]; W * H]);
+        // The next frame draws into the own pixels and is copied.
+        drawable.render_for_presentation(false, |fb| fill_rows(fb, 0, 1, [4; 4]));
+        drawable.present();
+        assert_eq!(copies.load(Ordering::SeqCst), 1);
+    }
+}
