@@ -107,6 +107,17 @@ int main(void)
     glFinish();
     capi_save_image("after_read", W, H, 4, CAPI_U8, a);
 
+    /* A frame that starts with a clear, read before its flush point, then presented. */
+    frame1();
+    glFinish();
+    glClearColor(0.5f, 0, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    rect(30, 30, 40, 40, 0, 0, 1, 1);
+    glReadPixels(0, 0, W, H, GL_RGBA, GL_UNSIGNED_BYTE, read);
+    capi_save_image("cleared_then_read", W, H, 4, CAPI_U8, read);
+    glFinish();
+    capi_check(memcmp(read, a, sizeof a) == 0, "the presented frame differs from what glReadPixels read");
+
     /* glCopyPixels reads the image rendered in place. */
     frame1();
     glFinish();

@@ -370,7 +370,12 @@ impl Context {
     /// Rasterizes `scene` into the bound framebuffer, then keeps it, emptied, for the next
     /// draws to record into ([`Scene::clear`] says what it keeps).
     fn run_scene(&mut self, mut scene: Scene) {
-        self.scene_overwrites_front = false;
+        if std::mem::take(&mut self.scene_overwrites_front) && self.fbo.draw == 0 {
+            // No need to bring home an image the scene replaces whole.
+            if let Some(drawable) = &self.drawable {
+                drawable.lock().unwrap_or_else(|p| p.into_inner()).front_image_replaced();
+            }
+        }
         let _ = self.with_framebuffer(|fb| {
             if scene.size() == (fb.width(), fb.height()) {
                 scene.execute(fb);

@@ -379,6 +379,13 @@ impl Drawable {
         presenter.give_back(memory);
     }
 
+    /// Says that what is drawn next replaces every front-left pixel first (a scene that
+    /// starts with a whole clear): an image that lives in the presenter's memory need not be
+    /// brought home for it.
+    pub fn front_image_replaced(&mut self) {
+        self.image_with_presenter = false;
+    }
+
     /// Replaces the presenter (OSMesaMakeCurrent of a buffer the framebuffer is kept for,
     /// OSMesaPixelStore). A new presenter into the same memory in the same (lendable) layout
     /// changes nothing. Otherwise an image that lives only in the old presenter's memory is
