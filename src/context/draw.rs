@@ -246,8 +246,8 @@ impl Context {
         let mut scene = self.take_scene(width, height);
         if !job.depth_stencil_only() {
             if scene.is_empty() {
-                self.scene_overwrites_front = job.whole
-                    && job.colors.iter().any(|c| c.slot == ColorSlot::FrontLeft && c.mask == [true; 4]);
+                self.scene_overwrites_front =
+                    job.whole && job.colors.iter().any(|c| c.slot == ColorSlot::FrontLeft && c.mask == [true; 4]);
             }
             scene.add_clear(job);
         } else if let Some(job) = self.carry_clear(job) {

@@ -247,7 +247,8 @@ impl Context {
     /// The size and layers of the window's framebuffer (`read`: the one pixels are read
     /// from); `None` when no drawable is bound.
     pub fn window_shape(&self, read: bool) -> Option<(usize, usize, FramebufferConfig)> {
-        let drawable = if read { self.read_drawable.as_ref().or(self.drawable.as_ref()) } else { self.drawable.as_ref() };
+        let drawable =
+            if read { self.read_drawable.as_ref().or(self.drawable.as_ref()) } else { self.drawable.as_ref() };
         let guard = drawable?.lock().unwrap_or_else(|p| p.into_inner());
         Some((guard.framebuffer.width(), guard.framebuffer.height(), *guard.framebuffer.config()))
     }

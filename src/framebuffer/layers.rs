@@ -43,7 +43,16 @@ impl Framebuffer {
         let depth_stencil = depth_stencil.unwrap_or_else(|| {
             DepthStencilBuffer::new(DepthStencilFormat::None, width, 0).expect("an empty buffer allocates nothing")
         });
-        Framebuffer { config, width, height, color, depth_stencil, accum: None, multisample: None, in_place_front: None }
+        Framebuffer {
+            config,
+            width,
+            height,
+            color,
+            depth_stencil,
+            accum: None,
+            multisample: None,
+            in_place_front: None,
+        }
     }
 
     /// The layers back, as [`Framebuffer::from_layers`] or

@@ -482,11 +482,8 @@ mod in_place_tests {
     }
 
     fn drawable(memory: &mut [u8], lends: bool) -> (Drawable, Arc<AtomicUsize>) {
-        let config = FramebufferConfig::single_buffered(
-            ColorFormat::Unorm8 { alpha: true },
-            DepthStencilFormat::None,
-            0,
-        );
+        let config =
+            FramebufferConfig::single_buffered(ColorFormat::Unorm8 { alpha: true }, DepthStencilFormat::None, 0);
         let framebuffer = Framebuffer::new(config, W, H).unwrap();
         let copies = Arc::new(AtomicUsize::new(0));
         let presenter = Memory { buffer: external::CallerBuffer::of_test_vec(memory), lends, copies: copies.clone() };
