@@ -1,9 +1,15 @@
 //! OSMesa: contexts that render into memory the caller owns.
 //!
-//! As Mesa does, tessera renders into its own framebuffer and writes the caller's buffer at
-//! the flush points only, and only when something was drawn since the last one; the
-//! caller's existing contents are never read. Rows go bottom-up (`OSMESA_Y_UP`, the
-//! default) or top-down, `OSMESA_ROW_LENGTH` pixels apart.
+//! As Mesa does, tessera writes the caller's buffer at the flush points only, and only when
+//! something was drawn since the last one. Rows go bottom-up (`OSMESA_Y_UP`, the default)
+//! or top-down, `OSMESA_ROW_LENGTH` pixels apart. Mesa renders into its own framebuffer and
+//! copies it; tessera does the same except for RGBA8 buffers with rows bottom-up and no
+//! gaps (the usual case): a flush point renders their scene straight into the caller's
+//! buffer ([`crate::framebuffer::Drawable::render_for_presentation`], no copy, the own
+//! pixels never touched), whose contents are then the image (read back when something
+//! else needs it, never after the caller bound another buffer: see
+//! capi-tests/osmesa_in_place.c for where this differs from Mesa 22). Other layouts are
+//! written by copies and their existing contents are never read.
 //!
 //! The flush points, as Mesa 22's (checked by capi-tests/osmesa_free_then_destroy.c):
 //! glFlush, glFinish, OSMesaMakeCurrent of another context (the old context's buffer) and
@@ -19,9 +25,11 @@
 //! flush point.)
 //!
 //! Audit of caller memory written after the call that handed it over returned:
-//! - the OSMesa buffer, here: written only at the flush points above, while bound; it is
-//!   forgotten (presenter dropped) before OSMesaDestroyContext releases the context, and a
-//!   rebind replaces it before anything is presented;
+//! - the OSMesa buffer, here: written only at the flush points above, while bound (also
+//!   when a flush point renders in place), and read only while bound to the same address
+//!   (bringing an image rendered in place home); it is forgotten (presenter dropped) before
+//!   OSMesaDestroyContext releases the context, and a rebind replaces it before anything is
+//!   presented;
 //! - glSelectBuffer/glFeedbackBuffer arrays: the records are kept inside the context and
 //!   copied only inside glRenderMode when it leaves GL_SELECT/GL_FEEDBACK (`api::gl_selection`),
 //!   never at a deferred flush nor at destroy;
