@@ -351,13 +351,18 @@ impl Drawable {
             return render(self.framebuffer_to_draw());
         };
         self.framebuffer.in_place_front = Some(memory);
-        render(&mut self.framebuffer);
+        // The memory goes back even when `render` panics (the API edge catches it): a
+        // framebuffer that kept it would render into it at any later scene.
+        let rendered = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| render(&mut self.framebuffer)));
         if let (Some(presenter), Some(memory)) = (self.presenter.as_mut(), self.framebuffer.in_place_front.take()) {
             presenter.give_back(memory);
         }
         self.drawn = true;
         self.presenter_holds_image = true;
         self.image_with_presenter = true;
+        if let Err(panic) = rendered {
+            std::panic::resume_unwind(panic);
+        }
     }
 
     /// Copies the front-left image back into the framebuffer's own pixels when it lives
@@ -545,6 +550,21 @@ mod in_place_tests {
         assert_eq!(rows[0], [9; 4]);
         assert_eq!(rows[2 * W], [0; 4], "the fresh image is black, whatever the memory held");
         assert_eq!(rows[4 * W], [7; 4]);
+    }
+
+    #[test]
+    fn the_memory_goes_back_when_rendering_panics() {
+        let mut memory = vec![0xEE; W * H * 4];
+        let (mut drawable, _) = drawable(&mut memory, true);
+        let panicked = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+            drawable.render_for_presentation(true, |_| panic!("injected"))
+        }));
+        assert!(panicked.is_err());
+        assert!(drawable.framebuffer.in_place_front.is_none(), "the framebuffer kept the memory");
+        // The presenter has it back: it lends it again.
+        drawable.render_for_presentation(true, |fb| fill_rows(fb, 0, H, [2; 4]));
+        drop(drawable);
+        assert_eq!(pixel_rows(&memory), vec![[2; 4]; W * H]);
     }
 
     #[test]
