@@ -83,11 +83,11 @@
 //! [`super::math`]'s polynomials, so every level and every CPU gives the same bytes.
 use super::exec::{self, f, fu, map1, map2, Io, LodLanes, SampleRequest, Word, LANES, MAX_LOOP_ITERATIONS};
 use super::ir::{Axis, Program};
-use std::sync::{Arc, Mutex};
 use super::lower::{
     binary_lane, dot_lane, lower, mad_lane, op_writes, split_prologue, unary_lane, Code, Cond, GroupKind, Node, Op,
     Wide, WideLod, R,
 };
+use std::sync::{Arc, Mutex};
 
 #[inline(always)]
 fn map3(a: &Word, b: &Word, c: &Word, op: impl Fn(u32, u32, u32) -> u32) -> Word {

@@ -39,6 +39,9 @@ pub struct Specialized {
     pub code: Code,
 }
 
+/// How [`specialize`] runs operations: `evaluate(ops, file, uniforms, wide)`.
+pub type Evaluate<'a> = dyn FnMut(&[Op], &mut super::fast::Registers, &[u32], &[Wide]) + 'a;
+
 /// Calls `f` on each register `op` reads (through `wide` for the wide operations).
 pub(super) fn reads_mut(op: &mut Op, wide: &mut [Wide], f: &mut dyn FnMut(&mut R)) {
     match op {
@@ -67,7 +70,10 @@ pub(super) fn reads_mut(op: &mut Op, wide: &mut [Wide], f: &mut dyn FnMut(&mut R
             f(a);
             f(b);
         }
-        Op::SMad { a, b, c, .. } | Op::Mad { a, b, c, .. } | Op::SSelect { c, a, b, .. } | Op::Select { c, a, b, .. } => {
+        Op::SMad { a, b, c, .. }
+        | Op::Mad { a, b, c, .. }
+        | Op::SSelect { c, a, b, .. }
+        | Op::Select { c, a, b, .. } => {
             f(a);
             f(b);
             f(c);
@@ -174,8 +180,9 @@ fn rename_conditions(nodes: &mut [Node], alias: &[R]) {
     }
 }
 
-/// The control tree over the kept operations (`kept[k]`: operation k's new index).
-fn rebuild(nodes: &[Node], kept: &[Option<u32>], count_before: &[u32]) -> Vec<Node> {
+/// The control tree over the kept operations (`count_before[k]`: how many operations before
+/// operation k are kept).
+fn rebuild(nodes: &[Node], count_before: &[u32]) -> Vec<Node> {
     let mut out = Vec::with_capacity(nodes.len());
     for node in nodes {
         match node {
@@ -187,10 +194,10 @@ fn rebuild(nodes: &[Node], kept: &[Option<u32>], count_before: &[u32]) -> Vec<No
             }
             Node::If { cond, then, otherwise } => out.push(Node::If {
                 cond: *cond,
-                then: rebuild(then, kept, count_before),
-                otherwise: rebuild(otherwise, kept, count_before),
+                then: rebuild(then, count_before),
+                otherwise: rebuild(otherwise, count_before),
             }),
-            Node::Loop { body } => out.push(Node::Loop { body: rebuild(body, kept, count_before) }),
+            Node::Loop { body } => out.push(Node::Loop { body: rebuild(body, count_before) }),
             other => out.push(other.clone()),
         }
     }
@@ -200,12 +207,7 @@ fn rebuild(nodes: &[Node], kept: &[Option<u32>], count_before: &[u32]) -> Vec<No
 /// Specialises `rest` (after `prologue`, [`super::lower::split_prologue`]'s) on `uniforms`
 /// (see the module docs). `evaluate(ops, file, wide)` runs `ops` on the words `file` as the
 /// interpreter does, every lane running, unmasked.
-pub fn specialize(
-    prologue: &[Op],
-    rest: &Code,
-    uniforms: &[u32],
-    evaluate: &mut dyn FnMut(&[Op], &mut super::fast::Registers, &[u32], &[Wide]),
-) -> Specialized {
+pub fn specialize(prologue: &[Op], rest: &Code, uniforms: &[u32], evaluate: &mut Evaluate<'_>) -> Specialized {
     let n = rest.registers;
     let mut writes = vec![0u32; n];
     for op in prologue.iter().chain(&rest.ops) {
@@ -256,7 +258,11 @@ pub fn specialize(
                 Op::Mul { d, a, b } => {
                     for (x, y) in [(a, b), (b, a)] {
                         let by_one = is_known(y, &known) && file.words()[y as usize] == one;
-                        if by_one && !is_known(x, &known) && single(x) && definition[x as usize].is_some_and(|o| arithmetic(&o)) {
+                        if by_one
+                            && !is_known(x, &known)
+                            && single(x)
+                            && definition[x as usize].is_some_and(|o| arithmetic(&o))
+                        {
                             op = Op::Mov { d, a: x };
                             break;
                         }
@@ -307,11 +313,10 @@ pub fn specialize(
         for slot in &mut ops {
             let Some(op) = slot else { continue };
             let (d, count) = op_writes(op, &wide);
-            if lane_wise(op) || matches!(op, Op::Input { .. } | Op::Derivative { .. }) {
-                if count > 0 && d[..count].iter().all(|&r| reads[r as usize] == 0) {
-                    *slot = None;
-                    changed = true;
-                }
+            let pure = lane_wise(op) || matches!(op, Op::Input { .. } | Op::Derivative { .. });
+            if pure && count > 0 && d[..count].iter().all(|&r| reads[r as usize] == 0) {
+                *slot = None;
+                changed = true;
             }
         }
         if !changed {
@@ -319,17 +324,18 @@ pub fn specialize(
         }
     }
     let mut count_before = Vec::with_capacity(ops.len() + 1);
-    let mut kept = Vec::with_capacity(ops.len());
     let mut new_ops = Vec::with_capacity(ops.len());
     for slot in &ops {
         count_before.push(new_ops.len() as u32);
-        kept.push(slot.map(|_| new_ops.len() as u32));
         if let Some(op) = slot {
             new_ops.push(*op);
         }
     }
     count_before.push(new_ops.len() as u32);
-    let body = rebuild(&body, &kept, &count_before);
+    let body = rebuild(&body, &count_before);
     let known_words = (0..n).filter(|&r| known[r]).map(|r| (r as R, file.words()[r])).collect();
-    Specialized { known: known_words, code: Code { registers: n, zeroed: rest.zeroed.clone(), ops: new_ops, wide, body } }
+    Specialized {
+        known: known_words,
+        code: Code { registers: n, zeroed: rest.zeroed.clone(), ops: new_ops, wide, body },
+    }
 }
