@@ -36,7 +36,7 @@
 use super::block::{F32s, LANES};
 use super::shading::{quads, StageTextures};
 use crate::shader::exec::{Io, Word};
-use crate::shader::fast::{Compiled, Registers};
+use crate::shader::fast::{Compiled, Registers, Specialization};
 use crate::shader::ir::{Inst, Lod, Program, Stmt};
 use crate::texture::Texturing;
 use std::fmt::Debug;
@@ -105,6 +105,8 @@ pub struct GlslShading {
     target_buffers: Vec<u8>,
     /// Which shading a scratch's registers were prepared for (its uniform values).
     id: u64,
+    /// The program specialised on `uniforms` ([`Compiled::specialize`]).
+    specialized: Arc<Specialization>,
 }
 
 impl PartialEq for GlslShading {
@@ -169,7 +171,9 @@ impl GlslShading {
             ShaderOutput::Color { buffer, .. } => bits | 1u32.checked_shl(buffer.into()).unwrap_or(0),
             _ => bits,
         });
+        let specialized = code.compiled().specialize(&uniforms);
         GlslShading {
+            specialized,
             code,
             data_buffers,
             data_written,
@@ -386,7 +390,7 @@ impl GlslShading {
         let GlslScratch { registers, inputs, varyings, outputs, prepared, data, .. } = scratch;
         let compiled = self.code.compiled();
         if *prepared != self.id {
-            compiled.prepare(registers, &self.uniforms);
+            compiled.prepare_specialized(&self.specialized, registers);
             *prepared = self.id;
         }
         for (word, source) in inputs.iter_mut().zip(&self.inputs) {
@@ -405,7 +409,7 @@ impl GlslShading {
         let running = if self.derivatives { quads(live) } else { live };
         let textures = StageTextures { texturing: Some(&self.textures), used: !0 };
         let mut io = Io { inputs, uniforms: &self.uniforms, outputs, textures: &textures };
-        let kept = compiled.run_prepared(registers, &mut io, running) & live;
+        let kept = compiled.run_specialized(&self.specialized, registers, &mut io, running) & live;
         for (out, target) in outputs.iter().zip(&self.outputs) {
             match *target {
                 ShaderOutput::Color { buffer: 0, channel } => colors[channel as usize & 3] = floats(out),

@@ -1,5 +1,5 @@
 //! Groups of lane operations: [`group`] rewrites each run of [`Code`] so that up to four
-//! consecutive operations of one kind (add, subtract, multiply, select: a `vec4`'s
+//! consecutive operations of one kind (add, subtract, multiply, select, negate: a `vec4`'s
 //! components, as the GLSL front end writes them one after another) are one [`Op::Group`],
 //! which [`super::fast`]'s interpreter dispatches once and runs as a loop over its
 //! components.
@@ -20,6 +20,7 @@
 //! runs of the control tree; not the bound forms, whose own fusions look for single
 //! operations ([`super::fast::Compiled::bind`], [`super::fast::Compiled::bind_run`]).
 use super::fast::FILE;
+use super::ir::UnaryOp;
 use super::lower::{Code, GroupKind, Node, Op, Wide, R};
 
 /// The most operations of a group.
@@ -32,6 +33,7 @@ fn member(op: &Op) -> Option<(GroupKind, R, R, R, R)> {
         Op::Sub { d, a, b } => (GroupKind::Sub, d, a, b, 0),
         Op::Mul { d, a, b } => (GroupKind::Mul, d, a, b, 0),
         Op::Select { d, c, a, b } => (GroupKind::Select, d, a, b, c),
+        Op::Unary { op: UnaryOp::FNeg, d, a } => (GroupKind::Neg, d, a, a, 0),
         _ => return None,
     })
 }

@@ -305,6 +305,8 @@ pub enum GroupKind {
     Sub,
     Mul,
     Select,
+    /// `d[k] = −a[k]` (`b[k]` is `a[k]`): a vector negated, as `-normalize(v)`.
+    Neg,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq)]

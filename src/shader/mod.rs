@@ -16,6 +16,8 @@
 //!   programs); `fast`'s docs say why an interpreter, with measurements.
 //! - [`flatten`]: loops of known trip counts unrolled and pure `if`s made selects before
 //!   lowering, so that typical GLSL programs run as straight code.
+//! - [`specialize`]: a program specialised on a draw's uniform values (selects on them
+//!   made copies, what they decide computed once, dead arms dropped).
 //! - [`group`]: consecutive operations of one kind (a `vec4`'s components) made one
 //!   operation of the interpreter.
 //! - [`cache`]: compiled programs by the key of the state that shaped them, least recently
@@ -36,6 +38,7 @@ pub mod group;
 pub mod ir;
 pub mod lower;
 pub mod math;
+pub mod specialize;
 pub mod validate;
 
 #[cfg(test)]

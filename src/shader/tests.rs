@@ -588,7 +588,8 @@ fn random_programs_match_the_scalar_f64_reference_lane_by_lane() {
         );
         // The compiled executors give the reference executor's bits in every lane.
         let (compiled, threaded) = (Compiled::new(&program), Threaded::new(&program));
-        for which in 0..4 {
+        let specialized = compiled.specialize(&uniforms);
+        for which in 0..6 {
             let mut fast_outputs = vec![[0u32; LANES]; program.outputs.len()];
             let mut io = Io { inputs: &inputs, uniforms: &uniforms, outputs: &mut fast_outputs, textures: &NoTextures };
             let fast_alive = match which {
@@ -600,7 +601,13 @@ fn random_programs_match_the_scalar_f64_reference_lane_by_lane() {
                     compiled.prepare(&mut registers, &uniforms);
                     compiled.run_prepared(&mut registers, &mut io, lanes)
                 }
-                _ => compiled.run_prepared(&mut registers, &mut io, lanes),
+                3 => compiled.run_prepared(&mut registers, &mut io, lanes),
+                // Specialised on the uniforms, the same (twice, too).
+                4 => {
+                    compiled.prepare_specialized(&specialized, &mut registers);
+                    compiled.run_specialized(&specialized, &mut registers, &mut io, lanes)
+                }
+                _ => compiled.run_specialized(&specialized, &mut registers, &mut io, lanes),
             };
             assert_eq!(fast_alive, alive, "case {case} ({which}): discards differ\n{}", super::dump::dump(&program));
             assert_eq!(
@@ -895,7 +902,14 @@ fn compiled_executors_match_the_reference_with_derivatives_and_texture_lookups()
             let alive = match which {
                 0 => executor.run(&program, &mut io, lanes),
                 1 => Compiled::new(&program).run(registers, &mut io, lanes),
-                _ => Threaded::new(&program).run(registers, &mut io, lanes),
+                2 => Threaded::new(&program).run(registers, &mut io, lanes),
+                // Specialised on the uniforms.
+                _ => {
+                    let compiled = Compiled::new(&program);
+                    let specialized = compiled.specialize(&uniforms);
+                    compiled.prepare_specialized(&specialized, registers);
+                    compiled.run_specialized(&specialized, registers, &mut io, lanes)
+                }
             };
             // Requests compared with every NaN as one (see `canonical_nan`).
             let log: Vec<Vec<u32>> =
@@ -904,7 +918,7 @@ fn compiled_executors_match_the_reference_with_derivatives_and_texture_lookups()
         };
         let reference = run(0, &mut registers, &mut executor);
         requests += reference.2.len();
-        for which in 1..3 {
+        for which in 1..4 {
             let got = run(which, &mut registers, &mut executor);
             assert!(got == reference, "case {case} ({which}) differs\n{}", super::dump::dump(&program));
         }

@@ -240,3 +240,55 @@ fn phong_runs_its_colour_arithmetic_in_groups() {
     assert!(groups >= 18, "{groups} groups");
     assert!(run.ops.len() + 50 <= single, "{} operations, {single} single", run.ops.len());
 }
+
+/// [`PHONG`] specialised on a directional light 0 and a positional light 1 (bench.c's):
+/// light 0's positional arm and its selects are gone, light 1's selects are copies, and the
+/// blocks' colours keep their bits.
+#[test]
+fn phong_specialised_on_its_lights_runs_fewer_operations_with_the_same_bits() {
+    use crate::shader::exec::LANES;
+    let mut log = InfoLog::default();
+    let checked = compile_shader(PHONG, Stage::Fragment, &Options::default(), &mut log).unwrap();
+    let lowered = crate::glsl::lower::lower(&[&checked]).unwrap();
+    let compiled = Compiled::new(&lowered.program);
+    let slot = |name: &str, index: u32| {
+        lowered
+            .uniforms
+            .iter()
+            .position(|w| w.name == name && w.index == index)
+            .unwrap_or_else(|| panic!("{name}[{index}] in {:?}", lowered.uniforms))
+    };
+    // Colours and factors in (0, 1].
+    let mut uniforms: Vec<u32> =
+        (0..lowered.uniforms.len()).map(|i| (((i * 37) % 64 + 1) as f32 / 64.0).to_bits()).collect();
+    uniforms[slot("gl_LightSource[0].position", 3)] = 0f32.to_bits();
+    uniforms[slot("gl_LightSource[1].position", 3)] = 1f32.to_bits();
+    uniforms[slot("gl_FrontMaterial.shininess", 0)] = 24f32.to_bits();
+    let specialized = compiled.specialize(&uniforms);
+    let (before, after) = (compiled.prepared_code().ops.len(), specialized.run_code().ops.len());
+    assert!(after + 10 <= before, "{after} operations per block, {before} unspecialised");
+    let mut rng = 0x1234_5678_9abc_def0u64;
+    let mut float = || {
+        rng = rng.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+        ((rng >> 40) as f32 / (1u64 << 24) as f32) * 2.0 - 1.0
+    };
+    let (mut plain, mut special) = (Registers::new(), Registers::new());
+    compiled.prepare(&mut plain, &uniforms);
+    compiled.prepare_specialized(&specialized, &mut special);
+    for block in 0..64 {
+        let inputs: Vec<Word> = (0..6).map(|_| std::array::from_fn(|_| float().to_bits())).collect();
+        let lanes = if block % 2 == 0 { !0 } else { (block * 0x9e37) as u16 | 1 };
+        let run = |registers: &mut Registers, specialised: bool| {
+            let mut outputs = vec![[0u32; LANES]; 4];
+            let textures = crate::shader::exec::NoTextures;
+            let mut io = Io { inputs: &inputs, uniforms: &uniforms, outputs: &mut outputs, textures: &textures };
+            let kept = if specialised {
+                compiled.run_specialized(&specialized, registers, &mut io, lanes)
+            } else {
+                compiled.run_prepared(registers, &mut io, lanes)
+            };
+            (kept, outputs)
+        };
+        assert_eq!(run(&mut special, true), run(&mut plain, false), "block {block}");
+    }
+}
