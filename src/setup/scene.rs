@@ -18,7 +18,7 @@ use super::jobs::line::LineJob;
 use super::jobs::pixels::PixelRectJob;
 use super::jobs::point::PointJob;
 use super::jobs::smooth::SmoothJob;
-use super::jobs::triangle::TriangleJob;
+use super::jobs::triangle::{RunRules, TriangleJob};
 use super::triangle::TriangleSetup;
 use crate::fragment::block::{Batch, BlockPipeline};
 use crate::fragment::pipeline::{DrawState, Scratch};
@@ -177,17 +177,24 @@ impl Store {
     /// Adds `primitive`, drawn with `state`; its index.
     #[inline(always)]
     fn push(&mut self, primitive: Primitive, state: u32) -> u32 {
+        self.push_with(state, || primitive)
+    }
+
+    /// Adds the primitive `make` makes, drawn with `state`; its index. The chunk it goes
+    /// into is found first, so that the primitive may be made where it is stored (a
+    /// triangle's job made first was built on the stack and copied, 360 bytes a triangle).
+    #[inline(always)]
+    fn push_with(&mut self, state: u32, make: impl FnOnce() -> Primitive) -> u32 {
         self.len += 1;
-        let k = self.chunks.len();
-        if let Some(chunk) = self.chunks.last_mut().filter(|c| c.primitives.len() < CHUNK) {
-            let index = (k - 1) * CHUNK + chunk.primitives.len();
-            chunk.push(primitive, state);
-            return index as u32;
+        if !self.chunks.last().is_some_and(|c| c.primitives.len() < CHUNK) {
+            let chunk = self.spare.pop().unwrap_or_else(Chunk::new);
+            self.chunks.push(chunk);
         }
-        let mut chunk = self.spare.pop().unwrap_or_else(Chunk::new);
-        chunk.push(primitive, state);
-        self.chunks.push(chunk);
-        (k * CHUNK) as u32
+        let k = self.chunks.len();
+        let chunk = self.chunks.last_mut().expect("a chunk with room");
+        let index = (k - 1) * CHUNK + chunk.primitives.len();
+        chunk.push(make(), state);
+        index as u32
     }
 
     /// Primitive `index` and its draw state.
@@ -460,7 +467,7 @@ impl Scene {
         }
         let framebuffer = Rect::from_xywh(0, 0, self.width as i32, self.height as i32);
         let edges = edges_needed(tile_span(r), r, overwriting, fill_clip, framebuffer).then(|| setup.pixel_edges());
-        self.record(state, r, edges, Primitive::Triangle(job(setup)));
+        self.record_with(state, r, edges, || Primitive::Triangle(job(setup)));
     }
 
     /// Where a filled triangle `job` with bounds `bounds` is binned: its bounds within its
@@ -486,7 +493,13 @@ impl Scene {
     /// empty) and bins it, or in a deferred part keeps what [`Scene::append`] bins it with.
     #[inline(always)]
     fn record(&mut self, state: u32, r: Rect, edges: Option<PixelEdges>, primitive: Primitive) {
-        let index = self.primitives.push(primitive, state);
+        self.record_with(state, r, edges, || primitive)
+    }
+
+    /// [`Scene::record`] of the primitive `make` makes, made where it is stored.
+    #[inline(always)]
+    fn record_with(&mut self, state: u32, r: Rect, edges: Option<PixelEdges>, make: impl FnOnce() -> Primitive) {
+        let index = self.primitives.push_with(state, make);
         if self.deferred.is_some() {
             // A primitive that cannot drop a tile's entries (of a state that never
             // overwrites, or not a triangle with pixel edges, or whose box holds no tile's
@@ -813,25 +826,32 @@ impl Scene {
         // other entry on its own.
         let render = |bin: &[u32], tile: Rect, band: &mut Band<'_>, scratch: &mut Scratch, batch: &mut Batch| {
             let single_sampled = band.samples == 1;
-            let joins_run = |index: u32| {
+            // The first triangle of a run: its state's rules, if they admit it.
+            let run_head = |index: u32| {
                 let (primitive, state_index) = self.primitives.get(index);
                 let Primitive::Triangle(job) = primitive else { return None };
                 let state = &self.states[state_index as usize];
                 let pipeline = pipelines[state_index as usize].as_ref().filter(|_| single_sampled)?;
-                let area = tile.intersect(state.fill_clip);
-                job.joins_run(state, pipeline, area).then_some((job, state_index, state, pipeline, area))
+                let rules = RunRules::new(state, pipeline, tile.intersect(state.fill_clip));
+                rules.admit(job).then_some((job, state_index, state, pipeline, rules))
             };
             let mut i = 0;
             while i < bin.len() {
-                let Some((first, state_index, state, pipeline, area)) = joins_run(bin[i]) else {
+                let Some((first, state_index, state, pipeline, rules)) = run_head(bin[i]) else {
                     render_one(bin[i], tile, band, scratch, batch);
                     i += 1;
                     continue;
                 };
+                // The triangles after it of the same state and facing that the same rules
+                // admit (the entry that ends the run is looked at again as a run's head).
                 let mut end = i + 1;
                 while end < bin.len() {
-                    match joins_run(bin[end]) {
-                        Some((job, s, ..)) if s == state_index && job.front_facing == first.front_facing => end += 1,
+                    match self.primitives.get(bin[end]) {
+                        (Primitive::Triangle(job), s)
+                            if s == state_index && job.front_facing == first.front_facing && rules.admit(job) =>
+                        {
+                            end += 1
+                        }
                         _ => break,
                     }
                 }
@@ -840,6 +860,7 @@ impl Scene {
                     i += 1;
                     continue;
                 }
+                let area = rules.area();
                 let run = &bin[i..end];
                 let job = |index: u32| match self.primitives.get(index).0 {
                     Primitive::Triangle(job) => job,
@@ -847,9 +868,7 @@ impl Scene {
                 };
                 TriangleJob::render_run(state, pipeline, area, band, scratch, batch, run.iter().map(|&k| job(k)));
                 if let Some(only_nearer) = Self::depth_written_only_nearer(state) {
-                    for &k in run {
-                        band.hiz_written(area.intersect(job(k).bounds()), only_nearer);
-                    }
+                    band.hiz_written_within(area, run.iter().map(|&k| area.intersect(job(k).bounds())), only_nearer);
                 }
                 i = end;
             }
@@ -1253,5 +1272,23 @@ mod tests {
         assert_eq!(scene.add_state(state(true)), (1, false));
         assert_eq!(scene.add_state(state(false)), (0, true));
         assert_eq!(scene.state_count(), 2);
+    }
+}
+#[cfg(test)]
+mod size_probe {
+    #[test]
+    fn print_sizes() {
+        use super::*;
+        eprintln!(
+            "SIZES primitive {} triangle {} line {} point {} smooth {} pixels {} clear {} setup {}",
+            std::mem::size_of::<Primitive>(),
+            std::mem::size_of::<TriangleJob>(),
+            std::mem::size_of::<LineJob>(),
+            std::mem::size_of::<PointJob>(),
+            std::mem::size_of::<SmoothJob>(),
+            std::mem::size_of::<PixelRectJob>(),
+            std::mem::size_of::<ClearJob>(),
+            std::mem::size_of::<TriangleSetup>(),
+        );
     }
 }
