@@ -181,24 +181,17 @@ impl Store {
     /// Adds `primitive`, drawn with `state`; its index.
     #[inline(always)]
     fn push(&mut self, primitive: Primitive, state: u32) -> u32 {
-        self.push_with(state, || primitive)
-    }
-
-    /// Adds the primitive `make` makes, drawn with `state`; its index. The chunk it goes
-    /// into is found first, so that the primitive may be made where it is stored (a
-    /// triangle's job made first was built on the stack and copied, 360 bytes a triangle).
-    #[inline(always)]
-    fn push_with(&mut self, state: u32, make: impl FnOnce() -> Primitive) -> u32 {
         self.len += 1;
-        if !self.chunks.last().is_some_and(|c| c.primitives.len() < CHUNK) {
-            let chunk = self.spare.pop().unwrap_or_else(Chunk::new);
-            self.chunks.push(chunk);
-        }
         let k = self.chunks.len();
-        let chunk = self.chunks.last_mut().expect("a chunk with room");
-        let index = (k - 1) * CHUNK + chunk.primitives.len();
-        chunk.push(make(), state);
-        index as u32
+        if let Some(chunk) = self.chunks.last_mut().filter(|c| c.primitives.len() < CHUNK) {
+            let index = (k - 1) * CHUNK + chunk.primitives.len();
+            chunk.push(primitive, state);
+            return index as u32;
+        }
+        let mut chunk = self.spare.pop().unwrap_or_else(Chunk::new);
+        chunk.push(primitive, state);
+        self.chunks.push(chunk);
+        (k * CHUNK) as u32
     }
 
     /// Primitive `index` and its draw state.
@@ -471,7 +464,7 @@ impl Scene {
         }
         let framebuffer = Rect::from_xywh(0, 0, self.width as i32, self.height as i32);
         let edges = edges_needed(tile_span(r), r, overwriting, fill_clip, framebuffer).then(|| setup.pixel_edges());
-        self.record_with(state, r, edges, || Primitive::Triangle(job(setup)));
+        self.record(state, r, edges, Primitive::Triangle(job(setup)));
     }
 
     /// Where a filled triangle `job` with bounds `bounds` is binned: its bounds within its
@@ -497,13 +490,7 @@ impl Scene {
     /// empty) and bins it, or in a deferred part keeps what [`Scene::append`] bins it with.
     #[inline(always)]
     fn record(&mut self, state: u32, r: Rect, edges: Option<PixelEdges>, primitive: Primitive) {
-        self.record_with(state, r, edges, || primitive)
-    }
-
-    /// [`Scene::record`] of the primitive `make` makes, made where it is stored.
-    #[inline(always)]
-    fn record_with(&mut self, state: u32, r: Rect, edges: Option<PixelEdges>, make: impl FnOnce() -> Primitive) {
-        let index = self.primitives.push_with(state, make);
+        let index = self.primitives.push(primitive, state);
         if self.deferred.is_some() {
             // A primitive that cannot drop a tile's entries (of a state that never
             // overwrites, or not a triangle with pixel edges, or whose box holds no tile's

@@ -33,34 +33,13 @@ pub fn to_fixed(v: f32) -> i64 {
 /// [`to_fixed`] of a coordinate within the guard band (|v| ≤ [`GUARD_BAND`]), in single
 /// precision: `v·256` is exact (a power of two, below 2³¹), so are its truncation and the
 /// fraction left, which then decides the rounding as [`to_fixed`]'s does, with the same
-/// result; without the conversions to and from double precision. (Setup snaps a triangle's
-/// six coordinates at once, [`snap_all`]; this is its reference, one coordinate.)
-#[cfg(test)]
+/// result; without the conversions to and from double precision.
+#[inline(always)]
 fn snap(v: f32) -> i64 {
     let x = v * ONE as f32;
     let t = x as i32;
     let fraction = x - t as f32;
     (t + (fraction >= 0.5) as i32 - (fraction <= -0.5) as i32) as i64
-}
-
-/// [`snap`] of six coordinates within the guard band, as lanes: one loop over eight (the
-/// last two unused) that LLVM compiles to vector conversions and compares, where six calls
-/// of `snap` were six scalar conversions, each with the checks of Rust's saturating `as`.
-#[inline(always)]
-fn snap_all(c: [f32; 6]) -> [i64; 6] {
-    let mut x = [0f32; 8];
-    x[..6].copy_from_slice(&c);
-    let mut t = [0i32; 8];
-    for (t, x) in t.iter_mut().zip(&mut x) {
-        *x *= ONE as f32;
-        *t = *x as i32;
-    }
-    let mut rounded = [0i32; 8];
-    for ((r, &t), &x) in rounded.iter_mut().zip(&t).zip(&x) {
-        let fraction = x - t as f32;
-        *r = t + (fraction >= 0.5) as i32 - (fraction <= -0.5) as i32;
-    }
-    [0, 1, 2, 3, 4, 5].map(|i| rounded[i] as i64)
 }
 
 /// The edge from `p` to `q` of a counter-clockwise triangle over pixel centres: `[c, a, b]`
@@ -118,8 +97,8 @@ impl TriangleSetup {
         if !window.iter().flatten().all(|c| c.abs() <= GUARD_BAND) {
             return None;
         }
-        let s = snap_all([window[0][0], window[0][1], window[1][0], window[1][1], window[2][0], window[2][1]]);
-        let mut v = [[s[0], s[1]], [s[2], s[3]], [s[4], s[5]]];
+        let fixed = |p: [f32; 2]| [snap(p[0]), snap(p[1])];
+        let mut v = [fixed(window[0]), fixed(window[1]), fixed(window[2])];
         let area2 = (v[1][0] - v[0][0]) * (v[2][1] - v[0][1]) - (v[2][0] - v[0][0]) * (v[1][1] - v[0][1]);
         if area2 == 0 {
             return None;
@@ -376,15 +355,8 @@ mod tests {
             let tie = ((v * 256.0) as i32) as f32 / 256.0 + 0.5 / 256.0;
             values.extend([v, tie, -tie, f32::from_bits(tie.to_bits() + 1), f32::from_bits(tie.to_bits() - 1)]);
         }
-        let values: Vec<f32> = values.into_iter().filter(|v| v.abs() <= GUARD_BAND).collect();
-        for &v in &values {
+        for v in values.into_iter().filter(|v| v.abs() <= GUARD_BAND) {
             assert_eq!(snap(v), to_fixed(v), "{v}");
-        }
-        // Six at a time, each lane as `to_fixed` (the lanes shifted so each value meets
-        // every lane).
-        for (k, w) in values.windows(6).enumerate() {
-            let lanes: [f32; 6] = std::array::from_fn(|i| w[(i + k) % 6]);
-            assert_eq!(snap_all(lanes), lanes.map(to_fixed), "{lanes:?}");
         }
     }
 

@@ -104,17 +104,12 @@ pub fn emit_triangle<const N: usize>(
     // The edges first: a triangle that covers no pixel (most of a mesh finer than the
     // pixels) is dropped before its planes are made.
     let Some(setup) = TriangleSetup::new(w.map(|p| [p.x, p.y])) else { return };
-    scene.add_triangle(
-        state,
-        setup,
-        #[inline(always)]
-        |setup| {
-            let offset = depth_offset(g, w);
-            let mut job = TriangleJob::with_setup_by(setup, g.accuracy, w, flat, offset, count, varying);
-            job.front_facing = front;
-            job
-        },
-    );
+    scene.add_triangle(state, setup, |setup| {
+        let offset = depth_offset(g, w);
+        let mut job = TriangleJob::with_setup_by(setup, g.accuracy, w, flat, offset, count, varying);
+        job.front_facing = front;
+        job
+    });
 }
 
 /// A triangle's polygon offset (0 without one).
