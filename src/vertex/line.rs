@@ -184,12 +184,12 @@ pub fn emit_line_job<const N: usize>(
         let up = |v: &LineVertex<N>| [v.x, g.height as f32 - v.y_down];
         let quad = SampleQuad::line(up(a), up(b), g.line_width.max(1.0));
         if let Some(job) = quad.and_then(|quad| LineJob::covering_samples(a, b, g.height, flat, varyings, quad)) {
-            scene.add(state, job.bounds(), RasterPrimitive::Line(Box::new(job)));
+            scene.add(state, job.bounds(), RasterPrimitive::Line(job));
         }
         return;
     }
     if let Some(job) = LineJob::new(a, b, g.line_width, g.height, flat, varyings) {
         let (bounds, setup) = (job.bounds(), job.setup().clone());
-        scene.add_narrow(state, bounds, RasterPrimitive::Line(Box::new(job)), |y0, y1| setup.columns(y0, y1));
+        scene.add_narrow(state, bounds, RasterPrimitive::Line(job), |y0, y1| setup.columns(y0, y1));
     }
 }

@@ -126,7 +126,7 @@ pub fn emit_window_point<const N: usize>(scene: &mut Scene, state: u32, g: &Geom
             None
         };
         let job = PointJob { rect, z: w.z, color, varyings, sample_square, sprite: Some(Box::new(sprite)) };
-        scene.add(state, rect, RasterPrimitive::Point(Box::new(job)));
+        scene.add(state, rect, RasterPrimitive::Point(job));
         return;
     }
     if g.per_sample {
@@ -140,14 +140,7 @@ pub fn emit_window_point<const N: usize>(scene: &mut Scene, state: u32, g: &Geom
             scene.add(
                 state,
                 rect,
-                RasterPrimitive::Point(Box::new(PointJob {
-                    rect,
-                    z: w.z,
-                    color,
-                    varyings,
-                    sample_square,
-                    sprite: None,
-                })),
+                RasterPrimitive::Point(PointJob { rect, z: w.z, color, varyings, sample_square, sprite: None }),
             );
         }
         return;
@@ -161,7 +154,7 @@ pub fn emit_window_point<const N: usize>(scene: &mut Scene, state: u32, g: &Geom
     }
     let rect = point_rect(w.x, w.y_down, size, g.height);
     let point = PointJob { rect, z: w.z, color, varyings, sample_square: None, sprite: None };
-    scene.add(state, rect, RasterPrimitive::Point(Box::new(point)));
+    scene.add(state, rect, RasterPrimitive::Point(point));
 }
 
 #[cfg(test)]
