@@ -34,23 +34,51 @@ use crate::vertex::pipeline;
 use crate::vertex::transform::StageCache;
 use crate::vertex::Vertex;
 
-/// The fewest vertices a draw splits between two threads (see [`split_point`]): below
-/// this, starting the helper thread costs more than half the work it takes over.
+/// The fewest vertices a draw of independent triangles splits between two threads (see
+/// [`split_point`]): below this, starting the helper thread costs more than half the work
+/// it takes over.
 const SPLIT_MIN_VERTICES: usize = 1536;
 
+/// The fewest vertices a triangle or quad strip splits between two threads. Lower than
+/// [`SPLIT_MIN_VERTICES`]: a strip's triangle costs more than an array's (lighting runs per
+/// vertex, and a glBegin/glEnd strip is drawn whole, not in parts), the calling thread
+/// fetched nothing more than the helper, and strips are short (lit_mesh draws 128 strips of
+/// 258 vertices, one scene, recorded on one thread while the tile workers wait).
+/// If the helper is not free in time, the calling thread draws both parts.
+const STRIP_SPLIT_MIN_VERTICES: usize = 192;
+
 /// Where the vertices of a draw split between the calling thread and a helper, if they
-/// do: independent filled triangles (split between two triangles, so each part assembles
-/// the same triangles), enough of them, and more than one thread to render with. The
-/// calling thread takes 7/16 of the triangles: besides its part it has fetched every vertex
-/// (callgrind on small_triangles, LTO build: fetching is about 150 instructions a triangle,
-/// transforming, setting up and binning one about 1500 since the unlit transform runs
-/// directly, so the calling thread's share `p` with `150 + 1500·p = 1500·(1 − p)` is about
-/// 0.45; with the executor's transform, 3/8 was the balance).
-fn split_point(mode: GLenum, geometry: &Geometry, vertices: usize, threads: usize) -> Option<usize> {
-    use crate::gl::enums::{GL_FILL, GL_TRIANGLES};
+/// do: filled triangles, enough of them, and more than one thread to render with; as the
+/// end of the calling thread's part and the start of the helper's.
+///
+/// Independent triangles split between two triangles, so each part assembles the same
+/// triangles. The calling thread takes 7/16 of them: besides its part it has fetched every
+/// vertex (callgrind on small_triangles, LTO build: fetching is about 150 instructions a
+/// triangle, transforming, setting up and binning one about 1500 since the unlit transform
+/// runs directly, so the calling thread's share `p` with `150 + 1500·p = 1500·(1 − p)` is
+/// about 0.45; with the executor's transform, 3/8 was the balance).
+///
+/// Strips (GL_TRIANGLE_STRIP, GL_QUAD_STRIP) split in half at an even vertex, the two
+/// vertices there in both parts: the second part's triangles are then the draw's, in order,
+/// with the same winding parity, quads and provoking vertices (GL_QUADS are not split: how
+/// a quad is cut depends on all of the draw's vertices, `vertex::pipeline`).
+fn split_point(mode: GLenum, geometry: &Geometry, vertices: usize, threads: usize) -> Option<(usize, usize)> {
+    use crate::gl::enums::{GL_FILL, GL_QUAD_STRIP, GL_TRIANGLES, GL_TRIANGLE_STRIP};
     let filled = geometry.mode_front == GL_FILL && geometry.mode_back == GL_FILL;
-    (mode == GL_TRIANGLES && filled && threads > 1 && vertices >= SPLIT_MIN_VERTICES)
-        .then_some(vertices / 3 * 7 / 16 * 3)
+    if !filled || threads < 2 {
+        return None;
+    }
+    match mode {
+        GL_TRIANGLES if vertices >= SPLIT_MIN_VERTICES => {
+            let split = vertices / 3 * 7 / 16 * 3;
+            Some((split, split))
+        }
+        GL_TRIANGLE_STRIP | GL_QUAD_STRIP if vertices >= STRIP_SPLIT_MIN_VERTICES => {
+            let split = vertices / 4 * 2;
+            Some((split + 2, split))
+        }
+        _ => None,
+    }
 }
 
 #[cfg(test)]
@@ -137,13 +165,15 @@ impl Context {
             // The later triangles transformed, clipped and set up on a helper thread into a
             // deferred part of the scene, binned after the earlier ones: the tile workers
             // are idle while a scene records, and the scene is the same.
-            Some(split) => {
-                let (first, second) = vertices.split_at(split);
-                let mut later = scene.deferred_part(second.len() / 3);
+            Some((first_end, second_start)) => {
+                let (first, second) = (&vertices[..first_end], &vertices[second_start..]);
+                // Room for the part's triangles (a strip has about one a vertex).
+                let triangles = if mode == crate::gl::enums::GL_TRIANGLES { second.len() / 3 } else { second.len() };
+                let mut later = scene.deferred_part(triangles);
                 let [own, helper] = &mut self.vertex_scratch;
                 let ((), stipple) = crate::pool::join(
                     || {
-                        vertex_stage.run_in(helper, second, split, |clip_vertices| {
+                        vertex_stage.run_in(helper, second, second_start, |clip_vertices| {
                             pipeline::draw(&mut later, state_index, &geometry, mode, clip_vertices, part, None)
                         });
                     },

@@ -217,6 +217,42 @@ impl Band<'_> {
         }
     }
 
+    /// [`Band::hiz_written`] for each of `rects` in order, all inside `area` (a run of small
+    /// triangles in a tile, `setup::scene`): the first as that call, then, the writer's own
+    /// depths no longer known (the first call took them), each region the others touch
+    /// marked once, not once per triangle (most touch the regions the ones before them did).
+    pub fn hiz_written_within(&mut self, area: Rect, rects: impl IntoIterator<Item = Rect>, only_nearer: bool) {
+        let mut rects = rects.into_iter();
+        let Some(first) = rects.next() else { return };
+        self.hiz_written(first, only_nearer);
+        if self.hiz.columns == 0 {
+            return;
+        }
+        let Some((columns, rows)) = self.regions_of(area) else { return };
+        if columns[1] - columns[0] > 8 || rows[1] - rows[0] > 8 {
+            return rects.for_each(|r| self.hiz_written(r, only_nearer));
+        }
+        // The regions touched, bit `8·row + column` from the area's first region.
+        let mut touched = 0u64;
+        for rect in rects {
+            let Some(([c0, c1], [r0, r1])) = self.regions_of(rect) else { continue };
+            let row_bits = (1u64 << (c1 - columns[0])) - (1u64 << (c0 - columns[0]));
+            for ry in r0..r1 {
+                touched |= row_bits << (8 * (ry - rows[0]));
+            }
+        }
+        while touched != 0 {
+            let bit = touched.trailing_zeros() as usize;
+            touched &= touched - 1;
+            let i = (rows[0] + bit / 8) * self.hiz.columns + columns[0] + bit % 8;
+            self.hiz.loose[i] = true;
+            if !only_nearer {
+                self.hiz.bound[i] = u32::MAX;
+            }
+            self.hiz.floor[i] = 0;
+        }
+    }
+
     /// Whether no fragment of a primitive whose depth is at least `low` (an encoded depth,
     /// see the module) over `part` (inside region `(rx, ry)`) can pass `test`. A loose
     /// bound is made exact first when `part` is the whole region (a primitive covering
@@ -420,5 +456,39 @@ mod tests {
         assert!((low as f64 - corner).abs() < 1e-5);
         let infinite = DepthPlane { a0: f32::INFINITY, ..plane };
         assert_eq!(infinite.lowest(rect), None);
+    }
+
+    #[test]
+    fn written_within_an_area_marks_what_each_write_would() {
+        // Two bands, one told of each rectangle in turn, the other of all of them at once;
+        // both first made exact (not loose, floors known) by a clear, then the first
+        // rectangle tested (its own depths kept for its write).
+        let (width, rows) = (80, 64);
+        let area = Rect { x0: 8, y0: 70, x1: 72, y1: 128 };
+        let rects = [
+            Rect { x0: 8, y0: 70, x1: 12, y1: 75 },
+            Rect { x0: 13, y0: 74, x1: 20, y1: 79 },
+            Rect { x0: 30, y0: 96, x1: 34, y1: 101 },
+            Rect { x0: 31, y0: 95, x1: 50, y1: 98 },
+            Rect { x0: 60, y0: 120, x1: 72, y1: 128 },
+        ];
+        for only_nearer in [true, false] {
+            let (mut one, mut all) = (vec![0xff00_0000 | HALF; width * rows], vec![0xff00_0000 | HALF; width * rows]);
+            let (mut each, mut within) = (band(&mut one, width, rows), band(&mut all, width, rows));
+            for b in [&mut each, &mut within] {
+                let plane = DepthPlane { a0: 0.25, dadx: 0.0, dady: 0.0, anchor: [0.0, 0.0] };
+                b.hiz_cleared(Rect { x0: 0, y0: 64, x1: 80, y1: 128 }, 0.5, false);
+                b.hiz_rejected(rects[0], &plane, DepthReject { equal_passes: false, clamp: None });
+            }
+            for r in rects {
+                each.hiz_written(r, only_nearer);
+            }
+            within.hiz_written_within(area, rects, only_nearer);
+            assert_eq!(each.hiz.loose, within.hiz.loose);
+            assert_eq!(each.hiz.bound, within.hiz.bound);
+            assert_eq!(each.hiz.floor, within.hiz.floor);
+            // Something was marked (the test can fail): the regions of the rectangles only.
+            assert!(within.hiz.loose.iter().any(|&l| l) && !within.hiz.loose.iter().all(|&l| l));
+        }
     }
 }

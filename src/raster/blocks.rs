@@ -44,7 +44,7 @@
 
 use super::walk::stipple_mask;
 use crate::framebuffer::Rect;
-use crate::simd::dispatch::{inside_mask16, sign_mask16};
+use crate::simd::dispatch::{edge_steps16, inside_mask16, sign_mask16};
 use crate::simd::Supported;
 use std::ops::{Add, BitOr};
 
@@ -167,6 +167,11 @@ trait Lane: Copy + Default + Add<Output = Self> + BitOr<Output = Self> {
     fn shl(self, n: u32) -> Self;
     /// The negative lanes of `v` as a mask (lane `i` as bit `i`).
     fn negatives(level: Supported, v: &Lanes<Self>) -> u16;
+    /// An edge's steps `a·column + b·row` over the 16 lanes ([`steps`]).
+    #[inline(always)]
+    fn steps(_: Supported, a: Self, b: Self) -> Lanes<Self> {
+        steps(a, b)
+    }
     /// The lanes `i` (as bit `i`) inside all three edges: `base[k] + steps[k][i]` not
     /// negative for every `k`, the sign of the OR of the three.
     #[inline(always)]
@@ -205,6 +210,12 @@ impl Lane for i32 {
             words[i] = v[i] as u32;
         }
         sign_mask16(level, &words)
+    }
+    /// In explicit vectors (`simd::dispatch::edge_steps16`): the plain loop became one
+    /// scalar and one insert per lane.
+    #[inline(always)]
+    fn steps(level: Supported, a: Self, b: Self) -> Lanes<Self> {
+        edge_steps16(level, a, b)
     }
     /// In explicit vectors (`simd::dispatch::inside_mask16`): the plain loop stayed 48 scalar
     /// adds and ORs.
@@ -277,7 +288,8 @@ const ROW: [i32; 16] = [0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2, 2, 3, 3, 3, 3];
 
 /// An edge's steps `a·column + b·row` over the 16 lanes (from a 4×4 block's corner to its
 /// pixels; with `a` and `b` scaled by a sub-block's side, from a block's corner to its
-/// sub-blocks' corners).
+/// sub-blocks' corners). The walk takes them through [`Lane::steps`] (explicit vectors for
+/// i32 lanes).
 #[inline(always)]
 fn steps<T: Lane>(a: T, b: T) -> Lanes<T> {
     lanes(|i| a.times(COLUMN[i]) + b.times(ROW[i]))
@@ -296,7 +308,7 @@ fn extremes(e: &Reduced, size: i64) -> (i64, i64) {
 /// largest/smallest over a sub-block, `ab` their steps from one sub-block to the next.
 #[inline(always)]
 fn sub_blocks<T: Lane>(level: Supported, hi: [T; 3], lo: [T; 3], ab: [(T, T); 3]) -> (u16, u16) {
-    let s = map3(ab, |(a, b)| steps(a, b));
+    let s = map3(ab, |(a, b)| T::steps(level, a, b));
     (T::inside(level, hi, &s), T::inside(level, lo, &s))
 }
 
@@ -449,7 +461,7 @@ impl<'a, T: Lane, F: FnMut(i32, i32, u16), G: FnMut(Rect)> Walker<'a, T, F, G> {
         let area = self.area;
         let (x, y) = (area.x0 & !3, area.y0 & !3);
         let base = self.corner(x, y);
-        let s = map3(self.ab, |(a, b)| steps(a, b));
+        let s = map3(self.ab, |(a, b)| T::steps(self.level, a, b));
         let mask = T::inside(self.level, base, &s) & rect_mask(area, x, y);
         self.emit_masked(x, y, mask);
     }
@@ -464,7 +476,7 @@ impl<'a, T: Lane, F: FnMut(i32, i32, u16), G: FnMut(Rect)> Walker<'a, T, F, G> {
     fn few_blocks(&mut self) {
         let area = self.area;
         let (x, y) = (area.x0 & !3, area.y0 & !3);
-        let s = map3(self.ab, |(a, b)| steps(a, b));
+        let s = map3(self.ab, |(a, b)| T::steps(self.level, a, b));
         let ab4 = self.ab_shl(2);
         let (columns, rows) = area_runs(area, x, y);
         let mut row_base = self.corner(x, y);
@@ -572,7 +584,7 @@ impl<'a, T: Lane, F: FnMut(i32, i32, u16), G: FnMut(Rect)> Walker<'a, T, F, G> {
             (visit & mask, inside & mask)
         };
         let within = x >= area.x0 && y >= area.y0 && x + 16 <= area.x1 && y + 16 <= area.y1;
-        let s = map3(self.ab, |(a, b)| steps(a, b));
+        let s = map3(self.ab, |(a, b)| T::steps(self.level, a, b));
         let mut bits = visit;
         while bits != 0 {
             let i = bits.trailing_zeros() as usize;
@@ -643,6 +655,30 @@ mod tests {
                     <i64 as Lane>::inside(level, base.map(i64::from), &steps.map(|s| s.map(i64::from))),
                     expected
                 );
+            }
+        }
+    }
+
+    #[test]
+    fn edge_steps_are_the_products_at_every_level() {
+        // `a·column + b·row` per lane, for steps of every sign and size the walk uses (up to
+        // 2²⁴ · 3 · 64 in magnitude), at each SIMD level the machine has.
+        use crate::simd::{Level, Supported};
+        let mut seed = 0x9e37_79b9_7f4a_7c15u64;
+        let mut next = |range: i64| {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed % (2 * range as u64 + 1)) as i64 - range
+        };
+        for round in 0..500 {
+            let range = if round % 2 == 0 { 300 } else { 1 << 28 };
+            let (a, b) = (next(range) as i32, next(range) as i32);
+            let expected = steps::<i64>(a.into(), b.into()).map(|v| v as i32);
+            for &level in Level::ALL.iter().filter(|l| l.available()) {
+                let level = Supported::new(level).expect("available");
+                assert_eq!(<i32 as Lane>::steps(level, a, b), expected, "{a} {b}");
+                assert_eq!(<i64 as Lane>::steps(level, a.into(), b.into()).map(|v| v as i32), expected);
             }
         }
     }

@@ -18,7 +18,7 @@ use super::jobs::line::LineJob;
 use super::jobs::pixels::PixelRectJob;
 use super::jobs::point::PointJob;
 use super::jobs::smooth::SmoothJob;
-use super::jobs::triangle::TriangleJob;
+use super::jobs::triangle::{RunRules, TriangleJob};
 use super::triangle::TriangleSetup;
 use crate::fragment::block::{Batch, BlockPipeline};
 use crate::fragment::pipeline::{DrawState, Scratch};
@@ -813,25 +813,32 @@ impl Scene {
         // other entry on its own.
         let render = |bin: &[u32], tile: Rect, band: &mut Band<'_>, scratch: &mut Scratch, batch: &mut Batch| {
             let single_sampled = band.samples == 1;
-            let joins_run = |index: u32| {
+            // The first triangle of a run: its state's rules, if they admit it.
+            let run_head = |index: u32| {
                 let (primitive, state_index) = self.primitives.get(index);
                 let Primitive::Triangle(job) = primitive else { return None };
                 let state = &self.states[state_index as usize];
                 let pipeline = pipelines[state_index as usize].as_ref().filter(|_| single_sampled)?;
-                let area = tile.intersect(state.fill_clip);
-                job.joins_run(state, pipeline, area).then_some((job, state_index, state, pipeline, area))
+                let rules = RunRules::new(state, pipeline, tile.intersect(state.fill_clip));
+                rules.admit(job).then_some((job, state_index, state, pipeline, rules))
             };
             let mut i = 0;
             while i < bin.len() {
-                let Some((first, state_index, state, pipeline, area)) = joins_run(bin[i]) else {
+                let Some((first, state_index, state, pipeline, rules)) = run_head(bin[i]) else {
                     render_one(bin[i], tile, band, scratch, batch);
                     i += 1;
                     continue;
                 };
+                // The triangles after it of the same state and facing that the same rules
+                // admit (the entry that ends the run is looked at again as a run's head).
                 let mut end = i + 1;
                 while end < bin.len() {
-                    match joins_run(bin[end]) {
-                        Some((job, s, ..)) if s == state_index && job.front_facing == first.front_facing => end += 1,
+                    match self.primitives.get(bin[end]) {
+                        (Primitive::Triangle(job), s)
+                            if s == state_index && job.front_facing == first.front_facing && rules.admit(job) =>
+                        {
+                            end += 1
+                        }
                         _ => break,
                     }
                 }
@@ -840,6 +847,7 @@ impl Scene {
                     i += 1;
                     continue;
                 }
+                let area = rules.area();
                 let run = &bin[i..end];
                 let job = |index: u32| match self.primitives.get(index).0 {
                     Primitive::Triangle(job) => job,
@@ -847,9 +855,7 @@ impl Scene {
                 };
                 TriangleJob::render_run(state, pipeline, area, band, scratch, batch, run.iter().map(|&k| job(k)));
                 if let Some(only_nearer) = Self::depth_written_only_nearer(state) {
-                    for &k in run {
-                        band.hiz_written(area.intersect(job(k).bounds()), only_nearer);
-                    }
+                    band.hiz_written_within(area, run.iter().map(|&k| area.intersect(job(k).bounds())), only_nearer);
                 }
                 i = end;
             }

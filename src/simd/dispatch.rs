@@ -342,6 +342,64 @@ unsafe fn inside_mask16_avx2(base: [i32; 3], steps: &[[i32; 16]; 3]) -> u16 {
     !(bits as u16)
 }
 
+/// The steps `a·column + b·row` over a 4×4 block's 16 lanes (lane `4·row + column`), in
+/// 32-bit lanes whose values the caller knows do not overflow (`raster::blocks`, an edge's
+/// steps from a block's corner): the first row `0, a, 2a, 3a` in a vector, each next row it
+/// plus `b`. Written as a plain loop of products, LLVM built the lanes one scalar at a time
+/// (about 30 instructions an edge, for each small triangle of a run). The adds wrap as the
+/// scalar ones do in release builds; without overflow every level gives the exact values.
+#[inline(always)]
+pub fn edge_steps16(level: Supported, a: i32, b: i32) -> [i32; 16] {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if level.0 == Level::Avx2 {
+            // SAFETY: a `Supported` holds only a level the CPU was detected to have: AVX2.
+            return unsafe { edge_steps16_avx2(a, b) };
+        }
+        edge_steps16_sse2(a, b)
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        let _ = level;
+        let mut out = [0i32; 16];
+        for (i, o) in out.iter_mut().enumerate() {
+            *o = a.wrapping_mul((i & 3) as i32).wrapping_add(b.wrapping_mul((i >> 2) as i32));
+        }
+        out
+    }
+}
+
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+fn edge_steps16_sse2(a: i32, b: i32) -> [i32; 16] {
+    use std::arch::x86_64::{__m128i, _mm_add_epi32, _mm_set1_epi32, _mm_setr_epi32};
+    // SAFETY: register operations of SSE2, the x86-64 baseline; four 16-byte vectors are the
+    // 64 bytes of 16 i32.
+    unsafe {
+        let row0 = _mm_setr_epi32(0, a, a.wrapping_add(a), a.wrapping_mul(3));
+        let step = _mm_set1_epi32(b);
+        let row1 = _mm_add_epi32(row0, step);
+        let row2 = _mm_add_epi32(row1, step);
+        let row3 = _mm_add_epi32(row2, step);
+        std::mem::transmute::<[__m128i; 4], [i32; 16]>([row0, row1, row2, row3])
+    }
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+unsafe fn edge_steps16_avx2(a: i32, b: i32) -> [i32; 16] {
+    use std::arch::x86_64::{
+        __m256i, _mm256_add_epi32, _mm256_broadcastsi128_si256, _mm256_set1_epi32, _mm256_setr_epi32, _mm_setr_epi32,
+    };
+    // Rows 0 and 1, then rows 2 and 3 (two rows' `b` more).
+    let row0 = _mm256_broadcastsi128_si256(_mm_setr_epi32(0, a, a.wrapping_add(a), a.wrapping_mul(3)));
+    let low = _mm256_add_epi32(row0, _mm256_setr_epi32(0, 0, 0, 0, b, b, b, b));
+    let high = _mm256_add_epi32(low, _mm256_set1_epi32(b.wrapping_add(b)));
+    // SAFETY: two 32-byte vectors are the 64 bytes of 16 i32.
+    unsafe { std::mem::transmute::<[__m256i; 2], [i32; 16]>([low, high]) }
+}
+
 /// Pixel types of 32 bits with no padding and every bit pattern valid, which the row
 /// helpers move as plain 32-bit words.
 pub trait Word32: Copy + sealed::Sealed {}

@@ -205,7 +205,10 @@ fn a_draw_split_between_threads_draws_the_bytes_of_small_draws() {
             ctx.state.depth.test = depth;
             ctx.clear(GL_DEPTH_BUFFER_BIT);
             if whole {
-                assert_eq!(super::split_point(GL_TRIANGLES, &geometry(&mut ctx), vertices.len(), 2), Some(3150));
+                assert_eq!(
+                    super::split_point(GL_TRIANGLES, &geometry(&mut ctx), vertices.len(), 2),
+                    Some((3150, 3150))
+                );
                 ctx.draw_vertices(GL_TRIANGLES, &vertices);
             } else {
                 vertices.chunks(3).for_each(|t| ctx.draw_vertices(GL_TRIANGLES, t));
@@ -215,6 +218,50 @@ fn a_draw_split_between_threads_draws_the_bytes_of_small_draws() {
         let split = render(true);
         assert!(split.iter().any(|p| p[0] != 0));
         assert!(split == render(false), "depth test {depth}: the split draw differs");
+    }
+}
+
+#[test]
+fn a_strip_split_between_threads_draws_the_bytes_of_short_strips() {
+    // Triangle and quad strips zigzagging over each other (each overlapping the ones before,
+    // depth-tested and flat-shaded or not, so order, winding parity and provoking vertices
+    // show), drawn whole (split in half between two threads when there are two) and as
+    // strips of four vertices starting at every even vertex (never split): the same bytes.
+    let mut seed = 99u32;
+    let mut rnd = || {
+        seed = seed.wrapping_mul(1664525).wrapping_add(1013904223);
+        (seed >> 8) as f32 / (1 << 24) as f32
+    };
+    let mut vertices = Vec::new();
+    for i in 0..402 {
+        let x = (i / 2) as f32 * 1.3 % 190.0 + rnd() * 3.0;
+        let y = if i % 2 == 0 { 20.0 + rnd() * 40.0 } else { 80.0 + rnd() * 60.0 };
+        vertices.push(vertex(x, y, rnd() * 2.0 - 1.0, [rnd(), rnd(), rnd(), 1.0]));
+    }
+    let geometry = |ctx: &mut Context| ctx.geometry(24, 150);
+    for mode in [GL_TRIANGLE_STRIP, GL_QUAD_STRIP] {
+        for (depth, flat) in [(false, false), (true, false), (true, true)] {
+            let render = |whole: bool| {
+                let (mut ctx, d) = context(200, 150);
+                ctx.state.depth.test = depth;
+                if flat {
+                    ctx.shade_model(GL_FLAT);
+                }
+                ctx.clear(GL_DEPTH_BUFFER_BIT);
+                if whole {
+                    assert_eq!(super::split_point(mode, &geometry(&mut ctx), vertices.len(), 2), Some((202, 200)));
+                    ctx.draw_vertices(mode, &vertices);
+                } else {
+                    for start in (0..vertices.len() - 2).step_by(2) {
+                        ctx.draw_vertices(mode, &vertices[start..(start + 4).min(vertices.len())]);
+                    }
+                }
+                pixels(&mut ctx, &d)
+            };
+            let split = render(true);
+            assert!(split.iter().any(|p| p[0] != 0));
+            assert!(split == render(false), "mode {mode:#x}, depth test {depth}, flat {flat}: the split strip differs");
+        }
     }
 }
 

@@ -58,6 +58,55 @@ pub struct TriangleJob {
     exact: Option<Box<ExactAttributes>>,
 }
 
+/// Which triangles may render inside one area of a single-sampled band as part of a run
+/// ([`TriangleJob::render_run`]) with one draw state and its compiled pipeline: those that
+/// [`TriangleJob::render_blocks`] would walk block by block through the pipeline. Not in
+/// the exact accuracy mode, nor a constant fill (written as rows), nor a triangle
+/// hierarchical z may skip regions of (one larger than a region in the area).
+///
+/// Made once per state and area, the state's part of the decision taken then (whether
+/// hierarchical z may reject, whether a stipple is on): the tile workers ask it of every
+/// triangle of a run, and a run of small triangles has hundreds.
+#[derive(Clone, Copy)]
+pub struct RunRules<'a> {
+    state: &'a DrawState,
+    pipeline: &'a BlockPipeline,
+    area: Rect,
+    /// Whether hierarchical z may reject regions of the state's triangles.
+    hiz: bool,
+}
+
+impl<'a> RunRules<'a> {
+    /// The rules of triangles drawn with `state` through `pipeline` into `area`.
+    #[inline(always)]
+    pub fn new(state: &'a DrawState, pipeline: &'a BlockPipeline, area: Rect) -> Self {
+        let hiz = pipeline.hiz_reject(&state.fragment).is_some();
+        RunRules { state, pipeline, area, hiz }
+    }
+
+    /// The area the run renders into.
+    #[inline(always)]
+    pub fn area(&self) -> Rect {
+        self.area
+    }
+
+    /// Whether `job` may render as part of a run.
+    #[inline(always)]
+    pub fn admit(&self, job: &TriangleJob) -> bool {
+        if job.exact.is_some() {
+            return false;
+        }
+        if self.hiz {
+            let part = self.area.intersect(job.bounds());
+            if part.x1 - part.x0 >= REGION && part.y1 - part.y0 >= REGION {
+                return false;
+            }
+        }
+        self.state.polygon_stipple.is_some()
+            || job.uniform_color().is_none_or(|c| self.pipeline.constant_fill(self.state, c).is_none())
+    }
+}
+
 /// What the exact accuracy mode interpolates: the vertices (pixels, counter-clockwise) and
 /// their attributes in f64.
 #[derive(Clone, Debug)]
@@ -330,28 +379,9 @@ impl TriangleJob {
         });
     }
 
-    /// Whether the triangle, drawn with `state` through `pipeline` into a single-sampled
-    /// band, may render inside `area` as part of a run ([`TriangleJob::render_run`]): when
-    /// [`TriangleJob::render_blocks`] would walk all of its blocks through the pipeline.
-    /// Not in the exact accuracy mode, nor a constant fill (written as rows), nor a
-    /// triangle hierarchical z may skip regions of (one larger than a region in `area`).
-    #[inline(always)]
-    pub fn joins_run(&self, state: &DrawState, pipeline: &BlockPipeline, area: Rect) -> bool {
-        if self.exact.is_some() {
-            return false;
-        }
-        let area = area.intersect(self.bounds());
-        let big = area.x1 - area.x0 >= REGION && area.y1 - area.y0 >= REGION;
-        if big && pipeline.hiz_reject(&state.fragment).is_some() {
-            return false;
-        }
-        let constant = || self.uniform_color().and_then(|c| pipeline.constant_fill(state, c)).is_some();
-        state.polygon_stipple.is_some() || !constant()
-    }
-
     /// Renders the parts inside `area` (within the single-sampled band) of a run of
-    /// consecutive triangles of one draw state and facing, each of which
-    /// [`TriangleJob::joins_run`], as [`TriangleJob::render_blocks`] renders them one after
+    /// consecutive triangles of one draw state and facing, each of which its
+    /// [`RunRules`] admit, as [`TriangleJob::render_blocks`] renders them one after
     /// the other: their blocks walked into one `batch` (empty, and left empty), each block
     /// tagged with its triangle, and the pipeline run per full batch. The stages' set-up
     /// (the level's dispatch, the stage calls) is paid per batch, not per triangle: a
