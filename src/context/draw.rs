@@ -39,13 +39,13 @@ use crate::vertex::Vertex;
 /// it takes over.
 const SPLIT_MIN_VERTICES: usize = 1536;
 
-/// The fewest vertices a triangle or quad strip splits between two threads. Lower than
-/// [`SPLIT_MIN_VERTICES`]: a strip's triangle costs more than an array's (lighting runs per
-/// vertex, and a glBegin/glEnd strip is drawn whole, not in parts), the calling thread
-/// fetched nothing more than the helper, and strips are short (lit_mesh draws 128 strips of
-/// 258 vertices, one scene, recorded on one thread while the tile workers wait).
-/// If the helper is not free in time, the calling thread draws both parts.
-const STRIP_SPLIT_MIN_VERTICES: usize = 192;
+/// The fewest vertices a triangle or quad strip splits between two threads: as many as for
+/// independent triangles, so a strip splits only when its half is far more work than handing
+/// it over. Measured at 192 (LTO build, 2 threads, 1024²): lit_mesh's 128 strips of 258
+/// vertices, each split, went from 15 to 30 ms a frame, one hand-off per short strip costing
+/// more than the half strip it moved. If the helper is not free in time, the calling thread
+/// draws both parts.
+const STRIP_SPLIT_MIN_VERTICES: usize = SPLIT_MIN_VERTICES;
 
 /// Where the vertices of a draw split between the calling thread and a helper, if they
 /// do: filled triangles, enough of them, and more than one thread to render with; as the

@@ -233,7 +233,7 @@ fn a_strip_split_between_threads_draws_the_bytes_of_short_strips() {
         (seed >> 8) as f32 / (1 << 24) as f32
     };
     let mut vertices = Vec::new();
-    for i in 0..402 {
+    for i in 0..1538 {
         let x = (i / 2) as f32 * 1.3 % 190.0 + rnd() * 3.0;
         let y = if i % 2 == 0 { 20.0 + rnd() * 40.0 } else { 80.0 + rnd() * 60.0 };
         vertices.push(vertex(x, y, rnd() * 2.0 - 1.0, [rnd(), rnd(), rnd(), 1.0]));
@@ -249,7 +249,7 @@ fn a_strip_split_between_threads_draws_the_bytes_of_short_strips() {
                 }
                 ctx.clear(GL_DEPTH_BUFFER_BIT);
                 if whole {
-                    assert_eq!(super::split_point(mode, &geometry(&mut ctx), vertices.len(), 2), Some((202, 200)));
+                    assert_eq!(super::split_point(mode, &geometry(&mut ctx), vertices.len(), 2), Some((770, 768)));
                     ctx.draw_vertices(mode, &vertices);
                 } else {
                     for start in (0..vertices.len() - 2).step_by(2) {
