@@ -1032,66 +1032,154 @@ impl Compiled {
     }
 }
 
+/// One matcher of the registers an operation reads (through `wide` for the wide
+/// operations), in a fixed order, for both forms: [`op_reads`] lists them and
+/// [`reads_mut`] lets a pass rewrite them in place (`mut` as the last argument).
+macro_rules! visit_reads {
+    ($op:expr, $wide:expr, $f:expr $(, $m:tt)?) => {{
+        let f = $f;
+        match $op {
+            Op::SConst { .. } | Op::SUniform { .. } | Op::Const { .. } | Op::Uniform { .. } | Op::Input { .. } => {}
+            Op::SMov { a, .. }
+            | Op::SUnary { a, .. }
+            | Op::Mov { a, .. }
+            | Op::Sqrt { a, .. }
+            | Op::Rsq { a, .. }
+            | Op::Unary { a, .. }
+            | Op::Derivative { a, .. }
+            | Op::Exp2 { a, .. }
+            | Op::Log2 { a, .. }
+            | Op::Output { a, .. } => f(a),
+            Op::SBinary { a, b, .. }
+            | Op::Add { a, b, .. }
+            | Op::Sub { a, b, .. }
+            | Op::Mul { a, b, .. }
+            | Op::Div { a, b, .. }
+            | Op::Min { a, b, .. }
+            | Op::Max { a, b, .. }
+            | Op::Lt { a, b, .. }
+            | Op::Le { a, b, .. }
+            | Op::Binary { a, b, .. }
+            | Op::Pow { a, b, .. } => {
+                f(a);
+                f(b);
+            }
+            Op::SMad { a, b, c, .. } | Op::Mad { a, b, c, .. } | Op::SSelect { c, a, b, .. } | Op::Select { c, a, b, .. } => {
+                f(a);
+                f(b);
+                f(c);
+            }
+            Op::Clamp { a, lo, hi, .. } | Op::ClampSelect { a, lo, hi, .. } => {
+                f(a);
+                f(lo);
+                f(hi);
+            }
+            Op::SDot { n, a, b, .. } => {
+                let n = *n as usize;
+                for r in &$($m)? a[..n] {
+                    f(r);
+                }
+                for r in &$($m)? b[..n] {
+                    f(r);
+                }
+            }
+            Op::Dot2 { a, b, .. } => {
+                for r in &$($m)? a[..] {
+                    f(r);
+                }
+                for r in &$($m)? b[..] {
+                    f(r);
+                }
+            }
+            Op::Dot3 { a, b, .. } => {
+                for r in &$($m)? a[..] {
+                    f(r);
+                }
+                for r in &$($m)? b[..] {
+                    f(r);
+                }
+            }
+            Op::Dot4 { a, b, .. } => {
+                for r in &$($m)? a[..] {
+                    f(r);
+                }
+                for r in &$($m)? b[..] {
+                    f(r);
+                }
+            }
+            Op::Normalize3 { a, .. } => {
+                for r in &$($m)? a[..] {
+                    f(r);
+                }
+            }
+            Op::MatRow { m, v, .. } => {
+                for r in &$($m)? m[..] {
+                    f(r);
+                }
+                for r in &$($m)? v[..] {
+                    f(r);
+                }
+            }
+            Op::MatVec(i) | Op::Texture(i) | Op::Group(i) => match &$($m)? $wide[*i as usize] {
+                Wide::Group { kind, n, a, b, c, .. } => {
+                    let n = *n as usize;
+                    for r in &$($m)? a[..n] {
+                        f(r);
+                    }
+                    for r in &$($m)? b[..n] {
+                        f(r);
+                    }
+                    if *kind == GroupKind::Select {
+                        for r in &$($m)? c[..n] {
+                            f(r);
+                        }
+                    }
+                }
+                Wide::MatVec { n, rows_n, rows, v, .. } => {
+                    let n = *n as usize;
+                    for row in &$($m)? rows[..*rows_n as usize] {
+                        for r in &$($m)? row[..n] {
+                            f(r);
+                        }
+                    }
+                    for r in &$($m)? v[..n] {
+                        f(r);
+                    }
+                }
+                Wide::Sample { coords, lod, compare, .. } => {
+                    for r in &$($m)? coords[..] {
+                        f(r);
+                    }
+                    if let WideLod::Bias(r) | WideLod::Explicit(r) = lod {
+                        f(r);
+                    }
+                    if let Some(r) = compare {
+                        f(r);
+                    }
+                }
+                Wide::Fetch { coords, lod, .. } => {
+                    for r in &$($m)? coords[..] {
+                        f(r);
+                    }
+                    f(lod);
+                }
+                Wide::Size { lod, .. } => f(lod),
+            },
+        }
+    }};
+}
+
 /// The registers an operation reads (for [`Compiled::bind`]'s checks).
 fn op_reads(op: &Op, wide: &[Wide]) -> Vec<R> {
-    match *op {
-        Op::SConst { .. } | Op::SUniform { .. } | Op::Const { .. } | Op::Uniform { .. } | Op::Input { .. } => vec![],
-        Op::SMov { a, .. }
-        | Op::SUnary { a, .. }
-        | Op::Mov { a, .. }
-        | Op::Sqrt { a, .. }
-        | Op::Rsq { a, .. }
-        | Op::Unary { a, .. }
-        | Op::Derivative { a, .. }
-        | Op::Exp2 { a, .. }
-        | Op::Log2 { a, .. }
-        | Op::Output { a, .. } => vec![a],
-        Op::SBinary { a, b, .. }
-        | Op::Add { a, b, .. }
-        | Op::Sub { a, b, .. }
-        | Op::Mul { a, b, .. }
-        | Op::Div { a, b, .. }
-        | Op::Min { a, b, .. }
-        | Op::Max { a, b, .. }
-        | Op::Lt { a, b, .. }
-        | Op::Le { a, b, .. }
-        | Op::Binary { a, b, .. }
-        | Op::Pow { a, b, .. } => vec![a, b],
-        Op::SMad { a, b, c, .. }
-        | Op::Mad { a, b, c, .. }
-        | Op::SSelect { c, a, b, .. }
-        | Op::Select { c, a, b, .. } => {
-            vec![a, b, c]
-        }
-        Op::Clamp { a, lo, hi, .. } | Op::ClampSelect { a, lo, hi, .. } => vec![a, lo, hi],
-        Op::SDot { n, a, b, .. } => a[..n as usize].iter().chain(&b[..n as usize]).copied().collect(),
-        Op::Dot2 { a, b, .. } => a.iter().chain(&b).copied().collect(),
-        Op::Dot3 { a, b, .. } => a.iter().chain(&b).copied().collect(),
-        Op::Dot4 { a, b, .. } => a.iter().chain(&b).copied().collect(),
-        Op::Normalize3 { a, .. } => a.to_vec(),
-        Op::MatRow { m, v, .. } => m.iter().chain(&v).copied().collect(),
-        Op::MatVec(i) | Op::Texture(i) | Op::Group(i) => match wide[i as usize] {
-            Wide::Group { kind, n, a, b, c, .. } => {
-                let n = n as usize;
-                let c = if kind == GroupKind::Select { &c[..n] } else { &[][..] };
-                a[..n].iter().chain(&b[..n]).chain(c).copied().collect()
-            }
-            Wide::MatVec { n, rows_n, rows, v, .. } => {
-                let n = n as usize;
-                rows[..rows_n as usize].iter().flat_map(|r| r[..n].to_vec()).chain(v[..n].iter().copied()).collect()
-            }
-            Wide::Sample { coords, lod, compare, .. } => {
-                let mut list = coords.to_vec();
-                if let WideLod::Bias(r) | WideLod::Explicit(r) = lod {
-                    list.push(r);
-                }
-                list.extend(compare);
-                list
-            }
-            Wide::Fetch { coords, lod, .. } => coords.iter().copied().chain([lod]).collect(),
-            Wide::Size { lod, .. } => vec![lod],
-        },
-    }
+    let mut list = Vec::new();
+    visit_reads!(op, wide, &mut |r: &R| list.push(*r));
+    list
+}
+
+/// Calls `f` on each register `op` reads (through `wide` for the wide operations), to
+/// rewrite it in place.
+pub(super) fn reads_mut(op: &mut Op, wide: &mut [Wide], f: &mut dyn FnMut(&mut R)) {
+    visit_reads!(op, wide, f, mut)
 }
 
 impl Bound {

@@ -27,7 +27,7 @@
 //!
 //! Each step keeps every value any remaining operation reads, so the specialised code gives
 //! the bits of the code it came from in every lane (the tests run both on random programs).
-use super::lower::{op_writes, Code, Cond, Node, Op, Wide, WideLod, R};
+use super::lower::{op_writes, Code, Cond, Node, Op, Wide, R};
 
 /// The result of [`specialize`]: the known words and the code left to run per block.
 #[derive(Clone, Debug)]
@@ -41,89 +41,6 @@ pub struct Specialized {
 
 /// How [`specialize`] runs operations: `evaluate(ops, file, uniforms, wide)`.
 pub type Evaluate<'a> = dyn FnMut(&[Op], &mut super::fast::Registers, &[u32], &[Wide]) + 'a;
-
-/// Calls `f` on each register `op` reads (through `wide` for the wide operations).
-pub(super) fn reads_mut(op: &mut Op, wide: &mut [Wide], f: &mut dyn FnMut(&mut R)) {
-    match op {
-        Op::SConst { .. } | Op::SUniform { .. } | Op::Const { .. } | Op::Uniform { .. } | Op::Input { .. } => {}
-        Op::SMov { a, .. }
-        | Op::SUnary { a, .. }
-        | Op::Mov { a, .. }
-        | Op::Sqrt { a, .. }
-        | Op::Rsq { a, .. }
-        | Op::Unary { a, .. }
-        | Op::Derivative { a, .. }
-        | Op::Exp2 { a, .. }
-        | Op::Log2 { a, .. }
-        | Op::Output { a, .. } => f(a),
-        Op::SBinary { a, b, .. }
-        | Op::Add { a, b, .. }
-        | Op::Sub { a, b, .. }
-        | Op::Mul { a, b, .. }
-        | Op::Div { a, b, .. }
-        | Op::Min { a, b, .. }
-        | Op::Max { a, b, .. }
-        | Op::Lt { a, b, .. }
-        | Op::Le { a, b, .. }
-        | Op::Binary { a, b, .. }
-        | Op::Pow { a, b, .. } => {
-            f(a);
-            f(b);
-        }
-        Op::SMad { a, b, c, .. }
-        | Op::Mad { a, b, c, .. }
-        | Op::SSelect { c, a, b, .. }
-        | Op::Select { c, a, b, .. } => {
-            f(a);
-            f(b);
-            f(c);
-        }
-        Op::Clamp { a, lo, hi, .. } | Op::ClampSelect { a, lo, hi, .. } => {
-            f(a);
-            f(lo);
-            f(hi);
-        }
-        Op::SDot { n, a, b, .. } => {
-            let n = *n as usize;
-            a[..n].iter_mut().chain(&mut b[..n]).for_each(f);
-        }
-        Op::Dot2 { a, b, .. } => a.iter_mut().chain(b).for_each(f),
-        Op::Dot3 { a, b, .. } => a.iter_mut().chain(b).for_each(f),
-        Op::Dot4 { a, b, .. } => a.iter_mut().chain(b).for_each(f),
-        Op::Normalize3 { a, .. } => a.iter_mut().for_each(f),
-        Op::MatRow { m, v, .. } => m.iter_mut().chain(v).for_each(f),
-        Op::MatVec(i) | Op::Texture(i) | Op::Group(i) => match &mut wide[*i as usize] {
-            Wide::Group { kind, n, a, b, c, .. } => {
-                let n = *n as usize;
-                a[..n].iter_mut().chain(&mut b[..n]).for_each(&mut *f);
-                if *kind == super::lower::GroupKind::Select {
-                    c[..n].iter_mut().for_each(f);
-                }
-            }
-            Wide::MatVec { n, rows_n, rows, v, .. } => {
-                let n = *n as usize;
-                for row in &mut rows[..*rows_n as usize] {
-                    row[..n].iter_mut().for_each(&mut *f);
-                }
-                v[..n].iter_mut().for_each(f);
-            }
-            Wide::Sample { coords, lod, compare, .. } => {
-                coords.iter_mut().for_each(&mut *f);
-                if let WideLod::Bias(r) | WideLod::Explicit(r) = lod {
-                    f(r);
-                }
-                if let Some(r) = compare {
-                    f(r);
-                }
-            }
-            Wide::Fetch { coords, lod, .. } => {
-                coords.iter_mut().for_each(&mut *f);
-                f(lod);
-            }
-            Wide::Size { lod, .. } => f(lod),
-        },
-    }
-}
 
 /// Whether `op` computes its results from its operands alone, lane by lane: with known
 /// operands, its results are known (and nothing else notices it ran or not).
@@ -272,7 +189,7 @@ pub fn specialize(prologue: &[Op], rest: &Code, uniforms: &[u32], evaluate: &mut
             }
             let (d, count) = op_writes(&op, &wide);
             let mut operands_known = true;
-            reads_mut(&mut op, &mut wide, &mut |r| operands_known &= known[*r as usize]);
+            super::fast::reads_mut(&mut op, &mut wide, &mut |r| operands_known &= known[*r as usize]);
             if lane_wise(&op) && operands_known && d[..count].iter().all(|&r| single(r)) {
                 evaluate(std::slice::from_ref(&op), &mut file, uniforms, &wide);
                 for &r in &d[..count] {
@@ -298,7 +215,7 @@ pub fn specialize(prologue: &[Op], rest: &Code, uniforms: &[u32], evaluate: &mut
         }
     }
     for op in ops.iter_mut().flatten() {
-        reads_mut(op, &mut wide, &mut |r| *r = alias[*r as usize]);
+        super::fast::reads_mut(op, &mut wide, &mut |r| *r = alias[*r as usize]);
     }
     let mut body = rest.body.clone();
     rename_conditions(&mut body, &alias);
@@ -307,7 +224,7 @@ pub fn specialize(prologue: &[Op], rest: &Code, uniforms: &[u32], evaluate: &mut
         let mut reads = vec![0u32; n];
         count_conditions(&body, &mut reads);
         for op in ops.iter_mut().flatten() {
-            reads_mut(op, &mut wide, &mut |r| reads[*r as usize] += 1);
+            super::fast::reads_mut(op, &mut wide, &mut |r| reads[*r as usize] += 1);
         }
         let mut changed = false;
         for slot in &mut ops {
