@@ -206,7 +206,7 @@ fn a_draw_split_between_threads_draws_the_bytes_of_small_draws() {
             ctx.clear(GL_DEPTH_BUFFER_BIT);
             if whole {
                 assert_eq!(
-                    super::split_point(GL_TRIANGLES, &geometry(&mut ctx), vertices.len(), 2),
+                    super::split_point(GL_TRIANGLES, &geometry(&mut ctx), vertices.len(), super::SPLIT_MIN_THREADS),
                     Some((3150, 3150))
                 );
                 ctx.draw_vertices(GL_TRIANGLES, &vertices);
@@ -249,7 +249,11 @@ fn a_strip_split_between_threads_draws_the_bytes_of_short_strips() {
                 }
                 ctx.clear(GL_DEPTH_BUFFER_BIT);
                 if whole {
-                    assert_eq!(super::split_point(mode, &geometry(&mut ctx), vertices.len(), 2), Some((770, 768)));
+                    assert_eq!(
+                        super::split_point(mode, &geometry(&mut ctx), vertices.len(), super::SPLIT_MIN_THREADS),
+                        Some((770, 768))
+                    );
+                    assert_eq!(super::split_point(mode, &geometry(&mut ctx), vertices.len(), 2), None);
                     ctx.draw_vertices(mode, &vertices);
                 } else {
                     for start in (0..vertices.len() - 2).step_by(2) {
