@@ -393,7 +393,7 @@ impl Context {
     /// caller's RGBA8 buffer), saving the copy and the own pixels' first touch.
     pub(super) fn flush_for_presentation(&mut self) {
         let Some(mut scene) = self.scene.take() else { return };
-        let overwrites = std::mem::take(&mut self.scene_overwrites_front);
+        // The fallbacks go through run_scene, which reads scene_overwrites_front itself.
         let window = self.drawable.clone().filter(|_| self.fbo.draw == 0);
         let Some(drawable) = window else { return self.run_scene(scene) };
         let mut guard = drawable.lock().unwrap_or_else(|p| p.into_inner());
@@ -401,6 +401,7 @@ impl Context {
             drop(guard);
             return self.run_scene(scene);
         }
+        let overwrites = std::mem::take(&mut self.scene_overwrites_front);
         guard.render_for_presentation(overwrites, |fb| scene.execute(fb));
         drop(guard);
         scene.clear();
