@@ -21,7 +21,7 @@
 //! Every lane of a quad with a live lane runs (helper lanes: their own pixel's varyings),
 //! only the live lanes' colours are kept.
 
-use super::block::{F32s, LANES};
+use super::block::{lanes, F32s, LANES};
 use super::program::{CompiledFragment, FragmentInput, FragmentKey};
 use super::FragmentState;
 use crate::shader::exec::{Io, LodLanes, SampleRequest, Textures, Word};
@@ -147,6 +147,11 @@ impl Shading {
             fb_height: state.texturing.as_ref().map_or(0, |t| t.fb_height),
             program,
         }
+    }
+
+    /// The program written out when it is linear fog alone ([`LinearFog`]).
+    pub fn linear_fog(&self) -> Option<&LinearFog> {
+        self.linear_fog.as_ref()
     }
 
     /// Shades the lanes `live` of the 4×4 block at window `(x, y)` (lane `i` the pixel
@@ -393,7 +398,7 @@ impl Shading {
 /// The alpha and the lanes outside the block's live ones are the program's too (it reads
 /// the alpha through).
 #[derive(Clone, Copy, Debug)]
-struct LinearFog {
+pub struct LinearFog {
     end: f32,
     /// `end − start` (LINEAR's divisor), or `None` when start = end (Mesa's `c − end`).
     span: Option<f32>,
@@ -430,8 +435,11 @@ impl LinearFog {
         )
     }
 
+    /// Fogs `colors` by the fog coordinates `c` in the caller's copy (the block colour
+    /// stage's fast path inlines it into its per-level loop: no call, and the lanes stay in
+    /// registers).
     #[inline(always)]
-    fn apply_body(&self, c: &F32s, colors: &mut [F32s; 4]) {
+    pub fn apply_body(&self, c: &F32s, colors: &mut [F32s; 4]) {
         // clamp01: `0 < x ? (1 < x ? 1 : x) : 0` (NaN gives 0), as two selects, which
         // vectorise (max and min); the nested form stayed a scalar division and two
         // branches per lane (262 instructions a block at SSE2).
@@ -443,23 +451,15 @@ impl LinearFog {
                 1.0
             }
         };
-        let mut factor = [0f32; LANES];
-        match self.span {
-            Some(span) => {
-                for (f, c) in factor.iter_mut().zip(c) {
-                    *f = clamp01((self.end - *c) / span);
-                }
-            }
-            None => {
-                for (f, c) in factor.iter_mut().zip(c) {
-                    *f = clamp01(*c - self.end);
-                }
-            }
-        }
+        // Index loops over whole lanes (`block::lanes`), which LLVM vectorises whole; zipped
+        // iterators came out as vectors of 8, 4, 2 and single lanes.
+        let factor: F32s = match self.span {
+            Some(span) => lanes(|i| clamp01((self.end - c[i]) / span)),
+            None => lanes(|i| clamp01(c[i] - self.end)),
+        };
         for (channel, fog) in colors[..3].iter_mut().zip(self.color) {
-            for (x, f) in channel.iter_mut().zip(&factor) {
-                *x = *f * *x + (1.0 - *f) * fog;
-            }
+            let x = *channel;
+            *channel = lanes(|i| factor[i] * x[i] + (1.0 - factor[i]) * fog);
         }
     }
 }

@@ -721,3 +721,67 @@ unsafe fn add_saturate8_avx2(a: &[u32; 16], b: &[u32; 16]) -> [u32; 16] {
     // SAFETY: two 32-byte vectors are the 64 bytes of 16 u32.
     unsafe { std::mem::transmute::<[__m256i; 2], [u32; 16]>([row(0), row(1)]) }
 }
+
+/// Four channel lanes of integers packed into RGBA words (byte `k`: channel `k`), each
+/// channel clamped to [0, 255] on the way (unsigned saturation: negative values, and the
+/// `i32::MIN` a conversion gives NaN, become 0): a unorm8 conversion's last step. Per row of
+/// four pixels, two signed packs to 16 bits (red with blue, green with alpha), one unsigned
+/// pack to bytes (`r0..3 b0..3 g0..3 a0..3`) and two unpacks that interleave its halves
+/// (`r g r g … b a b a …`, then `r g b a …`): seven instructions, where shifting each channel
+/// into place and OR-ing them costs as many after a clamp per channel. AVX2 does two rows per
+/// 256-bit vector (packs and unpacks work within 128-bit halves). Integer operations: the
+/// same words at every level.
+#[inline(always)]
+pub fn pack_unorm8(level: Supported, c: &[[i32; 16]; 4]) -> [u32; 16] {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if level.0 == Level::Avx2 {
+            // SAFETY: a `Supported` holds only a level the CPU was detected to have: AVX2.
+            return unsafe { pack_unorm8_avx2(c) };
+        }
+        use std::arch::x86_64::{
+            __m128i, _mm_loadu_si128, _mm_packs_epi32, _mm_packus_epi16, _mm_srli_si128, _mm_unpacklo_epi16,
+            _mm_unpacklo_epi8,
+        };
+        let p = c.each_ref().map(|k| k.as_ptr() as *const __m128i);
+        // SAFETY: each channel is 64 bytes, read as four 16-byte vectors; SSE2 is the baseline.
+        let row = |r: usize| unsafe {
+            let ch = |k: usize| _mm_loadu_si128(p[k].add(r));
+            let x = _mm_packus_epi16(_mm_packs_epi32(ch(0), ch(2)), _mm_packs_epi32(ch(1), ch(3)));
+            let t = _mm_unpacklo_epi8(x, _mm_srli_si128::<8>(x));
+            _mm_unpacklo_epi16(t, _mm_srli_si128::<8>(t))
+        };
+        let v = [row(0), row(1), row(2), row(3)];
+        // SAFETY: four 16-byte vectors are the 64 bytes of 16 u32.
+        unsafe { std::mem::transmute::<[__m128i; 4], [u32; 16]>(v) }
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        let _ = level;
+        let mut out = [0u32; 16];
+        for (i, o) in out.iter_mut().enumerate() {
+            *o = (0..4).fold(0, |w, k| w | (c[k][i].clamp(0, 255) as u32) << (8 * k));
+        }
+        out
+    }
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+unsafe fn pack_unorm8_avx2(c: &[[i32; 16]; 4]) -> [u32; 16] {
+    use std::arch::x86_64::{
+        __m256i, _mm256_loadu_si256, _mm256_packs_epi32, _mm256_packus_epi16, _mm256_srli_si256,
+        _mm256_unpacklo_epi16, _mm256_unpacklo_epi8,
+    };
+    let p = c.each_ref().map(|k| k.as_ptr() as *const __m256i);
+    let rows = |r: usize| {
+        // SAFETY: each channel is 64 bytes, read as two 32-byte vectors.
+        let ch = |k: usize| unsafe { _mm256_loadu_si256(p[k].add(r)) };
+        let x = _mm256_packus_epi16(_mm256_packs_epi32(ch(0), ch(2)), _mm256_packs_epi32(ch(1), ch(3)));
+        let t = _mm256_unpacklo_epi8(x, _mm256_srli_si256::<8>(x));
+        _mm256_unpacklo_epi16(t, _mm256_srli_si256::<8>(t))
+    };
+    // SAFETY: two 32-byte vectors are the 64 bytes of 16 u32.
+    unsafe { std::mem::transmute::<[__m256i; 2], [u32; 16]>([rows(0), rows(1)]) }
+}

@@ -214,22 +214,26 @@ struct WordOp {
     and: u32,
     add: u32,
     xor: u32,
+    /// Whether the operation can change a word (not KEEP): a flag tested per block, where
+    /// comparing the three words with KEEP's cost seven instructions per operation.
+    changes: bool,
 }
 
 impl WordOp {
-    const KEEP: WordOp = WordOp { and: !0, add: 0, xor: 0 };
+    const KEEP: WordOp = WordOp { and: !0, add: 0, xor: 0, changes: false };
 
     fn of(op: StencilOp, reference: u8, write_mask: u8) -> Option<WordOp> {
         let wm = u32::from(write_mask) << 24;
         let full = write_mask == 0xff;
+        let changing = WordOp { changes: true, ..WordOp::KEEP };
         Some(match op {
             _ if write_mask == 0 => WordOp::KEEP,
             StencilOp::Keep => WordOp::KEEP,
-            StencilOp::Zero => WordOp { and: !wm, ..WordOp::KEEP },
-            StencilOp::Replace => WordOp { and: !wm, add: (u32::from(reference) << 24) & wm, xor: 0 },
-            StencilOp::Invert => WordOp { xor: wm, ..WordOp::KEEP },
-            StencilOp::IncrWrap if full => WordOp { add: 1 << 24, ..WordOp::KEEP },
-            StencilOp::DecrWrap if full => WordOp { add: 0xff00_0000, ..WordOp::KEEP },
+            StencilOp::Zero => WordOp { and: !wm, ..changing },
+            StencilOp::Replace => WordOp { and: !wm, add: (u32::from(reference) << 24) & wm, ..changing },
+            StencilOp::Invert => WordOp { xor: wm, ..changing },
+            StencilOp::IncrWrap if full => WordOp { add: 1 << 24, ..changing },
+            StencilOp::DecrWrap if full => WordOp { add: 0xff00_0000, ..changing },
             _ => return None,
         })
     }
@@ -238,7 +242,7 @@ impl WordOp {
     #[inline(always)]
     #[allow(clippy::needless_range_loop)] // an index loop vectorises where a `zip` may stay a call
     fn apply(&self, words: &mut U32s, which: &U32s) {
-        if *self == WordOp::KEEP {
+        if !self.changes {
             return;
         }
         for i in 0..LANES {

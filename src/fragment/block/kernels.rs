@@ -28,7 +28,7 @@ use crate::fragment::{write_colors, FragmentState};
 use crate::framebuffer::band::ColorBand;
 use crate::framebuffer::format::float_to_unorm;
 use crate::framebuffer::ColorFormat;
-use crate::simd::dispatch::round_even_i32;
+use crate::simd::dispatch::{pack_unorm8, round_even_i32};
 use crate::simd::Supported;
 
 // ---------------------------------------------------------------------------------------
@@ -118,14 +118,68 @@ impl TargetKernel {
     pub fn run(&self, band: &mut ColorBand<'_>, at: &BlockAt, colors: &BlockColors, live: u16) {
         let p = &self.params;
         match self.kind {
-            Kind::Unorm8Store => unorm8_store(p, band, at, colors, live),
-            Kind::Unorm8LogicOp => unorm8_logic_op(p, band, at, colors, live),
-            Kind::Unorm8BlendSrcAlpha => unorm8_blend_inv_src_alpha::<true>(p, band, at, colors, live),
-            Kind::Unorm8BlendAdd => unorm8_blend_add(p, band, at, colors, live),
-            Kind::Unorm8BlendOneInvSrcAlpha => unorm8_blend_inv_src_alpha::<false>(p, band, at, colors, live),
+            Kind::Unorm8Store
+            | Kind::Unorm8LogicOp
+            | Kind::Unorm8BlendSrcAlpha
+            | Kind::Unorm8BlendAdd
+            | Kind::Unorm8BlendOneInvSrcAlpha => {
+                if let ColorBand::Unorm8(px) = band {
+                    self.run_words(px, at, &src_words(at.level, colors), live)
+                }
+            }
             Kind::Unorm8Blend => unorm8_blend(p, band, at, colors, live),
             Kind::Rgb565 => rgb565(p, band, at, colors, live),
             Kind::RowsF32 => rows_f32(p, band, at, colors, live),
+        }
+    }
+
+    /// Whether [`Self::run_words`] is this kernel: a unorm8 target whose kernel works on the
+    /// source colours as packed words (no blend, the logic op, or a blend with a packed-word
+    /// form).
+    pub fn takes_words(&self) -> bool {
+        matches!(
+            self.kind,
+            Kind::Unorm8Store
+                | Kind::Unorm8LogicOp
+                | Kind::Unorm8BlendSrcAlpha
+                | Kind::Unorm8BlendAdd
+                | Kind::Unorm8BlendOneInvSrcAlpha
+        )
+    }
+
+    /// Writes the lanes of `live` of a block's source colours, converted to packed unorm8
+    /// words (`src`), into a unorm8 target: the kernels of [`Self::takes_words`] (any other
+    /// kind writes nothing). Inlined into its caller's per-level copy, as [`Self::run`].
+    #[inline(always)]
+    pub fn run_words(&self, px: &mut [[u8; 4]], at: &BlockAt, src: &U32s, live: u16) {
+        use crate::simd::dispatch::{add_saturate8, blend_inv_src_alpha8};
+        let p = &self.params;
+        match self.kind {
+            Kind::Unorm8Store => store8(p, px, at, src, None, live),
+            Kind::Unorm8LogicOp => {
+                if let Some(op) = p.logic_op {
+                    let dst = load8(px, at);
+                    store8(p, px, at, &logic_lanes(op, src, &dst), Some(&dst), live);
+                }
+            }
+            // GL_SRC_ALPHA or GL_ONE, GL_ONE_MINUS_SRC_ALPHA and GL_FUNC_ADD on RGB and alpha
+            // alike, on the packed words as 16-bit lanes (`pmullw`/`pmulhuw`, four pixels per
+            // 128-bit vector, the span path's rounding of `mul8` byte for byte).
+            Kind::Unorm8BlendSrcAlpha => {
+                let dst = load8(px, at);
+                store8(p, px, at, &blend_inv_src_alpha8::<true>(at.level, src, &dst), Some(&dst), live);
+            }
+            Kind::Unorm8BlendOneInvSrcAlpha => {
+                let dst = load8(px, at);
+                store8(p, px, at, &blend_inv_src_alpha8::<false>(at.level, src, &dst), Some(&dst), live);
+            }
+            // GL_ONE, GL_ONE and GL_FUNC_ADD on RGB and alpha alike: `mul8(x, 255)` is `x`, so
+            // the blend is `min(s + d, 255)` per byte, a saturating byte add.
+            Kind::Unorm8BlendAdd => {
+                let dst = load8(px, at);
+                store8(p, px, at, &add_saturate8(at.level, src, &dst), Some(&dst), live);
+            }
+            _ => {}
         }
     }
 }
@@ -161,30 +215,36 @@ pub fn unorm8_lanes(x: &F32s) -> U16s {
 
 /// A block's colours converted to unorm8 (the span path's `float_to_unorm`) and packed into
 /// RGBA words (byte k: channel k), straight from the f32 lanes, in the copy for `level`.
-/// Each channel is clamped, scaled and rounded to nearest even by one conversion
-/// (`simd::dispatch::round_even_i32`): the products lie in [0, 255], where that is the
-/// integer `float_to_unorm` gets by adding 2²³ (one instruction fewer per vector).
+/// Each channel is capped at 1 (`1 < v ? 1 : v`, one `minps` that keeps NaN), scaled and
+/// rounded to nearest even by one conversion (`simd::dispatch::round_even_i32`), and the
+/// packing clamps below by unsigned saturation (`simd::dispatch::pack_unorm8`): a negative
+/// value rounds to a negative integer or 0, NaN and −∞ convert to `i32::MIN`, all of which
+/// saturate to 0, as `float_to_unorm` clamps them; in [0, 1] the product lies in [0, 255],
+/// where that conversion is the integer `float_to_unorm` gets by adding 2²³. So no `maxps`
+/// per channel, and no shifts and ORs to pack.
 #[inline(always)]
-fn src_words(level: Supported, colors: &BlockColors) -> U32s {
+pub fn src_words(level: Supported, colors: &BlockColors) -> U32s {
     match colors {
         BlockColors::Uniform(c) => {
             let b = |k: usize| float_to_unorm(c[k], 8);
             [b(0) | b(1) << 8 | b(2) << 16 | b(3) << 24; LANES]
         }
-        BlockColors::Lanes([r, g, b, a]) => {
-            let byte = |x: &F32s| {
-                let scaled = lanes(|i| {
-                    let v = x[i];
-                    let v = if v > 0.0 { v } else { 0.0 };
-                    let v = if v < 1.0 { v } else { 1.0 };
-                    v * 255.0
-                });
-                round_even_i32(level, &scaled)
-            };
-            let (r, g, b, a) = (byte(r), byte(g), byte(b), byte(a));
-            lanes(|i| r[i] as u32 | (g[i] as u32) << 8 | (b[i] as u32) << 16 | (a[i] as u32) << 24)
-        }
+        BlockColors::Lanes(l) => lane_words(level, l),
     }
+}
+
+/// [`src_words`] of four channel lanes.
+#[inline(always)]
+fn lane_words(level: Supported, l: &[F32s; 4]) -> U32s {
+    let scaled = |x: &F32s| {
+        let capped = lanes(|i| {
+            let v = x[i];
+            let v = if 1.0 < v { 1.0 } else { v };
+            v * 255.0
+        });
+        round_even_i32(level, &capped)
+    };
+    pack_unorm8(level, &[scaled(&l[0]), scaled(&l[1]), scaled(&l[2]), scaled(&l[3])])
 }
 
 /// A block's colours as unorm8 channel lanes (the span path's `float_to_unorm`).
@@ -230,24 +290,6 @@ fn store8(p: &TargetParams, px: &mut [[u8; 4]], at: &BlockAt, words: &U32s, old:
         }
     };
     store(px, at, &map_lanes(&words, u32::to_le_bytes), live);
-}
-
-/// unorm8, no blend or logic op: convert and store.
-#[inline(always)]
-fn unorm8_store(p: &TargetParams, band: &mut ColorBand<'_>, at: &BlockAt, colors: &BlockColors, live: u16) {
-    let ColorBand::Unorm8(px) = band else { return };
-    store8(p, px, at, &src_words(at.level, colors), None, live);
-}
-
-/// unorm8 with the logic op on the packed words.
-#[inline(always)]
-fn unorm8_logic_op(p: &TargetParams, band: &mut ColorBand<'_>, at: &BlockAt, colors: &BlockColors, live: u16) {
-    let ColorBand::Unorm8(px) = band else { return };
-    let Some(op) = p.logic_op else { return };
-    let src = src_words(at.level, colors);
-    let dst = load8(px, at);
-    let words = logic_lanes(op, &src, &dst);
-    store8(p, px, at, &words, Some(&dst), live);
 }
 
 /// `op(s, d)` on every lane, from the truth table (see `logic_op`).
@@ -386,37 +428,6 @@ fn unorm8_blend(p: &TargetParams, band: &mut ColorBand<'_>, at: &BlockAt, colors
     let dst_words = load8(px, at);
     let out = fns.blend(&to_unorm8(colors), &unpack8(&dst_words), &p.constant8);
     store8(p, px, at, &pack8(&out), Some(&dst_words), live);
-}
-
-/// unorm8 blending with GL_SRC_ALPHA (`SRC_ALPHA`) or GL_ONE, GL_ONE_MINUS_SRC_ALPHA and
-/// GL_FUNC_ADD on RGB and alpha alike, on the packed words as 16-bit lanes
-/// (`simd::dispatch::blend_inv_src_alpha8`: `pmullw`/`pmulhuw`, four pixels per 128-bit
-/// vector, the span path's rounding of `mul8` byte for byte).
-#[inline(always)]
-fn unorm8_blend_inv_src_alpha<const SRC_ALPHA: bool>(
-    p: &TargetParams,
-    band: &mut ColorBand<'_>,
-    at: &BlockAt,
-    colors: &BlockColors,
-    live: u16,
-) {
-    let ColorBand::Unorm8(px) = band else { return };
-    let dst = load8(px, at);
-    let src = src_words(at.level, colors);
-    let words = crate::simd::dispatch::blend_inv_src_alpha8::<SRC_ALPHA>(at.level, &src, &dst);
-    store8(p, px, at, &words, Some(&dst), live);
-}
-
-/// unorm8 blending with GL_ONE, GL_ONE and GL_FUNC_ADD on RGB and alpha alike: `mul8(x, 255)`
-/// is `x`, so the blend is `min(s + d, 255)` per byte, a saturating byte add of the packed
-/// words (`simd::dispatch::add_saturate8`).
-#[inline(always)]
-fn unorm8_blend_add(p: &TargetParams, band: &mut ColorBand<'_>, at: &BlockAt, colors: &BlockColors, live: u16) {
-    let ColorBand::Unorm8(px) = band else { return };
-    let dst = load8(px, at);
-    let src = src_words(at.level, colors);
-    let words = crate::simd::dispatch::add_saturate8(at.level, &src, &dst);
-    store8(p, px, at, &words, Some(&dst), live);
 }
 
 /// RGB565: blend on the destination widened to 8 bits (bit replication), dither or
