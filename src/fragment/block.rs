@@ -48,9 +48,9 @@ pub mod samples;
 
 use super::pipeline::{DrawState, Scratch};
 use super::shading::LinearFog;
-use crate::framebuffer::band::ColorBand;
 use super::{AlphaTest, FragmentState};
 use crate::framebuffer::band::Band;
+use crate::framebuffer::band::ColorBand;
 use crate::framebuffer::format::float_to_unorm;
 use crate::framebuffer::{ColorFormat, DepthStencilFormat};
 use crate::simd::dispatch::{outlined, outlined_sse2_for_sse41, sign_mask16, Word32};
