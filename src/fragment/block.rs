@@ -9,7 +9,9 @@
 //! before them can discard (depth clamp included); the occlusion count; the colours
 //! (texturing, the colour sum and fog: [`block_colors`], the one place colours are
 //! computed) only for blocks with a surviving lane; then per colour target its write kernel
-//! (blend or logic op, dither, channel masks, the format's store). With the alpha test, the
+//! (blend or logic op, dither, channel masks, the format's store); the common draw (one
+//! unorm8 target whose kernel takes packed words, no alpha test or shader, at most linear
+//! fog) has a colour loop of its own ([`word_blocks`]). With the alpha test, the
 //! colours come first, block by block (after a read-only stencil/depth test that drops
 //! blocks none of whose lanes can pass, when a failing fragment changes nothing), then the
 //! alpha test and the stencil and depth tests. unorm8 and RGB565 targets blend in exact

@@ -426,27 +426,17 @@ fn block_inside(len: usize, base: usize, width: usize) -> bool {
 #[inline(always)]
 pub fn load_block<T: Word32>(level: Supported, px: &[T], base: usize, width: usize) -> [T; 16] {
     assert!(block_inside(px.len(), base, width), "a block's rows lie inside its slice");
-    // SAFETY: checked just above.
-    unsafe { load_rows(level, px, base, width) }
-}
-
-/// [`load_block`] without the check.
-///
-/// # Safety
-/// The four rows must lie inside `px` (`block_inside(px.len(), base, width)`).
-#[inline(always)]
-unsafe fn load_rows<T: Word32>(level: Supported, px: &[T], base: usize, width: usize) -> [T; 16] {
     #[cfg(target_arch = "x86_64")]
     {
         let p = px[base..].as_ptr();
         if level.0 == Level::Avx2 {
             // SAFETY: a `Supported` holds only a level the CPU was detected to have: AVX2;
-            // the four rows lie inside `px` (the caller's promise).
+            // the four rows lie inside `px` (checked above).
             return unsafe { load_block_avx2(p, width) };
         }
         use std::arch::x86_64::{__m128i, _mm_loadu_si128};
         // SAFETY: rows `r` (0..4) are the 16 bytes at `p + r·width` pixels, inside `px`
-        // (the caller's promise), of 32-bit words (`Word32`: no padding, every bit pattern valid);
+        // (checked above), of 32-bit words (`Word32`: no padding, every bit pattern valid);
         // SSE2 is the baseline.
         let row = |r: usize| unsafe { _mm_loadu_si128(p.add(r * width) as *const __m128i) };
         let v = [row(0), row(1), row(2), row(3)];
@@ -483,48 +473,19 @@ unsafe fn load_block_avx2<T: Word32>(p: *const T, width: usize) -> [T; 16] {
 #[inline(always)]
 pub fn store_block<T: Word32>(level: Supported, px: &mut [T], base: usize, width: usize, values: &[T; 16]) {
     assert!(block_inside(px.len(), base, width), "a block's rows lie inside its slice");
-    // SAFETY: checked just above.
-    unsafe { store_rows(level, px, base, width, values) }
-}
-
-/// Reads a block ([`load_block`]), hands its pixels to `f` and stores what `f` returns in
-/// their place ([`store_block`]), the rows checked once for both (two checks cost a dozen
-/// instructions a block: LLVM does not merge them). Panics if a row lies outside `px`.
-#[inline(always)]
-pub fn update_block<T: Word32>(
-    level: Supported,
-    px: &mut [T],
-    base: usize,
-    width: usize,
-    f: impl FnOnce(&[T; 16]) -> [T; 16],
-) {
-    assert!(block_inside(px.len(), base, width), "a block's rows lie inside its slice");
-    // SAFETY: checked just above, for both.
-    unsafe {
-        let new = f(&load_rows(level, px, base, width));
-        store_rows(level, px, base, width, &new)
-    }
-}
-
-/// [`store_block`] without the check.
-///
-/// # Safety
-/// The four rows must lie inside `px` (`block_inside(px.len(), base, width)`).
-#[inline(always)]
-unsafe fn store_rows<T: Word32>(level: Supported, px: &mut [T], base: usize, width: usize, values: &[T; 16]) {
     #[cfg(target_arch = "x86_64")]
     {
         let p = px[base..].as_mut_ptr();
         if level.0 == Level::Avx2 {
             // SAFETY: a `Supported` holds only a level the CPU was detected to have: AVX2;
-            // the four rows lie inside `px` (the caller's promise).
+            // the four rows lie inside `px` (checked above).
             return unsafe { store_block_avx2(p, width, values) };
         }
         use std::arch::x86_64::{__m128i, _mm_loadu_si128, _mm_storeu_si128};
         let v = values.as_ptr() as *const __m128i;
         for r in 0..4 {
             // SAFETY: `values` is 64 bytes, read as four 16-byte vectors; row `r` is the 16
-            // bytes at `p + r·width` pixels, inside `px` (the caller's promise), of 32-bit words
+            // bytes at `p + r·width` pixels, inside `px` (checked above), of 32-bit words
             // (`Word32`), written whole; SSE2 is the baseline.
             unsafe { _mm_storeu_si128(p.add(r * width) as *mut __m128i, _mm_loadu_si128(v.add(r))) }
         }

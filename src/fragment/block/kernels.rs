@@ -158,45 +158,27 @@ impl TargetKernel {
             Kind::Unorm8Store => store8(p, px, at, src, None, live),
             Kind::Unorm8LogicOp => {
                 if let Some(op) = p.logic_op {
-                    modify8(
-                        p,
-                        px,
-                        at,
-                        live,
-                        #[inline(always)]
-                        |dst| logic_lanes(op, src, dst),
-                    )
+                    let dst = load8(px, at);
+                    store8(p, px, at, &logic_lanes(op, src, &dst), Some(&dst), live);
                 }
             }
             // GL_SRC_ALPHA or GL_ONE, GL_ONE_MINUS_SRC_ALPHA and GL_FUNC_ADD on RGB and alpha
             // alike, on the packed words as 16-bit lanes (`pmullw`/`pmulhuw`, four pixels per
             // 128-bit vector, the span path's rounding of `mul8` byte for byte).
-            Kind::Unorm8BlendSrcAlpha => modify8(
-                p,
-                px,
-                at,
-                live,
-                #[inline(always)]
-                |dst| blend_inv_src_alpha8::<true>(at.level, src, dst),
-            ),
-            Kind::Unorm8BlendOneInvSrcAlpha => modify8(
-                p,
-                px,
-                at,
-                live,
-                #[inline(always)]
-                |dst| blend_inv_src_alpha8::<false>(at.level, src, dst),
-            ),
+            Kind::Unorm8BlendSrcAlpha => {
+                let dst = load8(px, at);
+                store8(p, px, at, &blend_inv_src_alpha8::<true>(at.level, src, &dst), Some(&dst), live);
+            }
+            Kind::Unorm8BlendOneInvSrcAlpha => {
+                let dst = load8(px, at);
+                store8(p, px, at, &blend_inv_src_alpha8::<false>(at.level, src, &dst), Some(&dst), live);
+            }
             // GL_ONE, GL_ONE and GL_FUNC_ADD on RGB and alpha alike: `mul8(x, 255)` is `x`, so
             // the blend is `min(s + d, 255)` per byte, a saturating byte add.
-            Kind::Unorm8BlendAdd => modify8(
-                p,
-                px,
-                at,
-                live,
-                #[inline(always)]
-                |dst| add_saturate8(at.level, src, dst),
-            ),
+            Kind::Unorm8BlendAdd => {
+                let dst = load8(px, at);
+                store8(p, px, at, &add_saturate8(at.level, src, &dst), Some(&dst), live);
+            }
             _ => {}
         }
     }
@@ -308,38 +290,6 @@ fn store8(p: &TargetParams, px: &mut [[u8; 4]], at: &BlockAt, words: &U32s, old:
         }
     };
     store(px, at, &map_lanes(&words, u32::to_le_bytes), live);
-}
-
-/// Reads a unorm8 target's block as packed words, computes its new words with `f` and stores
-/// them through the channel mask into the lanes of `live`: a block inside the band is read
-/// and written with one bounds check (`simd::dispatch::update_block`), the lanes left alone
-/// taking the words just read.
-#[inline(always)]
-fn modify8(p: &TargetParams, px: &mut [[u8; 4]], at: &BlockAt, live: u16, f: impl FnOnce(&U32s) -> U32s) {
-    if at.valid != 0xffff {
-        let dst = load8(px, at);
-        return store8(p, px, at, &f(&dst), Some(&dst), live);
-    }
-    let keep = p.keep8;
-    crate::simd::dispatch::update_block(
-        at.level,
-        px,
-        at.base,
-        at.width,
-        #[inline(always)]
-        |old| {
-            let dst = map_lanes(old, u32::from_le_bytes);
-            let new = f(&dst);
-            if live == 0xffff && keep == 0 {
-                return map_lanes(&new, u32::to_le_bytes);
-            }
-            let write = super::depth_stencil::expand_mask(live);
-            lanes(|i| {
-                let m = write[i] & !keep;
-                ((new[i] & m) | (dst[i] & !m)).to_le_bytes()
-            })
-        },
-    )
 }
 
 /// `op(s, d)` on every lane, from the truth table (see `logic_op`).
