@@ -723,9 +723,9 @@ fn color_blocks<I: BlockSource>(
 }
 
 /// [`color_blocks`] for one unorm8 target whose kernel takes the colours as packed words
-/// ([`TargetKernel::run_words`]), without an alpha test or shader, with linear fog alone
+/// ([`TargetKernel::run_colors`]), without an alpha test or shader, with linear fog alone
 /// (`fog`) or no fragment program: per block the primitive's colours, the fog written out
-/// ([`LinearFog::apply_body`], inlined), the conversion to words and the target's kernel,
+/// ([`LinearFog::apply_body`], inlined) and the target's kernel,
 /// in one small loop whose lanes stay in registers (the general loop, which serves every
 /// kind, kept them on the stack and reloaded its state from there: about 70 instructions a
 /// block of bookkeeping, callgrind).
@@ -746,17 +746,14 @@ fn word_blocks<I: BlockSource>(
             Some(c) => colors = BlockColors::Uniform(c),
             None => inputs.colors(at.x, at.y, &mut colors),
         }
-        let src = match fog {
-            Some(fog) => {
-                let mut lanes = colors.lanes();
-                let mut coordinate = [[0.0; LANES]];
-                inputs.varying_lanes(at.x, at.y, 0, &mut coordinate);
-                fog.apply_body(&coordinate[0], &mut lanes);
-                kernels::src_words(at.level, &BlockColors::Lanes(lanes))
-            }
-            None => kernels::src_words(at.level, &colors),
-        };
-        target.run_words(px, &at, &src, b.mask);
+        if let Some(fog) = fog {
+            let mut lanes = colors.lanes();
+            let mut coordinate = [[0.0; LANES]];
+            inputs.varying_lanes(at.x, at.y, 0, &mut coordinate);
+            fog.apply_body(&coordinate[0], &mut lanes);
+            colors = BlockColors::Lanes(lanes);
+        }
+        target.run_colors(px, &at, &colors, b.mask);
     }
 }
 

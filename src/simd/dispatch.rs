@@ -725,19 +725,23 @@ unsafe fn add_saturate8_avx2(a: &[u32; 16], b: &[u32; 16]) -> [u32; 16] {
 /// Four channel lanes of integers packed into RGBA words (byte `k`: channel `k`), each
 /// channel clamped to [0, 255] on the way (unsigned saturation: negative values, and the
 /// `i32::MIN` a conversion gives NaN, become 0): a unorm8 conversion's last step. Per row of
-/// four pixels, two signed packs to 16 bits (red with blue, green with alpha), one unsigned
-/// pack to bytes (`r0..3 b0..3 g0..3 a0..3`) and two unpacks that interleave its halves
-/// (`r g r g … b a b a …`, then `r g b a …`): seven instructions, where shifting each channel
-/// into place and OR-ing them costs as many after a clamp per channel. AVX2 does two rows per
-/// 256-bit vector (packs and unpacks work within 128-bit halves). Integer operations: the
-/// same words at every level.
+/// four pixels, two signed packs to 16 bits (red with green, blue with alpha) and one
+/// unsigned pack to bytes give the row in channel order (`r0..3 g0..3 b0..3 a0..3`); SSE4.1
+/// and AVX2 transpose that to pixels with one byte shuffle (four shuffles a row), SSE2 with
+/// four unpacks (seven). Shuffles share one or two ports, and the blends after this use
+/// them too: shifting each channel into place and OR-ing them takes no shuffle but a clamp
+/// per channel more. AVX2 does two rows per 256-bit vector (packs and shuffles work within
+/// 128-bit halves). Integer operations: the same words at every level.
 #[inline(always)]
 pub fn pack_unorm8(level: Supported, c: &[[i32; 16]; 4]) -> [u32; 16] {
     #[cfg(target_arch = "x86_64")]
     {
-        if level.0 == Level::Avx2 {
+        match level.0 {
             // SAFETY: a `Supported` holds only a level the CPU was detected to have: AVX2.
-            return unsafe { pack_unorm8_avx2(c) };
+            Level::Avx2 => return unsafe { pack_unorm8_avx2(c) },
+            // SAFETY: as above: SSE4.1, which implies SSSE3.
+            Level::Sse41 => return unsafe { pack_unorm8_ssse3(c) },
+            _ => {}
         }
         use std::arch::x86_64::{
             __m128i, _mm_loadu_si128, _mm_packs_epi32, _mm_packus_epi16, _mm_srli_si128, _mm_unpacklo_epi16,
@@ -747,6 +751,7 @@ pub fn pack_unorm8(level: Supported, c: &[[i32; 16]; 4]) -> [u32; 16] {
         // SAFETY: each channel is 64 bytes, read as four 16-byte vectors; SSE2 is the baseline.
         let row = |r: usize| unsafe {
             let ch = |k: usize| _mm_loadu_si128(p[k].add(r));
+            // `r0..3 b0..3 g0..3 a0..3`, then `r g r g … b a b a …`, then `r g b a …`.
             let x = _mm_packus_epi16(_mm_packs_epi32(ch(0), ch(2)), _mm_packs_epi32(ch(1), ch(3)));
             let t = _mm_unpacklo_epi8(x, _mm_srli_si128::<8>(x));
             _mm_unpacklo_epi16(t, _mm_srli_si128::<8>(t))
@@ -767,20 +772,143 @@ pub fn pack_unorm8(level: Supported, c: &[[i32; 16]; 4]) -> [u32; 16] {
 }
 
 #[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "ssse3")]
+#[inline]
+unsafe fn pack_unorm8_ssse3(c: &[[i32; 16]; 4]) -> [u32; 16] {
+    use std::arch::x86_64::{__m128i, _mm_loadu_si128, _mm_packs_epi32, _mm_packus_epi16, _mm_shuffle_epi8};
+    let p = c.each_ref().map(|k| k.as_ptr() as *const __m128i);
+    // SAFETY: 16 bytes read from a 16-byte array.
+    let transpose = unsafe { _mm_loadu_si128(TRANSPOSE4X4.as_ptr() as *const __m128i) };
+    let row = |r: usize| {
+        // SAFETY: each channel is 64 bytes, read as four 16-byte vectors.
+        let ch = |k: usize| unsafe { _mm_loadu_si128(p[k].add(r)) };
+        let x = _mm_packus_epi16(_mm_packs_epi32(ch(0), ch(1)), _mm_packs_epi32(ch(2), ch(3)));
+        _mm_shuffle_epi8(x, transpose)
+    };
+    // SAFETY: four 16-byte vectors are the 64 bytes of 16 u32.
+    unsafe { std::mem::transmute::<[__m128i; 4], [u32; 16]>([row(0), row(1), row(2), row(3)]) }
+}
+
+#[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
 #[inline]
 unsafe fn pack_unorm8_avx2(c: &[[i32; 16]; 4]) -> [u32; 16] {
     use std::arch::x86_64::{
-        __m256i, _mm256_loadu_si256, _mm256_packs_epi32, _mm256_packus_epi16, _mm256_srli_si256, _mm256_unpacklo_epi16,
-        _mm256_unpacklo_epi8,
+        __m128i, __m256i, _mm256_broadcastsi128_si256, _mm256_loadu_si256, _mm256_packs_epi32, _mm256_packus_epi16,
+        _mm256_shuffle_epi8, _mm_loadu_si128,
     };
     let p = c.each_ref().map(|k| k.as_ptr() as *const __m256i);
+    // SAFETY: 16 bytes read from a 16-byte array.
+    let transpose = _mm256_broadcastsi128_si256(unsafe { _mm_loadu_si128(TRANSPOSE4X4.as_ptr() as *const __m128i) });
     let rows = |r: usize| {
         // SAFETY: each channel is 64 bytes, read as two 32-byte vectors.
         let ch = |k: usize| unsafe { _mm256_loadu_si256(p[k].add(r)) };
-        let x = _mm256_packus_epi16(_mm256_packs_epi32(ch(0), ch(2)), _mm256_packs_epi32(ch(1), ch(3)));
-        let t = _mm256_unpacklo_epi8(x, _mm256_srli_si256::<8>(x));
-        _mm256_unpacklo_epi16(t, _mm256_srli_si256::<8>(t))
+        let x = _mm256_packus_epi16(_mm256_packs_epi32(ch(0), ch(1)), _mm256_packs_epi32(ch(2), ch(3)));
+        _mm256_shuffle_epi8(x, transpose)
+    };
+    // SAFETY: two 32-byte vectors are the 64 bytes of 16 u32.
+    unsafe { std::mem::transmute::<[__m256i; 2], [u32; 16]>([rows(0), rows(1)]) }
+}
+
+/// [`blend_inv_src_alpha8`] of source colours given as four channel lanes of integers
+/// (unorm8 values before packing: each at most 255; negative values, and the `i32::MIN` a
+/// conversion gives NaN, count as 0), as `blend_inv_src_alpha8(pack_unorm8(c), dst)` gives
+/// byte for byte. At SSE4.1 and AVX2 the blend runs on the channels as they come, a row of
+/// four pixels as two vectors of 16-bit lanes (red with green, blue with alpha: two signed
+/// packs), with the destination row transposed to that order (one byte shuffle) and the
+/// result transposed back (another): eight shuffles a row, where packing the source into
+/// words and blending them pixel by pixel takes sixteen (seven to pack; two unpacks per
+/// operand, four alpha spreads and a pack to blend), and shuffles are the blend's
+/// bottleneck (they share one or two ports; the multiplies and adds have more). SSE2,
+/// without the byte shuffle, packs and blends the words.
+#[inline(always)]
+pub fn blend_channels_inv_src_alpha8<const SRC_ALPHA: bool>(
+    level: Supported,
+    c: &[[i32; 16]; 4],
+    dst: &[u32; 16],
+) -> [u32; 16] {
+    #[cfg(target_arch = "x86_64")]
+    {
+        match level.0 {
+            // SAFETY: a `Supported` holds only a level the CPU was detected to have: AVX2.
+            Level::Avx2 => return unsafe { blend_channels_inv_src_alpha8_avx2::<SRC_ALPHA>(c, dst) },
+            // SAFETY: as above: SSE4.1, which implies SSSE3.
+            Level::Sse41 => return unsafe { blend_channels_inv_src_alpha8_ssse3::<SRC_ALPHA>(c, dst) },
+            _ => {}
+        }
+    }
+    blend_inv_src_alpha8::<SRC_ALPHA>(level, &pack_unorm8(level, c), dst)
+}
+
+/// The byte shuffle that transposes a row of four RGBA pixels (`r0 g0 b0 a0 r1 …`) to
+/// channel order (`r0 r1 r2 r3 g0 …`) and back: a 4×4 transpose is its own inverse.
+#[cfg(target_arch = "x86_64")]
+const TRANSPOSE4X4: [i8; 16] = [0, 4, 8, 12, 1, 5, 9, 13, 2, 6, 10, 14, 3, 7, 11, 15];
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "ssse3")]
+#[inline]
+unsafe fn blend_channels_inv_src_alpha8_ssse3<const SRC_ALPHA: bool>(c: &[[i32; 16]; 4], dst: &[u32; 16]) -> [u32; 16] {
+    use std::arch::x86_64::{
+        __m128i, _mm_add_epi16, _mm_loadu_si128, _mm_max_epi16, _mm_packs_epi32, _mm_packus_epi16, _mm_set1_epi16,
+        _mm_setzero_si128, _mm_shuffle_epi8, _mm_unpackhi_epi64, _mm_unpackhi_epi8, _mm_unpacklo_epi8, _mm_xor_si128,
+    };
+    let p = c.each_ref().map(|k| k.as_ptr() as *const __m128i);
+    let d = dst.as_ptr() as *const __m128i;
+    // SAFETY: 16 bytes read from a 16-byte array.
+    let transpose = unsafe { _mm_loadu_si128(TRANSPOSE4X4.as_ptr() as *const __m128i) };
+    let zero = _mm_setzero_si128();
+    let row = |r: usize| {
+        // SAFETY: each channel is 64 bytes and `dst` 64 bytes, read as four 16-byte vectors.
+        let (ch, dst) = unsafe { (|k: usize| _mm_loadu_si128(p[k].add(r)), _mm_loadu_si128(d.add(r))) };
+        // Red and green, blue and alpha of the four pixels as 16-bit lanes in [0, 255].
+        let rg = _mm_max_epi16(_mm_packs_epi32(ch(0), ch(1)), zero);
+        let ba = _mm_max_epi16(_mm_packs_epi32(ch(2), ch(3)), zero);
+        let a = _mm_unpackhi_epi64(ba, ba);
+        let ia = _mm_xor_si128(a, _mm_set1_epi16(0xff));
+        let dst = _mm_shuffle_epi8(dst, transpose);
+        let blend = |s: __m128i, d: __m128i| {
+            let sf = if SRC_ALPHA { mul8_epi16(s, a) } else { s };
+            _mm_add_epi16(sf, mul8_epi16(d, ia))
+        };
+        let out = _mm_packus_epi16(blend(rg, _mm_unpacklo_epi8(dst, zero)), blend(ba, _mm_unpackhi_epi8(dst, zero)));
+        _mm_shuffle_epi8(out, transpose)
+    };
+    // SAFETY: four 16-byte vectors are the 64 bytes of 16 u32.
+    unsafe { std::mem::transmute::<[__m128i; 4], [u32; 16]>([row(0), row(1), row(2), row(3)]) }
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+unsafe fn blend_channels_inv_src_alpha8_avx2<const SRC_ALPHA: bool>(c: &[[i32; 16]; 4], dst: &[u32; 16]) -> [u32; 16] {
+    use std::arch::x86_64::{
+        __m128i, __m256i, _mm256_add_epi16, _mm256_broadcastsi128_si256, _mm256_loadu_si256, _mm256_max_epi16,
+        _mm256_packs_epi32, _mm256_packus_epi16, _mm256_set1_epi16, _mm256_setzero_si256, _mm256_shuffle_epi8,
+        _mm256_unpackhi_epi64, _mm256_unpackhi_epi8, _mm256_unpacklo_epi8, _mm256_xor_si256, _mm_loadu_si128,
+    };
+    let p = c.each_ref().map(|k| k.as_ptr() as *const __m256i);
+    let d = dst.as_ptr() as *const __m256i;
+    // Packs, unpacks and byte shuffles work within 128-bit halves, and each half holds one
+    // row of four pixels (channel lanes 0–3 and 4–7 of the 8): each half is the SSSE3 row.
+    // SAFETY: 16 bytes read from a 16-byte array.
+    let transpose = _mm256_broadcastsi128_si256(unsafe { _mm_loadu_si128(TRANSPOSE4X4.as_ptr() as *const __m128i) });
+    let zero = _mm256_setzero_si256();
+    let rows = |r: usize| {
+        // SAFETY: each channel is 64 bytes and `dst` 64 bytes, read as two 32-byte vectors.
+        let (ch, dst) = unsafe { (|k: usize| _mm256_loadu_si256(p[k].add(r)), _mm256_loadu_si256(d.add(r))) };
+        let rg = _mm256_max_epi16(_mm256_packs_epi32(ch(0), ch(1)), zero);
+        let ba = _mm256_max_epi16(_mm256_packs_epi32(ch(2), ch(3)), zero);
+        let a = _mm256_unpackhi_epi64(ba, ba);
+        let ia = _mm256_xor_si256(a, _mm256_set1_epi16(0xff));
+        let dst = _mm256_shuffle_epi8(dst, transpose);
+        let blend = |s: __m256i, d: __m256i| {
+            let sf = if SRC_ALPHA { mul8_epi16_avx2(s, a) } else { s };
+            _mm256_add_epi16(sf, mul8_epi16_avx2(d, ia))
+        };
+        let out =
+            _mm256_packus_epi16(blend(rg, _mm256_unpacklo_epi8(dst, zero)), blend(ba, _mm256_unpackhi_epi8(dst, zero)));
+        _mm256_shuffle_epi8(out, transpose)
     };
     // SAFETY: two 32-byte vectors are the 64 bytes of 16 u32.
     unsafe { std::mem::transmute::<[__m256i; 2], [u32; 16]>([rows(0), rows(1)]) }

@@ -12,8 +12,10 @@
 //!   blend colour; the logic op on the packed words; channel masks as byte masks. The
 //!   common factor pairs have their own kernels on the packed words
 //!   (GL_SRC_ALPHA or GL_ONE with GL_ONE_MINUS_SRC_ALPHA as 16-bit lanes with `pmullw`,
-//!   GL_ONE/GL_ONE as a saturating byte add: `simd::dispatch`'s blend helpers), the rest
-//!   call one function pointer per factor and channel.
+//!   GL_ONE/GL_ONE as a saturating byte add: `simd::dispatch`'s blend helpers; the first
+//!   pair takes interpolated colours as channel lanes, not words, see
+//!   [`TargetKernel::run_colors`]), the rest call one function pointer per factor and
+//!   channel.
 //! - RGB565 targets: the unorm8 blend on the widened destination, dither or truncation to
 //!   5/6 bits, the logic op on the packed words, channel masks as bit masks.
 //! - 16-bit unorm and float targets: the span path's f32 stages (`super::super::output`),
@@ -124,7 +126,7 @@ impl TargetKernel {
             | Kind::Unorm8BlendAdd
             | Kind::Unorm8BlendOneInvSrcAlpha => {
                 if let ColorBand::Unorm8(px) = band {
-                    self.run_words(px, at, &src_words(at.level, colors), live)
+                    self.run_colors(px, at, colors, live)
                 }
             }
             Kind::Unorm8Blend => unorm8_blend(p, band, at, colors, live),
@@ -145,6 +147,30 @@ impl TargetKernel {
                 | Kind::Unorm8BlendAdd
                 | Kind::Unorm8BlendOneInvSrcAlpha
         )
+    }
+
+    /// Writes the lanes of `live` of a block's source colours into a unorm8 target: the
+    /// kernels of [`Self::takes_words`] (any other kind writes nothing). The blends with
+    /// GL_ONE_MINUS_SRC_ALPHA take interpolated colours as channel lanes
+    /// (`simd::dispatch::blend_channels_inv_src_alpha8`), the rest as packed words
+    /// ([`Self::run_words`]). Inlined into its caller's per-level copy, as [`Self::run`].
+    #[inline(always)]
+    pub fn run_colors(&self, px: &mut [[u8; 4]], at: &BlockAt, colors: &BlockColors, live: u16) {
+        use crate::simd::dispatch::blend_channels_inv_src_alpha8;
+        let (p, level) = (&self.params, at.level);
+        match (colors, self.kind) {
+            (BlockColors::Lanes(l), Kind::Unorm8BlendSrcAlpha) => {
+                let dst = load8(px, at);
+                let words = blend_channels_inv_src_alpha8::<true>(level, &unorm8_channels(level, l), &dst);
+                store8(p, px, at, &words, Some(&dst), live)
+            }
+            (BlockColors::Lanes(l), Kind::Unorm8BlendOneInvSrcAlpha) => {
+                let dst = load8(px, at);
+                let words = blend_channels_inv_src_alpha8::<false>(level, &unorm8_channels(level, l), &dst);
+                store8(p, px, at, &words, Some(&dst), live)
+            }
+            _ => self.run_words(px, at, &src_words(level, colors), live),
+        }
     }
 
     /// Writes the lanes of `live` of a block's source colours, converted to packed unorm8
@@ -236,6 +262,13 @@ pub fn src_words(level: Supported, colors: &BlockColors) -> U32s {
 /// [`src_words`] of four channel lanes.
 #[inline(always)]
 fn lane_words(level: Supported, l: &[F32s; 4]) -> U32s {
+    pack_unorm8(level, &unorm8_channels(level, l))
+}
+
+/// Four channel lanes capped at 1, scaled and rounded to integers: unorm8 values once
+/// negative ones are taken as 0 (see [`src_words`]).
+#[inline(always)]
+fn unorm8_channels(level: Supported, l: &[F32s; 4]) -> [[i32; LANES]; 4] {
     let scaled = |x: &F32s| {
         let capped = lanes(|i| {
             let v = x[i];
@@ -244,7 +277,7 @@ fn lane_words(level: Supported, l: &[F32s; 4]) -> U32s {
         });
         round_even_i32(level, &capped)
     };
-    pack_unorm8(level, &[scaled(&l[0]), scaled(&l[1]), scaled(&l[2]), scaled(&l[3])])
+    [scaled(&l[0]), scaled(&l[1]), scaled(&l[2]), scaled(&l[3])]
 }
 
 /// A block's colours as unorm8 channel lanes (the span path's `float_to_unorm`).
