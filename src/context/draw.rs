@@ -88,6 +88,31 @@ fn split_point(mode: GLenum, geometry: &Geometry, vertices: usize, threads: usiz
     }
 }
 
+/// The vertices of a segment of a long draw whose recording overlaps with rendering the
+/// segment before it ([`Context::record_while_rendering`]): 8 batches of `BATCH_VERTICES`
+/// (small_triangles, 100 000 triangles at 1024², is recorded in 13 segments).
+const OVERLAP_SEGMENT_VERTICES: usize = 8 * crate::context::vertex_input::BATCH_VERTICES;
+
+#[cfg(test)]
+thread_local! {
+    /// Whether long draws overlap their recording with rendering (tests turn it off to
+    /// compare the bytes).
+    pub(crate) static OVERLAP_ENABLED: std::cell::Cell<bool> = const { std::cell::Cell::new(true) };
+}
+
+/// Whether long draws may overlap their recording with rendering: unless
+/// `TESSERA_OVERLAP=0` (to measure what the overlap gains), or a test turns it off
+/// ([`OVERLAP_ENABLED`]).
+fn overlap_enabled() -> bool {
+    #[cfg(test)]
+    return OVERLAP_ENABLED.with(|on| on.get());
+    #[cfg(not(test))]
+    {
+        static ENABLED: std::sync::OnceLock<bool> = std::sync::OnceLock::new();
+        *ENABLED.get_or_init(|| std::env::var("TESSERA_OVERLAP").map_or(true, |v| v.trim() != "0"))
+    }
+}
+
 #[cfg(test)]
 thread_local! {
     /// The most bytes a scene of this thread has recorded when a draw (or part) ended: what
@@ -406,6 +431,77 @@ impl Context {
         drop(guard);
         scene.clear();
         self.spare_scene = Some(scene);
+    }
+
+    /// The vertices of each segment a long draw of `count` vertices into the window is
+    /// recorded in when the segments overlap with rendering (see
+    /// [`Context::record_while_rendering`]); `None` when it is recorded whole: one render
+    /// thread (nothing to overlap with), a framebuffer object (its images are assembled on
+    /// the context's thread), selection or feedback, or a draw too short to split.
+    pub(in crate::context) fn overlap_segment(&self, count: usize) -> Option<usize> {
+        let segment = OVERLAP_SEGMENT_VERTICES;
+        // Tests overlap on every machine, so the overlap's bytes are checked everywhere.
+        let threads = if cfg!(test) { thread_count().max(2) } else { thread_count() };
+        let overlaps = threads >= 2
+            && count >= 2 * segment
+            && self.fbo.draw == 0
+            && self.drawable.is_some()
+            && self.rendering()
+            && overlap_enabled();
+        overlaps.then_some(segment)
+    }
+
+    /// Renders the pending scene into the window on a thread of its own while `record` (the
+    /// next segment of a long draw) records on this one into a new scene: the recording
+    /// thread and the tile workers no longer take turns. Rendering a scene early changes no
+    /// pixel (as for a scene over its budget, [`Context::keep_scene`]): each pixel still sees
+    /// every primitive in submission order, the drawable's lock keeps the order (the render
+    /// holds it before `record` starts, and anything `record` does to the framebuffer waits
+    /// for it). While it renders, the window's shape is answered from what it was
+    /// (`window_pinned`), without waiting for the lock.
+    ///
+    /// The render takes one thread fewer than a flush (the recording thread keeps a core).
+    pub(in crate::context) fn record_while_rendering(&mut self, record: impl FnOnce(&mut Context)) {
+        let window = self.drawable.clone().filter(|_| self.fbo.draw == 0);
+        let (Some(drawable), Some(scene)) = (window, self.scene.take()) else {
+            return record(self);
+        };
+        self.window_pinned = self.window_shape(false).map(|shape| (shape, self.samples_of(0)));
+        let overwrites = std::mem::take(&mut self.scene_overwrites_front);
+        let threads = thread_count().saturating_sub(1).max(1);
+        let rendered = std::thread::scope(|s| {
+            let (locked, holding) = std::sync::mpsc::channel();
+            let render = s.spawn(move || {
+                let mut scene = scene;
+                let mut guard = drawable.lock().unwrap_or_else(|p| p.into_inner());
+                let _ = locked.send(());
+                if overwrites {
+                    // No need to bring home an image the scene replaces whole (as run_scene).
+                    guard.front_image_replaced();
+                }
+                let fb = guard.framebuffer_to_draw();
+                if scene.size() == (fb.width(), fb.height()) {
+                    scene.execute_on(fb, threads);
+                }
+                drop(guard);
+                scene.clear();
+                scene
+            });
+            // (A render that panicked before locking sends nothing: recording goes on, and
+            // the panic is raised below.)
+            let _ = holding.recv();
+            record(self);
+            render.join()
+        });
+        self.window_pinned = None;
+        match rendered {
+            Ok(scene) => {
+                if self.spare_scene.is_none() {
+                    self.spare_scene = Some(scene);
+                }
+            }
+            Err(panic) => std::panic::resume_unwind(panic),
+        }
     }
 
     /// Rasterizes `scene` into the bound framebuffer, then keeps it, emptied, for the next

@@ -294,11 +294,25 @@ impl Context {
             }
             return self.draw_in_parts(mode, source, memory);
         }
-        for start in (0..count).step_by(BATCH_VERTICES) {
-            let Some(batch) = source.sub_range(start, (count - start).min(BATCH_VERTICES)) else {
+        // A long draw into the window is recorded in segments, each while the one before
+        // renders (`Context::record_while_rendering`); otherwise in one.
+        let segment = self.overlap_segment(count).unwrap_or(count).max(1);
+        // The batches of vertices `range` in order; false when one cannot be read.
+        let record = |cx: &mut Context, range: std::ops::Range<usize>| {
+            range.clone().step_by(BATCH_VERTICES).all(|start| {
+                let batch = source.sub_range(start, (range.end - start).min(BATCH_VERTICES));
+                batch.inspect(|&batch| cx.draw_batch(mode, &[batch], memory, DrawPart::WHOLE)).is_some()
+            })
+        };
+        if !record(self, 0..segment.min(count)) {
+            return;
+        }
+        for start in (segment..count).step_by(segment) {
+            let mut complete = true;
+            self.record_while_rendering(|cx| complete = record(cx, start..(start + segment).min(count)));
+            if !complete {
                 return;
-            };
-            self.draw_batch(mode, &[batch], memory, DrawPart::WHOLE);
+            }
         }
     }
 
