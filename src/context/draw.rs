@@ -89,7 +89,7 @@ fn split_point(mode: GLenum, geometry: &Geometry, vertices: usize, threads: usiz
 }
 
 /// The vertices of a segment of a long draw whose recording overlaps with rendering the
-/// segment before it ([`Context::record_while_rendering`]): 8 batches of `BATCH_VERTICES`
+/// segment before it ([`Context::record_in_segments`]): 8 batches of `BATCH_VERTICES`
 /// (small_triangles, 100 000 triangles at 1024², is recorded in 13 segments).
 const OVERLAP_SEGMENT_VERTICES: usize = 8 * crate::context::vertex_input::BATCH_VERTICES;
 
@@ -435,7 +435,7 @@ impl Context {
 
     /// The vertices of each segment a long draw of `count` vertices into the window is
     /// recorded in when the segments overlap with rendering (see
-    /// [`Context::record_while_rendering`]); `None` when it is recorded whole: one render
+    /// [`Context::record_in_segments`]); `None` when it is recorded whole: one render
     /// thread (nothing to overlap with), a framebuffer object (its images are assembled on
     /// the context's thread), selection or feedback, or a draw too short to split.
     pub(in crate::context) fn overlap_segment(&self, count: usize) -> Option<usize> {
@@ -451,59 +451,88 @@ impl Context {
         overlaps.then_some(segment)
     }
 
-    /// Renders the pending scene into the window on a thread of its own while `record` (the
-    /// next segment of a long draw) records on this one into a new scene: the recording
-    /// thread and the tile workers no longer take turns. Rendering a scene early changes no
-    /// pixel (as for a scene over its budget, [`Context::keep_scene`]): each pixel still sees
-    /// every primitive in submission order, the drawable's lock keeps the order (the render
-    /// holds it before `record` starts, and anything `record` does to the framebuffer waits
-    /// for it). While it renders, the window's shape is answered from what it was
+    /// Records the vertices `0..count` of a long draw with `record` (which records a range of
+    /// them, false when it could not), in segments of `segment` vertices into the window:
+    /// each segment after the first while the scene of the one before renders on another
+    /// thread, so that the recording thread and the tile workers no longer take turns.
+    /// Rendering a scene early changes no pixel (as for a scene over its budget,
+    /// [`Context::keep_scene`]): each pixel still sees every primitive in submission order,
+    /// and the drawable's lock keeps that order (the render holds it before the next segment
+    /// records, and anything the recording did to the framebuffer would wait for it). While
+    /// a segment records, the window's shape is answered from what it was
     /// (`window_pinned`), without waiting for the lock.
     ///
-    /// The render takes one thread fewer than a flush (the recording thread keeps a core).
-    pub(in crate::context) fn record_while_rendering(&mut self, record: impl FnOnce(&mut Context)) {
-        let window = self.drawable.clone().filter(|_| self.fbo.draw == 0);
-        let (Some(drawable), Some(scene)) = (window, self.scene.take()) else {
-            return record(self);
-        };
-        self.window_pinned = self.window_shape(false).map(|shape| (shape, self.samples_of(0)));
-        let overwrites = std::mem::take(&mut self.scene_overwrites_front);
-        let threads = thread_count().saturating_sub(1).max(1);
-        let rendered = std::thread::scope(|s| {
-            let (locked, holding) = std::sync::mpsc::channel();
-            let render = s.spawn(move || {
-                let mut scene = scene;
-                let mut guard = drawable.lock().unwrap_or_else(|p| p.into_inner());
-                let _ = locked.send(());
-                if overwrites {
-                    // No need to bring home an image the scene replaces whole (as run_scene).
-                    guard.front_image_replaced();
-                }
-                let fb = guard.framebuffer_to_draw();
-                if scene.size() == (fb.width(), fb.height()) {
-                    scene.execute_on(fb, threads);
-                }
-                drop(guard);
-                scene.clear();
-                scene
-            });
-            // (A render that panicked before locking sends nothing: recording goes on, and
-            // the panic is raised below.)
-            let _ = holding.recv();
-            record(self);
-            render.join()
-        });
-        self.window_pinned = None;
-        match rendered {
-            Ok(scene) => {
-                if self.spare_scene.is_none() {
-                    self.spare_scene = Some(scene);
+    /// One thread renders the segments of the draw, woken for each (a thread spawned per
+    /// segment started late on a loaded machine, every start delaying the recording), with
+    /// one render thread fewer than a flush: the recording thread keeps a core.
+    pub(in crate::context) fn record_in_segments(
+        &mut self,
+        count: usize,
+        segment: usize,
+        mut record: impl FnMut(&mut Context, std::ops::Range<usize>) -> bool,
+    ) {
+        let segment = segment.max(1);
+        let range = |start: usize| start..(start + segment).min(count);
+        if !record(self, range(0)) {
+            return;
+        }
+        let Some(drawable) = self.drawable.clone().filter(|_| self.fbo.draw == 0 && segment < count) else {
+            for start in (segment..count).step_by(segment) {
+                if !record(self, range(start)) {
+                    return;
                 }
             }
-            Err(panic) => std::panic::resume_unwind(panic),
-        }
+            return;
+        };
+        let pinned = self.window_shape(false).map(|shape| (shape, self.samples_of(0)));
+        let threads = thread_count().saturating_sub(1).max(1);
+        std::thread::scope(|s| {
+            let (to_render, scenes) = std::sync::mpsc::channel::<(Scene, bool)>();
+            let (locked_tx, locked) = std::sync::mpsc::channel::<()>();
+            let (rendered_tx, rendered) = std::sync::mpsc::channel::<Scene>();
+            s.spawn(move || {
+                for (mut scene, overwrites) in scenes {
+                    let mut guard = drawable.lock().unwrap_or_else(|p| p.into_inner());
+                    let _ = locked_tx.send(());
+                    if overwrites {
+                        // No need to bring home an image the scene replaces whole (as run_scene).
+                        guard.front_image_replaced();
+                    }
+                    let fb = guard.framebuffer_to_draw();
+                    if scene.size() == (fb.width(), fb.height()) {
+                        scene.execute_on(fb, threads);
+                    }
+                    drop(guard);
+                    scene.clear();
+                    let _ = rendered_tx.send(scene);
+                }
+            });
+            for start in (segment..count).step_by(segment) {
+                let Some(scene) = self.scene.take() else {
+                    if !record(self, range(start)) {
+                        break;
+                    }
+                    continue;
+                };
+                let overwrites = std::mem::take(&mut self.scene_overwrites_front);
+                // A render thread that panicked has hung up: the scope raises its panic.
+                if to_render.send((scene, overwrites)).is_err() || locked.recv().is_err() {
+                    break;
+                }
+                self.window_pinned = pinned;
+                let complete = record(self, range(start));
+                self.window_pinned = None;
+                let Ok(spare) = rendered.recv() else { break };
+                if self.spare_scene.is_none() {
+                    self.spare_scene = Some(spare);
+                }
+                if !complete {
+                    break;
+                }
+            }
+            drop(to_render);
+        });
     }
-
     /// Rasterizes `scene` into the bound framebuffer, then keeps it, emptied, for the next
     /// draws to record into ([`Scene::clear`] says what it keeps).
     fn run_scene(&mut self, mut scene: Scene) {

@@ -93,7 +93,7 @@ pub struct Context {
     /// (`draw::Context::flush_for_presentation`).
     scene_overwrites_front: bool,
     /// The window's shape and samples while a scene renders on another thread during a long
-    /// draw (`draw::Context::record_while_rendering`): what the draw's recording asks of the
+    /// draw (`draw::Context::record_in_segments`): what the draw's recording asks of the
     /// window, without waiting for the drawable's lock.
     window_pinned: Option<((usize, usize, FramebufferConfig), usize)>,
     /// A clear of every depth and stencil value of the window's framebuffer that no draw

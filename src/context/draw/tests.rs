@@ -757,7 +757,7 @@ fn long_draws_keep_the_scene_within_its_budget() {
 
 /// A long array draw of independent triangles into the window is recorded in segments, each
 /// while the segment before it renders on another thread
-/// (`Context::record_while_rendering`): the pixels (blended in order, depth tested after a
+/// (`Context::record_in_segments`): the pixels (blended in order, depth tested after a
 /// depth clear) are those of the draw recorded whole, and the scene left pending holds only
 /// the draw's last segment (without the overlap it holds every triangle).
 #[test]

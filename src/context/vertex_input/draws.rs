@@ -295,8 +295,8 @@ impl Context {
             return self.draw_in_parts(mode, source, memory);
         }
         // A long draw into the window is recorded in segments, each while the one before
-        // renders (`Context::record_while_rendering`); otherwise in one.
-        let segment = self.overlap_segment(count).unwrap_or(count).max(1);
+        // renders (`Context::record_in_segments`); otherwise in one.
+        let segment = self.overlap_segment(count).unwrap_or(count);
         // The batches of vertices `range` in order; false when one cannot be read.
         let record = |cx: &mut Context, range: std::ops::Range<usize>| {
             range.clone().step_by(BATCH_VERTICES).all(|start| {
@@ -304,16 +304,7 @@ impl Context {
                 batch.inspect(|&batch| cx.draw_batch(mode, &[batch], memory, DrawPart::WHOLE)).is_some()
             })
         };
-        if !record(self, 0..segment.min(count)) {
-            return;
-        }
-        for start in (segment..count).step_by(segment) {
-            let mut complete = true;
-            self.record_while_rendering(|cx| complete = record(cx, start..(start + segment).min(count)));
-            if !complete {
-                return;
-            }
-        }
+        self.record_in_segments(count, segment, record);
     }
 
     /// Delivers a long strip, fan, loop or polygon in parts of [`BATCH_VERTICES`] elements,
