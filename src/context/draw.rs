@@ -88,6 +88,31 @@ fn split_point(mode: GLenum, geometry: &Geometry, vertices: usize, threads: usiz
     }
 }
 
+/// The vertices of a segment of a long draw whose recording overlaps with rendering the
+/// segment before it ([`Context::record_in_segments`]): 8 batches of `BATCH_VERTICES`
+/// (small_triangles, 100 000 triangles at 1024², is recorded in 13 segments).
+const OVERLAP_SEGMENT_VERTICES: usize = 8 * crate::context::vertex_input::BATCH_VERTICES;
+
+#[cfg(test)]
+thread_local! {
+    /// Whether long draws overlap their recording with rendering (tests turn it off to
+    /// compare the bytes).
+    pub(crate) static OVERLAP_ENABLED: std::cell::Cell<bool> = const { std::cell::Cell::new(true) };
+}
+
+/// Whether long draws may overlap their recording with rendering: unless
+/// `TESSERA_OVERLAP=0` (to measure what the overlap gains), or a test turns it off
+/// ([`OVERLAP_ENABLED`]).
+fn overlap_enabled() -> bool {
+    #[cfg(test)]
+    return OVERLAP_ENABLED.with(|on| on.get());
+    #[cfg(not(test))]
+    {
+        static ENABLED: std::sync::OnceLock<bool> = std::sync::OnceLock::new();
+        *ENABLED.get_or_init(|| std::env::var("TESSERA_OVERLAP").map_or(true, |v| v.trim() != "0"))
+    }
+}
+
 #[cfg(test)]
 thread_local! {
     /// The most bytes a scene of this thread has recorded when a draw (or part) ended: what
@@ -408,6 +433,106 @@ impl Context {
         self.spare_scene = Some(scene);
     }
 
+    /// The vertices of each segment a long draw of `count` vertices into the window is
+    /// recorded in when the segments overlap with rendering (see
+    /// [`Context::record_in_segments`]); `None` when it is recorded whole: one render
+    /// thread (nothing to overlap with), a framebuffer object (its images are assembled on
+    /// the context's thread), selection or feedback, or a draw too short to split.
+    pub(in crate::context) fn overlap_segment(&self, count: usize) -> Option<usize> {
+        let segment = OVERLAP_SEGMENT_VERTICES;
+        // Tests overlap on every machine, so the overlap's bytes are checked everywhere.
+        let threads = if cfg!(test) { thread_count().max(2) } else { thread_count() };
+        let overlaps = threads >= 2
+            && count >= 2 * segment
+            && self.fbo.draw == 0
+            && self.drawable.is_some()
+            && self.rendering()
+            && overlap_enabled();
+        overlaps.then_some(segment)
+    }
+
+    /// Records the vertices `0..count` of a long draw with `record` (which records a range of
+    /// them, false when it could not), in segments of `segment` vertices into the window:
+    /// each segment after the first while the scene of the one before renders on another
+    /// thread, so that the recording thread and the tile workers no longer take turns.
+    /// Rendering a scene early changes no pixel (as for a scene over its budget,
+    /// [`Context::keep_scene`]): each pixel still sees every primitive in submission order,
+    /// and the drawable's lock keeps that order (the render holds it before the next segment
+    /// records, and anything the recording did to the framebuffer would wait for it). While
+    /// a segment records, the window's shape is answered from what it was
+    /// (`window_pinned`), without waiting for the lock.
+    ///
+    /// One thread renders the segments of the draw, woken for each (a thread spawned per
+    /// segment started late on a loaded machine, every start delaying the recording), with
+    /// one render thread fewer than a flush: the recording thread keeps a core.
+    pub(in crate::context) fn record_in_segments(
+        &mut self,
+        count: usize,
+        segment: usize,
+        mut record: impl FnMut(&mut Context, std::ops::Range<usize>) -> bool,
+    ) {
+        let segment = segment.max(1);
+        let range = |start: usize| start..(start + segment).min(count);
+        if !record(self, range(0)) {
+            return;
+        }
+        let Some(drawable) = self.drawable.clone().filter(|_| self.fbo.draw == 0 && segment < count) else {
+            for start in (segment..count).step_by(segment) {
+                if !record(self, range(start)) {
+                    return;
+                }
+            }
+            return;
+        };
+        let pinned = self.window_shape(false).map(|shape| (shape, self.samples_of(0)));
+        let threads = thread_count().saturating_sub(1).max(1);
+        std::thread::scope(|s| {
+            let (to_render, scenes) = std::sync::mpsc::channel::<(Scene, bool)>();
+            let (locked_tx, locked) = std::sync::mpsc::channel::<()>();
+            let (rendered_tx, rendered) = std::sync::mpsc::channel::<Scene>();
+            s.spawn(move || {
+                for (mut scene, overwrites) in scenes {
+                    let mut guard = drawable.lock().unwrap_or_else(|p| p.into_inner());
+                    let _ = locked_tx.send(());
+                    if overwrites {
+                        // No need to bring home an image the scene replaces whole (as run_scene).
+                        guard.front_image_replaced();
+                    }
+                    let fb = guard.framebuffer_to_draw();
+                    if scene.size() == (fb.width(), fb.height()) {
+                        scene.execute_on(fb, threads);
+                    }
+                    drop(guard);
+                    scene.clear();
+                    let _ = rendered_tx.send(scene);
+                }
+            });
+            for start in (segment..count).step_by(segment) {
+                let Some(scene) = self.scene.take() else {
+                    if !record(self, range(start)) {
+                        break;
+                    }
+                    continue;
+                };
+                let overwrites = std::mem::take(&mut self.scene_overwrites_front);
+                // A render thread that panicked has hung up: the scope raises its panic.
+                if to_render.send((scene, overwrites)).is_err() || locked.recv().is_err() {
+                    break;
+                }
+                self.window_pinned = pinned;
+                let complete = record(self, range(start));
+                self.window_pinned = None;
+                let Ok(spare) = rendered.recv() else { break };
+                if self.spare_scene.is_none() {
+                    self.spare_scene = Some(spare);
+                }
+                if !complete {
+                    break;
+                }
+            }
+            drop(to_render);
+        });
+    }
     /// Rasterizes `scene` into the bound framebuffer, then keeps it, emptied, for the next
     /// draws to record into ([`Scene::clear`] says what it keeps).
     fn run_scene(&mut self, mut scene: Scene) {

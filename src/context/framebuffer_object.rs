@@ -1119,6 +1119,9 @@ impl Context {
 
     /// Samples per pixel of framebuffer object `name` (0: the window's) without assembling it.
     pub(super) fn samples_of(&self, name: u32) -> usize {
+        if let (0, Some((_, samples))) = (name, self.window_pinned) {
+            return samples;
+        }
         if name == 0 {
             let window = self.drawable().map(|d| d.lock().unwrap_or_else(|p| p.into_inner()).framebuffer.samples());
             return window.unwrap_or(1);

@@ -92,6 +92,10 @@ pub struct Context {
     /// front-left color: then what it draws does not depend on the image before it
     /// (`draw::Context::flush_for_presentation`).
     scene_overwrites_front: bool,
+    /// The window's shape and samples while a scene renders on another thread during a long
+    /// draw (`draw::Context::record_in_segments`): what the draw's recording asks of the
+    /// window, without waiting for the drawable's lock.
+    window_pinned: Option<((usize, usize, FramebufferConfig), usize)>,
     /// A clear of every depth and stencil value of the window's framebuffer that no draw
     /// has needed yet (`draw::Context::carry_clear`): kept out of the scenes until a draw
     /// tests depth or stencil, or something reads the buffer.
@@ -150,6 +154,7 @@ impl Context {
             spare_scene: None,
             carried_clear: None,
             scene_overwrites_front: false,
+            window_pinned: None,
             bound_once: false,
             vertex_input: vertex_input::VertexInput::default(),
             buffers: Default::default(),
@@ -247,6 +252,9 @@ impl Context {
     /// The size and layers of the window's framebuffer (`read`: the one pixels are read
     /// from); `None` when no drawable is bound.
     pub fn window_shape(&self, read: bool) -> Option<(usize, usize, FramebufferConfig)> {
+        if let Some((shape, _)) = self.window_pinned.filter(|_| !read || self.read_drawable.is_none()) {
+            return Some(shape);
+        }
         let drawable =
             if read { self.read_drawable.as_ref().or(self.drawable.as_ref()) } else { self.drawable.as_ref() };
         let guard = drawable?.lock().unwrap_or_else(|p| p.into_inner());

@@ -754,3 +754,67 @@ fn long_draws_keep_the_scene_within_its_budget() {
         assert_eq!(delivered.iter().map(|(_, v)| v.len() - 2).sum::<usize>(), N - 2, "{how}: every triangle once");
     }
 }
+
+/// A long array draw of independent triangles into the window is recorded in segments, each
+/// while the segment before it renders on another thread
+/// (`Context::record_in_segments`): the pixels (blended in order, depth tested after a
+/// depth clear) are those of the draw recorded whole, and the scene left pending holds only
+/// the draw's last segment (without the overlap it holds every triangle).
+#[test]
+fn a_long_draw_records_each_segment_while_the_one_before_renders_with_the_same_pixels() {
+    use super::{OVERLAP_ENABLED, OVERLAP_SEGMENT_VERTICES};
+    use crate::context::vertex_input::test_support::{floats, FakeMemory};
+    let triangles = OVERLAP_SEGMENT_VERTICES + 101;
+    let mut seed = 12345u32;
+    let mut random = move || {
+        seed = seed.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+        (seed >> 8) as f32 / (1u32 << 24) as f32
+    };
+    let (mut xyz, mut rgba) = (Vec::new(), Vec::new());
+    for _ in 0..triangles {
+        let (x, y, z) = (random() * 90.0, random() * 90.0, random() * 2.0 - 1.0);
+        let color = [random(), random(), random(), 0.5];
+        for _ in 0..3 {
+            xyz.extend([x + random() * 8.0, y + random() * 8.0, z]);
+            rgba.extend(color);
+        }
+    }
+    let mut memory = FakeMemory::default();
+    let positions = memory.add(0x1000_0000, floats(&xyz));
+    let colors = memory.add(0x2000_0000, floats(&rgba));
+    let draw = |overlap: bool| {
+        OVERLAP_ENABLED.with(|on| on.set(overlap));
+        let (mut ctx, d) = Context::with_test_drawable(
+            FramebufferConfig::single_buffered(
+                ColorFormat::Unorm8 { alpha: true },
+                DepthStencilFormat::Packed24 { depth: true, stencil: false },
+                0,
+            ),
+            96,
+            96,
+        );
+        ctx.matrix_mode(GL_PROJECTION);
+        ctx.ortho(0.0, 96.0, 0.0, 96.0, -1.0, 1.0);
+        ctx.clear_color([0.2, 0.3, 0.4, 1.0]);
+        ctx.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        ctx.set_capability(GL_DEPTH_TEST, true);
+        ctx.depth_func(GL_LEQUAL);
+        ctx.set_capability(GL_BLEND, true);
+        ctx.blend_func(None, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ZERO);
+        ctx.vertex_pointer(3, GL_FLOAT, 0, positions);
+        ctx.color_pointer(4, GL_FLOAT, 0, colors);
+        ctx.enable_client_state(GL_VERTEX_ARRAY, true);
+        ctx.enable_client_state(GL_COLOR_ARRAY, true);
+        ctx.draw_arrays(GL_TRIANGLES, 0, 3 * triangles as i32, &memory);
+        assert_eq!(ctx.take_error(), GL_NO_ERROR);
+        let pending = ctx.scene.as_ref().map_or(0, |s| s.recorded_bytes());
+        let image = pixels(&mut ctx, &d);
+        OVERLAP_ENABLED.with(|on| on.set(true));
+        (image, pending)
+    };
+    let (whole, whole_pending) = draw(false);
+    let (overlapped, overlapped_pending) = draw(true);
+    assert!(whole.iter().filter(|p| p[0] != 51).count() > 96 * 96 / 2, "the triangles cover the window");
+    assert!(overlapped_pending * 3 < whole_pending, "{overlapped_pending} bytes pending of {whole_pending}");
+    assert!(overlapped == whole, "the overlapped draw's pixels differ");
+}

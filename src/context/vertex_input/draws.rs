@@ -294,12 +294,17 @@ impl Context {
             }
             return self.draw_in_parts(mode, source, memory);
         }
-        for start in (0..count).step_by(BATCH_VERTICES) {
-            let Some(batch) = source.sub_range(start, (count - start).min(BATCH_VERTICES)) else {
-                return;
-            };
-            self.draw_batch(mode, &[batch], memory, DrawPart::WHOLE);
-        }
+        // A long draw into the window is recorded in segments, each while the one before
+        // renders (`Context::record_in_segments`); otherwise in one.
+        let segment = self.overlap_segment(count).unwrap_or(count);
+        // The batches of vertices `range` in order; false when one cannot be read.
+        let record = |cx: &mut Context, range: std::ops::Range<usize>| {
+            range.clone().step_by(BATCH_VERTICES).all(|start| {
+                let batch = source.sub_range(start, (range.end - start).min(BATCH_VERTICES));
+                batch.inspect(|&batch| cx.draw_batch(mode, &[batch], memory, DrawPart::WHOLE)).is_some()
+            })
+        };
+        self.record_in_segments(count, segment, record);
     }
 
     /// Delivers a long strip, fan, loop or polygon in parts of [`BATCH_VERTICES`] elements,
