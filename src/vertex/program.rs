@@ -486,9 +486,19 @@ impl Gen {
     /// v · (1/√(v·v)).
     fn normalize(&mut self, v: [Reg; 3]) -> [Reg; 3] {
         let length2 = self.dp3(v, v);
-        let length = self.unary(UnaryOp::Sqrt, length2);
-        let inverse = self.unary(UnaryOp::Rcp, length);
-        v.map(|x| self.binary(BinaryOp::FMul, x, inverse))
+        let inverse = self.unary(UnaryOp::Rsq, length2);
+        self.scaled(v, inverse)
+    }
+
+    /// `v · s`, the components multiplied in the order of [`Gen::dp3`]'s operands (z, y,
+    /// x): after `dp3(v, v)` and its `Rsq`, the executor's one normalize operation
+    /// ([`crate::shader::lower::Op::Normalize3`]; `Rsq` is the square root and the division
+    /// of NIR's lowering, the same two roundings as `Sqrt` then `Rcp`).
+    fn scaled(&mut self, v: [Reg; 3], s: Reg) -> [Reg; 3] {
+        let z = self.binary(BinaryOp::FMul, v[2], s);
+        let y = self.binary(BinaryOp::FMul, v[1], s);
+        let x = self.binary(BinaryOp::FMul, v[0], s);
+        [x, y, z]
     }
 
     /// x when x > 0, else +0 (LIT's max(x, 0), NaN giving 0).
@@ -526,9 +536,8 @@ impl Gen {
             let (vp, local) = if light.local {
                 let d: [Reg; 3] = std::array::from_fn(|k| self.binary(BinaryOp::FSub, position[k], eye[k]));
                 let d2 = self.dp3(d, d);
-                let root = self.unary(UnaryOp::Sqrt, d2);
-                let inv = self.unary(UnaryOp::Rcp, root);
-                (d.map(|x| self.binary(BinaryOp::FMul, x, inv)), Some((inv, d2)))
+                let inv = self.unary(UnaryOp::Rsq, d2);
+                (self.scaled(d, inv), Some((inv, d2)))
             } else {
                 (position, None)
             };

@@ -578,3 +578,32 @@ fn the_direct_transform_gives_the_program_s_vertices_bit_for_bit() {
         assert_eq!(got, want, "case {case}");
     }
 }
+
+#[test]
+fn normalizations_are_one_executor_operation_each() {
+    // The eye normal (GL_NORMALIZE), a local light's direction and its half vector are
+    // written as dp3, Rsq and the products in the dot's order, which the executor fuses:
+    // three normalize operations where the generic form was twelve dispatches.
+    use crate::shader::lower::Op;
+    let light = |local| LightKey { local, spot: false, attenuated: false };
+    let key = VertexKey {
+        clamp_color: true,
+        fog: None,
+        texture_units: Vec::new(),
+        texgen_normals: (false, false),
+        lighting: Some(LightingKey {
+            lights: vec![light(false), light(true)],
+            local_viewer: false,
+            two_side: false,
+            separate_specular: false,
+            normals: NormalsKey::Normalize,
+            tracking: None,
+            shininess_zero: [false, false],
+        }),
+    };
+    let compiled = CompiledVertex::generate(&key).compiled;
+    let ops = &compiled.prepared_code().ops;
+    let normalizations = ops.iter().filter(|op| matches!(op, Op::Normalize3 { .. })).count();
+    assert_eq!(normalizations, 3, "{ops:?}");
+    assert!(!ops.iter().any(|op| matches!(op, Op::Sqrt { .. })), "no square root left but the fused ones");
+}
