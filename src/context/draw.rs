@@ -488,7 +488,7 @@ impl Context {
             let (to_render, scenes) = std::sync::mpsc::channel::<(Scene, bool)>();
             let (locked_tx, locked) = std::sync::mpsc::channel::<()>();
             let (rendered_tx, rendered) = std::sync::mpsc::channel::<Scene>();
-            s.spawn(move || {
+            let render = move || {
                 for (mut scene, overwrites) in scenes {
                     let mut guard = drawable.lock().unwrap_or_else(|p| p.into_inner());
                     let _ = locked_tx.send(());
@@ -504,7 +504,17 @@ impl Context {
                     scene.clear();
                     let _ = rendered_tx.send(scene);
                 }
-            });
+            };
+            if std::thread::Builder::new().spawn_scoped(s, render).is_err() {
+                // No thread to overlap with (the process's thread or memory limits): the rest
+                // is recorded in turn, as a draw without the overlap.
+                for start in (segment..count).step_by(segment) {
+                    if !record(self, range(start)) {
+                        return;
+                    }
+                }
+                return;
+            }
             for start in (segment..count).step_by(segment) {
                 let Some(scene) = self.scene.take() else {
                     if !record(self, range(start)) {
