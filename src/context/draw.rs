@@ -475,11 +475,8 @@ impl Context {
             return;
         }
         let Some(drawable) = self.drawable.clone().filter(|_| self.fbo.draw == 0 && segment < count) else {
-            for start in (segment..count).step_by(segment) {
-                if !record(self, range(start)) {
-                    return;
-                }
-            }
+            // The rest recorded in turn, up to a segment that could not be.
+            (segment..count).step_by(segment).all(|start| record(self, range(start)));
             return;
         };
         let pinned = self.window_shape(false).map(|shape| (shape, self.samples_of(0)));
@@ -508,11 +505,7 @@ impl Context {
             if std::thread::Builder::new().spawn_scoped(s, render).is_err() {
                 // No thread to overlap with (the process's thread or memory limits): the rest
                 // is recorded in turn, as a draw without the overlap.
-                for start in (segment..count).step_by(segment) {
-                    if !record(self, range(start)) {
-                        return;
-                    }
-                }
+                (segment..count).step_by(segment).all(|start| record(self, range(start)));
                 return;
             }
             for start in (segment..count).step_by(segment) {
