@@ -174,47 +174,68 @@ const LOG2_F32: [f32; 5] = {
 /// saturating calls per lane in Rust, not vector instructions).
 const ROUNDER: f32 = 12_582_912.0;
 
-/// The common case of [`fused_multiply_add`] in a lane loop: the rounded f64 sum, and
-/// `slow` set when the lane needs the rare case (the scalar function then decides).
+/// [`fused_multiply_add`] of the lane polynomials' operands: the exact product plus `c` in
+/// double precision, rounded once more to single precision, with none of the checks of the
+/// general function (a sum on a midpoint of the single-precision grid, or under the normal
+/// range), because on the arguments [`exp2_lanes`] and [`log2_lanes`] give it those checks
+/// never change a bit. Measured over every input the two functions' arithmetic sees (every
+/// fraction in [0, 1] for exp2's polynomial, every mantissa and exponent for log2's:
+/// `lane_polynomials_need_no_fused_checks`, ignored for its 3·10⁹ cases, run with
+/// `--ignored`): 138 sums fall on a midpoint, each exact in double precision (so rounding it
+/// to single precision is the fused operation's rounding), and one is zero (+0, as fused);
+/// none is subnormal. The checks were half of the polynomials' instructions (a 64-bit
+/// compare is three instructions at SSE2).
 #[inline(always)]
-#[allow(clippy::neg_cmp_op_on_partial_ord)]
-fn fma_common(a: f32, b: f32, c: f32, slow: &mut bool) -> f32 {
-    let s = a as f64 * b as f64 + c as f64;
-    // A midpoint of the f32 grid, or under the normal range, or NaN (which fails `>=`: one
-    // compare for both).
-    *slow |= (s.to_bits() & 0x1fff_ffff == 0x1000_0000) | !(s.abs() >= f32::MIN_POSITIVE as f64);
-    s as f32
+fn fma_plain(a: f32, b: f32, c: f32) -> f32 {
+    (a as f64 * b as f64 + c as f64) as f32
+}
+
+/// `polynomial(r, EXP2_POLYNOMIAL)`, its terms in its order, with `fma` for its fused
+/// multiply-adds.
+#[inline(always)]
+fn exp2_lane_polynomial(r: f32, fma: impl Fn(f32, f32, f32) -> f32) -> f32 {
+    let c = EXP2_F32;
+    let r2 = r * r;
+    let odd = fma(r2, c[5], c[3]);
+    let even = fma(r2, c[4], c[2]);
+    let odd = fma(r2, odd, c[1]);
+    let even = fma(r2, even, c[0]);
+    fma(odd, r, even)
+}
+
+/// `polynomial(y², LOG2_POLYNOMIAL)`, its terms in its order, with `fma` for its fused
+/// multiply-adds.
+#[inline(always)]
+fn log2_lane_polynomial(y: f32, fma: impl Fn(f32, f32, f32) -> f32) -> f32 {
+    let c = LOG2_F32;
+    let z = y * y;
+    let z2 = z * z;
+    let even = fma(z2, c[4], c[2]);
+    let odd = fma(z2, c[3], c[1]);
+    let even = fma(z2, even, c[0]);
+    fma(odd, z, even)
 }
 
 /// [`log2`] of sixteen lanes of f32 bits, the same bits: the common case branch-free over
 /// the lanes (so that it vectorises), then the scalar function for the lanes it does not
-/// cover (NaN, negative, +∞, and the rare fused multiply-adds). Zero (−∞) is a lane of the
-/// common case: `pow(max(dot(n, h), 0.0), e)` takes it in every lane facing away from a
-/// light, and the scalar calls for those were 2 % of a Phong shader's instructions.
+/// cover (NaN, negative, +∞). Zero (−∞) is a lane of the common case:
+/// `pow(max(dot(n, h), 0.0), e)` takes it in every lane facing away from a light, and the
+/// scalar calls for those were 2 % of a Phong shader's instructions.
 #[inline(always)]
 pub fn log2_lanes(x: &[u32; 16]) -> [u32; 16] {
-    let c = LOG2_F32;
     let mut out = [0u32; 16];
     let mut slow = [false; 16];
     for i in 0..16 {
         let bits = x[i];
         let v = f32::from_bits(bits);
         let zero = v == 0.0;
-        let mut s = (v < 0.0) | v.is_nan() | (v == f32::INFINITY);
         let exponent = (((bits & 0x7f80_0000) >> 23) as i32 - 127) as f32;
         let mantissa = f32::from_bits((bits & 0x007f_ffff) | 1.0f32.to_bits());
         let y = (mantissa - 1.0) / (mantissa + 1.0);
-        // polynomial(y², LOG2_POLYNOMIAL), its terms in its order.
-        let z = y * y;
-        let z2 = z * z;
-        let even = fma_common(z2, c[4], c[2], &mut s);
-        let odd = fma_common(z2, c[3], c[1], &mut s);
-        let even = fma_common(z2, even, c[0], &mut s);
-        let p = fma_common(odd, z, even, &mut s);
-        let value = fma_common(y, p, exponent, &mut s).to_bits();
+        let value = fma_plain(y, log2_lane_polynomial(y, fma_plain), exponent).to_bits();
         // ±0: −∞ as [`log2`] gives it (the arithmetic above is of the bits 0, and ignored).
         out[i] = if zero { f32::NEG_INFINITY.to_bits() } else { value };
-        slow[i] = s & !zero;
+        slow[i] = (v < 0.0) | v.is_nan() | (v == f32::INFINITY);
     }
     for i in 0..16 {
         if slow[i] {
@@ -225,15 +246,14 @@ pub fn log2_lanes(x: &[u32; 16]) -> [u32; 16] {
 }
 
 /// [`exp2`] of sixteen lanes of f32 bits, the same bits (as [`log2_lanes`]; the scalar
-/// function takes NaN and the rare fused multiply-adds).
+/// function takes NaN).
 #[inline(always)]
 pub fn exp2_lanes(x: &[u32; 16]) -> [u32; 16] {
-    let c = EXP2_F32;
     let mut out = [0u32; 16];
     let mut slow = [false; 16];
     for i in 0..16 {
         let v = f32::from_bits(x[i]);
-        let mut s = v.is_nan();
+        slow[i] = v.is_nan();
         // v.clamp(EXP2_MIN, 128.0) and floor_f32 of it (|v| < 2²³, not NaN), branch-free.
         let v = if v < EXP2_MIN { EXP2_MIN } else { v };
         let v = if v > 128.0 { 128.0 } else { v };
@@ -247,16 +267,7 @@ pub fn exp2_lanes(x: &[u32; 16]) -> [u32; 16] {
         // 2^⌊v⌋ from the bits of ⌊v⌋ + 127 + 2²³, whose low 23 bits are ⌊v⌋ + 127 (0 to 255).
         let biased = floor + (8_388_608.0 + 127.0);
         let whole = f32::from_bits((biased.to_bits() & 0x007f_ffff) << 23);
-        // polynomial(v − floor, EXP2_POLYNOMIAL), its terms in its order.
-        let r = v - floor;
-        let r2 = r * r;
-        let odd = fma_common(r2, c[5], c[3], &mut s);
-        let even = fma_common(r2, c[4], c[2], &mut s);
-        let odd = fma_common(r2, odd, c[1], &mut s);
-        let even = fma_common(r2, even, c[0], &mut s);
-        let p = fma_common(odd, r, even, &mut s);
-        out[i] = (whole * p).to_bits();
-        slow[i] = s;
+        out[i] = (whole * exp2_lane_polynomial(v - floor, fma_plain)).to_bits();
     }
     for i in 0..16 {
         if slow[i] {
@@ -398,6 +409,102 @@ mod tests {
             assert_eq!(exp2_lanes(&x), want_exp2, "exp2 of {:?}", x.map(f32::from_bits));
             assert_eq!(log2_lanes(&x), want_log2, "log2 of {:?}", x.map(f32::from_bits));
         }
+    }
+
+    /// The inputs of [`exp2_lanes`] whose polynomial has a double-precision sum on a
+    /// midpoint of the single-precision grid (found by `lane_polynomials_need_no_fused_checks`;
+    /// the fraction 1 comes from tiny negative inputs).
+    const EXP2_MIDPOINT_INPUTS: [u32; 10] = [
+        0x3e200000, 0x3e438000, 0x3e780000, 0x3e825000, 0x3ea19000, 0x3ed7bf80, 0x3f2c0b60, 0x3f380000, 0x3f7e26c4,
+        0xb2800000, // −2⁻²⁶: its fraction v − ⌊v⌋ rounds to 1
+    ];
+
+    /// The same for [`log2_lanes`] (its last multiply-add, the exponent's sum).
+    const LOG2_MIDPOINT_INPUTS: [u32; 127] = [
+        0x3f08e46b, 0x3f111111, 0x3f945ae8, 0x3e981181, 0x40181181, 0x3f1bb4a4, 0x3da01201, 0x3e201201, 0x40a01201,
+        0x41201201, 0x3f21fb78, 0x3ba49249, 0x3c249249, 0x3ca49249, 0x3d249249, 0x41a49249, 0x42249249, 0x42a49249,
+        0x43249249, 0x3f2be0c2, 0x3f34daca, 0x3f3a2e19, 0x3fbb13b1, 0x3f3d0f01, 0x3fcc0ed4, 0x3f5122b7, 0x3f5316b1,
+        0x3ed55555, 0x40555555, 0x3f57bd33, 0x3fd9e652, 0x3fd9e653, 0x3de15a74, 0x3e615a74, 0x40e15a74, 0x41615a74,
+        0x3f61b5fe, 0x3f61b5ff, 0x3f642c85, 0x3f642c86, 0x3f68f4a1, 0x3f68f4a2, 0x3f6b05fc, 0x3f6b7538, 0x3f6bd613,
+        0x3f6c16c1, 0x3f713787, 0x3f7158d1, 0x3f7158d2, 0x3f724288, 0x3ff2e5fa, 0x3ff2e5fb, 0x3f73ada5, 0x3f754223,
+        0x3f756cac, 0x3f7602a6, 0x3f7602a7, 0x3ef706f5, 0x407706f5, 0x3f7854e4, 0x3f7a57a8, 0x3f7aaaba, 0x3f7aaabb,
+        0x3f7b1840, 0x3f7beb39, 0x3f7cbab1, 0x3f7db5c2, 0x3f7db5c3, 0x3f7e179c, 0x3f7e2255, 0x3f7e4881, 0x3f7edb21,
+        0x3f7edb22, 0x3f7edb23, 0x3f7ee75d, 0x3f7ee75e, 0x3f7eefc1, 0x3f7eefc2, 0x3f7f7631, 0x3f7f7632, 0x3f7f79d7,
+        0x3f7f860b, 0x3f7f9e6c, 0x3f7fb6d0, 0x3f7fc708, 0x3f7fe202, 0x3f7fe203, 0x3f7feb01, 0x3f7ff1c0, 0x3f7ff520,
+        0x3f7ff6e2, 0x3f7ff6e3, 0x3f7ff7a8, 0x3f7ffbe0, 0x3f7ffcf7, 0x3f7ffe83, 0x3f7ffef8, 0x3f7fff75, 0x3f7fff76,
+        0x3f7fff77, 0x3f7fffa3, 0x3f7fffac, 0x3f7fffbd, 0x3f7fffbe, 0x3f7fffbf, 0x3f7fffd4, 0x3f7fffdd, 0x3f7fffde,
+        0x3f7fffe1, 0x3f7fffe2, 0x3f7fffe3, 0x3f7ffff8, 0x3ffffff9, 0x3ffffffa, 0x3efffffb, 0x407ffffb, 0x3ffffffc,
+        0x3bfffffd, 0x3c7ffffd, 0x3cfffffd, 0x3d7ffffd, 0x41fffffd, 0x427ffffd, 0x42fffffd, 0x437ffffd, 0x3ffffffe,
+        0x3fffffff,
+    ];
+
+    /// The inputs whose lane polynomials have a double-precision sum on a midpoint of the
+    /// single-precision grid (the case where rounding twice can differ from rounding once):
+    /// [`exp2_lanes`] and [`log2_lanes`] give the scalar functions' bits there too.
+    #[test]
+    fn lane_forms_agree_where_sums_fall_on_midpoints() {
+        for inputs in [&EXP2_MIDPOINT_INPUTS[..], &LOG2_MIDPOINT_INPUTS[..]] {
+            for chunk in inputs.chunks(16) {
+                let mut x = [1.0f32.to_bits(); 16];
+                x[..chunk.len()].copy_from_slice(chunk);
+                assert_eq!(exp2_lanes(&x), x.map(|b| exp2(f32::from_bits(b)).to_bits()));
+                assert_eq!(log2_lanes(&x), x.map(|b| log2(f32::from_bits(b)).to_bits()));
+            }
+        }
+    }
+
+    /// [`fma_plain`]'s claim, over every argument the lane polynomials see: every fraction
+    /// in [0, 1] for exp2's, every mantissa for log2's and with it every exponent for its last
+    /// multiply-add, the plain double-precision sums give the fused results' bits; and the
+    /// midpoint cases are the ones listed above. About 3·10⁹ cases (a minute at `--release`):
+    /// `cargo test --release --lib lane_polynomials_need_no_fused_checks -- --ignored`.
+    #[test]
+    #[ignore]
+    fn lane_polynomials_need_no_fused_checks() {
+        let on_midpoint =
+            |a: f32, b: f32, c: f32| (a as f64 * b as f64 + c as f64).to_bits() & 0x1fff_ffff == 0x1000_0000;
+        let mut exp2_midpoints = vec![];
+        for bits in 0..=1.0f32.to_bits() {
+            let r = f32::from_bits(bits);
+            let plain = exp2_lane_polynomial(r, fma_plain);
+            assert_eq!(plain.to_bits(), exp2_lane_polynomial(r, fused_multiply_add).to_bits(), "exp2 at {r:e}");
+            let hit = std::cell::Cell::new(false);
+            exp2_lane_polynomial(r, |a, b, c| {
+                hit.set(hit.get() | on_midpoint(a, b, c));
+                fma_plain(a, b, c)
+            });
+            if hit.get() {
+                exp2_midpoints.push(bits);
+            }
+        }
+        let mut log2_midpoints = vec![];
+        for mantissa_bits in 0..1u32 << 23 {
+            let mantissa = f32::from_bits(mantissa_bits | 1.0f32.to_bits());
+            let y = (mantissa - 1.0) / (mantissa + 1.0);
+            let p = log2_lane_polynomial(y, fma_plain);
+            assert_eq!(p.to_bits(), log2_lane_polynomial(y, fused_multiply_add).to_bits(), "log2 at {mantissa:e}");
+            let hit = std::cell::Cell::new(false);
+            log2_lane_polynomial(y, |a, b, c| {
+                hit.set(hit.get() | on_midpoint(a, b, c));
+                fma_plain(a, b, c)
+            });
+            assert!(!hit.get(), "log2's polynomial at {mantissa:e} is not in the list");
+            for exponent in -127..=127 {
+                let e = exponent as f32;
+                assert_eq!(
+                    fma_plain(y, p, e).to_bits(),
+                    fused_multiply_add(y, p, e).to_bits(),
+                    "log2 at {mantissa:e}·2^{e}"
+                );
+                if on_midpoint(y, p, e) {
+                    log2_midpoints.push((((exponent + 127) as u32) << 23) | mantissa_bits);
+                }
+            }
+        }
+        let mut listed = EXP2_MIDPOINT_INPUTS.to_vec();
+        *listed.last_mut().unwrap() = 1.0f32.to_bits();
+        assert_eq!(exp2_midpoints, listed);
+        assert_eq!(log2_midpoints, LOG2_MIDPOINT_INPUTS);
     }
 
     /// llvmpipe's approximations: their measured error (the bounds a little above it), the
