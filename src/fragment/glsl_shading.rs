@@ -250,9 +250,17 @@ impl GlslShading {
         }
         scratch.prepare(self);
         let aligned = !self.derivatives || (self.textures.fb_height - y) & 1 == 0;
-        let passes: [(i32, u16); 2] = if aligned { [(0, live), (0, 0)] } else { [(-1, live << 4), (3, live >> 12)] };
+        let px: F32s = std::array::from_fn(|i| (x + (i & 3) as i32) as f32 + 0.5);
+        if aligned {
+            // One pass over the block itself: its inputs and results in `colors` and `depth`
+            // directly (the shifted passes' copies below were five `memcpy` calls a block).
+            inputs(y, colors, depth, &mut scratch.varyings[..self.varyings]);
+            let py: F32s = std::array::from_fn(|i| (y + (i >> 2) as i32) as f32 + 0.5);
+            return self.run(scratch, live, front_facing, &px, &py, colors, depth) & live;
+        }
+        // The block straddles llvmpipe's quads: the rows above and below, shifted.
         let mut survivors = 0;
-        for (dy, lanes) in passes {
+        for (dy, lanes) in [(-1, live << 4), (3, live >> 12)] {
             if lanes == 0 {
                 continue;
             }
@@ -260,15 +268,10 @@ impl GlslShading {
             let mut primary = [[0.0; LANES]; 4];
             let mut z = [0.0; LANES];
             inputs(y0, &mut primary, &mut z, &mut scratch.varyings[..self.varyings]);
-            let px: F32s = std::array::from_fn(|i| (x + (i & 3) as i32) as f32 + 0.5);
             let py: F32s = std::array::from_fn(|i| (y0 + (i >> 2) as i32) as f32 + 0.5);
             let kept = self.run(scratch, lanes, front_facing, &px, &py, &mut primary, &mut z);
             // Back to the block's lanes: the shifted block's lane j is the block's j − 4·dy.
-            let (from, to, count) = match dy {
-                0 => (0, 0, LANES),
-                -1 => (4, 0, 12),
-                _ => (0, 12, 4),
-            };
+            let (from, to, count) = if dy < 0 { (4, 0, 12) } else { (0, 12, 4) };
             for (c, p) in colors.iter_mut().zip(&primary) {
                 c[to..to + count].copy_from_slice(&p[from..from + count]);
             }

@@ -63,6 +63,12 @@
 //! Together (`tools/bench/bench.c`'s `phong_shader`, 256², one thread, release build without
 //! LTO, AVX2, callgrind): the whole process 1 227 → 1 161 million instructions (≈ 17 560 →
 //! 16 610 per shaded block), the same bytes at SSE2 and AVX2.
+//! Their polynomials' fused multiply-adds are then plain double-precision sums, without
+//! the general emulation's midpoint and subnormal checks (`math::fma_plain`: exhaustively the
+//! same bits on every input they see): 256², one thread, release build without LTO, 65 536
+//! blocks, the whole process 1 114 → 1 065 million instructions at AVX2 (−752 per block;
+//! pow's exp2 and log2 were ≈ 1 350 per block in the LTO build), 1 335 → 1 263 million at
+//! SSE2 (−1 096: a 64-bit compare is three instructions there), the same bytes.
 //! Tried and dropped: every operation reading a fixed-size file through register numbers
 //! masked to it (4096 words, no bounds checks; a larger program would not link): each
 //! operand's compare and branch (26.7 million instructions on phong at 256²) became an `and`
