@@ -614,7 +614,7 @@ fn a_light_without_specular_light_raises_no_power_and_gives_the_same_bits() {
     // must be the bits of the program that raises it and of the reference, for the normals
     // where the power is infinite (a tiny normal whose normalization overflows), NaN normals,
     // zero ones, and a vertex at a light's position (infinite or NaN attenuation).
-    let mut rng = Rng(0x5eed_0f_11_6475);
+    let mut rng = Rng(0x5eed_0f11_6475);
     let mut executor = Executor::new();
     let mut skipped = 0;
     for case in 0..600 {
