@@ -98,7 +98,20 @@ impl TriangleSetup {
             return None;
         }
         let fixed = |p: [f32; 2]| [snap(p[0]), snap(p[1])];
-        let mut v = [fixed(window[0]), fixed(window[1]), fixed(window[2])];
+        Self::from_snapped([fixed(window[0]), fixed(window[1]), fixed(window[2])])
+    }
+
+    /// A vertex's window coordinates snapped as [`TriangleSetup::new`] snaps them, `None`
+    /// outside the guard band: for the callers that snap each vertex of a strip once and
+    /// set up its triangles with [`TriangleSetup::from_snapped`] (the same setups).
+    #[inline(always)]
+    pub fn snapped(p: [f32; 2]) -> Option<[i64; 2]> {
+        (p[0].abs() <= GUARD_BAND && p[1].abs() <= GUARD_BAND).then(|| [snap(p[0]), snap(p[1])])
+    }
+
+    /// [`TriangleSetup::new`] from its vertices snapped ([`TriangleSetup::snapped`]).
+    #[inline(always)]
+    pub fn from_snapped(mut v: [[i64; 2]; 3]) -> Option<TriangleSetup> {
         let area2 = (v[1][0] - v[0][0]) * (v[2][1] - v[0][1]) - (v[2][0] - v[0][0]) * (v[1][1] - v[0][1]);
         if area2 == 0 {
             return None;

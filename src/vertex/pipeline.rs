@@ -10,7 +10,30 @@ use super::point::emit_point;
 use super::triangle::{emit_shaded_triangle, emit_shaded_triangle_with, FlatColors};
 use crate::gl::enums::*;
 use crate::gl::types::GLenum;
+use crate::setup::jobs::triangle::WindowVertex;
+use crate::setup::triangle::TriangleSetup;
 use crate::setup::Scene;
+
+/// A vertex of a filled primitive in window space (for a draw that interpolates no varying
+/// slot), with its coordinates snapped to fixed point for triangle setup.
+#[derive(Clone, Copy)]
+struct Corner {
+    w: WindowVertex<0>,
+    snapped: Option<[i64; 2]>,
+}
+
+/// The corner of a vertex outside the clip planes (its triangles are clipped, so it is
+/// never read).
+const OUTSIDE: WindowVertex<0> = WindowVertex {
+    x: 0.0,
+    y: 0.0,
+    z: 0.0,
+    inv_w: 0.0,
+    color: [0.0; 4],
+    secondary_color: [0.0; 4],
+    tex_coords: [],
+    fog_coord: 0.0,
+};
 
 /// Draws `clip_vertices` as primitives of `mode` into `scene` under the draw state
 /// `state_index`, with the per-draw constants `geometry`. `part` is the part of a long
@@ -47,6 +70,18 @@ pub fn draw<const N: usize>(
     // No varying reads a texture slot (a draw without textures): filled triangles' window
     // vertices leave the slots out.
     let slots_unread = geometry.varyings.iter().all(|a| a.texture_coordinate().is_none());
+    // Vertices shared by several triangles (strips, fans, quads, polygons) are mapped to
+    // window space and snapped once, not once per triangle: the lit mesh's quad strips set
+    // up each vertex three times otherwise. Independent triangles map theirs in place.
+    let corners: Option<Vec<Corner>> = (slots_unread && mode != GL_TRIANGLES).then(|| {
+        let viewport = &geometry.viewport;
+        let corner = |(v, &code): (&ClipVertex<N>, &u32)| {
+            // A vertex outside the planes is only ever clipped: its corner is never read.
+            let w = if code == 0 { viewport.window_without_slots(v) } else { OUTSIDE };
+            Corner { snapped: TriangleSetup::snapped([w.x, w.y]), w }
+        };
+        clip_vertices.iter().zip(&outcodes).map(corner).collect()
+    });
     let split = if !first_vertex && mode == GL_QUADS && geometry.leaves_view_volume(clip_vertices) {
         QuadSplit::SecondDiagonal
     } else {
@@ -92,13 +127,17 @@ pub fn draw<const N: usize>(
                 let (va, vb, vc) = (&clip_vertices[a], &clip_vertices[b], &clip_vertices[c]);
                 let viewport = &geometry.viewport;
                 let back = || [va.back_colors, vb.back_colors, vc.back_colors];
-                if slots_unread {
+                if let Some(corners) = &corners {
+                    let (ca, cb, cc) = (&corners[a], &corners[b], &corners[c]);
+                    let snapped = Some([ca.snapped, cb.snapped, cc.snapped]);
+                    emit_shaded_triangle_with(scene, state_index, geometry, &[ca.w, cb.w, cc.w], snapped, back, flat);
+                } else if slots_unread {
                     let window = |v| viewport.window_without_slots(v);
                     let w = [window(va), window(vb), window(vc)];
-                    emit_shaded_triangle_with(scene, state_index, geometry, &w, back, flat);
+                    emit_shaded_triangle_with(scene, state_index, geometry, &w, None, back, flat);
                 } else {
                     let w = [viewport.window(va), viewport.window(vb), viewport.window(vc)];
-                    emit_shaded_triangle_with(scene, state_index, geometry, &w, back, flat);
+                    emit_shaded_triangle_with(scene, state_index, geometry, &w, None, back, flat);
                 }
             } else {
                 poly.clear();

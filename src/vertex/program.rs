@@ -48,6 +48,31 @@ pub struct LightKey {
     pub local: bool,
     pub spot: bool,
     pub attenuated: bool,
+    /// Per face: the light's specular term is zero times a power whose value does not
+    /// matter, only whether it is infinite ([`power_unneeded`]): the program raises no power.
+    pub no_power: [bool; 2],
+}
+
+/// Whether face `f`'s specular term of enabled light `i` can do without its power: the
+/// term is `(s·a)·p` with the specular product `p` zero (an untracked face's uniform), so
+/// only whether `s·a` is finite counts (∞·0 and NaN·0 are NaN). The base `b` of the power
+/// `s = b^shininess` then stands for it (the same selection by N·L): both are +∞ together
+/// (a normal whose normalization overflowed), and both are finite otherwise, for the
+/// normal (GL_NORMALIZE) and the half vector are unit vectors, up to the rounding of a
+/// subnormal squared length (a factor below 1.23 each), so `b ≤ 1.5` and `s ≤ 2^75` with a
+/// shininess in (0, 128]; the attenuation `a` (≥ 0, +∞ or NaN) is then at most about
+/// 1/k₀ ≤ 2^20 when finite, without a spotlight (whose own power is bounded only as
+/// loosely) and with a constant attenuation k₀ ≥ 10⁻⁶ or none, so that `s·a` stays finite.
+fn power_unneeded(lighting: &Lighting, i: usize, f: usize) -> bool {
+    let (light, face) = (&lighting.lights[i], &lighting.faces[f]);
+    let tracked = lighting.tracking.is_some_and(|t| t.face[f]);
+    let bounded_attenuation = light.spot.is_none() && light.attenuation.is_none_or(|[k0, _, _]| k0 >= 1e-6);
+    matches!(lighting.normals, NormalScaling::Normalize)
+        && !tracked
+        && face.products[i][2] == [0.0; 3]
+        && face.shininess > 0.0
+        && face.shininess <= 128.0
+        && bounded_attenuation
 }
 
 /// How normals are scaled after the normal matrix.
@@ -79,7 +104,13 @@ impl LightingKey {
             lights: lighting
                 .lights
                 .iter()
-                .map(|l| LightKey { local: l.local, spot: l.spot.is_some(), attenuated: l.attenuation.is_some() })
+                .enumerate()
+                .map(|(i, l)| LightKey {
+                    local: l.local,
+                    spot: l.spot.is_some(),
+                    attenuated: l.attenuation.is_some(),
+                    no_power: [0, 1].map(|f| (f == 0 || lighting.two_side) && power_unneeded(lighting, i, f)),
+                })
                 .collect(),
             local_viewer: lighting.local_viewer,
             two_side: lighting.two_side,
@@ -600,9 +631,13 @@ impl Gen {
                     let ndh = n_dot_h.expect("a non-zero shininess needs the half vector");
                     let ndh = signed(self, ndh);
                     let base = self.positive_part(ndh);
-                    let shininess = self.uniform(VertexUniform::Shininess { face: f as u8 });
-                    let power = self.pow(base, shininess);
-                    self.select(lit, power, zero)
+                    if light.no_power[f] {
+                        self.select(lit, base, zero)
+                    } else {
+                        let shininess = self.uniform(VertexUniform::Shininess { face: f as u8 });
+                        let power = self.pow(base, shininess);
+                        self.select(lit, power, zero)
+                    }
                 };
                 let [ambient, diffuse_product, specular_product] = face.products[index];
                 let mut color = primary[f];

@@ -35,8 +35,13 @@ pub fn emit_shaded_triangle<const N: usize>(
     back: [[[f32; 4]; 2]; 3],
     flat: Option<FlatColors>,
 ) {
-    emit_shaded_triangle_with(scene, state, g, w, || back, flat)
+    emit_shaded_triangle_with(scene, state, g, w, None, || back, flat)
 }
+
+/// A triangle's corners snapped to fixed point by the caller ([`TriangleSetup::snapped`]:
+/// `None` outside the guard band), for callers that snap each vertex of a strip once; or
+/// `None`, snapped where the triangle is set up.
+pub type Snapped = Option<[Option<[i64; 2]>; 3]>;
 
 /// [`emit_shaded_triangle`] with the back colors fetched by `back` only when the triangle
 /// uses them (copying them for every triangle of a draw without two-sided lighting cost
@@ -47,6 +52,7 @@ pub fn emit_shaded_triangle_with<const N: usize>(
     state: u32,
     g: &Geometry,
     w: &[WindowVertex<N>; 3],
+    snapped: Snapped,
     back: impl FnOnce() -> [[[f32; 4]; 2]; 3],
     flat: Option<FlatColors>,
 ) {
@@ -54,7 +60,7 @@ pub fn emit_shaded_triangle_with<const N: usize>(
     let flat = flat.map(|f| if use_back { f.back } else { f.front });
     if !use_back && flat.is_none() {
         // The corners as they are (no copy).
-        return emit_triangle(scene, state, g, w, None);
+        return emit_triangle(scene, state, g, w, snapped, None);
     }
     let mut w = *w;
     if use_back {
@@ -67,7 +73,7 @@ pub fn emit_shaded_triangle_with<const N: usize>(
             c.secondary_color = secondary;
         }
     }
-    emit_triangle(scene, state, g, &w, flat.map(|f| f[0]));
+    emit_triangle(scene, state, g, &w, snapped, flat.map(|f| f[0]));
 }
 
 /// Culls, offsets, sets up and bins one window-space triangle.
@@ -76,6 +82,7 @@ pub fn emit_triangle<const N: usize>(
     state: u32,
     g: &Geometry,
     w: &[WindowVertex<N>; 3],
+    snapped: Snapped,
     flat: Option<[f32; 4]>,
 ) {
     let area2 = area2(w);
@@ -103,7 +110,12 @@ pub fn emit_triangle<const N: usize>(
     }
     // The edges first: a triangle that covers no pixel (most of a mesh finer than the
     // pixels) is dropped before its planes are made.
-    let Some(setup) = TriangleSetup::new(w.map(|p| [p.x, p.y])) else { return };
+    let setup = match snapped {
+        Some([Some(a), Some(b), Some(c)]) => TriangleSetup::from_snapped([a, b, c]),
+        Some(_) => None,
+        None => TriangleSetup::new(w.map(|p| [p.x, p.y])),
+    };
+    let Some(setup) = setup else { return };
     scene.add_triangle(state, setup, |setup| {
         let offset = depth_offset(g, w);
         let mut job = TriangleJob::with_setup_by(setup, g.accuracy, w, flat, offset, count, varying);

@@ -453,4 +453,47 @@ mod tests {
         ctx.end();
         assert_eq!(ctx.vertex_input.delivered.len(), 1);
     }
+
+    /// Strips, fans, quads and polygons map each vertex to window space and snap it once
+    /// (`vertex::pipeline`'s corners); independent triangles map theirs per triangle. The
+    /// same triangles drawn either way give the same pixels, depth-tested (their order
+    /// shows), with vertices beyond the far plane and the guard band (clipped) among them.
+    #[test]
+    fn connected_primitives_draw_the_bytes_of_their_triangles_drawn_alone() {
+        use crate::context::draw::replay::{context, pixels, vertex};
+        use crate::vertex::assembly::{assemble, Primitive, QuadSplit};
+        let mut seed = 7u32;
+        let mut rnd = || {
+            seed = seed.wrapping_mul(1664525).wrapping_add(1013904223);
+            (seed >> 8) as f32 / (1 << 24) as f32
+        };
+        let mut vertices: Vec<_> = (0..42)
+            .map(|_| {
+                let (x, y, z) = (rnd() * 240.0 - 20.0, rnd() * 190.0 - 20.0, rnd() * 1.8 - 0.9);
+                vertex(x, y, z, [rnd(), rnd(), rnd(), 1.0])
+            })
+            .collect();
+        vertices[5].position[2] = -3.0;
+        vertices[11].position[0] = 3e7;
+        for mode in [GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN, GL_QUADS, GL_QUAD_STRIP, GL_POLYGON] {
+            // Quads with a vertex outside the view volume split along their other diagonal.
+            let split = if mode == GL_QUADS { QuadSplit::SecondDiagonal } else { QuadSplit::FirstDiagonal };
+            let mut triangles = Vec::new();
+            assemble(mode, vertices.len() as u32, false, split, |p| {
+                if let Primitive::Triangle { v, .. } = p {
+                    triangles.extend(v.map(|i| vertices[i as usize]));
+                }
+            });
+            let render = |mode: GLenum, vertices: &[crate::vertex::Vertex]| {
+                let (mut ctx, d) = context(200, 150);
+                ctx.state.depth.test = true;
+                ctx.clear(GL_DEPTH_BUFFER_BIT);
+                ctx.draw_vertices(mode, vertices);
+                pixels(&mut ctx, &d)
+            };
+            let connected = render(mode, &vertices);
+            assert!(connected.iter().filter(|p| p[0] != 0).count() > 1000, "mode {mode:#x} draws");
+            assert!(connected == render(GL_TRIANGLES, &triangles), "mode {mode:#x}: the pixels differ");
+        }
+    }
 }

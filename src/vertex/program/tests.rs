@@ -152,8 +152,8 @@ fn the_key_holds_the_shape_and_the_uniforms_the_values() {
     assert_eq!(
         key.lights,
         [
-            LightKey { local: false, spot: false, attenuated: false },
-            LightKey { local: true, spot: false, attenuated: false }
+            LightKey { local: false, spot: false, attenuated: false, no_power: [false; 2] },
+            LightKey { local: true, spot: false, attenuated: false, no_power: [false; 2] }
         ]
     );
     state.materials[0].shininess = 5.0;
@@ -585,7 +585,7 @@ fn normalizations_are_one_executor_operation_each() {
     // written as dp3, Rsq and the products in the dot's order, which the executor fuses:
     // three normalize operations where the generic form was twelve dispatches.
     use crate::shader::lower::Op;
-    let light = |local| LightKey { local, spot: false, attenuated: false };
+    let light = |local| LightKey { local, spot: false, attenuated: false, no_power: [false; 2] };
     let key = VertexKey {
         clamp_color: true,
         fog: None,
@@ -606,4 +606,97 @@ fn normalizations_are_one_executor_operation_each() {
     let normalizations = ops.iter().filter(|op| matches!(op, Op::Normalize3 { .. })).count();
     assert_eq!(normalizations, 3, "{ops:?}");
     assert!(!ops.iter().any(|op| matches!(op, Op::Sqrt { .. })), "no square root left but the fused ones");
+}
+
+#[test]
+fn a_light_without_specular_light_raises_no_power_and_gives_the_same_bits() {
+    // Lights whose specular product is zero skip the power (`power_unneeded`): the colours
+    // must be the bits of the program that raises it and of the reference, for the normals
+    // where the power is infinite (a tiny normal whose normalization overflows), NaN normals,
+    // zero ones, and a vertex at a light's position (infinite or NaN attenuation).
+    let mut rng = Rng(0x5eed_0f11_6475);
+    let mut executor = Executor::new();
+    let mut skipped = 0;
+    for case in 0..600 {
+        let mut state = random_lighting_state(&mut rng);
+        for light in state.light.iter_mut() {
+            if rng.below(2) == 0 {
+                light.specular = [0.0, 0.0, 0.0, rng.range(0.0, 1.0)];
+            }
+            if rng.below(2) == 0 {
+                light.spot_cutoff = 180.0;
+            }
+            light.attenuation[0] = rng.pick(&[0.0, 1e-7, 1e-6, 0.5, 1.0]);
+        }
+        state.color_material = rng.below(4) == 0;
+        let normals = if rng.below(8) == 0 { NormalScaling::None } else { NormalScaling::Normalize };
+        let mut inverse_modelview = [0.0f32; 16];
+        for (i, m) in inverse_modelview.iter_mut().enumerate() {
+            *m = if i % 5 == 0 { rng.range(0.5, 2.0) } else { rng.range(-0.5, 0.5) };
+        }
+        let lighting = Lighting::new(&state, inverse_modelview, normals);
+        let key = LightingKey::of(&lighting);
+        let without = LightingKey {
+            lights: key.lights.iter().map(|l| LightKey { no_power: [false; 2], ..*l }).collect(),
+            ..key.clone()
+        };
+        let skips = key.lights.iter().flat_map(|l| l.no_power).filter(|&s| s).count();
+        skipped += skips;
+        let special = [[1e-24, -2e-24, 3e-24], [1e-22, 0.0, 0.0], [0.0; 3], [f32::NAN, 0.0, 1.0], [1e30, 1e30, 0.0]];
+        let local = lighting.lights.iter().find(|l| l.local).map(|l| l.position);
+        let vertices: Vec<([f32; 4], [f32; 3], [f32; 4])> = (0..LANES)
+            .map(|lane| {
+                let [x, y, z] = match local {
+                    Some(p) if lane == 0 => p,
+                    _ => rng.vec3(5.0),
+                };
+                let normal = if lane > 0 && lane <= special.len() { special[lane - 1] } else { rng.vec3(1.0) };
+                ([x, y, z, 1.0], normal, rng.color())
+            })
+            .collect();
+        let mut run = |key: &LightingKey| {
+            let generated = LightingProgram::generate(key);
+            let uniforms = generated.uniform_values(&lighting);
+            let inputs: Vec<Word> = generated
+                .inputs
+                .iter()
+                .map(|source| {
+                    std::array::from_fn(|lane| {
+                        let (eye, normal, color) = &vertices[lane];
+                        match *source {
+                            VertexInput::Eye(k) => eye[k as usize],
+                            VertexInput::Normal(k) => normal[k as usize],
+                            VertexInput::Color(k) => color[k as usize],
+                            other => unreachable!("the lighting program reads no {other:?}"),
+                        }
+                        .to_bits()
+                    })
+                })
+                .collect();
+            let mut outputs = vec![[0u32; LANES]; generated.program.outputs.len()];
+            let mut io = Io { inputs: &inputs, uniforms: &uniforms, outputs: &mut outputs, textures: &NoTextures };
+            executor.run(&generated.program, &mut io, 0xffff);
+            let exp2s = generated
+                .program
+                .body
+                .iter()
+                .filter(|s| matches!(s, crate::shader::ir::Stmt::Inst(Inst::Unary { op: UnaryOp::Exp2, .. })))
+                .count();
+            (outputs, exp2s)
+        };
+        let ((got, exp2s), (want, all_exp2s)) = (run(&key), run(&without));
+        assert_eq!(got, want, "case {case}: {key:?}");
+        assert_eq!(exp2s + skips, all_exp2s, "case {case}: one power fewer per skipped term");
+        for (lane, (eye, normal, color)) in vertices.iter().enumerate() {
+            let lit = shade(&lighting, *eye, *normal, *color);
+            let mut reference = vec![lit.front, lit.front_secondary];
+            if key.two_side {
+                reference.extend([lit.back, lit.back_secondary]);
+            }
+            let reference: Vec<u32> = reference.iter().flatten().map(|v| v.to_bits()).collect();
+            let lane_bits: Vec<u32> = got.iter().map(|o| o[lane]).collect();
+            assert_eq!(lane_bits, reference, "case {case} lane {lane}: {key:?}");
+        }
+    }
+    assert!(skipped > 200, "the cases skip powers ({skipped})");
 }
