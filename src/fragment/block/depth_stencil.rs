@@ -267,8 +267,14 @@ impl WordFace {
     /// No stencil test: every fragment passes it and nothing changes the stencil bits, so
     /// the depth test alone runs in the packed-word form (the depth write replacing the
     /// low 24 bits, with no shift of the stencil out and back in).
-    const NONE: WordFace =
-        WordFace { func: 7, reference: 0, value_mask: 0, sfail: WordOp::KEEP, zfail: WordOp::KEEP, zpass: WordOp::KEEP };
+    const NONE: WordFace = WordFace {
+        func: 7,
+        reference: 0,
+        value_mask: 0,
+        sfail: WordOp::KEEP,
+        zfail: WordOp::KEEP,
+        zpass: WordOp::KEEP,
+    };
 
     fn new(face: &StencilFace) -> Option<Self> {
         let op = |op| WordOp::of(op, face.reference, face.write_mask);
