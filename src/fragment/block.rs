@@ -618,6 +618,8 @@ impl BlockPipeline {
             }
             return;
         }
+        // Whether anything reads the lanes that pass: the occlusion count or a colour target.
+        let counted = state.samples_passed.is_some() || !self.targets.is_empty();
         // SSE4.1's copy of the tests ran more instructions than SSE2's (simd::dispatch).
         let survivors = match &self.depth_stencil {
             Some(kernel) => outlined_sse2_for_sse41(
@@ -630,6 +632,7 @@ impl BlockPipeline {
                         grid,
                         front_facing,
                         blocks,
+                        counted,
                         #[inline(always)]
                         |b| inputs.of(b.source).z(b.x, b.y),
                     )

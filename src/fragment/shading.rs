@@ -400,9 +400,35 @@ impl Shading {
 #[derive(Clone, Copy, Debug)]
 pub struct LinearFog {
     end: f32,
-    /// `end − start` (LINEAR's divisor), or `None` when start = end (Mesa's `c − end`).
-    span: Option<f32>,
+    /// How the factor divides by `end − start` (LINEAR's divisor); `None` when start = end
+    /// (Mesa's `c − end`).
+    span: Option<Divisor>,
     color: [f32; 3],
+}
+
+/// LINEAR fog's divisor `end − start`: a power of two (fog_blend's 0 to 1, a span of 1) as
+/// the product by its reciprocal, which is exact, so `x · (1 / s)` rounds the very value
+/// `x / s` does and gives the same bits; any other as the division. A division of 16 lanes
+/// is four (SSE) or two (AVX2) `divps`, each several cycles of a busy divider, where a
+/// product is one cycle's issue.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Divisor {
+    Reciprocal(f32),
+    Divide(f32),
+}
+
+impl Divisor {
+    fn of(span: f32) -> Self {
+        let reciprocal = 1.0 / span;
+        // A product of two f32 is exact in f64: it is 1 only when `reciprocal` is `1 / span`
+        // exactly, that is when `span` is a power of two whose reciprocal is a float.
+        let exact = reciprocal.is_finite() && reciprocal != 0.0 && f64::from(reciprocal) * f64::from(span) == 1.0;
+        if exact {
+            Divisor::Reciprocal(reciprocal)
+        } else {
+            Divisor::Divide(span)
+        }
+    }
 }
 
 impl LinearFog {
@@ -414,7 +440,7 @@ impl LinearFog {
         }
         let fog = fog?;
         let span = match key.fog? {
-            FogKey::Linear => Some(fog.end - fog.start),
+            FogKey::Linear => Some(Divisor::of(fog.end - fog.start)),
             FogKey::LinearDegenerate => None,
             FogKey::Exp | FogKey::Exp2 => return None,
         };
@@ -454,7 +480,8 @@ impl LinearFog {
         // Index loops over whole lanes (`block::lanes`), which LLVM vectorises whole; zipped
         // iterators came out as vectors of 8, 4, 2 and single lanes.
         let factor: F32s = match self.span {
-            Some(span) => lanes(|i| clamp01((self.end - c[i]) / span)),
+            Some(Divisor::Reciprocal(scale)) => lanes(|i| clamp01((self.end - c[i]) * scale)),
+            Some(Divisor::Divide(span)) => lanes(|i| clamp01((self.end - c[i]) / span)),
             None => lanes(|i| clamp01(c[i] - self.end)),
         };
         for (channel, fog) in colors[..3].iter_mut().zip(self.color) {

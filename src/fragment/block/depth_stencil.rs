@@ -264,6 +264,18 @@ struct WordFace {
 }
 
 impl WordFace {
+    /// No stencil test: every fragment passes it and nothing changes the stencil bits, so
+    /// the depth test alone runs in the packed-word form (the depth write replacing the
+    /// low 24 bits, with no shift of the stencil out and back in).
+    const NONE: WordFace = WordFace {
+        func: 7,
+        reference: 0,
+        value_mask: 0,
+        sfail: WordOp::KEEP,
+        zfail: WordOp::KEEP,
+        zpass: WordOp::KEEP,
+    };
+
     fn new(face: &StencilFace) -> Option<Self> {
         let op = |op| WordOp::of(op, face.reference, face.write_mask);
         Some(WordFace {
@@ -286,7 +298,8 @@ pub struct DepthStencilParams {
     stencil: Option<[FaceKernel; 2]>,
     /// Whether the stencil values can change (else they are not stored back).
     stencil_writes: bool,
-    /// Front and back faces in the packed-word form, when both have it (packed 24/8 only).
+    /// Front and back faces in the packed-word form, when both have it (packed 24/8 only;
+    /// [`WordFace::NONE`] without the stencil test).
     word_faces: Option<[WordFace; 2]>,
 }
 
@@ -332,6 +345,7 @@ impl DepthStencilKernel {
                 (DepthStencilFormat::Packed24 { .. }, Some(s)) => {
                     WordFace::new(&s.front).zip(WordFace::new(&s.back)).map(|(f, b)| [f, b])
                 }
+                (DepthStencilFormat::Packed24 { .. }, None) => Some([WordFace::NONE; 2]),
                 _ => None,
             },
         };
@@ -528,9 +542,11 @@ fn depth_stencil<const FMT: u8, const STORE: bool>(
 impl DepthStencilKernel {
     /// Runs the tests on every block of `blocks` (`mask`: its covered lanes; `z(x, y)`: the
     /// window depth of the block at `(x, y)`), keeping in `blocks`, in order, those with a
-    /// passing lane, their masks the passing lanes; returns how many. The format and the
-    /// stencil face are matched once for all of them; compiled into the caller's copy for
-    /// `grid.level` (the block stage's batch call).
+    /// passing lane, their masks the passing lanes; returns how many. Without `survivors`
+    /// (no colour target to write and no occlusion query: nothing reads the passing lanes)
+    /// a kernel may skip that and return 0. The format and the stencil face are matched
+    /// once for all of them; compiled into the caller's copy for `grid.level` (the block
+    /// stage's batch call).
     #[inline(always)]
     pub fn run_blocks(
         &self,
@@ -538,6 +554,7 @@ impl DepthStencilKernel {
         grid: Grid,
         front_facing: bool,
         blocks: &mut [BlockEntry],
+        survivors: bool,
         z_at: impl Fn(&BlockEntry) -> F32s,
     ) -> usize {
         let p = &self.params;
@@ -550,14 +567,17 @@ impl DepthStencilKernel {
                 #[inline(always)]
                 |b| depth16::<true>(p, px, &grid.at(b.x, b.y), &self.block_depth(b, &z_at), b.mask),
             ),
-            DepthBand::Packed24(px) if face.is_none() => keep(
-                blocks,
-                #[inline(always)]
-                |b| packed24::<true>(p, None, px, &grid.at(b.x, b.y), &self.block_depth(b, &z_at), b.mask),
-            ),
             DepthBand::Packed24(px) => match &p.word_faces {
                 Some(faces) => {
                     let face = &faces[usize::from(!front_facing)];
+                    if !survivors {
+                        // The stencil passes of shadow volumes: only the stored words count
+                        // (no lane mask packed, no block kept).
+                        for b in blocks.iter() {
+                            packed24_words(p, face, px, &grid.at(b.x, b.y), &self.block_depth(b, &z_at), b.mask);
+                        }
+                        return 0;
+                    }
                     keep(
                         blocks,
                         #[inline(always)]
@@ -943,7 +963,12 @@ mod tests {
                 write: rng.next().is_multiple_of(2),
             });
             let mut fragment = FragmentState::plain(depth, vec![], false);
-            fragment.stencil = Some(StencilTest { front: face(&mut rng), back: face(&mut rng) });
+            // Without the stencil test too (the depth test alone in the word form).
+            let stencil = StencilTest { front: face(&mut rng), back: face(&mut rng) };
+            fragment.stencil = (!rng.next().is_multiple_of(5)).then_some(stencil);
+            if fragment.stencil.is_none() && fragment.depth.is_none() {
+                continue;
+            }
             let kernel = DepthStencilKernel::new(&fragment, format).unwrap();
             word_form += usize::from(kernel.params.word_faces.is_some());
             let stored: Vec<u32> = (0..16)
@@ -967,11 +992,20 @@ mod tests {
             let mut blocks = [BlockEntry { x: 0, y: 0, mask: live, source: 0 }];
             let kept = crate::simd::dispatch::run_with(level, |l| {
                 let grid = Grid { level: l, ..grid };
-                kernel.run_blocks(&mut DepthBand::Packed24(&mut batched), grid, front_facing, &mut blocks, |_| z)
+                kernel.run_blocks(&mut DepthBand::Packed24(&mut batched), grid, front_facing, &mut blocks, true, |_| z)
             });
             let what = format!("{fragment:?} live {live:#x} front {front_facing}");
             assert_eq!((kept, blocks[0].mask), (usize::from(want != 0), want), "{what}");
             assert_eq!(batched, lane, "{what}");
+            // Without survivors asked for (no colour target, no occlusion query): the same
+            // words stored.
+            let mut unkept = stored.clone();
+            let mut blocks = [BlockEntry { x: 0, y: 0, mask: live, source: 0 }];
+            crate::simd::dispatch::run_with(level, |l| {
+                let grid = Grid { level: l, ..grid };
+                kernel.run_blocks(&mut DepthBand::Packed24(&mut unkept), grid, front_facing, &mut blocks, false, |_| z)
+            });
+            assert_eq!(unkept, lane, "{what} without survivors");
         }
         assert!(word_form > 2000, "{word_form} states took the packed-word kernel");
     }

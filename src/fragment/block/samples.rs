@@ -202,6 +202,7 @@ impl BlockPipeline {
                             grid.sample(s),
                             front_facing,
                             &mut plane[..n],
+                            true,
                             #[inline(always)]
                             |b| inputs.sample_z(b.x, b.y, s),
                         );

@@ -356,14 +356,33 @@ fn a_program_that_passes_the_colour_through_is_none() {
 #[test]
 fn written_out_linear_fog_is_the_program_bit_for_bit() {
     let mut rng = Rng(0x2545_f491_4f6c_dd1d);
-    let ends = [(0.0, 1.0), (0.2, 0.8), (0.8, 0.2), (-1.5, 3.25), (0.5, 0.5), (0.3, 0.3), (1.0, 1.0 + 1e-7)];
+    // Spans that are powers of two (1, 2⁻²³, 2, −0.25, 2⁻¹²⁷ subnormal, 2¹²⁷ with a
+    // subnormal reciprocal) take the reciprocal's product, the others the division.
+    let ends = [
+        (0.0, 1.0),
+        (0.2, 0.8),
+        (0.8, 0.2),
+        (-1.5, 3.25),
+        (0.5, 0.5),
+        (0.3, 0.3),
+        (1.0, 1.0 + 1e-7),
+        (-1.5, 0.5),
+        (0.75, 0.5),
+        (0.0, 2f32.powi(-127)),
+        (0.0, 2f32.powi(127)),
+    ];
     let edges = [0.0, -0.0, 1.0, -1.0, f32::INFINITY, f32::NEG_INFINITY, f32::NAN, 1e-38, 1e-45, 0.5, 0.2, 0.8];
     let mut checked = 0;
     for &(start, end) in &ends {
         let mut state = FragmentState::plain(None, Vec::new(), true);
         state.fog = Some(Fog { mode: FogMode::Linear, start, end, density: 1.0, color: [0.25, 0.6, 0.9, 1.0] });
         let shading = shading_of(&state);
-        assert!(shading.linear_fog.is_some());
+        let fog = shading.linear_fog.expect("linear fog alone is written out");
+        let span = (end - start).abs();
+        let power_of_two = (span.is_normal() && span.to_bits() & 0x7f_ffff == 0)
+            || (span.is_subnormal() && span.to_bits().is_power_of_two());
+        let exact = power_of_two && (1.0 / span).is_finite();
+        assert_eq!(matches!(fog.span, Some(Divisor::Reciprocal(_))), exact, "{start} {end}");
         for round in 0..200 {
             let coordinate: F32s = std::array::from_fn(|i| match round {
                 0 => edges[i % edges.len()],
