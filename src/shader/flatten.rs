@@ -127,7 +127,7 @@ fn single_writes(program: &mut Program) {
     let mut name: Vec<Reg> = (0..n as u32).map(Reg).collect();
     let mut written = vec![false; n];
     let mut copies: Vec<Option<Reg>> = vec![None; n];
-    let mut computed: HashMap<String, Reg> = HashMap::new();
+    let mut computed: HashMap<ArithmeticKey, Reg> = HashMap::new();
     let body = std::mem::take(&mut program.body);
     for s in body {
         let Stmt::Inst(mut inst) = s else { unreachable!("straight code") };
@@ -189,20 +189,28 @@ fn single_writes(program: &mut Program) {
     }
 }
 
-/// What an arithmetic instruction computes, its destination left out (its text: operations
-/// and registers alone, exact); `None` for the others (constants are [`super::lower`]'s to
-/// fold, and their text would not tell NaN payloads apart).
-fn arithmetic_key(inst: &Inst) -> Option<String> {
-    let mut inst = inst.clone();
-    match &mut inst {
-        Inst::Unary { dst, .. }
-        | Inst::Binary { dst, .. }
-        | Inst::Mad { dst, .. }
-        | Inst::Dot { dst, .. }
-        | Inst::Select { dst, .. } => *dst = Reg(u32::MAX),
+/// What an arithmetic instruction computes, its destination left out: its operation and
+/// the registers it reads, compared exactly; `None` for the others (constants are
+/// [`super::lower`]'s to fold). A key of plain values rather than the instruction's text:
+/// formatting every instruction was two fifths of flattening a fixed-function program.
+#[derive(Clone, Copy, PartialEq, Eq, Hash)]
+enum ArithmeticKey {
+    Unary(super::ir::UnaryOp, Reg),
+    Binary(super::ir::BinaryOp, Reg, Reg),
+    Mad(Reg, Reg, Reg),
+    Dot(u8, [Reg; 4], [Reg; 4]),
+    Select(Reg, Reg, Reg),
+}
+
+fn arithmetic_key(inst: &Inst) -> Option<ArithmeticKey> {
+    Some(match *inst {
+        Inst::Unary { op, a, .. } => ArithmeticKey::Unary(op, a),
+        Inst::Binary { op, a, b, .. } => ArithmeticKey::Binary(op, a, b),
+        Inst::Mad { a, b, c, .. } => ArithmeticKey::Mad(a, b, c),
+        Inst::Dot { n, a, b, .. } => ArithmeticKey::Dot(n, a, b),
+        Inst::Select { cond, a, b, .. } => ArithmeticKey::Select(cond, a, b),
         _ => return None,
-    }
-    Some(format!("{inst:?}"))
+    })
 }
 
 /// Shows every register `inst` reads to `visit`, which may rename it.

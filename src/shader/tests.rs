@@ -1787,3 +1787,38 @@ fn fragment_programs_keep_ifs_on_uniform_conditions_and_vertex_programs_convert_
         compiled.code().body
     );
 }
+
+#[test]
+fn flattening_reads_an_arithmetic_result_computed_twice_from_its_first_computation() {
+    let mut p = Program::new(Stage::Fragment);
+    let (x, y) = (p.register(Type::F32), p.register(Type::F32));
+    let (first, again, swapped) = (p.register(Type::F32), p.register(Type::F32), p.register(Type::F32));
+    let (square, mixed) = (p.register(Type::F32), p.register(Type::F32));
+    let (slot_x, slot_y) = (p.input(Type::F32), p.input(Type::F32));
+    let (out_square, out_mixed) = (p.output(Type::F32), p.output(Type::F32));
+    let sub = |dst, a, b| Stmt::Inst(Inst::Binary { op: BinaryOp::FSub, dst, a, b });
+    let mul = |dst, a, b| Stmt::Inst(Inst::Binary { op: BinaryOp::FMul, dst, a, b });
+    p.body = vec![
+        Stmt::Inst(Inst::Input { dst: x, slot: slot_x }),
+        Stmt::Inst(Inst::Input { dst: y, slot: slot_y }),
+        sub(first, x, y),
+        sub(again, x, y),
+        sub(swapped, y, x),
+        mul(square, first, again),
+        mul(mixed, first, swapped),
+        Stmt::Inst(Inst::Output { slot: out_square, src: square }),
+        Stmt::Inst(Inst::Output { slot: out_mixed, src: mixed }),
+    ];
+    validate(&p).unwrap();
+    let flat = super::flatten::flatten(&p);
+    let products: Vec<(Reg, Reg)> = flat
+        .body
+        .iter()
+        .filter_map(|s| match s {
+            Stmt::Inst(Inst::Binary { op: BinaryOp::FMul, a, b, .. }) => Some((*a, *b)),
+            _ => None,
+        })
+        .collect();
+    // `x - y` twice is one value; `y - x` is another.
+    assert_eq!(products, vec![(first, first), (first, swapped)], "{}", super::dump::dump(&flat));
+}
