@@ -47,17 +47,25 @@ pub fn run(helpers: usize, work: &(dyn Fn() + Sync)) {
     if helpers == 0 {
         return work();
     }
+    run_beside(helpers, work, work);
+}
+
+/// As [`run`] with other work for the calling thread: `own` runs there while up to
+/// `helpers` pool threads run `helper`, and its result is returned once every helper that
+/// joined has returned. A helper that is busy or not woken in time does not join at all, so
+/// `own` must finish whether or not `helper` ever runs, and `helper` must return once `own`
+/// has (a long draw's recording beside the render of its segments, `context::draw`).
+pub fn run_beside<R>(helpers: usize, helper: &(dyn Fn() + Sync), own: impl FnOnce() -> R) -> R {
     let pool = Pool::current();
-    let id = pool.post(lifetime::erase(work), helpers);
+    let id = pool.post(lifetime::erase(helper), helpers);
     let closing = Closing { pool: &pool, id };
-    let own = catch_unwind(AssertUnwindSafe(work));
+    let own = catch_unwind(AssertUnwindSafe(own));
     let helper_panic = closing.close();
-    if let Err(payload) = own {
-        resume_unwind(payload);
-    }
+    let own = own.unwrap_or_else(|payload| resume_unwind(payload));
     if let Some(payload) = helper_panic {
         resume_unwind(payload);
     }
+    own
 }
 
 /// Spawns pool threads until there are `helpers`, without waiting for them to start: a
