@@ -8,7 +8,9 @@
 //! This file also keeps the scene's lifecycle: the pending scene is taken for a draw, kept
 //! for more draws (or rendered when over its budget), and rendered at a flush point
 //! ([`Context::flush_rendering`]): glFlush, glFinish, glReadPixels, clears, glAccum, buffer
-//! queries, MakeCurrent. Selection and feedback modes take their own path ([`select`]).
+//! queries, MakeCurrent. A long array draw into the window is recorded in segments, each
+//! beside the render of the one before ([`overlap`]). Selection and feedback modes take
+//! their own path ([`select`]).
 mod draw_state;
 mod overlap;
 #[cfg(test)]

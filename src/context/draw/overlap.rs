@@ -55,10 +55,10 @@ impl HandOff {
 
     /// Hands `scene` to the renderer, if it runs, and returns once the renderer holds the
     /// drawable's lock for it; gives the scene back when there is no renderer (or it failed).
-    fn hand_over(&self, scene: Scene, overwrites: bool) -> Result<(), Scene> {
+    fn hand_over(&self, scene: Scene, overwrites: bool) -> Option<Scene> {
         let mut slot = self.slot();
         if !slot.running || slot.finished {
-            return Err(scene);
+            return Some(scene);
         }
         slot.pending = Some((scene, overwrites));
         slot.in_flight = true;
@@ -67,14 +67,21 @@ impl HandOff {
             slot = self.wait(slot);
         }
         slot.locked = false;
-        Ok(())
+        None
     }
 
-    /// Waits until the segment with the renderer (if any) is rendered; its scene, emptied.
+    /// Waits until the segment with the renderer (if any) is rendered, helping to render it
+    /// meanwhile (`crate::pool::help`: its tile bands not taken yet, where the renderer
+    /// renders on more than one thread); its scene, emptied.
     fn take_back(&self) -> Option<Scene> {
         let mut slot = self.slot();
         while slot.in_flight && slot.rendered.is_none() && !slot.finished {
-            slot = self.wait(slot);
+            drop(slot);
+            let helped = crate::pool::help();
+            slot = self.slot();
+            if !helped && slot.in_flight && slot.rendered.is_none() && !slot.finished {
+                slot = self.wait(slot);
+            }
         }
         slot.in_flight = false;
         slot.rendered.take()
@@ -150,8 +157,7 @@ impl Context {
     /// in submission order, and the drawable's lock keeps that order (the renderer holds it
     /// before the next segment records, and anything the recording did to the framebuffer
     /// would wait for it). While a segment records beside a render, the window's shape is
-    /// answered from what it was (`window_pinned`), without waiting for the lock. The
-    /// renderer renders on one thread fewer than a flush: the recording thread keeps a core.
+    /// answered from what it was (`window_pinned`), without waiting for the lock.
     pub(in crate::context) fn record_in_segments(
         &mut self,
         count: usize,
@@ -180,7 +186,9 @@ impl Context {
         };
         let pinned = self.window_shape(false).map(|shape| (shape, self.samples_of(0)));
         let hand_off = HandOff::default();
-        let threads = thread_count().saturating_sub(1).max(1);
+        // As many render threads as a flush: the recording thread is one of them only once
+        // it has recorded its segment and would wait (`HandOff::take_back`).
+        let threads = thread_count();
         let renderer = || hand_off.render(&drawable, threads);
         crate::pool::run_beside(1, &renderer, || {
             // The renderer returns once the recording is over, however it ends.
@@ -194,7 +202,7 @@ impl Context {
             for start in rest {
                 if let Some(scene) = self.scene.take() {
                     let overwrites = std::mem::take(&mut self.scene_overwrites_front);
-                    if let Err(scene) = hand_off.hand_over(scene, overwrites) {
+                    if let Some(scene) = hand_off.hand_over(scene, overwrites) {
                         // No renderer yet: this segment renders in turn.
                         self.render_in_turn(scene, overwrites, &drawable);
                     }
