@@ -8,8 +8,11 @@
 //! This file also keeps the scene's lifecycle: the pending scene is taken for a draw, kept
 //! for more draws (or rendered when over its budget), and rendered at a flush point
 //! ([`Context::flush_rendering`]): glFlush, glFinish, glReadPixels, clears, glAccum, buffer
-//! queries, MakeCurrent. Selection and feedback modes take their own path ([`select`]).
+//! queries, MakeCurrent. A long array draw into the window is recorded in segments, each
+//! beside the render of the one before ([`overlap`]). Selection and feedback modes take
+//! their own path ([`select`]).
 mod draw_state;
+mod overlap;
 #[cfg(test)]
 pub(crate) mod replay;
 mod select;
@@ -449,91 +452,6 @@ impl Context {
         overlaps.then_some(segment)
     }
 
-    /// Records the vertices `0..count` of a long draw with `record` (which records a range of
-    /// them, false when it could not), in segments of `segment` vertices into the window:
-    /// each segment after the first while the scene of the one before renders on another
-    /// thread, so that the recording thread and the tile workers no longer take turns.
-    /// Rendering a scene early changes no pixel (as for a scene over its budget,
-    /// [`Context::keep_scene`]): each pixel still sees every primitive in submission order,
-    /// and the drawable's lock keeps that order (the render holds it before the next segment
-    /// records, and anything the recording did to the framebuffer would wait for it). While
-    /// a segment records, the window's shape is answered from what it was
-    /// (`window_pinned`), without waiting for the lock.
-    ///
-    /// One thread renders the segments of the draw, woken for each (a thread spawned per
-    /// segment started late on a loaded machine, every start delaying the recording), with
-    /// one render thread fewer than a flush: the recording thread keeps a core.
-    pub(in crate::context) fn record_in_segments(
-        &mut self,
-        count: usize,
-        segment: usize,
-        mut record: impl FnMut(&mut Context, std::ops::Range<usize>) -> bool,
-    ) {
-        let segment = segment.max(1);
-        let range = |start: usize| start..(start + segment).min(count);
-        if !record(self, range(0)) {
-            return;
-        }
-        let Some(drawable) = self.drawable.clone().filter(|_| self.fbo.draw == 0 && segment < count) else {
-            // The rest recorded in turn, up to a segment that could not be.
-            (segment..count).step_by(segment).all(|start| record(self, range(start)));
-            return;
-        };
-        let pinned = self.window_shape(false).map(|shape| (shape, self.samples_of(0)));
-        let threads = thread_count().saturating_sub(1).max(1);
-        std::thread::scope(|s| {
-            let (to_render, scenes) = std::sync::mpsc::channel::<(Scene, bool)>();
-            let (locked_tx, locked) = std::sync::mpsc::channel::<()>();
-            let (rendered_tx, rendered) = std::sync::mpsc::channel::<Scene>();
-            let render = move || {
-                for (mut scene, overwrites) in scenes {
-                    let mut guard = drawable.lock().unwrap_or_else(|p| p.into_inner());
-                    let _ = locked_tx.send(());
-                    if overwrites {
-                        // No need to bring home an image the scene replaces whole (as run_scene).
-                        guard.front_image_replaced();
-                    }
-                    let fb = guard.framebuffer_to_draw();
-                    if scene.size() == (fb.width(), fb.height()) {
-                        scene.execute_on(fb, threads);
-                    }
-                    drop(guard);
-                    scene.clear();
-                    let _ = rendered_tx.send(scene);
-                }
-            };
-            if std::thread::Builder::new().spawn_scoped(s, render).is_err() {
-                // No thread to overlap with (the process's thread or memory limits): the rest
-                // is recorded in turn, as a draw without the overlap.
-                (segment..count).step_by(segment).all(|start| record(self, range(start)));
-                return;
-            }
-            for start in (segment..count).step_by(segment) {
-                let Some(scene) = self.scene.take() else {
-                    if !record(self, range(start)) {
-                        break;
-                    }
-                    continue;
-                };
-                let overwrites = std::mem::take(&mut self.scene_overwrites_front);
-                // A render thread that panicked has hung up: the scope raises its panic.
-                if to_render.send((scene, overwrites)).is_err() || locked.recv().is_err() {
-                    break;
-                }
-                self.window_pinned = pinned;
-                let complete = record(self, range(start));
-                self.window_pinned = None;
-                let Ok(spare) = rendered.recv() else { break };
-                if self.spare_scene.is_none() {
-                    self.spare_scene = Some(spare);
-                }
-                if !complete {
-                    break;
-                }
-            }
-            drop(to_render);
-        });
-    }
     /// Rasterizes `scene` into the bound framebuffer, then keeps it, emptied, for the next
     /// draws to record into ([`Scene::clear`] says what it keeps).
     fn run_scene(&mut self, mut scene: Scene) {

@@ -1,5 +1,5 @@
 //! The one unsafe step of the pool: a borrowed piece of work handed to a pool thread as if
-//! it lived forever, on the promise that `super::run` outlives every use of it.
+//! it lived forever, on the promise that `super::finish_own` outlives every use of it.
 
 // The room denies unsafe code (`pool/mod.rs`); this erasure is its one exception.
 #![allow(unsafe_code)]
@@ -14,11 +14,11 @@ impl Erased {
     }
 }
 
-/// `work` with its lifetime erased. Only `super::run` calls this, and it neither returns nor
+/// `work` with its lifetime erased. Only `super::run` and `super::run_beside` call this, and it neither returns nor
 /// unwinds until the job is closed and no helper runs the work any more.
 pub fn erase<'a>(work: &'a (dyn Fn() + Sync + 'a)) -> Erased {
     // SAFETY: the reference is only dereferenced by pool threads between taking a slot of
-    // the job and reporting back, and `super::run` (through its `Closing` guard, on return
+    // the job and reporting back, and `super::finish_own` (through its `Closing` guard, on return
     // and on unwind alike) closes the job and waits for every helper that took a slot
     // before the borrow `'a` can end. The layout of the two reference types is the same.
     Erased(unsafe { std::mem::transmute::<&'a (dyn Fn() + Sync + 'a), &'static (dyn Fn() + Sync + 'static)>(work) })

@@ -9,11 +9,15 @@
 //! woken in time, simply does not join, and the calling thread does what is left. The bytes
 //! a scene writes do not depend on the threads that ran it (tiles own pixels, `crate::raster`),
 //! so they are the same for any `TESSERA_THREADS`, any pool size and any contention.
+//! [`run_beside`] gives the calling thread other work than its helper (a long draw records
+//! while a pool thread renders), and [`help`] lets a thread that would wait join another
+//! caller's [`run`] job as one more helper.
 //!
 //! Lifetimes: `work` borrows the caller's stack (the framebuffer's bands, the scene). A
 //! helper gets it with its lifetime erased ([`lifetime`]), which is sound because [`run`]
-//! does not return, nor unwind, before the job is closed to new helpers and every helper
-//! that joined has finished (the [`Closing`] guard runs on both paths). A panic in a helper
+//! (and [`run_beside`]) does not return, nor unwind, before the job is closed to new helpers
+//! and every helper that joined (through [`help`] too) has finished (the [`Closing`] guard
+//! runs on both paths). A panic in a helper
 //! is caught there, handed to the caller and raised on the calling thread, as
 //! `std::thread::scope` does; the helper itself lives on.
 //!
@@ -48,16 +52,41 @@ pub fn run(helpers: usize, work: &(dyn Fn() + Sync)) {
         return work();
     }
     let pool = Pool::current();
-    let id = pool.post(lifetime::erase(work), helpers);
-    let closing = Closing { pool: &pool, id };
-    let own = catch_unwind(AssertUnwindSafe(work));
+    let id = pool.post(lifetime::erase(work), helpers, true);
+    finish_own(&pool, id, work);
+}
+
+/// As [`run`] with other work for the calling thread: `own` runs there while up to
+/// `helpers` pool threads run `helper`, and its result is returned once every helper that
+/// joined has returned. A helper that is busy or not woken in time does not join at all, so
+/// `own` must finish whether or not `helper` ever runs, and `helper` must return once `own`
+/// has (a long draw's recording beside the render of its segments, `context::draw`).
+pub fn run_beside<R>(helpers: usize, helper: &(dyn Fn() + Sync), own: impl FnOnce() -> R) -> R {
+    let pool = Pool::current();
+    let id = pool.post(lifetime::erase(helper), helpers, false);
+    finish_own(&pool, id, own)
+}
+
+/// Runs the caller's `own` work of job `id`, then closes the job; raises a panic of either.
+fn finish_own<R>(pool: &Arc<Pool>, id: u64, own: impl FnOnce() -> R) -> R {
+    let closing = Closing { pool, id };
+    let own = catch_unwind(AssertUnwindSafe(own));
     let helper_panic = closing.close();
-    if let Err(payload) = own {
-        resume_unwind(payload);
-    }
+    let own = own.unwrap_or_else(|payload| resume_unwind(payload));
     if let Some(payload) = helper_panic {
         resume_unwind(payload);
     }
+    own
+}
+
+/// Runs, on the calling thread, the work of one [`run`] job of another caller that has room
+/// for one more helper, as a pool thread would; whether there was one. A thread that would
+/// otherwise wait for another's rendering helps it this way (a long draw's recording
+/// thread, `context::draw`): the work pulls its items from its own queue, so it is
+/// complete whichever threads take part. Jobs of [`run_beside`] are not joined: their
+/// helper work may wait for their caller.
+pub fn help() -> bool {
+    Pool::current().help()
 }
 
 /// Spawns pool threads until there are `helpers`, without waiting for them to start: a
@@ -135,6 +164,8 @@ struct Job {
     slots: usize,
     /// Helpers running the work now.
     active: usize,
+    /// Whether a thread outside the pool may join as a helper ([`help`]).
+    helpable: bool,
     panic: Option<Box<dyn Any + Send>>,
 }
 
@@ -187,11 +218,11 @@ impl Pool {
 
     /// Offers `work` to up to `helpers` threads, spawning threads while fewer are parked
     /// than the job wants (up to the job's size); the job's id.
-    fn post(self: &Arc<Self>, work: Erased, helpers: usize) -> u64 {
+    fn post(self: &Arc<Self>, work: Erased, helpers: usize, helpable: bool) -> u64 {
         let mut state = relock(&self.state);
         let id = state.next_id;
         state.next_id += 1;
-        state.jobs.push(Job { id, work, slots: helpers, active: 0, panic: None });
+        state.jobs.push(Job { id, work, slots: helpers, active: 0, helpable, panic: None });
         let wanted = helpers.min(MAX_THREADS);
         while state.idle < wanted && state.threads < wanted {
             if !self.spawn(&mut state) {
@@ -256,19 +287,40 @@ impl Pool {
             let (id, work) = (job.id, job.work);
             state.idle -= 1;
             drop(state);
-            let result = catch_unwind(AssertUnwindSafe(|| (work.get())()));
-            state = relock(&self.state);
+            state = self.run_as_helper(id, work);
             state.idle += 1;
-            if let Some(job) = state.jobs.iter_mut().find(|j| j.id == id) {
-                job.active -= 1;
-                if let Err(payload) = result {
-                    job.panic.get_or_insert(payload);
-                }
-                if job.active == 0 && job.slots == 0 {
-                    self.finished.notify_all();
-                }
+        }
+    }
+
+    /// [`help`] on this pool.
+    fn help(&self) -> bool {
+        let mut state = relock(&self.state);
+        let Some(job) = state.jobs.iter_mut().find(|j| j.slots > 0 && j.helpable) else {
+            return false;
+        };
+        job.slots -= 1;
+        job.active += 1;
+        let (id, work) = (job.id, job.work);
+        drop(state);
+        drop(self.run_as_helper(id, work));
+        true
+    }
+
+    /// Runs `work` as a helper of job `id` (whose slot the caller took) and reports back;
+    /// the pool's state, locked.
+    fn run_as_helper(&self, id: u64, work: Erased) -> MutexGuard<'_, State> {
+        let result = catch_unwind(AssertUnwindSafe(|| (work.get())()));
+        let mut state = relock(&self.state);
+        if let Some(job) = state.jobs.iter_mut().find(|j| j.id == id) {
+            job.active -= 1;
+            if let Err(payload) = result {
+                job.panic.get_or_insert(payload);
+            }
+            if job.active == 0 && job.slots == 0 {
+                self.finished.notify_all();
             }
         }
+        state
     }
 }
 
@@ -356,11 +408,35 @@ mod tests {
         let work = || {
             done.fetch_add(1, Ordering::SeqCst);
         };
-        let id = pool.post(lifetime::erase(&work), 3);
+        let id = pool.post(lifetime::erase(&work), 3, true);
         work();
         assert!(pool.close(id).is_none());
         assert_eq!(relock(&pool.state).threads, 3, "the job found the prestarted threads");
         assert!((1..=4).contains(&done.load(Ordering::SeqCst)));
+    }
+
+    #[test]
+    fn help_joins_a_run_job_with_room_but_never_a_run_beside_job() {
+        // A pool of its own without threads, its jobs posted by hand: only `help` joins them.
+        let pool = Pool { pid: 0, state: Mutex::default(), posted: Condvar::new(), finished: Condvar::new() };
+        let done = AtomicUsize::new(0);
+        let work = || {
+            done.fetch_add(1, Ordering::SeqCst);
+        };
+        let push = |helpable: bool| {
+            let mut state = relock(&pool.state);
+            let id = state.next_id;
+            state.next_id += 1;
+            state.jobs.push(Job { id, work: lifetime::erase(&work), slots: 1, active: 0, helpable, panic: None });
+            id
+        };
+        let beside = push(false);
+        assert!(!pool.help(), "a run_beside job's helper work may wait for its caller");
+        let shared = push(true);
+        assert!(pool.help(), "a run job with room is joined");
+        assert!(!pool.help(), "the job had room for one helper only");
+        assert_eq!(done.load(Ordering::SeqCst), 1);
+        assert!(pool.close(shared).is_none() && pool.close(beside).is_none());
     }
 
     #[test]

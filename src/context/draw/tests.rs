@@ -755,13 +755,15 @@ fn long_draws_keep_the_scene_within_its_budget() {
     }
 }
 
-/// A long array draw of independent triangles into the window is recorded in segments, each
-/// while the segment before it renders on another thread
-/// (`Context::record_in_segments`): the pixels (blended in order, depth tested after a
-/// depth clear) are those of the draw recorded whole, and the scene left pending holds only
-/// the draw's last segment (without the overlap it holds every triangle).
-#[test]
-fn a_long_draw_records_each_segment_while_the_one_before_renders_with_the_same_pixels() {
+/// Records the long draw of the overlap tests (a segment and 101 triangles, blended in
+/// order, depth tested after a depth clear) into a 96 × 96 window, with the overlap on or
+/// off, before `present` (which may give the drawable a presenter), and runs `finish` after;
+/// the bytes the scene left pending after the draw, and what `finish` returns.
+fn long_overlap_draw<R>(
+    overlap: bool,
+    present: impl FnOnce(&Arc<Mutex<Drawable>>),
+    finish: impl FnOnce(&mut Context, &Arc<Mutex<Drawable>>) -> R,
+) -> (usize, R) {
     use super::{OVERLAP_ENABLED, OVERLAP_SEGMENT_VERTICES};
     use crate::context::vertex_input::test_support::{floats, FakeMemory};
     let triangles = OVERLAP_SEGMENT_VERTICES + 101;
@@ -782,39 +784,111 @@ fn a_long_draw_records_each_segment_while_the_one_before_renders_with_the_same_p
     let mut memory = FakeMemory::default();
     let positions = memory.add(0x1000_0000, floats(&xyz));
     let colors = memory.add(0x2000_0000, floats(&rgba));
-    let draw = |overlap: bool| {
-        OVERLAP_ENABLED.with(|on| on.set(overlap));
-        let (mut ctx, d) = Context::with_test_drawable(
-            FramebufferConfig::single_buffered(
-                ColorFormat::Unorm8 { alpha: true },
-                DepthStencilFormat::Packed24 { depth: true, stencil: false },
-                0,
-            ),
-            96,
-            96,
-        );
-        ctx.matrix_mode(GL_PROJECTION);
-        ctx.ortho(0.0, 96.0, 0.0, 96.0, -1.0, 1.0);
-        ctx.clear_color([0.2, 0.3, 0.4, 1.0]);
-        ctx.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        ctx.set_capability(GL_DEPTH_TEST, true);
-        ctx.depth_func(GL_LEQUAL);
-        ctx.set_capability(GL_BLEND, true);
-        ctx.blend_func(None, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ZERO);
-        ctx.vertex_pointer(3, GL_FLOAT, 0, positions);
-        ctx.color_pointer(4, GL_FLOAT, 0, colors);
-        ctx.enable_client_state(GL_VERTEX_ARRAY, true);
-        ctx.enable_client_state(GL_COLOR_ARRAY, true);
-        ctx.draw_arrays(GL_TRIANGLES, 0, 3 * triangles as i32, &memory);
-        assert_eq!(ctx.take_error(), GL_NO_ERROR);
-        let pending = ctx.scene.as_ref().map_or(0, |s| s.recorded_bytes());
-        let image = pixels(&mut ctx, &d);
-        OVERLAP_ENABLED.with(|on| on.set(true));
-        (image, pending)
-    };
-    let (whole, whole_pending) = draw(false);
-    let (overlapped, overlapped_pending) = draw(true);
+    OVERLAP_ENABLED.with(|on| on.set(overlap));
+    let (mut ctx, d) = Context::with_test_drawable(
+        FramebufferConfig::single_buffered(
+            ColorFormat::Unorm8 { alpha: true },
+            DepthStencilFormat::Packed24 { depth: true, stencil: false },
+            0,
+        ),
+        96,
+        96,
+    );
+    present(&d);
+    ctx.matrix_mode(GL_PROJECTION);
+    ctx.ortho(0.0, 96.0, 0.0, 96.0, -1.0, 1.0);
+    ctx.clear_color([0.2, 0.3, 0.4, 1.0]);
+    ctx.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    ctx.set_capability(GL_DEPTH_TEST, true);
+    ctx.depth_func(GL_LEQUAL);
+    ctx.set_capability(GL_BLEND, true);
+    ctx.blend_func(None, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ZERO);
+    ctx.vertex_pointer(3, GL_FLOAT, 0, positions);
+    ctx.color_pointer(4, GL_FLOAT, 0, colors);
+    ctx.enable_client_state(GL_VERTEX_ARRAY, true);
+    ctx.enable_client_state(GL_COLOR_ARRAY, true);
+    ctx.draw_arrays(GL_TRIANGLES, 0, 3 * triangles as i32, &memory);
+    assert_eq!(ctx.take_error(), GL_NO_ERROR);
+    let pending = ctx.scene.as_ref().map_or(0, |s| s.recorded_bytes());
+    let result = finish(&mut ctx, &d);
+    OVERLAP_ENABLED.with(|on| on.set(true));
+    (pending, result)
+}
+
+/// A long array draw of independent triangles into the window is recorded in segments, each
+/// while the segment before it renders on another thread
+/// (`Context::record_in_segments`): the pixels (blended in order, depth tested after a
+/// depth clear) are those of the draw recorded whole, and the scene left pending holds only
+/// the draw's last segment (without the overlap it holds every triangle).
+#[test]
+fn a_long_draw_records_each_segment_while_the_one_before_renders_with_the_same_pixels() {
+    let read = |ctx: &mut Context, d: &Arc<Mutex<Drawable>>| pixels(ctx, d);
+    let (whole_pending, whole) = long_overlap_draw(false, |_| {}, read);
+    let (overlapped_pending, overlapped) = long_overlap_draw(true, |_| {}, read);
     assert!(whole.iter().filter(|p| p[0] != 51).count() > 96 * 96 / 2, "the triangles cover the window");
     assert!(overlapped_pending * 3 < whole_pending, "{overlapped_pending} bytes pending of {whole_pending}");
+    assert!(overlapped == whole, "the overlapped draw's pixels differ");
+}
+
+/// Into a window presented in memory it lends (an OSMesa caller's RGBA8 buffer), the
+/// segments of an overlapped draw render in place there, as a presenting flush point does:
+/// glFinish then leaves the same image in that memory as the draw recorded whole, and
+/// neither copies the framebuffer's own pixels into it (the segments rendered into those
+/// would leave the last flush a copy of the whole image).
+#[test]
+fn an_overlapped_draw_renders_its_segments_in_place_into_lent_memory() {
+    use crate::framebuffer::external::CallerBuffer;
+    use crate::framebuffer::{Framebuffer, Present};
+    use std::sync::atomic::{AtomicUsize, Ordering};
+    /// Test memory (RGBA8 rows bottom-up) lent for rendering in place; `copies` counts
+    /// the presentations that copy the own pixels into it.
+    struct Lending {
+        buffer: CallerBuffer,
+        copies: Arc<AtomicUsize>,
+    }
+    impl Present for Lending {
+        fn present(&mut self, framebuffer: &Framebuffer) {
+            self.copies.fetch_add(1, Ordering::SeqCst);
+            let pixels = framebuffer.width() * framebuffer.height();
+            let own = framebuffer.color(ColorSlot::FrontLeft).map(|b| b.pixels());
+            if let (Some(crate::framebuffer::surface::ColorPixels::Unorm8(own)), Some(memory)) =
+                (own, self.buffer.unorm8_pixels_mut(pixels))
+            {
+                memory.copy_from_slice(&own[..pixels]);
+            }
+        }
+        fn only_when_drawn(&self) -> bool {
+            true
+        }
+        fn lends(&self, _: &Framebuffer) -> bool {
+            true
+        }
+        fn lend(&mut self, _: &Framebuffer) -> Option<CallerBuffer> {
+            Some(std::mem::replace(&mut self.buffer, CallerBuffer::empty()))
+        }
+        fn give_back(&mut self, memory: CallerBuffer) {
+            self.buffer = memory;
+        }
+        fn memory(&self) -> Option<usize> {
+            Some(self.buffer.as_ptr() as usize)
+        }
+    }
+    let draw = |overlap: bool| {
+        let mut memory = vec![0u8; 96 * 96 * 4];
+        let copies = Arc::new(AtomicUsize::new(0));
+        let buffer = CallerBuffer::of_test_vec(&mut memory);
+        let lending = Lending { buffer, copies: copies.clone() };
+        let present = |d: &Arc<Mutex<Drawable>>| d.lock().unwrap().set_presenter(Some(Box::new(lending)));
+        let (_, ()) = long_overlap_draw(overlap, present, |ctx, d| {
+            ctx.finish();
+            // The memory is the test's again (the presenter is dropped with the drawable).
+            d.lock().unwrap().set_presenter(None);
+        });
+        (memory, copies.load(Ordering::SeqCst))
+    };
+    let (whole, whole_copies) = draw(false);
+    let (overlapped, overlapped_copies) = draw(true);
+    assert!(whole.chunks(4).filter(|p| p[0] != 51).count() > 96 * 96 / 2, "the triangles cover the window");
+    assert_eq!((whole_copies, overlapped_copies), (0, 0), "presentations that copied the image");
     assert!(overlapped == whole, "the overlapped draw's pixels differ");
 }
