@@ -88,6 +88,29 @@ fn random_lighting_state(rng: &mut Rng) -> LightingState {
     state
 }
 
+/// One vertex per lane: its eye position, normal and colour.
+type LitVertex = ([f32; 4], [f32; 3], [f32; 4]);
+
+/// The input words a generated lighting program reads, from one vertex per lane.
+fn lighting_inputs(generated: &LightingProgram, vertices: &[LitVertex]) -> Vec<Word> {
+    generated
+        .inputs
+        .iter()
+        .map(|source| {
+            std::array::from_fn(|lane| {
+                let (eye, normal, color) = &vertices[lane];
+                match *source {
+                    VertexInput::Eye(k) => eye[k as usize],
+                    VertexInput::Normal(k) => normal[k as usize],
+                    VertexInput::Color(k) => color[k as usize],
+                    other => unreachable!("the lighting program reads no {other:?}"),
+                }
+                .to_bits()
+            })
+        })
+        .collect()
+}
+
 #[test]
 fn generated_programs_give_the_bits_of_shade() {
     let mut rng = Rng(0xddc0_ffee_1234_5677);
@@ -98,28 +121,13 @@ fn generated_programs_give_the_bits_of_shade() {
         let generated = LightingProgram::generate(&key);
         validate(&generated.program).unwrap_or_else(|e| panic!("case {case}: {e:?}"));
         let uniforms = generated.uniform_values(&lighting);
-        let vertices: Vec<([f32; 4], [f32; 3], [f32; 4])> = (0..LANES)
+        let vertices: Vec<LitVertex> = (0..LANES)
             .map(|_| {
                 let [x, y, z] = rng.vec3(5.0);
                 ([x, y, z, 1.0], if rng.below(16) == 0 { [0.0; 3] } else { rng.vec3(1.0) }, rng.color())
             })
             .collect();
-        let inputs: Vec<Word> = generated
-            .inputs
-            .iter()
-            .map(|source| {
-                std::array::from_fn(|lane| {
-                    let (eye, normal, color) = &vertices[lane];
-                    match *source {
-                        VertexInput::Eye(k) => eye[k as usize],
-                        VertexInput::Normal(k) => normal[k as usize],
-                        VertexInput::Color(k) => color[k as usize],
-                        other => unreachable!("the lighting program reads no {other:?}"),
-                    }
-                    .to_bits()
-                })
-            })
-            .collect();
+        let inputs = lighting_inputs(&generated, &vertices);
         let mut outputs = vec![[0u32; LANES]; generated.program.outputs.len()];
         let mut io = Io { inputs: &inputs, uniforms: &uniforms, outputs: &mut outputs, textures: &NoTextures };
         executor.run(&generated.program, &mut io, 0xffff);
@@ -644,7 +652,7 @@ fn a_light_without_specular_light_raises_no_power_and_gives_the_same_bits() {
         skipped += skips;
         let special = [[1e-24, -2e-24, 3e-24], [1e-22, 0.0, 0.0], [0.0; 3], [f32::NAN, 0.0, 1.0], [1e30, 1e30, 0.0]];
         let local = lighting.lights.iter().find(|l| l.local).map(|l| l.position);
-        let vertices: Vec<([f32; 4], [f32; 3], [f32; 4])> = (0..LANES)
+        let vertices: Vec<LitVertex> = (0..LANES)
             .map(|lane| {
                 let [x, y, z] = match local {
                     Some(p) if lane == 0 => p,
@@ -657,22 +665,7 @@ fn a_light_without_specular_light_raises_no_power_and_gives_the_same_bits() {
         let mut run = |key: &LightingKey| {
             let generated = LightingProgram::generate(key);
             let uniforms = generated.uniform_values(&lighting);
-            let inputs: Vec<Word> = generated
-                .inputs
-                .iter()
-                .map(|source| {
-                    std::array::from_fn(|lane| {
-                        let (eye, normal, color) = &vertices[lane];
-                        match *source {
-                            VertexInput::Eye(k) => eye[k as usize],
-                            VertexInput::Normal(k) => normal[k as usize],
-                            VertexInput::Color(k) => color[k as usize],
-                            other => unreachable!("the lighting program reads no {other:?}"),
-                        }
-                        .to_bits()
-                    })
-                })
-                .collect();
+            let inputs = lighting_inputs(&generated, &vertices);
             let mut outputs = vec![[0u32; LANES]; generated.program.outputs.len()];
             let mut io = Io { inputs: &inputs, uniforms: &uniforms, outputs: &mut outputs, textures: &NoTextures };
             executor.run(&generated.program, &mut io, 0xffff);
