@@ -72,8 +72,9 @@ pub fn draw<const N: usize>(
     let slots_unread = geometry.varyings.iter().all(|a| a.texture_coordinate().is_none());
     // Vertices shared by several triangles (strips, fans, quads, polygons) are mapped to
     // window space and snapped once, not once per triangle: the lit mesh's quad strips set
-    // up each vertex three times otherwise. Independent triangles map theirs in place.
-    let corners: Option<Vec<Corner>> = (slots_unread && mode != GL_TRIANGLES).then(|| {
+    // up each vertex three times otherwise. Independent triangles map theirs in place, and
+    // points and lines have no triangles (a table for them made glVertex3f's points a fifth slower).
+    let corners: Option<Vec<Corner>> = (slots_unread && polygons && mode != GL_TRIANGLES).then(|| {
         let viewport = &geometry.viewport;
         let corner = |(v, &code): (&ClipVertex<N>, &u32)| {
             // A vertex outside the planes is only ever clipped: its corner is never read.
