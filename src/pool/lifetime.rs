@@ -14,8 +14,9 @@ impl Erased {
     }
 }
 
-/// `work` with its lifetime erased. Only `super::run` and `super::run_beside` call this, and it neither returns nor
-/// unwinds until the job is closed and no helper runs the work any more.
+/// `work` with its lifetime erased. Only `super::run` and `super::run_beside` call this,
+/// and neither returns nor unwinds until the job is closed and no helper runs the work any
+/// more.
 pub fn erase<'a>(work: &'a (dyn Fn() + Sync + 'a)) -> Erased {
     // SAFETY: the reference is only dereferenced by pool threads between taking a slot of
     // the job and reporting back, and `super::finish_own` (through its `Closing` guard, on return

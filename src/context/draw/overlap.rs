@@ -44,6 +44,13 @@ struct Slot {
     finished: bool,
 }
 
+impl Slot {
+    /// Whether a segment is with a renderer that has not given it back yet.
+    fn rendering(&self) -> bool {
+        self.in_flight && self.rendered.is_none() && !self.finished
+    }
+}
+
 impl HandOff {
     fn slot(&self) -> MutexGuard<'_, Slot> {
         self.slot.lock().unwrap_or_else(|p| p.into_inner())
@@ -75,11 +82,11 @@ impl HandOff {
     /// renders on more than one thread); its scene, emptied.
     fn take_back(&self) -> Option<Scene> {
         let mut slot = self.slot();
-        while slot.in_flight && slot.rendered.is_none() && !slot.finished {
+        while slot.rendering() {
             drop(slot);
             let helped = crate::pool::help();
             slot = self.slot();
-            if !helped && slot.in_flight && slot.rendered.is_none() && !slot.finished {
+            if !helped && slot.rendering() {
                 slot = self.wait(slot);
             }
         }
@@ -96,20 +103,15 @@ impl HandOff {
     /// The renderer (a pool thread): renders each scene handed over into `drawable` on
     /// `threads` threads, until the recording finishes.
     fn render(&self, drawable: &Mutex<Drawable>, threads: usize) {
-        // A renderer that unwinds ends the hand-off, so that the recording thread never waits
-        // for it (the pool raises its panic on the recording thread).
-        struct Failing<'a>(&'a HandOff);
-        impl Drop for Failing<'_> {
-            fn drop(&mut self) {
-                self.0.finish();
-            }
-        }
+        // A renderer that unwinds ends the hand-off too, so that the recording thread never
+        // waits for it (the pool raises its panic on the recording thread). Declared before
+        // the slot's guard, so that it is dropped after it (`finish` takes the lock).
+        let _finishing = Finishing(self);
         let mut slot = self.slot();
         if slot.finished {
             return;
         }
         slot.running = true;
-        let failing = Failing(self);
         loop {
             let Some((mut scene, overwrites)) = slot.pending.take() else {
                 if slot.finished {
@@ -129,7 +131,15 @@ impl HandOff {
             slot.rendered = Some(scene);
             self.changed.notify_all();
         }
-        std::mem::forget(failing);
+    }
+}
+
+/// Ends its hand-off when dropped ([`HandOff::finish`]), on return and on unwind alike.
+struct Finishing<'a>(&'a HandOff);
+
+impl Drop for Finishing<'_> {
+    fn drop(&mut self) {
+        self.0.finish();
     }
 }
 
@@ -192,12 +202,6 @@ impl Context {
         let renderer = || hand_off.render(&drawable, threads);
         crate::pool::run_beside(1, &renderer, || {
             // The renderer returns once the recording is over, however it ends.
-            struct Finishing<'a>(&'a HandOff);
-            impl Drop for Finishing<'_> {
-                fn drop(&mut self) {
-                    self.0.finish();
-                }
-            }
             let _finishing = Finishing(&hand_off);
             for start in rest {
                 if let Some(scene) = self.scene.take() {
