@@ -94,11 +94,8 @@ impl TriangleSetup {
     /// through memory and the caller's checks of it.
     #[inline(always)]
     pub fn new(window: [[f32; 2]; 3]) -> Option<TriangleSetup> {
-        if !window.iter().flatten().all(|c| c.abs() <= GUARD_BAND) {
-            return None;
-        }
-        let fixed = |p: [f32; 2]| [snap(p[0]), snap(p[1])];
-        Self::from_snapped([fixed(window[0]), fixed(window[1]), fixed(window[2])])
+        let [a, b, c] = window.map(Self::snapped);
+        Self::from_snapped([a?, b?, c?])
     }
 
     /// A vertex's window coordinates snapped as [`TriangleSetup::new`] snaps them, `None`
